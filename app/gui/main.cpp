@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tolturn: the desktop program.
+#include "app/gui/main_window.h"
+#include "core/common/library_info.h"
+#include "translations/i18n.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("TolTurn"));
+    QApplication::setApplicationName(QStringLiteral("TolTurn"));
+    QApplication::setApplicationVersion(tolturn::tolturnVersion());
+    QApplication::setDesktopFileName(QStringLiteral("org.tolturn.TolTurn"));
+    tolturn::installTranslations(app);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QApplication::translate("main", "Tolerance-aware planning of CNC turning."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("project"),
+                                 QApplication::translate("main", "Project file to open (.tolturn)."),
+                                 QStringLiteral("[project]"));
+    parser.process(app);
+
+    tolturn::MainWindow window;
+    window.show();
+    if (!parser.positionalArguments().isEmpty())
+        window.fileController()->openFile(parser.positionalArguments().constFirst());
+    return QApplication::exec();
+}

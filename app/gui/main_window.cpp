@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/main_window.h"
+
+#include "app/gui/recent_files.h"
+#include "core/project/keywords.h"
+#include "resources/bundled.h"
+#include "widgets/dialogs/about_dialog.h"
+#include "widgets/document/project_document.h"
+#include "widgets/profile/profile_scene.h"
+#include "widgets/profile/profile_view.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+
+namespace tolturn {
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent)
+    , m_document(new ProjectDocument(this))
+    , m_recentFiles(new RecentFiles(this))
+    , m_files(new FileController(*m_document, *m_recentFiles, *this, this))
+    , m_profileView(new ProfileView(this))
+    , m_summary(new QLabel(this))
+{
+    setObjectName(QStringLiteral("MainWindow"));
+    setWindowIcon(QIcon(applicationIconPath()));
+    m_profileView->setObjectName(QStringLiteral("profileView"));
+    setCentralWidget(m_profileView);
+    statusBar()->addPermanentWidget(m_summary);
+    statusBar()->showMessage(tr("Open a project (File > Open) or an example part (File > Open Example)."));
+
+    createActions();
+    connect(m_files, &FileController::statusMessage, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 5000); });
+    connect(m_document, &ProjectDocument::projectChanged, this, &MainWindow::showProject);
+    connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_recentFiles, &RecentFiles::changed, this, &MainWindow::rebuildRecentMenu);
+    rebuildRecentMenu();
+    updateTitle();
+    resize(1100, 700);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions()
+{
+    createFileMenu();
+    createHelpMenu();
+}
+
+void MainWindow::createFileMenu()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *open = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"));
+    open->setShortcut(QKeySequence::Open);
+    connect(open, &QAction::triggered, m_files, [this] { m_files->open(); });
+
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    QMenu *examples = file->addMenu(tr("Open &Example"));
+    for (const QString &path : bundledExamplePaths()) {
+        QAction *example = examples->addAction(QFileInfo(path).completeBaseName());
+        connect(example, &QAction::triggered, m_files, [this, path] { m_files->openExample(path); });
+    }
+    file->addSeparator();
+
+    m_saveAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save"));
+    m_saveAction->setShortcut(QKeySequence::Save);
+    connect(m_saveAction, &QAction::triggered, m_files, [this] { m_files->save(); });
+    m_saveAsAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save-as")), tr("Save &As…"));
+    m_saveAsAction->setShortcut(QKeySequence::SaveAs);
+    connect(m_saveAsAction, &QAction::triggered, m_files, [this] { m_files->saveAs(); });
+    file->addSeparator();
+
+    QAction *quit = file->addAction(tr("&Quit"));
+    quit->setShortcut(QKeySequence::Quit);
+    quit->setMenuRole(QAction::QuitRole);
+    connect(quit, &QAction::triggered, this, &QWidget::close);
+}
+
+void MainWindow::createHelpMenu()
+{
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *about = help->addAction(tr("&About TolTurn"));
+    about->setMenuRole(QAction::AboutRole);
+    connect(about, &QAction::triggered, this, [this] {
+        AboutDialog dialog(this);
+        dialog.exec();
+    });
+    QAction *aboutQt = help->addAction(tr("About &Qt"));
+    aboutQt->setMenuRole(QAction::AboutQtRole);
+    connect(aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = m_recentFiles->files();
+    for (int i = 0; i < files.size(); ++i) {
+        const QString &path = files.at(i);
+        const QString label = QStringLiteral("&%1 %2").arg(i + 1).arg(QDir::toNativeSeparators(path));
+        QAction *action = m_recentMenu->addAction(label);
+        connect(action, &QAction::triggered, m_files, [this, path] { m_files->openFile(path); });
+    }
+    if (!files.isEmpty()) {
+        m_recentMenu->addSeparator();
+        connect(m_recentMenu->addAction(tr("&Clear List")), &QAction::triggered, m_recentFiles, &RecentFiles::clear);
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::updateTitle()
+{
+    const bool has = m_document->hasProject();
+    m_saveAction->setEnabled(has);
+    m_saveAsAction->setEnabled(has);
+    setWindowModified(m_document->isModified());
+    setWindowTitle(has ? tr("%1[*] — TolTurn").arg(m_document->displayName()) : QStringLiteral("TolTurn"));
+}
+
+void MainWindow::showProject()
+{
+    const Project &project = m_document->project();
+    m_profileView->setProfile(project.part);
+    const PartProfile &part = project.part;
+    m_summary->setText(tr("%1 — length %2 mm, Ø max %3 mm, %4 outer / %5 inner features, clamping: %6")
+                           .arg(part.name.isEmpty() ? tr("Part") : part.name, dimensionText(part.length_mm()),
+                                dimensionText(2.0 * part.maxOuterRadius_mm()))
+                           .arg(part.outer.segments.size())
+                           .arg(part.inner.segments.size())
+                           .arg(displayName(project.clamping.method)));
+    updateTitle();
+}
+
+QString MainWindow::chooseFileToOpen(const QString &startFolder)
+{
+    return QFileDialog::getOpenFileName(this, tr("Open Project"), startFolder, FileController::fileFilter());
+}
+
+QString MainWindow::chooseFileToSave(const QString &suggestedPath)
+{
+    return QFileDialog::getSaveFileName(this, tr("Save Project As"), suggestedPath, FileController::fileFilter());
+}
+
+void MainWindow::showError(const QString &title, const QString &text)
+{
+    QMessageBox box(QMessageBox::Critical, title, text, QMessageBox::Ok, this);
+    box.setObjectName(QStringLiteral("errorDialog"));
+    box.exec();
+}
+
+} // namespace tolturn

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "app/gui/file_controller.h"
+
+#include <QMainWindow>
+
+class QLabel;
+class QMenu;
+
+namespace tolturn {
+
+class ProfileView;
+class ProjectDocument;
+class RecentFiles;
+
+// The desktop program's window: menus and status bar around the views of one document.
+// File commands live in FileController; this class only wires them to actions and dialogs.
+class MainWindow
+    : public QMainWindow
+    , public FilePrompts {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    [[nodiscard]] ProjectDocument *document() const { return m_document; }
+
+    [[nodiscard]] FileController *fileController() const { return m_files; }
+
+    [[nodiscard]] ProfileView *profileView() const { return m_profileView; }
+
+    // FilePrompts
+    [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
+    [[nodiscard]] QString chooseFileToSave(const QString &suggestedPath) override;
+    void showError(const QString &title, const QString &text) override;
+
+private:
+    void createActions();
+    void createFileMenu();
+    void createHelpMenu();
+    void rebuildRecentMenu();
+    void updateTitle();
+    void showProject();
+
+    ProjectDocument *m_document;
+    RecentFiles *m_recentFiles;
+    FileController *m_files;
+    ProfileView *m_profileView;
+    QMenu *m_recentMenu = nullptr;
+    QLabel *m_summary;
+    QAction *m_saveAction = nullptr;
+    QAction *m_saveAsAction = nullptr;
+};
+
+} // namespace tolturn

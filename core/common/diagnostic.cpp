@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/common/diagnostic.h"
+
+#include <algorithm>
+
+namespace tolturn {
+
+QString Diagnostic::toString() const
+{
+    const QString prefix = severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning");
+    if (field.isEmpty())
+        return prefix + QStringLiteral(": ") + message;
+    return prefix + QStringLiteral(": ") + field + QStringLiteral(": ") + message;
+}
+
+bool hasErrors(const Diagnostics &diagnostics)
+{
+    return std::any_of(diagnostics.begin(), diagnostics.end(),
+                       [](const Diagnostic &d) { return d.severity == Severity::Error; });
+}
+
+Diagnostic makeError(const QString &field, const QString &message)
+{
+    return Diagnostic{Severity::Error, field, message};
+}
+
+Diagnostic makeWarning(const QString &field, const QString &message)
+{
+    return Diagnostic{Severity::Warning, field, message};
+}
+
+QString formatNumber(double value)
+{
+    return QString::number(value, 'g', 10);
+}
+
+} // namespace tolturn

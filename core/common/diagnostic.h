@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QString>
+
+#include <vector>
+
+namespace tolturn {
+
+enum class Severity { Warning, Error };
+
+// One finding about an input: which field (a JSON-style path such as
+// "part.outer[2].to.r_mm") and a full sentence that names the value.
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    QString field;
+    QString message;
+
+    // "field: message", the form printed by the CLI and shown in dialogs.
+    [[nodiscard]] QString toString() const;
+};
+
+using Diagnostics = std::vector<Diagnostic>;
+
+[[nodiscard]] bool hasErrors(const Diagnostics &diagnostics);
+[[nodiscard]] Diagnostic makeError(const QString &field, const QString &message);
+[[nodiscard]] Diagnostic makeWarning(const QString &field, const QString &message);
+
+// Number formatting for messages: shortest form that round-trips to the shown precision.
+[[nodiscard]] QString formatNumber(double value);
+
+} // namespace tolturn

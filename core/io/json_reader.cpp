@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/io/json_reader.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+#include <utility>
+
+namespace tolturn {
+
+namespace {
+
+struct JsonReading {
+    Q_DECLARE_TR_FUNCTIONS(JsonReading)
+};
+
+QString tr(const char *text)
+{
+    return JsonReading::tr(text);
+}
+
+} // namespace
+
+QString describeJsonValue(const QJsonValue &value)
+{
+    switch (value.type()) {
+    case QJsonValue::Null:
+        return tr("null");
+    case QJsonValue::Bool:
+        return value.toBool() ? tr("true") : tr("false");
+    case QJsonValue::Double:
+        return tr("the number %1").arg(formatNumber(value.toDouble()));
+    case QJsonValue::String:
+        return tr("the text \"%1\"").arg(value.toString());
+    case QJsonValue::Array:
+        return tr("a list");
+    case QJsonValue::Object:
+        return tr("an object");
+    case QJsonValue::Undefined:
+        break;
+    }
+    return tr("nothing");
+}
+
+QString elementPath(const QString &arrayPath, qsizetype index)
+{
+    return arrayPath + QStringLiteral("[%1]").arg(index);
+}
+
+JsonObjectReader::JsonObjectReader(QJsonObject object, QString path, Diagnostics &out)
+    : m_object(std::move(object))
+    , m_path(std::move(path))
+    , m_out(out)
+{
+}
+
+QString JsonObjectReader::fieldPath(const QString &key) const
+{
+    return m_path.isEmpty() ? key : m_path + QLatin1Char('.') + key;
+}
+
+std::optional<QJsonValue> JsonObjectReader::take(const QString &key, Presence presence)
+{
+    m_read.insert(key);
+    const auto it = m_object.constFind(key);
+    if (it == m_object.constEnd()) {
+        if (presence == Presence::Required)
+            m_out.push_back(makeError(fieldPath(key), tr("this field is required but missing")));
+        return std::nullopt;
+    }
+    return it.value();
+}
+
+void JsonObjectReader::typeError(const QString &key, const QString &expected, const QJsonValue &value)
+{
+    m_out.push_back(makeError(fieldPath(key), tr("expected %1, found %2").arg(expected, describeJsonValue(value))));
+}
+
+std::optional<double> JsonObjectReader::number(const QString &key, Presence presence)
+{
+    const auto value = take(key, presence);
+    if (!value)
+        return std::nullopt;
+    if (!value->isDouble()) {
+        typeError(key, tr("a number"), *value);
+        return std::nullopt;
+    }
+    return value->toDouble();
+}
+
+std::optional<int> JsonObjectReader::integer(const QString &key, Presence presence)
+{
+    const auto value = take(key, presence);
+    if (!value)
+        return std::nullopt;
+    const double d = value->toDouble(std::nan(""));
+    if (!value->isDouble() || d != std::floor(d) || std::abs(d) > 1e9) {
+        typeError(key, tr("a whole number"), *value);
+        return std::nullopt;
+    }
+    return static_cast<int>(d);
+}
+
+std::optional<QString> JsonObjectReader::text(const QString &key, Presence presence)
+{
+    const auto value = take(key, presence);
+    if (!value)
+        return std::nullopt;
+    if (!value->isString()) {
+        typeError(key, tr("a text"), *value);
+        return std::nullopt;
+    }
+    return value->toString();
+}
+
+std::optional<QJsonObject> JsonObjectReader::object(const QString &key, Presence presence)
+{
+    const auto value = take(key, presence);
+    if (!value)
+        return std::nullopt;
+    if (!value->isObject()) {
+        typeError(key, tr("an object"), *value);
+        return std::nullopt;
+    }
+    return value->toObject();
+}
+
+std::optional<QJsonArray> JsonObjectReader::array(const QString &key, Presence presence)
+{
+    const auto value = take(key, presence);
+    if (!value)
+        return std::nullopt;
+    if (!value->isArray()) {
+        typeError(key, tr("a list"), *value);
+        return std::nullopt;
+    }
+    return value->toArray();
+}
+
+std::optional<QString> JsonObjectReader::keywordText(const QString &key, Presence presence, const QStringList &allowed,
+                                                     const QString &what)
+{
+    auto value = text(key, presence);
+    if (!value)
+        return std::nullopt;
+    if (!allowed.contains(*value)) {
+        m_out.push_back(makeError(
+            fieldPath(key),
+            tr("unknown %1 \"%2\"; expected one of: %3").arg(what, *value, allowed.join(QStringLiteral(", ")))));
+        return std::nullopt;
+    }
+    return value;
+}
+
+void JsonObjectReader::finish()
+{
+    for (auto it = m_object.constBegin(); it != m_object.constEnd(); ++it) {
+        if (!m_read.contains(it.key()))
+            m_out.push_back(makeWarning(fieldPath(it.key()), tr("unknown field, ignored")));
+    }
+}
+
+} // namespace tolturn

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/io/project_file.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+namespace tolturn {
+
+namespace {
+
+struct ProjectFile {
+    Q_DECLARE_TR_FUNCTIONS(ProjectFile)
+};
+
+constexpr qint64 kBytesPerMiB = 1024LL * 1024LL;
+
+QString tr(const char *text)
+{
+    return ProjectFile::tr(text);
+}
+
+ProjectParseResult fileError(const QString &message)
+{
+    ProjectParseResult result;
+    result.diagnostics.push_back(makeError(QStringLiteral("file"), message));
+    return result;
+}
+
+} // namespace
+
+ProjectParseResult readProjectFile(const QString &path)
+{
+    const QFileInfo info(path);
+    if (!info.exists())
+        return fileError(tr("'%1' does not exist").arg(path));
+    if (info.isDir())
+        return fileError(tr("'%1' is a folder, not a project file").arg(path));
+    if (info.size() > kMaxProjectFileBytes)
+        return fileError(tr("'%1' is %2 MiB, more than the %3 MiB a project file may have")
+                             .arg(path)
+                             .arg(info.size() / kBytesPerMiB)
+                             .arg(kMaxProjectFileBytes / kBytesPerMiB));
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return fileError(tr("cannot open '%1': %2").arg(path, file.errorString()));
+    return parseProjectJson(file.readAll());
+}
+
+WriteResult writeProjectFile(const QString &path, const Project &project)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return {false, tr("cannot write '%1': %2").arg(path, file.errorString())};
+    const QByteArray bytes = serializeProjectJson(project);
+    if (file.write(bytes) != bytes.size()) {
+        const QString reason = file.errorString();
+        file.cancelWriting();
+        return {false, tr("cannot write '%1': %2").arg(path, reason)};
+    }
+    if (!file.commit())
+        return {false, tr("cannot save '%1': %2").arg(path, file.errorString())};
+    return {true, QString()};
+}
+
+} // namespace tolturn

@@ -1,0 +1,360 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/io/project_json.h"
+
+#include "core/io/json_reader.h"
+#include "core/project/keywords.h"
+#include "core/project/project_validation.h"
+
+#include <QCoreApplication>
+#include <QJsonDocument>
+
+namespace tolturn {
+
+namespace {
+
+struct ProjectJson {
+    Q_DECLARE_TR_FUNCTIONS(ProjectJson)
+};
+
+QString tr(const char *text)
+{
+    return ProjectJson::tr(text);
+}
+
+template <typename Enum>
+std::optional<Enum> readKeyword(JsonObjectReader &reader, const QString &key, Presence presence, const QString &what)
+{
+    const auto word = reader.keywordText(key, presence, allKeywords<Enum>(), what);
+    return word ? fromKeyword<Enum>(*word) : std::nullopt;
+}
+
+// ---- reading ---------------------------------------------------------------------------------
+
+ProfilePoint readPoint(const QJsonObject &json, const QString &path, Diagnostics &out)
+{
+    JsonObjectReader r(json, path, out);
+    ProfilePoint p;
+    p.z_mm = r.number(QStringLiteral("z_mm"), Presence::Required).value_or(0.0);
+    p.r_mm = r.number(QStringLiteral("r_mm"), Presence::Required).value_or(0.0);
+    r.finish();
+    return p;
+}
+
+Segment readSegment(const QJsonObject &json, const QString &path, Diagnostics &out)
+{
+    JsonObjectReader r(json, path, out);
+    Segment s;
+    s.id = r.text(QStringLiteral("id"), Presence::Required).value_or(QString());
+    s.name = r.text(QStringLiteral("name"), Presence::Optional).value_or(QString());
+    s.kind = readKeyword<SegmentKind>(r, QStringLiteral("type"), Presence::Required, tr("segment type"))
+                 .value_or(SegmentKind::Cylinder);
+    if (const auto from = r.object(QStringLiteral("from"), Presence::Required))
+        s.from = readPoint(*from, r.fieldPath(QStringLiteral("from")), out);
+    if (const auto to = r.object(QStringLiteral("to"), Presence::Required))
+        s.to = readPoint(*to, r.fieldPath(QStringLiteral("to")), out);
+    if (s.kind == SegmentKind::Radius) {
+        s.arcRadius_mm = r.number(QStringLiteral("radius_mm"), Presence::Required).value_or(0.0);
+        s.arcDirection =
+            readKeyword<ArcDirection>(r, QStringLiteral("direction"), Presence::Required, tr("arc direction"))
+                .value_or(ArcDirection::CounterClockwise);
+    }
+    r.finish();
+    return s;
+}
+
+Contour readContour(const QJsonArray &json, const QString &path, Diagnostics &out)
+{
+    Contour c;
+    for (qsizetype i = 0; i < json.size(); ++i) {
+        const QString itemPath = elementPath(path, i);
+        if (!json.at(i).isObject()) {
+            out.push_back(
+                makeError(itemPath, tr("expected a segment object, found %1").arg(describeJsonValue(json.at(i)))));
+            continue;
+        }
+        c.segments.push_back(readSegment(json.at(i).toObject(), itemPath, out));
+    }
+    return c;
+}
+
+PartProfile readPart(const QJsonObject &json, Diagnostics &out)
+{
+    JsonObjectReader r(json, QStringLiteral("part"), out);
+    PartProfile part;
+    part.name = r.text(QStringLiteral("name"), Presence::Optional).value_or(QString());
+    part.stockDiameter_mm = r.number(QStringLiteral("stock_diameter_mm"), Presence::Required).value_or(0.0);
+    if (const auto outer = r.array(QStringLiteral("outer"), Presence::Required))
+        part.outer = readContour(*outer, QStringLiteral("part.outer"), out);
+    if (const auto inner = r.array(QStringLiteral("inner"), Presence::Optional))
+        part.inner = readContour(*inner, QStringLiteral("part.inner"), out);
+    r.finish();
+    return part;
+}
+
+Tool readTool(const QJsonObject &json, Diagnostics &out)
+{
+    JsonObjectReader r(json, QStringLiteral("tool"), out);
+    Tool tool;
+    tool.insertCode = r.text(QStringLiteral("insert"), Presence::Required).value_or(QString());
+    tool.holderCode = r.text(QStringLiteral("holder"), Presence::Optional).value_or(QString());
+    r.finish();
+    return tool;
+}
+
+Clamping readClamping(const QJsonObject &json, Diagnostics &out)
+{
+    JsonObjectReader r(json, QStringLiteral("clamping"), out);
+    Clamping c;
+    c.method = readKeyword<ClampingMethod>(r, QStringLiteral("method"), Presence::Required, tr("clamping method"))
+                   .value_or(ClampingMethod::Chuck);
+    c.clampedLength_mm = r.number(QStringLiteral("clamped_length_mm"), Presence::Optional).value_or(0.0);
+    r.finish();
+    return c;
+}
+
+template <typename T, typename ReadOne>
+std::vector<T> readList(JsonObjectReader &parent, const QString &key, Diagnostics &out, ReadOne readOne)
+{
+    std::vector<T> items;
+    const auto json = parent.array(key, Presence::Optional);
+    if (!json)
+        return items;
+    const QString path = parent.fieldPath(key);
+    for (qsizetype i = 0; i < json->size(); ++i) {
+        const QString itemPath = elementPath(path, i);
+        if (!json->at(i).isObject()) {
+            out.push_back(makeError(itemPath, tr("expected an object, found %1").arg(describeJsonValue(json->at(i)))));
+            continue;
+        }
+        JsonObjectReader r(json->at(i).toObject(), itemPath, out);
+        items.push_back(readOne(r));
+        r.finish();
+    }
+    return items;
+}
+
+CuttingPass readPass(JsonObjectReader &r)
+{
+    CuttingPass p;
+    p.kind = readKeyword<PassKind>(r, QStringLiteral("kind"), Presence::Required, tr("pass kind"))
+                 .value_or(PassKind::Finishing);
+    p.cuttingSpeed_m_min = r.number(QStringLiteral("cutting_speed_m_min"), Presence::Required).value_or(0.0);
+    p.feed_mm_rev = r.number(QStringLiteral("feed_mm_rev"), Presence::Required).value_or(0.0);
+    p.depthOfCut_mm = r.number(QStringLiteral("depth_of_cut_mm"), Presence::Required).value_or(0.0);
+    return p;
+}
+
+Datum readDatum(JsonObjectReader &r)
+{
+    Datum d;
+    d.label = r.text(QStringLiteral("label"), Presence::Required).value_or(QString());
+    d.featureId = r.text(QStringLiteral("feature"), Presence::Required).value_or(QString());
+    return d;
+}
+
+QStringList readDatumLabels(JsonObjectReader &r, Diagnostics &out)
+{
+    QStringList labels;
+    const auto json = r.array(QStringLiteral("datums"), Presence::Optional);
+    if (!json)
+        return labels;
+    for (qsizetype i = 0; i < json->size(); ++i) {
+        if (!json->at(i).isString())
+            out.push_back(makeError(elementPath(r.fieldPath(QStringLiteral("datums")), i),
+                                    tr("expected a datum letter, found %1").arg(describeJsonValue(json->at(i)))));
+        else
+            labels << json->at(i).toString();
+    }
+    return labels;
+}
+
+Tolerance readTolerance(JsonObjectReader &r, Diagnostics &out)
+{
+    Tolerance t;
+    t.id = r.text(QStringLiteral("id"), Presence::Required).value_or(QString());
+    t.type = readKeyword<ToleranceType>(r, QStringLiteral("type"), Presence::Required, tr("tolerance type"))
+                 .value_or(ToleranceType::Diameter);
+    t.featureId = r.text(QStringLiteral("feature"), Presence::Required).value_or(QString());
+    if (t.type == ToleranceType::Length)
+        t.toFeatureId = r.text(QStringLiteral("to_feature"), Presence::Required).value_or(QString());
+    if (isSizeTolerance(t.type)) {
+        t.iso286Class = r.text(QStringLiteral("iso286"), Presence::Optional).value_or(QString());
+        t.upperDeviation_um = r.number(QStringLiteral("upper_um"), Presence::Optional);
+        t.lowerDeviation_um = r.number(QStringLiteral("lower_um"), Presence::Optional);
+    } else {
+        t.zone_um = r.number(QStringLiteral("value_um"), Presence::Required);
+        t.datums = readDatumLabels(r, out);
+    }
+    return t;
+}
+
+std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
+{
+    JsonObjectReader r(root, QString(), out);
+    const auto format = r.text(QStringLiteral("format"), Presence::Required);
+    if (format && *format != QLatin1String(kProjectFormatName)) {
+        out.push_back(makeError(QStringLiteral("format"), tr("this is not a TolTurn project: format is \"%1\", "
+                                                             "expected \"%2\"")
+                                                              .arg(*format, QLatin1String(kProjectFormatName))));
+        return std::nullopt;
+    }
+    const auto version = r.integer(QStringLiteral("version"), Presence::Required);
+    if (version && *version != kProjectFormatVersion) {
+        out.push_back(makeError(
+            QStringLiteral("version"),
+            tr("unknown format version %1; this TolTurn reads version %2").arg(*version).arg(kProjectFormatVersion)));
+        return std::nullopt;
+    }
+    if (hasErrors(out))
+        return std::nullopt;
+
+    Project p;
+    if (const auto part = r.object(QStringLiteral("part"), Presence::Required))
+        p.part = readPart(*part, out);
+    p.materialId = r.text(QStringLiteral("material"), Presence::Required).value_or(QString());
+    p.machineId = r.text(QStringLiteral("machine"), Presence::Required).value_or(QString());
+    if (const auto tool = r.object(QStringLiteral("tool"), Presence::Required))
+        p.tool = readTool(*tool, out);
+    if (const auto clamping = r.object(QStringLiteral("clamping"), Presence::Required))
+        p.clamping = readClamping(*clamping, out);
+    p.passes = readList<CuttingPass>(r, QStringLiteral("passes"), out, readPass);
+    p.datums = readList<Datum>(r, QStringLiteral("datums"), out, readDatum);
+    p.tolerances = readList<Tolerance>(r, QStringLiteral("tolerances"), out,
+                                       [&out](JsonObjectReader &reader) { return readTolerance(reader, out); });
+    r.finish();
+    return p;
+}
+
+// Line and column of a byte offset, for parse error messages.
+std::pair<int, int> lineColumn(const QByteArray &text, int offset)
+{
+    int line = 1;
+    int column = 1;
+    for (int i = 0; i < offset && i < text.size(); ++i) {
+        if (text.at(i) == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return {line, column};
+}
+
+// ---- writing ---------------------------------------------------------------------------------
+
+QJsonObject pointJson(const ProfilePoint &p)
+{
+    return {{QStringLiteral("z_mm"), p.z_mm}, {QStringLiteral("r_mm"), p.r_mm}};
+}
+
+QJsonArray contourJson(const Contour &contour)
+{
+    QJsonArray out;
+    for (const Segment &s : contour.segments) {
+        QJsonObject o{{QStringLiteral("id"), s.id},
+                      {QStringLiteral("type"), keyword(s.kind)},
+                      {QStringLiteral("from"), pointJson(s.from)},
+                      {QStringLiteral("to"), pointJson(s.to)}};
+        if (!s.name.isEmpty())
+            o.insert(QStringLiteral("name"), s.name);
+        if (s.kind == SegmentKind::Radius) {
+            o.insert(QStringLiteral("radius_mm"), s.arcRadius_mm);
+            o.insert(QStringLiteral("direction"), keyword(s.arcDirection));
+        }
+        out.append(o);
+    }
+    return out;
+}
+
+QJsonObject toleranceJson(const Tolerance &t)
+{
+    QJsonObject o{{QStringLiteral("id"), t.id},
+                  {QStringLiteral("type"), keyword(t.type)},
+                  {QStringLiteral("feature"), t.featureId}};
+    if (t.type == ToleranceType::Length)
+        o.insert(QStringLiteral("to_feature"), t.toFeatureId);
+    if (!t.iso286Class.isEmpty())
+        o.insert(QStringLiteral("iso286"), t.iso286Class);
+    if (t.upperDeviation_um)
+        o.insert(QStringLiteral("upper_um"), *t.upperDeviation_um);
+    if (t.lowerDeviation_um)
+        o.insert(QStringLiteral("lower_um"), *t.lowerDeviation_um);
+    if (t.zone_um)
+        o.insert(QStringLiteral("value_um"), *t.zone_um);
+    if (!t.datums.isEmpty())
+        o.insert(QStringLiteral("datums"), QJsonArray::fromStringList(t.datums));
+    return o;
+}
+
+} // namespace
+
+ProjectParseResult parseProjectJson(const QByteArray &json)
+{
+    ProjectParseResult result;
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        const auto [line, column] = lineColumn(json, parseError.offset);
+        result.diagnostics.push_back(makeError(
+            QString(),
+            tr("invalid JSON at line %1, column %2: %3").arg(line).arg(column).arg(parseError.errorString())));
+        return result;
+    }
+    if (!doc.isObject()) {
+        result.diagnostics.push_back(makeError(QString(), tr("a project file holds one JSON object, not a list")));
+        return result;
+    }
+    auto project = readProject(doc.object(), result.diagnostics);
+    if (!project || hasErrors(result.diagnostics))
+        return result;
+    const Diagnostics semantic = validateProject(*project);
+    result.diagnostics.insert(result.diagnostics.end(), semantic.begin(), semantic.end());
+    if (!hasErrors(result.diagnostics))
+        result.project = std::move(project);
+    return result;
+}
+
+QByteArray serializeProjectJson(const Project &p)
+{
+    QJsonObject part{{QStringLiteral("stock_diameter_mm"), p.part.stockDiameter_mm},
+                     {QStringLiteral("outer"), contourJson(p.part.outer)}};
+    if (!p.part.name.isEmpty())
+        part.insert(QStringLiteral("name"), p.part.name);
+    if (!p.part.inner.empty())
+        part.insert(QStringLiteral("inner"), contourJson(p.part.inner));
+
+    QJsonObject tool{{QStringLiteral("insert"), p.tool.insertCode}};
+    if (!p.tool.holderCode.isEmpty())
+        tool.insert(QStringLiteral("holder"), p.tool.holderCode);
+
+    QJsonArray passes;
+    for (const CuttingPass &pass : p.passes)
+        passes.append(QJsonObject{{QStringLiteral("kind"), keyword(pass.kind)},
+                                  {QStringLiteral("cutting_speed_m_min"), pass.cuttingSpeed_m_min},
+                                  {QStringLiteral("feed_mm_rev"), pass.feed_mm_rev},
+                                  {QStringLiteral("depth_of_cut_mm"), pass.depthOfCut_mm}});
+    QJsonArray datums;
+    for (const Datum &d : p.datums)
+        datums.append(QJsonObject{{QStringLiteral("label"), d.label}, {QStringLiteral("feature"), d.featureId}});
+    QJsonArray tolerances;
+    for (const Tolerance &t : p.tolerances)
+        tolerances.append(toleranceJson(t));
+
+    const QJsonObject root{
+        {QStringLiteral("format"), QLatin1String(kProjectFormatName)},
+        {QStringLiteral("version"), kProjectFormatVersion},
+        {QStringLiteral("part"), part},
+        {QStringLiteral("material"), p.materialId},
+        {QStringLiteral("machine"), p.machineId},
+        {QStringLiteral("tool"), tool},
+        {QStringLiteral("clamping"), QJsonObject{{QStringLiteral("method"), keyword(p.clamping.method)},
+                                                 {QStringLiteral("clamped_length_mm"), p.clamping.clampedLength_mm}}},
+        {QStringLiteral("passes"), passes},
+        {QStringLiteral("datums"), datums},
+        {QStringLiteral("tolerances"), tolerances},
+    };
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+} // namespace tolturn

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/project/keywords.h"
+
+#include <QCoreApplication>
+
+#include <array>
+#include <utility>
+
+namespace tolturn {
+
+namespace {
+
+template <typename Enum>
+struct KeywordTable;
+
+template <>
+struct KeywordTable<SegmentKind> {
+    static constexpr std::array<std::pair<SegmentKind, const char *>, 5> entries{{
+        {SegmentKind::Cylinder, "cylinder"},
+        {SegmentKind::Face, "face"},
+        {SegmentKind::Cone, "cone"},
+        {SegmentKind::Chamfer, "chamfer"},
+        {SegmentKind::Radius, "radius"},
+    }};
+};
+
+template <>
+struct KeywordTable<ArcDirection> {
+    static constexpr std::array<std::pair<ArcDirection, const char *>, 2> entries{{
+        {ArcDirection::Clockwise, "cw"},
+        {ArcDirection::CounterClockwise, "ccw"},
+    }};
+};
+
+template <>
+struct KeywordTable<ClampingMethod> {
+    static constexpr std::array<std::pair<ClampingMethod, const char *>, 3> entries{{
+        {ClampingMethod::Chuck, "chuck"},
+        {ClampingMethod::BetweenCentres, "centres"},
+        {ClampingMethod::ChuckTailstock, "chuck_tailstock"},
+    }};
+};
+
+template <>
+struct KeywordTable<PassKind> {
+    static constexpr std::array<std::pair<PassKind, const char *>, 2> entries{{
+        {PassKind::Roughing, "roughing"},
+        {PassKind::Finishing, "finishing"},
+    }};
+};
+
+template <>
+struct KeywordTable<ToleranceType> {
+    static constexpr std::array<std::pair<ToleranceType, const char *>, 12> entries{{
+        {ToleranceType::Length, "length"},
+        {ToleranceType::Diameter, "diameter"},
+        {ToleranceType::Flatness, "flatness"},
+        {ToleranceType::Cylindricity, "cylindricity"},
+        {ToleranceType::Profile, "profile"},
+        {ToleranceType::Parallelism, "parallelism"},
+        {ToleranceType::Perpendicularity, "perpendicularity"},
+        {ToleranceType::Coaxiality, "coaxiality"},
+        {ToleranceType::CircularRadialRunout, "circular_radial_runout"},
+        {ToleranceType::CircularAxialRunout, "circular_axial_runout"},
+        {ToleranceType::TotalRadialRunout, "total_radial_runout"},
+        {ToleranceType::TotalAxialRunout, "total_axial_runout"},
+    }};
+};
+
+template <typename Enum>
+QString keywordOf(Enum value)
+{
+    for (const auto &[v, word] : KeywordTable<Enum>::entries) {
+        if (v == value)
+            return QString::fromLatin1(word);
+    }
+    return {};
+}
+
+} // namespace
+
+QString keyword(SegmentKind value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(ArcDirection value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(ClampingMethod value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(PassKind value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(ToleranceType value)
+{
+    return keywordOf(value);
+}
+
+namespace {
+struct Names {
+    Q_DECLARE_TR_FUNCTIONS(Names)
+};
+} // namespace
+
+QString displayName(ClampingMethod value)
+{
+    switch (value) {
+    case ClampingMethod::Chuck:
+        return Names::tr("chuck");
+    case ClampingMethod::BetweenCentres:
+        return Names::tr("between centres");
+    case ClampingMethod::ChuckTailstock:
+        return Names::tr("chuck + tailstock");
+    }
+    return keyword(value);
+}
+
+QString displayName(SegmentKind value)
+{
+    switch (value) {
+    case SegmentKind::Cylinder:
+        return Names::tr("cylinder");
+    case SegmentKind::Face:
+        return Names::tr("face");
+    case SegmentKind::Cone:
+        return Names::tr("cone");
+    case SegmentKind::Chamfer:
+        return Names::tr("chamfer");
+    case SegmentKind::Radius:
+        return Names::tr("radius");
+    }
+    return keyword(value);
+}
+
+QString displayName(ToleranceType value)
+{
+    switch (value) {
+    case ToleranceType::Length:
+        return Names::tr("length");
+    case ToleranceType::Diameter:
+        return Names::tr("diameter");
+    case ToleranceType::Flatness:
+        return Names::tr("flatness");
+    case ToleranceType::Cylindricity:
+        return Names::tr("cylindricity");
+    case ToleranceType::Profile:
+        return Names::tr("profile of a surface");
+    case ToleranceType::Parallelism:
+        return Names::tr("parallelism");
+    case ToleranceType::Perpendicularity:
+        return Names::tr("perpendicularity");
+    case ToleranceType::Coaxiality:
+        return Names::tr("coaxiality");
+    case ToleranceType::CircularRadialRunout:
+        return Names::tr("circular radial run-out");
+    case ToleranceType::CircularAxialRunout:
+        return Names::tr("circular axial run-out");
+    case ToleranceType::TotalRadialRunout:
+        return Names::tr("total radial run-out");
+    case ToleranceType::TotalAxialRunout:
+        return Names::tr("total axial run-out");
+    }
+    return keyword(value);
+}
+
+template <typename Enum>
+std::optional<Enum> fromKeyword(const QString &word)
+{
+    for (const auto &[v, text] : KeywordTable<Enum>::entries) {
+        if (word == QLatin1String(text))
+            return v;
+    }
+    return std::nullopt;
+}
+
+template <typename Enum>
+QStringList allKeywords()
+{
+    QStringList words;
+    for (const auto &entry : KeywordTable<Enum>::entries)
+        words << QString::fromLatin1(entry.second);
+    return words;
+}
+
+template std::optional<SegmentKind> fromKeyword<SegmentKind>(const QString &);
+template std::optional<ArcDirection> fromKeyword<ArcDirection>(const QString &);
+template std::optional<ClampingMethod> fromKeyword<ClampingMethod>(const QString &);
+template std::optional<PassKind> fromKeyword<PassKind>(const QString &);
+template std::optional<ToleranceType> fromKeyword<ToleranceType>(const QString &);
+template QStringList allKeywords<SegmentKind>();
+template QStringList allKeywords<ArcDirection>();
+template QStringList allKeywords<ClampingMethod>();
+template QStringList allKeywords<PassKind>();
+template QStringList allKeywords<ToleranceType>();
+
+} // namespace tolturn

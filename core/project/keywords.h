@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/part/profile.h"
+#include "core/project/project.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace tolturn {
+
+// The words used for enumerations in project files, on the command line and in messages.
+// One table per enumeration; keyword() and fromKeyword() are exact inverses.
+[[nodiscard]] QString keyword(SegmentKind value);
+[[nodiscard]] QString keyword(ArcDirection value);
+[[nodiscard]] QString keyword(ClampingMethod value);
+[[nodiscard]] QString keyword(PassKind value);
+[[nodiscard]] QString keyword(ToleranceType value);
+
+// Names for people, translated: "chuck + tailstock" where the file says "chuck_tailstock".
+[[nodiscard]] QString displayName(ClampingMethod value);
+[[nodiscard]] QString displayName(SegmentKind value);
+[[nodiscard]] QString displayName(ToleranceType value);
+
+template <typename Enum>
+[[nodiscard]] std::optional<Enum> fromKeyword(const QString &word);
+template <typename Enum>
+[[nodiscard]] QStringList allKeywords();
+
+} // namespace tolturn

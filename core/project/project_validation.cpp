@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/project/project_validation.h"
+
+#include "core/part/profile_validation.h"
+#include "core/project/keywords.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+#include <QSet>
+
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+struct ProjectValidation {
+    Q_DECLARE_TR_FUNCTIONS(ProjectValidation)
+};
+
+QString tr(const char *text)
+{
+    return ProjectValidation::tr(text);
+}
+
+QString num(double v)
+{
+    return formatNumber(v);
+}
+
+void requireText(const QString &value, const QString &field, const QString &what, Diagnostics &out)
+{
+    if (value.trimmed().isEmpty())
+        out.push_back(makeError(field, tr("%1 is missing (empty)").arg(what)));
+}
+
+void checkClamping(const Project &p, Diagnostics &out)
+{
+    const double clamped = p.clamping.clampedLength_mm;
+    const QString field = QStringLiteral("clamping.clamped_length_mm");
+    if (!std::isfinite(clamped) || clamped < 0.0) {
+        out.push_back(makeError(field, tr("must be zero or more, but is %1 mm").arg(num(clamped))));
+        return;
+    }
+    const double length = p.part.length_mm();
+    switch (p.clamping.method) {
+    case ClampingMethod::Chuck:
+    case ClampingMethod::ChuckTailstock:
+        if (clamped <= 0.0)
+            out.push_back(makeError(field, tr("a part held in a chuck needs a clamped length above zero, but it "
+                                              "is %1 mm")
+                                               .arg(num(clamped))));
+        else if (length > 0.0 && clamped >= length)
+            out.push_back(makeError(field, tr("the clamped length %1 mm leaves nothing to turn on a part %2 mm "
+                                              "long")
+                                               .arg(num(clamped), num(length))));
+        break;
+    case ClampingMethod::BetweenCentres:
+        if (clamped > 0.0)
+            out.push_back(makeWarning(field, tr("a part between centres is not clamped; the clamped length %1 mm "
+                                                "is ignored")
+                                                 .arg(num(clamped))));
+        break;
+    }
+}
+
+void checkPasses(const Project &p, Diagnostics &out)
+{
+    for (std::size_t i = 0; i < p.passes.size(); ++i) {
+        const CuttingPass &pass = p.passes[i];
+        const QString path = QStringLiteral("passes[%1].").arg(i);
+        const std::pair<const char *, double> values[] = {{"cutting_speed_m_min", pass.cuttingSpeed_m_min},
+                                                          {"feed_mm_rev", pass.feed_mm_rev},
+                                                          {"depth_of_cut_mm", pass.depthOfCut_mm}};
+        for (const auto &[name, value] : values) {
+            if (!std::isfinite(value) || value <= 0.0)
+                out.push_back(
+                    makeError(path + QLatin1String(name), tr("must be above zero, but is %1").arg(num(value))));
+        }
+    }
+}
+
+void checkDatums(const Project &p, Diagnostics &out)
+{
+    static const QRegularExpression label(QStringLiteral("^[A-Z]{1,2}$"));
+    QSet<QString> seen;
+    for (std::size_t i = 0; i < p.datums.size(); ++i) {
+        const Datum &d = p.datums[i];
+        const QString path = QStringLiteral("datums[%1].").arg(i);
+        if (!label.match(d.label).hasMatch())
+            out.push_back(
+                makeError(path + QStringLiteral("label"),
+                          tr("a datum is named by one or two capital letters (ISO 5459), not '%1'").arg(d.label)));
+        else if (seen.contains(d.label))
+            out.push_back(makeError(path + QStringLiteral("label"), tr("datum '%1' is defined twice").arg(d.label)));
+        seen.insert(d.label);
+        if (!findFeature(p.part, d.featureId))
+            out.push_back(makeError(path + QStringLiteral("feature"),
+                                    tr("there is no feature '%1' in the profile").arg(d.featureId)));
+    }
+}
+
+// Which kinds of feature each tolerance may sit on (Valiño et al. 2008, §V, Fig. 4).
+bool featureFits(ToleranceType type, SegmentKind kind)
+{
+    const bool face = kind == SegmentKind::Face;
+    const bool cylinder = kind == SegmentKind::Cylinder;
+    switch (type) {
+    case ToleranceType::Length:
+    case ToleranceType::Flatness:
+    case ToleranceType::Parallelism:
+    case ToleranceType::CircularAxialRunout:
+    case ToleranceType::TotalAxialRunout:
+        return face;
+    case ToleranceType::Diameter:
+    case ToleranceType::Cylindricity:
+    case ToleranceType::Coaxiality:
+        return cylinder;
+    case ToleranceType::Profile:
+        return !face && !cylinder;
+    case ToleranceType::Perpendicularity: // face to the axis, or an axis to a face
+        return face || cylinder;
+    case ToleranceType::CircularRadialRunout:
+    case ToleranceType::TotalRadialRunout:
+        return !face;
+    }
+    return false;
+}
+
+void checkSizeLimits(const Tolerance &t, const FeatureRef &feature, const QString &path, Diagnostics &out)
+{
+    // Grammar of an ISO 286-1 class: fundamental deviation letter(s) then the IT grade number.
+    static const QRegularExpression isoClass(QStringLiteral("^([A-Za-z]{1,2})(01|0|[1-9]|1[0-8])$"));
+    const bool hasClass = !t.iso286Class.isEmpty();
+    const bool hasLimits = t.upperDeviation_um.has_value() || t.lowerDeviation_um.has_value();
+    if (hasClass == hasLimits) {
+        out.push_back(makeError(path + QStringLiteral("iso286"),
+                                tr("give either an ISO 286 class or both limit deviations (upper_um, lower_um)")));
+        return;
+    }
+    if (hasClass) {
+        const auto match = isoClass.match(t.iso286Class);
+        if (!match.hasMatch()) {
+            out.push_back(makeError(
+                path + QStringLiteral("iso286"),
+                tr("'%1' is not an ISO 286 tolerance class (a letter and a grade, e.g. h6 or H7)").arg(t.iso286Class)));
+            return;
+        }
+        if (t.type == ToleranceType::Diameter) {
+            const bool holeClass = match.captured(1).at(0).isUpper();
+            const bool bore = feature.side == ContourSide::Inner;
+            if (holeClass != bore)
+                out.push_back(makeError(path + QStringLiteral("iso286"),
+                                        (bore ? tr("'%1' is a shaft class, but feature '%2' is a bore: use capital "
+                                                   "letters (e.g. H7)")
+                                              : tr("'%1' is a hole class, but feature '%2' is an outer surface: use "
+                                                   "small letters (e.g. h6)"))
+                                            .arg(t.iso286Class, t.featureId)));
+        }
+        return;
+    }
+    if (!t.upperDeviation_um || !t.lowerDeviation_um) {
+        out.push_back(makeError(path + (t.upperDeviation_um ? QStringLiteral("lower_um") : QStringLiteral("upper_um")),
+                                tr("both limit deviations are needed, upper_um and lower_um")));
+        return;
+    }
+    if (*t.upperDeviation_um <= *t.lowerDeviation_um)
+        out.push_back(makeError(path + QStringLiteral("upper_um"),
+                                tr("the upper deviation %1 µm must be above the lower deviation %2 µm")
+                                    .arg(num(*t.upperDeviation_um), num(*t.lowerDeviation_um))));
+}
+
+void checkGeometric(const Tolerance &t, const QSet<QString> &datumLabels, const QString &path, Diagnostics &out)
+{
+    if (!t.zone_um || !std::isfinite(*t.zone_um) || *t.zone_um <= 0.0) {
+        out.push_back(
+            makeError(path + QStringLiteral("value_um"),
+                      tr("a %1 tolerance needs a zone width above zero, but it is %2")
+                          .arg(keyword(t.type), t.zone_um ? num(*t.zone_um) + QStringLiteral(" µm") : tr("missing"))));
+    }
+    if (needsDatum(t.type) && t.datums.isEmpty())
+        out.push_back(
+            makeError(path + QStringLiteral("datums"),
+                      tr("a %1 tolerance is defined relative to a datum, but none is given").arg(keyword(t.type))));
+    for (const QString &label : t.datums) {
+        if (!datumLabels.contains(label))
+            out.push_back(makeError(path + QStringLiteral("datums"),
+                                    tr("datum '%1' is not defined in the project's datums").arg(label)));
+    }
+}
+
+void checkTolerance(const Project &p, const Tolerance &t, const QSet<QString> &datumLabels, const QString &path,
+                    Diagnostics &out)
+{
+    const auto feature = findFeature(p.part, t.featureId);
+    if (!feature) {
+        out.push_back(makeError(path + QStringLiteral("feature"),
+                                tr("there is no feature '%1' in the profile").arg(t.featureId)));
+        return;
+    }
+    if (!featureFits(t.type, feature->segment->kind))
+        out.push_back(makeError(path + QStringLiteral("feature"),
+                                tr("a %1 tolerance cannot sit on feature '%2', which is a %3")
+                                    .arg(keyword(t.type), t.featureId, keyword(feature->segment->kind))));
+    if (t.type == ToleranceType::Length) {
+        const auto other = findFeature(p.part, t.toFeatureId);
+        if (!other)
+            out.push_back(makeError(
+                path + QStringLiteral("to_feature"),
+                tr("a length runs between two faces; there is no feature '%1' in the profile").arg(t.toFeatureId)));
+        else if (other->segment->kind != SegmentKind::Face || t.toFeatureId == t.featureId)
+            out.push_back(
+                makeError(path + QStringLiteral("to_feature"),
+                          tr("a length runs between two different faces; '%1' is not one").arg(t.toFeatureId)));
+    }
+    if (isSizeTolerance(t.type))
+        checkSizeLimits(t, *feature, path, out);
+    else
+        checkGeometric(t, datumLabels, path, out);
+}
+
+void checkTolerances(const Project &p, Diagnostics &out)
+{
+    QSet<QString> datumLabels;
+    for (const Datum &d : p.datums)
+        datumLabels.insert(d.label);
+    QSet<QString> ids;
+    for (std::size_t i = 0; i < p.tolerances.size(); ++i) {
+        const Tolerance &t = p.tolerances[i];
+        const QString path = QStringLiteral("tolerances[%1].").arg(i);
+        if (t.id.trimmed().isEmpty())
+            out.push_back(
+                makeError(path + QStringLiteral("id"), tr("every tolerance needs an id, but this one is empty")));
+        else if (ids.contains(t.id))
+            out.push_back(makeError(path + QStringLiteral("id"), tr("the id '%1' is used twice").arg(t.id)));
+        ids.insert(t.id);
+        checkTolerance(p, t, datumLabels, path, out);
+    }
+}
+
+} // namespace
+
+Diagnostics validateProject(const Project &project)
+{
+    Diagnostics out = validateProfile(project.part);
+    requireText(project.materialId, QStringLiteral("material"), tr("the work material"), out);
+    requireText(project.machineId, QStringLiteral("machine"), tr("the machine"), out);
+    requireText(project.tool.insertCode, QStringLiteral("tool.insert"), tr("the insert code"), out);
+    checkClamping(project, out);
+    checkPasses(project, out);
+    checkDatums(project, out);
+    checkTolerances(project, out);
+    return out;
+}
+
+} // namespace tolturn

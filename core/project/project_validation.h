@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+#include "core/project/project.h"
+
+namespace tolturn {
+
+// Every check of a project that does not need the data libraries: the profile, the clamping,
+// the tool codes present, the passes, the datums and the tolerances with the features they name.
+[[nodiscard]] Diagnostics validateProject(const Project &project);
+
+} // namespace tolturn

@@ -1,0 +1,371 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Project files: round trips, atomic writing, and one named error for each kind of bad input.
+#include "core/io/project_file.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace tolturn;
+
+namespace {
+
+QString examplePath(const QString &name)
+{
+    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + name;
+}
+
+QJsonObject exampleJson(const QString &name)
+{
+    QFile file(examplePath(name));
+    if (!file.open(QIODevice::ReadOnly))
+        qFatal("cannot read example %s", qPrintable(name));
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+// Sets (or, for the value "<delete>", removes) the field at a path such as
+// "part.outer[3].from.z_mm" in a JSON document.
+QJsonValue withField(const QJsonValue &node, QStringList keys, const QJsonValue &value)
+{
+    static const QRegularExpression indexed(QStringLiteral("^(\\w+)\\[(\\d+)\\]$"));
+    const QString key = keys.takeFirst();
+    const auto match = indexed.match(key);
+    const QString name = match.hasMatch() ? match.captured(1) : key;
+    QJsonObject object = node.toObject();
+    if (match.hasMatch()) {
+        QJsonArray array = object.value(name).toArray();
+        const int i = match.captured(2).toInt();
+        array[i] = keys.isEmpty() ? value : withField(array.at(i), keys, value);
+        object[name] = array;
+    } else if (keys.isEmpty()) {
+        if (value.isUndefined())
+            object.remove(name);
+        else
+            object[name] = value;
+    } else {
+        object[name] = withField(object.value(name), keys, value);
+    }
+    return object;
+}
+
+// Applies edits "path=json-value" to a document.
+QByteArray edited(const QJsonObject &base, const QStringList &edits)
+{
+    QJsonValue doc = base;
+    for (const QString &edit : edits) {
+        const qsizetype eq = edit.indexOf(QLatin1Char('='));
+        const QString path = edit.left(eq);
+        const QString text = edit.mid(eq + 1);
+        QJsonValue value(QJsonValue::Undefined);
+        if (text != QLatin1String("<delete>"))
+            value = QJsonDocument::fromJson(QByteArray("[") + text.toUtf8() + "]").array().at(0);
+        doc = withField(doc, path.split(QLatin1Char('.')), value);
+    }
+    return QJsonDocument(doc.toObject()).toJson();
+}
+
+Diagnostics errorsOf(const Diagnostics &all)
+{
+    Diagnostics errors;
+    for (const Diagnostic &d : all) {
+        if (d.severity == Severity::Error)
+            errors.push_back(d);
+    }
+    return errors;
+}
+
+QString dump(const Diagnostics &all)
+{
+    QStringList lines;
+    for (const Diagnostic &d : all)
+        lines << d.toString();
+    return lines.join(QLatin1Char('\n'));
+}
+
+// A project that uses every field of the format, built in code.
+Project everyFieldProject()
+{
+    auto seg = [](const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b) {
+        Segment s;
+        s.id = QString::fromLatin1(id);
+        s.kind = kind;
+        s.from = a;
+        s.to = b;
+        return s;
+    };
+    Project p;
+    p.part.name = QStringLiteral("Bush with fillet — ÄÖÜ ñ");
+    p.part.stockDiameter_mm = 50.5;
+    Segment fillet = seg("O3", SegmentKind::Radius, {30, 20}, {32, 22});
+    fillet.arcRadius_mm = 2.0;
+    fillet.arcDirection = ArcDirection::CounterClockwise;
+    fillet.name = QStringLiteral("shoulder fillet");
+    p.part.outer.segments = {seg("O1", SegmentKind::Face, {0, 8}, {0, 20}),
+                             seg("O2", SegmentKind::Cylinder, {0, 20}, {30, 20}),
+                             fillet,
+                             seg("O4", SegmentKind::Face, {32, 22}, {32, 24}),
+                             seg("O5", SegmentKind::Cone, {32, 24}, {60, 25}),
+                             seg("O6", SegmentKind::Chamfer, {60, 25}, {61, 24}),
+                             seg("O7", SegmentKind::Face, {61, 24}, {61, 8})};
+    p.part.inner.segments = {seg("I1", SegmentKind::Cylinder, {0, 8}, {61, 8})};
+    p.materialId = QStringLiteral("C45E");
+    p.machineId = QStringLiteral("generic-cnc-lathe-200");
+    p.tool = {QStringLiteral("DNMG 150608"), QStringLiteral("PDJNR 2525M15")};
+    p.clamping = {ClampingMethod::ChuckTailstock, 12.5};
+    p.passes = {{PassKind::Roughing, 180.0, 0.28, 2.5}, {PassKind::Finishing, 240.0, 0.08, 0.25}};
+    p.datums = {{QStringLiteral("A"), QStringLiteral("I1")}};
+    Tolerance t1;
+    t1.id = QStringLiteral("T1");
+    t1.type = ToleranceType::Diameter;
+    t1.featureId = QStringLiteral("O2");
+    t1.upperDeviation_um = -7.0;
+    t1.lowerDeviation_um = -20.0;
+    Tolerance t2;
+    t2.id = QStringLiteral("T2");
+    t2.type = ToleranceType::Length;
+    t2.featureId = QStringLiteral("O1");
+    t2.toFeatureId = QStringLiteral("O7");
+    t2.iso286Class = QStringLiteral("js12");
+    Tolerance t3;
+    t3.id = QStringLiteral("T3");
+    t3.type = ToleranceType::TotalAxialRunout;
+    t3.featureId = QStringLiteral("O4");
+    t3.zone_um = 12.5;
+    t3.datums = {QStringLiteral("A")};
+    p.tolerances = {t1, t2, t3};
+    return p;
+}
+
+} // namespace
+
+class TestProjectFile : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void examplesAreValid_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("outerSegments");
+        QTest::addColumn<int>("innerSegments");
+        QTest::addColumn<double>("length");
+        // Counts and lengths as drawn for the examples (docs/project-format.md).
+        QTest::newRow("stepped shaft") << QStringLiteral("stepped-shaft-chuck.tolturn") << 11 << 0 << 150.0;
+        QTest::newRow("hollow sleeve") << QStringLiteral("hollow-sleeve-tailstock.tolturn") << 8 << 3 << 400.0;
+        QTest::newRow("long shaft") << QStringLiteral("long-shaft-centres.tolturn") << 9 << 0 << 500.0;
+    }
+
+    void examplesAreValid()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, outerSegments);
+        QFETCH(int, innerSegments);
+        QFETCH(double, length);
+        const ProjectParseResult r = readProjectFile(examplePath(file));
+        QVERIFY2(r.project.has_value(), qPrintable(dump(r.diagnostics)));
+        QVERIFY2(r.diagnostics.empty(), qPrintable(dump(r.diagnostics)));
+        QCOMPARE(int(r.project->part.outer.segments.size()), outerSegments);
+        QCOMPARE(int(r.project->part.inner.segments.size()), innerSegments);
+        QCOMPARE(r.project->part.length_mm(), length);
+    }
+
+    void roundTripThroughFile_data() { examplesAreValid_data(); }
+
+    void roundTripThroughFile()
+    {
+        QFETCH(QString, file);
+        const ProjectParseResult first = readProjectFile(examplePath(file));
+        QVERIFY(first.project);
+        QTemporaryDir dir;
+        const QString copy = dir.filePath(QStringLiteral("copy.tolturn"));
+        const WriteResult written = writeProjectFile(copy, *first.project);
+        QVERIFY2(written.ok, qPrintable(written.error));
+        const ProjectParseResult second = readProjectFile(copy);
+        QVERIFY2(second.project, qPrintable(dump(second.diagnostics)));
+        QVERIFY(*second.project == *first.project);
+        // Writing is deterministic: the same project gives the same bytes.
+        QCOMPARE(serializeProjectJson(*second.project), serializeProjectJson(*first.project));
+    }
+
+    void roundTripKeepsEveryField()
+    {
+        const Project original = everyFieldProject();
+        const ProjectParseResult back = parseProjectJson(serializeProjectJson(original));
+        QVERIFY2(back.project, qPrintable(dump(back.diagnostics)));
+        QVERIFY(back.diagnostics.empty());
+        QVERIFY(*back.project == original);
+        QCOMPARE(back.project->part.name, QStringLiteral("Bush with fillet — ÄÖÜ ñ"));
+        QCOMPARE(back.project->part.outer.segments[2].arcRadius_mm, 2.0);
+        QCOMPARE(*back.project->tolerances[0].upperDeviation_um, -7.0);
+    }
+
+    void saveReplacesFileWholeAndLeavesNoTemporary()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("part.tolturn"));
+        {
+            QFile old(path);
+            QVERIFY(old.open(QIODevice::WriteOnly));
+            old.write(QByteArray(100000, 'x')); // longer than the project: must not leave a tail
+        }
+        const Project p = everyFieldProject();
+        QVERIFY(writeProjectFile(path, p).ok);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), serializeProjectJson(p));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("part.tolturn")});
+    }
+
+    void failedSaveNamesFileAndKeepsDisk()
+    {
+        QTemporaryDir dir;
+        const QString blocker = dir.filePath(QStringLiteral("not-a-folder"));
+        {
+            QFile f(blocker);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("keep me");
+        }
+        const QString path = blocker + QStringLiteral("/part.tolturn");
+        const WriteResult r = writeProjectFile(path, everyFieldProject());
+        QVERIFY(!r.ok);
+        QVERIFY2(r.error.contains(path), qPrintable(r.error));
+        QFile f(blocker);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("keep me"));
+    }
+
+    void missingFile()
+    {
+        const ProjectParseResult r = readProjectFile(QStringLiteral("/nonexistent/part.tolturn"));
+        QVERIFY(!r.project);
+        QCOMPARE(int(errorsOf(r.diagnostics).size()), 1);
+        QCOMPARE(r.diagnostics[0].field, QStringLiteral("file"));
+        QVERIFY(r.diagnostics[0].message.contains(QStringLiteral("/nonexistent/part.tolturn")));
+        QVERIFY(r.diagnostics[0].message.contains(QStringLiteral("does not exist")));
+    }
+
+    void invalidJsonGivesLineAndColumn()
+    {
+        const ProjectParseResult r = parseProjectJson("{\n  \"format\": \"tolturn-project\",\n  \"version\": 1,,\n}");
+        QVERIFY(!r.project);
+        QCOMPARE(int(r.diagnostics.size()), 1);
+        QVERIFY2(r.diagnostics[0].message.startsWith(QStringLiteral("invalid JSON at line 3, column ")),
+                 qPrintable(r.diagnostics[0].message));
+    }
+
+    void topLevelMustBeObject()
+    {
+        const ProjectParseResult r = parseProjectJson("[1, 2]");
+        QVERIFY(!r.project);
+        QCOMPARE(int(r.diagnostics.size()), 1);
+        QVERIFY(r.diagnostics[0].message.contains(QStringLiteral("one JSON object")));
+    }
+
+    void unknownFieldIsOnlyAWarning()
+    {
+        const QByteArray json = edited(exampleJson(QStringLiteral("stepped-shaft-chuck.tolturn")),
+                                       {QStringLiteral("part.colour=\"blue\"")});
+        const ProjectParseResult r = parseProjectJson(json);
+        QVERIFY(r.project);
+        QCOMPARE(int(r.diagnostics.size()), 1);
+        QCOMPARE(r.diagnostics[0].severity, Severity::Warning);
+        QCOMPARE(r.diagnostics[0].field, QStringLiteral("part.colour"));
+    }
+
+    // Each bad input gives exactly one error, on the named field, whose message names the value.
+    void badInput_data()
+    {
+        QTest::addColumn<QString>("example");
+        QTest::addColumn<QStringList>("edits");
+        QTest::addColumn<QString>("field");
+        QTest::addColumn<QString>("fragment");
+        const QString shaft = QStringLiteral("stepped-shaft-chuck.tolturn");
+        const QString sleeve = QStringLiteral("hollow-sleeve-tailstock.tolturn");
+        auto row = [](const char *name, const QString &example, const QStringList &edits, const char *field,
+                      const char *fragment) {
+            QTest::newRow(name) << example << edits << QString::fromUtf8(field) << QString::fromUtf8(fragment);
+        };
+        row("not a TolTurn file", shaft, {QStringLiteral("format=\"cam-job\"")}, "format", "\"cam-job\"");
+        row("unknown version", shaft, {QStringLiteral("version=2")}, "version", "unknown format version 2");
+        row("version not a number", shaft, {QStringLiteral("version=\"1\"")}, "version", "the text \"1\"");
+        row("missing material", shaft, {QStringLiteral("material=<delete>")}, "material", "required but missing");
+        row("stock not a number", shaft, {QStringLiteral("part.stock_diameter_mm=\"sixty\"")}, "part.stock_diameter_mm",
+            "expected a number, found the text \"sixty\"");
+        row("zero stock", shaft, {QStringLiteral("part.stock_diameter_mm=0")}, "part.stock_diameter_mm",
+            "above zero, but is 0 mm");
+        row("stock smaller than part", shaft, {QStringLiteral("part.stock_diameter_mm=50")}, "part.stock_diameter_mm",
+            "largest diameter is 56 mm");
+        row("unknown clamping", shaft, {QStringLiteral("clamping.method=\"vise\"")}, "clamping.method",
+            "unknown clamping method \"vise\"");
+        row("clamped length beyond part", shaft, {QStringLiteral("clamping.clamped_length_mm=150")},
+            "clamping.clamped_length_mm", "150 mm leaves nothing to turn");
+        row("chuck without clamped length", shaft, {QStringLiteral("clamping.clamped_length_mm=0")},
+            "clamping.clamped_length_mm", "above zero, but it is 0 mm");
+        row("unknown segment type", shaft, {QStringLiteral("part.outer[3].type=\"thread\"")}, "part.outer[3].type",
+            "unknown segment type \"thread\"");
+        row("gap", shaft, {QStringLiteral("part.outer[5].from.z_mm=91")}, "part.outer[5].from",
+            "leaves a gap: it starts at (z 91, r 20), but part.outer[4] ends at (z 90, r 20)");
+        row("overlap", shaft, {QStringLiteral("part.outer[5].from.z_mm=89")}, "part.outer[5].from",
+            "overlaps part.outer[4]: it starts at (z 89, r 20), left of where part.outer[4] ends, (z 90, r 20)");
+        row("segment running backwards", shaft,
+            {QStringLiteral("part.outer[3].to.z_mm=30"), QStringLiteral("part.outer[4].from.z_mm=30")},
+            "part.outer[3].to.z_mm", "runs backwards along z, from z = 35 mm to z = 30 mm");
+        row("zero-length cylinder", shaft,
+            {QStringLiteral("part.outer[3].to.z_mm=35"), QStringLiteral("part.outer[4].from.z_mm=35")},
+            "part.outer[3].to.z_mm", "zero length: it starts and ends at z = 35 mm");
+        row("negative radius", shaft, {QStringLiteral("part.outer[0].from.r_mm=-1")}, "part.outer[0].from.r_mm",
+            "must not be negative, but is -1 mm");
+        row("cylinder changing radius", shaft,
+            {QStringLiteral("part.outer[3].to.r_mm=24"), QStringLiteral("part.outer[4].from.r_mm=24")},
+            "part.outer[3].to.r_mm", "from r = 25 mm to r = 24 mm");
+        row("radius too small", shaft, {QStringLiteral("part.outer[6].radius_mm=1")}, "part.outer[6].radius_mm",
+            "a radius of 1 mm cannot join two points");
+        row("outer not starting at z = 0", shaft,
+            {QStringLiteral("part.outer[0].from.z_mm=5"), QStringLiteral("part.outer[0].to.z_mm=5"),
+             QStringLiteral("part.outer[1].from.z_mm=5")},
+            "part.outer[0].from.z_mm", "starts at z = 5 mm");
+        row("inner radius meets outer", sleeve,
+            {QStringLiteral("part.outer[2].to.r_mm=20"), QStringLiteral("part.outer[3].from.r_mm=20"),
+             QStringLiteral("part.outer[3].to.r_mm=20"), QStringLiteral("part.outer[4].from.r_mm=20")},
+            "part.inner[0]", "the inner radius meets the outer one");
+        row("duplicate feature id", shaft, {QStringLiteral("part.outer[9].id=\"O4\"")}, "part.outer[9].id",
+            "'O4' is used by another feature");
+        row("tolerance on missing feature", shaft, {QStringLiteral("tolerances[0].feature=\"O99\"")},
+            "tolerances[0].feature", "no feature 'O99'");
+        row("unknown tolerance type", shaft, {QStringLiteral("tolerances[1].type=\"roundness\"")}, "tolerances[1].type",
+            "unknown tolerance type \"roundness\"");
+        row("geometric tolerance without datum", shaft, {QStringLiteral("tolerances[4].datums=[]")},
+            "tolerances[4].datums", "relative to a datum, but none is given");
+        row("undefined datum", shaft, {QStringLiteral("tolerances[4].datums=[\"B\"]")}, "tolerances[4].datums",
+            "datum 'B' is not defined");
+        row("hole class on shaft", shaft, {QStringLiteral("tolerances[0].iso286=\"H7\"")}, "tolerances[0].iso286",
+            "'H7' is a hole class");
+        row("malformed ISO 286 class", shaft, {QStringLiteral("tolerances[0].iso286=\"h66\"")}, "tolerances[0].iso286",
+            "'h66' is not an ISO 286 tolerance class");
+        row("zero zone", shaft, {QStringLiteral("tolerances[1].value_um=0")}, "tolerances[1].value_um",
+            "zone width above zero, but it is 0 µm");
+        row("negative feed", shaft, {QStringLiteral("passes[1].feed_mm_rev=-0.1")}, "passes[1].feed_mm_rev",
+            "above zero, but is -0.1");
+    }
+
+    void badInput()
+    {
+        QFETCH(QString, example);
+        QFETCH(QStringList, edits);
+        QFETCH(QString, field);
+        QFETCH(QString, fragment);
+        const ProjectParseResult r = parseProjectJson(edited(exampleJson(example), edits));
+        QVERIFY(!r.project);
+        const Diagnostics errors = errorsOf(r.diagnostics);
+        QVERIFY2(errors.size() == 1, qPrintable(dump(r.diagnostics)));
+        QCOMPARE(errors[0].field, field);
+        QVERIFY2(errors[0].message.contains(fragment), qPrintable(errors[0].message));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProjectFile)
+#include "tst_project_file.moc"

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The desktop program's main window, offscreen: open an example, see its drawing, survive bad
+// files with a dialog and the document untouched, save, recent files, About.
+#include "app/gui/main_window.h"
+#include "app/gui/recent_files.h"
+#include "resources/bundled.h"
+#include "widgets/dialogs/about_dialog.h"
+#include "widgets/document/project_document.h"
+#include "widgets/profile/dimension_item.h"
+#include "widgets/profile/profile_scene.h"
+#include "widgets/profile/profile_view.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QGraphicsItem>
+#include <QGraphicsScene>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+using namespace tolturn;
+
+namespace {
+
+QString example(const char *name)
+{
+    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
+}
+
+QList<QGraphicsItem *> itemsOfKind(const MainWindow &w, const QString &kind)
+{
+    QList<QGraphicsItem *> found;
+    const QList<QGraphicsItem *> all = w.profileView()->scene()->items();
+    for (QGraphicsItem *item : all) {
+        if (item->data(kItemKindData).toString() == kind)
+            found << item;
+    }
+    return found;
+}
+
+QStringList dimensionTexts(const MainWindow &w)
+{
+    QStringList texts;
+    for (QGraphicsItem *item : itemsOfKind(w, profile_item::kDimension))
+        texts << static_cast<DimensionItem *>(item)->text();
+    return texts;
+}
+
+// Closes the next modal message box and returns its text through `text`.
+void closeNextMessageBox(QString *text)
+{
+    QTimer::singleShot(0, [text] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (box == nullptr) {
+            closeNextMessageBox(text); // not shown yet: try again on the next turn of the loop
+            return;
+        }
+        *text = box->text();
+        box->accept();
+    });
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("TolTurnTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("tst_main_window"));
+        QSettings().clear();
+    }
+
+    void opensExampleAndDrawsProfile()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        QCOMPARE(itemsOfKind(w, profile_item::kAxis).size(), 1);
+        QCOMPARE(itemsOfKind(w, profile_item::kSection).size(), 1);
+        QCOMPARE(itemsOfKind(w, profile_item::kOuterContour).size(), 11);
+        QCOMPARE(itemsOfKind(w, profile_item::kInnerContour).size(), 0);
+        // Each outer feature is its own item, tagged with its id.
+        QStringList ids;
+        for (QGraphicsItem *item : itemsOfKind(w, profile_item::kOuterContour))
+            ids << item->data(kFeatureIdData).toString();
+        ids.sort();
+        QCOMPARE(ids,
+                 (QStringList{QStringLiteral("O1"), QStringLiteral("O10"), QStringLiteral("O11"), QStringLiteral("O2"),
+                              QStringLiteral("O3"), QStringLiteral("O4"), QStringLiteral("O5"), QStringLiteral("O6"),
+                              QStringLiteral("O7"), QStringLiteral("O8"), QStringLiteral("O9")}));
+        // Diameters of the four cylinders, the length chain between faces at 35, 120 and the ends,
+        // and the overall length (drawing of the example: Ø56, Ø50, Ø40, Ø30; 35 + 85 + 30 = 150).
+        const QStringList dims = dimensionTexts(w);
+        for (const char *expected : {"Ø56", "Ø50", "Ø40", "Ø30", "35", "85", "30", "150"})
+            QVERIFY2(dims.contains(QString::fromUtf8(expected)), qPrintable(dims.join(QLatin1Char(' '))));
+        QVERIFY(w.windowTitle().startsWith(QStringLiteral("stepped-shaft-chuck.tolturn")));
+    }
+
+    void hollowPartHasBoreAndHiddenLines()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
+        QCOMPARE(itemsOfKind(w, profile_item::kInnerContour).size(), 3);
+        QCOMPARE(itemsOfKind(w, profile_item::kHiddenLine).size(), 3);
+        const QStringList dims = dimensionTexts(w);
+        QVERIFY(dims.contains(QStringLiteral("Ø40")));
+        QVERIFY(dims.contains(QStringLiteral("Ø45")));
+        QVERIFY(dims.contains(QStringLiteral("400")));
+    }
+
+    void failedOpenShowsDialogAndKeepsDocument()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("long-shaft-centres.tolturn")));
+        const Project before = w.document()->project();
+        const QString pathBefore = w.document()->filePath();
+
+        QTemporaryDir dir;
+        const QString bad = dir.filePath(QStringLiteral("bad.tolturn"));
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{\"format\": \"tolturn-project\", \"version\": 7}");
+        f.close();
+
+        QString shown;
+        closeNextMessageBox(&shown);
+        QVERIFY(!w.fileController()->openFile(bad));
+        QVERIFY2(shown.contains(QStringLiteral("version: unknown format version 7")), qPrintable(shown));
+        QVERIFY(shown.contains(QStringLiteral("current project is unchanged")));
+        QVERIFY(w.document()->project() == before);
+        QCOMPARE(w.document()->filePath(), pathBefore);
+        QCOMPARE(itemsOfKind(w, profile_item::kOuterContour).size(), 9);
+    }
+
+    void saveAsWritesFileAndRemembersIt()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openExample(bundledExamplePaths().constFirst()));
+        QVERIFY(w.document()->filePath().isEmpty());
+        QTemporaryDir dir;
+        const QString target = dir.filePath(QStringLiteral("saved.tolturn"));
+        QVERIFY(w.fileController()->saveTo(target));
+        QCOMPARE(w.document()->filePath(), target);
+        QVERIFY(!w.document()->isModified());
+        QCOMPARE(RecentFiles().files().constFirst(), target);
+
+        MainWindow reopened;
+        QVERIFY(reopened.fileController()->openFile(target));
+        QVERIFY(reopened.document()->project() == w.document()->project());
+    }
+
+    void failedSaveShowsDialog()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        QString shown;
+        closeNextMessageBox(&shown);
+        QVERIFY(!w.fileController()->saveTo(QStringLiteral("/nonexistent-folder/x.tolturn")));
+        QVERIFY2(shown.contains(QStringLiteral("/nonexistent-folder/x.tolturn")), qPrintable(shown));
+        QVERIFY(shown.contains(QStringLiteral("file on disk is unchanged")));
+    }
+
+    void bundledExamplesAllOpen()
+    {
+        const QStringList paths = bundledExamplePaths();
+        QVERIFY(paths.size() >= 3);
+        for (const QString &path : paths) {
+            MainWindow w;
+            QVERIFY2(w.fileController()->openExample(path), qPrintable(path));
+            QVERIFY(!itemsOfKind(w, profile_item::kOuterContour).isEmpty());
+        }
+    }
+
+    void aboutNamesEveryLibraryWithVersionAndLicence()
+    {
+        const QString html = AboutDialog::aboutHtml();
+        for (const char *text : {"GPL-3.0-or-later", "Qt", "Open CASCADE Technology", "7.6", "NLopt", "Eigen",
+                                 "MPL-2.0", "QCustomPlot", "2.1.0"})
+            QVERIFY2(html.contains(QString::fromLatin1(text)), text);
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_main_window.moc"

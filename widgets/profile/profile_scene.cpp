@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/profile/profile_scene.h"
+
+#include "core/part/profile_geometry.h"
+#include "core/project/keywords.h"
+#include "widgets/profile/dimension_item.h"
+
+#include <QBrush>
+#include <QGraphicsPathItem>
+#include <QGraphicsScene>
+#include <QLocale>
+#include <QPainterPath>
+#include <QPen>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace tolturn {
+
+namespace {
+
+// Drawing conventions: ISO 128 line types (continuous wide for visible edges, continuous narrow
+// for dimensions and hatching, dashed for hidden edges, long-dash dot for centre lines).
+QPen cosmeticPen(const QColor &color, double width, Qt::PenStyle style = Qt::SolidLine)
+{
+    QPen pen(color, width, style);
+    pen.setCosmetic(true);
+    pen.setCapStyle(Qt::FlatCap);
+    pen.setJoinStyle(Qt::RoundJoin);
+    return pen;
+}
+
+const QColor kEdgeColor(0x20, 0x20, 0x20);
+const QColor kHatchColor(0x6a, 0x7f, 0x99);
+const QColor kAxisColor(0xb0, 0x30, 0x30);
+
+QPointF scenePoint(const ProfilePoint &p, double sign = 1.0)
+{
+    return {p.z_mm, -sign * p.r_mm};
+}
+
+QPainterPath segmentPath(const Segment &segment, double sign)
+{
+    const std::vector<ProfilePoint> points = samplePoints(segment);
+    QPainterPath path(scenePoint(points.front(), sign));
+    for (std::size_t i = 1; i < points.size(); ++i)
+        path.lineTo(scenePoint(points[i], sign));
+    return path;
+}
+
+void appendContour(QPolygonF &polygon, const Contour &contour, bool reversed)
+{
+    std::vector<ProfilePoint> points;
+    for (const Segment &s : contour.segments) {
+        const std::vector<ProfilePoint> seg = samplePoints(s);
+        points.insert(points.end(), seg.begin(), seg.end());
+    }
+    if (reversed)
+        std::reverse(points.begin(), points.end());
+    for (const ProfilePoint &p : points)
+        polygon << scenePoint(p);
+}
+
+// Outline of the material in the upper half: the outer contour left to right, then back along
+// the bore (or the axis where there is no bore) to the start.
+QPolygonF sectionOutline(const PartProfile &profile)
+{
+    QPolygonF polygon;
+    appendContour(polygon, profile.outer, false);
+    if (!profile.inner.empty()) {
+        if (profile.inner.back().r_mm <= kProfileEpsilon_mm) // blind bore ending inside the part
+            polygon << scenePoint({profile.inner.back().z_mm, 0.0});
+        appendContour(polygon, profile.inner, true);
+        if (profile.inner.front().z_mm > kProfileEpsilon_mm) // blind bore from the right
+            polygon << scenePoint({0.0, 0.0});
+    }
+    return polygon;
+}
+
+void tagItem(QGraphicsItem *item, const QString &kind, const QString &featureId = QString())
+{
+    item->setData(kItemKindData, kind);
+    if (!featureId.isEmpty())
+        item->setData(kFeatureIdData, featureId);
+}
+
+QString featureToolTip(const Segment &s)
+{
+    QString text = QStringLiteral("<b>%1</b> %2").arg(s.id.toHtmlEscaped(), displayName(s.kind));
+    if (!s.name.isEmpty())
+        text += QStringLiteral(" — ") + s.name.toHtmlEscaped();
+    text += QStringLiteral("<br>z %1 → %2 mm, r %3 → %4 mm")
+                .arg(dimensionText(s.from.z_mm), dimensionText(s.to.z_mm), dimensionText(s.from.r_mm),
+                     dimensionText(s.to.r_mm));
+    if (s.kind == SegmentKind::Radius)
+        text += QStringLiteral("<br>R %1 mm, %2").arg(dimensionText(s.arcRadius_mm), keyword(s.arcDirection));
+    return text;
+}
+
+void addContourItems(QGraphicsScene &scene, const Contour &contour, const QString &kind)
+{
+    for (const Segment &s : contour.segments) {
+        auto *item = scene.addPath(segmentPath(s, 1.0), cosmeticPen(kEdgeColor, 2.2));
+        tagItem(item, kind, s.id);
+        item->setToolTip(featureToolTip(s));
+        item->setZValue(2.0);
+    }
+}
+
+// Lower half: the outside view. The mirrored outer contour, and a line from the axis across the
+// view at every circular edge: every face (an annulus seen edge-on reaches the axis line even on a
+// hollow part) and every other vertex. The bore is drawn with hidden (dashed) lines.
+void addOutsideView(QGraphicsScene &scene, const PartProfile &profile)
+{
+    const QPen outline = cosmeticPen(kEdgeColor, 1.4);
+    auto edgeLine = [&](double z, double r, const QString &featureId) {
+        QPainterPath edge(scenePoint({z, 0.0}));
+        edge.lineTo(scenePoint({z, r}, -1.0));
+        tagItem(scene.addPath(edge, outline), profile_item::kViewOutline, featureId);
+    };
+    for (const Segment &s : profile.outer.segments) {
+        if (s.kind == SegmentKind::Face) {
+            edgeLine(s.from.z_mm, std::max(s.from.r_mm, s.to.r_mm), s.id);
+            continue;
+        }
+        tagItem(scene.addPath(segmentPath(s, -1.0), outline), profile_item::kViewOutline, s.id);
+        if (s.to.r_mm > kProfileEpsilon_mm)
+            edgeLine(s.to.z_mm, s.to.r_mm, QString());
+    }
+    const QPen hidden = cosmeticPen(kEdgeColor, 1.0, Qt::DashLine);
+    for (const Segment &s : profile.inner.segments)
+        tagItem(scene.addPath(segmentPath(s, -1.0), hidden), profile_item::kHiddenLine, s.id);
+}
+
+void addAxis(QGraphicsScene &scene, double length)
+{
+    QPen pen = cosmeticPen(kAxisColor, 1.0, Qt::CustomDashLine);
+    pen.setDashPattern({18.0, 4.0, 2.0, 4.0});
+    const double overhang = 0.05 * length + 3.0;
+    auto *axis = scene.addLine(-overhang, 0.0, length + overhang, 0.0, pen);
+    tagItem(axis, profile_item::kAxis);
+    axis->setZValue(3.0);
+}
+
+void addDimension(QGraphicsScene &scene, QPointF from, QPointF to, double offset, const QString &text, double arrow,
+                  double labelAt = 0.5)
+{
+    auto *dim = new DimensionItem(from, to, offset, text, arrow, labelAt);
+    tagItem(dim, profile_item::kDimension);
+    dim->setZValue(4.0);
+    scene.addItem(dim);
+}
+
+// Ø of every cylinder, drawn across the full diameter at the middle of the feature and lettered
+// in the outside view, off the centre line and the hatching; bores are dimensioned a third of the
+// way along so they do not sit on an outer dimension.
+void addDiameterDimensions(QGraphicsScene &scene, const Contour &contour, double where, double arrow)
+{
+    for (const Segment &s : contour.segments) {
+        if (s.kind != SegmentKind::Cylinder)
+            continue;
+        const double z = s.from.z_mm + where * (s.to.z_mm - s.from.z_mm);
+        addDimension(scene, scenePoint({z, s.from.r_mm}, -1.0), scenePoint({z, s.from.r_mm}), 0.0,
+                     QStringLiteral("Ø") + dimensionText(2.0 * s.from.r_mm), arrow, 0.3);
+    }
+}
+
+// Positions along z that the length chain dimensions: every vertex of the outer contour, less
+// those closer than `minSpan` to the one kept before (chamfers and edge radii), ends always kept.
+std::vector<double> chainStations(const PartProfile &profile, double minSpan)
+{
+    std::set<double> all;
+    for (const Segment &s : profile.outer.segments)
+        all.insert(s.from.z_mm);
+    const double length = profile.length_mm();
+    std::vector<double> kept;
+    for (const double z : all) {
+        if (kept.empty() || (z - kept.back() >= minSpan && length - z >= minSpan))
+            kept.push_back(z);
+    }
+    kept.push_back(length);
+    return kept;
+}
+
+// A chain of lengths between the vertices of the outer contour, below the outside view, and
+// the overall length below that.
+void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, double arrow)
+{
+    const double rMax = profile.maxOuterRadius_mm();
+    const double gap = std::max(0.12 * rMax, 4.0 * arrow);
+    // Dimension lines run right to left so that the positive offset (left normal) points down.
+    const std::vector<double> z = chainStations(profile, 0.04 * profile.length_mm());
+    for (std::size_t i = 1; i < z.size() && z.size() > 2; ++i) {
+        addDimension(scene, scenePoint({z[i], rMax}, -1.0), scenePoint({z[i - 1], rMax}, -1.0), gap,
+                     dimensionText(z[i] - z[i - 1]), arrow);
+    }
+    const double overall = z.size() > 2 ? 2.0 * gap : gap;
+    addDimension(scene, scenePoint({profile.length_mm(), rMax}, -1.0), scenePoint({0.0, rMax}, -1.0), overall,
+                 dimensionText(profile.length_mm()), arrow);
+}
+
+} // namespace
+
+QString dimensionText(double value_mm)
+{
+    QString text = QLocale::c().toString(value_mm, 'f', 3);
+    while (text.contains(QLatin1Char('.')) && (text.endsWith(QLatin1Char('0')) || text.endsWith(QLatin1Char('.'))))
+        text.chop(1);
+    return text == QStringLiteral("-0") ? QStringLiteral("0") : text;
+}
+
+void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile)
+{
+    scene.clear();
+    if (profile.outer.empty())
+        return;
+    const double length = profile.length_mm();
+    const double arrow = std::clamp(0.012 * std::max(length, 2.0 * profile.maxOuterRadius_mm()), 0.3, 6.0);
+
+    auto *section = scene.addPolygon(sectionOutline(profile), Qt::NoPen, QBrush(kHatchColor, Qt::BDiagPattern));
+    tagItem(section, profile_item::kSection);
+    section->setZValue(1.0);
+
+    addContourItems(scene, profile.outer, profile_item::kOuterContour);
+    addContourItems(scene, profile.inner, profile_item::kInnerContour);
+    addOutsideView(scene, profile);
+    addAxis(scene, length);
+    addDiameterDimensions(scene, profile.outer, 0.5, arrow);
+    addDiameterDimensions(scene, profile.inner, 0.3, arrow);
+    addLengthDimensions(scene, profile, arrow);
+}
+
+} // namespace tolturn

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/part/profile.h"
+
+#include <QString>
+
+class QGraphicsScene;
+
+namespace tolturn {
+
+// Keys of QGraphicsItem::data() on the items of a profile scene, so that views, tools and tests
+// can find items by what they represent.
+enum ProfileItemData : int {
+    kItemKindData = 0,  // QString, one of the kinds below
+    kFeatureIdData = 1, // QString, id of the profile segment (contour items)
+};
+
+namespace profile_item {
+inline const QString kAxis = QStringLiteral("axis");
+inline const QString kSection = QStringLiteral("section");
+inline const QString kOuterContour = QStringLiteral("outer-contour");
+inline const QString kInnerContour = QStringLiteral("inner-contour");
+inline const QString kViewOutline = QStringLiteral("view-outline");
+inline const QString kHiddenLine = QStringLiteral("hidden-line");
+inline const QString kDimension = QStringLiteral("dimension");
+} // namespace profile_item
+
+// Draws a part as a half-section drawing: above the axis the section (hatched material,
+// outer and inner contour, one item per feature), below it the outside view with the bore as
+// hidden lines; diameters of every cylinder and the chain of lengths dimensioned. Scene units
+// are millimetres with y = -r, so the part reads upright.
+void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile);
+
+// Text of a dimension value in mm: at most three decimals, no trailing zeros.
+[[nodiscard]] QString dimensionText(double value_mm);
+
+} // namespace tolturn

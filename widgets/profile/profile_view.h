@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/part/profile.h"
+
+#include <QGraphicsView>
+
+namespace tolturn {
+
+// The half-section drawing of the part. Fits the part to the window until the user zooms
+// (mouse wheel, anchored under the cursor) or pans (drag); a double click fits it again.
+class ProfileView : public QGraphicsView {
+    Q_OBJECT
+public:
+    explicit ProfileView(QWidget *parent = nullptr);
+
+    void setProfile(const PartProfile &profile);
+    void clearProfile();
+    void fitPart();
+
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
+
+private:
+    QGraphicsScene *m_scene;
+    bool m_autoFit = true;
+};
+
+} // namespace tolturn
