@@ -95,11 +95,15 @@ private Q_SLOTS:
                  (QStringList{QStringLiteral("O1"), QStringLiteral("O10"), QStringLiteral("O11"), QStringLiteral("O2"),
                               QStringLiteral("O3"), QStringLiteral("O4"), QStringLiteral("O5"), QStringLiteral("O6"),
                               QStringLiteral("O7"), QStringLiteral("O8"), QStringLiteral("O9")}));
-        // Diameters of the four cylinders, the length chain between faces at 35, 120 and the ends,
-        // and the overall length (drawing of the example: Ø56, Ø50, Ø40, Ø30; 35 + 85 + 30 = 150).
-        const QStringList dims = dimensionTexts(w);
-        for (const char *expected : {"Ø56", "Ø50", "Ø40", "Ø30", "35", "85", "30", "150"})
-            QVERIFY2(dims.contains(QString::fromUtf8(expected)), qPrintable(dims.join(QLatin1Char(' '))));
+        // Diameters of the four cylinders; the chain of lengths between the faces at 0, 35, 120 and
+        // 150 and the cone from 80 to 90 (drawing of the example: 35 + 45 + 10 + 30 + 30 = 150);
+        // the overall length.
+        QStringList dims = dimensionTexts(w);
+        dims.sort();
+        QCOMPARE(dims,
+                 (QStringList{QStringLiteral("10"), QStringLiteral("150"), QStringLiteral("30"), QStringLiteral("30"),
+                              QStringLiteral("35"), QStringLiteral("45"), QString::fromUtf8("Ø30"),
+                              QString::fromUtf8("Ø40"), QString::fromUtf8("Ø50"), QString::fromUtf8("Ø56")}));
         QVERIFY(w.windowTitle().startsWith(QStringLiteral("stepped-shaft-chuck.tolturn")));
     }
 

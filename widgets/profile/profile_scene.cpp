@@ -166,14 +166,19 @@ void addDiameterDimensions(QGraphicsScene &scene, const Contour &contour, double
     }
 }
 
-// Positions along z that the length chain dimensions: every vertex of the outer contour, less
-// those closer than `minSpan` to the one kept before (chamfers and edge radii), ends always kept.
+// Positions along z that the length chain dimensions: the faces and the ends of cones of the outer
+// contour (the functional positions; chamfers and edge radii are not chained), and both ends,
+// less any closer than `minSpan` to the one kept before.
 std::vector<double> chainStations(const PartProfile &profile, double minSpan)
 {
-    std::set<double> all;
-    for (const Segment &s : profile.outer.segments)
-        all.insert(s.from.z_mm);
     const double length = profile.length_mm();
+    std::set<double> all{0.0, length};
+    for (const Segment &s : profile.outer.segments) {
+        if (s.kind == SegmentKind::Face || s.kind == SegmentKind::Cone) {
+            all.insert(s.from.z_mm);
+            all.insert(s.to.z_mm);
+        }
+    }
     std::vector<double> kept;
     for (const double z : all) {
         if (kept.empty() || (z - kept.back() >= minSpan && length - z >= minSpan))
@@ -183,7 +188,7 @@ std::vector<double> chainStations(const PartProfile &profile, double minSpan)
     return kept;
 }
 
-// A chain of lengths between the vertices of the outer contour, below the outside view, and
+// A chain of lengths between the stations of the outer contour, below the outside view, and
 // the overall length below that.
 void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, double arrow)
 {
