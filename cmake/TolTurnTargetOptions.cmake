@@ -7,7 +7,7 @@ function(tolturn_target_options target)
     cmake_parse_arguments(arg "RELAXED_QT" "" "" ${ARGN})
     target_compile_options(${target} PRIVATE
         -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
-        -Woverloaded-virtual -Wconversion -Wsign-conversion -Wnull-dereference -Wdouble-promotion
+        -Woverloaded-virtual -Wconversion -Wsign-conversion -Wdouble-promotion
         -Wformat=2 -Wimplicit-fallthrough)
     if(TOLTURN_WARNINGS_AS_ERRORS)
         target_compile_options(${target} PRIVATE -Werror)

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+namespace tolturn {
+
+// Kinematics and power of turning (any machining textbook, e.g. Kalpakjian & Schmid,
+// Manufacturing Engineering and Technology, §23.2).
+// n = 1000 v / (pi D)  [rpm], v in m/min, D in mm
+[[nodiscard]] double spindleSpeed_rpm(double cuttingSpeed_m_min, double diameter_mm);
+// P = Fc v  [kW], Fc in N, v in m/min
+[[nodiscard]] double cuttingPower_kW(double cuttingForce_N, double cuttingSpeed_m_min);
+// T = Fc D / 2  [N·m]
+[[nodiscard]] double spindleTorque_Nm(double cuttingForce_N, double diameter_mm);
+
+// Theoretical (kinematic) roughness of a round-nosed tool, f < 2 r_eps (e.g. Shaw, Metal Cutting
+// Principles, 2nd ed., OUP 2005, §21): Ra ≈ f² / (32 r_eps), Rz ≈ f² / (8 r_eps). Results in µm.
+[[nodiscard]] double theoreticalRa_um(double feed_mm_rev, double noseRadius_mm);
+[[nodiscard]] double theoreticalRz_um(double feed_mm_rev, double noseRadius_mm);
+
+} // namespace tolturn

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/mechanics/section.h"
+
+#include "core/part/profile_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+namespace tolturn {
+
+double cowperShearCoefficient(double radiusRatio, double poissonRatio)
+{
+    const double m2 = radiusRatio * radiusRatio;
+    const double a = (1.0 + m2) * (1.0 + m2);
+    const double nu = poissonRatio;
+    return 6.0 * (1.0 + nu) * a / ((7.0 + 6.0 * nu) * a + (20.0 + 12.0 * nu) * m2);
+}
+
+double RoundSection::area_mm2() const
+{
+    return std::numbers::pi * (outerRadius_mm * outerRadius_mm - innerRadius_mm * innerRadius_mm);
+}
+
+double RoundSection::secondMoment_mm4() const
+{
+    const double ro2 = outerRadius_mm * outerRadius_mm;
+    const double ri2 = innerRadius_mm * innerRadius_mm;
+    return 0.25 * std::numbers::pi * (ro2 * ro2 - ri2 * ri2);
+}
+
+SectionAlongZ::SectionAlongZ(const PartProfile &profile, double outerAllowance_mm, double innerAllowance_mm)
+    : m_profile(profile)
+    , m_outerAllowance_mm(outerAllowance_mm)
+    , m_innerAllowance_mm(innerAllowance_mm)
+    , m_stockRadius_mm(0.5 * profile.stockDiameter_mm)
+{
+    std::set<double> breaks;
+    for (const Contour *c : {&profile.outer, &profile.inner}) {
+        for (const Segment &s : c->segments) {
+            breaks.insert(s.from.z_mm);
+            breaks.insert(s.to.z_mm);
+        }
+    }
+    m_breakpoints.assign(breaks.begin(), breaks.end());
+}
+
+RoundSection SectionAlongZ::at(double z_mm) const
+{
+    // Inside an element the limit from either side is the same; FromRight picks the segment
+    // that starts at z when z is a vertex, FromLeft at the right end.
+    const Approach side = z_mm < m_profile.length_mm() ? Approach::FromRight : Approach::FromLeft;
+    RoundSection section;
+    section.outerRadius_mm = radiusAt(m_profile.outer, z_mm, side).value_or(0.0);
+    if (m_outerAllowance_mm > 0.0)
+        section.outerRadius_mm =
+            std::min(section.outerRadius_mm + m_outerAllowance_mm, std::max(m_stockRadius_mm, section.outerRadius_mm));
+    if (const auto bore = radiusAt(m_profile.inner, z_mm, side))
+        section.innerRadius_mm = std::max(0.0, *bore - m_innerAllowance_mm);
+    return section;
+}
+
+} // namespace tolturn
