@@ -97,8 +97,92 @@ Tool readTool(const QJsonObject &json, Diagnostics &out)
     Tool tool;
     tool.insertCode = r.text(QStringLiteral("insert"), Presence::Required).value_or(QString());
     tool.holderCode = r.text(QStringLiteral("holder"), Presence::Optional).value_or(QString());
+    tool.overhang_mm = r.number(QStringLiteral("overhang_mm"), Presence::Optional);
+    tool.rake_deg = r.number(QStringLiteral("rake_deg"), Presence::Optional);
+    tool.inclination_deg = r.number(QStringLiteral("inclination_deg"), Presence::Optional);
     r.finish();
     return tool;
+}
+
+CuttingModel readCuttingModel(const QJsonObject &json, Diagnostics &out)
+{
+    JsonObjectReader r(json, QStringLiteral("cutting_model"), out);
+    CuttingModel m;
+    m.forceModel = readKeyword<ForceModel>(r, QStringLiteral("force_model"), Presence::Optional, tr("force model"))
+                       .value_or(ForceModel::Kienzle);
+    m.feedToCuttingRatio = r.number(QStringLiteral("feed_to_cutting_ratio"), Presence::Optional);
+    m.passiveToCuttingRatio = r.number(QStringLiteral("passive_to_cutting_ratio"), Presence::Optional);
+    m.normalPressure_MPa = r.number(QStringLiteral("normal_pressure_MPa"), Presence::Optional);
+    m.frictionRatio = r.number(QStringLiteral("friction_ratio"), Presence::Optional);
+    r.finish();
+    return m;
+}
+
+std::optional<SpindleSprings> readSprings(JsonObjectReader &parent, const QString &key, Diagnostics &out)
+{
+    const auto json = parent.object(key, Presence::Optional);
+    if (!json)
+        return std::nullopt;
+    JsonObjectReader r(*json, parent.fieldPath(key), out);
+    SpindleSprings s;
+    s.k1_N_per_mm = r.number(QStringLiteral("k1_N_per_mm"), Presence::Required).value_or(0.0);
+    s.k2_Nmm_per_rad = r.number(QStringLiteral("k2_Nmm_per_rad"), Presence::Required).value_or(0.0);
+    s.k3_Nmm_per_rad = r.number(QStringLiteral("k3_Nmm_per_rad"), Presence::Required).value_or(0.0);
+    r.finish();
+    return s;
+}
+
+std::optional<SupportStiffness> readSupport(JsonObjectReader &parent, const QString &key, Diagnostics &out)
+{
+    const auto json = parent.object(key, Presence::Optional);
+    if (!json)
+        return std::nullopt;
+    JsonObjectReader r(*json, parent.fieldPath(key), out);
+    SupportStiffness s;
+    s.radial_N_per_mm = r.number(QStringLiteral("radial_N_per_mm"), Presence::Required).value_or(0.0);
+    s.tangential_N_per_mm = r.number(QStringLiteral("tangential_N_per_mm"), Presence::Required).value_or(0.0);
+    r.finish();
+    return s;
+}
+
+std::optional<ThermalDrift> readThermal(JsonObjectReader &parent, Diagnostics &out)
+{
+    const auto json = parent.object(QStringLiteral("thermal"), Presence::Optional);
+    if (!json)
+        return std::nullopt;
+    JsonObjectReader r(*json, parent.fieldPath(QStringLiteral("thermal")), out);
+    ThermalDrift t;
+    t.drift_um_per_1000rpm = r.number(QStringLiteral("drift_um_per_1000rpm"), Presence::Required).value_or(0.0);
+    t.drift_um_per_K = r.number(QStringLiteral("drift_um_per_K"), Presence::Optional).value_or(0.0);
+    t.referenceTemperature_C = r.number(QStringLiteral("reference_temperature_C"), Presence::Optional).value_or(20.0);
+    t.timeConstant_min = r.number(QStringLiteral("time_constant_min"), Presence::Required).value_or(0.0);
+    r.finish();
+    return t;
+}
+
+MachineCharacterisation readCharacterisation(const QJsonObject &json, Diagnostics &out)
+{
+    JsonObjectReader r(json, QStringLiteral("characterisation"), out);
+    MachineCharacterisation c;
+    c.source = r.text(QStringLiteral("source"), Presence::Required).value_or(QString());
+    c.pivotDistance_mm = r.number(QStringLiteral("pivot_distance_mm"), Presence::Optional);
+    c.spindleRadial = readSprings(r, QStringLiteral("spindle_radial"), out);
+    c.spindleTangential = readSprings(r, QStringLiteral("spindle_tangential"), out);
+    c.tailstock = readSupport(r, QStringLiteral("tailstock"), out);
+    c.centres = readSupport(r, QStringLiteral("centres"), out);
+    c.thermal = readThermal(r, out);
+    r.finish();
+    return c;
+}
+
+Environment readEnvironment(const QJsonObject &json, Diagnostics &out)
+{
+    JsonObjectReader r(json, QStringLiteral("environment"), out);
+    Environment e;
+    e.ambientTemperature_C = r.number(QStringLiteral("ambient_temperature_C"), Presence::Optional);
+    e.timeSinceStart_min = r.number(QStringLiteral("time_since_start_min"), Presence::Optional);
+    r.finish();
+    return e;
 }
 
 Clamping readClamping(const QJsonObject &json, Diagnostics &out)
@@ -219,6 +303,12 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
         p.clamping = readClamping(*clamping, out);
     p.passes = readList<CuttingPass>(r, QStringLiteral("passes"), out, readPass);
     p.datums = readList<Datum>(r, QStringLiteral("datums"), out, readDatum);
+    if (const auto model = r.object(QStringLiteral("cutting_model"), Presence::Optional))
+        p.cuttingModel = readCuttingModel(*model, out);
+    if (const auto characterisation = r.object(QStringLiteral("characterisation"), Presence::Optional))
+        p.characterisation = readCharacterisation(*characterisation, out);
+    if (const auto environment = r.object(QStringLiteral("environment"), Presence::Optional))
+        p.environment = readEnvironment(*environment, out);
     p.tolerances = readList<Tolerance>(r, QStringLiteral("tolerances"), out,
                                        [&out](JsonObjectReader &reader) { return readTolerance(reader, out); });
     r.finish();
@@ -287,6 +377,56 @@ QJsonObject toleranceJson(const Tolerance &t)
     return o;
 }
 
+void insertOptional(QJsonObject &o, const char *key, const std::optional<double> &value)
+{
+    if (value)
+        o.insert(QLatin1String(key), *value);
+}
+
+QJsonObject springsJson(const SpindleSprings &s)
+{
+    return {{QStringLiteral("k1_N_per_mm"), s.k1_N_per_mm},
+            {QStringLiteral("k2_Nmm_per_rad"), s.k2_Nmm_per_rad},
+            {QStringLiteral("k3_Nmm_per_rad"), s.k3_Nmm_per_rad}};
+}
+
+QJsonObject supportJson(const SupportStiffness &s)
+{
+    return {{QStringLiteral("radial_N_per_mm"), s.radial_N_per_mm},
+            {QStringLiteral("tangential_N_per_mm"), s.tangential_N_per_mm}};
+}
+
+QJsonObject characterisationJson(const MachineCharacterisation &c)
+{
+    QJsonObject o{{QStringLiteral("source"), c.source}};
+    insertOptional(o, "pivot_distance_mm", c.pivotDistance_mm);
+    if (c.spindleRadial)
+        o.insert(QStringLiteral("spindle_radial"), springsJson(*c.spindleRadial));
+    if (c.spindleTangential)
+        o.insert(QStringLiteral("spindle_tangential"), springsJson(*c.spindleTangential));
+    if (c.tailstock)
+        o.insert(QStringLiteral("tailstock"), supportJson(*c.tailstock));
+    if (c.centres)
+        o.insert(QStringLiteral("centres"), supportJson(*c.centres));
+    if (c.thermal)
+        o.insert(QStringLiteral("thermal"),
+                 QJsonObject{{QStringLiteral("drift_um_per_1000rpm"), c.thermal->drift_um_per_1000rpm},
+                             {QStringLiteral("drift_um_per_K"), c.thermal->drift_um_per_K},
+                             {QStringLiteral("reference_temperature_C"), c.thermal->referenceTemperature_C},
+                             {QStringLiteral("time_constant_min"), c.thermal->timeConstant_min}});
+    return o;
+}
+
+QJsonObject cuttingModelJson(const CuttingModel &m)
+{
+    QJsonObject o{{QStringLiteral("force_model"), keyword(m.forceModel)}};
+    insertOptional(o, "feed_to_cutting_ratio", m.feedToCuttingRatio);
+    insertOptional(o, "passive_to_cutting_ratio", m.passiveToCuttingRatio);
+    insertOptional(o, "normal_pressure_MPa", m.normalPressure_MPa);
+    insertOptional(o, "friction_ratio", m.frictionRatio);
+    return o;
+}
+
 } // namespace
 
 ProjectParseResult parseProjectJson(const QByteArray &json)
@@ -327,6 +467,9 @@ QByteArray serializeProjectJson(const Project &p)
     QJsonObject tool{{QStringLiteral("insert"), p.tool.insertCode}};
     if (!p.tool.holderCode.isEmpty())
         tool.insert(QStringLiteral("holder"), p.tool.holderCode);
+    insertOptional(tool, "overhang_mm", p.tool.overhang_mm);
+    insertOptional(tool, "rake_deg", p.tool.rake_deg);
+    insertOptional(tool, "inclination_deg", p.tool.inclination_deg);
 
     QJsonArray passes;
     for (const CuttingPass &pass : p.passes)
@@ -341,7 +484,7 @@ QByteArray serializeProjectJson(const Project &p)
     for (const Tolerance &t : p.tolerances)
         tolerances.append(toleranceJson(t));
 
-    const QJsonObject root{
+    QJsonObject root{
         {QStringLiteral("format"), QLatin1String(kProjectFormatName)},
         {QStringLiteral("version"), kProjectFormatVersion},
         {QStringLiteral("part"), part},
@@ -354,6 +497,16 @@ QByteArray serializeProjectJson(const Project &p)
         {QStringLiteral("datums"), datums},
         {QStringLiteral("tolerances"), tolerances},
     };
+    if (p.cuttingModel != CuttingModel{})
+        root.insert(QStringLiteral("cutting_model"), cuttingModelJson(p.cuttingModel));
+    if (p.characterisation != MachineCharacterisation{})
+        root.insert(QStringLiteral("characterisation"), characterisationJson(p.characterisation));
+    if (p.environment != Environment{}) {
+        QJsonObject environment;
+        insertOptional(environment, "ambient_temperature_C", p.environment.ambientTemperature_C);
+        insertOptional(environment, "time_since_start_min", p.environment.timeSinceStart_min);
+        root.insert(QStringLiteral("environment"), environment);
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 

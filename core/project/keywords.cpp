@@ -67,6 +67,14 @@ struct KeywordTable<ToleranceType> {
     }};
 };
 
+template <>
+struct KeywordTable<ForceModel> {
+    static constexpr std::array<std::pair<ForceModel, const char *>, 2> entries{{
+        {ForceModel::Kienzle, "kienzle"},
+        {ForceModel::LiDu, "li_du"},
+    }};
+};
+
 template <typename Enum>
 QString keywordOf(Enum value)
 {
@@ -100,6 +108,11 @@ QString keyword(PassKind value)
 }
 
 QString keyword(ToleranceType value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(ForceModel value)
 {
     return keywordOf(value);
 }
@@ -195,10 +208,12 @@ template std::optional<ArcDirection> fromKeyword<ArcDirection>(const QString &);
 template std::optional<ClampingMethod> fromKeyword<ClampingMethod>(const QString &);
 template std::optional<PassKind> fromKeyword<PassKind>(const QString &);
 template std::optional<ToleranceType> fromKeyword<ToleranceType>(const QString &);
+template std::optional<ForceModel> fromKeyword<ForceModel>(const QString &);
 template QStringList allKeywords<SegmentKind>();
 template QStringList allKeywords<ArcDirection>();
 template QStringList allKeywords<ClampingMethod>();
 template QStringList allKeywords<PassKind>();
 template QStringList allKeywords<ToleranceType>();
+template QStringList allKeywords<ForceModel>();
 
 } // namespace tolturn

@@ -18,6 +18,7 @@ namespace tolturn {
 [[nodiscard]] QString keyword(ClampingMethod value);
 [[nodiscard]] QString keyword(PassKind value);
 [[nodiscard]] QString keyword(ToleranceType value);
+[[nodiscard]] QString keyword(ForceModel value);
 
 // Names for people, translated: "chuck + tailstock" where the file says "chuck_tailstock".
 [[nodiscard]] QString displayName(ClampingMethod value);

@@ -24,8 +24,11 @@ struct Clamping {
 };
 
 struct Tool {
-    QString insertCode; // ISO 1832, e.g. "CNMG 120408"
-    QString holderCode; // ISO 5608, e.g. "PCLNR 2525M12"
+    QString insertCode;                // ISO 1832, e.g. "CNMG 120408"
+    QString holderCode;                // ISO 5608, e.g. "PCLNR 2525M12"
+    std::optional<double> overhang_mm; // tool length out of the turret, for the toolpost term
+    std::optional<double> rake_deg;    // normal rake, when the holder data do not give it
+    std::optional<double> inclination_deg;
 
     friend bool operator==(const Tool &, const Tool &) = default;
 };
@@ -81,6 +84,70 @@ struct Tolerance {
     friend bool operator==(const Tolerance &, const Tolerance &) = default;
 };
 
+// Which cutting-force model gives the forces, and the constants a project supplies itself
+// (docs/model.md §3). Unset ratios and coefficients come from the material data.
+enum class ForceModel { Kienzle, LiDu };
+
+struct CuttingModel {
+    ForceModel forceModel = ForceModel::Kienzle;
+    std::optional<double> feedToCuttingRatio;
+    std::optional<double> passiveToCuttingRatio;
+    std::optional<double> normalPressure_MPa; // Li & Du K_n
+    std::optional<double> frictionRatio;      // Li & Du K_f
+
+    friend bool operator==(const CuttingModel &, const CuttingModel &) = default;
+};
+
+// Springs of the spindle–chuck unit in one direction (docs/model.md §2).
+struct SpindleSprings {
+    double k1_N_per_mm = 0.0;
+    double k2_Nmm_per_rad = 0.0;
+    double k3_Nmm_per_rad = 0.0;
+
+    friend bool operator==(const SpindleSprings &, const SpindleSprings &) = default;
+};
+
+// A support stiffness in the radial and tangential directions [N/mm].
+struct SupportStiffness {
+    double radial_N_per_mm = 0.0;
+    double tangential_N_per_mm = 0.0;
+
+    friend bool operator==(const SupportStiffness &, const SupportStiffness &) = default;
+};
+
+// First-order warm-up of the radial thermal drift (docs/model.md §5):
+// delta_th = (a_n n/1000 + a_T (T - T_ref)) (1 - exp(-t/tau)).
+struct ThermalDrift {
+    double drift_um_per_1000rpm = 0.0;
+    double drift_um_per_K = 0.0;
+    double referenceTemperature_C = 20.0;
+    double timeConstant_min = 0.0;
+
+    friend bool operator==(const ThermalDrift &, const ThermalDrift &) = default;
+};
+
+// What was measured on the machine this part is planned for. Anything absent is not
+// characterised: its supports are then taken as rigid (Valiño et al. 2008 eq. 6–8 make the same
+// assumption) and the thermal drift as zero, and every result says so.
+struct MachineCharacterisation {
+    QString source; // who measured it, when, how
+    std::optional<double> pivotDistance_mm;
+    std::optional<SpindleSprings> spindleRadial;
+    std::optional<SpindleSprings> spindleTangential;
+    std::optional<SupportStiffness> tailstock;
+    std::optional<SupportStiffness> centres;
+    std::optional<ThermalDrift> thermal;
+
+    friend bool operator==(const MachineCharacterisation &, const MachineCharacterisation &) = default;
+};
+
+struct Environment {
+    std::optional<double> ambientTemperature_C;
+    std::optional<double> timeSinceStart_min;
+
+    friend bool operator==(const Environment &, const Environment &) = default;
+};
+
 struct Project {
     PartProfile part;
     QString materialId;
@@ -90,6 +157,9 @@ struct Project {
     std::vector<CuttingPass> passes;
     std::vector<Datum> datums;
     std::vector<Tolerance> tolerances;
+    CuttingModel cuttingModel;
+    MachineCharacterisation characterisation;
+    Environment environment;
 
     friend bool operator==(const Project &, const Project &) = default;
 };

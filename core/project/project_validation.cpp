@@ -238,6 +238,70 @@ void checkTolerances(const Project &p, Diagnostics &out)
     }
 }
 
+void requirePositive(const std::optional<double> &value, const QString &field, Diagnostics &out)
+{
+    if (value && (!std::isfinite(*value) || *value <= 0.0))
+        out.push_back(makeError(field, tr("must be above zero, but is %1").arg(num(*value))));
+}
+
+void requireNonNegative(const std::optional<double> &value, const QString &field, Diagnostics &out)
+{
+    if (value && (!std::isfinite(*value) || *value < 0.0))
+        out.push_back(makeError(field, tr("must be zero or more, but is %1").arg(num(*value))));
+}
+
+void checkCuttingModel(const Project &p, Diagnostics &out)
+{
+    const CuttingModel &m = p.cuttingModel;
+    requireNonNegative(m.feedToCuttingRatio, QStringLiteral("cutting_model.feed_to_cutting_ratio"), out);
+    requireNonNegative(m.passiveToCuttingRatio, QStringLiteral("cutting_model.passive_to_cutting_ratio"), out);
+    requirePositive(m.normalPressure_MPa, QStringLiteral("cutting_model.normal_pressure_MPa"), out);
+    requireNonNegative(m.frictionRatio, QStringLiteral("cutting_model.friction_ratio"), out);
+    if (m.forceModel == ForceModel::LiDu && (!m.normalPressure_MPa || !m.frictionRatio))
+        out.push_back(makeError(QStringLiteral("cutting_model"),
+                                tr("the li_du force model needs normal_pressure_MPa (K_n) and friction_ratio (K_f); "
+                                   "fit them from measured forces with 'tolturn-cli calibrate-forces'")));
+    requirePositive(p.tool.overhang_mm, QStringLiteral("tool.overhang_mm"), out);
+}
+
+void checkSprings(const std::optional<SpindleSprings> &s, const QString &path, Diagnostics &out)
+{
+    if (!s)
+        return;
+    requirePositive(s->k1_N_per_mm, path + QStringLiteral(".k1_N_per_mm"), out);
+    requirePositive(s->k2_Nmm_per_rad, path + QStringLiteral(".k2_Nmm_per_rad"), out);
+    requirePositive(s->k3_Nmm_per_rad, path + QStringLiteral(".k3_Nmm_per_rad"), out);
+}
+
+void checkSupport(const std::optional<SupportStiffness> &s, const QString &path, Diagnostics &out)
+{
+    if (!s)
+        return;
+    requirePositive(s->radial_N_per_mm, path + QStringLiteral(".radial_N_per_mm"), out);
+    requirePositive(s->tangential_N_per_mm, path + QStringLiteral(".tangential_N_per_mm"), out);
+}
+
+void checkCharacterisation(const Project &p, Diagnostics &out)
+{
+    const MachineCharacterisation &c = p.characterisation;
+    if (c == MachineCharacterisation{})
+        return;
+    requireText(c.source, QStringLiteral("characterisation.source"),
+                tr("where the machine characterisation comes from"), out);
+    checkSprings(c.spindleRadial, QStringLiteral("characterisation.spindle_radial"), out);
+    checkSprings(c.spindleTangential, QStringLiteral("characterisation.spindle_tangential"), out);
+    checkSupport(c.tailstock, QStringLiteral("characterisation.tailstock"), out);
+    checkSupport(c.centres, QStringLiteral("characterisation.centres"), out);
+    if ((c.spindleRadial || c.spindleTangential) && !c.pivotDistance_mm)
+        out.push_back(
+            makeError(QStringLiteral("characterisation.pivot_distance_mm"),
+                      tr("spindle springs need the pivot distance Lc of the k2 spring behind the chuck face")));
+    requireNonNegative(c.pivotDistance_mm, QStringLiteral("characterisation.pivot_distance_mm"), out);
+    if (c.thermal)
+        requirePositive(c.thermal->timeConstant_min, QStringLiteral("characterisation.thermal.time_constant_min"), out);
+    requireNonNegative(p.environment.timeSinceStart_min, QStringLiteral("environment.time_since_start_min"), out);
+}
+
 } // namespace
 
 Diagnostics validateProject(const Project &project)
@@ -250,6 +314,8 @@ Diagnostics validateProject(const Project &project)
     checkPasses(project, out);
     checkDatums(project, out);
     checkTolerances(project, out);
+    checkCuttingModel(project, out);
+    checkCharacterisation(project, out);
     return out;
 }
 

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+
+#include <QHash>
+#include <QString>
+#include <QStringList>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+// A number from a data file with the key of the source it was read from.
+struct SourcedValue {
+    double value = 0.0;
+    QString source;
+};
+
+// A work material (resources/data/materials.json).
+struct MaterialData {
+    QString id;
+    QString name;
+    QString standard;
+    QString isoGroup; // ISO 513 application group: P, M, K, N, S, H
+    SourcedValue youngsModulus_MPa;
+    std::optional<SourcedValue> poissonRatio;
+    SourcedValue density_kg_m3;
+    std::optional<SourcedValue> tensileStrength_MPa;
+    SourcedValue kc11_MPa;
+    SourcedValue mc;
+    std::optional<SourcedValue> kf11_MPa, mf, kp11_MPa, mp;
+    std::optional<SourcedValue> feedToCuttingRatio, passiveToCuttingRatio;
+    std::optional<SourcedValue> taylorC_m_min, taylorN;
+};
+
+// A lathe (resources/data/machines.json): documented limits, keyed by field name
+// ("power_kW", "max_speed_rpm", ...). Stiffness is a characterisation of one machine, kept in the
+// project (see Project::characterisation), not here.
+struct MachineData {
+    QString id;
+    QString name;
+    QString notes;
+    std::map<QString, SourcedValue> limits;
+};
+
+// A tool holder (resources/data/holders.json).
+struct HolderData {
+    QString code;
+    QString kind;
+    SourcedValue enteringAngle_deg;
+    std::optional<SourcedValue> shankHeight_mm, shankWidth_mm, length_mm, barDiameter_mm;
+    std::optional<SourcedValue> rake_deg, inclination_deg;
+};
+
+// The data shipped with TolTurn. Every number carries the key of its source; sourceText() gives
+// the citation.
+class DataLibrary {
+public:
+    // The built-in library, read once from the program's resources.
+    static const DataLibrary &builtIn();
+    // Reads a library from the three files; problems are reported with file and field.
+    static DataLibrary load(const QString &materialsPath, const QString &machinesPath, const QString &holdersPath);
+
+    [[nodiscard]] const Diagnostics &diagnostics() const { return m_diagnostics; }
+
+    [[nodiscard]] const MaterialData *material(const QString &id) const;
+    [[nodiscard]] const MachineData *machine(const QString &id) const;
+    [[nodiscard]] const HolderData *holder(const QString &code) const;
+
+    [[nodiscard]] const std::vector<MaterialData> &materials() const { return m_materials; }
+
+    [[nodiscard]] const std::vector<MachineData> &machines() const { return m_machines; }
+
+    [[nodiscard]] const std::vector<HolderData> &holders() const { return m_holders; }
+
+    // Entering angle of a holder style letter (ISO 5608 position 3), e.g. 'L' -> 95°.
+    [[nodiscard]] std::optional<SourcedValue> styleEnteringAngle(QChar style) const;
+
+    // Rake and inclination the seat of a holder for negative inserts gives them.
+    [[nodiscard]] std::optional<SourcedValue> negativeSeatRake() const { return m_negativeSeatRake; }
+
+    [[nodiscard]] std::optional<SourcedValue> negativeSeatInclination() const { return m_negativeSeatInclination; }
+
+    // Young's modulus of a steel tool shank.
+    [[nodiscard]] std::optional<SourcedValue> shankModulus() const { return m_shankModulus; }
+
+    [[nodiscard]] QString sourceText(const QString &key) const { return m_sources.value(key); }
+
+    [[nodiscard]] const QHash<QString, QString> &sources() const { return m_sources; }
+
+private:
+    void readMaterials(const QString &path);
+    void readMachines(const QString &path);
+    void readHolders(const QString &path);
+
+    Diagnostics m_diagnostics;
+    QHash<QString, QString> m_sources;
+    std::vector<MaterialData> m_materials;
+    std::vector<MachineData> m_machines;
+    std::vector<HolderData> m_holders;
+    std::map<QChar, SourcedValue> m_styleAngles;
+    std::optional<SourcedValue> m_negativeSeatRake;
+    std::optional<SourcedValue> m_negativeSeatInclination;
+    std::optional<SourcedValue> m_shankModulus;
+};
+
+} // namespace tolturn

@@ -1,0 +1,572 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/deviation/deviation_model.h"
+
+#include "core/cutting/cutting_quantities.h"
+#include "core/mechanics/spindle_chuck.h"
+#include "core/part/profile_geometry.h"
+#include "core/project/keywords.h"
+#include "core/tooling/iso1832.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+namespace tolturn {
+
+namespace {
+
+struct DeviationModel {
+    Q_DECLARE_TR_FUNCTIONS(DeviationModel)
+};
+
+QString tr(const char *text)
+{
+    return DeviationModel::tr(text);
+}
+
+QString num(double v)
+{
+    return formatNumber(v);
+}
+
+double radians(double deg)
+{
+    return deg * std::numbers::pi / 180.0;
+}
+
+// Rule of thumb for the feed and passive force when neither the material data nor the project
+// give them: Ff = 0.50 Fc, Fp = 0.25 Fc. E. Isakov, "Calculated forces when turning", Cutting
+// Tool Engineering, 15 February 2013 (who warns that it is not accurate).
+constexpr double kRuleOfThumbFeedRatio = 0.50;
+constexpr double kRuleOfThumbPassiveRatio = 0.25;
+
+int choosePass(const Project &p, int requested)
+{
+    if (requested >= 0)
+        return requested;
+    for (int i = static_cast<int>(p.passes.size()) - 1; i >= 0; --i) {
+        if (p.passes[static_cast<std::size_t>(i)].kind == PassKind::Finishing)
+            return i;
+    }
+    return static_cast<int>(p.passes.size()) - 1;
+}
+
+// Entering angle from the holder: the library's holder, else its ISO 5608 style letter.
+std::optional<SourcedValue> enteringAngleOf(const QString &holderCode, const DataLibrary &data)
+{
+    if (const HolderData *h = data.holder(holderCode))
+        return h->enteringAngle_deg;
+    const QString code = holderCode.trimmed().toUpper();
+    if (code.size() >= 3 && code.at(0).isLetter() && code.at(1).isLetter() && code.at(2).isLetter())
+        return data.styleEnteringAngle(code.at(2));
+    return std::nullopt;
+}
+
+KienzleConstants kienzleOf(const MaterialData &m, const CuttingModel &model, QStringList &notes)
+{
+    KienzleConstants k;
+    k.cutting = {m.kc11_MPa.value, m.mc.value};
+    if (m.kf11_MPa && m.mf)
+        k.feed = KienzleLaw{m.kf11_MPa->value, m.mf->value};
+    if (m.kp11_MPa && m.mp)
+        k.passive = KienzleLaw{m.kp11_MPa->value, m.mp->value};
+    const bool projectRatios = model.feedToCuttingRatio || model.passiveToCuttingRatio;
+    k.feedToCuttingRatio =
+        model.feedToCuttingRatio.value_or(m.feedToCuttingRatio ? m.feedToCuttingRatio->value : kRuleOfThumbFeedRatio);
+    k.passiveToCuttingRatio = model.passiveToCuttingRatio.value_or(
+        m.passiveToCuttingRatio ? m.passiveToCuttingRatio->value : kRuleOfThumbPassiveRatio);
+    if (projectRatios) {
+        k.feed.reset();
+        k.passive.reset();
+    } else if ((!k.feed && !m.feedToCuttingRatio) || (!k.passive && !m.passiveToCuttingRatio)) {
+        notes << tr("Feed and passive force from the rule of thumb Ff = 0.50 Fc, Fp = 0.25 Fc (Isakov 2013): the "
+                    "material data give no feed or passive force constants. Calibrate the forces for accuracy.");
+    }
+    return k;
+}
+
+std::optional<double> seatAngle(const std::optional<double> &projectValue, const std::optional<SourcedValue> &holder,
+                                const std::optional<SourcedValue> &negativeSeat, bool negativeInsert)
+{
+    if (projectValue)
+        return projectValue;
+    if (holder)
+        return holder->value;
+    if (negativeInsert && negativeSeat)
+        return negativeSeat->value;
+    return std::nullopt;
+}
+
+void resolveForces(const Project &p, const DataLibrary &data, const DeviationOptions &options,
+                   const MaterialData &material, const InsertGeometry &insert, TurningInputs &in, Diagnostics &out)
+{
+    if (options.loadOverride) {
+        in.forces = *options.loadOverride;
+        in.forceModel = QStringLiteral("given");
+        return;
+    }
+    if (p.cuttingModel.forceModel == ForceModel::Kienzle) {
+        const ForceResult r = kienzleForces(kienzleOf(material, p.cuttingModel, in.notes), in.pass.feed_mm_rev,
+                                            in.pass.depthOfCut_mm, radians(in.enteringAngle_deg));
+        in.forces = r.forces;
+        in.forceModel = QStringLiteral("kienzle");
+        out.insert(out.end(), r.warnings.begin(), r.warnings.end());
+        return;
+    }
+    const HolderData *holder = data.holder(p.tool.holderCode);
+    const bool negative = insert.clearanceAngle_deg == 0.0;
+    const auto rake =
+        seatAngle(p.tool.rake_deg, holder ? holder->rake_deg : std::nullopt, data.negativeSeatRake(), negative);
+    const auto inclination = seatAngle(p.tool.inclination_deg, holder ? holder->inclination_deg : std::nullopt,
+                                       data.negativeSeatInclination(), negative);
+    if (!rake || !inclination) {
+        out.push_back(makeError(QStringLiteral("tool.rake_deg"),
+                                tr("the Li & Du model needs the rake and inclination angles of the tool; the data "
+                                   "give none for holder \"%1\" with insert \"%2\": set tool.rake_deg and "
+                                   "tool.inclination_deg")
+                                    .arg(p.tool.holderCode, p.tool.insertCode)));
+        return;
+    }
+    LiDuToolGeometry tool;
+    tool.normalRake_rad = radians(*rake);
+    tool.backRake_rad = radians(*inclination); // back rake taken as the ISO inclination angle
+    tool.leadAngle_rad = radians(90.0 - in.enteringAngle_deg);
+    tool.noseRadius_mm = insert.noseRadius_mm;
+    const LiDuCoefficients c{p.cuttingModel.normalPressure_MPa.value_or(0.0),
+                             p.cuttingModel.frictionRatio.value_or(0.0)};
+    const ForceResult r = liDuForces(c, tool, in.pass.feed_mm_rev, in.pass.depthOfCut_mm);
+    in.forces = r.forces;
+    in.forceModel = QStringLiteral("li_du");
+    out.insert(out.end(), r.warnings.begin(), r.warnings.end());
+}
+
+double toolpostCompliance(const Project &p, const DataLibrary &data, QStringList &notes)
+{
+    const HolderData *h = data.holder(p.tool.holderCode);
+    const auto modulus = data.shankModulus();
+    if (h == nullptr || !modulus) {
+        notes
+            << tr("Toolpost shortening not included: holder \"%1\" is not in the data library.").arg(p.tool.holderCode);
+        return 0.0;
+    }
+    double area = 0.0;
+    if (h->shankHeight_mm && h->shankWidth_mm)
+        area = h->shankHeight_mm->value * h->shankWidth_mm->value;
+    else if (h->barDiameter_mm)
+        area = 0.25 * std::numbers::pi * h->barDiameter_mm->value * h->barDiameter_mm->value;
+    double length = p.tool.overhang_mm.value_or(0.0);
+    if (!p.tool.overhang_mm && h->length_mm) {
+        length = h->length_mm->value;
+        notes << tr("Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give "
+                    "tool.overhang_mm for the length out of the turret.")
+                     .arg(num(length));
+    }
+    ToolpostCompliance tp;
+    tp.toolLength_mm = length;
+    tp.toolArea_mm2 = area;
+    tp.toolModulus_MPa = modulus->value;
+    return tp.compliance_mm_per_N();
+}
+
+EndSupport chuckSupport(const MachineCharacterisation &c, const std::optional<SpindleSprings> &springs)
+{
+    if (!springs || !c.pivotDistance_mm)
+        return EndSupport::clamped();
+    return EndSupport::springs(chuckFaceStiffness(
+        {springs->k1_N_per_mm, springs->k2_Nmm_per_rad, springs->k3_Nmm_per_rad, *c.pivotDistance_mm}));
+}
+
+EndSupport centreSupport(const std::optional<SupportStiffness> &s, bool radial)
+{
+    if (!s)
+        return EndSupport::pinned();
+    return EndSupport::translationSpring(radial ? s->radial_N_per_mm : s->tangential_N_per_mm);
+}
+
+void resolveSupports(const Project &p, const DeviationOptions &options, TurningInputs &in)
+{
+    const MachineCharacterisation &c = p.characterisation;
+    const ClampingMethod method = p.clamping.method;
+    const bool chuck = method != ClampingMethod::BetweenCentres;
+    in.supportStart_mm = chuck ? p.clamping.clampedLength_mm : 0.0;
+    in.supportEnd_mm = p.part.length_mm();
+    if (options.workpieceOnly) {
+        in.radialLeft = in.tangentialLeft = chuck ? EndSupport::clamped() : EndSupport::pinned();
+        in.radialRight = in.tangentialRight =
+            method == ClampingMethod::Chuck ? EndSupport::free() : EndSupport::pinned();
+        in.notes << tr("Workpiece only: machine supports rigid, no toolpost or thermal term.");
+        return;
+    }
+    if (chuck) {
+        in.radialLeft = chuckSupport(c, c.spindleRadial);
+        in.tangentialLeft = chuckSupport(c, c.spindleTangential);
+        in.spindleCharacterised = c.spindleRadial.has_value() && c.pivotDistance_mm.has_value();
+        if (!in.spindleCharacterised)
+            in.notes << tr("Spindle–chuck not characterised for this machine: the part is taken as rigidly clamped at "
+                           "the chuck face. Measure k1, k2, k3 (Valiño et al. 2008 §III) for its contribution.");
+    } else {
+        in.radialLeft = centreSupport(c.centres, true);
+        in.tangentialLeft = centreSupport(c.centres, false);
+        if (!c.centres)
+            in.notes << tr("Headstock centre not characterised: taken as a rigid pin.");
+    }
+    if (method == ClampingMethod::Chuck) {
+        in.radialRight = in.tangentialRight = EndSupport::free();
+    } else {
+        in.radialRight = centreSupport(c.tailstock, true);
+        in.tangentialRight = centreSupport(c.tailstock, false);
+        if (!c.tailstock)
+            in.notes << tr("Tailstock not characterised: taken as a rigid pin.");
+    }
+}
+
+std::optional<double> machineLimit(const MachineData *m, const char *key)
+{
+    if (m == nullptr)
+        return std::nullopt;
+    const auto it = m->limits.find(QLatin1String(key));
+    if (it == m->limits.end())
+        return std::nullopt;
+    return it->second.value;
+}
+
+bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &in, Diagnostics &out,
+                     const MaterialData *&material)
+{
+    material = data.material(p.materialId);
+    if (material == nullptr) {
+        QStringList ids;
+        for (const MaterialData &m : data.materials())
+            ids << m.id;
+        out.push_back(makeError(
+            QStringLiteral("material"),
+            tr("unknown material \"%1\"; the data library has: %2").arg(p.materialId, ids.join(QStringLiteral(", ")))));
+        return false;
+    }
+    if (!material->poissonRatio) {
+        out.push_back(makeError(QStringLiteral("material"),
+                                tr("material \"%1\" has no Poisson's ratio in the data, which the shear deflection "
+                                   "needs")
+                                    .arg(material->id)));
+        return false;
+    }
+    in.material = {material->youngsModulus_MPa.value, material->poissonRatio->value, true};
+    in.materialName = material->name;
+    return true;
+}
+
+} // namespace
+
+InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
+{
+    InputsResult result;
+    Diagnostics &out = result.diagnostics;
+    TurningInputs in;
+    const MaterialData *material = nullptr;
+    if (!resolveMaterial(p, data, in, out, material))
+        return result;
+
+    in.passIndex = choosePass(p, options.passIndex);
+    if (in.passIndex < 0 || in.passIndex >= static_cast<int>(p.passes.size())) {
+        out.push_back(makeError(QStringLiteral("passes"),
+                                p.passes.empty() ? tr("there is no cutting pass; the deviation is that of the pass "
+                                                      "that finishes the features")
+                                                 : tr("there is no pass %1").arg(in.passIndex)));
+        return result;
+    }
+    in.pass = p.passes[static_cast<std::size_t>(in.passIndex)];
+
+    const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+    if (!insert.insert) {
+        out.insert(out.end(), insert.diagnostics.begin(), insert.diagnostics.end());
+        return result;
+    }
+    in.noseRadius_mm = insert.insert->noseRadius_mm;
+    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    if (!angle) {
+        out.push_back(makeError(QStringLiteral("tool.holder"),
+                                tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
+                                   "character) gives no known entering angle")
+                                    .arg(p.tool.holderCode)));
+        return result;
+    }
+    in.enteringAngle_deg = angle->value;
+
+    const MachineData *machine = data.machine(p.machineId);
+    if (machine == nullptr) {
+        QStringList ids;
+        for (const MachineData &m : data.machines())
+            ids << m.id;
+        out.push_back(makeError(
+            QStringLiteral("machine"),
+            tr("unknown machine \"%1\"; the data library has: %2").arg(p.machineId, ids.join(QStringLiteral(", ")))));
+        return result;
+    }
+    in.maxSpindleSpeed_rpm = machineLimit(machine, "max_speed_rpm");
+    in.maxPower_kW = machineLimit(machine, "power_kW");
+
+    resolveForces(p, data, options, *material, *insert.insert, in, out);
+    if (hasErrors(out))
+        return result;
+    resolveSupports(p, options, in);
+    if (!supportsHoldBeam(in.radialLeft, in.radialRight, in.supportEnd_mm - in.supportStart_mm) ||
+        !supportsHoldBeam(in.tangentialLeft, in.tangentialRight, in.supportEnd_mm - in.supportStart_mm)) {
+        out.push_back(
+            makeError(QStringLiteral("clamping"), tr("the %1 clamping with these supports leaves the part free to move")
+                                                      .arg(displayName(p.clamping.method))));
+        return result;
+    }
+    if (!options.workpieceOnly) {
+        in.toolpostCompliance_mm_per_N = toolpostCompliance(p, data, in.notes);
+        in.thermal = p.characterisation.thermal;
+        if (!in.thermal)
+            in.notes << tr("Thermal drift not characterised for this machine: taken as zero.");
+    }
+    in.timeSinceStart_min = p.environment.timeSinceStart_min.value_or(0.0);
+    in.ambientTemperature_C = p.environment.ambientTemperature_C.value_or(20.0);
+    result.inputs = in;
+    return result;
+}
+
+namespace {
+
+struct NodeIndex {
+    std::vector<double> nodes;
+
+    std::size_t at(double z) const
+    {
+        const auto it = std::lower_bound(nodes.begin(), nodes.end(), z - 1e-9);
+        return static_cast<std::size_t>(std::distance(nodes.begin(), it));
+    }
+};
+
+// Stations of a feature inside the supported length, evenly spaced, ends included.
+std::vector<double> featureStations(const Segment &s, double zMin, double zMax, int count)
+{
+    const double a = std::max(s.from.z_mm, zMin);
+    const double b = std::min(s.to.z_mm, zMax);
+    std::vector<double> z;
+    if (b - a <= kProfileEpsilon_mm)
+        return z;
+    const int n = std::max(count, 2);
+    for (int i = 0; i < n; ++i)
+        z.push_back(a + (b - a) * i / (n - 1));
+    return z;
+}
+
+struct Sweeps {
+    std::vector<NodeInfluence> radial;
+    std::vector<NodeInfluence> tangential;
+};
+
+Sweeps sweep(const NodeIndex &index, const std::vector<BeamElementStiffness> &uncut,
+             const std::vector<BeamElementStiffness> &finished, const TurningInputs &in)
+{
+    MovingLoadBeam beam;
+    beam.nodes_mm = index.nodes;
+    beam.uncut = uncut;
+    beam.finished = finished;
+    beam.left = in.radialLeft;
+    beam.right = in.radialRight;
+    Sweeps s;
+    s.radial = movingLoadInfluence(beam);
+    beam.left = in.tangentialLeft;
+    beam.right = in.tangentialRight;
+    s.tangential = movingLoadInfluence(beam);
+    return s;
+}
+
+// Rigid-body motion of the supports carried to the load at z, per unit load in `column`: the
+// chuck face's displacement and rotation, or the chord between the two centres.
+double supportMotion(const NodeInfluence &n, int column, double z, const TurningInputs &in, bool chuck)
+{
+    const double x0 = in.supportStart_mm;
+    if (chuck)
+        return n.leftSupport(0, column) + n.leftSupport(1, column) * (z - x0);
+    const double span = in.supportEnd_mm - x0;
+    return n.leftSupport(0, column) * (in.supportEnd_mm - z) / span + n.rightSupport(0, column) * (z - x0) / span;
+}
+
+StationInfluence stationInfluence(const Sweeps &s, std::size_t node, double z, double contactRadius, bool outer,
+                                  const TurningInputs &in, bool chuck)
+{
+    // The feed force (towards the chuck) acts at the contact radius on the tool's side; its moment
+    // moves the section towards the tool for an outer surface and away from it for a bore
+    // (docs/model.md §4).
+    const double momentPerAxial = outer ? -contactRadius : contactRadius;
+    const NodeInfluence &r = s.radial[node];
+    const NodeInfluence &t = s.tangential[node];
+    StationInfluence si;
+    si.radialPerRadial_mm_per_N = r.atLoad(0, 0);
+    si.radialPerAxial_mm_per_N = r.atLoad(0, 1) * momentPerAxial;
+    si.tangentialPerTangential_mm_per_N = t.atLoad(0, 0);
+    si.spindlePerRadial_mm_per_N = supportMotion(r, 0, z, in, chuck);
+    si.spindlePerAxial_mm_per_N = supportMotion(r, 1, z, in, chuck) * momentPerAxial;
+    si.spindleTangential_mm_per_N = supportMotion(t, 0, z, in, chuck);
+    si.rotationPerRadial_rad_per_N = r.atLoad(1, 0);
+    si.rotationPerAxial_rad_per_N = r.atLoad(1, 1) * momentPerAxial;
+    return si;
+}
+
+} // namespace
+
+InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs &in, int stationsPerFeature,
+                                   double allowance_mm)
+{
+    InfluenceTable table;
+    table.toolpostCompliance_mm_per_N = in.toolpostCompliance_mm_per_N;
+    const double x0 = in.supportStart_mm;
+    const double x1 = in.supportEnd_mm;
+
+    // Nodes: supports, profile vertices and every station.
+    std::set<double> nodeSet{x0, x1};
+    const SectionAlongZ finished(part);
+    for (const double z : finished.breakpoints()) {
+        if (z > x0 && z < x1)
+            nodeSet.insert(z);
+    }
+    for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
+        const Contour &contour = side == ContourSide::Outer ? part.outer : part.inner;
+        for (const Segment &s : contour.segments) {
+            FeatureInfluence f{s.id, side, s.kind, {}, {}, {}};
+            if (s.isAxial()) {
+                f.z_mm = featureStations(s, x0, x1, stationsPerFeature);
+                for (const double z : f.z_mm)
+                    f.nominalRadius_mm.push_back(radiusOnSegment(s, z));
+                if (!f.z_mm.empty())
+                    table.features.push_back(f);
+            } else if (s.from.z_mm >= x0 - kProfileEpsilon_mm && s.from.z_mm <= x1 + kProfileEpsilon_mm) {
+                f.z_mm = {s.from.z_mm};
+                f.nominalRadius_mm = {std::max(s.from.r_mm, s.to.r_mm)};
+                table.faces.push_back(f);
+            }
+            for (const double z : f.z_mm)
+                nodeSet.insert(z);
+        }
+    }
+    // Merge nodes closer than a micrometre (a station on a vertex).
+    NodeIndex index;
+    for (const double z : nodeSet) {
+        if (index.nodes.empty() || z - index.nodes.back() > 1e-6)
+            index.nodes.push_back(z);
+    }
+
+    const std::vector<BeamElementStiffness> finishedElements = buildElements(finished, in.material, index.nodes);
+    const bool chuck = in.radialLeft.fixedRotation || in.radialLeft.stiffness(1, 1) > 0.0;
+    auto sweepsFor = [&](ContourSide side) {
+        if (allowance_mm <= 0.0)
+            return sweep(index, finishedElements, finishedElements, in);
+        const SectionAlongZ uncut(part, side == ContourSide::Outer ? allowance_mm : 0.0,
+                                  side == ContourSide::Inner ? allowance_mm : 0.0);
+        return sweep(index, buildElements(uncut, in.material, index.nodes), finishedElements, in);
+    };
+    const Sweeps outer = sweepsFor(ContourSide::Outer);
+    const Sweeps inner = part.inner.empty() ? outer : sweepsFor(ContourSide::Inner);
+
+    for (std::vector<FeatureInfluence> *list : {&table.features, &table.faces}) {
+        for (FeatureInfluence &f : *list) {
+            const bool isOuter = f.side == ContourSide::Outer;
+            const Sweeps &s = isOuter ? outer : inner;
+            for (std::size_t i = 0; i < f.z_mm.size(); ++i)
+                f.stations.push_back(
+                    stationInfluence(s, index.at(f.z_mm[i]), f.z_mm[i], f.nominalRadius_mm[i], isOuter, in, chuck));
+        }
+    }
+    return table;
+}
+
+namespace {
+
+double thermalDrift_mm(const TurningInputs &in, double spindleSpeed_rpm)
+{
+    if (!in.thermal)
+        return 0.0;
+    const ThermalDrift &t = *in.thermal;
+    const double steady_um = t.drift_um_per_1000rpm * spindleSpeed_rpm / 1000.0 +
+                             t.drift_um_per_K * (in.ambientTemperature_C - t.referenceTemperature_C);
+    return 1e-3 * steady_um * (1.0 - std::exp(-in.timeSinceStart_min / t.timeConstant_min));
+}
+
+Station evaluateStation(const StationInfluence &si, double z, double r0, bool outer, const TurningInputs &in,
+                        double toolpost)
+{
+    const CuttingForces &f = in.forces;
+    Station st;
+    st.z_mm = z;
+    st.nominalRadius_mm = r0;
+    st.spindleSpeed_rpm = spindleSpeed_rpm(in.pass.cuttingSpeed_m_min, 2.0 * r0);
+    if (in.maxSpindleSpeed_rpm)
+        st.spindleSpeed_rpm = std::min(st.spindleSpeed_rpm, *in.maxSpindleSpeed_rpm);
+    st.radial.spindleChuck_mm = f.radial_N * si.spindlePerRadial_mm_per_N + f.axial_N * si.spindlePerAxial_mm_per_N;
+    st.radial.workpiece_mm =
+        f.radial_N * si.radialPerRadial_mm_per_N + f.axial_N * si.radialPerAxial_mm_per_N - st.radial.spindleChuck_mm;
+    st.radial.toolpost_mm = f.radial_N * toolpost;
+    // A drift of the tool away from the axis enlarges shafts and bores alike.
+    const double drift = thermalDrift_mm(in, st.spindleSpeed_rpm);
+    st.radial.thermal_mm = outer ? drift : -drift;
+    st.tangential.spindleChuck_mm = f.tangential_N * si.spindleTangential_mm_per_N;
+    st.tangential.workpiece_mm = f.tangential_N * si.tangentialPerTangential_mm_per_N - st.tangential.spindleChuck_mm;
+    // Exact combination (MODEL §1): the tool tip sits at (r0 + d_r, d_t) from the deflected axis.
+    const double dr = st.radial.total_mm();
+    const double dt = st.tangential.total_mm();
+    const double rr = outer ? r0 + dr : r0 - dr;
+    st.radiusError_mm = std::sqrt(rr * rr + dt * dt) - r0;
+    st.sectionRotation_rad = f.radial_N * si.rotationPerRadial_rad_per_N + f.axial_N * si.rotationPerAxial_rad_per_N;
+    return st;
+}
+
+} // namespace
+
+DeviationResult computeDeviation(const Project &project, const DataLibrary &data, const DeviationOptions &options)
+{
+    DeviationResult result;
+    InputsResult resolved = resolveTurningInputs(project, data, options);
+    result.diagnostics = resolved.diagnostics;
+    if (!resolved.inputs)
+        return result;
+    const TurningInputs &in = *resolved.inputs;
+    const double allowance = options.inProcessSection ? in.pass.depthOfCut_mm : 0.0;
+    const InfluenceTable table = buildInfluenceTable(project.part, in, options.stationsPerFeature, allowance);
+
+    for (const FeatureInfluence &f : table.features) {
+        FeatureDeviation fd{f.featureId, f.side, f.kind, {}};
+        const bool outer = f.side == ContourSide::Outer;
+        for (std::size_t i = 0; i < f.stations.size(); ++i) {
+            const Station st = evaluateStation(f.stations[i], f.z_mm[i], f.nominalRadius_mm[i], outer, in,
+                                               table.toolpostCompliance_mm_per_N);
+            const double diameter = 2.0 * st.nominalRadius_mm;
+            const double speed = std::numbers::pi * diameter * st.spindleSpeed_rpm / 1000.0;
+            result.maxPower_kW = std::max(result.maxPower_kW, cuttingPower_kW(in.forces.tangential_N, speed));
+            result.maxTorque_Nm = std::max(result.maxTorque_Nm, spindleTorque_Nm(in.forces.tangential_N, diameter));
+            fd.stations.push_back(st);
+        }
+        result.features.push_back(fd);
+    }
+    for (const FeatureInfluence &f : table.faces) {
+        const auto feature = findFeature(project.part, f.featureId);
+        const Segment &s = *feature->segment;
+        const StationInfluence &si = f.stations.front();
+        FaceConicity fc;
+        fc.featureId = f.featureId;
+        fc.side = f.side;
+        fc.z_mm = f.z_mm.front();
+        fc.tanTheta =
+            in.forces.radial_N * si.rotationPerRadial_rad_per_N + in.forces.axial_N * si.rotationPerAxial_rad_per_N;
+        fc.axialRunout_mm = std::abs(s.to.r_mm - s.from.r_mm) * std::abs(fc.tanTheta); // eq. 12
+        result.faces.push_back(fc);
+    }
+    result.theoreticalRa_um = theoreticalRa_um(in.pass.feed_mm_rev, in.noseRadius_mm);
+    result.theoreticalRz_um = theoreticalRz_um(in.pass.feed_mm_rev, in.noseRadius_mm);
+    if (in.maxPower_kW && result.maxPower_kW > *in.maxPower_kW)
+        result.diagnostics.push_back(
+            makeWarning(QStringLiteral("passes"), tr("the pass needs %1 kW of cutting power, more than the machine's "
+                                                     "%2 kW")
+                                                      .arg(num(result.maxPower_kW), num(*in.maxPower_kW))));
+    result.inputs = in;
+    return result;
+}
+
+} // namespace tolturn

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+#include "core/cutting/cutting_forces.h"
+#include "core/data/data_library.h"
+#include "core/mechanics/moving_load.h"
+#include "core/project/project.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+struct DeviationOptions {
+    std::optional<CuttingForces> loadOverride; // forces given by the user instead of a force model
+    bool workpieceOnly = false;                // rigid machine supports, no toolpost or thermal term
+    bool inProcessSection = true;              // the pass's own stock still on, left of the tool
+    int stationsPerFeature = 21;
+    int passIndex = -1; // -1: the last finishing pass (or the last pass)
+};
+
+// Everything the deviation model needs, resolved from a project and the data library.
+struct TurningInputs {
+    ElasticMaterial material;
+    QString materialName;
+    CuttingPass pass;
+    int passIndex = 0;
+    CuttingForces forces;
+    QString forceModel; // "kienzle", "li_du" or "given"
+    double noseRadius_mm = 0.0;
+    double enteringAngle_deg = 0.0;
+    double toolpostCompliance_mm_per_N = 0.0;
+    double supportStart_mm = 0.0; // chuck face or left centre
+    double supportEnd_mm = 0.0;   // right end of the part
+    EndSupport radialLeft, radialRight, tangentialLeft, tangentialRight;
+    bool spindleCharacterised = false;
+    std::optional<ThermalDrift> thermal;
+    double timeSinceStart_min = 0.0;
+    double ambientTemperature_C = 20.0;
+    std::optional<double> maxSpindleSpeed_rpm;
+    std::optional<double> maxPower_kW;
+    QStringList notes; // assumptions the result depends on, for people
+};
+
+struct InputsResult {
+    std::optional<TurningInputs> inputs;
+    Diagnostics diagnostics;
+};
+
+[[nodiscard]] InputsResult resolveTurningInputs(const Project &project, const DataLibrary &data,
+                                                const DeviationOptions &options);
+
+// Deviations at one tool position, in mm. Radial contributions are "material left": positive
+// where the surface stays proud of nominal (a shaft too large, a bore too small).
+struct Contributions {
+    double spindleChuck_mm = 0.0; // rigid motion of the machine's supports (chuck, or centres)
+    double toolpost_mm = 0.0;
+    double workpiece_mm = 0.0;
+    double thermal_mm = 0.0;
+
+    [[nodiscard]] double total_mm() const { return spindleChuck_mm + toolpost_mm + workpiece_mm + thermal_mm; }
+};
+
+struct Station {
+    double z_mm = 0.0;
+    double nominalRadius_mm = 0.0;
+    double spindleSpeed_rpm = 0.0;
+    Contributions radial;
+    Contributions tangential;         // toolpost and thermal terms are radial only
+    double radiusError_mm = 0.0;      // machined radius - nominal, radial and tangential combined exactly
+    double sectionRotation_rad = 0.0; // rotation of the section under the tool
+};
+
+struct FeatureDeviation {
+    QString featureId;
+    ContourSide side = ContourSide::Outer;
+    SegmentKind kind = SegmentKind::Cylinder;
+    std::vector<Station> stations;
+};
+
+// Conicity of a faced surface (Valiño et al. 2008 eq. 1 and 12): tan(theta) is the rotation of
+// the section at the face under the cutting load there, e = (D_M - D_m)/2 tan(theta).
+struct FaceConicity {
+    QString featureId;
+    ContourSide side = ContourSide::Outer;
+    double z_mm = 0.0;
+    double tanTheta = 0.0;
+    double axialRunout_mm = 0.0; // e
+};
+
+struct DeviationResult {
+    std::optional<TurningInputs> inputs;
+    std::vector<FeatureDeviation> features;
+    std::vector<FaceConicity> faces;
+    double maxPower_kW = 0.0;
+    double maxTorque_Nm = 0.0;
+    double theoreticalRa_um = 0.0;
+    double theoreticalRz_um = 0.0;
+    Diagnostics diagnostics; // errors: no result; warnings: validity and limits
+};
+
+[[nodiscard]] DeviationResult computeDeviation(const Project &project, const DataLibrary &data,
+                                               const DeviationOptions &options = {});
+
+// The influence of unit loads along the turned features, for sweeping many cutting conditions:
+// deviation = F_r c_r + F_a c_a + F_r c_tp (radial), F_t c_t (tangential); linear in the forces.
+struct StationInfluence {
+    double radialPerRadial_mm_per_N = 0.0; // w under a unit radial force, spindle + workpiece
+    double radialPerAxial_mm_per_N = 0.0;  // w under the moment of a unit axial force at the contact radius
+    double tangentialPerTangential_mm_per_N = 0.0;
+    double spindlePerRadial_mm_per_N = 0.0;
+    double spindlePerAxial_mm_per_N = 0.0;
+    double spindleTangential_mm_per_N = 0.0;
+    double rotationPerRadial_rad_per_N = 0.0;
+    double rotationPerAxial_rad_per_N = 0.0;
+};
+
+struct FeatureInfluence {
+    QString featureId;
+    ContourSide side = ContourSide::Outer;
+    SegmentKind kind = SegmentKind::Cylinder;
+    std::vector<double> z_mm;
+    std::vector<double> nominalRadius_mm;
+    std::vector<StationInfluence> stations;
+};
+
+struct InfluenceTable {
+    std::vector<FeatureInfluence> features;
+    std::vector<FeatureInfluence> faces; // one station per face, at the face
+    double toolpostCompliance_mm_per_N = 0.0;
+};
+
+// Builds the influence table for a project and its resolved inputs. `allowance_mm` is the depth
+// of the pass still on the uncut side of the tool (0: the in-process section is ignored).
+[[nodiscard]] InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs &inputs,
+                                                 int stationsPerFeature, double allowance_mm);
+
+} // namespace tolturn

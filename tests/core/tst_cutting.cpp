@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Cutting forces, roughness, kinematics and insert codes against hand calculations.
+#include "core/cutting/cutting_forces.h"
+#include "core/cutting/cutting_quantities.h"
+#include "core/tooling/iso1832.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace tolturn;
+
+namespace {
+
+bool near(double value, double reference, double relative)
+{
+    return std::abs(value - reference) <= relative * std::abs(reference);
+}
+
+double deg(double d)
+{
+    return d * std::numbers::pi / 180.0;
+}
+
+} // namespace
+
+class TestCutting : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    // kc1.1 = 1500 N/mm², mc = 0.22, f = 0.2 mm, ap = 2 mm, kappa_r = 90°:
+    // h = 0.2, b = 2; h^(1-mc) = 0.2^0.78 = exp(0.78 ln 0.2) = exp(-1.25537) = 0.28497;
+    // Fc = 1500 * 2 * 0.28497 = 854.9 N. Ratios 0.5 and 0.25: Ff = 427.5 N, Fp = 213.7 N.
+    void kienzleHandCalculation()
+    {
+        KienzleConstants k;
+        k.cutting = {1500.0, 0.22};
+        k.feedToCuttingRatio = 0.5;
+        k.passiveToCuttingRatio = 0.25;
+        const ForceResult r = kienzleForces(k, 0.2, 2.0, deg(90.0));
+        QVERIFY2(near(r.forces.tangential_N, 854.9, 2e-4), qPrintable(QString::number(r.forces.tangential_N)));
+        QVERIFY(near(r.forces.axial_N, 427.5, 2e-4));
+        QVERIFY(near(r.forces.radial_N, 213.7, 3e-4));
+        QVERIFY(r.warnings.empty());
+    }
+
+    // kappa_r = 45°: h = 0.2 sin45 = 0.141421, b = 2/sin45 = 2.828427;
+    // h^0.78 = exp(0.78 ln 0.141421) = exp(0.78 * -1.956012) = exp(-1.525689) = 0.217452;
+    // Fc = 1500 * 2.828427 * 0.217452 = 922.6 N. Own Kienzle laws for Ff (kf = 350, mf = 0.6):
+    // h^0.4 = exp(0.4 * -1.956012) = 0.457299; Ff = 350 * 2.828427 * 0.457299 = 452.7 N.
+    void kienzleEnteringAngleAndOwnLaws()
+    {
+        KienzleConstants k;
+        k.cutting = {1500.0, 0.22};
+        k.feed = KienzleLaw{350.0, 0.6};
+        k.passive = KienzleLaw{250.0, 0.5};
+        k.validChipThicknessMin_mm = 0.15;
+        k.validChipThicknessMax_mm = 1.0;
+        const ForceResult r = kienzleForces(k, 0.2, 2.0, deg(45.0));
+        QVERIFY2(near(r.forces.tangential_N, 922.6, 2e-4), qPrintable(QString::number(r.forces.tangential_N)));
+        QVERIFY2(near(r.forces.axial_N, 452.7, 2e-4), qPrintable(QString::number(r.forces.axial_N)));
+        // h = 0.1414 mm lies below the stated 0.15 mm: a warning naming the range.
+        QCOMPARE(int(r.warnings.size()), 1);
+        QVERIFY(r.warnings[0].message.contains(QStringLiteral("0.15–1 mm")));
+    }
+
+    // Li & Du eq. 16a: f = 0.2, d = 1, r_n = 0.8: sqrt(0.64 - 0.01) = 0.793725;
+    // A_c = 0.2 - 0.2 (0.8 - 0.793725)/2 = 0.2 - 0.0006275 = 0.1993725 mm². Eq. 16b when r_n < f/2.
+    void liDuChipArea()
+    {
+        QVERIFY(near(liDuUncutChipArea_mm2(0.2, 1.0, 0.8), 0.1993725, 1e-6));
+        QCOMPARE(liDuUncutChipArea_mm2(0.5, 1.0, 0.2), 0.5);
+    }
+
+    // Eq. 20 with gamma_L = 0, f = 0.2, r_n = 0.8, d = 1: tan = 1.0473*0.25 + 0.4654*0.8 = 0.26183 + 0.37232
+    // = 0.63415, gamma_Le = 32.38°. Eq. 17–19 with alpha = alpha_b = 0, K_n = 2000, K_f = 0.5:
+    // Ft = K_n A_c = 398.745 N; Fa = K_n A_c K_f cos(g) = 398.745*0.5*0.84452 = 168.37 N;
+    // Fr = K_n A_c K_f sin(g) = 398.745*0.5*0.53556 = 106.78 N.
+    void liDuForcesHandCalculation()
+    {
+        LiDuToolGeometry tool;
+        tool.noseRadius_mm = 0.8;
+        const double gle = liDuEffectiveLeadAngle_rad(tool, 0.2, 1.0);
+        QVERIFY2(near(gle * 180.0 / std::numbers::pi, 32.38, 2e-4), qPrintable(QString::number(gle)));
+        const ForceResult r = liDuForces({2000.0, 0.5}, tool, 0.2, 1.0);
+        QVERIFY(near(r.forces.tangential_N, 398.745, 1e-5));
+        QVERIFY2(near(r.forces.axial_N, 168.37, 3e-4), qPrintable(QString::number(r.forces.axial_N)));
+        QVERIFY2(near(r.forces.radial_N, 106.78, 3e-4), qPrintable(QString::number(r.forces.radial_N)));
+        QVERIFY(r.warnings.empty());
+    }
+
+    void liDuValidityWarnings()
+    {
+        LiDuToolGeometry tool;
+        tool.noseRadius_mm = 0.8;
+        const ForceResult r = liDuForces({2000.0, 0.5}, tool, 0.05, 0.3); // f and d below their ranges
+        QCOMPARE(int(r.warnings.size()), 2);
+        QVERIFY(r.warnings[0].message.contains(QStringLiteral("0.5 < depth of cut [mm] < 5")));
+        QVERIFY(r.warnings[1].message.contains(QStringLiteral("0.1 < feed [mm/rev] < 1")));
+    }
+
+    // Calibration recovers K_n and K_f from forces made with them (several conditions, negative
+    // rake), and from a single measurement solves the two equations exactly.
+    void liDuCalibrationRecoversCoefficients()
+    {
+        LiDuToolGeometry tool{deg(-6.0), deg(-6.0), deg(-5.0), 0.8};
+        const LiDuCoefficients truth{2350.0, 0.62};
+        std::vector<ForceMeasurement> measurements;
+        for (const auto &[f, d] : {std::pair{0.15, 1.0}, std::pair{0.25, 2.0}, std::pair{0.35, 3.0}}) {
+            const CuttingForces c = liDuForces(truth, tool, f, d).forces;
+            measurements.push_back({f, d, c.tangential_N, c.axial_N});
+        }
+        const LiDuCalibration cal = calibrateLiDu(tool, measurements);
+        QVERIFY(cal.coefficients);
+        QVERIFY(near(cal.coefficients->normalPressure_MPa, 2350.0, 1e-9));
+        QVERIFY(near(cal.coefficients->frictionRatio, 0.62, 1e-9));
+        QVERIFY(cal.rmsResidual_N < 1e-9);
+        QVERIFY(!calibrateLiDu(tool, {}).coefficients);
+    }
+
+    // Ra = f²/(32 r), Rz = f²/(8 r): f = 0.2, r = 0.8 -> 0.04/25.6 mm = 1.5625 µm; 0.04/6.4 mm = 6.25 µm.
+    void roughness()
+    {
+        QVERIFY(near(theoreticalRa_um(0.2, 0.8), 1.5625, 1e-12));
+        QVERIFY(near(theoreticalRz_um(0.2, 0.8), 6.25, 1e-12));
+    }
+
+    // n = 1000 v/(pi D): 200 m/min on Ø50 -> 1273.24 rpm; P = Fc v = 1000 N * 200 m/min = 3.333 kW;
+    // torque 1000 N * 25 mm = 25 N·m.
+    void kinematics()
+    {
+        QVERIFY(near(spindleSpeed_rpm(200.0, 50.0), 1273.2395, 1e-7));
+        QVERIFY(near(cuttingPower_kW(1000.0, 200.0), 3.3333333, 1e-7));
+        QVERIFY(near(spindleTorque_Nm(1000.0, 50.0), 25.0, 1e-12));
+    }
+
+    void insertCodes_data()
+    {
+        QTest::addColumn<QString>("code");
+        QTest::addColumn<double>("angle");
+        QTest::addColumn<double>("clearance");
+        QTest::addColumn<double>("ic");
+        QTest::addColumn<double>("thickness");
+        QTest::addColumn<double>("nose");
+        // Values from the ISO 1832 tables: shape angle, clearance, IC of the size code, thickness, radius.
+        QTest::newRow("CNMG 120408") << QStringLiteral("CNMG 120408") << 80.0 << 0.0 << 12.7 << 4.76 << 0.8;
+        QTest::newRow("DNMG150612-PM") << QStringLiteral("DNMG150612-PM") << 55.0 << 0.0 << 12.7 << 6.35 << 1.2;
+        QTest::newRow("VBMT 160404") << QStringLiteral("VBMT 160404") << 35.0 << 5.0 << 9.525 << 4.76 << 0.4;
+        QTest::newRow("TNMG 220408") << QStringLiteral("TNMG 220408") << 60.0 << 0.0 << 12.7 << 4.76 << 0.8;
+        QTest::newRow("SNMG 120412") << QStringLiteral("SNMG 120412") << 90.0 << 0.0 << 12.7 << 4.76 << 1.2;
+        QTest::newRow("CCMT 09T308") << QStringLiteral("CCMT 09T308") << 80.0 << 7.0 << 9.525 << 3.97 << 0.8;
+        QTest::newRow("WNMG 080408") << QStringLiteral("WNMG 080408") << 80.0 << 0.0 << 12.7 << 4.76 << 0.8;
+        QTest::newRow("RCMT 1204M0") << QStringLiteral("RCMT 1204M0") << 0.0 << 7.0 << 12.0 << 4.76 << 0.0;
+    }
+
+    void insertCodes()
+    {
+        QFETCH(QString, code);
+        QFETCH(double, angle);
+        QFETCH(double, clearance);
+        QFETCH(double, ic);
+        QFETCH(double, thickness);
+        QFETCH(double, nose);
+        const InsertParseResult r = parseInsertCode(code);
+        QVERIFY2(r.insert, r.diagnostics.empty() ? "" : qPrintable(r.diagnostics[0].message));
+        QCOMPARE(r.insert->includedAngle_deg, angle);
+        QCOMPARE(r.insert->clearanceAngle_deg, clearance);
+        QCOMPARE(r.insert->inscribedCircle_mm, ic);
+        QCOMPARE(r.insert->thickness_mm, thickness);
+        QCOMPARE(r.insert->noseRadius_mm, nose);
+    }
+
+    void malformedInsertCodes_data()
+    {
+        QTest::addColumn<QString>("code");
+        QTest::addColumn<QString>("fragment");
+        QTest::newRow("shape") << QStringLiteral("XNMG 120408") << QStringLiteral("position 1 (shape) 'X'");
+        QTest::newRow("clearance") << QStringLiteral("CXMG 120408")
+                                   << QStringLiteral("position 2 (clearance angle) 'X'");
+        QTest::newRow("tolerance") << QStringLiteral("CNZG 120408")
+                                   << QStringLiteral("position 3 (tolerance class) 'Z'");
+        QTest::newRow("type") << QStringLiteral("CNMZ 120408") << QStringLiteral("position 4 (type) 'Z'");
+        QTest::newRow("size") << QStringLiteral("CNMG 130408") << QStringLiteral("position 5 (size) '13'");
+        QTest::newRow("thickness") << QStringLiteral("CNMG 120808") << QStringLiteral("position 6 (thickness) '08'");
+        QTest::newRow("garbage") << QStringLiteral("hello") << QStringLiteral("not an ISO 1832 designation");
+    }
+
+    void malformedInsertCodes()
+    {
+        QFETCH(QString, code);
+        QFETCH(QString, fragment);
+        const InsertParseResult r = parseInsertCode(code);
+        QVERIFY(!r.insert);
+        QCOMPARE(int(r.diagnostics.size()), 1);
+        QCOMPARE(r.diagnostics[0].field, QStringLiteral("tool.insert"));
+        QVERIFY2(r.diagnostics[0].message.contains(fragment), qPrintable(r.diagnostics[0].message));
+        QVERIFY(r.diagnostics[0].message.contains(code));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCutting)
+#include "tst_cutting.moc"

@@ -1,0 +1,305 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The deviation model from a project to per-station contributions, against closed forms, and its
+// named errors for bad input.
+#include "core/deviation/deviation_model.h"
+#include "core/io/project_file.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace tolturn;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// C45E-N in resources/data/materials.json: E = 210000 MPa, nu = 0.3 (EN 1993-1-1).
+constexpr double kE = 210000.0;
+constexpr double kNu = 0.3;
+constexpr double kG = kE / (2 * (1 + kNu));
+constexpr double kKappaSolid = 6 * (1 + kNu) / (7 + 6 * kNu); // Cowper (1966), solid circle
+
+Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
+{
+    Segment s;
+    s.id = QString::fromLatin1(id);
+    s.kind = kind;
+    s.from = a;
+    s.to = b;
+    return s;
+}
+
+// A plain bar Ø2r x L of C45E-N, one finishing pass, a CNMG insert in a PCLNR holder.
+Project barProject(double r, double length, ClampingMethod method, double clamped)
+{
+    Project p;
+    p.part.name = QStringLiteral("bar");
+    p.part.stockDiameter_mm = 2 * r + 4;
+    p.part.outer.segments = {seg("O1", SegmentKind::Face, {0, 0}, {0, r}),
+                             seg("O2", SegmentKind::Cylinder, {0, r}, {length, r}),
+                             seg("O3", SegmentKind::Face, {length, r}, {length, 0})};
+    p.materialId = QStringLiteral("C45E-N");
+    p.machineId = QStringLiteral("haas-st-20");
+    p.tool.insertCode = QStringLiteral("CNMG 120408");
+    p.tool.holderCode = QStringLiteral("PCLNR 2525M12");
+    p.clamping = {method, clamped};
+    p.passes = {{PassKind::Finishing, 200.0, 0.2, 1.0}};
+    return p;
+}
+
+const FeatureDeviation &feature(const DeviationResult &r, const char *id)
+{
+    for (const FeatureDeviation &f : r.features) {
+        if (f.featureId == QLatin1String(id))
+            return f;
+    }
+    qFatal("no feature %s", id);
+}
+
+bool near(double value, double reference, double relative, double absolute = 0.0)
+{
+    return std::abs(value - reference) <= relative * std::abs(reference) + absolute;
+}
+
+QString dump(const Diagnostics &d)
+{
+    QStringList lines;
+    for (const Diagnostic &x : d)
+        lines << x.toString();
+    return lines.join(QLatin1Char('\n'));
+}
+
+} // namespace
+
+class TestDeviation : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    // Workpiece only, given forces, no in-process stock: a cantilever from the chuck face.
+    //   radial   w = Fr (d^3/(3EI) + d/(kGA)) - Fa r d^2/(2EI)   (moment of Fa at the contact radius)
+    //   tangent  w = Ft (d^3/(3EI) + d/(kGA));  radius error = sqrt((r + w_r)^2 + w_t^2) - r
+    void cantileverWithGivenLoad()
+    {
+        const double r = 15.0;
+        const Project p = barProject(r, 240.0, ClampingMethod::Chuck, 40.0);
+        DeviationOptions o;
+        o.loadOverride = CuttingForces{500.0, 150.0, 200.0};
+        o.workpieceOnly = true;
+        o.inProcessSection = false;
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), o);
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        const double I = kPi * std::pow(r, 4) / 4;
+        const double A = kPi * r * r;
+        for (const Station &st : feature(res, "O2").stations) {
+            const double d = st.z_mm - 40.0;
+            const double bend = d * d * d / (3 * kE * I) + d / (kKappaSolid * kG * A);
+            const double wr = 200.0 * bend - 150.0 * r * d * d / (2 * kE * I);
+            const double wt = 500.0 * bend;
+            QVERIFY2(near(st.radial.total_mm(), wr, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
+            QVERIFY(near(st.tangential.total_mm(), wt, 1e-6, 1e-12));
+            QVERIFY(near(st.radiusError_mm, std::sqrt((r + wr) * (r + wr) + wt * wt) - r, 1e-6, 1e-12));
+            QCOMPARE(st.radial.spindleChuck_mm, 0.0);
+            QCOMPARE(st.radial.toolpost_mm, 0.0);
+            QCOMPARE(st.radial.thermal_mm, 0.0);
+        }
+    }
+
+    // With the in-process section the whole length between chuck and tool still carries the pass's
+    // stock (feeding towards the chuck): the cantilever term uses radius r + ap.
+    void inProcessSectionOfCantilever()
+    {
+        const double r = 12.0, ap = 1.0;
+        const Project p = barProject(r, 200.0, ClampingMethod::Chuck, 30.0);
+        DeviationOptions o;
+        o.loadOverride = CuttingForces{0.0, 0.0, 300.0};
+        o.workpieceOnly = true;
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), o);
+        QVERIFY(res.inputs);
+        const double rs = r + ap;
+        const double I = kPi * std::pow(rs, 4) / 4;
+        const double A = kPi * rs * rs;
+        for (const Station &st : feature(res, "O2").stations) {
+            const double d = st.z_mm - 30.0;
+            const double w = 300.0 * (d * d * d / (3 * kE * I) + d / (kKappaSolid * kG * A));
+            QVERIFY2(near(st.radial.total_mm(), w, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
+        }
+    }
+
+    // Measured spindle springs: the spindle–chuck contribution is the rigid-body polynomial of
+    // Valiño et al. eq. 3 (z^2 and constant terms as printed, z term as derived), the workpiece
+    // contribution the cantilever from the chuck face.
+    void spindleChuckContribution()
+    {
+        const double r = 20.0;
+        Project p = barProject(r, 260.0, ClampingMethod::Chuck, 60.0);
+        p.characterisation.source = QStringLiteral("test");
+        p.characterisation.pivotDistance_mm = 180.0;
+        p.characterisation.spindleRadial = SpindleSprings{1.6e5, 1.28e9, 1.52e10};
+        p.characterisation.spindleTangential = SpindleSprings{1.0e5, 1.5e9, 1.3e10};
+        p.tool.overhang_mm = 40.0;
+        DeviationOptions o;
+        o.loadOverride = CuttingForces{500.0, 150.0, 400.0};
+        o.inProcessSection = false;
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), o);
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        const double k1 = 1.6e5, k2 = 1.28e9, k3 = 1.52e10, Lc = 180.0, Fr = 400.0, FaD2 = 150.0 * r;
+        const double I = kPi * std::pow(r, 4) / 4;
+        const double A = kPi * r * r;
+        for (const Station &st : feature(res, "O2").stations) {
+            const double z = st.z_mm - 60.0;
+            const double spindle = (Fr / k2 + Fr / k3) * z * z + (2 * Fr * Lc / k2 - FaD2 * (1 / k2 + 1 / k3)) * z +
+                                   (Fr / k1 - FaD2 * Lc / k2 + Fr * Lc * Lc / k2);
+            const double beam =
+                Fr * (z * z * z / (3 * kE * I) + z / (kKappaSolid * kG * A)) - FaD2 * z * z / (2 * kE * I);
+            QVERIFY2(near(st.radial.spindleChuck_mm, spindle, 1e-7), qPrintable(QString::number(z)));
+            QVERIFY2(near(st.radial.workpiece_mm, beam, 1e-6, 1e-12), qPrintable(QString::number(z)));
+            // Toolpost, eq. 5: 40 mm of a 25 x 25 mm steel shank, E = 210000 MPa.
+            QVERIFY(near(st.radial.toolpost_mm, Fr * 40.0 / (625.0 * 210000.0), 1e-12));
+        }
+    }
+
+    // Between sprung centres: simply supported beam plus the spring motion of the supports,
+    //   w = F [a^2 b^2/(3 E I L) + a b/(L k G A)] + F [(b/L)^2/k_l + (a/L)^2/k_r],  b = L - a.
+    void betweenSprungCentres()
+    {
+        const double r = 16.0, L = 480.0, kl = 3.0e4, kr = 2.0e4;
+        Project p = barProject(r, L, ClampingMethod::BetweenCentres, 0.0);
+        p.characterisation.source = QStringLiteral("test");
+        p.characterisation.centres = SupportStiffness{kl, kl};
+        p.characterisation.tailstock = SupportStiffness{kr, kr};
+        DeviationOptions o;
+        o.loadOverride = CuttingForces{0.0, 0.0, 250.0};
+        o.inProcessSection = false;
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), o);
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        const double I = kPi * std::pow(r, 4) / 4;
+        const double A = kPi * r * r;
+        for (const Station &st : feature(res, "O2").stations) {
+            const double a = st.z_mm, b = L - a;
+            const double beam = 250.0 * (a * a * b * b / (3 * kE * I * L) + a * b / (L * kKappaSolid * kG * A));
+            const double springs = 250.0 * ((b / L) * (b / L) / kl + (a / L) * (a / L) / kr);
+            QVERIFY2(near(st.radial.workpiece_mm, beam, 1e-6, 1e-12), qPrintable(QString::number(a)));
+            QVERIFY2(near(st.radial.spindleChuck_mm, springs, 1e-6), qPrintable(QString::number(a)));
+        }
+    }
+
+    // Kienzle forces in the pipeline: C45E-N (kc1.1 = 1500, mc = 0.22; ISCAR 2022 group 2) with a
+    // PCLNR holder (kappa_r = 95°), f = 0.2, ap = 1: h = 0.2 sin 95° = 0.199239,
+    // b = 1/sin 95° = 1.003820, Fc = 1500 * 1.003820 * 0.199239^0.78 = 427.82 N; rule-of-thumb ratios.
+    void kienzleForcesFromTheLibrary()
+    {
+        const DeviationResult res =
+            computeDeviation(barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0), DataLibrary::builtIn(), {});
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        const double fc =
+            1500.0 * (1.0 / std::sin(95.0 * kPi / 180)) * std::pow(0.2 * std::sin(95.0 * kPi / 180), 0.78);
+        QVERIFY(near(fc, 427.82, 1e-4));
+        QVERIFY(near(res.inputs->forces.tangential_N, fc, 1e-12));
+        QVERIFY(near(res.inputs->forces.axial_N, 0.5 * fc, 1e-12));
+        QVERIFY(near(res.inputs->forces.radial_N, 0.25 * fc, 1e-12));
+        QVERIFY(res.inputs->notes.join(QLatin1Char(' ')).contains(QStringLiteral("Isakov 2013")));
+        // Ra = f^2/(32 r_eps) with r_eps = 0.8 mm from "CNMG 120408".
+        QVERIFY(near(res.theoreticalRa_um, 1.5625, 1e-12));
+    }
+
+    void examplesComputeWithoutErrors_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("shaft") << QStringLiteral("stepped-shaft-chuck.tolturn");
+        QTest::newRow("sleeve") << QStringLiteral("hollow-sleeve-tailstock.tolturn");
+        QTest::newRow("long shaft") << QStringLiteral("long-shaft-centres.tolturn");
+    }
+
+    void examplesComputeWithoutErrors()
+    {
+        QFETCH(QString, file);
+        const ProjectParseResult read =
+            readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + file);
+        QVERIFY(read.project);
+        const DeviationResult res = computeDeviation(*read.project, DataLibrary::builtIn(), {});
+        QVERIFY2(res.inputs && !hasErrors(res.diagnostics), qPrintable(dump(res.diagnostics)));
+        QVERIFY(!res.features.empty());
+        for (const FeatureDeviation &f : res.features) {
+            for (const Station &st : f.stations)
+                QVERIFY(std::isfinite(st.radiusError_mm));
+        }
+    }
+
+    void badInput_data()
+    {
+        QTest::addColumn<QString>("what");
+        QTest::addColumn<QString>("field");
+        QTest::addColumn<QString>("fragment");
+        QTest::newRow("material") << QStringLiteral("material") << QStringLiteral("material")
+                                  << QStringLiteral("unknown material \"unobtainium\"");
+        QTest::newRow("machine") << QStringLiteral("machine") << QStringLiteral("machine")
+                                 << QStringLiteral("unknown machine \"lathe-9000\"");
+        QTest::newRow("insert") << QStringLiteral("insert") << QStringLiteral("tool.insert")
+                                << QStringLiteral("position 1 (shape) 'Q'");
+        QTest::newRow("holder") << QStringLiteral("holder") << QStringLiteral("tool.holder")
+                                << QStringLiteral("holder \"XYZ\"");
+        QTest::newRow("no pass") << QStringLiteral("passes") << QStringLiteral("passes")
+                                 << QStringLiteral("there is no cutting pass");
+        QTest::newRow("Poisson") << QStringLiteral("poisson") << QStringLiteral("material")
+                                 << QStringLiteral("no Poisson's ratio");
+    }
+
+    void badInput()
+    {
+        QFETCH(QString, what);
+        QFETCH(QString, field);
+        QFETCH(QString, fragment);
+        Project p = barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0);
+        if (what == QLatin1String("material"))
+            p.materialId = QStringLiteral("unobtainium");
+        else if (what == QLatin1String("machine"))
+            p.machineId = QStringLiteral("lathe-9000");
+        else if (what == QLatin1String("insert"))
+            p.tool.insertCode = QStringLiteral("QNMG 120408");
+        else if (what == QLatin1String("holder"))
+            p.tool.holderCode = QStringLiteral("XYZ");
+        else if (what == QLatin1String("passes"))
+            p.passes.clear();
+        else if (what == QLatin1String("poisson"))
+            p.materialId = QStringLiteral("CuZn39Pb3"); // the data give no nu for this brass
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(!res.inputs);
+        QVERIFY(hasErrors(res.diagnostics));
+        QCOMPARE(res.diagnostics.front().field, field);
+        QVERIFY2(res.diagnostics.front().message.contains(fragment), qPrintable(res.diagnostics.front().message));
+    }
+
+    // Li & Du outside its stated range: a warning naming the range, the result still computed.
+    void liDuValidityWarning()
+    {
+        Project p = barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0);
+        p.cuttingModel.forceModel = ForceModel::LiDu;
+        p.cuttingModel.normalPressure_MPa = 2200.0;
+        p.cuttingModel.frictionRatio = 0.5;
+        p.passes.front().depthOfCut_mm = 0.3; // eq. 20 holds for 0.5 < d < 5 mm
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        QVERIFY(!hasErrors(res.diagnostics));
+        QVERIFY(dump(res.diagnostics).contains(QStringLiteral("depth of cut [mm] = 0.3 is outside the range 0.5")));
+    }
+
+    void builtInDataIsComplete()
+    {
+        const DataLibrary &data = DataLibrary::builtIn();
+        QVERIFY2(data.diagnostics().empty(), qPrintable(dump(data.diagnostics())));
+        QVERIFY(data.materials().size() >= 10);
+        for (const MaterialData &m : data.materials()) {
+            for (const QString &key :
+                 {m.youngsModulus_MPa.source, m.density_kg_m3.source, m.kc11_MPa.source, m.mc.source})
+                QVERIFY2(!data.sourceText(key).isEmpty(), qPrintable(m.id + QLatin1Char(' ') + key));
+            QVERIFY(m.kc11_MPa.value > 300.0 && m.kc11_MPa.value < 5000.0);
+            QVERIFY(m.mc.value > 0.0 && m.mc.value < 1.0);
+        }
+        QVERIFY(data.holder(QStringLiteral("pclnr2525m12")) != nullptr);
+        QCOMPARE(data.styleEnteringAngle(QLatin1Char('L'))->value, 95.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDeviation)
+#include "tst_deviation.moc"
