@@ -6,7 +6,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 sources() {
-    find core widgets app resources translations tests -name '*.cpp' "$@" | sort
+    find core widgets app resources translations tests benchmarks -name '*.cpp' "$@" | sort
 }
 case "${1:-}" in
 format)

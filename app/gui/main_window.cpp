@@ -8,10 +8,12 @@
 #include "widgets/document/project_document.h"
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
+#include "widgets/results/deflection_panel.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
@@ -27,6 +29,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_recentFiles(new RecentFiles(this))
     , m_files(new FileController(*m_document, *m_recentFiles, *this, this))
     , m_profileView(new ProfileView(this))
+    , m_deflection(new DeflectionPanel(this))
     , m_summary(new QLabel(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
@@ -45,7 +48,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_recentFiles, &RecentFiles::changed, this, &MainWindow::rebuildRecentMenu);
     rebuildRecentMenu();
     updateTitle();
-    resize(1100, 700);
+    resize(1200, 820);
 }
 
 MainWindow::~MainWindow() = default;
@@ -53,7 +56,19 @@ MainWindow::~MainWindow() = default;
 void MainWindow::createActions()
 {
     createFileMenu();
+    createDocks();
     createHelpMenu();
+}
+
+void MainWindow::createDocks()
+{
+    auto *dock = new QDockWidget(tr("Deflection"), this);
+    dock->setObjectName(QStringLiteral("deflectionDock"));
+    dock->setWidget(m_deflection);
+    dock->setAllowedAreas(Qt::BottomDockWidgetArea | Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(dock->toggleViewAction());
 }
 
 void MainWindow::createFileMenu()
@@ -129,6 +144,7 @@ void MainWindow::showProject()
 {
     const Project &project = m_document->project();
     m_profileView->setProfile(project.part);
+    m_deflection->showProject(project);
     const PartProfile &part = project.part;
     m_summary->setText(tr("%1 — length %2 mm, Ø max %3 mm, %4 outer / %5 inner features, clamping: %6")
                            .arg(part.name.isEmpty() ? tr("Part") : part.name, dimensionText(part.length_mm()),

@@ -10,6 +10,7 @@ class QMenu;
 
 namespace tolturn {
 
+class DeflectionPanel;
 class ProfileView;
 class ProjectDocument;
 class RecentFiles;
@@ -30,6 +31,8 @@ public:
 
     [[nodiscard]] ProfileView *profileView() const { return m_profileView; }
 
+    [[nodiscard]] DeflectionPanel *deflectionPanel() const { return m_deflection; }
+
     // FilePrompts
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
     [[nodiscard]] QString chooseFileToSave(const QString &suggestedPath) override;
@@ -39,6 +42,7 @@ private:
     void createActions();
     void createFileMenu();
     void createHelpMenu();
+    void createDocks();
     void rebuildRecentMenu();
     void updateTitle();
     void showProject();
@@ -47,6 +51,7 @@ private:
     RecentFiles *m_recentFiles;
     FileController *m_files;
     ProfileView *m_profileView;
+    DeflectionPanel *m_deflection;
     QMenu *m_recentMenu = nullptr;
     QLabel *m_summary;
     QAction *m_saveAction = nullptr;

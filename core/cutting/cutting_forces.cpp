@@ -63,8 +63,10 @@ LiDuFactors liDuFactors(const LiDuToolGeometry &tool, double effectiveLead_rad)
 
 } // namespace
 
-ForceResult kienzleForces(const KienzleConstants &k, double feed_mm_rev, double depthOfCut_mm, double enteringAngle_rad)
+ForceResult kienzleForces(const KienzleConstants &constants, double feed_mm_rev, double depthOfCut_mm,
+                          double enteringAngle_rad)
 {
+    const KienzleConstants &k = constants;
     ForceResult r;
     const double sinK = std::sin(enteringAngle_rad);
     const double h = feed_mm_rev * sinK;

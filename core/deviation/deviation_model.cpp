@@ -569,4 +569,26 @@ DeviationResult computeDeviation(const Project &project, const DataLibrary &data
     return result;
 }
 
+std::vector<double> sweepFormErrors(const InfluenceTable &table, const std::vector<ConditionForces> &conditions)
+{
+    // Per station the radial deviation is Fr (c_r + c_tp) + Fa c_a; the spread over a feature is
+    // evaluated for every condition from the two coefficient columns.
+    std::vector<double> out;
+    out.reserve(conditions.size() * table.features.size());
+    for (const ConditionForces &c : conditions) {
+        for (const FeatureInfluence &f : table.features) {
+            double lo = 1e300;
+            double hi = -1e300;
+            for (const StationInfluence &si : f.stations) {
+                const double w = c.radial_N * (si.radialPerRadial_mm_per_N + table.toolpostCompliance_mm_per_N) +
+                                 c.axial_N * si.radialPerAxial_mm_per_N;
+                lo = std::min(lo, w);
+                hi = std::max(hi, w);
+            }
+            out.push_back(hi - lo);
+        }
+    }
+    return out;
+}
+
 } // namespace tolturn

@@ -139,4 +139,16 @@ struct InfluenceTable {
 [[nodiscard]] InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs &inputs,
                                                  int stationsPerFeature, double allowance_mm);
 
+// Form error of every turned feature under many cutting conditions at once, by the linearity of
+// the deflection in the forces (docs/model.md §6): for each condition, the spread
+// max(delta_r) - min(delta_r) of the radial deviation over each feature's stations [mm]. The
+// section is that of the table (its in-process allowance), the forces those given.
+struct ConditionForces {
+    double radial_N = 0.0;
+    double axial_N = 0.0;
+};
+
+[[nodiscard]] std::vector<double> sweepFormErrors(const InfluenceTable &table,
+                                                  const std::vector<ConditionForces> &conditions);
+
 } // namespace tolturn

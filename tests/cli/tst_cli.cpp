@@ -8,6 +8,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
+
 namespace {
 
 struct Run {
@@ -123,6 +125,75 @@ private Q_SLOTS:
         const QJsonObject first = report.value(QStringLiteral("diagnostics")).toArray().at(0).toObject();
         QCOMPARE(first.value(QStringLiteral("field")).toString(), QStringLiteral("clamping.method"));
         QCOMPARE(first.value(QStringLiteral("severity")).toString(), QStringLiteral("error"));
+    }
+
+    // deflect --json: stations with contributions and the forces used; --load replaces the forces
+    // and --workpiece-only leaves only the beam. The long shaft between rigid centres under
+    // Fr = 100 N at mid-span: w = F L^3/(48 E I) + F L/(4 kappa G A) for Ø42 over 500 mm (the
+    // body and journals differ by 1 mm in radius; the reference uses Ø42 throughout and the
+    // tolerance covers the difference of the journals, below 5 %).
+    void deflectJson()
+    {
+        const Run r = runCli({QStringLiteral("deflect"), QStringLiteral("--json"), QStringLiteral("--workpiece-only"),
+                              QStringLiteral("--no-in-process"), QStringLiteral("--load"), QStringLiteral("100,0,0"),
+                              example("long-shaft-centres.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o.value(QStringLiteral("force_model")).toString(), QStringLiteral("given"));
+        QCOMPARE(o.value(QStringLiteral("forces_N")).toObject().value(QStringLiteral("radial")).toDouble(), 100.0);
+        double midSpan = 0.0;
+        for (const QJsonValue f : o.value(QStringLiteral("features")).toArray()) {
+            for (const QJsonValue st : f.toObject().value(QStringLiteral("stations")).toArray()) {
+                const QJsonObject s = st.toObject();
+                const QJsonObject radial = s.value(QStringLiteral("radial_um")).toObject();
+                QCOMPARE(radial.value(QStringLiteral("spindle_chuck")).toDouble(), 0.0);
+                QCOMPARE(radial.value(QStringLiteral("toolpost")).toDouble(), 0.0);
+                if (std::abs(s.value(QStringLiteral("z_mm")).toDouble() - 250.0) < 1e-6)
+                    midSpan = radial.value(QStringLiteral("total")).toDouble();
+            }
+        }
+        const double pi = 3.14159265358979, E = 210000.0, nu = 0.3, r21 = 21.0;
+        const double I = pi * r21 * r21 * r21 * r21 / 4, A = pi * r21 * r21, G = E / (2 * (1 + nu));
+        const double kappa = 6 * (1 + nu) / (7 + 6 * nu);
+        const double reference_um =
+            1000.0 * (100.0 * 500.0 * 500.0 * 500.0 / (48 * E * I) + 100.0 * 500.0 / (4 * kappa * G * A));
+        QVERIFY2(std::abs(midSpan - reference_um) < 0.05 * reference_um,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(midSpan).arg(reference_um)));
+    }
+
+    void deflectText()
+    {
+        const Run r = runCli({QStringLiteral("deflect"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.startsWith(QStringLiteral("Forces (kienzle)")));
+        QVERIFY(r.out.contains(QStringLiteral("note: Spindle–chuck not characterised")));
+        QVERIFY(r.out.contains(QStringLiteral("face O11")));
+    }
+
+    void deflectBadLoad()
+    {
+        const Run r = runCli({QStringLiteral("deflect"), QStringLiteral("--load"), QStringLiteral("100,abc"),
+                              example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains(QStringLiteral("--load takes three numbers in newtons")));
+        QVERIFY(r.err.contains(QStringLiteral("\"100,abc\"")));
+    }
+
+    void deflectUnknownMaterial()
+    {
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QByteArray text = source.readAll();
+        text.replace("\"material\": \"C45E-N\"", "\"material\": \"kryptonite\"");
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bad.tolturn"));
+        QFile bad(path);
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write(text);
+        bad.close();
+        const Run r = runCli({QStringLiteral("deflect"), path});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("error: material: unknown material \"kryptonite\"")), qPrintable(r.err));
     }
 
     void checkWithoutFileIsUsageError()

@@ -6,9 +6,11 @@
 #include "resources/bundled.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/document/project_document.h"
+#include "widgets/plot/line_plot.h"
 #include "widgets/profile/dimension_item.h"
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
+#include "widgets/results/deflection_panel.h"
 
 #include <QApplication>
 #include <QFile>
@@ -180,6 +182,33 @@ private Q_SLOTS:
             QVERIFY2(w.fileController()->openExample(path), qPrintable(path));
             QVERIFY(!itemsOfKind(w, profile_item::kOuterContour).isEmpty());
         }
+    }
+
+    // The deflection curves appear for the open part, per contribution, and follow the project.
+    void deflectionCurvesFollowTheProject()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        DeflectionPanel *panel = w.deflectionPanel();
+        QVERIFY(panel->result().inputs.has_value());
+        QCOMPARE(panel->plot()->curveCount(), 5);
+        QCOMPARE(panel->plot()->curveName(0), QStringLiteral("total"));
+        QVERIFY(panel->summaryText().contains(QStringLiteral("Forces (kienzle)")));
+        const double shaftFc = panel->result().inputs->forces.tangential_N;
+
+        panel->setQuantity(DeflectionPanel::Quantity::TangentialContributions);
+        QCOMPARE(panel->plot()->curveCount(), 3); // toolpost and thermal act radially only
+        panel->setQuantity(DeflectionPanel::Quantity::DiameterError);
+        QCOMPARE(panel->plot()->curveCount(), 1);
+
+        QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
+        QVERIFY(panel->result().inputs->forces.tangential_N != shaftFc);
+        panel->setSide(ContourSide::Inner);
+        QCOMPARE(panel->plot()->curveCount(), 1);
+        bool bore = false;
+        for (const FeatureDeviation &f : panel->result().features)
+            bore = bore || f.side == ContourSide::Inner;
+        QVERIFY(bore);
     }
 
     void aboutNamesEveryLibraryWithVersionAndLicence()

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QColor>
+#include <QString>
+#include <QVector>
+#include <QWidget>
+
+class QCustomPlot;
+
+namespace tolturn {
+
+// A plot of curves y(x) with axes that carry their units and a legend. TolTurn's own class: the
+// plotting library behind it (QCustomPlot) is not visible to its users, so it can be replaced.
+// A gap in a curve is a NaN in y.
+class LinePlot : public QWidget {
+    Q_OBJECT
+public:
+    explicit LinePlot(QWidget *parent = nullptr);
+    ~LinePlot() override;
+
+    void setTitle(const QString &title);
+    void setAxisLabels(const QString &xLabel, const QString &yLabel);
+    void clear();
+    void addCurve(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color,
+                  Qt::PenStyle style = Qt::SolidLine, double width = 1.5);
+    // Fits the axes to the data (y always includes zero) and redraws.
+    void rescaleAndReplot();
+
+    [[nodiscard]] int curveCount() const;
+    [[nodiscard]] QString curveName(int index) const;
+
+    [[nodiscard]] QString title() const { return m_title; }
+
+private:
+    QCustomPlot *m_plot;
+    QString m_title;
+};
+
+} // namespace tolturn

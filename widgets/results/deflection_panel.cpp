@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/results/deflection_panel.h"
+
+#include "core/project/keywords.h"
+#include "widgets/plot/line_plot.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace tolturn {
+
+namespace {
+
+constexpr double kUmPerMm = 1000.0;
+const double kGap = std::numeric_limits<double>::quiet_NaN();
+
+struct CurveSpec {
+    QString name;
+    std::function<double(const Contributions &)> value;
+    QColor color;
+    Qt::PenStyle style;
+    double width;
+};
+
+} // namespace
+
+DeflectionPanel::DeflectionPanel(QWidget *parent)
+    : QWidget(parent)
+    , m_sideBox(new QComboBox(this))
+    , m_quantityBox(new QComboBox(this))
+    , m_plot(new LinePlot(this))
+    , m_summary(new QLabel(this))
+    , m_notes(new QLabel(this))
+{
+    setObjectName(QStringLiteral("deflectionPanel"));
+    m_sideBox->addItem(tr("Outer contour"));
+    m_sideBox->addItem(tr("Inner contour (bores)"));
+    m_quantityBox->addItem(tr("Radial deviation by contribution"));
+    m_quantityBox->addItem(tr("Tangential deviation by contribution"));
+    m_quantityBox->addItem(tr("Diameter error"));
+    m_quantityBox->setToolTip(tr("Radial deviation: material left on the surface, δ_T = δ_sc + δ_tp + δ_p + δ_th "
+                                 "(Valiño et al. 2008, eq. 2). Diameter error: 2 (r - r_nominal) with the radial and "
+                                 "tangential deviation combined exactly."));
+    auto *controls = new QHBoxLayout;
+    controls->addWidget(m_sideBox);
+    controls->addWidget(m_quantityBox);
+    controls->addStretch();
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_notes->setWordWrap(true);
+    m_notes->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_notes->setStyleSheet(QStringLiteral("color: #555;"));
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(controls);
+    layout->addWidget(m_plot, 1);
+    layout->addWidget(m_summary);
+    layout->addWidget(m_notes);
+    connect(m_sideBox, &QComboBox::currentIndexChanged, this,
+            [this](int index) { setSide(index == 0 ? ContourSide::Outer : ContourSide::Inner); });
+    connect(m_quantityBox, &QComboBox::currentIndexChanged, this,
+            [this](int index) { setQuantity(static_cast<Quantity>(index)); });
+}
+
+void DeflectionPanel::showProject(const Project &project)
+{
+    m_result = computeDeviation(project, DataLibrary::builtIn(), {});
+    m_sideBox->setEnabled(!project.part.inner.empty());
+    if (project.part.inner.empty() && m_side == ContourSide::Inner)
+        m_sideBox->setCurrentIndex(0);
+    updateTexts();
+    redraw();
+}
+
+void DeflectionPanel::clear()
+{
+    m_result = {};
+    m_plot->clear();
+    m_plot->rescaleAndReplot();
+    m_summary->clear();
+    m_notes->clear();
+}
+
+void DeflectionPanel::setSide(ContourSide side)
+{
+    m_side = side;
+    m_sideBox->setCurrentIndex(side == ContourSide::Outer ? 0 : 1);
+    redraw();
+}
+
+void DeflectionPanel::setQuantity(Quantity quantity)
+{
+    m_quantity = quantity;
+    m_quantityBox->setCurrentIndex(static_cast<int>(quantity));
+    redraw();
+}
+
+void DeflectionPanel::redraw()
+{
+    m_plot->clear();
+    if (m_result.inputs) {
+        switch (m_quantity) {
+        case Quantity::RadialContributions:
+            plotContributions(true);
+            break;
+        case Quantity::TangentialContributions:
+            plotContributions(false);
+            break;
+        case Quantity::DiameterError:
+            plotDiameterError();
+            break;
+        }
+    }
+    m_plot->rescaleAndReplot();
+}
+
+void DeflectionPanel::plotContributions(bool radial)
+{
+    const std::vector<CurveSpec> specs{
+        {tr("total"), [](const Contributions &c) { return c.total_mm(); }, QColor(0x20, 0x20, 0x20), Qt::SolidLine,
+         2.4},
+        {tr("spindle–chuck / supports"), [](const Contributions &c) { return c.spindleChuck_mm; },
+         QColor(0x1f, 0x77, 0xb4), Qt::SolidLine, 1.5},
+        {tr("workpiece"), [](const Contributions &c) { return c.workpiece_mm; }, QColor(0x2c, 0xa0, 0x2c),
+         Qt::SolidLine, 1.5},
+        {tr("toolpost"), [](const Contributions &c) { return c.toolpost_mm; }, QColor(0xff, 0x7f, 0x0e), Qt::DashLine,
+         1.5},
+        {tr("thermal"), [](const Contributions &c) { return c.thermal_mm; }, QColor(0xd6, 0x27, 0x28), Qt::DashDotLine,
+         1.5},
+    };
+    for (const CurveSpec &spec : specs) {
+        if (!radial && (spec.name == tr("toolpost") || spec.name == tr("thermal")))
+            continue; // radial-only terms
+        QVector<double> x;
+        QVector<double> y;
+        for (const FeatureDeviation &f : m_result.features) {
+            if (f.side != m_side)
+                continue;
+            for (const Station &st : f.stations) {
+                x << st.z_mm;
+                y << spec.value(radial ? st.radial : st.tangential) * kUmPerMm;
+            }
+            x << f.stations.back().z_mm; // break the curve at the end of each feature
+            y << kGap;
+        }
+        m_plot->addCurve(spec.name, x, y, spec.color, spec.style, spec.width);
+    }
+    m_plot->setTitle(radial ? tr("Radial deviation (material left on the surface)") : tr("Tangential deviation"));
+    m_plot->setAxisLabels(tr("z from the part's left end [mm]"), tr("deviation [µm]"));
+}
+
+void DeflectionPanel::plotDiameterError()
+{
+    QVector<double> x;
+    QVector<double> y;
+    for (const FeatureDeviation &f : m_result.features) {
+        if (f.side != m_side)
+            continue;
+        for (const Station &st : f.stations) {
+            x << st.z_mm;
+            y << 2.0 * st.radiusError_mm * kUmPerMm;
+        }
+        x << f.stations.back().z_mm;
+        y << kGap;
+    }
+    m_plot->addCurve(tr("diameter error"), x, y, QColor(0x6a, 0x3d, 0x9a), Qt::SolidLine, 2.2);
+    m_plot->setTitle(tr("Diameter error: machined minus nominal"));
+    m_plot->setAxisLabels(tr("z from the part's left end [mm]"), tr("diameter error [µm]"));
+}
+
+QString DeflectionPanel::summaryText() const
+{
+    if (!m_result.inputs)
+        return {};
+    const TurningInputs &in = *m_result.inputs;
+    return tr("Forces (%1): Fc %2 N, Ff %3 N, Fp %4 N · pass %5: vc %6 m/min, f %7 mm/rev, ap %8 mm · Ra %9 µm")
+        .arg(in.forceModel, QString::number(in.forces.tangential_N, 'f', 0), QString::number(in.forces.axial_N, 'f', 0),
+             QString::number(in.forces.radial_N, 'f', 0), QString::number(in.passIndex),
+             formatNumber(in.pass.cuttingSpeed_m_min), formatNumber(in.pass.feed_mm_rev),
+             formatNumber(in.pass.depthOfCut_mm), QString::number(m_result.theoreticalRa_um, 'f', 2));
+}
+
+void DeflectionPanel::updateTexts()
+{
+    m_summary->setText(summaryText());
+    QStringList lines;
+    for (const Diagnostic &d : m_result.diagnostics)
+        lines << (d.severity == Severity::Error ? tr("Error: ") : tr("Warning: ")) + d.toString();
+    if (m_result.inputs)
+        lines += m_result.inputs->notes;
+    m_notes->setText(lines.join(QLatin1Char('\n')));
+}
+
+} // namespace tolturn

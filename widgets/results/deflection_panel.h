@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/deviation/deviation_model.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+
+namespace tolturn {
+
+class LinePlot;
+
+// Predicted deviation along z for the open project: total and each contribution (spindle–chuck,
+// toolpost, workpiece, thermal) for the outer or the inner contour, or the diameter error, with
+// the forces used and the assumptions the result rests on.
+class DeflectionPanel : public QWidget {
+    Q_OBJECT
+public:
+    enum class Quantity { RadialContributions, TangentialContributions, DiameterError };
+
+    explicit DeflectionPanel(QWidget *parent = nullptr);
+
+    // Computes the deviation of `project` (fast: well under a millisecond for usual parts) and shows it.
+    void showProject(const Project &project);
+    void clear();
+
+    void setSide(ContourSide side);
+    void setQuantity(Quantity quantity);
+
+    [[nodiscard]] const DeviationResult &result() const { return m_result; }
+
+    [[nodiscard]] LinePlot *plot() const { return m_plot; }
+
+    [[nodiscard]] QString summaryText() const;
+
+private:
+    void redraw();
+    void plotContributions(bool radial);
+    void plotDiameterError();
+    void updateTexts();
+
+    DeviationResult m_result;
+    ContourSide m_side = ContourSide::Outer;
+    Quantity m_quantity = Quantity::RadialContributions;
+    QComboBox *m_sideBox;
+    QComboBox *m_quantityBox;
+    LinePlot *m_plot;
+    QLabel *m_summary;
+    QLabel *m_notes;
+};
+
+} // namespace tolturn
