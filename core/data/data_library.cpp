@@ -105,6 +105,10 @@ DataLibrary DataLibrary::load(const QString &materialsPath, const QString &machi
 void DataLibrary::readMaterials(const QString &path)
 {
     DataFileReader r(path, "tolturn-materials", m_diagnostics, m_sources);
+    const QJsonObject defaults = r.root().value(QStringLiteral("defaults")).toObject();
+    m_defaultFeedRatio = r.value(defaults, QStringLiteral("feed_to_cutting_ratio"), QStringLiteral("defaults"), true);
+    m_defaultPassiveRatio =
+        r.value(defaults, QStringLiteral("passive_to_cutting_ratio"), QStringLiteral("defaults"), true);
     const QJsonArray list = r.root().value(QStringLiteral("materials")).toArray();
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QJsonObject o = list.at(i).toObject();

@@ -84,6 +84,12 @@ public:
 
     [[nodiscard]] std::optional<SourcedValue> negativeSeatInclination() const { return m_negativeSeatInclination; }
 
+    // Feed and passive force ratios for materials whose entry has neither their own Kienzle
+    // constants nor ratios (materials.json "defaults").
+    [[nodiscard]] std::optional<SourcedValue> defaultFeedToCuttingRatio() const { return m_defaultFeedRatio; }
+
+    [[nodiscard]] std::optional<SourcedValue> defaultPassiveToCuttingRatio() const { return m_defaultPassiveRatio; }
+
     // Young's modulus of a steel tool shank.
     [[nodiscard]] std::optional<SourcedValue> shankModulus() const { return m_shankModulus; }
 
@@ -105,6 +111,8 @@ private:
     std::optional<SourcedValue> m_negativeSeatRake;
     std::optional<SourcedValue> m_negativeSeatInclination;
     std::optional<SourcedValue> m_shankModulus;
+    std::optional<SourcedValue> m_defaultFeedRatio;
+    std::optional<SourcedValue> m_defaultPassiveRatio;
 };
 
 } // namespace tolturn

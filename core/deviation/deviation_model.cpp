@@ -37,12 +37,6 @@ double radians(double deg)
     return deg * std::numbers::pi / 180.0;
 }
 
-// Rule of thumb for the feed and passive force when neither the material data nor the project
-// give them: Ff = 0.50 Fc, Fp = 0.25 Fc. E. Isakov, "Calculated forces when turning", Cutting
-// Tool Engineering, 15 February 2013 (who warns that it is not accurate).
-constexpr double kRuleOfThumbFeedRatio = 0.50;
-constexpr double kRuleOfThumbPassiveRatio = 0.25;
-
 int choosePass(const Project &p, int requested)
 {
     if (requested >= 0)
@@ -65,7 +59,8 @@ std::optional<SourcedValue> enteringAngleOf(const QString &holderCode, const Dat
     return std::nullopt;
 }
 
-KienzleConstants kienzleOf(const MaterialData &m, const CuttingModel &model, QStringList &notes)
+KienzleConstants kienzleOf(const MaterialData &m, const CuttingModel &model, const DataLibrary &data,
+                           QStringList &notes)
 {
     KienzleConstants k;
     k.cutting = {m.kc11_MPa.value, m.mc.value};
@@ -74,16 +69,19 @@ KienzleConstants kienzleOf(const MaterialData &m, const CuttingModel &model, QSt
     if (m.kp11_MPa && m.mp)
         k.passive = KienzleLaw{m.kp11_MPa->value, m.mp->value};
     const bool projectRatios = model.feedToCuttingRatio || model.passiveToCuttingRatio;
-    k.feedToCuttingRatio =
-        model.feedToCuttingRatio.value_or(m.feedToCuttingRatio ? m.feedToCuttingRatio->value : kRuleOfThumbFeedRatio);
-    k.passiveToCuttingRatio = model.passiveToCuttingRatio.value_or(
-        m.passiveToCuttingRatio ? m.passiveToCuttingRatio->value : kRuleOfThumbPassiveRatio);
+    const auto feedRatio = m.feedToCuttingRatio ? m.feedToCuttingRatio : data.defaultFeedToCuttingRatio();
+    const auto passiveRatio = m.passiveToCuttingRatio ? m.passiveToCuttingRatio : data.defaultPassiveToCuttingRatio();
+    k.feedToCuttingRatio = model.feedToCuttingRatio.value_or(feedRatio ? feedRatio->value : 0.0);
+    k.passiveToCuttingRatio = model.passiveToCuttingRatio.value_or(passiveRatio ? passiveRatio->value : 0.0);
     if (projectRatios) {
         k.feed.reset();
         k.passive.reset();
     } else if ((!k.feed && !m.feedToCuttingRatio) || (!k.passive && !m.passiveToCuttingRatio)) {
-        notes << tr("Feed and passive force from the rule of thumb Ff = 0.50 Fc, Fp = 0.25 Fc (Isakov 2013): the "
-                    "material data give no feed or passive force constants. Calibrate the forces for accuracy.");
+        notes << tr("Feed and passive force from the rule of thumb Ff = %1 Fc, Fp = %2 Fc (%3): the material data "
+                    "give no feed or passive force constants. Calibrate the forces for accuracy.")
+                     .arg(num(k.feedToCuttingRatio), num(k.passiveToCuttingRatio),
+                          feedRatio ? data.sourceText(feedRatio->source).section(QLatin1Char(','), 0, 1)
+                                    : tr("no source: zero"));
     }
     return k;
 }
@@ -109,7 +107,7 @@ void resolveForces(const Project &p, const DataLibrary &data, const DeviationOpt
         return;
     }
     if (p.cuttingModel.forceModel == ForceModel::Kienzle) {
-        const ForceResult r = kienzleForces(kienzleOf(material, p.cuttingModel, in.notes), in.pass.feed_mm_rev,
+        const ForceResult r = kienzleForces(kienzleOf(material, p.cuttingModel, data, in.notes), in.pass.feed_mm_rev,
                                             in.pass.depthOfCut_mm, radians(in.enteringAngle_deg));
         in.forces = r.forces;
         in.forceModel = QStringLiteral("kienzle");

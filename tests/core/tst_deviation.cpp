@@ -198,9 +198,28 @@ private Q_SLOTS:
         QVERIFY(near(res.inputs->forces.tangential_N, fc, 1e-12));
         QVERIFY(near(res.inputs->forces.axial_N, 0.5 * fc, 1e-12));
         QVERIFY(near(res.inputs->forces.radial_N, 0.25 * fc, 1e-12));
-        QVERIFY(res.inputs->notes.join(QLatin1Char(' ')).contains(QStringLiteral("Isakov 2013")));
+        QVERIFY(res.inputs->notes.join(QLatin1Char(' ')).contains(QStringLiteral("E. Isakov, 'Calculated forces when turning'")));
         // Ra = f^2/(32 r_eps) with r_eps = 0.8 mm from "CNMG 120408".
         QVERIFY(near(res.theoreticalRa_um, 1.5625, 1e-12));
+    }
+
+    // First-order warm-up (docs/model.md §5): drift = (a_n n/1000 + a_T (T - T_ref)) (1 - exp(-t/tau)).
+    // Ø30 at 200 m/min: n = 1000*200/(pi*30) = 2122.07 rpm; a_n = 4 µm/1000 rpm, a_T = 0.5 µm/K,
+    // T = 24 °C, T_ref = 20 °C, t = tau = 30 min: (8.48826 + 2) (1 - 1/e) = 10.48826 * 0.632121 = 6.62985 µm.
+    void thermalWarmUp()
+    {
+        Project p = barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0);
+        p.characterisation.source = QStringLiteral("test");
+        p.characterisation.thermal = ThermalDrift{4.0, 0.5, 20.0, 30.0};
+        p.environment.timeSinceStart_min = 30.0;
+        p.environment.ambientTemperature_C = 24.0;
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        for (const Station &st : feature(res, "O2").stations) {
+            QVERIFY(near(st.spindleSpeed_rpm, 2122.0659, 1e-7));
+            QVERIFY2(near(st.radial.thermal_mm * 1000.0, 6.62985, 1e-5),
+                     qPrintable(QString::number(st.radial.thermal_mm)));
+        }
     }
 
     void examplesComputeWithoutErrors_data()
