@@ -38,7 +38,9 @@ double kienzle(const KienzleLaw &law, double b_mm, double h_mm)
 void checkRange(Diagnostics &warnings, const QString &field, const QString &what, double value, double lo, double hi,
                 const QString &model)
 {
-    if (value > lo && value < hi)
+    // The bounds themselves count as inside: the paper's ranges are its test ranges, and a 95°
+    // holder sits exactly on gamma_L = -5°.
+    if (value >= lo && value <= hi)
         return;
     warnings.push_back(makeWarning(field, tr("%1 = %2 is outside the range %3 < %1 < %4 in which %5 is stated to hold")
                                               .arg(what, num(value), num(lo), num(hi), model)));

@@ -99,7 +99,7 @@ std::optional<double> seatAngle(const std::optional<double> &projectValue, const
 }
 
 void resolveForces(const Project &p, const DataLibrary &data, const DeviationOptions &options,
-                   const MaterialData &material, const InsertGeometry &insert, TurningInputs &in, Diagnostics &out)
+                   const MaterialData &material, TurningInputs &in, Diagnostics &out)
 {
     if (options.loadOverride) {
         in.forces = *options.loadOverride;
@@ -114,28 +114,12 @@ void resolveForces(const Project &p, const DataLibrary &data, const DeviationOpt
         out.insert(out.end(), r.warnings.begin(), r.warnings.end());
         return;
     }
-    const HolderData *holder = data.holder(p.tool.holderCode);
-    const bool negative = insert.clearanceAngle_deg == 0.0;
-    const auto rake =
-        seatAngle(p.tool.rake_deg, holder ? holder->rake_deg : std::nullopt, data.negativeSeatRake(), negative);
-    const auto inclination = seatAngle(p.tool.inclination_deg, holder ? holder->inclination_deg : std::nullopt,
-                                       data.negativeSeatInclination(), negative);
-    if (!rake || !inclination) {
-        out.push_back(makeError(QStringLiteral("tool.rake_deg"),
-                                tr("the Li & Du model needs the rake and inclination angles of the tool; the data "
-                                   "give none for holder \"%1\" with insert \"%2\": set tool.rake_deg and "
-                                   "tool.inclination_deg")
-                                    .arg(p.tool.holderCode, p.tool.insertCode)));
+    const auto tool = resolveLiDuToolGeometry(p, data, out);
+    if (!tool)
         return;
-    }
-    LiDuToolGeometry tool;
-    tool.normalRake_rad = radians(*rake);
-    tool.backRake_rad = radians(*inclination); // back rake taken as the ISO inclination angle
-    tool.leadAngle_rad = radians(90.0 - in.enteringAngle_deg);
-    tool.noseRadius_mm = insert.noseRadius_mm;
     const LiDuCoefficients c{p.cuttingModel.normalPressure_MPa.value_or(0.0),
                              p.cuttingModel.frictionRatio.value_or(0.0)};
-    const ForceResult r = liDuForces(c, tool, in.pass.feed_mm_rev, in.pass.depthOfCut_mm);
+    const ForceResult r = liDuForces(c, *tool, in.pass.feed_mm_rev, in.pass.depthOfCut_mm);
     in.forces = r.forces;
     in.forceModel = QStringLiteral("li_du");
     out.insert(out.end(), r.warnings.begin(), r.warnings.end());
@@ -258,6 +242,43 @@ bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &i
 
 } // namespace
 
+std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+    if (!insert.insert) {
+        out.insert(out.end(), insert.diagnostics.begin(), insert.diagnostics.end());
+        return std::nullopt;
+    }
+    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    if (!angle) {
+        out.push_back(makeError(QStringLiteral("tool.holder"),
+                                tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
+                                   "character) gives no known entering angle")
+                                    .arg(p.tool.holderCode)));
+        return std::nullopt;
+    }
+    const HolderData *holder = data.holder(p.tool.holderCode);
+    const bool negative = insert.insert->clearanceAngle_deg == 0.0;
+    const auto rake =
+        seatAngle(p.tool.rake_deg, holder ? holder->rake_deg : std::nullopt, data.negativeSeatRake(), negative);
+    const auto inclination = seatAngle(p.tool.inclination_deg, holder ? holder->inclination_deg : std::nullopt,
+                                       data.negativeSeatInclination(), negative);
+    if (!rake || !inclination) {
+        out.push_back(makeError(QStringLiteral("tool.rake_deg"),
+                                tr("the Li & Du model needs the rake and inclination angles of the tool; the data "
+                                   "give none for holder \"%1\" with insert \"%2\": set tool.rake_deg and "
+                                   "tool.inclination_deg")
+                                    .arg(p.tool.holderCode, p.tool.insertCode)));
+        return std::nullopt;
+    }
+    LiDuToolGeometry tool;
+    tool.normalRake_rad = radians(*rake);
+    tool.backRake_rad = radians(*inclination); // back rake taken as the ISO inclination angle
+    tool.leadAngle_rad = radians(90.0 - angle->value);
+    tool.noseRadius_mm = insert.insert->noseRadius_mm;
+    return tool;
+}
+
 InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
 {
     InputsResult result;
@@ -306,7 +327,7 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
     in.maxSpindleSpeed_rpm = machineLimit(machine, "max_speed_rpm");
     in.maxPower_kW = machineLimit(machine, "power_kW");
 
-    resolveForces(p, data, options, *material, *insert.insert, in, out);
+    resolveForces(p, data, options, *material, in, out);
     if (hasErrors(out))
         return result;
     resolveSupports(p, options, in);

@@ -54,6 +54,12 @@ struct InputsResult {
 [[nodiscard]] InputsResult resolveTurningInputs(const Project &project, const DataLibrary &data,
                                                 const DeviationOptions &options);
 
+// The tool geometry of the Li & Du model for a project: rake and inclination from the project,
+// the holder data, or the seat of a holder for negative inserts; lead angle from the entering
+// angle; nose radius from the insert code. nullopt with an error naming the missing field.
+[[nodiscard]] std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &project, const DataLibrary &data,
+                                                                      Diagnostics &out);
+
 // Deviations at one tool position, in mm. Radial contributions are "material left": positive
 // where the surface stays proud of nominal (a shaft too large, a bore too small).
 struct Contributions {

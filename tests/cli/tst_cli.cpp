@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tolturn-cli as a user runs it: the real binary, its output streams and exit codes.
+#include "core/cutting/cutting_forces.h"
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -194,6 +196,60 @@ private Q_SLOTS:
         const Run r = runCli({QStringLiteral("deflect"), path});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("error: material: unknown material \"kryptonite\"")), qPrintable(r.err));
+    }
+
+    // calibrate-forces recovers K_n and K_f from forces made with them for the example's tool
+    // (PCLNR: kappa_r 95° so gamma_L = -5°; negative seat -6°/-6°; CNMG 120408: r_n = 0.8 mm),
+    // and --write stores them so that deflect then uses the Li & Du model.
+    void calibrateForcesAndWrite()
+    {
+        const double pi = 3.14159265358979;
+        const tolturn::LiDuToolGeometry tool{-6 * pi / 180, -6 * pi / 180, -5 * pi / 180, 0.8};
+        QString csv = QStringLiteral("feed_mm_rev;depth_of_cut_mm;tangential_N;axial_N\n");
+        for (const auto &[f, d] : {std::pair{0.15, 1.0}, std::pair{0.25, 2.0}, std::pair{0.3, 2.5}}) {
+            const tolturn::CuttingForces c = tolturn::liDuForces({2400.0, 0.55}, tool, f, d).forces;
+            csv += QStringLiteral("%1;%2;%3;%4\n")
+                       .arg(f)
+                       .arg(d)
+                       .arg(c.tangential_N, 0, 'g', 12)
+                       .arg(c.axial_N, 0, 'g', 12);
+        }
+        QTemporaryDir dir;
+        const QString cuts = dir.filePath(QStringLiteral("cuts.csv"));
+        const QString project = dir.filePath(QStringLiteral("shaft.tolturn"));
+        QVERIFY(QFile::copy(example("stepped-shaft-chuck.tolturn"), project));
+        QFile::setPermissions(project, QFile::ReadOwner | QFile::WriteOwner);
+        QFile file(cuts);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(csv.toUtf8());
+        file.close();
+
+        const Run r = runCli(
+            {QStringLiteral("calibrate-forces"), QStringLiteral("--json"), QStringLiteral("--write"), project, cuts});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(std::abs(o.value(QStringLiteral("normal_pressure_MPa")).toDouble() - 2400.0) < 1e-6);
+        QVERIFY(std::abs(o.value(QStringLiteral("friction_ratio")).toDouble() - 0.55) < 1e-9);
+        QVERIFY(r.err.contains(QStringLiteral("force model li_du")));
+
+        const Run after = runCli({QStringLiteral("deflect"), QStringLiteral("--json"), project});
+        QCOMPARE(after.exitCode, 0);
+        QCOMPARE(QJsonDocument::fromJson(after.out.toUtf8()).object().value(QStringLiteral("force_model")).toString(),
+                 QStringLiteral("li_du"));
+    }
+
+    void calibrateForcesBadFile()
+    {
+        QTemporaryDir dir;
+        const QString cuts = dir.filePath(QStringLiteral("cuts.csv"));
+        QFile file(cuts);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N\n0.2,one,500,200\n");
+        file.close();
+        const Run r = runCli({QStringLiteral("calibrate-forces"), example("stepped-shaft-chuck.tolturn"), cuts});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("cuts.csv:2: depth_of_cut_mm must be a number above zero, not \"one\"")),
+                 qPrintable(r.err));
     }
 
     void checkWithoutFileIsUsageError()

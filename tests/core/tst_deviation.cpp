@@ -198,7 +198,8 @@ private Q_SLOTS:
         QVERIFY(near(res.inputs->forces.tangential_N, fc, 1e-12));
         QVERIFY(near(res.inputs->forces.axial_N, 0.5 * fc, 1e-12));
         QVERIFY(near(res.inputs->forces.radial_N, 0.25 * fc, 1e-12));
-        QVERIFY(res.inputs->notes.join(QLatin1Char(' ')).contains(QStringLiteral("E. Isakov, 'Calculated forces when turning'")));
+        QVERIFY(res.inputs->notes.join(QLatin1Char(' '))
+                    .contains(QStringLiteral("E. Isakov, 'Calculated forces when turning'")));
         // Ra = f^2/(32 r_eps) with r_eps = 0.8 mm from "CNMG 120408".
         QVERIFY(near(res.theoreticalRa_um, 1.5625, 1e-12));
     }
