@@ -1,6 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # tools/lint.sh format          check that every C++ file follows .clang-format
+# tools/lint.sh fix             reformat every C++ file with .clang-format
 # tools/lint.sh tidy BUILD_DIR  run .clang-tidy over every C++ source, with BUILD_DIR's
 #                               compile_commands.json (two files at a time)
 set -eu
@@ -13,6 +14,10 @@ format)
     sources -o -name '*.h' | xargs clang-format --dry-run -Werror
     echo "format: all files follow .clang-format"
     ;;
+fix)
+    sources -o -name '*.h' | xargs clang-format -i
+    echo "fix: every file reformatted"
+    ;;
 tidy)
     build_dir=${2:?usage: tools/lint.sh tidy BUILD_DIR}
     # Compiler warnings are the compiler's business (CI builds with -Werror); only the
@@ -21,7 +26,7 @@ tidy)
     echo "tidy: no findings"
     ;;
 *)
-    echo "usage: tools/lint.sh format | tidy BUILD_DIR" >&2
+    echo "usage: tools/lint.sh format | fix | tidy BUILD_DIR" >&2
     exit 2
     ;;
 esac

@@ -6,6 +6,8 @@
 #include "core/io/force_measurements.h"
 #include "core/io/project_file.h"
 #include "core/project/keywords.h"
+#include "core/tolerance/evaluation.h"
+#include "core/tolerance/iso286.h"
 #include "widgets/dialogs/about_dialog.h"
 
 #include <QCommandLineParser>
@@ -443,6 +445,194 @@ int runCalibrateForces(const QStringList &args, QTextStream &out, QTextStream &e
     return kExitOk;
 }
 
+// ---- iso286, fit, evaluate ------------------------------------------------------------------
+
+QJsonObject classLimitsJson(const iso286::ClassLimits &l)
+{
+    return {{QStringLiteral("nominal_mm"), l.nominal_mm},
+            {QStringLiteral("class"), l.toleranceClass},
+            {QStringLiteral("upper_um"), l.upper_um},
+            {QStringLiteral("lower_um"), l.lower_um},
+            {QStringLiteral("it_grade"), l.itName},
+            {QStringLiteral("it_um"), l.it_um},
+            {QStringLiteral("fundamental_um"), l.fundamental_um}};
+}
+
+QString signedUm(double v)
+{
+    return (v > 0.0 ? QStringLiteral("+") : QString()) + formatNumber(v);
+}
+
+void printDiagnostics(QTextStream &err, const Diagnostics &diagnostics)
+{
+    for (const Diagnostic &d : diagnostics)
+        err << d.toString() << '\n';
+}
+
+// A nominal size argument: a number in mm, else a usage error naming it.
+std::optional<double> nominalArgument(const QString &text, const QString &command, QTextStream &err)
+{
+    bool ok = false;
+    const double v = QString(text).replace(QLatin1Char(','), QLatin1Char('.')).toDouble(&ok);
+    if (!ok || !std::isfinite(v)) {
+        err << programName() << ' ' << command << ": "
+            << tr("the nominal size must be a number in mm, not \"%1\"").arg(text) << '\n';
+        return std::nullopt;
+    }
+    return v;
+}
+
+int runIso286(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("Print the limits as JSON."));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("nominal"), tr("Nominal size [mm]."), QStringLiteral("NOMINAL"));
+    parser.addPositionalArgument(QStringLiteral("class"), tr("Tolerance class, e.g. H7, g6, js12."),
+                                 QStringLiteral("CLASS"));
+    if (const int stop = parseCommand(parser, commands().at(3), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 2) {
+        err << programName() << " iso286: " << tr("give a nominal size and a tolerance class, e.g. 50 H7") << '\n';
+        return kExitUsage;
+    }
+    const auto nominal = nominalArgument(parser.positionalArguments().at(0), QStringLiteral("iso286"), err);
+    if (!nominal)
+        return kExitUsage;
+    const iso286::LimitsResult r = iso286::limits(*nominal, parser.positionalArguments().at(1));
+    printDiagnostics(err, r.diagnostics);
+    if (!r.limits)
+        return kExitProblems;
+    if (parser.isSet(json))
+        out << QJsonDocument(classLimitsJson(*r.limits)).toJson(QJsonDocument::Indented);
+    else
+        out << tr("%1 %2: upper %3 µm, lower %4 µm (%5 = %6 µm)")
+                   .arg(formatNumber(*nominal), r.limits->toleranceClass, signedUm(r.limits->upper_um),
+                        signedUm(r.limits->lower_um), r.limits->itName, formatNumber(r.limits->it_um))
+            << '\n';
+    return kExitOk;
+}
+
+int runFit(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("Print the fit as JSON."));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("nominal"), tr("Nominal size [mm]."), QStringLiteral("NOMINAL"));
+    parser.addPositionalArgument(QStringLiteral("fit"), tr("Hole and shaft class, e.g. H7/g6."),
+                                 QStringLiteral("HOLE/SHAFT"));
+    if (const int stop = parseCommand(parser, commands().at(4), args, out, err); stop >= 0)
+        return stop;
+    const QStringList positional = parser.positionalArguments();
+    const QStringList classes = positional.value(1).split(QLatin1Char('/'));
+    if (positional.size() != 2 || classes.size() != 2) {
+        err << programName() << " fit: " << tr("give a nominal size and a fit, e.g. 50 H7/g6") << '\n';
+        return kExitUsage;
+    }
+    const auto nominal = nominalArgument(positional.at(0), QStringLiteral("fit"), err);
+    if (!nominal)
+        return kExitUsage;
+    const iso286::FitResult r = iso286::fit(*nominal, classes.at(0).trimmed(), classes.at(1).trimmed());
+    printDiagnostics(err, r.diagnostics);
+    if (!r.fit)
+        return kExitProblems;
+    const iso286::Fit &f = *r.fit;
+    if (parser.isSet(json)) {
+        out << QJsonDocument(QJsonObject{{QStringLiteral("nominal_mm"), *nominal},
+                                         {QStringLiteral("hole"), classLimitsJson(f.hole)},
+                                         {QStringLiteral("shaft"), classLimitsJson(f.shaft)},
+                                         {QStringLiteral("type"), iso286::fitTypeName(f.type)},
+                                         {QStringLiteral("max_clearance_um"), f.maxClearance_um},
+                                         {QStringLiteral("min_clearance_um"), f.minClearance_um}})
+                   .toJson(QJsonDocument::Indented);
+    } else {
+        out << tr("%1 %2/%3: %4 fit; hole %5/%6 µm, shaft %7/%8 µm; clearance max %9 µm, min %10 µm (negative: "
+                  "interference)")
+                   .arg(formatNumber(*nominal), f.hole.toleranceClass, f.shaft.toleranceClass,
+                        iso286::fitTypeName(f.type), signedUm(f.hole.upper_um), signedUm(f.hole.lower_um),
+                        signedUm(f.shaft.upper_um), signedUm(f.shaft.lower_um))
+                   .arg(formatNumber(f.maxClearance_um), formatNumber(f.minClearance_um))
+            << '\n';
+    }
+    return kExitOk;
+}
+
+QJsonObject evaluationJson(const ToleranceEvaluation &e)
+{
+    QJsonObject o{{QStringLiteral("id"), e.toleranceId},      {QStringLiteral("type"), keyword(e.type)},
+                  {QStringLiteral("feature"), e.featureId},   {QStringLiteral("verdict"), verdictKeyword(e.verdict)},
+                  {QStringLiteral("condition"), e.condition}, {QStringLiteral("reason"), e.reason}};
+    const std::pair<const char *, std::optional<double>> numbers[] = {{"value_um", e.value_um},
+                                                                      {"limit_um", e.limit_um},
+                                                                      {"utilisation_pct", e.utilisation_pct},
+                                                                      {"nominal_mm", e.nominal_mm},
+                                                                      {"upper_um", e.upper_um},
+                                                                      {"lower_um", e.lower_um},
+                                                                      {"predicted_max_um", e.predictedMax_um},
+                                                                      {"predicted_min_um", e.predictedMin_um},
+                                                                      {"offset_um", e.offset_um}};
+    for (const auto &[key, value] : numbers) {
+        if (value)
+            o.insert(QLatin1String(key), *value);
+    }
+    return o;
+}
+
+int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("Print the verdicts as JSON."));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    if (const int stop = parseCommand(parser, commands().at(5), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1) {
+        err << programName() << " evaluate: " << tr("give exactly one project file") << '\n';
+        return kExitUsage;
+    }
+    const QString file = parser.positionalArguments().constFirst();
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!read.project)
+        return kExitProblems;
+    const DeviationResult deviation = computeDeviation(*read.project, DataLibrary::builtIn(), {});
+    for (const Diagnostic &d : deviation.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!deviation.inputs)
+        return kExitProblems;
+    const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(*read.project, deviation);
+    if (parser.isSet(json)) {
+        QJsonArray list;
+        for (const ToleranceEvaluation &e : verdicts)
+            list.append(evaluationJson(e));
+        out << QJsonDocument(QJsonObject{{QStringLiteral("file"), file},
+                                         {QStringLiteral("notes"), QJsonArray::fromStringList(deviation.inputs->notes)},
+                                         {QStringLiteral("tolerances"), list}})
+                   .toJson(QJsonDocument::Indented);
+        return kExitOk;
+    }
+    out << tr("tolerance  type                    feature  value [µm]  limit [µm]  use [%]  verdict") << '\n';
+    for (const ToleranceEvaluation &e : verdicts) {
+        const auto number = [](const std::optional<double> &v, int width, int decimals) {
+            return v ? QStringLiteral("%1").arg(*v, width, 'f', decimals)
+                     : QStringLiteral("%1").arg(QStringLiteral("—"), width);
+        };
+        out << QStringLiteral("%1 %2 %3 %4 %5 %6  %7")
+                   .arg(e.toleranceId, -10)
+                   .arg(keyword(e.type), -23)
+                   .arg(e.featureId, -8)
+                   .arg(number(e.value_um, 10, 3), number(e.limit_um, 11, 3), number(e.utilisation_pct, 8, 1),
+                        verdictName(e.verdict))
+            << '\n';
+        if (!e.condition.isEmpty())
+            out << QStringLiteral("           ") << e.condition << '\n';
+        if (!e.reason.isEmpty())
+            out << QStringLiteral("           ") << e.reason << '\n';
+    }
+    return kExitOk;
+}
+
 const std::vector<Command> &commands()
 {
     static const std::vector<Command> list{
@@ -458,6 +648,14 @@ const std::vector<Command> &commands()
          tr("Fit the Li & Du coefficients K_n and K_f to measured tangential and axial forces (eq. 17–18) for the "
             "project's tool; --write stores them in the project."),
          runCalibrateForces},
+        {QStringLiteral("iso286"), QStringLiteral("iso286 [--json] NOMINAL CLASS"),
+         tr("ISO 286 limits of a tolerance class at a nominal size, e.g. 'iso286 50 H7'."), runIso286},
+        {QStringLiteral("fit"), QStringLiteral("fit [--json] NOMINAL HOLE/SHAFT"),
+         tr("ISO 286 fit of a hole and a shaft class, e.g. 'fit 50 H7/g6': type and clearances."), runFit},
+        {QStringLiteral("evaluate"), QStringLiteral("evaluate [--json] PROJECT"),
+         tr("Every tolerance of the project against the predicted deviation: value, limit, utilisation, the "
+            "deciding condition of Valiño et al. Fig. 4, and the verdict."),
+         runEvaluate},
     };
     return list;
 }

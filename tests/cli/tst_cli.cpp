@@ -252,6 +252,70 @@ private Q_SLOTS:
                  qPrintable(r.err));
     }
 
+    // iso286 and fit against published values: 50 H7 = +25/0 µm, IT7 = 25 µm; 50 g6 = -9/-25 µm
+    // (ISO 286-2 Tables); H7/g6: max clearance 25 + 25 = 50 µm, min 0 + 9 = 9 µm.
+    void iso286AndFit()
+    {
+        const Run h7 =
+            runCli({QStringLiteral("iso286"), QStringLiteral("50"), QStringLiteral("H7"), QStringLiteral("--json")});
+        QCOMPARE(h7.exitCode, 0);
+        const QJsonObject l = QJsonDocument::fromJson(h7.out.toUtf8()).object();
+        QCOMPARE(l.value(QStringLiteral("upper_um")).toDouble(), 25.0);
+        QCOMPARE(l.value(QStringLiteral("lower_um")).toDouble(), 0.0);
+        QCOMPARE(l.value(QStringLiteral("it_grade")).toString(), QStringLiteral("IT7"));
+        QCOMPARE(l.value(QStringLiteral("it_um")).toDouble(), 25.0);
+        QCOMPARE(l.value(QStringLiteral("nominal_mm")).toDouble(), 50.0);
+        QCOMPARE(l.value(QStringLiteral("class")).toString(), QStringLiteral("H7"));
+
+        const Run fit =
+            runCli({QStringLiteral("fit"), QStringLiteral("50"), QStringLiteral("H7/g6"), QStringLiteral("--json")});
+        QCOMPARE(fit.exitCode, 0);
+        const QJsonObject f = QJsonDocument::fromJson(fit.out.toUtf8()).object();
+        QCOMPARE(f.value(QStringLiteral("type")).toString(), QStringLiteral("clearance"));
+        QCOMPARE(f.value(QStringLiteral("max_clearance_um")).toDouble(), 50.0);
+        QCOMPARE(f.value(QStringLiteral("min_clearance_um")).toDouble(), 9.0);
+        QCOMPARE(f.value(QStringLiteral("shaft")).toObject().value(QStringLiteral("lower_um")).toDouble(), -25.0);
+    }
+
+    void iso286BadInput()
+    {
+        const Run undefinedLetter = runCli({QStringLiteral("iso286"), QStringLiteral("10"), QStringLiteral("y6")});
+        QCOMPARE(undefinedLetter.exitCode, 1);
+        QVERIFY(undefinedLetter.err.contains(QStringLiteral("shaft y6 is not defined for a nominal size of 10 mm")));
+        const Run tooLarge = runCli({QStringLiteral("iso286"), QStringLiteral("4000"), QStringLiteral("h7")});
+        QCOMPARE(tooLarge.exitCode, 1);
+        QVERIFY(tooLarge.err.contains(QStringLiteral("4000")));
+        const Run unknown = runCli({QStringLiteral("iso286"), QStringLiteral("50"), QStringLiteral("Q7")});
+        QCOMPARE(unknown.exitCode, 1);
+        QVERIFY(unknown.err.contains(QStringLiteral("Q7")));
+        const Run notANumber = runCli({QStringLiteral("iso286"), QStringLiteral("fifty"), QStringLiteral("H7")});
+        QCOMPARE(notANumber.exitCode, 2);
+        QVERIFY(notANumber.err.contains(QStringLiteral("\"fifty\"")));
+    }
+
+    // evaluate: every tolerance of the example with a verdict; coaxiality is "not predicted" with
+    // its reason, never a pass.
+    void evaluateExample()
+    {
+        const Run r =
+            runCli({QStringLiteral("evaluate"), QStringLiteral("--json"), example("hollow-sleeve-tailstock.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray list =
+            QJsonDocument::fromJson(r.out.toUtf8()).object().value(QStringLiteral("tolerances")).toArray();
+        QCOMPARE(list.size(), 9);
+        for (const QJsonValue v : list) {
+            const QJsonObject t = v.toObject();
+            if (t.value(QStringLiteral("type")).toString() == QLatin1String("coaxiality")) {
+                QCOMPARE(t.value(QStringLiteral("verdict")).toString(), QStringLiteral("not_predicted"));
+                QVERIFY(t.value(QStringLiteral("reason")).toString().contains(QStringLiteral("§V.H")));
+            } else {
+                QCOMPARE(t.value(QStringLiteral("verdict")).toString(), QStringLiteral("passes"));
+                QVERIFY(t.contains(QStringLiteral("utilisation_pct")));
+                QVERIFY(!t.value(QStringLiteral("condition")).toString().isEmpty());
+            }
+        }
+    }
+
     void checkWithoutFileIsUsageError()
     {
         const Run r = runCli({QStringLiteral("check")});

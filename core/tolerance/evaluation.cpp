@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/tolerance/evaluation.h"
+
+#include "core/part/profile_geometry.h"
+#include "core/project/keywords.h"
+#include "core/tolerance/iso286.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+struct ToleranceVerdicts {
+    Q_DECLARE_TR_FUNCTIONS(ToleranceVerdicts)
+};
+
+QString tr(const char *text)
+{
+    return ToleranceVerdicts::tr(text);
+}
+
+constexpr double kUmPerMm = 1000.0;
+
+const FeatureDeviation *stationsOf(const DeviationResult &r, const QString &id)
+{
+    for (const FeatureDeviation &f : r.features) {
+        if (f.featureId == id && !f.stations.empty())
+            return &f;
+    }
+    return nullptr;
+}
+
+const FaceConicity *faceOf(const DeviationResult &r, const QString &id)
+{
+    for (const FaceConicity &f : r.faces) {
+        if (f.featureId == id)
+            return &f;
+    }
+    return nullptr;
+}
+
+// Extremes of the radius error along a feature [µm].
+std::pair<double, double> radiusErrorRange_um(const FeatureDeviation &f)
+{
+    double lo = 1e300;
+    double hi = -1e300;
+    for (const Station &st : f.stations) {
+        lo = std::min(lo, st.radiusError_mm * kUmPerMm);
+        hi = std::max(hi, st.radiusError_mm * kUmPerMm);
+    }
+    return {lo, hi};
+}
+
+void setValue(ToleranceEvaluation &e, double value, double limit)
+{
+    e.value_um = value;
+    e.limit_um = limit;
+    e.utilisation_pct = limit > 0.0 ? 100.0 * value / limit : 0.0;
+}
+
+void notCut(ToleranceEvaluation &e, const QString &featureId)
+{
+    e.verdict = Verdict::CannotEvaluate;
+    e.reason = tr("feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported "
+                  "length), so no deviation is predicted for it")
+                   .arg(featureId);
+}
+
+// Limit deviations of a size tolerance: the ISO 286 class at the nominal size, or explicit limits.
+bool sizeLimits(const Tolerance &t, double nominal_mm, ToleranceEvaluation &e)
+{
+    e.nominal_mm = nominal_mm;
+    if (!t.iso286Class.isEmpty()) {
+        const iso286::LimitsResult limits = iso286::limits(nominal_mm, t.iso286Class);
+        e.diagnostics.insert(e.diagnostics.end(), limits.diagnostics.begin(), limits.diagnostics.end());
+        if (!limits.limits) {
+            e.verdict = Verdict::CannotEvaluate;
+            e.reason = tr("the limits of %1 at %2 mm cannot be formed").arg(t.iso286Class, formatNumber(nominal_mm));
+            return false;
+        }
+        e.upper_um = limits.limits->upper_um;
+        e.lower_um = limits.limits->lower_um;
+        return true;
+    }
+    e.upper_um = t.upperDeviation_um;
+    e.lower_um = t.lowerDeviation_um;
+    return e.upper_um && e.lower_um;
+}
+
+// Diameter (Fig. 4b): the size must lie within its limits (eq. 13); its form part
+// D'_Md - D'_md = 2|delta_TMd - delta_Tmd| (eq. 14) must fit in t (eq. 15). "As programmed" is the
+// finishing path programmed to the middle of the tolerance zone, as CNC programs are written; the
+// predicted size is that plus twice the radius error.
+void evaluateDiameter(const Tolerance &t, const FeatureRef &feature, const DeviationResult &r, ToleranceEvaluation &e)
+{
+    const FeatureDeviation *f = stationsOf(r, t.featureId);
+    if (!f) {
+        notCut(e, t.featureId);
+        return;
+    }
+    if (!sizeLimits(t, 2.0 * feature.segment->from.r_mm, e))
+        return;
+    const auto [lo, hi] = radiusErrorRange_um(*f);
+    const double programmed = 0.5 * (*e.upper_um + *e.lower_um);
+    e.predictedMax_um = programmed + 2.0 * hi;
+    e.predictedMin_um = programmed + 2.0 * lo;
+    const double tolerance = *e.upper_um - *e.lower_um;
+    const double form = *e.predictedMax_um - *e.predictedMin_um;
+    setValue(e, form, tolerance);
+    if (*e.predictedMax_um <= *e.upper_um && *e.predictedMin_um >= *e.lower_um) {
+        e.verdict = Verdict::PassesAsProgrammed;
+        e.condition = tr("Fig. 4b, eq. 13: D'_Md <= Dn + dDu and D'_md >= Dn + dDl");
+    } else if (form <= tolerance) {
+        e.verdict = Verdict::PassesAfterOffset;
+        e.offset_um = 0.5 * (*e.upper_um + *e.lower_um) - 0.5 * (*e.predictedMax_um + *e.predictedMin_um);
+        e.condition = tr("Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| <= t");
+        e.reason = tr("a constant tool offset of %1 µm on the diameter centres the size in its tolerance")
+                       .arg(QString::number(*e.offset_um, 'f', 1));
+    } else {
+        e.verdict = Verdict::NeedsProfileCorrection;
+        e.condition = tr("Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| > t");
+    }
+}
+
+// Length between two faces (Fig. 4a): e_i + e_j <= t (eq. 11), e = (D_M - D_m)/2 tan(theta) (eq. 12).
+void evaluateLength(const Project &p, const Tolerance &t, const DeviationResult &r, ToleranceEvaluation &e)
+{
+    const FaceConicity *fi = faceOf(r, t.featureId);
+    const FaceConicity *fj = faceOf(r, t.toFeatureId);
+    const auto a = findFeature(p.part, t.featureId);
+    const auto b = findFeature(p.part, t.toFeatureId);
+    if (!a || !b)
+        return;
+    if (!fi || !fj) {
+        notCut(e, fi ? t.toFeatureId : t.featureId);
+        return;
+    }
+    if (!sizeLimits(t, std::abs(b->segment->from.z_mm - a->segment->from.z_mm), e))
+        return;
+    const double value = (fi->axialRunout_mm + fj->axialRunout_mm) * kUmPerMm;
+    setValue(e, value, *e.upper_um - *e.lower_um);
+    e.verdict = value <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+    e.condition = tr("Fig. 4a, eq. 11–12: e_i + e_j <= t");
+}
+
+// A face's own conicity against the zone (flatness eq. 16; parallelism eq. 23; perpendicularity
+// to the axis eq. 24; total axial run-out §V.J): e <= t.
+void evaluateFaceConicity(const Tolerance &t, const DeviationResult &r, ToleranceEvaluation &e,
+                          const QString &condition)
+{
+    const FaceConicity *f = faceOf(r, t.featureId);
+    if (!f) {
+        notCut(e, t.featureId);
+        return;
+    }
+    setValue(e, f->axialRunout_mm * kUmPerMm, t.zone_um.value_or(0.0));
+    e.verdict = *e.value_um <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+    e.condition = condition;
+}
+
+// Cylindricity (eq. 19) and total radial run-out (§V.J): |delta_TMd - delta_Tmd| <= t.
+void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, ToleranceEvaluation &e,
+                          const QString &condition)
+{
+    const FeatureDeviation *f = stationsOf(r, t.featureId);
+    if (!f) {
+        notCut(e, t.featureId);
+        return;
+    }
+    const auto [lo, hi] = radiusErrorRange_um(*f);
+    setValue(e, hi - lo, t.zone_um.value_or(0.0));
+    e.verdict = *e.value_um <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+    e.condition = condition;
+}
+
+// Profile of a surface (Fig. 4e, eq. 20–22): delta_TMd + delta_Tmd <= t / cos(alpha), with the
+// deviations measured radially and alpha the angle of the surface to the axis. Along a radius the
+// angle changes, so each station's deviation is taken normal to the surface, delta cos(alpha),
+// which is eq. 22 for a cone.
+void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const DeviationResult &r, ToleranceEvaluation &e)
+{
+    const FeatureDeviation *f = stationsOf(r, t.featureId);
+    if (!f) {
+        notCut(e, t.featureId);
+        return;
+    }
+    const Segment &s = *feature.segment;
+    double atMax = 0.0;
+    double atMin = 0.0;
+    double largest = -1e300;
+    double smallest = 1e300;
+    for (const Station &st : f->stations) {
+        const double h = 1e-4 * std::max(1.0, std::abs(s.to.z_mm - s.from.z_mm));
+        const double z0 = std::max(s.from.z_mm, st.z_mm - h);
+        const double z1 = std::min(s.to.z_mm, st.z_mm + h);
+        const double slope = (radiusOnSegment(s, z1) - radiusOnSegment(s, z0)) / (z1 - z0);
+        const double normal = st.radiusError_mm * kUmPerMm / std::sqrt(1.0 + slope * slope); // delta cos(alpha)
+        if (normal > largest) {
+            largest = normal;
+            atMax = normal;
+        }
+        if (normal < smallest) {
+            smallest = normal;
+            atMin = normal;
+        }
+    }
+    const double zone = t.zone_um.value_or(0.0);
+    const double value = std::abs(atMax) + std::abs(atMin);
+    setValue(e, value, zone);
+    if (value <= zone) {
+        e.verdict = Verdict::PassesAsProgrammed;
+        e.condition = tr("Fig. 4e, eq. 22: delta_TMd + delta_Tmd <= t / cos(alpha)");
+    } else if (largest - smallest <= zone) {
+        e.verdict = Verdict::PassesAfterOffset;
+        e.offset_um = -0.5 * (largest + smallest);
+        e.condition = tr("Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t");
+        e.reason = tr("a constant offset of %1 µm normal to the surface centres it in the zone")
+                       .arg(QString::number(*e.offset_um, 'f', 1));
+    } else {
+        e.verdict = Verdict::NeedsProfileCorrection;
+        e.condition = tr("Fig. 4e, eq. 22: the spread of the normal deviation exceeds t");
+    }
+}
+
+void notPredicted(ToleranceEvaluation &e, const QString &reason)
+{
+    e.verdict = Verdict::NotPredicted;
+    e.reason = reason;
+}
+
+ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const DeviationResult &r)
+{
+    ToleranceEvaluation e;
+    e.toleranceId = t.id;
+    e.type = t.type;
+    e.featureId = t.featureId;
+    const auto feature = findFeature(p.part, t.featureId);
+    if (!feature) {
+        e.reason = tr("there is no feature '%1' in the profile").arg(t.featureId);
+        return e;
+    }
+    switch (t.type) {
+    case ToleranceType::Diameter:
+        evaluateDiameter(t, *feature, r, e);
+        break;
+    case ToleranceType::Length:
+        evaluateLength(p, t, r, e);
+        break;
+    case ToleranceType::Flatness:
+        evaluateFaceConicity(t, r, e, tr("Fig. 4c, eq. 16: e_i <= t"));
+        break;
+    case ToleranceType::Parallelism:
+        evaluateFaceConicity(t, r, e, tr("Fig. 4f, eq. 23: e_j <= t"));
+        break;
+    case ToleranceType::TotalAxialRunout:
+        evaluateFaceConicity(t, r, e, tr("Fig. 4i, §V.J (eq. 16 and 24): e_j <= t"));
+        break;
+    case ToleranceType::Perpendicularity:
+        if (feature->segment->kind == SegmentKind::Face)
+            evaluateFaceConicity(t, r, e, tr("Fig. 4g, eq. 24 (face to the datum axis): e_j <= t"));
+        else
+            notPredicted(e, tr("Perpendicularity of an axis to a face depends on how the part is aligned in the "
+                               "lathe; the axis recovers elastically after cutting, so the cutting-force deflection "
+                               "does not decide it (Valiño et al. 2008 §V.G.2)."));
+        break;
+    case ToleranceType::Cylindricity:
+        evaluateRadialSpread(t, r, e, tr("Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| <= t"));
+        break;
+    case ToleranceType::TotalRadialRunout:
+        evaluateRadialSpread(t, r, e, tr("Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| <= t"));
+        break;
+    case ToleranceType::Profile:
+        evaluateProfile(t, *feature, r, e);
+        break;
+    case ToleranceType::Coaxiality:
+        notPredicted(e, tr("Coaxiality limits how far parts of the axis lie apart; the axis recovers elastically "
+                           "after cutting, so the error comes from set-up and alignment, not from the cutting-force "
+                           "deflection (Valiño et al. 2008 §V.H)."));
+        break;
+    case ToleranceType::CircularRadialRunout:
+    case ToleranceType::CircularAxialRunout:
+        notPredicted(e, tr("The deflection under the cutting force is symmetrical about the axis of rotation and "
+                           "leaves no circular run-out; that comes from clamping deformation or misalignment "
+                           "(Valiño et al. 2008 §V.I)."));
+        break;
+    }
+    return e;
+}
+
+} // namespace
+
+std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, const DeviationResult &result)
+{
+    std::vector<ToleranceEvaluation> out;
+    out.reserve(project.tolerances.size());
+    for (const Tolerance &t : project.tolerances)
+        out.push_back(evaluateOne(project, t, result));
+    return out;
+}
+
+QString verdictKeyword(Verdict verdict)
+{
+    switch (verdict) {
+    case Verdict::PassesAsProgrammed:
+        return QStringLiteral("passes");
+    case Verdict::PassesAfterOffset:
+        return QStringLiteral("passes_after_offset");
+    case Verdict::NeedsProfileCorrection:
+        return QStringLiteral("needs_profile_correction");
+    case Verdict::NotPredicted:
+        return QStringLiteral("not_predicted");
+    case Verdict::CannotEvaluate:
+        return QStringLiteral("cannot_evaluate");
+    }
+    return {};
+}
+
+QString verdictName(Verdict verdict)
+{
+    switch (verdict) {
+    case Verdict::PassesAsProgrammed:
+        return tr("passes as programmed");
+    case Verdict::PassesAfterOffset:
+        return tr("passes after a constant offset");
+    case Verdict::NeedsProfileCorrection:
+        return tr("needs a profile correction");
+    case Verdict::NotPredicted:
+        return tr("not predicted by this model");
+    case Verdict::CannotEvaluate:
+        return tr("cannot be evaluated");
+    }
+    return {};
+}
+
+} // namespace tolturn

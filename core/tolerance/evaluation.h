@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+#include "core/deviation/deviation_model.h"
+#include "core/project/project.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+// The ladder of Valiño et al. (2008) §V and §VII, "compensate only when necessary" (MODEL §3).
+enum class Verdict {
+    PassesAsProgrammed,     // the predicted part is inside the tolerance as the path is programmed
+    PassesAfterOffset,      // a constant tool offset puts it inside (a size whose form part fits)
+    NeedsProfileCorrection, // the form error itself exceeds the tolerance: the path must follow the deflection
+    NotPredicted,           // the characteristic does not depend on the cutting-force deflection (§V.G–I)
+    CannotEvaluate,         // the feature is not cut in this set-up, or its limits cannot be formed
+};
+
+struct ToleranceEvaluation {
+    QString toleranceId;
+    ToleranceType type = ToleranceType::Diameter;
+    QString featureId;
+    Verdict verdict = Verdict::CannotEvaluate;
+    std::optional<double> value_um;        // the predicted value of the deciding quantity
+    std::optional<double> limit_um;        // what it is compared with
+    std::optional<double> utilisation_pct; // value / limit
+    QString condition;                     // the condition of Fig. 4 and its equation that decided
+    QString reason;                        // why, for people; always set for NotPredicted and CannotEvaluate
+    // Size tolerances (diameter, length): nominal and limit deviations, and the predicted extreme
+    // deviations of the size from nominal, with the path programmed to the middle of the zone.
+    std::optional<double> nominal_mm;
+    std::optional<double> upper_um;
+    std::optional<double> lower_um;
+    std::optional<double> predictedMax_um;
+    std::optional<double> predictedMin_um;
+    std::optional<double> offset_um; // constant change of the size that centres it (PassesAfterOffset)
+    Diagnostics diagnostics;
+};
+
+// Evaluates every tolerance of `project` against the predicted deviation `result` (computeDeviation,
+// or any curves with the same structure), with the acceptance conditions of Valiño et al. (2008),
+// Fig. 4 and eq. 9–24.
+[[nodiscard]] std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project,
+                                                                  const DeviationResult &result);
+
+[[nodiscard]] QString verdictKeyword(Verdict verdict); // "passes", "passes_after_offset", ...
+[[nodiscard]] QString verdictName(Verdict verdict);    // for people, translated
+
+} // namespace tolturn

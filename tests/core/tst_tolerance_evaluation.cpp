@@ -1,0 +1,253 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Each acceptance condition of Valiño et al. (2008) Fig. 4 with hand-made deviation curves whose
+// extremes are known, and the verdict ladder.
+#include "core/tolerance/evaluation.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <functional>
+
+using namespace tolturn;
+
+namespace {
+
+Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
+{
+    Segment s;
+    s.id = QString::fromLatin1(id);
+    s.kind = kind;
+    s.from = a;
+    s.to = b;
+    return s;
+}
+
+// Ø50 cylinder O2 from z = 0 to 100, a cone O3 down to Ø40 over 10 mm, faces O1 and O4.
+Project part()
+{
+    Project p;
+    p.part.stockDiameter_mm = 54.0;
+    p.part.outer.segments = {
+        seg("O1", SegmentKind::Face, {0, 0}, {0, 25}), seg("O2", SegmentKind::Cylinder, {0, 25}, {100, 25}),
+        seg("O3", SegmentKind::Cone, {100, 25}, {110, 20}), seg("O4", SegmentKind::Face, {110, 20}, {110, 0})};
+    p.datums = {{QStringLiteral("A"), QStringLiteral("O2")}, {QStringLiteral("B"), QStringLiteral("O1")}};
+    return p;
+}
+
+Tolerance geometric(ToleranceType type, const char *feature, double zone, QStringList datums = {})
+{
+    Tolerance t;
+    t.id = QStringLiteral("T");
+    t.type = type;
+    t.featureId = QString::fromLatin1(feature);
+    t.zone_um = zone;
+    t.datums = datums;
+    return t;
+}
+
+Tolerance diameter(const char *cls)
+{
+    Tolerance t;
+    t.id = QStringLiteral("D");
+    t.type = ToleranceType::Diameter;
+    t.featureId = QStringLiteral("O2");
+    t.iso286Class = QString::fromLatin1(cls);
+    return t;
+}
+
+// Stations every 5 mm along a feature with radius error e(z) in µm.
+FeatureDeviation curve(const char *id, SegmentKind kind, double z0, double z1, const std::function<double(double)> &e)
+{
+    FeatureDeviation f{QString::fromLatin1(id), ContourSide::Outer, kind, {}};
+    for (double z = z0; z <= z1 + 1e-9; z += 5.0) {
+        Station st;
+        st.z_mm = z;
+        st.radiusError_mm = e(z) / 1000.0;
+        f.stations.push_back(st);
+    }
+    return f;
+}
+
+ToleranceEvaluation evaluate(const Tolerance &t, const DeviationResult &r)
+{
+    Project p = part();
+    p.tolerances = {t};
+    return evaluateTolerances(p, r).front();
+}
+
+bool near(double a, double b)
+{
+    return std::abs(a - b) < 1e-9;
+}
+
+} // namespace
+
+class TestToleranceEvaluation : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    // Ø50 h6: es = 0, ei = -16 µm (ISO 286-2 Table 2); the path is programmed to the middle, -8 µm.
+    // Linear e(z) = -2 + 0.04 z µm over 0..100: radius error -2 … +2, diameter -4 … +4 µm about -8,
+    // so -12 … -4 µm, inside [-16, 0]; form 8 µm of t = 16: 50 %.
+    void diameterPassesAsProgrammed()
+    {
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -2.0 + 0.04 * z; })};
+        const ToleranceEvaluation e = evaluate(diameter("h6"), r);
+        QCOMPARE(e.verdict, Verdict::PassesAsProgrammed);
+        QVERIFY(near(*e.predictedMax_um, -4.0) && near(*e.predictedMin_um, -12.0));
+        QVERIFY(near(*e.value_um, 8.0) && near(*e.limit_um, 16.0) && near(*e.utilisation_pct, 50.0));
+        QVERIFY(e.condition.contains(QStringLiteral("eq. 13")));
+    }
+
+    // e(z) = 3 + 0.03 z µm: diameter +6 … +12 µm about -8, so -2 … +4 µm, above es = 0; form 6 <= 16,
+    // so a constant offset of -8 - (4 + -2)/2 = -9 µm on the diameter centres it.
+    void diameterPassesAfterOffset()
+    {
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return 3.0 + 0.03 * z; })};
+        const ToleranceEvaluation e = evaluate(diameter("h6"), r);
+        QCOMPARE(e.verdict, Verdict::PassesAfterOffset);
+        QVERIFY(near(*e.offset_um, -9.0));
+        QVERIFY(near(*e.value_um, 6.0));
+        QVERIFY(e.condition.contains(QStringLiteral("eq. 15 holds")));
+    }
+
+    // Cubic e(z) = 1e-5 z^3 µm: 0 at z = 0, 10 µm at z = 100; diameter form 20 µm > t = 16.
+    void diameterNeedsProfileCorrection()
+    {
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return 1e-5 * z * z * z; })};
+        const ToleranceEvaluation e = evaluate(diameter("h6"), r);
+        QCOMPARE(e.verdict, Verdict::NeedsProfileCorrection);
+        QVERIFY(near(*e.value_um, 20.0));
+        QVERIFY(near(*e.utilisation_pct, 125.0));
+    }
+
+    // Cylindricity (eq. 19) and total radial run-out (§V.J): |delta_TMd - delta_Tmd| <= t. The cubic
+    // has a spread of 10 µm; the linear curve of the first case 4 µm.
+    void cylindricityAndTotalRadialRunout()
+    {
+        DeviationResult cubic;
+        cubic.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return 1e-5 * z * z * z; })};
+        DeviationResult linear;
+        linear.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -2.0 - 0.04 * z; })};
+        QCOMPARE(evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic).verdict,
+                 Verdict::NeedsProfileCorrection);
+        QVERIFY(near(*evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic).value_um, 10.0));
+        QCOMPARE(evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), linear).verdict,
+                 Verdict::PassesAsProgrammed);
+        const ToleranceEvaluation runout =
+            evaluate(geometric(ToleranceType::TotalRadialRunout, "O2", 12, {QStringLiteral("A")}), cubic);
+        QCOMPARE(runout.verdict, Verdict::PassesAsProgrammed);
+        QVERIFY(near(*runout.value_um, 10.0));
+    }
+
+    // Profile of the cone O3 (r 25 -> 20 over 10 mm: tan(alpha) = 0.5, cos(alpha) = 1/sqrt(1.25)), a
+    // constant radial deviation of 3 µm: normal deviation 3 cos(alpha) = 2.683282 µm at both extremes,
+    // eq. 22: 2.683282 + 2.683282 = 5.366563. With t = 5: fails as programmed; the spread 0 fits:
+    // offset -2.683282 µm. With t = 6 it passes.
+    void profileOfACone()
+    {
+        DeviationResult r;
+        r.features = {curve("O3", SegmentKind::Cone, 100, 110, [](double) { return 3.0; })};
+        const ToleranceEvaluation tight = evaluate(geometric(ToleranceType::Profile, "O3", 5), r);
+        QCOMPARE(tight.verdict, Verdict::PassesAfterOffset);
+        QVERIFY(std::abs(*tight.value_um - 5.366563) < 1e-5);
+        QVERIFY(std::abs(*tight.offset_um + 2.683282) < 1e-5);
+        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 6), r).verdict, Verdict::PassesAsProgrammed);
+    }
+
+    // Length between faces O1 and O4 (eq. 11): e_i + e_j = 2 + 3 = 5 µm. ±2.5 (t = 5) passes, ±2 fails.
+    void lengthBetweenFaces()
+    {
+        DeviationResult r;
+        r.faces = {{QStringLiteral("O1"), ContourSide::Outer, 0.0, 0.0, 0.002},
+                   {QStringLiteral("O4"), ContourSide::Outer, 110.0, 0.0, 0.003}};
+        Tolerance t;
+        t.id = QStringLiteral("L");
+        t.type = ToleranceType::Length;
+        t.featureId = QStringLiteral("O1");
+        t.toFeatureId = QStringLiteral("O4");
+        t.upperDeviation_um = 2.5;
+        t.lowerDeviation_um = -2.5;
+        ToleranceEvaluation e = evaluate(t, r);
+        QCOMPARE(e.verdict, Verdict::PassesAsProgrammed);
+        QVERIFY(near(*e.value_um, 5.0) && near(*e.nominal_mm, 110.0));
+        t.upperDeviation_um = 2.0;
+        t.lowerDeviation_um = -2.0;
+        e = evaluate(t, r);
+        QCOMPARE(e.verdict, Verdict::NeedsProfileCorrection);
+        QVERIFY(near(*e.utilisation_pct, 125.0));
+    }
+
+    // Flatness (eq. 16), parallelism (eq. 23), perpendicularity of a face (eq. 24), total axial
+    // run-out: e_j <= t with e_j = 3 µm.
+    void faceConditions()
+    {
+        DeviationResult r;
+        r.faces = {{QStringLiteral("O4"), ContourSide::Outer, 110.0, 0.0, 0.003}};
+        QCOMPARE(evaluate(geometric(ToleranceType::Flatness, "O4", 2), r).verdict, Verdict::NeedsProfileCorrection);
+        QCOMPARE(evaluate(geometric(ToleranceType::Flatness, "O4", 3), r).verdict, Verdict::PassesAsProgrammed);
+        QCOMPARE(evaluate(geometric(ToleranceType::Parallelism, "O4", 4, {QStringLiteral("B")}), r).verdict,
+                 Verdict::PassesAsProgrammed);
+        QCOMPARE(evaluate(geometric(ToleranceType::Perpendicularity, "O4", 2.5, {QStringLiteral("A")}), r).verdict,
+                 Verdict::NeedsProfileCorrection);
+        QCOMPARE(evaluate(geometric(ToleranceType::TotalAxialRunout, "O4", 5, {QStringLiteral("A")}), r).verdict,
+                 Verdict::PassesAsProgrammed);
+    }
+
+    // Coaxiality, circular run-out and perpendicularity of an axis are not predicted (§V.G–I), never a pass.
+    void notPredictedCharacteristics_data()
+    {
+        QTest::addColumn<int>("type");
+        QTest::addColumn<QString>("section");
+        QTest::newRow("coaxiality") << int(ToleranceType::Coaxiality) << QStringLiteral("§V.H");
+        QTest::newRow("circular radial") << int(ToleranceType::CircularRadialRunout) << QStringLiteral("§V.I");
+        QTest::newRow("circular axial") << int(ToleranceType::CircularAxialRunout) << QStringLiteral("§V.I");
+        QTest::newRow("axis to face") << int(ToleranceType::Perpendicularity) << QStringLiteral("§V.G.2");
+    }
+
+    void notPredictedCharacteristics()
+    {
+        QFETCH(int, type);
+        QFETCH(QString, section);
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double) { return 50.0; })};
+        const char *feature = type == int(ToleranceType::CircularAxialRunout) ? "O4" : "O2";
+        const ToleranceEvaluation e =
+            evaluate(geometric(static_cast<ToleranceType>(type), feature, 1, {QStringLiteral("B")}), r);
+        QCOMPARE(e.verdict, Verdict::NotPredicted);
+        QVERIFY(e.reason.contains(section));
+        QVERIFY(!e.value_um.has_value());
+        QCOMPARE(verdictKeyword(e.verdict), QStringLiteral("not_predicted"));
+    }
+
+    void featureNotCut()
+    {
+        const ToleranceEvaluation e = evaluate(diameter("h6"), DeviationResult{});
+        QCOMPARE(e.verdict, Verdict::CannotEvaluate);
+        QVERIFY(e.reason.contains(QStringLiteral("not cut in this set-up")));
+    }
+
+    // Shaft y is not defined at Ø10 (ISO 286-1: only above 18 mm): the limits cannot be formed.
+    void undefinedIsoClassCannotBeEvaluated()
+    {
+        Project p;
+        p.part.stockDiameter_mm = 12.0;
+        p.part.outer.segments = {seg("O1", SegmentKind::Face, {0, 0}, {0, 5}),
+                                 seg("O2", SegmentKind::Cylinder, {0, 5}, {50, 5}),
+                                 seg("O3", SegmentKind::Face, {50, 5}, {50, 0})};
+        Tolerance t = diameter("y6");
+        p.tolerances = {t};
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 50, [](double) { return 1.0; })};
+        const ToleranceEvaluation e = evaluateTolerances(p, r).front();
+        QCOMPARE(e.verdict, Verdict::CannotEvaluate);
+        QVERIFY(hasErrors(e.diagnostics));
+        QVERIFY(e.diagnostics.front().message.contains(QStringLiteral("y6")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestToleranceEvaluation)
+#include "tst_tolerance_evaluation.moc"
