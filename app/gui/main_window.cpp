@@ -3,12 +3,14 @@
 
 #include "app/gui/recent_files.h"
 #include "core/project/keywords.h"
+#include "core/tolerance/evaluation.h"
 #include "resources/bundled.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/document/project_document.h"
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
 #include "widgets/results/deflection_panel.h"
+#include "widgets/tolerances/tolerance_panel.h"
 
 #include <QAction>
 #include <QApplication>
@@ -20,6 +22,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QUndoStack>
 
 namespace tolturn {
 
@@ -30,6 +33,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_files(new FileController(*m_document, *m_recentFiles, *this, this))
     , m_profileView(new ProfileView(this))
     , m_deflection(new DeflectionPanel(this))
+    , m_tolerances(new TolerancePanel(*m_document, this))
     , m_summary(new QLabel(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
@@ -46,9 +50,11 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_recentFiles, &RecentFiles::changed, this, &MainWindow::rebuildRecentMenu);
+    connect(m_profileView, &ProfileView::featureSelected, m_tolerances, &TolerancePanel::setSelectedFeature);
+    connect(m_tolerances, &TolerancePanel::featureActivated, m_profileView, &ProfileView::selectFeature);
     rebuildRecentMenu();
     updateTitle();
-    resize(1200, 820);
+    resize(1500, 900);
 }
 
 MainWindow::~MainWindow() = default;
@@ -56,19 +62,38 @@ MainWindow::~MainWindow() = default;
 void MainWindow::createActions()
 {
     createFileMenu();
+    createEditMenu();
     createDocks();
     createHelpMenu();
 }
 
+void MainWindow::createEditMenu()
+{
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+}
+
 void MainWindow::createDocks()
 {
+    auto *tolerances = new QDockWidget(tr("Tolerances"), this);
+    tolerances->setObjectName(QStringLiteral("tolerancesDock"));
+    tolerances->setWidget(m_tolerances);
+    addDockWidget(Qt::RightDockWidgetArea, tolerances);
     auto *dock = new QDockWidget(tr("Deflection"), this);
     dock->setObjectName(QStringLiteral("deflectionDock"));
     dock->setWidget(m_deflection);
     dock->setAllowedAreas(Qt::BottomDockWidgetArea | Qt::RightDockWidgetArea);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
+    resizeDocks({tolerances}, {700}, Qt::Horizontal);
+    resizeDocks({dock}, {380}, Qt::Vertical);
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(dock->toggleViewAction());
+    view->addAction(tolerances->toggleViewAction());
 }
 
 void MainWindow::createFileMenu()
@@ -144,7 +169,9 @@ void MainWindow::showProject()
 {
     const Project &project = m_document->project();
     m_profileView->setProfile(project.part);
-    m_deflection->showProject(project);
+    DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
+    m_tolerances->showVerdicts(evaluateTolerances(project, deviation));
+    m_deflection->showResult(project, std::move(deviation));
     const PartProfile &part = project.part;
     m_summary->setText(tr("%1 — length %2 mm, Ø max %3 mm, %4 outer / %5 inner features, clamping: %6")
                            .arg(part.name.isEmpty() ? tr("Part") : part.name, dimensionText(part.length_mm()),

@@ -11,6 +11,7 @@ class QMenu;
 namespace tolturn {
 
 class DeflectionPanel;
+class TolerancePanel;
 class ProfileView;
 class ProjectDocument;
 class RecentFiles;
@@ -33,6 +34,8 @@ public:
 
     [[nodiscard]] DeflectionPanel *deflectionPanel() const { return m_deflection; }
 
+    [[nodiscard]] TolerancePanel *tolerancePanel() const { return m_tolerances; }
+
     // FilePrompts
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
     [[nodiscard]] QString chooseFileToSave(const QString &suggestedPath) override;
@@ -41,6 +44,7 @@ public:
 private:
     void createActions();
     void createFileMenu();
+    void createEditMenu();
     void createHelpMenu();
     void createDocks();
     void rebuildRecentMenu();
@@ -52,6 +56,7 @@ private:
     FileController *m_files;
     ProfileView *m_profileView;
     DeflectionPanel *m_deflection;
+    TolerancePanel *m_tolerances;
     QMenu *m_recentMenu = nullptr;
     QLabel *m_summary;
     QAction *m_saveAction = nullptr;

@@ -100,8 +100,10 @@ void checkDatums(const Project &p, Diagnostics &out)
     }
 }
 
+} // namespace
+
 // Which kinds of feature each tolerance may sit on (Valiño et al. 2008, §V, Fig. 4).
-bool featureFits(ToleranceType type, SegmentKind kind)
+bool toleranceFitsFeature(ToleranceType type, SegmentKind kind)
 {
     const bool face = kind == SegmentKind::Face;
     const bool cylinder = kind == SegmentKind::Cylinder;
@@ -126,6 +128,8 @@ bool featureFits(ToleranceType type, SegmentKind kind)
     }
     return false;
 }
+
+namespace {
 
 void checkSizeLimits(const Tolerance &t, const FeatureRef &feature, const QString &path, Diagnostics &out)
 {
@@ -198,7 +202,7 @@ void checkTolerance(const Project &p, const Tolerance &t, const QSet<QString> &d
                                 tr("there is no feature '%1' in the profile").arg(t.featureId)));
         return;
     }
-    if (!featureFits(t.type, feature->segment->kind))
+    if (!toleranceFitsFeature(t.type, feature->segment->kind))
         out.push_back(makeError(path + QStringLiteral("feature"),
                                 tr("a %1 tolerance cannot sit on feature '%2', which is a %3")
                                     .arg(keyword(t.type), t.featureId, keyword(feature->segment->kind))));

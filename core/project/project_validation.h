@@ -10,4 +10,7 @@ namespace tolturn {
 // the tool codes present, the passes, the datums and the tolerances with the features they name.
 [[nodiscard]] Diagnostics validateProject(const Project &project);
 
+// Whether a tolerance of this type can sit on a feature of this kind (Valiño et al. 2008, §V).
+[[nodiscard]] bool toleranceFitsFeature(ToleranceType type, SegmentKind kind);
+
 } // namespace tolturn

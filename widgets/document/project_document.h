@@ -1,19 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/common/diagnostic.h"
 #include "core/project/project.h"
 
 #include <QObject>
 #include <QString>
 
+class QUndoStack;
+
 namespace tolturn {
 
-// The open project: its data, the file it came from and whether it has unsaved changes.
-// Views observe it through changed(); nothing here touches files or dialogs.
+// The open project: its data, the file it came from, its edit history and whether it has unsaved
+// changes (the undo stack is not at its clean state). Views observe it through projectChanged();
+// nothing here touches files or dialogs. Every edit goes through a small QUndoCommand that keeps
+// only what it changes.
 class ProjectDocument : public QObject {
     Q_OBJECT
 public:
     explicit ProjectDocument(QObject *parent = nullptr);
+    ~ProjectDocument() override;
 
     [[nodiscard]] const Project &project() const { return m_project; }
 
@@ -21,15 +27,27 @@ public:
 
     [[nodiscard]] const QString &filePath() const { return m_filePath; }
 
-    [[nodiscard]] bool isModified() const { return m_modified; }
-
+    [[nodiscard]] bool isModified() const;
     // File name without folder, or the part name for an unsaved project.
     [[nodiscard]] QString displayName() const;
 
-    // Replaces the whole document, e.g. after a successful open. Not an edit: not modified.
+    [[nodiscard]] QUndoStack *undoStack() const { return m_undoStack; }
+
+    // Replaces the whole document, e.g. after a successful open. Not an edit: clears the history.
     void load(Project project, const QString &filePath);
     // Records that the document now lives in (was just saved to) `filePath`.
     void markSaved(const QString &filePath);
+
+    // Edits. Each checks the project that would result (validateProject) and, when it has errors,
+    // changes nothing and returns them; otherwise it is pushed on the undo stack.
+    Diagnostics addTolerance(const Tolerance &tolerance);
+    Diagnostics replaceTolerance(int index, const Tolerance &tolerance);
+    Diagnostics removeTolerance(int index);
+    // Sets datum `label` on a feature (a new datum, or the same letter moved to another feature).
+    Diagnostics setDatum(const Datum &datum);
+
+    // A tolerance id not used yet: "T1", "T2", ...
+    [[nodiscard]] QString nextToleranceId() const;
 
 Q_SIGNALS:
     void projectChanged();
@@ -37,12 +55,17 @@ Q_SIGNALS:
     void modifiedChanged(bool modified);
 
 private:
-    void setModified(bool modified);
+    friend class ToleranceListCommand;
+    friend class DatumListCommand;
+
+    Diagnostics check(const Project &candidate) const;
+    void setTolerances(std::vector<Tolerance> tolerances);
+    void setDatums(std::vector<Datum> datums);
 
     Project m_project;
     bool m_hasProject = false;
     QString m_filePath;
-    bool m_modified = false;
+    QUndoStack *m_undoStack;
 };
 
 } // namespace tolturn

@@ -83,6 +83,8 @@ void tagItem(QGraphicsItem *item, const QString &kind, const QString &featureId 
     item->setData(kItemKindData, kind);
     if (!featureId.isEmpty())
         item->setData(kFeatureIdData, featureId);
+    if (auto *shape = dynamic_cast<QAbstractGraphicsShapeItem *>(item))
+        item->setData(kDefaultPenData, QVariant::fromValue(shape->pen()));
 }
 
 QString featureToolTip(const Segment &s)

@@ -12,8 +12,9 @@ namespace tolturn {
 // Keys of QGraphicsItem::data() on the items of a profile scene, so that views, tools and tests
 // can find items by what they represent.
 enum ProfileItemData : int {
-    kItemKindData = 0,  // QString, one of the kinds below
-    kFeatureIdData = 1, // QString, id of the profile segment (contour items)
+    kItemKindData = 0,   // QString, one of the kinds below
+    kFeatureIdData = 1,  // QString, id of the profile segment (contour items)
+    kDefaultPenData = 2, // QPen the item is drawn with when not selected
 };
 
 namespace profile_item {

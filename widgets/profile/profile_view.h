@@ -18,14 +18,26 @@ public:
     void clearProfile();
     void fitPart();
 
+    // The selected feature (segment id), or empty. Selecting draws it highlighted in both halves.
+    [[nodiscard]] QString selectedFeature() const { return m_selected; }
+
+    void selectFeature(const QString &featureId);
+    // The feature drawn nearest to a point of the view, within `pixels`; empty if none.
+    [[nodiscard]] QString featureAt(const QPoint &viewPoint, double pixels = 8.0) const;
+
+Q_SIGNALS:
+    void featureSelected(const QString &featureId);
+
 protected:
     void resizeEvent(QResizeEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
 
 private:
     QGraphicsScene *m_scene;
     bool m_autoFit = true;
+    QString m_selected;
 };
 
 } // namespace tolturn

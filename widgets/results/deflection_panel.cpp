@@ -66,9 +66,9 @@ DeflectionPanel::DeflectionPanel(QWidget *parent)
             [this](int index) { setQuantity(static_cast<Quantity>(index)); });
 }
 
-void DeflectionPanel::showProject(const Project &project)
+void DeflectionPanel::showResult(const Project &project, DeviationResult result)
 {
-    m_result = computeDeviation(project, DataLibrary::builtIn(), {});
+    m_result = std::move(result);
     m_sideBox->setEnabled(!project.part.inner.empty());
     if (project.part.inner.empty() && m_side == ContourSide::Inner)
         m_sideBox->setCurrentIndex(0);

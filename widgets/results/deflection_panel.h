@@ -22,8 +22,8 @@ public:
 
     explicit DeflectionPanel(QWidget *parent = nullptr);
 
-    // Computes the deviation of `project` (fast: well under a millisecond for usual parts) and shows it.
-    void showProject(const Project &project);
+    // Shows the deviation computed for `project`.
+    void showResult(const Project &project, DeviationResult result);
     void clear();
 
     void setSide(ContourSide side);

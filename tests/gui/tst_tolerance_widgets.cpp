@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Tolerances in the desktop program, offscreen: the verdict model, undoable edits that change the
+// verdicts, the tolerance dialog's live ISO 286 limits and its refusals, feature selection.
+#include "app/gui/main_window.h"
+#include "core/io/project_file.h"
+#include "widgets/document/project_document.h"
+#include "widgets/profile/profile_scene.h"
+#include "widgets/profile/profile_view.h"
+#include "widgets/tolerances/tolerance_dialog.h"
+#include "widgets/tolerances/tolerance_panel.h"
+#include "widgets/tolerances/tolerance_verdict_model.h"
+
+#include <QAbstractItemModelTester>
+#include <QGraphicsItem>
+#include <QGraphicsScene>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace tolturn;
+
+namespace {
+
+QString example(const char *name)
+{
+    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
+}
+
+int rowOf(const ToleranceVerdictModel *model, const QString &id)
+{
+    for (int row = 0; row < model->rowCount(); ++row) {
+        if (model->index(row, ToleranceVerdictModel::Id).data().toString() == id)
+            return row;
+    }
+    return -1;
+}
+
+} // namespace
+
+class TestToleranceWidgets : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("TolTurnTest"));
+    }
+
+    void verdictModelIsAProperModel()
+    {
+        MainWindow w;
+        ToleranceVerdictModel *model = w.tolerancePanel()->model();
+        QAbstractItemModelTester tester(model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
+        QCOMPARE(model->rowCount(), 9);
+        QCOMPARE(model->columnCount(), int(ToleranceVerdictModel::ColumnCount));
+        const int coaxiality = rowOf(model, QStringLiteral("T5"));
+        QCOMPARE(model->index(coaxiality, ToleranceVerdictModel::VerdictColumn).data().toString(),
+                 QStringLiteral("not predicted by this model"));
+        QVERIFY(model->index(coaxiality, 0).data(Qt::ToolTipRole).toString().contains(QStringLiteral("§V.H")));
+        QCOMPARE(
+            model->index(coaxiality, ToleranceVerdictModel::VerdictColumn).data(Qt::BackgroundRole).value<QColor>(),
+            ToleranceVerdictModel::verdictColor(Verdict::NotPredicted));
+        QVERIFY(
+            model->index(0, ToleranceVerdictModel::Utilisation).data(ToleranceVerdictModel::UtilisationRole).isValid());
+        QVERIFY(w.fileController()->openFile(example("long-shaft-centres.tolturn"))); // model reset under the tester
+        QCOMPARE(model->rowCount(), 6);
+    }
+
+    // A cylindricity of 0.0001 µm on O4 cannot hold: the verdict table shows "needs a profile
+    // correction"; undo removes it, redo brings it back; the document is modified until undone.
+    void assignedToleranceChangesTheVerdicts()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        ProjectDocument *doc = w.document();
+        ToleranceVerdictModel *model = w.tolerancePanel()->model();
+        QCOMPARE(model->rowCount(), 8);
+        Tolerance t;
+        t.id = doc->nextToleranceId();
+        QCOMPARE(t.id, QStringLiteral("T9"));
+        t.type = ToleranceType::Cylindricity;
+        t.featureId = QStringLiteral("O4");
+        t.zone_um = 0.0001;
+        QVERIFY(doc->addTolerance(t).empty());
+        QVERIFY(doc->isModified());
+        QCOMPARE(model->rowCount(), 9);
+        const int row = rowOf(model, QStringLiteral("T9"));
+        QCOMPARE(
+            model->index(row, ToleranceVerdictModel::VerdictColumn).data(ToleranceVerdictModel::VerdictRole).toInt(),
+            int(Verdict::NeedsProfileCorrection));
+        doc->undoStack()->undo();
+        QCOMPARE(model->rowCount(), 8);
+        QVERIFY(!doc->isModified());
+        doc->undoStack()->redo();
+        QCOMPARE(model->rowCount(), 9);
+
+        // Loosen it to 8 µm: passes.
+        t.zone_um = 8.0;
+        QVERIFY(doc->replaceTolerance(8, t).empty());
+        QCOMPARE(model->index(8, ToleranceVerdictModel::VerdictColumn).data(ToleranceVerdictModel::VerdictRole).toInt(),
+                 int(Verdict::PassesAsProgrammed));
+        QVERIFY(doc->removeTolerance(8).empty());
+        QCOMPARE(model->rowCount(), 8);
+    }
+
+    void invalidEditChangesNothing()
+    {
+        ProjectDocument doc;
+        const ProjectParseResult read = readProjectFile(example("stepped-shaft-chuck.tolturn"));
+        doc.load(*read.project, QString());
+        Tolerance t;
+        t.id = QStringLiteral("T9");
+        t.type = ToleranceType::Perpendicularity;
+        t.featureId = QStringLiteral("O8");
+        t.zone_um = 10.0; // no datum
+        const Diagnostics problems = doc.addTolerance(t);
+        QCOMPARE(int(problems.size()), 1);
+        QVERIFY(problems.front().message.contains(QStringLiteral("relative to a datum")));
+        QCOMPARE(int(doc.project().tolerances.size()), 8);
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QVERIFY(!doc.setDatum({QStringLiteral("a"), QStringLiteral("O4")}).empty()); // not a capital letter
+        QVERIFY(doc.setDatum({QStringLiteral("B"), QStringLiteral("O9")}).empty());
+        QCOMPARE(int(doc.project().datums.size()), 2);
+    }
+
+    // The ISO 286 picker on the Ø50 bearing seat O4: h6 is 0/-16 µm (ISO 286-2 Table 2), H7 is a
+    // hole class and refused on an outer surface, an unknown letter shows its error as typed.
+    void dialogShowsLimitsLiveAndRefusesWhatIsWrong()
+    {
+        const ProjectParseResult read = readProjectFile(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(read.project);
+        Project project = *read.project;
+        Tolerance applied;
+        int calls = 0;
+        auto apply = [&](const Tolerance &t) {
+            ++calls;
+            Project candidate = project;
+            candidate.tolerances.push_back(t);
+            ProjectDocument doc;
+            doc.load(project, QString());
+            const Diagnostics d = doc.addTolerance(t);
+            if (d.empty())
+                applied = t;
+            return d;
+        };
+        Tolerance initial;
+        initial.id = QStringLiteral("T9");
+        ToleranceDialog dialog(project, QStringLiteral("O4"), initial, apply);
+        dialog.setCharacteristic(ToleranceType::Diameter);
+        dialog.setIsoClass(QStringLiteral("h6"));
+        QVERIFY2(dialog.limitsText().contains(QStringLiteral("upper 0 µm, lower -16 µm (IT6 = 16 µm)")),
+                 qPrintable(dialog.limitsText()));
+        dialog.setIsoClass(QStringLiteral("q6"));
+        QVERIFY2(dialog.limitsText().contains(QStringLiteral("q6")), qPrintable(dialog.limitsText()));
+        dialog.setIsoClass(QStringLiteral("H7"));
+        QVERIFY(!dialog.tryAccept());
+        QVERIFY(dialog.problemsText().contains(QStringLiteral("'H7' is a hole class")));
+        dialog.setIsoClass(QStringLiteral("k6"));
+        QVERIFY(dialog.tryAccept());
+        QCOMPARE(applied.iso286Class, QStringLiteral("k6"));
+        QCOMPARE(applied.featureId, QStringLiteral("O4"));
+        QCOMPARE(calls, 2);
+
+        ToleranceDialog geometric(project, QStringLiteral("O4"), initial, apply);
+        geometric.setCharacteristic(ToleranceType::TotalRadialRunout);
+        geometric.setZone(12.5, QStringLiteral("a"));
+        QVERIFY(geometric.tryAccept());
+        QCOMPARE(applied.zone_um.value(), 12.5);
+        QCOMPARE(applied.datums, QStringList{QStringLiteral("A")});
+    }
+
+    // Clicking near a feature in the drawing selects it and enables "Add" for it.
+    void selectingAFeatureInTheDrawing()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        ProfileView *view = w.profileView();
+        QSignalSpy spy(view, &ProfileView::featureSelected);
+        // The middle of O4 (z = 57.5, r = 25) in the upper half: scene point (57.5, -25).
+        const QPoint onO4 = view->mapFromScene(QPointF(57.5, -25.0));
+        QCOMPARE(view->featureAt(onO4), QStringLiteral("O4"));
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, onO4);
+        QCOMPARE(view->selectedFeature(), QStringLiteral("O4"));
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.takeFirst().at(0).toString(), QStringLiteral("O4"));
+        // Far from every line: nothing.
+        QVERIFY(view->featureAt(view->mapFromScene(QPointF(57.5, -12.0))).isEmpty());
+    }
+};
+
+QTEST_MAIN(TestToleranceWidgets)
+#include "tst_tolerance_widgets.moc"

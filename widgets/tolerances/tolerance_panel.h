@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/tolerance/evaluation.h"
+
+#include <QWidget>
+
+class QPushButton;
+class QTableView;
+
+namespace tolturn {
+
+class ProjectDocument;
+class ToleranceVerdictModel;
+
+// The tolerances of the open project with their verdicts, and the commands to add, edit and
+// remove them on the selected feature and to set datums. Edits go through the document (undoable).
+class TolerancePanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit TolerancePanel(ProjectDocument &document, QWidget *parent = nullptr);
+
+    void showVerdicts(std::vector<ToleranceEvaluation> verdicts);
+    void setSelectedFeature(const QString &featureId);
+
+    [[nodiscard]] ToleranceVerdictModel *model() const { return m_model; }
+
+    [[nodiscard]] QTableView *table() const { return m_table; }
+
+    void addTolerance();
+    void editTolerance();
+    void removeTolerance();
+    void setDatum();
+
+Q_SIGNALS:
+    void featureActivated(const QString &featureId);
+
+private:
+    [[nodiscard]] int currentRow() const;
+    void updateButtons();
+
+    ProjectDocument &m_document;
+    ToleranceVerdictModel *m_model;
+    QTableView *m_table;
+    QPushButton *m_add;
+    QPushButton *m_edit;
+    QPushButton *m_remove;
+    QPushButton *m_datum;
+    QString m_selectedFeature;
+};
+
+} // namespace tolturn

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/tolerances/tolerance_verdict_model.h"
+
+#include "core/project/keywords.h"
+
+#include <QColor>
+
+namespace tolturn {
+
+namespace {
+
+QString number(const std::optional<double> &v, int decimals)
+{
+    return v ? QString::number(*v, 'f', decimals) : QStringLiteral("—");
+}
+
+QString signedNumber(double v)
+{
+    return (v > 0.0 ? QStringLiteral("+") : QString()) + formatNumber(v);
+}
+
+} // namespace
+
+ToleranceVerdictModel::ToleranceVerdictModel(QObject *parent) : QAbstractTableModel(parent) {}
+
+void ToleranceVerdictModel::setVerdicts(const Project &project, std::vector<ToleranceEvaluation> verdicts)
+{
+    beginResetModel();
+    m_tolerances = project.tolerances;
+    m_verdicts = std::move(verdicts);
+    m_verdicts.resize(m_tolerances.size());
+    endResetModel();
+}
+
+int ToleranceVerdictModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : static_cast<int>(m_verdicts.size());
+}
+
+int ToleranceVerdictModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QString ToleranceVerdictModel::specification(const Tolerance &t)
+{
+    if (isSizeTolerance(t.type)) {
+        if (!t.iso286Class.isEmpty())
+            return t.iso286Class;
+        if (t.upperDeviation_um && t.lowerDeviation_um)
+            return tr("%1/%2 µm").arg(signedNumber(*t.upperDeviation_um), signedNumber(*t.lowerDeviation_um));
+        return {};
+    }
+    QString text = t.zone_um ? tr("%1 µm").arg(formatNumber(*t.zone_um)) : QString();
+    if (!t.datums.isEmpty())
+        text += QStringLiteral(" | ") + t.datums.join(QStringLiteral(" | "));
+    return text;
+}
+
+QVariant ToleranceVerdictModel::display(int row, int column) const
+{
+    const Tolerance &t = m_tolerances[static_cast<std::size_t>(row)];
+    const ToleranceEvaluation &e = m_verdicts[static_cast<std::size_t>(row)];
+    switch (column) {
+    case Id:
+        return t.id;
+    case Characteristic:
+        return displayName(t.type);
+    case Feature:
+        return t.type == ToleranceType::Length ? t.featureId + QStringLiteral(" – ") + t.toFeatureId : t.featureId;
+    case Specification:
+        return specification(t);
+    case Value:
+        return number(e.value_um, 3);
+    case Limit:
+        return number(e.limit_um, 3);
+    case Utilisation:
+        return e.utilisation_pct ? QStringLiteral("%1 %").arg(*e.utilisation_pct, 0, 'f', 1) : QStringLiteral("—");
+    case VerdictColumn:
+        return verdictName(e.verdict);
+    default:
+        return {};
+    }
+}
+
+QVariant ToleranceVerdictModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= rowCount() || index.column() >= ColumnCount)
+        return {};
+    const ToleranceEvaluation &e = m_verdicts[static_cast<std::size_t>(index.row())];
+    switch (role) {
+    case Qt::DisplayRole:
+        return display(index.row(), index.column());
+    case Qt::BackgroundRole:
+        return index.column() == VerdictColumn ? QVariant(verdictColor(e.verdict)) : QVariant();
+    case Qt::TextAlignmentRole:
+        return index.column() >= Value && index.column() <= Utilisation
+                   ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter))
+                   : QVariant();
+    case Qt::ToolTipRole: {
+        QString tip = e.condition;
+        if (!e.reason.isEmpty())
+            tip += (tip.isEmpty() ? QString() : QStringLiteral("\n")) + e.reason;
+        for (const Diagnostic &d : e.diagnostics)
+            tip += QStringLiteral("\n") + d.toString();
+        return tip;
+    }
+    case UtilisationRole:
+        return e.utilisation_pct ? QVariant(*e.utilisation_pct) : QVariant();
+    case VerdictRole:
+        return static_cast<int>(e.verdict);
+    case FeatureIdRole:
+        return e.featureId;
+    default:
+        return {};
+    }
+}
+
+QVariant ToleranceVerdictModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case Id:
+        return tr("ID");
+    case Characteristic:
+        return tr("Characteristic");
+    case Feature:
+        return tr("Feature");
+    case Specification:
+        return tr("Specification");
+    case Value:
+        return tr("Predicted [µm]");
+    case Limit:
+        return tr("Limit [µm]");
+    case Utilisation:
+        return tr("Utilisation");
+    case VerdictColumn:
+        return tr("Verdict");
+    default:
+        return {};
+    }
+}
+
+QColor ToleranceVerdictModel::verdictColor(Verdict verdict)
+{
+    switch (verdict) {
+    case Verdict::PassesAsProgrammed:
+        return {0xc7, 0xe9, 0xc0};
+    case Verdict::PassesAfterOffset:
+        return {0xff, 0xe8, 0xa3};
+    case Verdict::NeedsProfileCorrection:
+        return {0xfc, 0xae, 0x91};
+    case Verdict::NotPredicted:
+        return {0xdd, 0xdd, 0xdd};
+    case Verdict::CannotEvaluate:
+        return {0xee, 0xee, 0xee};
+    }
+    return {};
+}
+
+} // namespace tolturn

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/project/project.h"
+#include "core/tolerance/evaluation.h"
+
+#include <QAbstractTableModel>
+
+#include <vector>
+
+namespace tolturn {
+
+// One row per tolerance of the project: what it is, the predicted value against its limit, the
+// utilisation and the verdict (coloured). Tooltips give the deciding condition and the reason.
+class ToleranceVerdictModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column { Id, Characteristic, Feature, Specification, Value, Limit, Utilisation, VerdictColumn, ColumnCount };
+
+    enum Role {
+        UtilisationRole = Qt::UserRole + 1, // double, percent; invalid when there is no value
+        VerdictRole,                        // int, the Verdict
+        FeatureIdRole,                      // QString
+    };
+
+    explicit ToleranceVerdictModel(QObject *parent = nullptr);
+
+    void setVerdicts(const Project &project, std::vector<ToleranceEvaluation> verdicts);
+
+    [[nodiscard]] const ToleranceEvaluation &verdict(int row) const
+    {
+        return m_verdicts[static_cast<std::size_t>(row)];
+    }
+
+    [[nodiscard]] int rowCount(const QModelIndex &parent = {}) const override;
+    [[nodiscard]] int columnCount(const QModelIndex &parent = {}) const override;
+    [[nodiscard]] QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation,
+                                      int role = Qt::DisplayRole) const override;
+
+    [[nodiscard]] static QColor verdictColor(Verdict verdict);
+    // "h6", "+50/-50 µm", "8 µm | A": the specification as written on a drawing.
+    [[nodiscard]] static QString specification(const Tolerance &tolerance);
+
+private:
+    [[nodiscard]] QVariant display(int row, int column) const;
+
+    std::vector<Tolerance> m_tolerances;
+    std::vector<ToleranceEvaluation> m_verdicts;
+};
+
+} // namespace tolturn
