@@ -5,6 +5,10 @@
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
 #include "core/io/project_file.h"
+#include "core/planning/clamping_advisor.h"
+#include "core/planning/cutting_window.h"
+#include "core/planning/gcode.h"
+#include "core/planning/optimiser.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/iso286.h"
@@ -15,6 +19,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSaveFile>
 #include <QTextStream>
 
 #include <cmath>
@@ -633,6 +638,333 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
     return kExitOk;
 }
 
+// ---- optimize -------------------------------------------------------------------------------
+
+QJsonObject passJson(const PassConditions &p)
+{
+    return {{QStringLiteral("cutting_speed_m_min"), p.cuttingSpeed_m_min},
+            {QStringLiteral("feed_mm_rev"), p.feed_mm_rev},
+            {QStringLiteral("depth_of_cut_mm"), p.depthOfCut_mm}};
+}
+
+QJsonArray constraintsJson(const std::vector<ConstraintValue> &list)
+{
+    QJsonArray out;
+    for (const ConstraintValue &c : list)
+        out.append(QJsonObject{{QStringLiteral("name"), c.name},
+                               {QStringLiteral("subject"), c.subject},
+                               {QStringLiteral("value"), c.value},
+                               {QStringLiteral("limit"), c.limit},
+                               {QStringLiteral("unit"), c.unit},
+                               {QStringLiteral("violation_pct"), 100.0 * c.violation()}});
+    return out;
+}
+
+QString constraintText(const ConstraintValue &c)
+{
+    return QStringLiteral("%1: %2 of %3 %4 (%5 %)")
+        .arg(c.label(), QString::number(c.value, 'g', 4), QString::number(c.limit, 'g', 4), c.unit,
+             QString::number(100.0 * (c.value / c.limit), 'f', 1));
+}
+
+PassConditions roughingOf(const PlanResult &r, const PlanningProblem &problem)
+{
+    PassConditions p = r.candidate.roughing;
+    if (r.candidate.roughingPasses > 0)
+        p.depthOfCut_mm = (problem.radialStock_mm() - r.candidate.finishing.depthOfCut_mm) / r.candidate.roughingPasses;
+    return p;
+}
+
+QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
+{
+    const CandidateEvaluation &e = r.evaluation;
+    return {{QStringLiteral("feasible"), r.feasible},
+            {QStringLiteral("objective"), keyword(problem.project().planning.objective)},
+            {QStringLiteral("objective_value"), e.objective},
+            {QStringLiteral("time_min"), e.time_min},
+            {QStringLiteral("cost"), e.cost},
+            {QStringLiteral("finishing_time_min"), e.finishingTime_min},
+            {QStringLiteral("roughing_time_min"), e.roughingTime_min},
+            {QStringLiteral("tool_edges_per_part"), e.toolEdgesPerPart},
+            {QStringLiteral("finishing"), passJson(r.candidate.finishing)},
+            {QStringLiteral("roughing"), QJsonObject{{QStringLiteral("passes"), r.candidate.roughingPasses},
+                                                     {QStringLiteral("pass"), passJson(roughingOf(r, problem))}}},
+            {QStringLiteral("constraints"), constraintsJson(e.constraints)},
+            {QStringLiteral("binding"), constraintsJson(r.binding)},
+            {QStringLiteral("conflicts"), constraintsJson(r.conflicts)},
+            {QStringLiteral("evaluations"), r.evaluations},
+            {QStringLiteral("notes"), QJsonArray::fromStringList(r.notes)}};
+}
+
+void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &problem)
+{
+    const CandidateEvaluation &e = r.evaluation;
+    const PassConditions rough = roughingOf(r, problem);
+    out << (r.feasible ? tr("Optimum (%1)").arg(keyword(problem.project().planning.objective))
+                       : tr("No plan meets every constraint; the one that violates them least"))
+        << '\n';
+    out << tr("  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part")
+               .arg(QString::number(e.time_min, 'f', 3), QString::number(e.finishingTime_min, 'f', 3),
+                    QString::number(e.roughingTime_min, 'f', 3), QString::number(e.cost, 'f', 2),
+                    QString::number(e.toolEdgesPerPart, 'f', 3))
+        << '\n';
+    out << tr("  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
+               .arg(QString::number(r.candidate.finishing.cuttingSpeed_m_min, 'f', 1),
+                    QString::number(r.candidate.finishing.feed_mm_rev, 'f', 3),
+                    QString::number(r.candidate.finishing.depthOfCut_mm, 'f', 3))
+        << '\n';
+    if (r.candidate.roughingPasses > 0)
+        out << tr("  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev")
+                   .arg(r.candidate.roughingPasses)
+                   .arg(QString::number(rough.depthOfCut_mm, 'f', 3), QString::number(rough.cuttingSpeed_m_min, 'f', 1),
+                        QString::number(rough.feed_mm_rev, 'f', 3))
+            << '\n';
+    for (const ConstraintValue &c : r.binding)
+        out << tr("  binding: ") << constraintText(c) << '\n';
+    for (const ConstraintValue &c : r.conflicts)
+        out << tr("  violated: ") << constraintText(c) << '\n';
+    for (const QString &note : r.notes)
+        out << tr("note: ") << note << '\n';
+}
+
+// Loads a project and builds its planning problem; prints problems and returns null on failure.
+std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, QTextStream &err,
+                                                           std::optional<Project> *project = nullptr)
+{
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!read.project)
+        return nullptr;
+    if (project != nullptr)
+        *project = read.project;
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*read.project, DataLibrary::builtIn());
+    for (const Diagnostic &d : built.diagnostics) {
+        if (d.severity == Severity::Error)
+            err << file << ": " << d.toString() << '\n';
+    }
+    return built.problem;
+}
+
+int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("Print the plan as JSON."));
+    const QCommandLineOption objective(QStringLiteral("objective"), tr("time or cost (default: the project's)."),
+                                       QStringLiteral("OBJECTIVE"));
+    const QCommandLineOption write(QStringLiteral("write"),
+                                   tr("Store the optimal passes in the project (replacing its passes) and save it."));
+    parser.addOptions({json, objective, write});
+    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    if (const int stop = parseCommand(parser, commands().at(6), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1) {
+        err << programName() << " optimize: " << tr("give exactly one project file") << '\n';
+        return kExitUsage;
+    }
+    const QString file = parser.positionalArguments().constFirst();
+    std::optional<Project> project;
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!read.project)
+        return kExitProblems;
+    project = read.project;
+    if (parser.isSet(objective)) {
+        const auto chosen = fromKeyword<PlanningObjective>(parser.value(objective));
+        if (!chosen) {
+            err << programName()
+                << " optimize: " << tr("--objective is time or cost, not \"%1\"").arg(parser.value(objective)) << '\n';
+            return kExitUsage;
+        }
+        project->planning.objective = *chosen;
+    }
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*project, DataLibrary::builtIn());
+    for (const Diagnostic &d : built.diagnostics) {
+        if (d.severity == Severity::Error)
+            err << file << ": " << d.toString() << '\n';
+    }
+    if (!built.problem)
+        return kExitProblems;
+    const PlanResult plan = optimisePlan(*built.problem);
+    if (parser.isSet(json))
+        out << QJsonDocument(planJson(plan, *built.problem)).toJson(QJsonDocument::Indented);
+    else
+        printPlan(out, plan, *built.problem);
+    if (!plan.feasible)
+        return kExitProblems;
+    if (parser.isSet(write)) {
+        const PassConditions rough = roughingOf(plan, *built.problem);
+        project->passes.clear();
+        for (int i = 0; i < plan.candidate.roughingPasses; ++i)
+            project->passes.push_back(
+                {PassKind::Roughing, rough.cuttingSpeed_m_min, rough.feed_mm_rev, rough.depthOfCut_mm});
+        const PassConditions &f = plan.candidate.finishing;
+        project->passes.push_back({PassKind::Finishing, f.cuttingSpeed_m_min, f.feed_mm_rev, f.depthOfCut_mm});
+        const WriteResult w = writeProjectFile(file, *project);
+        if (!w.ok) {
+            err << w.error << '\n';
+            return kExitProblems;
+        }
+        err << tr("wrote %1: %2 passes").arg(file).arg(project->passes.size()) << '\n';
+    }
+    return kExitOk;
+}
+
+int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption plane(QStringLiteral("plane"), tr("feed-speed (default) or feed-depth."),
+                                   QStringLiteral("PLANE"), QStringLiteral("feed-speed"));
+    const QCommandLineOption csv(QStringLiteral("csv"), tr("Print every grid point as CSV."));
+    const QCommandLineOption size(QStringLiteral("size"), tr("Points along each axis (default 256)."),
+                                  QStringLiteral("N"), QStringLiteral("256"));
+    parser.addOptions({plane, csv, size});
+    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    if (const int stop = parseCommand(parser, commands().at(7), args, out, err); stop >= 0)
+        return stop;
+    bool ok = false;
+    const int n = parser.value(size).toInt(&ok);
+    const QString planeName = parser.value(plane);
+    if (parser.positionalArguments().size() != 1 || !ok || n < 2 || n > 4096 ||
+        (planeName != QLatin1String("feed-speed") && planeName != QLatin1String("feed-depth"))) {
+        err << programName()
+            << " window: " << tr("give one project file, --plane feed-speed or feed-depth, --size from 2 to 4096")
+            << '\n';
+        return kExitUsage;
+    }
+    const auto problem = loadPlanningProblem(parser.positionalArguments().constFirst(), err);
+    if (!problem)
+        return kExitProblems;
+    const PlanResult plan = optimisePlan(*problem);
+    WindowOptions options;
+    options.columns = options.rows = n;
+    const WindowPlane which =
+        planeName == QLatin1String("feed-speed") ? WindowPlane::FeedSpeed : WindowPlane::FeedDepth;
+    const CuttingWindow w =
+        cuttingWindow(*problem, which, plan.candidate, options); // the optimum, or the least-violating plan
+    const QString yName =
+        which == WindowPlane::FeedSpeed ? QStringLiteral("cutting_speed_m_min") : QStringLiteral("depth_of_cut_mm");
+    if (parser.isSet(csv)) {
+        out << "feed_mm_rev," << yName << ",objective,feasible,binding\n";
+        for (const WindowCell &c : w.cells)
+            out << QString::number(c.x, 'g', 8) << ',' << QString::number(c.y, 'g', 8) << ','
+                << QString::number(c.objective, 'g', 8) << ',' << (c.feasible ? 1 : 0) << ','
+                << (c.feasible ? QString() : QLatin1Char('"') + c.bindingLabel + QLatin1Char('"')) << '\n';
+        return kExitOk;
+    }
+    int feasible = 0;
+    for (const WindowCell &c : w.cells)
+        feasible += c.feasible ? 1 : 0;
+    out << tr("%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6")
+               .arg(w.columns)
+               .arg(w.rows)
+               .arg(QString::number(100.0 * feasible / static_cast<double>(w.cells.size()), 'f', 1),
+                    QString::number(w.base.finishing.feed_mm_rev, 'f', 3), yName,
+                    QString::number(which == WindowPlane::FeedSpeed ? w.base.finishing.cuttingSpeed_m_min
+                                                                    : w.base.finishing.depthOfCut_mm,
+                                    'f', 3))
+        << '\n';
+    for (const auto &[label, cells] : w.boundaries())
+        out << tr("  bounded by %1 (%2 points beyond it)").arg(label).arg(cells) << '\n';
+    return kExitOk;
+}
+
+int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), tr("Print the ranking as JSON."));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    if (const int stop = parseCommand(parser, commands().at(8), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1) {
+        err << programName() << " advise-clamping: " << tr("give exactly one project file") << '\n';
+        return kExitUsage;
+    }
+    const QString file = parser.positionalArguments().constFirst();
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!read.project)
+        return kExitProblems;
+    const std::vector<ClampingOption> options = adviseClamping(*read.project, DataLibrary::builtIn());
+    if (parser.isSet(json)) {
+        QJsonArray list;
+        int rank = 1;
+        for (const ClampingOption &o : options) {
+            QJsonObject entry{{QStringLiteral("rank"), rank++},
+                              {QStringLiteral("method"), keyword(o.method)},
+                              {QStringLiteral("clamped_length_mm"), o.clampedLength_mm},
+                              {QStringLiteral("possible"), o.possible},
+                              {QStringLiteral("feasible"), o.plan.feasible},
+                              {QStringLiteral("reason"), o.reason}};
+            if (o.possible)
+                entry.insert(QStringLiteral("objective_value"), o.plan.evaluation.objective);
+            list.append(entry);
+        }
+        out << QJsonDocument(QJsonObject{{QStringLiteral("file"), file},
+                                         {QStringLiteral("objective"), keyword(read.project->planning.objective)},
+                                         {QStringLiteral("ranking"), list}})
+                   .toJson(QJsonDocument::Indented);
+        return kExitOk;
+    }
+    int rank = 1;
+    for (const ClampingOption &o : options)
+        out << QStringLiteral("%1. %2: %3").arg(rank++).arg(displayName(o.method), o.reason) << '\n';
+    return kExitOk;
+}
+
+int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, tr("File to write."),
+                                    QStringLiteral("FILE"));
+    const QCommandLineOption compensated(QStringLiteral("compensated"),
+                                         tr("Correct the path where a tolerance needs it (offset or profile)."));
+    parser.addOptions({output, compensated});
+    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    if (const int stop = parseCommand(parser, commands().at(9), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
+        err << programName() << " gcode: " << tr("give one project file and -o FILE") << '\n';
+        return kExitUsage;
+    }
+    const QString file = parser.positionalArguments().constFirst();
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!read.project)
+        return kExitProblems;
+    const DeviationResult deviation = computeDeviation(*read.project, DataLibrary::builtIn(), {});
+    for (const Diagnostic &d : deviation.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!deviation.inputs)
+        return kExitProblems;
+    const CompensationPlan plan =
+        planCompensation(*read.project, deviation, evaluateTolerances(*read.project, deviation));
+    GCodeOptions options;
+    options.finishing = deviation.inputs->pass;
+    options.maxSpindleSpeed_rpm = read.project->planning.maxSpindleSpeed_rpm
+                                      ? read.project->planning.maxSpindleSpeed_rpm
+                                      : deviation.inputs->maxSpindleSpeed_rpm;
+    options.compensation = parser.isSet(compensated) ? &plan : nullptr;
+    const QString program = finishingProgram(*read.project, options);
+    QSaveFile target(parser.value(output));
+    if (!target.open(QIODevice::WriteOnly) || target.write(program.toUtf8()) < 0 || !target.commit()) {
+        err << tr("cannot write '%1': %2").arg(parser.value(output), target.errorString()) << '\n';
+        return kExitProblems;
+    }
+    for (const FeatureCompensation &f : plan.features) {
+        if (f.action != CompensationAction::None || !f.note.isEmpty())
+            err << tr("%1: %2, residual %3 -> %4 µm %5")
+                       .arg(f.featureId, compensationKeyword(f.action), QString::number(f.residualBefore_um, 'f', 3),
+                            QString::number(f.residualAfter_um, 'f', 3), f.note)
+                << '\n';
+    }
+    return kExitOk;
+}
+
 const std::vector<Command> &commands()
 {
     static const std::vector<Command> list{
@@ -656,6 +988,21 @@ const std::vector<Command> &commands()
          tr("Every tolerance of the project against the predicted deviation: value, limit, utilisation, the "
             "deciding condition of Valiño et al. Fig. 4, and the verdict."),
          runEvaluate},
+        {QStringLiteral("optimize"), QStringLiteral("optimize [--json] [--objective time|cost] [--write] PROJECT"),
+         tr("Cutting conditions of the finishing and roughing passes at least time or cost per part under every "
+            "constraint (tolerances, roughness, power, torque, force, spindle speed, tool life)."),
+         runOptimize},
+        {QStringLiteral("window"), QStringLiteral("window [--plane feed-speed|feed-depth] [--csv] [--size N] PROJECT"),
+         tr("The cutting window of the finishing pass around the optimum: per grid point the objective, whether "
+            "it is feasible and the constraint that bounds it."),
+         runWindow},
+        {QStringLiteral("advise-clamping"), QStringLiteral("advise-clamping [--json] PROJECT"),
+         tr("The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason."),
+         runAdviseClamping},
+        {QStringLiteral("gcode"), QStringLiteral("gcode [--compensated] -o FILE PROJECT"),
+         tr("The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a "
+            "tolerance needs it."),
+         runGCode},
     };
     return list;
 }

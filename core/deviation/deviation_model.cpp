@@ -279,6 +279,31 @@ std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &p, const 
     return tool;
 }
 
+std::optional<ForceFunction> projectForceModel(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    const MaterialData *material = data.material(p.materialId);
+    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    if (material == nullptr || !angle) {
+        out.push_back(makeError(material == nullptr ? QStringLiteral("material") : QStringLiteral("tool.holder"),
+                                tr("the force model needs a known material and holder")));
+        return std::nullopt;
+    }
+    if (p.cuttingModel.forceModel == ForceModel::Kienzle) {
+        QStringList notes;
+        const KienzleConstants k = kienzleOf(*material, p.cuttingModel, data, notes);
+        const double kappa = radians(angle->value);
+        return ForceFunction(
+            [k, kappa](double feed, double depth) { return kienzleForces(k, feed, depth, kappa).forces; });
+    }
+    const auto tool = resolveLiDuToolGeometry(p, data, out);
+    if (!tool)
+        return std::nullopt;
+    const LiDuCoefficients c{p.cuttingModel.normalPressure_MPa.value_or(0.0),
+                             p.cuttingModel.frictionRatio.value_or(0.0)};
+    const LiDuToolGeometry g = *tool;
+    return ForceFunction([c, g](double feed, double depth) { return liDuForces(c, g, feed, depth).forces; });
+}
+
 InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
 {
     InputsResult result;
@@ -539,19 +564,13 @@ Station evaluateStation(const StationInfluence &si, double z, double r0, bool ou
 
 } // namespace
 
-DeviationResult computeDeviation(const Project &project, const DataLibrary &data, const DeviationOptions &options)
+DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceTable &table, const TurningInputs &in)
 {
     DeviationResult result;
-    InputsResult resolved = resolveTurningInputs(project, data, options);
-    result.diagnostics = resolved.diagnostics;
-    if (!resolved.inputs)
-        return result;
-    const TurningInputs &in = *resolved.inputs;
-    const double allowance = options.inProcessSection ? in.pass.depthOfCut_mm : 0.0;
-    const InfluenceTable table = buildInfluenceTable(project.part, in, options.stationsPerFeature, allowance);
-
+    result.features.reserve(table.features.size());
     for (const FeatureInfluence &f : table.features) {
         FeatureDeviation fd{f.featureId, f.side, f.kind, {}};
+        fd.stations.reserve(f.stations.size());
         const bool outer = f.side == ContourSide::Outer;
         for (std::size_t i = 0; i < f.stations.size(); ++i) {
             const Station st = evaluateStation(f.stations[i], f.z_mm[i], f.nominalRadius_mm[i], outer, in,
@@ -562,10 +581,10 @@ DeviationResult computeDeviation(const Project &project, const DataLibrary &data
             result.maxTorque_Nm = std::max(result.maxTorque_Nm, spindleTorque_Nm(in.forces.tangential_N, diameter));
             fd.stations.push_back(st);
         }
-        result.features.push_back(fd);
+        result.features.push_back(std::move(fd));
     }
     for (const FeatureInfluence &f : table.faces) {
-        const auto feature = findFeature(project.part, f.featureId);
+        const auto feature = findFeature(part, f.featureId);
         const Segment &s = *feature->segment;
         const StationInfluence &si = f.stations.front();
         FaceConicity fc;
@@ -579,12 +598,28 @@ DeviationResult computeDeviation(const Project &project, const DataLibrary &data
     }
     result.theoreticalRa_um = theoreticalRa_um(in.pass.feed_mm_rev, in.noseRadius_mm);
     result.theoreticalRz_um = theoreticalRz_um(in.pass.feed_mm_rev, in.noseRadius_mm);
+    result.inputs = in;
+    return result;
+}
+
+DeviationResult computeDeviation(const Project &project, const DataLibrary &data, const DeviationOptions &options)
+{
+    InputsResult resolved = resolveTurningInputs(project, data, options);
+    if (!resolved.inputs) {
+        DeviationResult failed;
+        failed.diagnostics = resolved.diagnostics;
+        return failed;
+    }
+    const TurningInputs &in = *resolved.inputs;
+    const double allowance = options.inProcessSection ? in.pass.depthOfCut_mm : 0.0;
+    const InfluenceTable table = buildInfluenceTable(project.part, in, options.stationsPerFeature, allowance);
+    DeviationResult result = evaluateInfluenceTable(project.part, table, in);
+    result.diagnostics = resolved.diagnostics;
     if (in.maxPower_kW && result.maxPower_kW > *in.maxPower_kW)
         result.diagnostics.push_back(
             makeWarning(QStringLiteral("passes"), tr("the pass needs %1 kW of cutting power, more than the machine's "
                                                      "%2 kW")
                                                       .arg(num(result.maxPower_kW), num(*in.maxPower_kW))));
-    result.inputs = in;
     return result;
 }
 

@@ -10,6 +10,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -59,6 +60,13 @@ struct InputsResult {
 // angle; nose radius from the insert code. nullopt with an error naming the missing field.
 [[nodiscard]] std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &project, const DataLibrary &data,
                                                                       Diagnostics &out);
+
+// The project's force model (Kienzle or Li & Du, as its cutting_model says) as a function of
+// feed and depth of cut, with material and tool resolved once; nullopt with errors when they
+// cannot be.
+using ForceFunction = std::function<CuttingForces(double feed_mm_rev, double depthOfCut_mm)>;
+[[nodiscard]] std::optional<ForceFunction> projectForceModel(const Project &project, const DataLibrary &data,
+                                                             Diagnostics &out);
 
 // Deviations at one tool position, in mm. Radial contributions are "material left": positive
 // where the surface stays proud of nominal (a shaft too large, a bore too small).
@@ -144,6 +152,12 @@ struct InfluenceTable {
 // of the pass still on the uncut side of the tool (0: the in-process section is ignored).
 [[nodiscard]] InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs &inputs,
                                                  int stationsPerFeature, double allowance_mm);
+
+// The deviation for the forces and pass in `inputs`, from an influence table built for the same
+// part and supports: what computeDeviation() does after building the table, for callers that
+// evaluate many cutting conditions on one table.
+[[nodiscard]] DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceTable &table,
+                                                     const TurningInputs &inputs);
 
 // Form error of every turned feature under many cutting conditions at once, by the linearity of
 // the deflection in the forces (docs/model.md §6): for each condition, the spread

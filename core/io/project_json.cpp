@@ -175,6 +175,59 @@ MachineCharacterisation readCharacterisation(const QJsonObject &json, Diagnostic
     return c;
 }
 
+std::optional<ValueRange> readRange(JsonObjectReader &parent, const QString &key, Diagnostics &out)
+{
+    const auto json = parent.object(key, Presence::Optional);
+    if (!json)
+        return std::nullopt;
+    JsonObjectReader r(*json, parent.fieldPath(key), out);
+    ValueRange range;
+    range.min = r.number(QStringLiteral("min"), Presence::Required).value_or(0.0);
+    range.max = r.number(QStringLiteral("max"), Presence::Required).value_or(0.0);
+    r.finish();
+    return range;
+}
+
+PlanningSettings readPlanning(const QJsonObject &json, Diagnostics &out)
+{
+    JsonObjectReader r(json, QStringLiteral("planning"), out);
+    PlanningSettings p;
+    p.objective = readKeyword<PlanningObjective>(r, QStringLiteral("objective"), Presence::Optional, tr("objective"))
+                      .value_or(PlanningObjective::Time);
+    p.machineRate_per_min = r.number(QStringLiteral("machine_rate_per_min"), Presence::Optional).value_or(0.0);
+    p.toolCostPerEdge = r.number(QStringLiteral("tool_cost_per_edge"), Presence::Optional).value_or(0.0);
+    p.toolChangeTime_min = r.number(QStringLiteral("tool_change_time_min"), Presence::Optional).value_or(0.0);
+    p.handlingTime_min = r.number(QStringLiteral("handling_time_min"), Presence::Optional).value_or(0.0);
+    if (const auto life = r.object(QStringLiteral("tool_life"), Presence::Optional)) {
+        JsonObjectReader t(*life, r.fieldPath(QStringLiteral("tool_life")), out);
+        p.taylorC_m_min = t.number(QStringLiteral("C_m_min"), Presence::Required);
+        p.taylorN = t.number(QStringLiteral("n"), Presence::Required);
+        p.minToolLife_min = t.number(QStringLiteral("min_minutes"), Presence::Optional);
+        p.toolLifeSource = t.text(QStringLiteral("source"), Presence::Required).value_or(QString());
+        t.finish();
+    }
+    if (const auto ranges = r.object(QStringLiteral("ranges"), Presence::Optional)) {
+        JsonObjectReader g(*ranges, r.fieldPath(QStringLiteral("ranges")), out);
+        p.cuttingSpeed_m_min = readRange(g, QStringLiteral("cutting_speed_m_min"), out);
+        p.feed_mm_rev = readRange(g, QStringLiteral("feed_mm_rev"), out);
+        p.depthOfCut_mm = readRange(g, QStringLiteral("depth_of_cut_mm"), out);
+        p.rangesSource = g.text(QStringLiteral("source"), Presence::Required).value_or(QString());
+        g.finish();
+    }
+    p.maxRa_um = r.number(QStringLiteral("max_ra_um"), Presence::Optional);
+    p.maxRz_um = r.number(QStringLiteral("max_rz_um"), Presence::Optional);
+    p.maxForce_N = r.number(QStringLiteral("max_force_N"), Presence::Optional);
+    p.maxPower_kW = r.number(QStringLiteral("max_power_kW"), Presence::Optional);
+    p.maxTorque_Nm = r.number(QStringLiteral("max_torque_Nm"), Presence::Optional);
+    p.maxSpindleSpeed_rpm = r.number(QStringLiteral("max_spindle_speed_rpm"), Presence::Optional);
+    if (const auto off = r.array(QStringLiteral("disabled_constraints"), Presence::Optional)) {
+        for (const QJsonValue v : *off)
+            p.disabledConstraints << v.toString();
+    }
+    r.finish();
+    return p;
+}
+
 Environment readEnvironment(const QJsonObject &json, Diagnostics &out)
 {
     JsonObjectReader r(json, QStringLiteral("environment"), out);
@@ -309,6 +362,8 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
         p.characterisation = readCharacterisation(*characterisation, out);
     if (const auto environment = r.object(QStringLiteral("environment"), Presence::Optional))
         p.environment = readEnvironment(*environment, out);
+    if (const auto planning = r.object(QStringLiteral("planning"), Presence::Optional))
+        p.planning = readPlanning(*planning, out);
     p.tolerances = readList<Tolerance>(r, QStringLiteral("tolerances"), out,
                                        [&out](JsonObjectReader &reader) { return readTolerance(reader, out); });
     r.finish();
@@ -417,6 +472,46 @@ QJsonObject characterisationJson(const MachineCharacterisation &c)
     return o;
 }
 
+QJsonObject rangeJson(const ValueRange &r)
+{
+    return {{QStringLiteral("min"), r.min}, {QStringLiteral("max"), r.max}};
+}
+
+QJsonObject planningJson(const PlanningSettings &p)
+{
+    QJsonObject o{{QStringLiteral("objective"), keyword(p.objective)},
+                  {QStringLiteral("machine_rate_per_min"), p.machineRate_per_min},
+                  {QStringLiteral("tool_cost_per_edge"), p.toolCostPerEdge},
+                  {QStringLiteral("tool_change_time_min"), p.toolChangeTime_min},
+                  {QStringLiteral("handling_time_min"), p.handlingTime_min}};
+    if (p.taylorC_m_min && p.taylorN) {
+        QJsonObject life{{QStringLiteral("C_m_min"), *p.taylorC_m_min},
+                         {QStringLiteral("n"), *p.taylorN},
+                         {QStringLiteral("source"), p.toolLifeSource}};
+        insertOptional(life, "min_minutes", p.minToolLife_min);
+        o.insert(QStringLiteral("tool_life"), life);
+    }
+    if (p.cuttingSpeed_m_min || p.feed_mm_rev || p.depthOfCut_mm) {
+        QJsonObject ranges{{QStringLiteral("source"), p.rangesSource}};
+        if (p.cuttingSpeed_m_min)
+            ranges.insert(QStringLiteral("cutting_speed_m_min"), rangeJson(*p.cuttingSpeed_m_min));
+        if (p.feed_mm_rev)
+            ranges.insert(QStringLiteral("feed_mm_rev"), rangeJson(*p.feed_mm_rev));
+        if (p.depthOfCut_mm)
+            ranges.insert(QStringLiteral("depth_of_cut_mm"), rangeJson(*p.depthOfCut_mm));
+        o.insert(QStringLiteral("ranges"), ranges);
+    }
+    insertOptional(o, "max_ra_um", p.maxRa_um);
+    insertOptional(o, "max_rz_um", p.maxRz_um);
+    insertOptional(o, "max_force_N", p.maxForce_N);
+    insertOptional(o, "max_power_kW", p.maxPower_kW);
+    insertOptional(o, "max_torque_Nm", p.maxTorque_Nm);
+    insertOptional(o, "max_spindle_speed_rpm", p.maxSpindleSpeed_rpm);
+    if (!p.disabledConstraints.isEmpty())
+        o.insert(QStringLiteral("disabled_constraints"), QJsonArray::fromStringList(p.disabledConstraints));
+    return o;
+}
+
 QJsonObject cuttingModelJson(const CuttingModel &m)
 {
     QJsonObject o{{QStringLiteral("force_model"), keyword(m.forceModel)}};
@@ -501,6 +596,8 @@ QByteArray serializeProjectJson(const Project &p)
         root.insert(QStringLiteral("cutting_model"), cuttingModelJson(p.cuttingModel));
     if (p.characterisation != MachineCharacterisation{})
         root.insert(QStringLiteral("characterisation"), characterisationJson(p.characterisation));
+    if (p.planning != PlanningSettings{})
+        root.insert(QStringLiteral("planning"), planningJson(p.planning));
     if (p.environment != Environment{}) {
         QJsonObject environment;
         insertOptional(environment, "ambient_temperature_C", p.environment.ambientTemperature_C);

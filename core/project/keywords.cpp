@@ -68,6 +68,14 @@ struct KeywordTable<ToleranceType> {
 };
 
 template <>
+struct KeywordTable<PlanningObjective> {
+    static constexpr std::array<std::pair<PlanningObjective, const char *>, 2> entries{{
+        {PlanningObjective::Time, "time"},
+        {PlanningObjective::Cost, "cost"},
+    }};
+};
+
+template <>
 struct KeywordTable<ForceModel> {
     static constexpr std::array<std::pair<ForceModel, const char *>, 2> entries{{
         {ForceModel::Kienzle, "kienzle"},
@@ -113,6 +121,20 @@ QString keyword(ToleranceType value)
 }
 
 QString keyword(ForceModel value)
+{
+    return keywordOf(value);
+}
+
+const QStringList &planningConstraintKeywords()
+{
+    static const QStringList words{QStringLiteral("tolerances"), QStringLiteral("roughness"),
+                                   QStringLiteral("power"),      QStringLiteral("torque"),
+                                   QStringLiteral("force"),      QStringLiteral("spindle_speed"),
+                                   QStringLiteral("tool_life"),  QStringLiteral("roughing_depth")};
+    return words;
+}
+
+QString keyword(PlanningObjective value)
 {
     return keywordOf(value);
 }
@@ -209,11 +231,13 @@ template std::optional<ClampingMethod> fromKeyword<ClampingMethod>(const QString
 template std::optional<PassKind> fromKeyword<PassKind>(const QString &);
 template std::optional<ToleranceType> fromKeyword<ToleranceType>(const QString &);
 template std::optional<ForceModel> fromKeyword<ForceModel>(const QString &);
+template std::optional<PlanningObjective> fromKeyword<PlanningObjective>(const QString &);
 template QStringList allKeywords<SegmentKind>();
 template QStringList allKeywords<ArcDirection>();
 template QStringList allKeywords<ClampingMethod>();
 template QStringList allKeywords<PassKind>();
 template QStringList allKeywords<ToleranceType>();
 template QStringList allKeywords<ForceModel>();
+template QStringList allKeywords<PlanningObjective>();
 
 } // namespace tolturn

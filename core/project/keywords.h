@@ -19,11 +19,17 @@ namespace tolturn {
 [[nodiscard]] QString keyword(PassKind value);
 [[nodiscard]] QString keyword(ToleranceType value);
 [[nodiscard]] QString keyword(ForceModel value);
+[[nodiscard]] QString keyword(PlanningObjective value);
 
 // Names for people, translated: "chuck + tailstock" where the file says "chuck_tailstock".
 [[nodiscard]] QString displayName(ClampingMethod value);
 [[nodiscard]] QString displayName(SegmentKind value);
 [[nodiscard]] QString displayName(ToleranceType value);
+
+// The constraints of the cutting-condition optimiser, as named in files, on the command line
+// and in results (docs/planning.md): tolerances, roughness, power, torque, force, spindle_speed,
+// tool_life, roughing_depth.
+[[nodiscard]] const QStringList &planningConstraintKeywords();
 
 template <typename Enum>
 [[nodiscard]] std::optional<Enum> fromKeyword(const QString &word);

@@ -148,6 +148,42 @@ struct Environment {
     friend bool operator==(const Environment &, const Environment &) = default;
 };
 
+// What the optimiser of cutting conditions works with (docs/planning.md). Rates and requirements
+// are the planner's; tool life and cutting ranges come from the insert maker, with their source.
+enum class PlanningObjective { Time, Cost };
+
+struct ValueRange {
+    double min = 0.0;
+    double max = 0.0;
+
+    friend bool operator==(const ValueRange &, const ValueRange &) = default;
+};
+
+struct PlanningSettings {
+    PlanningObjective objective = PlanningObjective::Time;
+    double machineRate_per_min = 0.0; // cost of the machine and operator per minute
+    double toolCostPerEdge = 0.0;
+    double toolChangeTime_min = 0.0;
+    double handlingTime_min = 0.0;       // loading, unloading, idle moves per part
+    std::optional<double> taylorC_m_min; // Taylor: vc T^n = C (T in min)
+    std::optional<double> taylorN;
+    std::optional<double> minToolLife_min;
+    QString toolLifeSource;
+    std::optional<ValueRange> cuttingSpeed_m_min;
+    std::optional<ValueRange> feed_mm_rev;
+    std::optional<ValueRange> depthOfCut_mm;
+    QString rangesSource;
+    std::optional<double> maxRa_um;
+    std::optional<double> maxRz_um;
+    std::optional<double> maxForce_N;
+    std::optional<double> maxPower_kW; // overrides the machine data
+    std::optional<double> maxTorque_Nm;
+    std::optional<double> maxSpindleSpeed_rpm;
+    QStringList disabledConstraints; // constraint keywords switched off by the planner
+
+    friend bool operator==(const PlanningSettings &, const PlanningSettings &) = default;
+};
+
 struct Project {
     PartProfile part;
     QString materialId;
@@ -160,6 +196,7 @@ struct Project {
     CuttingModel cuttingModel;
     MachineCharacterisation characterisation;
     Environment environment;
+    PlanningSettings planning;
 
     friend bool operator==(const Project &, const Project &) = default;
 };

@@ -248,7 +248,7 @@ void requirePositive(const std::optional<double> &value, const QString &field, D
         out.push_back(makeError(field, tr("must be above zero, but is %1").arg(num(*value))));
 }
 
-void requireNonNegative(const std::optional<double> &value, const QString &field, Diagnostics &out)
+void requireNonNegative(std::optional<double> value, const QString &field, Diagnostics &out)
 {
     if (value && (!std::isfinite(*value) || *value < 0.0))
         out.push_back(makeError(field, tr("must be zero or more, but is %1").arg(num(*value))));
@@ -306,6 +306,57 @@ void checkCharacterisation(const Project &p, Diagnostics &out)
     requireNonNegative(p.environment.timeSinceStart_min, QStringLiteral("environment.time_since_start_min"), out);
 }
 
+void checkRange(const std::optional<ValueRange> &range, const QString &field, Diagnostics &out)
+{
+    if (!range)
+        return;
+    if (!std::isfinite(range->min) || range->min <= 0.0)
+        out.push_back(
+            makeError(field + QStringLiteral(".min"), tr("must be above zero, but is %1").arg(num(range->min))));
+    else if (!std::isfinite(range->max) || range->max < range->min)
+        out.push_back(
+            makeError(field + QStringLiteral(".max"),
+                      tr("must be at least the minimum %1, but is %2").arg(num(range->min), num(range->max))));
+}
+
+void checkPlanning(const Project &p, Diagnostics &out)
+{
+    const PlanningSettings &s = p.planning;
+    const QString path = QStringLiteral("planning.");
+    const std::pair<const char *, double> rates[] = {{"machine_rate_per_min", s.machineRate_per_min},
+                                                     {"tool_cost_per_edge", s.toolCostPerEdge},
+                                                     {"tool_change_time_min", s.toolChangeTime_min},
+                                                     {"handling_time_min", s.handlingTime_min}};
+    for (const auto &[name, value] : rates)
+        requireNonNegative(value, path + QLatin1String(name), out);
+    requirePositive(s.taylorC_m_min, path + QStringLiteral("tool_life.C_m_min"), out);
+    if (s.taylorN && (!std::isfinite(*s.taylorN) || *s.taylorN <= 0.0 || *s.taylorN >= 1.0))
+        out.push_back(makeError(path + QStringLiteral("tool_life.n"),
+                                tr("the Taylor exponent n lies between 0 and 1, but is %1").arg(num(*s.taylorN))));
+    if (s.taylorC_m_min)
+        requireText(s.toolLifeSource, path + QStringLiteral("tool_life.source"),
+                    tr("the source of the Taylor constants"), out);
+    requirePositive(s.minToolLife_min, path + QStringLiteral("tool_life.min_minutes"), out);
+    checkRange(s.cuttingSpeed_m_min, path + QStringLiteral("ranges.cutting_speed_m_min"), out);
+    checkRange(s.feed_mm_rev, path + QStringLiteral("ranges.feed_mm_rev"), out);
+    checkRange(s.depthOfCut_mm, path + QStringLiteral("ranges.depth_of_cut_mm"), out);
+    if (s.cuttingSpeed_m_min || s.feed_mm_rev || s.depthOfCut_mm)
+        requireText(s.rangesSource, path + QStringLiteral("ranges.source"), tr("the source of the cutting ranges"),
+                    out);
+    const std::pair<const char *, std::optional<double>> limits[] = {
+        {"max_ra_um", s.maxRa_um},         {"max_rz_um", s.maxRz_um},
+        {"max_force_N", s.maxForce_N},     {"max_power_kW", s.maxPower_kW},
+        {"max_torque_Nm", s.maxTorque_Nm}, {"max_spindle_speed_rpm", s.maxSpindleSpeed_rpm}};
+    for (const auto &[name, value] : limits)
+        requirePositive(value, path + QLatin1String(name), out);
+    for (const QString &name : s.disabledConstraints) {
+        if (!planningConstraintKeywords().contains(name))
+            out.push_back(makeError(path + QStringLiteral("disabled_constraints"),
+                                    tr("unknown constraint \"%1\"; the constraints are: %2")
+                                        .arg(name, planningConstraintKeywords().join(QStringLiteral(", ")))));
+    }
+}
+
 } // namespace
 
 Diagnostics validateProject(const Project &project)
@@ -320,6 +371,7 @@ Diagnostics validateProject(const Project &project)
     checkTolerances(project, out);
     checkCuttingModel(project, out);
     checkCharacterisation(project, out);
+    checkPlanning(project, out);
     return out;
 }
 

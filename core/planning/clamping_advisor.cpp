@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/clamping_advisor.h"
+
+#include "core/project/keywords.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+struct ClampingAdvice {
+    Q_DECLARE_TR_FUNCTIONS(ClampingAdvice)
+};
+
+QString tr(const char *text)
+{
+    return ClampingAdvice::tr(text);
+}
+
+// Length a chuck can grip: the project's own, or the first outer cylinder (at most a third of the part).
+std::optional<double> gripLength(const Project &p)
+{
+    if (p.clamping.method != ClampingMethod::BetweenCentres && p.clamping.clampedLength_mm > 0.0)
+        return p.clamping.clampedLength_mm;
+    for (const Segment &s : p.part.outer.segments) {
+        if (s.kind == SegmentKind::Face || s.kind == SegmentKind::Chamfer || s.kind == SegmentKind::Radius)
+            continue; // the end face and its edge break
+        if (s.kind != SegmentKind::Cylinder)
+            return std::nullopt;
+        return std::min(s.to.z_mm, p.part.length_mm() / 3.0);
+    }
+    return std::nullopt;
+}
+
+QString describe(const ClampingOption &o, const Project &p)
+{
+    if (!o.possible)
+        return o.reason;
+    const CandidateEvaluation &e = o.plan.evaluation;
+    if (o.plan.feasible)
+        return tr("meets every constraint: %1 %2 per part")
+            .arg(QString::number(e.objective, 'f', 3),
+                 p.planning.objective == PlanningObjective::Time ? tr("min") : tr("cost"));
+    QStringList violated;
+    for (const ConstraintValue &c : o.plan.conflicts)
+        violated << tr("%1 by %2 %").arg(c.label(), QString::number(100.0 * c.violation(), 'f', 0));
+    return tr("no plan meets every constraint: %1").arg(violated.join(QStringLiteral(", ")));
+}
+
+} // namespace
+
+std::vector<ClampingOption> adviseClamping(const Project &project, const DataLibrary &data,
+                                           const OptimisationOptions &options)
+{
+    std::vector<ClampingOption> out;
+    const auto grip = gripLength(project);
+    for (const ClampingMethod method :
+         {ClampingMethod::Chuck, ClampingMethod::BetweenCentres, ClampingMethod::ChuckTailstock}) {
+        ClampingOption o;
+        o.method = method;
+        const bool chuck = method != ClampingMethod::BetweenCentres;
+        if (chuck && !grip) {
+            o.reason = tr("no cylinder at the left end of the part for the chuck jaws to grip");
+            out.push_back(o);
+            continue;
+        }
+        Project p = project;
+        p.clamping.method = method;
+        p.clamping.clampedLength_mm = chuck ? *grip : 0.0;
+        o.clampedLength_mm = p.clamping.clampedLength_mm;
+        const PlanningProblem::BuildResult built = PlanningProblem::build(p, data);
+        if (!built.problem) {
+            o.reason = built.diagnostics.empty() ? tr("cannot be planned") : built.diagnostics.front().toString();
+            out.push_back(o);
+            continue;
+        }
+        o.possible = true;
+        o.plan = optimisePlan(*built.problem, options);
+        o.reason = describe(o, p);
+        out.push_back(o);
+    }
+    std::stable_sort(out.begin(), out.end(), [](const ClampingOption &a, const ClampingOption &b) {
+        auto key = [](const ClampingOption &o) {
+            if (!o.possible)
+                return std::pair{2, 0.0};
+            if (!o.plan.feasible)
+                return std::pair{1, o.plan.evaluation.totalViolation()};
+            return std::pair{0, o.plan.evaluation.objective};
+        };
+        return key(a) < key(b);
+    });
+    return out;
+}
+
+} // namespace tolturn

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/compensation.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+struct Compensation {
+    Q_DECLARE_TR_FUNCTIONS(Compensation)
+};
+
+QString tr(const char *text)
+{
+    return Compensation::tr(text);
+}
+
+constexpr double kUmPerMm = 1000.0;
+
+// Rounds a programmed radius so that the diameter is a whole micrometre (the path's resolution).
+double toResolution(double radius_mm)
+{
+    return std::round(2.0 * radius_mm * kUmPerMm) / (2.0 * kUmPerMm);
+}
+
+int severity(Verdict v)
+{
+    switch (v) {
+    case Verdict::NeedsProfileCorrection:
+        return 2;
+    case Verdict::PassesAfterOffset:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+} // namespace
+
+const FeatureCompensation *CompensationPlan::find(const QString &featureId) const
+{
+    for (const FeatureCompensation &f : features) {
+        if (f.featureId == featureId)
+            return &f;
+    }
+    return nullptr;
+}
+
+QString compensationKeyword(CompensationAction action)
+{
+    switch (action) {
+    case CompensationAction::None:
+        return QStringLiteral("none");
+    case CompensationAction::ConstantOffset:
+        return QStringLiteral("offset");
+    case CompensationAction::ProfileCorrection:
+        return QStringLiteral("profile");
+    }
+    return {};
+}
+
+CompensationPlan planCompensation(const Project &project, const DeviationResult &deviation,
+                                  const std::vector<ToleranceEvaluation> &verdicts)
+{
+    CompensationPlan plan;
+    for (const FeatureDeviation &f : deviation.features) {
+        FeatureCompensation c;
+        c.featureId = f.featureId;
+        c.side = f.side;
+        int worst = 0;
+        double offset = 0.0;
+        for (std::size_t i = 0; i < project.tolerances.size() && i < verdicts.size(); ++i) {
+            if (project.tolerances[i].featureId != f.featureId)
+                continue;
+            c.tolerances << project.tolerances[i].id;
+            const int s = severity(verdicts[i].verdict);
+            if (s > worst)
+                worst = s;
+            if (verdicts[i].offset_um)
+                offset = *verdicts[i].offset_um;
+        }
+        double lo = 1e300;
+        double hi = -1e300;
+        for (const Station &st : f.stations) {
+            lo = std::min(lo, st.radiusError_mm);
+            hi = std::max(hi, st.radiusError_mm);
+        }
+        c.residualBefore_um = std::max(std::abs(lo), std::abs(hi)) * kUmPerMm;
+        c.residualAfter_um = c.residualBefore_um;
+        if (worst == 1) {
+            // A constant offset of the diameter; the radius errors shift by half of it.
+            c.action = CompensationAction::ConstantOffset;
+            c.offset_um = offset;
+            c.residualAfter_um =
+                std::max(std::abs(lo * kUmPerMm + 0.5 * offset), std::abs(hi * kUmPerMm + 0.5 * offset));
+        } else if (worst == 2) {
+            c.action = CompensationAction::ProfileCorrection;
+            // Against the deviation: a bore's radius error is the negative of its material left.
+            double residual = 0.0;
+            for (const Station &st : f.stations) {
+                const double programmed = toResolution(st.nominalRadius_mm - st.radiusError_mm);
+                c.correctedPath.push_back({st.z_mm, programmed});
+                residual = std::max(residual, std::abs(programmed + st.radiusError_mm - st.nominalRadius_mm));
+            }
+            c.residualAfter_um = residual * kUmPerMm;
+        }
+        plan.features.push_back(c);
+    }
+    for (std::size_t i = 0; i < project.tolerances.size() && i < verdicts.size(); ++i) {
+        const Tolerance &t = project.tolerances[i];
+        const auto feature = findFeature(project.part, t.featureId);
+        if (feature && feature->segment->kind == SegmentKind::Face &&
+            verdicts[i].verdict == Verdict::NeedsProfileCorrection) {
+            FeatureCompensation c;
+            c.featureId = t.featureId;
+            c.side = feature->side;
+            c.tolerances << t.id;
+            c.note = tr("the face's conicity needs a correction along Z, which TolTurn does not generate: reduce the "
+                        "feed or change the clamping");
+            plan.features.push_back(c);
+        }
+    }
+    return plan;
+}
+
+} // namespace tolturn

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/cutting_window.h"
+
+#include <algorithm>
+#include <atomic>
+#include <map>
+#include <thread>
+
+namespace tolturn {
+
+std::vector<std::pair<QString, int>> CuttingWindow::boundaries() const
+{
+    std::map<QString, int> count;
+    for (const WindowCell &c : cells) {
+        if (!c.feasible)
+            ++count[c.bindingLabel];
+    }
+    std::vector<std::pair<QString, int>> out(count.begin(), count.end());
+    std::sort(out.begin(), out.end(), [](const auto &a, const auto &b) { return a.second > b.second; });
+    return out;
+}
+
+namespace {
+
+double lerp(const ValueRange &r, int i, int n)
+{
+    return n <= 1 ? r.min : r.min + (r.max - r.min) * static_cast<double>(i) / static_cast<double>(n - 1);
+}
+
+void fillColumns(const PlanningProblem &problem, CuttingWindow &w, int firstColumn, int step,
+                 const WindowOptions &options, std::atomic<int> &done, std::atomic<bool> &cancel)
+{
+    for (int column = firstColumn; column < w.columns && !cancel; column += step) {
+        const double feed = lerp(w.feed, column, w.columns);
+        // In the feed–speed plane the tolerance constraints depend on the feed only: once per column.
+        std::vector<ConstraintValue> tolerances;
+        if (w.plane == WindowPlane::FeedSpeed) {
+            PassConditions pass = w.base.finishing;
+            pass.feed_mm_rev = feed;
+            tolerances = problem.toleranceConstraints(pass);
+        }
+        for (int row = 0; row < w.rows; ++row) {
+            PlanCandidate c = w.base;
+            c.finishing.feed_mm_rev = feed;
+            const double y = lerp(w.other, row, w.rows);
+            if (w.plane == WindowPlane::FeedSpeed)
+                c.finishing.cuttingSpeed_m_min = y;
+            else
+                c.finishing.depthOfCut_mm = y;
+            const CandidateEvaluation e =
+                problem.evaluate(c, w.plane == WindowPlane::FeedSpeed ? &tolerances : nullptr);
+            WindowCell &cell = w.cells[static_cast<std::size_t>(row * w.columns + column)];
+            cell.x = feed;
+            cell.y = y;
+            cell.objective = e.objective;
+            cell.feasible = e.feasible(1e-9);
+            if (!cell.feasible) {
+                const ConstraintValue *worst = e.mostViolated();
+                cell.binding = worst->name;
+                cell.bindingLabel = worst->label();
+            }
+        }
+        const int finished = ++done;
+        if (options.progress && firstColumn == 0 && !options.progress(double(finished) / w.columns))
+            cancel = true;
+    }
+}
+
+} // namespace
+
+CuttingWindow cuttingWindow(const PlanningProblem &problem, WindowPlane plane, const PlanCandidate &base,
+                            const WindowOptions &options)
+{
+    CuttingWindow w;
+    w.plane = plane;
+    w.columns = std::max(options.columns, 2);
+    w.rows = std::max(options.rows, 2);
+    w.feed = problem.feedRange();
+    w.other = plane == WindowPlane::FeedSpeed ? problem.speedRange() : problem.depthRange();
+    w.base = base;
+    w.cells.resize(static_cast<std::size_t>(w.columns * w.rows));
+    std::atomic<int> done{0};
+    std::atomic<bool> cancel{false};
+    const int threads = std::max(1, options.threads);
+    std::vector<std::thread> workers;
+    for (int t = 1; t < threads; ++t)
+        workers.emplace_back(fillColumns, std::cref(problem), std::ref(w), t, threads, std::cref(options),
+                             std::ref(done), std::ref(cancel));
+    fillColumns(problem, w, 0, threads, options, done, cancel);
+    for (std::thread &t : workers)
+        t.join();
+    w.cancelled = cancel;
+    return w;
+}
+
+} // namespace tolturn

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/optimiser.h"
+
+#include <nlopt.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tolturn {
+
+namespace {
+
+constexpr double kPenalty = 1000.0;
+
+struct Context {
+    Context(const PlanningProblem &p, int k, const PlanBox &box, const OptimisationOptions &o)
+        : problem(&p)
+        , roughingPasses(k)
+        , lower(box.lower)
+        , upper(box.upper)
+        , options(&o)
+    {
+    }
+
+    const PlanningProblem *problem;
+    int roughingPasses;
+    std::vector<double> lower, upper;
+    const OptimisationOptions *options;
+    int evaluations = 0;
+    double done = 0.0;  // fraction of the whole run before this search
+    double share = 0.0; // fraction of the whole run this search stands for
+    int budget = 1;
+    bool cancelled = false;
+
+    [[nodiscard]] std::vector<double> denormalise(const double *u) const
+    {
+        std::vector<double> x(lower.size());
+        for (std::size_t i = 0; i < x.size(); ++i)
+            x[i] = lower[i] + u[i] * (upper[i] - lower[i]);
+        return x;
+    }
+
+    CandidateEvaluation evaluate(const double *u)
+    {
+        ++evaluations;
+        if (options->progress && evaluations % 64 == 0 &&
+            !options->progress(done + share * std::min(1.0, double(evaluations) / budget))) {
+            cancelled = true;
+            throw nlopt::forced_stop();
+        }
+        return problem->evaluate(candidateAt(denormalise(u), roughingPasses));
+    }
+};
+
+double penalised(unsigned n, const double *u, double *, void *data)
+{
+    (void)n;
+    auto *c = static_cast<Context *>(data);
+    const CandidateEvaluation e = c->evaluate(u);
+    return e.objective * (1.0 + kPenalty * e.totalViolation());
+}
+
+double objectiveOnly(unsigned, const double *u, double *, void *data)
+{
+    auto *c = static_cast<Context *>(data);
+    return c->evaluate(u).objective;
+}
+
+double violationOnly(unsigned, const double *u, double *, void *data)
+{
+    auto *c = static_cast<Context *>(data);
+    return c->evaluate(u).totalViolation();
+}
+
+void constraints(unsigned m, double *result, unsigned, const double *u, double *, void *data)
+{
+    auto *c = static_cast<Context *>(data);
+    const CandidateEvaluation e = c->evaluate(u);
+    for (unsigned i = 0; i < m && i < e.constraints.size(); ++i)
+        result[i] = e.constraints[i].violation();
+}
+
+std::vector<double> runSearch(nlopt::algorithm algorithm, Context &context, std::vector<double> start, int evaluations,
+                              nlopt::func objective, bool withConstraints)
+{
+    const unsigned n = static_cast<unsigned>(start.size());
+    nlopt::opt opt(algorithm, n);
+    opt.set_lower_bounds(std::vector<double>(n, 0.0));
+    opt.set_upper_bounds(std::vector<double>(n, 1.0));
+    opt.set_min_objective(objective, &context);
+    opt.set_maxeval(evaluations);
+    if (withConstraints) {
+        std::vector<double> u(start);
+        const auto count = context.problem->evaluate(candidateAt(context.denormalise(u.data()), context.roughingPasses))
+                               .constraints.size();
+        if (count > 0)
+            opt.add_inequality_mconstraint(constraints, &context, std::vector<double>(count, 1e-9));
+        opt.set_xtol_rel(1e-7);
+    }
+    double value = 0.0;
+    try {
+        opt.optimize(start, value);
+    } catch (const nlopt::forced_stop &) {
+    } catch (const std::exception &) {
+        // A failed local refinement leaves the start point, which the caller evaluates itself.
+    }
+    return start;
+}
+
+} // namespace
+
+bool PlanBox::empty() const
+{
+    for (std::size_t i = 0; i < lower.size(); ++i) {
+        if (lower[i] > upper[i] + 1e-12)
+            return true;
+    }
+    return lower.empty();
+}
+
+PlanBox planBox(const PlanningProblem &p, int k)
+{
+    const ValueRange &v = p.speedRange();
+    const ValueRange &f = p.feedRange();
+    const ValueRange &a = p.depthRange();
+    const double stock = p.radialStock_mm();
+    PlanBox box;
+    double apLow = a.min;
+    double apHigh = std::min(a.max, stock);
+    if (k == 0) {
+        apLow = apHigh = stock; // the finishing pass takes all the stock
+        if (stock < a.min || stock > a.max)
+            apLow = apHigh + 1.0;
+    } else {
+        // k passes of depth (stock - a_f)/k within [a.min, a.max]
+        apLow = std::max(apLow, stock - k * a.max);
+        apHigh = std::min(apHigh, stock - k * a.min);
+    }
+    box.lower = {v.min, f.min, apLow, v.min, f.min};
+    box.upper = {v.max, f.max, apHigh, v.max, f.max};
+    return box;
+}
+
+PlanCandidate candidateAt(const std::vector<double> &x, int roughingPasses)
+{
+    PlanCandidate c;
+    c.finishing = {x[0], x[1], x[2]};
+    c.roughing = {x[3], x[4], 0.0};
+    c.roughingPasses = roughingPasses;
+    return c;
+}
+
+namespace {
+
+struct SearchOutcome {
+    PlanCandidate candidate;
+    CandidateEvaluation evaluation;
+};
+
+// Global search (penalised DIRECT-L) and, when `localEvaluations` > 0, a local refinement with
+// the constraints (COBYLA), for one number of roughing passes.
+SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEvaluations, int localEvaluations,
+                           const OptimisationOptions &options, double done, double share, PlanResult &result)
+{
+    const PlanBox box = planBox(problem, k);
+    Context c(problem, k, box, options);
+    c.done = done;
+    c.share = share;
+    c.budget = globalEvaluations + localEvaluations;
+    std::vector<double> u =
+        runSearch(nlopt::GN_DIRECT_L, c, std::vector<double>(5, 0.5), globalEvaluations, penalised, false);
+    if (!c.cancelled && localEvaluations > 0)
+        u = runSearch(nlopt::LN_COBYLA, c, u, localEvaluations, objectiveOnly, true);
+    result.evaluations += c.evaluations;
+    result.cancelled = result.cancelled || c.cancelled;
+    SearchOutcome outcome;
+    outcome.candidate = candidateAt(c.denormalise(u.data()), k);
+    outcome.evaluation = problem.evaluate(outcome.candidate);
+    return outcome;
+}
+
+double rank(const CandidateEvaluation &e)
+{
+    return e.feasible(1e-6) ? e.objective : std::numeric_limits<double>::max() / 2 + e.totalViolation();
+}
+
+} // namespace
+
+PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOptions &options)
+{
+    PlanResult result;
+    result.notes = problem.notes();
+    // Every number of roughing passes some finishing allowance in the insert's depth range allows.
+    const int fewest = problem.roughingPassRange(problem.depthRange().max).first;
+    const int most = problem.roughingPassRange(problem.depthRange().min).second;
+    std::vector<int> counts;
+    for (int k = fewest; k <= most; ++k) {
+        if (!planBox(problem, k).empty())
+            counts.push_back(k);
+    }
+    // A coarse look at every number of passes, then the full search where it looks best.
+    constexpr int kCoarse = 120;
+    constexpr std::size_t kRefined = 2;
+    std::vector<std::pair<double, int>> ranked;
+    for (std::size_t i = 0; i < counts.size() && !result.cancelled; ++i) {
+        const SearchOutcome coarse = searchPasses(problem, counts[i], kCoarse, 0, options,
+                                                  0.3 * static_cast<double>(i) / static_cast<double>(counts.size()),
+                                                  0.3 / static_cast<double>(counts.size()), result);
+        ranked.emplace_back(rank(coarse.evaluation), counts[i]);
+    }
+    std::sort(ranked.begin(), ranked.end());
+    double best = std::numeric_limits<double>::infinity();
+    double leastViolation = std::numeric_limits<double>::infinity();
+    PlanCandidate leastViolating;
+    const std::size_t refined = std::min(kRefined, ranked.size());
+    for (std::size_t i = 0; i < refined && !result.cancelled; ++i) {
+        const SearchOutcome o =
+            searchPasses(problem, ranked[i].second, options.globalEvaluations, options.localEvaluations, options,
+                         0.3 + 0.7 * static_cast<double>(i) / static_cast<double>(refined),
+                         0.7 / static_cast<double>(refined), result);
+        if (o.evaluation.feasible(1e-6) && o.evaluation.objective < best) {
+            best = o.evaluation.objective;
+            result.feasible = true;
+            result.candidate = o.candidate;
+            result.evaluation = o.evaluation;
+        } else if (!result.feasible && o.evaluation.totalViolation() < leastViolation) {
+            leastViolation = o.evaluation.totalViolation();
+            leastViolating = o.candidate;
+        }
+    }
+    if (!result.feasible && !counts.empty() && !result.cancelled) {
+        // Nothing feasible: the plan that violates the constraints least, and what it violates.
+        const int k = leastViolating.roughingPasses;
+        const PlanBox box = planBox(problem, k);
+        Context c(problem, k, box, options);
+        c.budget = options.globalEvaluations;
+        std::vector<double> u = runSearch(nlopt::GN_DIRECT_L, c, std::vector<double>(5, 0.5), options.globalEvaluations,
+                                          violationOnly, false);
+        result.evaluations += c.evaluations;
+        result.candidate = candidateAt(c.denormalise(u.data()), k);
+        result.evaluation = problem.evaluate(result.candidate);
+        for (const ConstraintValue &v : result.evaluation.constraints) {
+            if (v.violation() > 1e-6)
+                result.conflicts.push_back(v);
+        }
+    }
+    for (const ConstraintValue &v : result.evaluation.constraints) {
+        if (std::abs(v.violation()) <= 0.01)
+            result.binding.push_back(v);
+    }
+    return result;
+}
+
+} // namespace tolturn

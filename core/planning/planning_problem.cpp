@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/planning_problem.h"
+
+#include "core/cutting/cutting_quantities.h"
+#include "core/part/profile_geometry.h"
+#include "core/tolerance/evaluation.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tolturn {
+
+namespace {
+
+struct Planning {
+    Q_DECLARE_TR_FUNCTIONS(Planning)
+};
+
+QString tr(const char *text)
+{
+    return Planning::tr(text);
+}
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kStations = 11; // tool positions per feature for tolerances and times
+
+} // namespace
+
+QString ConstraintValue::label() const
+{
+    if (name == QLatin1String("tolerances"))
+        return tr("tolerance %1").arg(subject);
+    return QStringLiteral("%1 (%2)").arg(name, subject);
+}
+
+bool CandidateEvaluation::feasible(double slack) const
+{
+    return std::all_of(constraints.begin(), constraints.end(),
+                       [slack](const ConstraintValue &c) { return c.violation() <= slack; });
+}
+
+const ConstraintValue *CandidateEvaluation::mostViolated() const
+{
+    const ConstraintValue *worst = nullptr;
+    for (const ConstraintValue &c : constraints) {
+        if (worst == nullptr || c.violation() > worst->violation())
+            worst = &c;
+    }
+    return worst;
+}
+
+double CandidateEvaluation::totalViolation() const
+{
+    double sum = 0.0;
+    for (const ConstraintValue &c : constraints)
+        sum += std::max(0.0, c.violation());
+    return sum;
+}
+
+PlanningProblem::BuildResult PlanningProblem::build(const Project &project, const DataLibrary &data)
+{
+    BuildResult result;
+    Diagnostics &out = result.diagnostics;
+    const PlanningSettings &s = project.planning;
+    if (!s.cuttingSpeed_m_min || !s.feed_mm_rev || !s.depthOfCut_mm) {
+        out.push_back(makeError(QStringLiteral("planning.ranges"),
+                                tr("the optimiser needs the insert's ranges of cutting speed, feed and depth of cut "
+                                   "(from its maker's catalogue), with their source")));
+        return result;
+    }
+    DeviationOptions options;
+    options.stationsPerFeature = kStations;
+    Project withPass = project;
+    if (withPass.passes.empty())
+        withPass.passes.push_back(
+            {PassKind::Finishing, s.cuttingSpeed_m_min->min, s.feed_mm_rev->min, s.depthOfCut_mm->min});
+    InputsResult inputs = resolveTurningInputs(withPass, data, options);
+    out.insert(out.end(), inputs.diagnostics.begin(), inputs.diagnostics.end());
+    auto forces = projectForceModel(withPass, data, out);
+    if (!inputs.inputs || !forces)
+        return result;
+
+    auto problem = std::shared_ptr<PlanningProblem>(new PlanningProblem);
+    PlanningProblem &p = *problem;
+    p.m_project = withPass;
+    p.m_inputs = *inputs.inputs;
+    p.m_forceModel = *forces;
+    p.m_speed = *s.cuttingSpeed_m_min;
+    p.m_feed = *s.feed_mm_rev;
+    p.m_depth = *s.depthOfCut_mm;
+    p.m_notes = p.m_inputs.notes;
+    // The finishing pass's deflection with the thinnest stock it may leave on the uncut side
+    // (the smallest depth): the least stiff section, so the tolerance constraints err on the safe side.
+    p.m_table = buildInfluenceTable(project.part, p.m_inputs, kStations, p.m_depth.min);
+    p.m_maxPower_kW = s.maxPower_kW ? s.maxPower_kW : p.m_inputs.maxPower_kW;
+    p.m_maxTorque_Nm = s.maxTorque_Nm;
+    p.m_maxSpeed_rpm = s.maxSpindleSpeed_rpm ? s.maxSpindleSpeed_rpm : p.m_inputs.maxSpindleSpeed_rpm;
+    p.m_stockDiameter_mm = project.part.stockDiameter_mm;
+    const double stockRadius = 0.5 * project.part.stockDiameter_mm;
+    for (const FeatureInfluence &f : p.m_table.features) {
+        std::vector<std::pair<double, double>> path;
+        for (std::size_t i = 0; i < f.z_mm.size(); ++i) {
+            path.emplace_back(f.z_mm[i], 2.0 * f.nominalRadius_mm[i]);
+            p.m_largestCutDiameter_mm = std::max(p.m_largestCutDiameter_mm, 2.0 * f.nominalRadius_mm[i]);
+            if (f.side == ContourSide::Outer) {
+                p.m_outerProfile.emplace_back(f.z_mm[i], f.nominalRadius_mm[i]);
+                p.m_radialStock_mm = std::max(p.m_radialStock_mm, stockRadius - f.nominalRadius_mm[i]);
+            }
+        }
+        p.m_finishPaths.push_back(std::move(path));
+    }
+    if (!s.taylorC_m_min || !s.taylorN)
+        p.m_notes << tr("No Taylor constants in the project's planning data: tool life and tool cost are not in the "
+                        "objective, and there is no tool-life constraint.");
+    if (!p.m_maxTorque_Nm)
+        p.m_notes << tr("No spindle torque limit given (planning.max_torque_Nm): torque is not constrained.");
+    result.problem = problem;
+    return result;
+}
+
+bool PlanningProblem::isEnabled(const QString &constraint) const
+{
+    return !m_project.planning.disabledConstraints.contains(constraint);
+}
+
+CuttingForces PlanningProblem::forces(double feed_mm_rev, double depth_mm) const
+{
+    return m_forceModel(feed_mm_rev, depth_mm);
+}
+
+std::optional<double> PlanningProblem::toolLife_min(double cuttingSpeed_m_min) const
+{
+    const PlanningSettings &s = m_project.planning;
+    if (!s.taylorC_m_min || !s.taylorN)
+        return std::nullopt;
+    return std::pow(*s.taylorC_m_min / cuttingSpeed_m_min, 1.0 / *s.taylorN); // Taylor (1907): v T^n = C
+}
+
+// Time of the finishing pass along every turned feature: dt = dz / (f n(z)), with n = 1000 v/(pi D)
+// at constant cutting speed (G96) and capped at the machine's maximum (G92); trapezoidal rule.
+double PlanningProblem::finishingTime_min(const PassConditions &pass) const
+{
+    double time = 0.0;
+    for (const auto &path : m_finishPaths) {
+        for (std::size_t i = 1; i < path.size(); ++i) {
+            auto perMm = [&](double diameter) {
+                double n = spindleSpeed_rpm(pass.cuttingSpeed_m_min, std::max(diameter, 1e-3));
+                if (m_maxSpeed_rpm)
+                    n = std::min(n, *m_maxSpeed_rpm);
+                return 1.0 / (pass.feed_mm_rev * n);
+            };
+            const double dz = path[i].first - path[i - 1].first;
+            time += 0.5 * dz * (perMm(path[i].second) + perMm(path[i - 1].second));
+        }
+    }
+    return time;
+}
+
+// Material the roughing passes remove: the bar down to the finishing allowance over every outer
+// turned feature, V = integral of pi ((D_s/2)^2 - (r + a_f)^2) dz.
+double PlanningProblem::roughingVolume_mm3(double finishingDepth_mm) const
+{
+    const double rs = 0.5 * m_stockDiameter_mm;
+    double volume = 0.0;
+    for (std::size_t i = 1; i < m_outerProfile.size(); ++i) {
+        const double dz = m_outerProfile[i].first - m_outerProfile[i - 1].first;
+        if (dz <= 0.0)
+            continue;
+        auto area = [&](double r) {
+            const double rf = std::min(r + finishingDepth_mm, rs);
+            return kPi * (rs * rs - rf * rf);
+        };
+        volume += 0.5 * dz * (area(m_outerProfile[i].second) + area(m_outerProfile[i - 1].second));
+    }
+    return volume;
+}
+
+std::pair<int, int> PlanningProblem::roughingPassRange(double finishingDepth_mm) const
+{
+    const double left = m_radialStock_mm - finishingDepth_mm;
+    if (left <= 1e-9)
+        return {0, 0};
+    const int fewest = std::max(1, static_cast<int>(std::ceil(left / m_depth.max - 1e-9)));
+    const int most = std::max(fewest, static_cast<int>(std::floor(left / m_depth.min + 1e-9)));
+    return {fewest, most};
+}
+
+void PlanningProblem::addPassLimits(const QString &subject, const PassConditions &pass, const CuttingForces &f,
+                                    double largestDiameter_mm, std::vector<ConstraintValue> &out) const
+{
+    if (isEnabled(QStringLiteral("power")) && m_maxPower_kW)
+        out.push_back({QStringLiteral("power"), subject, cuttingPower_kW(f.tangential_N, pass.cuttingSpeed_m_min),
+                       *m_maxPower_kW, QStringLiteral("kW")});
+    if (isEnabled(QStringLiteral("torque")) && m_maxTorque_Nm)
+        out.push_back({QStringLiteral("torque"), subject, spindleTorque_Nm(f.tangential_N, largestDiameter_mm),
+                       *m_maxTorque_Nm, QStringLiteral("N·m")});
+    if (isEnabled(QStringLiteral("force")) && m_project.planning.maxForce_N)
+        out.push_back(
+            {QStringLiteral("force"), subject, f.tangential_N, *m_project.planning.maxForce_N, QStringLiteral("N")});
+    // The speed the cutting speed asks for on the largest diameter cut must be reachable.
+    if (isEnabled(QStringLiteral("spindle_speed")) && m_maxSpeed_rpm)
+        out.push_back({QStringLiteral("spindle_speed"), subject,
+                       spindleSpeed_rpm(pass.cuttingSpeed_m_min, largestDiameter_mm), *m_maxSpeed_rpm,
+                       QStringLiteral("rpm")});
+    const auto life = toolLife_min(pass.cuttingSpeed_m_min);
+    if (isEnabled(QStringLiteral("tool_life")) && life && m_project.planning.minToolLife_min)
+        out.push_back({QStringLiteral("tool_life"), subject, *m_project.planning.minToolLife_min, *life,
+                       QStringLiteral("min")}); // T_min <= T
+}
+
+std::vector<ConstraintValue> PlanningProblem::toleranceConstraints(const PassConditions &pass) const
+{
+    std::vector<ConstraintValue> out;
+    if (!isEnabled(QStringLiteral("tolerances")) || m_project.tolerances.empty())
+        return out;
+    const CuttingForces f = forces(pass.feed_mm_rev, pass.depthOfCut_mm);
+    TurningInputs in = m_inputs;
+    in.forces = f;
+    in.pass.cuttingSpeed_m_min = pass.cuttingSpeed_m_min;
+    in.pass.feed_mm_rev = pass.feed_mm_rev;
+    in.pass.depthOfCut_mm = pass.depthOfCut_mm;
+    const DeviationResult deviation = evaluateInfluenceTable(m_project.part, m_table, in);
+    for (const ToleranceEvaluation &e : evaluateTolerances(m_project, deviation)) {
+        if (e.value_um && e.limit_um && *e.limit_um > 0.0)
+            out.push_back(
+                {QStringLiteral("tolerances"), e.toleranceId, *e.value_um, *e.limit_um, QStringLiteral("µm")});
+    }
+    return out;
+}
+
+void PlanningProblem::addFinishingLimits(const PassConditions &pass, const CuttingForces &f,
+                                         std::vector<ConstraintValue> &out) const
+{
+    const PlanningSettings &s = m_project.planning;
+    if (isEnabled(QStringLiteral("roughness"))) {
+        if (s.maxRa_um)
+            out.push_back({QStringLiteral("roughness"), QStringLiteral("Ra"),
+                           theoreticalRa_um(pass.feed_mm_rev, m_inputs.noseRadius_mm), *s.maxRa_um,
+                           QStringLiteral("µm")});
+        if (s.maxRz_um)
+            out.push_back({QStringLiteral("roughness"), QStringLiteral("Rz"),
+                           theoreticalRz_um(pass.feed_mm_rev, m_inputs.noseRadius_mm), *s.maxRz_um,
+                           QStringLiteral("µm")});
+    }
+    addPassLimits(QStringLiteral("finishing"), pass, f, m_largestCutDiameter_mm, out);
+}
+
+CandidateEvaluation PlanningProblem::evaluate(const PlanCandidate &c,
+                                              const std::vector<ConstraintValue> *tolerances) const
+{
+    CandidateEvaluation e;
+    e.constraints = tolerances ? *tolerances : toleranceConstraints(c.finishing);
+    e.finishingForces = forces(c.finishing.feed_mm_rev, c.finishing.depthOfCut_mm);
+    addFinishingLimits(c.finishing, e.finishingForces, e.constraints);
+    e.finishingTime_min = finishingTime_min(c.finishing);
+    const double leftForRoughing = m_radialStock_mm - c.finishing.depthOfCut_mm;
+    PassConditions roughing = c.roughing;
+    if (c.roughingPasses > 0 && leftForRoughing > 0.0) {
+        roughing.depthOfCut_mm = leftForRoughing / c.roughingPasses;
+        e.roughingForces = forces(roughing.feed_mm_rev, roughing.depthOfCut_mm);
+        // Cutting time of the roughing passes: removed volume over the removal rate 1000 v f a_p [mm³/min].
+        e.roughingTime_min = roughingVolume_mm3(c.finishing.depthOfCut_mm) /
+                             (1000.0 * roughing.cuttingSpeed_m_min * roughing.feed_mm_rev * roughing.depthOfCut_mm);
+        addPassLimits(QStringLiteral("roughing"), roughing, e.roughingForces, m_stockDiameter_mm, e.constraints);
+        if (isEnabled(QStringLiteral("roughing_depth"))) {
+            e.constraints.push_back({QStringLiteral("roughing_depth"), QStringLiteral("roughing"),
+                                     roughing.depthOfCut_mm, m_depth.max, QStringLiteral("mm")});
+            e.constraints.push_back({QStringLiteral("roughing_depth"), QStringLiteral("roughing"), m_depth.min,
+                                     roughing.depthOfCut_mm, QStringLiteral("mm")}); // a_min <= a_r
+        }
+    } else if (leftForRoughing > 1e-9 && isEnabled(QStringLiteral("roughing_depth"))) {
+        // No roughing pass but stock left: the finishing pass would have to take it all.
+        e.constraints.push_back(
+            {QStringLiteral("roughing_depth"), QStringLiteral("roughing"), leftForRoughing, 0.0, QStringLiteral("mm")});
+    }
+    const auto lifeFinishing = toolLife_min(c.finishing.cuttingSpeed_m_min);
+    const auto lifeRoughing = toolLife_min(roughing.cuttingSpeed_m_min);
+    if (lifeFinishing)
+        e.toolEdgesPerPart = e.finishingTime_min / *lifeFinishing +
+                             (e.roughingTime_min > 0.0 && lifeRoughing ? e.roughingTime_min / *lifeRoughing : 0.0);
+    // Time and cost per part (classic machining economics, e.g. Kalpakjian & Schmid §21.12):
+    //   t = t_handling + t_cut + t_change (t_cut/T);   C = M t + C_edge (t_cut/T)
+    const PlanningSettings &s = m_project.planning;
+    e.time_min =
+        s.handlingTime_min + e.finishingTime_min + e.roughingTime_min + s.toolChangeTime_min * e.toolEdgesPerPart;
+    e.cost = s.machineRate_per_min * e.time_min + s.toolCostPerEdge * e.toolEdgesPerPart;
+    e.objective = s.objective == PlanningObjective::Time ? e.time_min : e.cost;
+    return e;
+}
+
+} // namespace tolturn

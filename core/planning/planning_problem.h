@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+#include "core/data/data_library.h"
+#include "core/deviation/deviation_model.h"
+#include "core/project/project.h"
+
+#include <QString>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+struct PassConditions {
+    double cuttingSpeed_m_min = 0.0;
+    double feed_mm_rev = 0.0;
+    double depthOfCut_mm = 0.0;
+};
+
+// A plan: the finishing pass over the finishing allowance, and `roughingPasses` equal roughing
+// passes that take the rest of the stock (docs/planning.md §1).
+struct PlanCandidate {
+    PassConditions finishing;
+    PassConditions roughing; // depthOfCut_mm follows from the stock and the number of passes
+    int roughingPasses = 0;
+};
+
+// One constraint at one candidate: satisfied when value <= limit (a lower bound is written as
+// limit/value). `name` is the constraint keyword, `subject` what it applies to ("finishing",
+// "roughing", or a tolerance id).
+struct ConstraintValue {
+    QString name;
+    QString subject;
+    double value = 0.0;
+    double limit = 0.0;
+    QString unit;
+
+    // g = value/limit - 1: <= 0 satisfied; the relative violation when positive.
+    [[nodiscard]] double violation() const { return limit > 0.0 ? value / limit - 1.0 : (value > 0.0 ? 1e9 : -1.0); }
+
+    [[nodiscard]] QString label() const; // "tolerance T1", "power (finishing)"
+};
+
+struct CandidateEvaluation {
+    double objective = 0.0; // minutes or money per part, as the project's objective says
+    double time_min = 0.0;
+    double cost = 0.0;
+    double finishingTime_min = 0.0;
+    double roughingTime_min = 0.0;
+    double toolEdgesPerPart = 0.0; // 0 when no tool life is given
+    std::vector<ConstraintValue> constraints;
+    CuttingForces finishingForces;
+    CuttingForces roughingForces;
+
+    [[nodiscard]] bool feasible(double slack = 1e-9) const;
+    [[nodiscard]] const ConstraintValue *mostViolated() const;
+    [[nodiscard]] double totalViolation() const;
+};
+
+// Everything the optimiser, the cutting window and the clamping advisor need about one project,
+// prepared once: the resolved inputs, the influence table of the finishing pass, the turned
+// lengths and the stock to remove.
+class PlanningProblem {
+public:
+    struct BuildResult {
+        std::shared_ptr<const PlanningProblem> problem;
+        Diagnostics diagnostics;
+    };
+
+    static BuildResult build(const Project &project, const DataLibrary &data);
+
+    // `tolerances`, when given, are the tolerance constraints of this finishing feed and depth,
+    // computed before (they do not depend on the cutting speed): the window maps reuse them.
+    [[nodiscard]] CandidateEvaluation evaluate(const PlanCandidate &candidate,
+                                               const std::vector<ConstraintValue> *tolerances = nullptr) const;
+    // The tolerance constraints of a finishing pass (the deviation it leaves against each tolerance).
+    [[nodiscard]] std::vector<ConstraintValue> toleranceConstraints(const PassConditions &pass) const;
+
+    [[nodiscard]] const Project &project() const { return m_project; }
+
+    [[nodiscard]] const TurningInputs &inputs() const { return m_inputs; }
+
+    [[nodiscard]] const ValueRange &speedRange() const { return m_speed; }
+
+    [[nodiscard]] const ValueRange &feedRange() const { return m_feed; }
+
+    [[nodiscard]] const ValueRange &depthRange() const { return m_depth; }
+
+    // Radial stock between the bar and the deepest turned feature [mm].
+    [[nodiscard]] double radialStock_mm() const { return m_radialStock_mm; }
+
+    // Roughing passes that can take the stock left by a finishing allowance in [min, max] depth range.
+    [[nodiscard]] std::pair<int, int> roughingPassRange(double finishingDepth_mm) const;
+    [[nodiscard]] bool isEnabled(const QString &constraint) const;
+
+    [[nodiscard]] QStringList notes() const { return m_notes; }
+
+private:
+    PlanningProblem() = default;
+    [[nodiscard]] CuttingForces forces(double feed_mm_rev, double depth_mm) const;
+    [[nodiscard]] double finishingTime_min(const PassConditions &pass) const;
+    [[nodiscard]] double roughingVolume_mm3(double finishingDepth_mm) const;
+    void addPassLimits(const QString &subject, const PassConditions &pass, const CuttingForces &f,
+                       double largestDiameter_mm, std::vector<ConstraintValue> &out) const;
+    void addFinishingLimits(const PassConditions &pass, const CuttingForces &f,
+                            std::vector<ConstraintValue> &out) const;
+    [[nodiscard]] std::optional<double> toolLife_min(double cuttingSpeed_m_min) const;
+
+    Project m_project;
+    TurningInputs m_inputs;
+    InfluenceTable m_table;
+    std::function<CuttingForces(double, double)> m_forceModel;
+    ValueRange m_speed, m_feed, m_depth;
+    double m_radialStock_mm = 0.0;
+    double m_largestCutDiameter_mm = 0.0;
+    double m_stockDiameter_mm = 0.0;
+    std::optional<double> m_maxPower_kW, m_maxTorque_Nm, m_maxSpeed_rpm;
+    QStringList m_notes;
+    // Turned stations (z, diameter) of every feature the finishing pass cuts, for its time.
+    std::vector<std::vector<std::pair<double, double>>> m_finishPaths;
+    // Outer stations (z, radius) for the roughing volume.
+    std::vector<std::pair<double, double>> m_outerProfile;
+};
+
+} // namespace tolturn

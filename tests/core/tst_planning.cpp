@@ -1,0 +1,343 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Planning: the optimum against a dense grid search, every constraint made binding (with the
+// closed-form boundary where there is one), an infeasible case naming its conflict, the cutting
+// window against direct evaluation, the clamping ranking, and G-code read back.
+#include "core/io/project_file.h"
+#include "core/planning/clamping_advisor.h"
+#include "core/planning/cutting_window.h"
+#include "core/planning/gcode.h"
+
+#include <QRegularExpression>
+#include <QTest>
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+using namespace tolturn;
+
+namespace {
+
+Project example(const char *name)
+{
+    const ProjectParseResult r =
+        readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name));
+    if (!r.project)
+        qFatal("cannot read %s", name);
+    return *r.project;
+}
+
+std::shared_ptr<const PlanningProblem> problemFor(const Project &p)
+{
+    const PlanningProblem::BuildResult b = PlanningProblem::build(p, DataLibrary::builtIn());
+    if (!b.problem)
+        qFatal("no planning problem: %s", qPrintable(b.diagnostics.front().toString()));
+    return b.problem;
+}
+
+bool hasBinding(const PlanResult &r, const QString &name)
+{
+    return std::any_of(r.binding.begin(), r.binding.end(), [&](const ConstraintValue &c) { return c.name == name; });
+}
+
+QString bindingNames(const PlanResult &r)
+{
+    QStringList names;
+    for (const ConstraintValue &c : r.binding)
+        names << c.label();
+    return names.join(QStringLiteral(", "));
+}
+
+// Brute force over the box of k roughing passes: n points per axis on every variable.
+double gridBest(const PlanningProblem &problem, int k, int n)
+{
+    const PlanBox box = planBox(problem, k);
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<double> x(5);
+    std::function<void(std::size_t)> walk = [&](std::size_t d) {
+        if (d == x.size()) {
+            const CandidateEvaluation e = problem.evaluate(candidateAt(x, k));
+            if (e.feasible(1e-9))
+                best = std::min(best, e.objective);
+            return;
+        }
+        for (int i = 0; i < n; ++i) {
+            x[d] = box.lower[d] + (box.upper[d] - box.lower[d]) * i / (n - 1);
+            walk(d + 1);
+        }
+    };
+    walk(0);
+    return best;
+}
+
+// G-code moves: (X, Z) end points of G00/G01/G02/G03 lines, in order (a small reader for the tests).
+struct Move {
+    int g = 0;
+    double x = 0.0;
+    double z = 0.0;
+};
+
+std::vector<Move> readMoves(const QString &program)
+{
+    static const QRegularExpression word(QStringLiteral("([GXZ])(-?\\d+(?:\\.\\d+)?)"));
+    std::vector<Move> moves;
+    Move state;
+    for (QString line : program.split(QLatin1Char('\n'))) {
+        line.remove(QRegularExpression(QStringLiteral("\\([^)]*\\)")));
+        bool motion = false;
+        auto it = word.globalMatch(line);
+        while (it.hasNext()) {
+            const auto m = it.next();
+            const double v = m.captured(2).toDouble();
+            if (m.captured(1) == QLatin1String("G") && v <= 3.0) {
+                state.g = static_cast<int>(v);
+                motion = true;
+            } else if (m.captured(1) == QLatin1String("X")) {
+                state.x = v;
+                motion = true;
+            } else if (m.captured(1) == QLatin1String("Z")) {
+                state.z = v;
+                motion = true;
+            }
+        }
+        if (motion && (line.contains(QLatin1Char('X')) || line.contains(QLatin1Char('Z'))))
+            moves.push_back(state);
+    }
+    return moves;
+}
+
+constexpr double kPi = std::numbers::pi;
+
+} // namespace
+
+class TestPlanning : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    // The optimum is at least as good as a brute-force grid over the same variables (9 points per
+    // axis, 59 049 plans); along the finishing feed, where the binding constraints act, a fine grid
+    // (400 points, the rest at the optimum) puts its best point within one spacing of it and finds
+    // nothing better.
+    void optimumMatchesGridSearch_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<double>("maxSpeed_rpm");
+        QTest::newRow("stepped shaft, roughness binds") << QStringLiteral("stepped-shaft-chuck.tolturn") << 0.0;
+        QTest::newRow("long shaft, tolerance binds") << QStringLiteral("long-shaft-centres.tolturn") << 0.0;
+        QTest::newRow("hollow sleeve, speed limit") << QStringLiteral("hollow-sleeve-tailstock.tolturn") << 1500.0;
+    }
+
+    void optimumMatchesGridSearch()
+    {
+        QFETCH(QString, file);
+        QFETCH(double, maxSpeed_rpm);
+        Project p = example(file.toLatin1().constData());
+        if (maxSpeed_rpm > 0.0)
+            p.planning.maxSpindleSpeed_rpm = maxSpeed_rpm;
+        const auto problem = problemFor(p);
+        const PlanResult opt = optimisePlan(*problem);
+        QVERIFY(opt.feasible);
+        const int k = opt.candidate.roughingPasses;
+        const double grid = gridBest(*problem, k, 9);
+        QVERIFY2(opt.evaluation.objective <= grid * (1.0 + 1e-9),
+                 qPrintable(QStringLiteral("%1 > grid %2").arg(opt.evaluation.objective).arg(grid)));
+
+        const PlanBox box = planBox(*problem, k);
+        const int n = 400;
+        const double spacing = (box.upper[1] - box.lower[1]) / (n - 1);
+        double bestFeed = 0.0;
+        double best = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < n; ++i) {
+            PlanCandidate c = opt.candidate;
+            c.finishing.feed_mm_rev = box.lower[1] + spacing * i;
+            const CandidateEvaluation e = problem->evaluate(c);
+            if (e.feasible(1e-9) && e.objective < best) {
+                best = e.objective;
+                bestFeed = c.finishing.feed_mm_rev;
+            }
+        }
+        QVERIFY(best >= opt.evaluation.objective * (1.0 - 1e-9));
+        QVERIFY2(
+            std::abs(bestFeed - opt.candidate.finishing.feed_mm_rev) <= spacing,
+            qPrintable(
+                QStringLiteral("grid feed %1, optimum %2").arg(bestFeed).arg(opt.candidate.finishing.feed_mm_rev)));
+        // No other number of roughing passes does better.
+        for (const int other : {k - 1, k + 1}) {
+            if (other >= 0 && !planBox(*problem, other).empty())
+                QVERIFY(gridBest(*problem, other, 5) >= opt.evaluation.objective * (1.0 - 1e-9));
+        }
+    }
+
+    // Each constraint made to bind; where the boundary has a closed form the optimum sits on it.
+    void everyConstraintCanBind_data()
+    {
+        QTest::addColumn<QString>("constraint");
+        QTest::newRow("roughness") << QStringLiteral("roughness");
+        QTest::newRow("spindle speed") << QStringLiteral("spindle_speed");
+        QTest::newRow("tool life") << QStringLiteral("tool_life");
+        QTest::newRow("power") << QStringLiteral("power");
+        QTest::newRow("torque") << QStringLiteral("torque");
+        QTest::newRow("force") << QStringLiteral("force");
+        QTest::newRow("tolerances") << QStringLiteral("tolerances");
+        QTest::newRow("roughing depth") << QStringLiteral("roughing_depth");
+    }
+
+    void everyConstraintCanBind()
+    {
+        QFETCH(QString, constraint);
+        Project p = example(constraint == QLatin1String("tolerances") ? "long-shaft-centres.tolturn"
+                                                                      : "stepped-shaft-chuck.tolturn");
+        if (constraint == QLatin1String("spindle_speed"))
+            p.planning.maxSpindleSpeed_rpm = 2000.0;
+        if (constraint == QLatin1String("tool_life")) {
+            p.planning.taylorC_m_min = 400.0;
+            p.planning.taylorN = 0.25;
+            p.planning.minToolLife_min = 15.0;
+            p.planning.toolLifeSource = QStringLiteral("test values");
+        }
+        if (constraint == QLatin1String("power"))
+            p.planning.maxPower_kW = 4.0;
+        if (constraint == QLatin1String("torque"))
+            p.planning.maxTorque_Nm = 20.0;
+        if (constraint == QLatin1String("force"))
+            p.planning.maxForce_N = 600.0;
+        const auto problem = problemFor(p);
+        const PlanResult r = optimisePlan(*problem);
+        QVERIFY(r.feasible);
+        QVERIFY2(hasBinding(r, constraint), qPrintable(bindingNames(r)));
+        const PassConditions &f = r.candidate.finishing;
+        if (constraint == QLatin1String("roughness")) // Ra = f^2/(32 r_eps) = 1.6 µm, r_eps = 0.8 mm
+            QVERIFY(std::abs(f.feed_mm_rev - std::sqrt(32.0 * 0.8 * 1.6e-3)) < 1e-4);
+        if (constraint == QLatin1String("spindle_speed")) // n = 1000 v/(pi D) = 2000 rpm on the largest cut Ø50
+            QVERIFY(std::abs(f.cuttingSpeed_m_min - kPi * 50.0 * 2000.0 / 1000.0) < 0.05);
+        if (constraint == QLatin1String("tool_life")) // v = C / T_min^n = 400 / 15^0.25
+            QVERIFY(std::abs(f.cuttingSpeed_m_min - 400.0 / std::pow(15.0, 0.25)) < 0.05);
+        if (constraint == QLatin1String("torque")) { // Fc (roughing) D_stock / 2 = 20 N·m: Fc = 666.7 N
+            const double fc = r.evaluation.roughingForces.tangential_N;
+            QVERIFY(std::abs(fc * 60.0 / 2000.0 - 20.0) < 0.2);
+        }
+        if (constraint == QLatin1String("force"))
+            QVERIFY(r.evaluation.roughingForces.tangential_N <= 600.0 * (1 + 1e-6));
+    }
+
+    // Ra 0.5 µm needs f <= sqrt(32 * 0.8 * 0.5e-3) = 0.113 mm/rev, below the insert's 0.17: nothing is
+    // feasible, and the conflict is the roughness, by 0.17^2/(32*0.8)*1000/0.5 - 1 = 125.8 %.
+    void infeasibleNamesItsConflict()
+    {
+        Project p = example("stepped-shaft-chuck.tolturn");
+        p.planning.maxRa_um = 0.5;
+        const PlanResult r = optimisePlan(*problemFor(p));
+        QVERIFY(!r.feasible);
+        QVERIFY(!r.conflicts.empty());
+        const auto roughness = std::find_if(r.conflicts.begin(), r.conflicts.end(), [](const ConstraintValue &c) {
+            return c.name == QLatin1String("roughness");
+        });
+        QVERIFY(roughness != r.conflicts.end());
+        QVERIFY2(std::abs(roughness->violation() - (0.17 * 0.17 / (32 * 0.8) * 1000.0 / 0.5 - 1.0)) < 1e-3,
+                 qPrintable(QString::number(roughness->violation())));
+    }
+
+    // Every cell of the window is what a direct evaluation of that plan says.
+    void windowAgreesWithDirectEvaluation()
+    {
+        const auto problem = problemFor(example("long-shaft-centres.tolturn"));
+        const PlanResult opt = optimisePlan(*problem);
+        for (const WindowPlane plane : {WindowPlane::FeedSpeed, WindowPlane::FeedDepth}) {
+            WindowOptions o;
+            o.columns = 12;
+            o.rows = 10;
+            const CuttingWindow w = cuttingWindow(*problem, plane, opt.candidate, o);
+            QCOMPARE(int(w.cells.size()), 120);
+            for (const WindowCell &cell : w.cells) {
+                PlanCandidate c = opt.candidate;
+                c.finishing.feed_mm_rev = cell.x;
+                if (plane == WindowPlane::FeedSpeed)
+                    c.finishing.cuttingSpeed_m_min = cell.y;
+                else
+                    c.finishing.depthOfCut_mm = cell.y;
+                const CandidateEvaluation e = problem->evaluate(c);
+                QCOMPARE(cell.feasible, e.feasible(1e-9));
+                QCOMPARE(cell.objective, e.objective);
+                if (!cell.feasible)
+                    QCOMPARE(cell.bindingLabel, e.mostViolated()->label());
+            }
+            QVERIFY(!w.boundaries().empty());
+        }
+    }
+
+    void clampingRanking()
+    {
+        const std::vector<ClampingOption> ranking =
+            adviseClamping(example("long-shaft-centres.tolturn"), DataLibrary::builtIn());
+        QCOMPARE(int(ranking.size()), 3);
+        // Feasible ones first, by time; the slender shaft held in a chuck alone cannot hold its k6 journal.
+        QVERIFY(ranking[0].plan.feasible && ranking[1].plan.feasible);
+        QVERIFY(ranking[0].plan.evaluation.objective <= ranking[1].plan.evaluation.objective);
+        QCOMPARE(ranking[2].method, ClampingMethod::Chuck);
+        QVERIFY(!ranking[2].plan.feasible);
+        QVERIFY(ranking[2].reason.contains(QStringLiteral("tolerance")));
+    }
+
+    // The nominal program of the stepped shaft follows its outer contour from the right end face to
+    // the chuck face (drawing: Ø28 end face, 1 x 45° chamfer to Ø30, Ø30 to z 120, face to Ø36,
+    // R2 to Ø40, Ø40 to z 90, cone to Ø50 at z 80, Ø50 to the chuck face at z 35; Z0 at z = 150).
+    void nominalGCodeFollowsTheContour()
+    {
+        const Project p = example("stepped-shaft-chuck.tolturn");
+        GCodeOptions o;
+        o.finishing = p.passes.back();
+        const QString program = finishingProgram(p, o);
+        QVERIFY(program.contains(QStringLiteral("G18 G21 G90 G95")));
+        QVERIFY(program.contains(QStringLiteral("G96 S250 M03")));
+        QVERIFY(program.contains(QStringLiteral("T0101")));
+        const std::vector<Move> moves = readMoves(program);
+        const std::vector<std::pair<double, double>> expected{{0, 0},    {28, 0},   {30, -1},  {30, -30}, {36, -30},
+                                                              {40, -32}, {40, -60}, {50, -70}, {50, -115}};
+        // The contour starts after the approach (G00 to the clearance, G00 to X0 Z2, G01 Z0).
+        auto start = std::find_if(moves.begin(), moves.end(), [](const Move &m) { return m.g == 1; });
+        QVERIFY(start != moves.end());
+        for (std::size_t i = 0; i < expected.size(); ++i, ++start) {
+            QVERIFY(start != moves.end());
+            QCOMPARE(start->x, expected[i].first);
+            QCOMPARE(start->z, expected[i].second);
+        }
+        QCOMPARE((start - 4)->g, 3); // the R2 edge round, travelled backwards: G03
+    }
+
+    // With a cylindricity the Ø30 journal O9 cannot hold as programmed, the compensated program
+    // moves each of its stations against the predicted deviation: X = 2 (r - e(z)), to 1 µm.
+    void compensatedGCodeCorrectsByThePredictedDeviation()
+    {
+        Project p = example("stepped-shaft-chuck.tolturn");
+        Tolerance t;
+        t.id = QStringLiteral("T9");
+        t.type = ToleranceType::Cylindricity;
+        t.featureId = QStringLiteral("O9");
+        t.zone_um = 0.01;
+        p.tolerances.push_back(t);
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        const CompensationPlan plan = planCompensation(p, d, evaluateTolerances(p, d));
+        const FeatureCompensation *o9 = plan.find(QStringLiteral("O9"));
+        QVERIFY(o9 && o9->action == CompensationAction::ProfileCorrection);
+        QVERIFY(o9->residualAfter_um <= 0.5 + 1e-9);
+        QVERIFY(plan.find(QStringLiteral("O6"))->action == CompensationAction::None);
+        GCodeOptions o;
+        o.finishing = p.passes.back();
+        o.compensation = &plan;
+        const std::vector<Move> moves = readMoves(finishingProgram(p, o));
+        const FeatureDeviation *f = nullptr;
+        for (const FeatureDeviation &x : d.features)
+            f = x.featureId == QLatin1String("O9") ? &x : f;
+        for (const Station &st : f->stations) {
+            const double z = st.z_mm - 150.0;
+            const auto m =
+                std::find_if(moves.begin(), moves.end(), [z](const Move &mv) { return std::abs(mv.z - z) < 1e-6; });
+            QVERIFY2(m != moves.end(), qPrintable(QString::number(z)));
+            QVERIFY(std::abs(m->x - 2.0 * (15.0 - st.radiusError_mm)) <= 0.001 + 1e-9);
+            QVERIFY(std::abs((30.0 - m->x) - 2.0 * st.radiusError_mm) <= 0.001 + 1e-9); // against the nominal Ø30
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPlanning)
+#include "tst_planning.moc"
