@@ -223,7 +223,7 @@ std::vector<ConstraintValue> PlanningProblem::toleranceConstraints(const PassCon
     in.pass.feed_mm_rev = pass.feed_mm_rev;
     in.pass.depthOfCut_mm = pass.depthOfCut_mm;
     const DeviationResult deviation = evaluateInfluenceTable(m_project.part, m_table, in);
-    for (const ToleranceEvaluation &e : evaluateTolerances(m_project, deviation)) {
+    for (const ToleranceEvaluation &e : evaluateTolerances(m_project, deviation, EvaluationDetail::ValuesOnly)) {
         if (e.value_um && e.limit_um && *e.limit_um > 0.0)
             out.push_back(
                 {QStringLiteral("tolerances"), e.toleranceId, *e.value_um, *e.limit_um, QStringLiteral("µm")});

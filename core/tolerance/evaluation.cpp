@@ -25,6 +25,17 @@ QString tr(const char *text)
 
 constexpr double kUmPerMm = 1000.0;
 
+// Whether conditions and reasons are written out (evaluateTolerances' `detail`): the optimiser
+// calls the evaluation thousands of times per second on several threads and needs only numbers.
+thread_local bool t_withText = true;
+
+template <typename Text>
+void say(QString &target, Text &&text)
+{
+    if (t_withText)
+        target = text();
+}
+
 const FeatureDeviation *stationsOf(const DeviationResult &r, const QString &id)
 {
     for (const FeatureDeviation &f : r.features) {
@@ -65,9 +76,11 @@ void setValue(ToleranceEvaluation &e, double value, double limit)
 void notCut(ToleranceEvaluation &e, const QString &featureId)
 {
     e.verdict = Verdict::CannotEvaluate;
-    e.reason = tr("feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported "
-                  "length), so no deviation is predicted for it")
-                   .arg(featureId);
+    say(e.reason, [&] {
+        return QString(tr("feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported "
+                          "length), so no deviation is predicted for it")
+                           .arg(featureId));
+    });
 }
 
 // Limit deviations of a size tolerance: the ISO 286 class at the nominal size, or explicit limits.
@@ -79,7 +92,10 @@ bool sizeLimits(const Tolerance &t, double nominal_mm, ToleranceEvaluation &e)
         e.diagnostics.insert(e.diagnostics.end(), limits.diagnostics.begin(), limits.diagnostics.end());
         if (!limits.limits) {
             e.verdict = Verdict::CannotEvaluate;
-            e.reason = tr("the limits of %1 at %2 mm cannot be formed").arg(t.iso286Class, formatNumber(nominal_mm));
+            say(e.reason, [&] {
+                return QString(
+                    tr("the limits of %1 at %2 mm cannot be formed").arg(t.iso286Class, formatNumber(nominal_mm)));
+            });
             return false;
         }
         e.upper_um = limits.limits->upper_um;
@@ -113,16 +129,20 @@ void evaluateDiameter(const Tolerance &t, const FeatureRef &feature, const Devia
     setValue(e, form, tolerance);
     if (*e.predictedMax_um <= *e.upper_um && *e.predictedMin_um >= *e.lower_um) {
         e.verdict = Verdict::PassesAsProgrammed;
-        e.condition = tr("Fig. 4b, eq. 13: D'_Md <= Dn + dDu and D'_md >= Dn + dDl");
+        say(e.condition, [&] { return QString(tr("Fig. 4b, eq. 13: D'_Md <= Dn + dDu and D'_md >= Dn + dDl")); });
     } else if (form <= tolerance) {
         e.verdict = Verdict::PassesAfterOffset;
         e.offset_um = 0.5 * (*e.upper_um + *e.lower_um) - 0.5 * (*e.predictedMax_um + *e.predictedMin_um);
-        e.condition = tr("Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| <= t");
-        e.reason = tr("a constant tool offset of %1 µm on the diameter centres the size in its tolerance")
-                       .arg(QString::number(*e.offset_um, 'f', 1));
+        say(e.condition, [&] {
+            return QString(tr("Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| <= t"));
+        });
+        say(e.reason, [&] {
+            return QString(tr("a constant tool offset of %1 µm on the diameter centres the size in its tolerance")
+                               .arg(QString::number(*e.offset_um, 'f', 1)));
+        });
     } else {
         e.verdict = Verdict::NeedsProfileCorrection;
-        e.condition = tr("Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| > t");
+        say(e.condition, [&] { return QString(tr("Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| > t")); });
     }
 }
 
@@ -144,7 +164,7 @@ void evaluateLength(const Project &p, const Tolerance &t, const DeviationResult 
     const double value = (fi->axialRunout_mm + fj->axialRunout_mm) * kUmPerMm;
     setValue(e, value, *e.upper_um - *e.lower_um);
     e.verdict = value <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-    e.condition = tr("Fig. 4a, eq. 11–12: e_i + e_j <= t");
+    say(e.condition, [&] { return QString(tr("Fig. 4a, eq. 11–12: e_i + e_j <= t")); });
 }
 
 // A face's own conicity against the zone (flatness eq. 16; parallelism eq. 23; perpendicularity
@@ -159,7 +179,7 @@ void evaluateFaceConicity(const Tolerance &t, const DeviationResult &r, Toleranc
     }
     setValue(e, f->axialRunout_mm * kUmPerMm, t.zone_um.value_or(0.0));
     e.verdict = *e.value_um <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-    e.condition = condition;
+    say(e.condition, [&] { return QString(condition); });
 }
 
 // Cylindricity (eq. 19) and total radial run-out (§V.J): |delta_TMd - delta_Tmd| <= t.
@@ -174,7 +194,7 @@ void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, Toleranc
     const auto [lo, hi] = radiusErrorRange_um(*f);
     setValue(e, hi - lo, t.zone_um.value_or(0.0));
     e.verdict = *e.value_um <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-    e.condition = condition;
+    say(e.condition, [&] { return QString(condition); });
 }
 
 // Profile of a surface (Fig. 4e, eq. 20–22): delta_TMd + delta_Tmd <= t / cos(alpha), with the
@@ -213,23 +233,27 @@ void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const Deviat
     setValue(e, value, zone);
     if (value <= zone) {
         e.verdict = Verdict::PassesAsProgrammed;
-        e.condition = tr("Fig. 4e, eq. 22: delta_TMd + delta_Tmd <= t / cos(alpha)");
+        say(e.condition, [&] { return QString(tr("Fig. 4e, eq. 22: delta_TMd + delta_Tmd <= t / cos(alpha)")); });
     } else if (largest - smallest <= zone) {
         e.verdict = Verdict::PassesAfterOffset;
         e.offset_um = -0.5 * (largest + smallest);
-        e.condition = tr("Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t");
-        e.reason = tr("a constant offset of %1 µm normal to the surface centres it in the zone")
-                       .arg(QString::number(*e.offset_um, 'f', 1));
+        say(e.condition, [&] {
+            return QString(tr("Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t"));
+        });
+        say(e.reason, [&] {
+            return QString(tr("a constant offset of %1 µm normal to the surface centres it in the zone")
+                               .arg(QString::number(*e.offset_um, 'f', 1)));
+        });
     } else {
         e.verdict = Verdict::NeedsProfileCorrection;
-        e.condition = tr("Fig. 4e, eq. 22: the spread of the normal deviation exceeds t");
+        say(e.condition, [&] { return QString(tr("Fig. 4e, eq. 22: the spread of the normal deviation exceeds t")); });
     }
 }
 
 void notPredicted(ToleranceEvaluation &e, const QString &reason)
 {
     e.verdict = Verdict::NotPredicted;
-    e.reason = reason;
+    say(e.reason, [&] { return QString(reason); });
 }
 
 ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const DeviationResult &r)
@@ -240,7 +264,7 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
     e.featureId = t.featureId;
     const auto feature = findFeature(p.part, t.featureId);
     if (!feature) {
-        e.reason = tr("there is no feature '%1' in the profile").arg(t.featureId);
+        say(e.reason, [&] { return QString(tr("there is no feature '%1' in the profile").arg(t.featureId)); });
         return e;
     }
     switch (t.type) {
@@ -293,8 +317,17 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
 
 } // namespace
 
-std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, const DeviationResult &result)
+std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, const DeviationResult &result,
+                                                    EvaluationDetail detail)
 {
+    struct TextMode {
+        bool previous = t_withText;
+
+        explicit TextMode(bool on) { t_withText = on; }
+
+        ~TextMode() { t_withText = previous; }
+    } mode(detail == EvaluationDetail::WithText);
+
     std::vector<ToleranceEvaluation> out;
     out.reserve(project.tolerances.size());
     for (const Tolerance &t : project.tolerances)

@@ -42,11 +42,16 @@ struct ToleranceEvaluation {
     Diagnostics diagnostics;
 };
 
+enum class EvaluationDetail {
+    WithText,   // conditions and reasons written out, for people
+    ValuesOnly, // numbers and verdicts only, for the optimiser
+};
+
 // Evaluates every tolerance of `project` against the predicted deviation `result` (computeDeviation,
 // or any curves with the same structure), with the acceptance conditions of Valiño et al. (2008),
 // Fig. 4 and eq. 9–24.
-[[nodiscard]] std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project,
-                                                                  const DeviationResult &result);
+[[nodiscard]] std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, const DeviationResult &result,
+                                                                  EvaluationDetail detail = EvaluationDetail::WithText);
 
 [[nodiscard]] QString verdictKeyword(Verdict verdict); // "passes", "passes_after_offset", ...
 [[nodiscard]] QString verdictName(Verdict verdict);    // for people, translated

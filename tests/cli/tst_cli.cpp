@@ -316,6 +316,101 @@ private Q_SLOTS:
         }
     }
 
+    // optimize: the stepped shaft's optimum sits on its Ra 1.6 µm requirement, f = sqrt(32 r_eps Ra)
+    // = sqrt(32 * 0.8 * 0.0016) = 0.2024 mm/rev, with the roughing depth at the insert's 2 mm.
+    void optimizeJson()
+    {
+        const Run r =
+            runCli({QStringLiteral("optimize"), QStringLiteral("--json"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(o.value(QStringLiteral("feasible")).toBool());
+        QCOMPARE(o.value(QStringLiteral("objective")).toString(), QStringLiteral("time"));
+        const double feed =
+            o.value(QStringLiteral("finishing")).toObject().value(QStringLiteral("feed_mm_rev")).toDouble();
+        QVERIFY(std::abs(feed - std::sqrt(32.0 * 0.8 * 0.0016)) < 1e-4);
+        const QJsonObject rough = o.value(QStringLiteral("roughing")).toObject();
+        QVERIFY(rough.value(QStringLiteral("passes")).toInt() >= 1);
+        QVERIFY(std::abs(
+                    rough.value(QStringLiteral("pass")).toObject().value(QStringLiteral("depth_of_cut_mm")).toDouble() -
+                    2.0) < 1e-6);
+        bool roughness = false;
+        for (const QJsonValue b : o.value(QStringLiteral("binding")).toArray())
+            roughness =
+                roughness || b.toObject().value(QStringLiteral("name")).toString() == QLatin1String("roughness");
+        QVERIFY(roughness);
+    }
+
+    void optimizeWithoutRangesIsAnError()
+    {
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject planning = doc.value(QStringLiteral("planning")).toObject();
+        planning.remove(QStringLiteral("ranges"));
+        doc.insert(QStringLiteral("planning"), planning);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.tolturn"));
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(QJsonDocument(doc).toJson());
+        out.close();
+        const Run r = runCli({QStringLiteral("optimize"), path});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains(QStringLiteral("planning.ranges")));
+    }
+
+    void windowCsv()
+    {
+        const Run r = runCli({QStringLiteral("window"), QStringLiteral("--plane"), QStringLiteral("feed-speed"),
+                              QStringLiteral("--csv"), QStringLiteral("--size"), QStringLiteral("8"),
+                              example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = r.out.trimmed().split(QLatin1Char('\n'));
+        QCOMPARE(lines.size(), 1 + 64);
+        QCOMPARE(lines.first(), QStringLiteral("feed_mm_rev,cutting_speed_m_min,objective,feasible,binding"));
+        // At the largest feed (0.399 mm/rev) Ra = 0.399^2/(32*0.8) mm = 6.2 µm > 1.6: bounded by roughness.
+        QVERIFY(lines.at(8).startsWith(QStringLiteral("0.399,")));
+        QVERIFY(lines.at(8).endsWith(QStringLiteral(",0,\"roughness (Ra)\"")));
+        QVERIFY(lines.at(1).startsWith(QStringLiteral("0.17,201.2,")));
+        QVERIFY(lines.at(1).endsWith(QStringLiteral(",1,")));
+        const Run bad = runCli({QStringLiteral("window"), QStringLiteral("--plane"), QStringLiteral("speed-depth"),
+                                example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(bad.exitCode, 2);
+    }
+
+    void adviseClampingJson()
+    {
+        const Run r = runCli(
+            {QStringLiteral("advise-clamping"), QStringLiteral("--json"), example("long-shaft-centres.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray ranking =
+            QJsonDocument::fromJson(r.out.toUtf8()).object().value(QStringLiteral("ranking")).toArray();
+        QCOMPARE(ranking.size(), 3);
+        QCOMPARE(ranking.at(0).toObject().value(QStringLiteral("rank")).toInt(), 1);
+        QVERIFY(ranking.at(0).toObject().value(QStringLiteral("feasible")).toBool());
+        QCOMPARE(ranking.at(2).toObject().value(QStringLiteral("method")).toString(), QStringLiteral("chuck"));
+        QVERIFY(!ranking.at(2).toObject().value(QStringLiteral("reason")).toString().isEmpty());
+    }
+
+    void gcodeFile()
+    {
+        QTemporaryDir dir;
+        const QString nc = dir.filePath(QStringLiteral("shaft.nc"));
+        const Run r = runCli({QStringLiteral("gcode"), QStringLiteral("-o"), nc, QStringLiteral("--compensated"),
+                              example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        QFile file(nc);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString program = QString::fromUtf8(file.readAll());
+        QVERIFY(program.startsWith(QStringLiteral("%\nO1000 (TOLTURN")));
+        QVERIFY(program.contains(QStringLiteral("COMPENSATED")));
+        QVERIFY(program.contains(QStringLiteral("G96 S250 M03")));
+        QVERIFY(program.contains(QStringLiteral("M30")));
+        const Run usage = runCli({QStringLiteral("gcode"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(usage.exitCode, 2); // -o is required
+    }
+
     void checkWithoutFileIsUsageError()
     {
         const Run r = runCli({QStringLiteral("check")});
