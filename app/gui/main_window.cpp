@@ -7,6 +7,7 @@
 #include "resources/bundled.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/document/project_document.h"
+#include "widgets/planning/planning_panel.h"
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
 #include "widgets/results/deflection_panel.h"
@@ -34,6 +35,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_profileView(new ProfileView(this))
     , m_deflection(new DeflectionPanel(this))
     , m_tolerances(new TolerancePanel(*m_document, this))
+    , m_planning(new PlanningPanel(*m_document, this))
     , m_summary(new QLabel(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
@@ -89,11 +91,18 @@ void MainWindow::createDocks()
     dock->setWidget(m_deflection);
     dock->setAllowedAreas(Qt::BottomDockWidgetArea | Qt::RightDockWidgetArea);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
+    auto *planning = new QDockWidget(tr("Planning"), this);
+    planning->setObjectName(QStringLiteral("planningDock"));
+    planning->setWidget(m_planning);
+    addDockWidget(Qt::BottomDockWidgetArea, planning);
+    tabifyDockWidget(dock, planning);
+    dock->raise();
     resizeDocks({tolerances}, {700}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(dock->toggleViewAction());
     view->addAction(tolerances->toggleViewAction());
+    view->addAction(planning->toggleViewAction());
 }
 
 void MainWindow::createFileMenu()
@@ -172,6 +181,7 @@ void MainWindow::showProject()
     DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
     m_tolerances->showVerdicts(evaluateTolerances(project, deviation));
     m_deflection->showResult(project, std::move(deviation));
+    m_planning->projectChanged();
     const PartProfile &part = project.part;
     m_summary->setText(tr("%1 — length %2 mm, Ø max %3 mm, %4 outer / %5 inner features, clamping: %6")
                            .arg(part.name.isEmpty() ? tr("Part") : part.name, dimensionText(part.length_mm()),

@@ -11,6 +11,7 @@ class QMenu;
 namespace tolturn {
 
 class DeflectionPanel;
+class PlanningPanel;
 class TolerancePanel;
 class ProfileView;
 class ProjectDocument;
@@ -36,6 +37,8 @@ public:
 
     [[nodiscard]] TolerancePanel *tolerancePanel() const { return m_tolerances; }
 
+    [[nodiscard]] PlanningPanel *planningPanel() const { return m_planning; }
+
     // FilePrompts
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
     [[nodiscard]] QString chooseFileToSave(const QString &suggestedPath) override;
@@ -57,6 +60,7 @@ private:
     ProfileView *m_profileView;
     DeflectionPanel *m_deflection;
     TolerancePanel *m_tolerances;
+    PlanningPanel *m_planning;
     QMenu *m_recentMenu = nullptr;
     QLabel *m_summary;
     QAction *m_saveAction = nullptr;

@@ -54,6 +54,36 @@ private:
     std::vector<Datum> m_after;
 };
 
+// A change of one member of the project (the planning settings, the passes): before and after.
+template <typename T>
+class FieldCommand : public QUndoCommand {
+public:
+    FieldCommand(ProjectDocument &doc, T Project::*field, T before, T after, const QString &text)
+        : QUndoCommand(text)
+        , m_doc(doc)
+        , m_field(field)
+        , m_before(std::move(before))
+        , m_after(std::move(after))
+    {
+    }
+
+    void undo() override { apply(m_before); }
+
+    void redo() override { apply(m_after); }
+
+private:
+    void apply(const T &value)
+    {
+        m_doc.m_project.*m_field = value;
+        Q_EMIT m_doc.projectChanged();
+    }
+
+    ProjectDocument &m_doc;
+    T Project::*m_field;
+    T m_before;
+    T m_after;
+};
+
 ProjectDocument::ProjectDocument(QObject *parent) : QObject(parent), m_undoStack(new QUndoStack(this))
 {
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
@@ -160,6 +190,29 @@ Diagnostics ProjectDocument::setDatum(const Datum &datum)
         m_undoStack->push(new DatumListCommand(*this, m_project.datums, candidate.datums,
                                                tr("Set datum %1 on %2").arg(datum.label, datum.featureId)));
     return errors;
+}
+
+template <typename T>
+Diagnostics ProjectDocument::editField(T Project::*field, const T &value, const QString &description)
+{
+    if (m_project.*field == value)
+        return {};
+    Project candidate = m_project;
+    candidate.*field = value;
+    Diagnostics errors = check(candidate);
+    if (errors.empty())
+        m_undoStack->push(new FieldCommand<T>(*this, field, m_project.*field, value, description));
+    return errors;
+}
+
+Diagnostics ProjectDocument::setPlanning(const PlanningSettings &planning)
+{
+    return editField(&Project::planning, planning, tr("Change planning settings"));
+}
+
+Diagnostics ProjectDocument::setPasses(const std::vector<CuttingPass> &passes, const QString &description)
+{
+    return editField(&Project::passes, passes, description);
 }
 
 QString ProjectDocument::nextToleranceId() const

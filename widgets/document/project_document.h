@@ -45,6 +45,8 @@ public:
     Diagnostics removeTolerance(int index);
     // Sets datum `label` on a feature (a new datum, or the same letter moved to another feature).
     Diagnostics setDatum(const Datum &datum);
+    Diagnostics setPlanning(const PlanningSettings &planning);
+    Diagnostics setPasses(const std::vector<CuttingPass> &passes, const QString &description);
 
     // A tolerance id not used yet: "T1", "T2", ...
     [[nodiscard]] QString nextToleranceId() const;
@@ -57,10 +59,14 @@ Q_SIGNALS:
 private:
     friend class ToleranceListCommand;
     friend class DatumListCommand;
+    template <typename T>
+    friend class FieldCommand;
 
     Diagnostics check(const Project &candidate) const;
     void setTolerances(std::vector<Tolerance> tolerances);
     void setDatums(std::vector<Datum> datums);
+    template <typename T>
+    Diagnostics editField(T Project::*field, const T &value, const QString &description);
 
     Project m_project;
     bool m_hasProject = false;

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/planning_report.h"
+
+#include "core/planning/gcode.h"
+
+namespace tolturn {
+
+PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, const PlanningJobOptions &options)
+{
+    PlanningReport report;
+    const PlanningProblem::BuildResult built = PlanningProblem::build(project, data);
+    report.diagnostics = built.diagnostics;
+    report.problem = built.problem;
+    if (!built.problem)
+        return report;
+    // Shares of the work: optimisation 40 %, window 30 %, clamping 30 %.
+    auto stage = [&options](double from, double share) {
+        return [&options, from, share](double fraction) {
+            return !options.progress || options.progress(from + share * fraction);
+        };
+    };
+    OptimisationOptions o;
+    o.progress = stage(0.0, 0.4);
+    report.plan = optimisePlan(*built.problem, o);
+    if (report.plan.cancelled) {
+        report.cancelled = true;
+        return report;
+    }
+    WindowOptions w;
+    w.columns = w.rows = options.windowSize;
+    w.progress = stage(0.4, 0.3);
+    report.window = cuttingWindow(*built.problem, options.plane, report.plan.candidate, w);
+    if (report.window.cancelled) {
+        report.cancelled = true;
+        return report;
+    }
+    if (options.adviseClamping) {
+        OptimisationOptions c;
+        c.progress = stage(0.7, 0.3);
+        report.clamping = adviseClamping(project, data, c);
+    }
+    if (options.progress)
+        options.progress(1.0);
+    return report;
+}
+
+FinishingOutput finishingOutput(const Project &project, const DataLibrary &data)
+{
+    FinishingOutput out;
+    out.deviation = computeDeviation(project, data, {});
+    if (!out.deviation.inputs)
+        return out;
+    out.compensation = planCompensation(project, out.deviation, evaluateTolerances(project, out.deviation));
+    GCodeOptions g;
+    g.finishing = out.deviation.inputs->pass;
+    g.maxSpindleSpeed_rpm = project.planning.maxSpindleSpeed_rpm ? project.planning.maxSpindleSpeed_rpm
+                                                                 : out.deviation.inputs->maxSpindleSpeed_rpm;
+    out.nominalProgram = finishingProgram(project, g);
+    g.compensation = &out.compensation;
+    out.compensatedProgram = finishingProgram(project, g);
+    return out;
+}
+
+} // namespace tolturn

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/planning/clamping_advisor.h"
+#include "core/planning/compensation.h"
+#include "core/planning/cutting_window.h"
+
+#include <functional>
+
+namespace tolturn {
+
+// Everything the planning view shows, computed in one go off the GUI thread: the optimum, the
+// cutting window around it, the clamping ranking.
+struct PlanningReport {
+    std::shared_ptr<const PlanningProblem> problem;
+    PlanResult plan;
+    CuttingWindow window;
+    std::vector<ClampingOption> clamping;
+    Diagnostics diagnostics;
+    bool cancelled = false;
+};
+
+struct PlanningJobOptions {
+    WindowPlane plane = WindowPlane::FeedSpeed;
+    int windowSize = 128;
+    bool adviseClamping = true;
+    std::function<bool(double fraction)> progress; // false cancels
+};
+
+[[nodiscard]] PlanningReport runPlanningJob(const Project &project, const DataLibrary &data,
+                                            const PlanningJobOptions &options);
+
+// The compensation of the project's own finishing pass and its finishing program, nominal or
+// compensated (cheap: the deviation of one pass).
+struct FinishingOutput {
+    DeviationResult deviation;
+    CompensationPlan compensation;
+    QString nominalProgram;
+    QString compensatedProgram;
+};
+
+[[nodiscard]] FinishingOutput finishingOutput(const Project &project, const DataLibrary &data);
+
+} // namespace tolturn

@@ -1,0 +1,431 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/planning/planning_panel.h"
+
+#include "core/project/keywords.h"
+#include "widgets/document/project_document.h"
+#include "widgets/plot/map_plot.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtConcurrent>
+
+#include <algorithm>
+#include <map>
+
+namespace tolturn {
+
+namespace {
+
+// A colour per constraint for the infeasible points of the window map.
+QColor constraintColor(const QString &keyword)
+{
+    static const std::map<QString, QColor> colors{{QStringLiteral("tolerances"), QColor(0xd6, 0x27, 0x28)},
+                                                  {QStringLiteral("roughness"), QColor(0x94, 0x67, 0xbd)},
+                                                  {QStringLiteral("power"), QColor(0xff, 0x7f, 0x0e)},
+                                                  {QStringLiteral("torque"), QColor(0x8c, 0x56, 0x4b)},
+                                                  {QStringLiteral("force"), QColor(0xe3, 0x77, 0xc2)},
+                                                  {QStringLiteral("spindle_speed"), QColor(0x17, 0xbe, 0xcf)},
+                                                  {QStringLiteral("tool_life"), QColor(0xbc, 0xbd, 0x22)},
+                                                  {QStringLiteral("roughing_depth"), QColor(0x7f, 0x7f, 0x7f)}};
+    const auto it = colors.find(keyword);
+    return it == colors.end() ? QColor(Qt::gray) : it->second;
+}
+
+QTableWidgetItem *cell(const QString &text)
+{
+    auto *item = new QTableWidgetItem(text);
+    item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+    return item;
+}
+
+void setupTable(QTableWidget *table, const QStringList &headers)
+{
+    table->setColumnCount(static_cast<int>(headers.size()));
+    table->setHorizontalHeaderLabels(headers);
+    table->verticalHeader()->hide();
+    table->horizontalHeader()->setStretchLastSection(true);
+    table->setSelectionBehavior(QAbstractItemView::SelectRows);
+}
+
+QString number(double v, int decimals)
+{
+    return QString::number(v, 'f', decimals);
+}
+
+} // namespace
+
+PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
+    : QWidget(parent)
+    , m_document(document)
+    , m_objective(new QComboBox(this))
+    , m_plane(new QComboBox(this))
+    , m_run(new QPushButton(tr("Optimise"), this))
+    , m_cancel(new QPushButton(tr("Cancel"), this))
+    , m_apply(new QPushButton(tr("Apply to Passes"), this))
+    , m_progress(new QProgressBar(this))
+    , m_tabs(new QTabWidget(this))
+    , m_plan(new QLabel(this))
+    , m_map(new MapPlot(this))
+    , m_legend(new QLabel(this))
+    , m_clamping(new QTableWidget(this))
+    , m_compensation(new QTableWidget(this))
+    , m_compensated(new QCheckBox(tr("Compensated"), this))
+    , m_gcode(new QPlainTextEdit(this))
+    , m_export(new QPushButton(tr("Export G-code…"), this))
+{
+    setObjectName(QStringLiteral("planningPanel"));
+    buildControls();
+    connect(&m_watcher, &QFutureWatcher<PlanningReport>::finished, this, [this] {
+        m_report = std::make_unique<PlanningReport>(m_watcher.result());
+        m_run->setEnabled(true);
+        m_cancel->setEnabled(false);
+        m_progress->setValue(m_report->cancelled ? 0 : 100);
+        showReport();
+        Q_EMIT finished();
+    });
+    projectChanged();
+}
+
+PlanningPanel::~PlanningPanel()
+{
+    cancel();
+    m_watcher.waitForFinished();
+}
+
+void PlanningPanel::buildControls()
+{
+    m_objective->addItem(tr("Least time per part"), static_cast<int>(PlanningObjective::Time));
+    m_objective->addItem(tr("Least cost per part"), static_cast<int>(PlanningObjective::Cost));
+    m_plane->addItem(tr("Window: feed – cutting speed"), static_cast<int>(WindowPlane::FeedSpeed));
+    m_plane->addItem(tr("Window: feed – depth of cut"), static_cast<int>(WindowPlane::FeedDepth));
+    m_cancel->setEnabled(false);
+    m_apply->setEnabled(false);
+    m_progress->setRange(0, 100);
+    m_progress->setValue(0);
+    auto *top = new QHBoxLayout;
+    for (QWidget *w : std::initializer_list<QWidget *>{m_objective, m_plane, m_run, m_cancel, m_progress, m_apply})
+        top->addWidget(w);
+    auto *constraints = new QHBoxLayout;
+    constraints->addWidget(new QLabel(tr("Constraints:"), this));
+    for (const QString &keyword : planningConstraintKeywords()) {
+        auto *box = new QCheckBox(QString(keyword).replace(QLatin1Char('_'), QLatin1Char(' ')), this);
+        box->setProperty("constraint", keyword);
+        box->setToolTip(tr("Switch the %1 constraint on or off (docs/planning.md §2)").arg(keyword));
+        connect(box, &QCheckBox::toggled, this, &PlanningPanel::settingsEdited);
+        constraints->addWidget(box);
+        m_constraints.push_back(box);
+    }
+    constraints->addStretch();
+    m_plan->setWordWrap(true);
+    m_plan->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_plan->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    m_legend->setWordWrap(true);
+    auto *windowTab = new QWidget(this);
+    auto *windowLayout = new QVBoxLayout(windowTab);
+    windowLayout->addWidget(m_map, 1);
+    windowLayout->addWidget(m_legend);
+    setupTable(m_clamping, {tr("Rank"), tr("Clamping"), tr("Result")});
+    setupTable(m_compensation, {tr("Feature"), tr("Tolerances"), tr("Action"), tr("Offset Ø [µm]"),
+                                tr("Residual before [µm]"), tr("Residual after [µm]"), tr("Note")});
+    m_gcode->setReadOnly(true);
+    m_gcode->setFont(QFont(QStringLiteral("monospace")));
+    auto *gcodeTab = new QWidget(this);
+    auto *gcodeLayout = new QVBoxLayout(gcodeTab);
+    auto *gcodeTop = new QHBoxLayout;
+    gcodeTop->addWidget(m_compensated);
+    gcodeTop->addStretch();
+    gcodeTop->addWidget(m_export);
+    gcodeLayout->addLayout(gcodeTop);
+    gcodeLayout->addWidget(m_gcode);
+    m_tabs->addTab(m_plan, tr("Plan"));
+    m_tabs->addTab(windowTab, tr("Cutting Window"));
+    m_tabs->addTab(m_clamping, tr("Clamping"));
+    m_tabs->addTab(m_compensation, tr("Compensation"));
+    m_tabs->addTab(gcodeTab, tr("G-code"));
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addLayout(constraints);
+    layout->addWidget(m_tabs, 1);
+
+    connect(m_run, &QPushButton::clicked, this, &PlanningPanel::optimise);
+    connect(m_cancel, &QPushButton::clicked, this, &PlanningPanel::cancel);
+    connect(m_apply, &QPushButton::clicked, this, &PlanningPanel::applyPlan);
+    connect(m_objective, &QComboBox::currentIndexChanged, this, &PlanningPanel::settingsEdited);
+    connect(m_compensated, &QCheckBox::toggled, this, &PlanningPanel::showFinishing);
+    connect(m_export, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export G-code"), QString(),
+                                                          tr("G-code (*.nc *.ngc *.tap);;All files (*)"));
+        if (path.isEmpty())
+            return;
+        const QString error = exportGCode(path);
+        if (!error.isEmpty())
+            QMessageBox::critical(this, tr("Export G-code"), error);
+    });
+}
+
+void PlanningPanel::projectChanged()
+{
+    if (!m_document.hasProject())
+        return;
+    const PlanningSettings &s = m_document.project().planning;
+    m_updatingControls = true;
+    m_objective->setCurrentIndex(m_objective->findData(static_cast<int>(s.objective)));
+    for (QCheckBox *box : m_constraints)
+        box->setChecked(!s.disabledConstraints.contains(box->property("constraint").toString()));
+    m_updatingControls = false;
+    showFinishing();
+}
+
+void PlanningPanel::settingsEdited()
+{
+    if (m_updatingControls || !m_document.hasProject())
+        return;
+    PlanningSettings s = m_document.project().planning;
+    s.objective = static_cast<PlanningObjective>(m_objective->currentData().toInt());
+    s.disabledConstraints.clear();
+    for (QCheckBox *box : m_constraints) {
+        if (!box->isChecked())
+            s.disabledConstraints << box->property("constraint").toString();
+    }
+    (void)m_document.setPlanning(s);
+}
+
+bool PlanningPanel::isRunning() const
+{
+    return m_watcher.isRunning();
+}
+
+void PlanningPanel::optimise()
+{
+    if (isRunning() || !m_document.hasProject())
+        return;
+    m_fraction = std::make_shared<std::atomic<double>>(0.0);
+    m_stop = std::make_shared<std::atomic<bool>>(false);
+    PlanningJobOptions options;
+    options.plane = static_cast<WindowPlane>(m_plane->currentData().toInt());
+    auto fraction = m_fraction;
+    auto stop = m_stop;
+    options.progress = [fraction, stop](double f) {
+        fraction->store(f);
+        return !stop->load();
+    };
+    m_run->setEnabled(false);
+    m_cancel->setEnabled(true);
+    m_progress->setValue(0);
+    auto *poll = new QTimer(this);
+    connect(poll, &QTimer::timeout, this, [this, poll, fraction] {
+        m_progress->setValue(static_cast<int>(100.0 * fraction->load()));
+        if (!isRunning())
+            poll->deleteLater();
+    });
+    poll->start(50);
+    const Project project = m_document.project(); // a copy: the worker never touches the document
+    m_watcher.setFuture(
+        QtConcurrent::run([project, options] { return runPlanningJob(project, DataLibrary::builtIn(), options); }));
+}
+
+void PlanningPanel::cancel()
+{
+    if (m_stop)
+        m_stop->store(true);
+}
+
+void PlanningPanel::applyPlan()
+{
+    if (!m_report || !m_report->problem || !m_report->plan.feasible)
+        return;
+    const PlanResult &r = m_report->plan;
+    std::vector<CuttingPass> passes;
+    const double roughDepth =
+        r.candidate.roughingPasses > 0
+            ? (m_report->problem->radialStock_mm() - r.candidate.finishing.depthOfCut_mm) / r.candidate.roughingPasses
+            : 0.0;
+    for (int i = 0; i < r.candidate.roughingPasses; ++i)
+        passes.push_back({PassKind::Roughing, r.candidate.roughing.cuttingSpeed_m_min, r.candidate.roughing.feed_mm_rev,
+                          roughDepth});
+    passes.push_back({PassKind::Finishing, r.candidate.finishing.cuttingSpeed_m_min, r.candidate.finishing.feed_mm_rev,
+                      r.candidate.finishing.depthOfCut_mm});
+    const Diagnostics problems = m_document.setPasses(passes, tr("Apply optimal passes"));
+    if (!problems.empty())
+        QMessageBox::warning(this, tr("Apply to Passes"), problems.front().toString());
+}
+
+QString PlanningPanel::planText() const
+{
+    return m_plan->text();
+}
+
+void PlanningPanel::showReport()
+{
+    m_apply->setEnabled(m_report && m_report->plan.feasible && !m_report->cancelled);
+    QStringList lines;
+    if (!m_report->problem) {
+        for (const Diagnostic &d : m_report->diagnostics)
+            lines << d.toString();
+        m_plan->setText(lines.join(QLatin1Char('\n')));
+        return;
+    }
+    if (m_report->cancelled) {
+        m_plan->setText(tr("Cancelled."));
+        return;
+    }
+    const PlanResult &r = m_report->plan;
+    const CandidateEvaluation &e = r.evaluation;
+    lines << (r.feasible ? tr("Optimal plan") : tr("No plan meets every constraint; the least-violating one:"));
+    lines << tr("Time per part %1 min (finishing %2 min, roughing %3 min); cost %4; tool edges %5")
+                 .arg(number(e.time_min, 3), number(e.finishingTime_min, 3), number(e.roughingTime_min, 3),
+                      number(e.cost, 2), number(e.toolEdgesPerPart, 3));
+    lines << tr("Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
+                 .arg(number(r.candidate.finishing.cuttingSpeed_m_min, 1), number(r.candidate.finishing.feed_mm_rev, 3),
+                      number(r.candidate.finishing.depthOfCut_mm, 3));
+    if (r.candidate.roughingPasses > 0)
+        lines << tr("Roughing: %1 passes at vc %2 m/min, f %3 mm/rev")
+                     .arg(r.candidate.roughingPasses)
+                     .arg(number(r.candidate.roughing.cuttingSpeed_m_min, 1),
+                          number(r.candidate.roughing.feed_mm_rev, 3));
+    for (const ConstraintValue &c : r.binding)
+        lines << tr("Binding: %1 (%2 of %3 %4)")
+                     .arg(c.label(), QString::number(c.value, 'g', 4), QString::number(c.limit, 'g', 4), c.unit);
+    for (const ConstraintValue &c : r.conflicts)
+        lines << tr("Violated: %1 by %2 %").arg(c.label(), number(100.0 * c.violation(), 1));
+    for (const QString &n : r.notes)
+        lines << tr("Note: ") + n;
+    m_plan->setText(lines.join(QLatin1Char('\n')));
+    showWindow();
+    showClamping();
+}
+
+void PlanningPanel::showWindow()
+{
+    const CuttingWindow &w = m_report->window;
+    m_map->clear();
+    if (w.cells.empty())
+        return;
+    // Feasible points shaded by the objective (darker green is better), the others coloured by the
+    // constraint they violate most.
+    double lo = 1e300;
+    double hi = -1e300;
+    for (const WindowCell &c : w.cells) {
+        if (c.feasible) {
+            lo = std::min(lo, c.objective);
+            hi = std::max(hi, c.objective);
+        }
+    }
+    QImage image(w.columns, w.rows, QImage::Format_RGB32);
+    std::map<QString, std::pair<double, std::pair<double, int>>> centroids; // label -> (sum x, (sum y, n))
+    for (int row = 0; row < w.rows; ++row) {
+        for (int column = 0; column < w.columns; ++column) {
+            const WindowCell &c = w.at(column, row);
+            QColor color;
+            if (c.feasible) {
+                const double t = hi > lo ? (c.objective - lo) / (hi - lo) : 0.0;
+                color = QColor::fromRgbF(static_cast<float>(0.30 + 0.55 * t), static_cast<float>(0.62 + 0.30 * t),
+                                         static_cast<float>(0.32 + 0.50 * t));
+            } else {
+                color = constraintColor(c.binding).lighter(150);
+                auto &acc = centroids[c.bindingLabel];
+                acc.first += c.x;
+                acc.second.first += c.y;
+                acc.second.second += 1;
+            }
+            image.setPixel(column, row, color.rgb());
+        }
+    }
+    m_map->setImage(image, w.feed.min, w.feed.max, w.other.min, w.other.max);
+    QStringList legend{tr("<b>Green</b>: feasible, darker is better.")};
+    for (const auto &[label, acc] : centroids) {
+        const int n = acc.second.second;
+        QString keyword;
+        for (const WindowCell &c : w.cells) {
+            if (c.bindingLabel == label) {
+                keyword = c.binding;
+                break;
+            }
+        }
+        m_map->addLabel(acc.first / n, acc.second.first / n, label, constraintColor(keyword).darker(160));
+        legend << QStringLiteral("<span style='color:%1'>■</span> %2").arg(constraintColor(keyword).name(), label);
+    }
+    const bool speed = w.plane == WindowPlane::FeedSpeed;
+    if (m_report->plan.feasible)
+        m_map->addMarker(w.base.finishing.feed_mm_rev,
+                         speed ? w.base.finishing.cuttingSpeed_m_min : w.base.finishing.depthOfCut_mm, tr("optimum"));
+    m_map->setTitle(speed ? tr("Cutting window of the finishing pass: feed – cutting speed")
+                          : tr("Cutting window of the finishing pass: feed – depth of cut"));
+    m_map->setAxisLabels(tr("feed f [mm/rev]"), speed ? tr("cutting speed vc [m/min]") : tr("depth of cut ap [mm]"));
+    m_map->replot();
+    m_legend->setText(legend.join(QStringLiteral(" &nbsp; ")));
+}
+
+void PlanningPanel::showClamping()
+{
+    m_clamping->setRowCount(static_cast<int>(m_report->clamping.size()));
+    for (int i = 0; i < m_clamping->rowCount(); ++i) {
+        const ClampingOption &o = m_report->clamping[static_cast<std::size_t>(i)];
+        m_clamping->setItem(i, 0, cell(QString::number(i + 1)));
+        m_clamping->setItem(i, 1, cell(displayName(o.method)));
+        m_clamping->setItem(i, 2, cell(o.reason));
+        const QColor background = !o.possible       ? QColor(0xee, 0xee, 0xee)
+                                  : o.plan.feasible ? QColor(0xc7, 0xe9, 0xc0)
+                                                    : QColor(0xfc, 0xae, 0x91);
+        for (int c = 0; c < 3; ++c)
+            m_clamping->item(i, c)->setBackground(background);
+    }
+    m_clamping->resizeColumnsToContents();
+}
+
+void PlanningPanel::showFinishing()
+{
+    if (!m_document.hasProject())
+        return;
+    m_finishing = finishingOutput(m_document.project(), DataLibrary::builtIn());
+    const auto &features = m_finishing.compensation.features;
+    m_compensation->setRowCount(static_cast<int>(features.size()));
+    for (int i = 0; i < m_compensation->rowCount(); ++i) {
+        const FeatureCompensation &f = features[static_cast<std::size_t>(i)];
+        const QString action = f.action == CompensationAction::None             ? tr("none")
+                               : f.action == CompensationAction::ConstantOffset ? tr("constant offset")
+                                                                                : tr("profile correction");
+        m_compensation->setItem(i, 0, cell(f.featureId));
+        m_compensation->setItem(i, 1, cell(f.tolerances.join(QStringLiteral(", "))));
+        m_compensation->setItem(i, 2, cell(action));
+        m_compensation->setItem(
+            i, 3, cell(f.action == CompensationAction::ConstantOffset ? number(f.offset_um, 1) : QString()));
+        m_compensation->setItem(i, 4, cell(number(f.residualBefore_um, 3)));
+        m_compensation->setItem(i, 5, cell(number(f.residualAfter_um, 3)));
+        m_compensation->setItem(i, 6, cell(f.note));
+    }
+    m_compensation->resizeColumnsToContents();
+    m_gcode->setPlainText(m_compensated->isChecked() ? m_finishing.compensatedProgram : m_finishing.nominalProgram);
+}
+
+QString PlanningPanel::gcodeText() const
+{
+    return m_gcode->toPlainText();
+}
+
+QString PlanningPanel::exportGCode(const QString &path) const
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return tr("cannot write '%1': %2").arg(path, file.errorString());
+    file.write(gcodeText().toUtf8());
+    if (!file.commit())
+        return tr("cannot save '%1': %2").arg(path, file.errorString());
+    return {};
+}
+
+} // namespace tolturn

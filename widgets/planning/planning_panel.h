@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/planning/planning_report.h"
+
+#include <QFutureWatcher>
+#include <QWidget>
+
+#include <atomic>
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+class QTabWidget;
+
+namespace tolturn {
+
+class MapPlot;
+class ProjectDocument;
+
+// Planning for the open project: the objective and the constraints switched on, the optimisation
+// run off the GUI thread with progress and cancel, and its results: the plan (which can be applied
+// to the project's passes), the cutting window with labelled boundaries and the optimum, the
+// clamping ranking, the compensation of the finishing pass feature by feature, and its G-code.
+class PlanningPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PlanningPanel(ProjectDocument &document, QWidget *parent = nullptr);
+    ~PlanningPanel() override;
+
+    // Starts the optimisation (does nothing while one runs).
+    void optimise();
+    void cancel();
+    [[nodiscard]] bool isRunning() const;
+    // Replaces the project's passes with the optimal ones (undoable).
+    void applyPlan();
+    // Writes the G-code shown (nominal or compensated) to a file atomically; returns the error, if any.
+    [[nodiscard]] QString exportGCode(const QString &path) const;
+
+    [[nodiscard]] const PlanningReport *report() const { return m_report.get(); }
+
+    [[nodiscard]] MapPlot *windowPlot() const { return m_map; }
+
+    [[nodiscard]] QTableWidget *clampingTable() const { return m_clamping; }
+
+    [[nodiscard]] QTableWidget *compensationTable() const { return m_compensation; }
+
+    [[nodiscard]] QString gcodeText() const;
+    [[nodiscard]] QString planText() const;
+
+    // Refreshes what follows the project directly (settings, compensation, G-code).
+    void projectChanged();
+
+Q_SIGNALS:
+    void finished(); // a run ended, completed or cancelled
+
+private:
+    void buildControls();
+    void settingsEdited();
+    void showReport();
+    void showWindow();
+    void showClamping();
+    void showFinishing();
+
+    ProjectDocument &m_document;
+    QComboBox *m_objective;
+    QComboBox *m_plane;
+    std::vector<QCheckBox *> m_constraints;
+    QPushButton *m_run;
+    QPushButton *m_cancel;
+    QPushButton *m_apply;
+    QProgressBar *m_progress;
+    QTabWidget *m_tabs;
+    QLabel *m_plan;
+    MapPlot *m_map;
+    QLabel *m_legend;
+    QTableWidget *m_clamping;
+    QTableWidget *m_compensation;
+    QCheckBox *m_compensated;
+    QPlainTextEdit *m_gcode;
+    QPushButton *m_export;
+    QFutureWatcher<PlanningReport> m_watcher;
+    std::shared_ptr<std::atomic<double>> m_fraction;
+    std::shared_ptr<std::atomic<bool>> m_stop;
+    std::unique_ptr<PlanningReport> m_report;
+    FinishingOutput m_finishing;
+    bool m_updatingControls = false;
+};
+
+} // namespace tolturn

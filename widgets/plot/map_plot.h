@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QImage>
+#include <QString>
+#include <QWidget>
+
+class QCustomPlot;
+
+namespace tolturn {
+
+// A map over two variables: an image stretched over the axis ranges, text labels placed in data
+// coordinates and point markers. TolTurn's own class over the plotting library, like LinePlot.
+class MapPlot : public QWidget {
+    Q_OBJECT
+public:
+    explicit MapPlot(QWidget *parent = nullptr);
+    ~MapPlot() override;
+
+    void setTitle(const QString &title);
+    void setAxisLabels(const QString &xLabel, const QString &yLabel);
+    // The image's column 0 is at xMin, its last column at xMax; row 0 at yMin (drawn at the bottom).
+    void setImage(const QImage &image, double xMin, double xMax, double yMin, double yMax);
+    void addLabel(double x, double y, const QString &text, const QColor &color = Qt::black);
+    void addMarker(double x, double y, const QString &text);
+    void clear();
+    void replot();
+
+    [[nodiscard]] int labelCount() const { return m_labels; }
+
+    [[nodiscard]] QString title() const { return m_title; }
+
+private:
+    QCustomPlot *m_plot;
+    QString m_title;
+    int m_labels = 0;
+};
+
+} // namespace tolturn
