@@ -38,6 +38,63 @@ QString FileController::fileFilter()
     return tr("TolTurn projects (*.tolturn *.json);;All files (*)");
 }
 
+Project FileController::newBar()
+{
+    auto seg = [](const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b) {
+        Segment s;
+        s.id = QString::fromLatin1(id);
+        s.kind = kind;
+        s.from = a;
+        s.to = b;
+        return s;
+    };
+    Project p;
+    p.part.name = tr("New part");
+    p.part.stockDiameter_mm = 45.0;
+    p.part.outer.segments = {seg("O1", SegmentKind::Face, {0, 0}, {0, 20}),
+                             seg("O2", SegmentKind::Cylinder, {0, 20}, {120, 20}),
+                             seg("O3", SegmentKind::Face, {120, 20}, {120, 0})};
+    p.materialId = QStringLiteral("C45E-N");
+    p.machineId = QStringLiteral("haas-st-20");
+    p.tool.insertCode = QStringLiteral("CNMG 120408");
+    p.tool.holderCode = QStringLiteral("PCLNR 2525M12");
+    p.clamping = {ClampingMethod::Chuck, 30.0};
+    p.passes = {{PassKind::Finishing, 200.0, 0.2, 0.5}};
+    return p;
+}
+
+bool FileController::maybeSave()
+{
+    if (!m_document.hasProject() || !m_document.isModified())
+        return true;
+    switch (m_prompts.askToSaveChanges(m_document.displayName())) {
+    case FilePrompts::SaveChoice::Save:
+        return save();
+    case FilePrompts::SaveChoice::Discard:
+        return true;
+    case FilePrompts::SaveChoice::Cancel:
+        return false;
+    }
+    return false;
+}
+
+bool FileController::newProject()
+{
+    if (!maybeSave())
+        return false;
+    m_document.load(newBar(), QString());
+    Q_EMIT statusMessage(tr("New project: a plain bar to shape"));
+    return true;
+}
+
+bool FileController::close()
+{
+    if (!maybeSave())
+        return false;
+    m_document.clear();
+    return true;
+}
+
 bool FileController::open()
 {
     const QString start =
@@ -70,6 +127,8 @@ bool FileController::loadFrom(const QString &readPath, const QString &documentPa
                                 .arg(joinDiagnostics(result.diagnostics)));
         return false;
     }
+    if (!maybeSave()) // only once the new file is known to be good
+        return false;
     m_document.load(std::move(*result.project), documentPath);
     Q_EMIT statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(readPath)));
     return true;

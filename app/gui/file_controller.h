@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/project/project.h"
+
 #include <QObject>
 #include <QString>
 
@@ -13,7 +15,11 @@ class RecentFiles;
 // with dialogs; tests answer with fixed paths and record the errors.
 class FilePrompts {
 public:
+    enum class SaveChoice { Save, Discard, Cancel };
+
     virtual ~FilePrompts() = default;
+    // Asked before a modified document is replaced or closed.
+    [[nodiscard]] virtual SaveChoice askToSaveChanges(const QString &documentName) = 0;
     [[nodiscard]] virtual QString chooseFileToOpen(const QString &startFolder) = 0;
     [[nodiscard]] virtual QString chooseFileToSave(const QString &suggestedPath) = 0;
     virtual void showError(const QString &title, const QString &text) = 0;
@@ -28,13 +34,22 @@ public:
     FileController(ProjectDocument &document, RecentFiles &recentFiles, FilePrompts &prompts,
                    QObject *parent = nullptr);
 
+    // A new project: a plain bar held in a chuck, to be shaped in the editor.
+    bool newProject();
     bool open();
     bool openFile(const QString &path);
+    // Closes the document, after asking to save unsaved changes; false when the user cancels.
+    bool close();
+    // Asks to save a modified document: true when it may now be replaced or closed.
+    bool maybeSave();
     // Opens a bundled example (a Qt resource path) as a new, unsaved document.
     bool openExample(const QString &resourcePath);
     bool save();
     bool saveAs();
     bool saveTo(const QString &path);
+
+    // The project File > New starts from.
+    [[nodiscard]] static Project newBar();
 
     // File name filter for dialogs.
     [[nodiscard]] static QString fileFilter();

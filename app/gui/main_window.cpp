@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -22,6 +23,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
 #include <QUndoStack>
 
@@ -57,6 +59,10 @@ MainWindow::MainWindow(QWidget *parent)
     rebuildRecentMenu();
     updateTitle();
     resize(1500, 900);
+    // Docks and window as the user left them.
+    const QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
 }
 
 MainWindow::~MainWindow() = default;
@@ -108,6 +114,9 @@ void MainWindow::createDocks()
 void MainWindow::createFileMenu()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *newProject = file->addAction(QIcon::fromTheme(QStringLiteral("document-new")), tr("&New"));
+    newProject->setShortcut(QKeySequence::New);
+    connect(newProject, &QAction::triggered, m_files, [this] { m_files->newProject(); });
     QAction *open = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"));
     open->setShortcut(QKeySequence::Open);
     connect(open, &QAction::triggered, m_files, [this] { m_files->open(); });
@@ -126,6 +135,9 @@ void MainWindow::createFileMenu()
     m_saveAsAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save-as")), tr("Save &As…"));
     m_saveAsAction->setShortcut(QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, m_files, [this] { m_files->saveAs(); });
+    QAction *closeAction = file->addAction(tr("&Close"));
+    closeAction->setShortcut(QKeySequence::Close);
+    connect(closeAction, &QAction::triggered, m_files, [this] { m_files->close(); });
     file->addSeparator();
 
     QAction *quit = file->addAction(tr("&Quit"));
@@ -176,6 +188,14 @@ void MainWindow::updateTitle()
 
 void MainWindow::showProject()
 {
+    if (!m_document->hasProject()) {
+        m_profileView->clearProfile();
+        m_deflection->clear();
+        m_tolerances->showVerdicts({});
+        m_summary->clear();
+        updateTitle();
+        return;
+    }
     const Project &project = m_document->project();
     m_profileView->setProfile(project.part);
     DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
@@ -200,6 +220,36 @@ QString MainWindow::chooseFileToOpen(const QString &startFolder)
 QString MainWindow::chooseFileToSave(const QString &suggestedPath)
 {
     return QFileDialog::getSaveFileName(this, tr("Save Project As"), suggestedPath, FileController::fileFilter());
+}
+
+FilePrompts::SaveChoice MainWindow::askToSaveChanges(const QString &documentName)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved Changes"),
+                    tr("%1 has changes that are not saved.").arg(documentName),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setObjectName(QStringLiteral("saveChangesDialog"));
+    box.setInformativeText(tr("Save them before going on?"));
+    box.setDefaultButton(QMessageBox::Save);
+    switch (box.exec()) {
+    case QMessageBox::Save:
+        return SaveChoice::Save;
+    case QMessageBox::Discard:
+        return SaveChoice::Discard;
+    default:
+        return SaveChoice::Cancel;
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!m_files->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    event->accept();
 }
 
 void MainWindow::showError(const QString &title, const QString &text)

@@ -43,6 +43,10 @@ public:
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
     [[nodiscard]] QString chooseFileToSave(const QString &suggestedPath) override;
     void showError(const QString &title, const QString &text) override;
+    [[nodiscard]] SaveChoice askToSaveChanges(const QString &documentName) override;
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
 
 private:
     void createActions();

@@ -3,6 +3,7 @@
 // files with a dialog and the document untouched, save, recent files, About.
 #include "app/gui/main_window.h"
 #include "app/gui/recent_files.h"
+#include "core/project/project_validation.h"
 #include "resources/bundled.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/document/project_document.h"
@@ -17,6 +18,7 @@
 #include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -62,6 +64,20 @@ void closeNextMessageBox(QString *text)
         }
         *text = box->text();
         box->accept();
+    });
+}
+
+// Answers the next "unsaved changes" question with `button` and records that it was asked.
+void answerNextSavePrompt(QMessageBox::StandardButton button, bool *asked)
+{
+    QTimer::singleShot(0, [button, asked] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (box == nullptr) {
+            answerNextSavePrompt(button, asked);
+            return;
+        }
+        *asked = true;
+        box->button(button)->click();
     });
 }
 
@@ -209,6 +225,49 @@ private Q_SLOTS:
         for (const FeatureDeviation &f : panel->result().features)
             bore = bore || f.side == ContourSide::Inner;
         QVERIFY(bore);
+    }
+
+    void newProjectIsAValidBar()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->newProject());
+        QVERIFY(w.document()->hasProject());
+        QVERIFY(validateProject(w.document()->project()).empty());
+        QCOMPARE(itemsOfKind(w, profile_item::kOuterContour).size(), 3);
+        QVERIFY(w.document()->filePath().isEmpty());
+    }
+
+    // A modified document is not replaced or closed without asking; Cancel keeps it, Discard lets go.
+    void unsavedChangesAreAskedFor()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        Tolerance t;
+        t.id = QStringLiteral("T9");
+        t.type = ToleranceType::Flatness;
+        t.featureId = QStringLiteral("O8");
+        t.zone_um = 5.0;
+        QVERIFY(w.document()->addTolerance(t).empty());
+        QVERIFY(w.document()->isModified());
+        QVERIFY(w.windowTitle().contains(QStringLiteral("[*]")) || w.isWindowModified());
+
+        bool asked = false;
+        answerNextSavePrompt(QMessageBox::Cancel, &asked);
+        QVERIFY(!w.fileController()->openFile(example("long-shaft-centres.tolturn")));
+        QVERIFY(asked);
+        QCOMPARE(w.document()->project().part.name, QStringLiteral("Stepped shaft"));
+        QVERIFY(w.document()->isModified());
+
+        asked = false;
+        answerNextSavePrompt(QMessageBox::Discard, &asked);
+        QVERIFY(w.fileController()->close());
+        QVERIFY(asked);
+        QVERIFY(!w.document()->hasProject());
+        QVERIFY(itemsOfKind(w, profile_item::kOuterContour).isEmpty());
+
+        // An unmodified document closes without a question.
+        QVERIFY(w.fileController()->openFile(example("long-shaft-centres.tolturn")));
+        QVERIFY(w.fileController()->close());
     }
 
     void aboutNamesEveryLibraryWithVersionAndLicence()

@@ -118,6 +118,17 @@ void ProjectDocument::load(Project project, const QString &filePath)
     Q_EMIT projectChanged();
 }
 
+void ProjectDocument::clear()
+{
+    m_project = Project{};
+    m_hasProject = false;
+    m_filePath.clear();
+    m_undoStack->clear();
+    Q_EMIT filePathChanged(m_filePath);
+    Q_EMIT modifiedChanged(false);
+    Q_EMIT projectChanged();
+}
+
 void ProjectDocument::markSaved(const QString &filePath)
 {
     const bool pathChanged = m_filePath != filePath;

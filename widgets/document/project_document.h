@@ -35,6 +35,8 @@ public:
 
     // Replaces the whole document, e.g. after a successful open. Not an edit: clears the history.
     void load(Project project, const QString &filePath);
+    // Empties the document (File > Close).
+    void clear();
     // Records that the document now lives in (was just saved to) `filePath`.
     void markSaved(const QString &filePath);
 
