@@ -3,33 +3,20 @@
 //  1. optimisation of one part with 10 toleranced features;
 //  2. a 256 x 256 cutting window on two cores (feed-speed; feed-depth for comparison).
 // Run: build/<preset>/benchmarks/bench_planning [path/to/stepped-shaft-chuck.tolturn]
+#include "benchmarks/bench_timing.h"
+
 #include "core/io/project_file.h"
 #include "core/planning/cutting_window.h"
 
 #include <QCoreApplication>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <vector>
 
 using namespace tolturn;
-using Clock = std::chrono::steady_clock;
+using tolturn::bench::medianMilliseconds;
 
 namespace {
-
-template <typename F>
-double medianMilliseconds(int repetitions, F &&run)
-{
-    std::vector<double> times;
-    for (int i = 0; i < repetitions; ++i) {
-        const auto t0 = Clock::now();
-        run();
-        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
-}
 
 Tolerance geometric(const char *id, ToleranceType type, const char *feature, double zone, QStringList datums = {})
 {

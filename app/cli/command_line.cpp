@@ -13,9 +13,11 @@
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/iso286.h"
 #include "widgets/dialogs/about_dialog.h"
+#include "widgets/report/report_writer.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -965,6 +967,34 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     return kExitOk;
 }
 
+int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, tr("PDF file to write."),
+                                    QStringLiteral("FILE"));
+    parser.addOption(output);
+    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    if (const int stop = parseCommand(parser, commands().at(10), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
+        err << programName() << " report: " << tr("give one project file and -o FILE.pdf") << '\n';
+        return kExitUsage;
+    }
+    const QString file = parser.positionalArguments().constFirst();
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!read.project)
+        return kExitProblems;
+    const ReportResult written = writeReport(*read.project, QFileInfo(file).fileName(), parser.value(output));
+    if (!written.ok) {
+        err << programName() << " report: " << written.error << '\n';
+        return kExitProblems;
+    }
+    out << tr("%1: %2 pages").arg(parser.value(output)).arg(written.pages) << '\n';
+    return kExitOk;
+}
+
 const std::vector<Command> &commands()
 {
     static const std::vector<Command> list{
@@ -1003,6 +1033,10 @@ const std::vector<Command> &commands()
          tr("The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a "
             "tolerance needs it."),
          runGCode},
+        {QStringLiteral("report"), QStringLiteral("report -o FILE.pdf PROJECT"),
+         tr("The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, "
+            "clamping ranking, compensation, assumptions and sources."),
+         runReport},
     };
     return list;
 }

@@ -4,18 +4,38 @@
 #include "core/common/library_info.h"
 #include "translations/i18n.h"
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QTextStream>
 
 #include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace {
+
+// The report draws the part and the plots with the widgets' painters, which need a
+// QApplication; every other command stays a console program without a display. Without an
+// explicit QT_QPA_PLATFORM the report renders offscreen, so batch runs need no X server.
+std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[])
+{
+    if (argc > 1 && std::strcmp(argv[1], "report") == 0) {
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        return std::make_unique<QApplication>(argc, argv);
+    }
+    return std::make_unique<QCoreApplication>(argc, argv);
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
-    QCoreApplication app(argc, argv);
+    const std::unique_ptr<QCoreApplication> app = makeApplication(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("TolTurn"));
     QCoreApplication::setApplicationName(QStringLiteral("tolturn-cli"));
     QCoreApplication::setApplicationVersion(tolturn::tolturnVersion());
-    tolturn::installTranslations(app);
+    tolturn::installTranslations(*app);
     QTextStream out(stdout);
     QTextStream err(stderr);
     const int code = tolturn::runCommandLine(QCoreApplication::arguments(), out, err);

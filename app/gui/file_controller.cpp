@@ -4,9 +4,12 @@
 #include "app/gui/recent_files.h"
 #include "core/io/project_file.h"
 #include "widgets/document/project_document.h"
+#include "widgets/report/report_writer.h"
 
+#include <QCursor>
 #include <QDir>
 #include <QFileInfo>
+#include <QGuiApplication>
 
 namespace tolturn {
 
@@ -152,6 +155,38 @@ bool FileController::saveAs()
     if (QFileInfo(path).suffix().isEmpty())
         path += QLatin1Char('.') + fileSuffix();
     return saveTo(path);
+}
+
+bool FileController::exportReport()
+{
+    if (!m_document.hasProject())
+        return false;
+    const QFileInfo project(m_document.filePath());
+    const QString folder = project.filePath().isEmpty() ? QDir::homePath() : project.absolutePath();
+    QString path = m_prompts.chooseReportFile(QDir(folder).filePath(m_document.displayName() + QStringLiteral(".pdf")));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".pdf");
+    return exportReportTo(path);
+}
+
+bool FileController::exportReportTo(const QString &pdfPath)
+{
+    if (!m_document.hasProject())
+        return false;
+    // About a quarter of a second for a typical part (docs/benchmarks.md); the plots are widgets,
+    // so the report is drawn on this thread behind a busy cursor.
+    QGuiApplication::setOverrideCursor(QCursor(Qt::WaitCursor));
+    const ReportResult result = writeReport(m_document.project(), m_document.displayName(), pdfPath);
+    QGuiApplication::restoreOverrideCursor();
+    if (!result.ok) {
+        m_prompts.showError(tr("Cannot export the report"), result.error);
+        return false;
+    }
+    Q_EMIT statusMessage(
+        tr("Report written to %1 (%n page(s))", nullptr, result.pages).arg(QDir::toNativeSeparators(pdfPath)));
+    return true;
 }
 
 bool FileController::saveTo(const QString &path)

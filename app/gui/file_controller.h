@@ -22,10 +22,11 @@ public:
     [[nodiscard]] virtual SaveChoice askToSaveChanges(const QString &documentName) = 0;
     [[nodiscard]] virtual QString chooseFileToOpen(const QString &startFolder) = 0;
     [[nodiscard]] virtual QString chooseFileToSave(const QString &suggestedPath) = 0;
+    [[nodiscard]] virtual QString chooseReportFile(const QString &suggestedPath) = 0;
     virtual void showError(const QString &title, const QString &text) = 0;
 };
 
-// File > Open, Save, Save As and the recent-file list. Choosing a path and writing a file are
+// File > Open, Save, Save As, Export Report and the recent-file list. Choosing a path and writing a file are
 // separate steps; a failed open leaves the document as it was, a failed save leaves both the
 // document (still modified) and the file on disk as they were.
 class FileController : public QObject {
@@ -47,6 +48,9 @@ public:
     bool save();
     bool saveAs();
     bool saveTo(const QString &path);
+    // File > Export Report: the PDF report of the document as it is now (saved or not).
+    bool exportReport();
+    bool exportReportTo(const QString &pdfPath);
 
     // The project File > New starts from.
     [[nodiscard]] static Project newBar();

@@ -135,6 +135,11 @@ void MainWindow::createFileMenu()
     m_saveAsAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save-as")), tr("Save &As…"));
     m_saveAsAction->setShortcut(QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, m_files, [this] { m_files->saveAs(); });
+    m_exportReportAction =
+        file->addAction(QIcon::fromTheme(QStringLiteral("x-office-document")), tr("Export &Report…"));
+    m_exportReportAction->setShortcut(Qt::CTRL | Qt::Key_P);
+    m_exportReportAction->setObjectName(QStringLiteral("exportReportAction"));
+    connect(m_exportReportAction, &QAction::triggered, m_files, [this] { m_files->exportReport(); });
     QAction *closeAction = file->addAction(tr("&Close"));
     closeAction->setShortcut(QKeySequence::Close);
     connect(closeAction, &QAction::triggered, m_files, [this] { m_files->close(); });
@@ -182,6 +187,7 @@ void MainWindow::updateTitle()
     const bool has = m_document->hasProject();
     m_saveAction->setEnabled(has);
     m_saveAsAction->setEnabled(has);
+    m_exportReportAction->setEnabled(has);
     setWindowModified(m_document->isModified());
     setWindowTitle(has ? tr("%1[*] — TolTurn").arg(m_document->displayName()) : QStringLiteral("TolTurn"));
 }
@@ -220,6 +226,11 @@ QString MainWindow::chooseFileToOpen(const QString &startFolder)
 QString MainWindow::chooseFileToSave(const QString &suggestedPath)
 {
     return QFileDialog::getSaveFileName(this, tr("Save Project As"), suggestedPath, FileController::fileFilter());
+}
+
+QString MainWindow::chooseReportFile(const QString &suggestedPath)
+{
+    return QFileDialog::getSaveFileName(this, tr("Export Report"), suggestedPath, tr("PDF documents (*.pdf)"));
 }
 
 FilePrompts::SaveChoice MainWindow::askToSaveChanges(const QString &documentName)

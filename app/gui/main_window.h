@@ -42,6 +42,7 @@ public:
     // FilePrompts
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
     [[nodiscard]] QString chooseFileToSave(const QString &suggestedPath) override;
+    [[nodiscard]] QString chooseReportFile(const QString &suggestedPath) override;
     void showError(const QString &title, const QString &text) override;
     [[nodiscard]] SaveChoice askToSaveChanges(const QString &documentName) override;
 
@@ -68,6 +69,7 @@ private:
     QMenu *m_recentMenu = nullptr;
     QLabel *m_summary;
     QAction *m_saveAction = nullptr;
+    QAction *m_exportReportAction = nullptr;
     QAction *m_saveAsAction = nullptr;
 };
 

@@ -1,41 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tolturn-cli as a user runs it: the real binary, its output streams and exit codes.
+#include "tests/cli/cli_runner.h"
+
 #include "core/cutting/cutting_forces.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
 
-namespace {
-
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-Run runCli(const QStringList &args)
-{
-    QProcess process;
-    process.start(QStringLiteral(TOLTURN_CLI_PATH), args);
-    if (!process.waitForFinished(60000))
-        qFatal("tolturn-cli did not finish");
-    return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
-            QString::fromUtf8(process.readAllStandardError())};
-}
-
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
-
-} // namespace
+using tolturn::test::example;
+using tolturn::test::Run;
+using tolturn::test::runCli;
 
 class TestCli : public QObject {
     Q_OBJECT

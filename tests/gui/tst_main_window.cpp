@@ -13,6 +13,7 @@
 #include "widgets/profile/profile_view.h"
 #include "widgets/results/deflection_panel.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QFile>
 #include <QGraphicsItem>
@@ -187,6 +188,29 @@ private Q_SLOTS:
         QVERIFY(!w.fileController()->saveTo(QStringLiteral("/nonexistent-folder/x.tolturn")));
         QVERIFY2(shown.contains(QStringLiteral("/nonexistent-folder/x.tolturn")), qPrintable(shown));
         QVERIFY(shown.contains(QStringLiteral("file on disk is unchanged")));
+    }
+
+    void exportReportFromTheFileMenu()
+    {
+        MainWindow w;
+        auto *action = w.findChild<QAction *>(QStringLiteral("exportReportAction"));
+        QVERIFY(action);
+        QVERIFY(w.fileController()->close());
+        QVERIFY(!action->isEnabled()); // nothing to report without a document
+        QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
+        QVERIFY(action->isEnabled());
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("sleeve.pdf"));
+        QVERIFY(w.fileController()->exportReportTo(pdf));
+        QFile file(pdf);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.read(5) == "%PDF-");
+        QVERIFY(!w.document()->isModified()); // exporting does not touch the document
+
+        QString shown;
+        closeNextMessageBox(&shown);
+        QVERIFY(!w.fileController()->exportReportTo(QStringLiteral("/nonexistent-folder/r.pdf")));
+        QVERIFY2(shown.contains(QStringLiteral("/nonexistent-folder/r.pdf")), qPrintable(shown));
     }
 
     void bundledExamplesAllOpen()

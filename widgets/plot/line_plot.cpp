@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/plot/line_plot.h"
 
+#include "widgets/plot/plot_backend.h"
+
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -76,6 +78,11 @@ int LinePlot::curveCount() const
 QString LinePlot::curveName(int index) const
 {
     return m_plot->graph(index)->name();
+}
+
+void LinePlot::render(QPainter *painter, const QRectF &target, double textScale)
+{
+    renderPlot(*m_plot, *painter, target, textScale);
 }
 
 } // namespace tolturn

@@ -7,6 +7,7 @@
 #include <QWidget>
 
 class QCustomPlot;
+class QPainter;
 
 namespace tolturn {
 
@@ -31,6 +32,9 @@ public:
     [[nodiscard]] QString curveName(int index) const;
 
     [[nodiscard]] QString title() const { return m_title; }
+
+    // Draws the plot as vectors into `target` on `painter` (reports, SVG/PDF export); see renderPlot().
+    void render(QPainter *painter, const QRectF &target, double textScale = 1.0);
 
 private:
     QCustomPlot *m_plot;

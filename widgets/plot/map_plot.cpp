@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/plot/map_plot.h"
 
+#include "widgets/plot/plot_backend.h"
+
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -85,6 +87,11 @@ void MapPlot::addMarker(double x, double y, const QString &text)
 void MapPlot::replot()
 {
     m_plot->replot();
+}
+
+void MapPlot::render(QPainter *painter, const QRectF &target, double textScale)
+{
+    renderPlot(*m_plot, *painter, target, textScale);
 }
 
 } // namespace tolturn

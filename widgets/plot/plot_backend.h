@@ -3,10 +3,19 @@
 
 #include "core/common/library_info.h"
 
+class QCustomPlot;
+class QPainter;
+class QRectF;
+
 namespace tolturn {
 
 // The plotting library behind TolTurn's plot classes (QCustomPlot today). Only the files of
 // widgets/plot include its headers, so it can be replaced without touching the rest.
 [[nodiscard]] LibraryInfo plotBackendInfo();
+
+// Draws `plot` as vectors into `target` on `painter` (reports, PDF/SVG export). The plot is laid
+// out on a canvas `textScale` times larger than `target` and scaled down, so its screen fonts
+// come out `textScale` times smaller relative to the page.
+void renderPlot(QCustomPlot &plot, QPainter &painter, const QRectF &target, double textScale = 1.0);
 
 } // namespace tolturn

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The PDF report as a user gets it from `tolturn-cli report`, read back with poppler's
+// pdfinfo/pdftotext: page size and count, the sections, and numbers checked against the
+// published ISO 286-2 tables.
+#include "tests/cli/cli_runner.h"
+
+#include <QFile>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+using tolturn::test::example;
+using tolturn::test::Run;
+using tolturn::test::runCli;
+using tolturn::test::runProgram;
+
+namespace {
+
+QString pdfText(const QString &pdf)
+{
+    const Run r = runProgram(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+    if (r.exitCode != 0)
+        qFatal("pdftotext failed: %s", qPrintable(r.err));
+    return r.out;
+}
+
+// The line of the tolerance table that starts with `id`, split on runs of spaces.
+QStringList tableRow(const QString &text, const QString &id)
+{
+    const QRegularExpression row(QStringLiteral("^\\s*%1\\s+.*$").arg(QRegularExpression::escape(id)),
+                                 QRegularExpression::MultilineOption);
+    const QString line = row.match(text).captured(0).trimmed();
+    return line.split(QRegularExpression(QStringLiteral("\\s{2,}")));
+}
+
+} // namespace
+
+class TestReport : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void reportOfTheSteppedShaft()
+    {
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("shaft.pdf"));
+        const Run r =
+            runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+
+        const Run info = runProgram(QStringLiteral("pdfinfo"), {pdf});
+        QCOMPARE(info.exitCode, 0);
+        QVERIFY2(info.out.contains(QStringLiteral("A4")), qPrintable(info.out));
+        QVERIFY(info.out.contains(QStringLiteral("TolTurn report: Stepped shaft")));
+        const int pages = QRegularExpression(QStringLiteral("Pages:\\s+(\\d+)")).match(info.out).captured(1).toInt();
+        QVERIFY2(pages >= 3 && pages <= 8, qPrintable(info.out));
+        QVERIFY(r.out.contains(QStringLiteral("%1 pages").arg(pages)));
+
+        const QString text = pdfText(pdf);
+        for (const char *section :
+             {"1 Part", "2 Inputs", "3 Predicted deviation", "4 Tolerances", "5 Plan", "6 Assumptions and sources"}) {
+            const QString pattern = QStringLiteral("^%1$").arg(
+                QString::fromUtf8(section).replace(QLatin1Char(' '), QStringLiteral("\\s+")));
+            QVERIFY2(text.contains(QRegularExpression(pattern, QRegularExpression::MultilineOption)), section);
+        }
+        QVERIFY(text.contains(QStringLiteral("page %1 of %1").arg(pages)));
+        QVERIFY(text.contains(QStringLiteral("C45E-N")));
+        QVERIFY(text.contains(QStringLiteral("Radial deviation of the outer contour")));
+        QVERIFY(text.contains(QStringLiteral("Cutting window of the"))); // "fi" comes back as a ligature
+
+        // T1 is h6 on the Ø50 bearing seat: ISO 286-2 Table 1 gives IT6 = 16 µm for 30 < D ≤ 50.
+        const QStringList t1 = tableRow(text, QStringLiteral("T1"));
+        QVERIFY2(t1.size() >= 8, qPrintable(t1.join(QLatin1Char('|'))));
+        QCOMPARE(t1.at(3), QStringLiteral("h6"));
+        QCOMPARE(t1.at(5), QStringLiteral("16.000"));
+        QVERIFY(t1.at(7).startsWith(QStringLiteral("passes")));
+        // T5 perpendicularity 15 µm to datum A: the limit is the tolerance value itself.
+        const QStringList t5 = tableRow(text, QStringLiteral("T5"));
+        QVERIFY2(t5.size() >= 6, qPrintable(t5.join(QLatin1Char('|'))));
+        QCOMPARE(t5.at(5), QStringLiteral("15.000"));
+    }
+
+    void badProjectWritesNothing()
+    {
+        QTemporaryDir dir;
+        const QString project = dir.filePath(QStringLiteral("bad.tolturn"));
+        QFile file(project);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("{\"format\": \"tolturn-project\", \"version\": 1, \"part\": 7}");
+        file.close();
+        const QString pdf = dir.filePath(QStringLiteral("bad.pdf"));
+        const Run r = runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, project});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("part")), qPrintable(r.err));
+        QVERIFY(!QFile::exists(pdf));
+    }
+
+    void unwritableTargetNamesThePath()
+    {
+        const QString pdf = QStringLiteral("/nonexistent-directory/report.pdf");
+        const Run r =
+            runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(pdf), qPrintable(r.err));
+    }
+
+    void missingOutputIsUsageError()
+    {
+        const Run r = runCli({QStringLiteral("report"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestReport)
+#include "tst_report.moc"

@@ -1,0 +1,486 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/report/report_writer.h"
+
+#include "core/common/library_info.h"
+#include "core/planning/planning_report.h"
+#include "core/project/keywords.h"
+#include "core/tolerance/evaluation.h"
+#include "core/tooling/iso1832.h"
+#include "widgets/plot/line_plot.h"
+#include "widgets/plot/map_plot.h"
+#include "widgets/profile/profile_scene.h"
+#include "widgets/tolerances/tolerance_verdict_model.h"
+
+#include <QBuffer>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+#include <QGraphicsScene>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QPicture>
+#include <QSaveFile>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace tolturn {
+
+namespace {
+
+struct Report {
+    Q_DECLARE_TR_FUNCTIONS(Report)
+};
+
+QString tr(const char *text)
+{
+    return Report::tr(text);
+}
+
+// A4 in points; everything is laid out in points and replayed on the PDF at its resolution.
+constexpr double kPageWidth = 595.0;
+constexpr double kPageHeight = 842.0;
+constexpr double kMargin = 48.0;
+constexpr double kBottom = kPageHeight - kMargin - 18.0; // room for the footer
+constexpr double kWidth = kPageWidth - 2 * kMargin;
+// Plots are laid out at this multiple of their box and scaled down: screen fonts become ~8 pt.
+constexpr double kPlotTextScale = 1.5;
+
+QFont font(double pixels, bool bold = false)
+{
+    QFont f(QStringLiteral("DejaVu Sans"));
+    f.setPixelSize(static_cast<int>(std::lround(pixels))); // pixels = points here: no DPI surprises on replay
+    f.setBold(bold);
+    return f;
+}
+
+// Records the report page by page as pictures (vectors), flowing content down and breaking pages.
+class Layout {
+public:
+    Layout() { newPage(); }
+
+    void newPage()
+    {
+        if (m_painter)
+            m_painter->end();
+        m_pages.push_back(std::make_unique<QPicture>());
+        m_painter = std::make_unique<QPainter>(m_pages.back().get());
+        m_painter->setRenderHint(QPainter::Antialiasing);
+        m_y = kMargin;
+    }
+
+    void ensure(double height)
+    {
+        if (m_y + height > kBottom)
+            newPage();
+    }
+
+    void heading(const QString &text)
+    {
+        ensure(60);
+        m_y += 8;
+        m_painter->setFont(font(14, true));
+        m_painter->setPen(QColor(0x1f, 0x4e, 0x9a));
+        m_painter->drawText(QRectF(kMargin, m_y, kWidth, 20), Qt::AlignLeft | Qt::AlignVCenter, text);
+        m_y += 24;
+        m_painter->setPen(Qt::black);
+    }
+
+    void paragraph(const QString &text, double size = 9.5)
+    {
+        m_painter->setFont(font(size));
+        const QRectF bounds = m_painter->boundingRect(QRectF(kMargin, 0, kWidth, 10000), Qt::TextWordWrap, text);
+        ensure(bounds.height() + 4);
+        m_painter->setFont(font(size)); // a page break starts a new painter with default state
+        m_painter->drawText(QRectF(kMargin, m_y, kWidth, bounds.height()), Qt::TextWordWrap, text);
+        m_y += bounds.height() + 4;
+    }
+
+    // A bold line naming the figure that follows; kept on the figure's page.
+    void caption(const QString &text)
+    {
+        ensure(200);
+        m_painter->setFont(font(10, true));
+        m_painter->drawText(QRectF(kMargin, m_y, kWidth, 14), Qt::AlignLeft | Qt::AlignVCenter, text);
+        m_y += 16;
+    }
+
+    // Rows of cells; the first row is the header. `colours` gives optional backgrounds per row/column.
+    void table(const std::vector<QStringList> &rows, const std::vector<double> &widths,
+               const std::function<QColor(int row, int column)> &background = {})
+    {
+        const double rowHeight = 14.0;
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            ensure(rowHeight);
+            double x = kMargin;
+            m_painter->setFont(font(8.2, r == 0));
+            for (std::size_t c = 0; c < widths.size() && c < static_cast<std::size_t>(rows[r].size()); ++c) {
+                const QRectF box(x, m_y, widths[c], rowHeight);
+                const QColor fill =
+                    r == 0 ? QColor(0xe8, 0xec, 0xf2)
+                           : (background ? background(static_cast<int>(r), static_cast<int>(c)) : QColor());
+                if (fill.isValid())
+                    m_painter->fillRect(box, fill);
+                m_painter->setPen(QColor(0xbb, 0xbb, 0xbb));
+                m_painter->drawRect(box);
+                m_painter->setPen(Qt::black);
+                const QString text = m_painter->fontMetrics().elidedText(
+                    rows[r].at(static_cast<qsizetype>(c)), Qt::ElideRight, static_cast<int>(widths[c] - 6));
+                m_painter->drawText(box.adjusted(3, 0, -3, 0), Qt::AlignLeft | Qt::AlignVCenter, text);
+                x += widths[c];
+            }
+            m_y += rowHeight;
+        }
+        m_y += 6;
+    }
+
+    // A block of given height drawn by `draw` into the full-width rectangle.
+    void block(double height, const std::function<void(QPainter &, const QRectF &)> &draw)
+    {
+        ensure(height);
+        draw(*m_painter, QRectF(kMargin, m_y, kWidth, height));
+        m_y += height + 6;
+    }
+
+    std::vector<std::unique_ptr<QPicture>> finish()
+    {
+        m_painter->end();
+        m_painter.reset();
+        return std::move(m_pages);
+    }
+
+private:
+    std::vector<std::unique_ptr<QPicture>> m_pages;
+    std::unique_ptr<QPainter> m_painter;
+    double m_y = kMargin;
+};
+
+QString num(double v, int decimals)
+{
+    return QString::number(v, 'f', decimals);
+}
+
+void titleBlock(Layout &l, const Project &p, const QString &projectName)
+{
+    l.block(70, [&](QPainter &painter, const QRectF &r) {
+        painter.fillRect(r, QColor(0xf2, 0xf5, 0xf9));
+        painter.setPen(QColor(0x1f, 0x4e, 0x9a));
+        painter.drawRect(r);
+        painter.setFont(font(18, true));
+        painter.drawText(r.adjusted(10, 6, -10, -30), Qt::AlignLeft | Qt::AlignTop,
+                         tr("Tolerance report: %1").arg(p.part.name.isEmpty() ? projectName : p.part.name));
+        painter.setPen(Qt::black);
+        painter.setFont(font(9));
+        painter.drawText(
+            r.adjusted(10, 36, -10, -4), Qt::AlignLeft | Qt::AlignTop,
+            tr("Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
+                .arg(projectName, QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")),
+                     tolturnVersion(), dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm)));
+    });
+}
+
+void drawing(Layout &l, const Project &p)
+{
+    l.heading(tr("1  Part"));
+    QGraphicsScene scene;
+    buildProfileScene(scene, p.part);
+    const QRectF source = scene.itemsBoundingRect().adjusted(-4, -4, 4, 4);
+    const double height = std::min(300.0, kWidth * source.height() / source.width());
+    l.block(height,
+            [&](QPainter &painter, const QRectF &r) { scene.render(&painter, r, source, Qt::KeepAspectRatio); });
+}
+
+void inputs(Layout &l, const Project &p, const DeviationResult &d)
+{
+    l.heading(tr("2  Inputs"));
+    const DataLibrary &data = DataLibrary::builtIn();
+    const MaterialData *m = data.material(p.materialId);
+    const MachineData *machine = data.machine(p.machineId);
+    const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+    std::vector<QStringList> rows{{tr("Input"), tr("Value")}};
+    rows.push_back({tr("Material"), m ? QStringLiteral("%1 — %2; E %3 MPa, kc1.1 %4 N/mm², mc %5")
+                                            .arg(m->id, m->name, num(m->youngsModulus_MPa.value, 0),
+                                                 num(m->kc11_MPa.value, 0), num(m->mc.value, 2))
+                                      : p.materialId});
+    rows.push_back({tr("Machine"), machine ? machine->name : p.machineId});
+    rows.push_back({tr("Insert"), insert.insert
+                                      ? tr("%1: %2° corner, nose radius %3 mm")
+                                            .arg(insert.insert->code, num(insert.insert->includedAngle_deg, 0),
+                                                 num(insert.insert->noseRadius_mm, 1))
+                                      : p.tool.insertCode});
+    rows.push_back({tr("Holder"),
+                    d.inputs ? tr("%1: entering angle %2°").arg(p.tool.holderCode, num(d.inputs->enteringAngle_deg, 0))
+                             : p.tool.holderCode});
+    rows.push_back(
+        {tr("Clamping"), tr("%1, clamped length %2 mm")
+                             .arg(displayName(p.clamping.method), dimensionText(p.clamping.clampedLength_mm))});
+    for (std::size_t i = 0; i < p.passes.size(); ++i) {
+        const CuttingPass &pass = p.passes[i];
+        rows.push_back(
+            {tr("Pass %1").arg(i), tr("%1: vc %2 m/min, f %3 mm/rev, ap %4 mm")
+                                       .arg(keyword(pass.kind), formatNumber(pass.cuttingSpeed_m_min),
+                                            formatNumber(pass.feed_mm_rev), formatNumber(pass.depthOfCut_mm))});
+    }
+    rows.push_back({tr("Force model"), keyword(p.cuttingModel.forceModel)});
+    rows.push_back({tr("Machine characterisation"),
+                    p.characterisation.source.isEmpty() ? tr("not characterised") : p.characterisation.source});
+    l.table(rows, {130, kWidth - 130});
+}
+
+void deviationPlots(Layout &l, const Project &p, const DeviationResult &d)
+{
+    l.heading(tr("3  Predicted deviation"));
+    if (!d.inputs) {
+        for (const Diagnostic &x : d.diagnostics)
+            l.paragraph(x.toString());
+        return;
+    }
+    const TurningInputs &in = *d.inputs;
+    l.paragraph(tr("Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.")
+                    .arg(in.passIndex)
+                    .arg(in.forceModel, num(in.forces.tangential_N, 1), num(in.forces.axial_N, 1),
+                         num(in.forces.radial_N, 1), num(d.theoreticalRa_um, 2), num(d.theoreticalRz_um, 2)));
+    for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
+        if (side == ContourSide::Inner && p.part.inner.empty())
+            continue;
+        LinePlot plot;
+        const std::pair<const char *, std::function<double(const Station &)>> curves[] = {
+            {"total", [](const Station &s) { return s.radial.total_mm(); }},
+            {"spindle–chuck / supports", [](const Station &s) { return s.radial.spindleChuck_mm; }},
+            {"workpiece", [](const Station &s) { return s.radial.workpiece_mm; }},
+            {"toolpost", [](const Station &s) { return s.radial.toolpost_mm; }},
+            {"thermal", [](const Station &s) { return s.radial.thermal_mm; }}};
+        const QColor colors[] = {QColor(0x20, 0x20, 0x20), QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0x2c),
+                                 QColor(0xff, 0x7f, 0x0e), QColor(0xd6, 0x27, 0x28)};
+        for (std::size_t c = 0; c < std::size(curves); ++c) {
+            QVector<double> x;
+            QVector<double> y;
+            for (const FeatureDeviation &f : d.features) {
+                if (f.side != side)
+                    continue;
+                for (const Station &s : f.stations) {
+                    x << s.z_mm;
+                    y << 1000.0 * curves[c].second(s);
+                }
+                x << f.stations.back().z_mm;
+                y << std::numeric_limits<double>::quiet_NaN();
+            }
+            plot.addCurve(tr(curves[c].first), x, y, colors[c], Qt::SolidLine, c == 0 ? 2.0 : 1.2);
+        }
+        plot.setAxisLabels(tr("z from the part's left end [mm]"), tr("deviation [µm]"));
+        plot.rescaleAndReplot();
+        l.caption(side == ContourSide::Outer ? tr("Radial deviation of the outer contour (material left)")
+                                             : tr("Radial deviation of the bores (material left)"));
+        l.block(190, [&](QPainter &painter, const QRectF &r) { plot.render(&painter, r, kPlotTextScale); });
+    }
+    if (!d.faces.empty()) {
+        std::vector<QStringList> rows{{tr("Face"), tr("z [mm]"), tr("tan θ"), tr("axial run-out e [µm]")}};
+        for (const FaceConicity &f : d.faces)
+            rows.push_back({f.featureId, dimensionText(f.z_mm), QString::number(f.tanTheta, 'g', 3),
+                            num(1000.0 * f.axialRunout_mm, 3)});
+        l.table(rows, {80, 80, 120, 140});
+    }
+}
+
+void verdicts(Layout &l, const Project &p, const std::vector<ToleranceEvaluation> &v)
+{
+    l.heading(tr("4  Tolerances"));
+    if (p.tolerances.empty()) {
+        l.paragraph(tr("The project has no tolerances."));
+        return;
+    }
+    std::vector<QStringList> rows{{tr("ID"), tr("Characteristic"), tr("Feature"), tr("Specification"), tr("Value [µm]"),
+                                   tr("Limit [µm]"), tr("Use"), tr("Verdict")}};
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const ToleranceEvaluation &e = v[i];
+        rows.push_back({e.toleranceId, displayName(e.type), e.featureId,
+                        ToleranceVerdictModel::specification(p.tolerances[i]),
+                        e.value_um ? num(*e.value_um, 3) : QStringLiteral("—"),
+                        e.limit_um ? num(*e.limit_um, 3) : QStringLiteral("—"),
+                        e.utilisation_pct ? num(*e.utilisation_pct, 1) + QStringLiteral(" %") : QStringLiteral("—"),
+                        verdictName(e.verdict)});
+    }
+    l.table(rows, {28, 82, 44, 68, 56, 58, 38, kWidth - 374}, [&](int row, int column) {
+        return column == 7 ? ToleranceVerdictModel::verdictColor(v[static_cast<std::size_t>(row - 1)].verdict)
+                           : QColor();
+    });
+    for (const ToleranceEvaluation &e : v) {
+        if (!e.condition.isEmpty() || !e.reason.isEmpty())
+            l.paragraph(QStringLiteral("%1: %2 %3").arg(e.toleranceId, e.condition, e.reason), 8.0);
+    }
+}
+
+// The cutting window as a map: feasible points green, others coloured by their binding constraint.
+void windowMap(Layout &l, const PlanningReport &r)
+{
+    const PlanResult &pl = r.plan;
+    const CuttingWindow &w = r.window;
+    MapPlot map;
+    QImage image(w.columns, w.rows, QImage::Format_RGB32);
+    for (int row = 0; row < w.rows; ++row)
+        for (int column = 0; column < w.columns; ++column) {
+            const WindowCell &c = w.at(column, row);
+            const QColor color = c.feasible ? QColor(0x74, 0xc4, 0x76)
+                                            : QColor::fromHsv(static_cast<int>(qHash(c.binding) % 360), 70, 235);
+            image.setPixel(column, row, color.rgb());
+        }
+    map.setImage(image, w.feed.min, w.feed.max, w.other.min, w.other.max);
+    for (const auto &[label, count] : w.boundaries()) {
+        double x = 0, y = 0;
+        for (const WindowCell &c : w.cells)
+            if (!c.feasible && c.bindingLabel == label) {
+                x += c.x;
+                y += c.y;
+            }
+        map.addLabel(x / count, y / count, label);
+    }
+    if (pl.feasible)
+        map.addMarker(pl.candidate.finishing.feed_mm_rev, pl.candidate.finishing.cuttingSpeed_m_min, tr("optimum"));
+    map.setAxisLabels(tr("feed f [mm/rev]"), tr("cutting speed vc [m/min]"));
+    map.replot();
+    l.caption(tr("Cutting window of the finishing pass (green: feasible)"));
+    l.block(200, [&](QPainter &painter, const QRectF &rect) { map.render(&painter, rect, kPlotTextScale); });
+}
+
+void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
+{
+    l.heading(tr("5  Plan"));
+    if (!p.planning.cuttingSpeed_m_min) {
+        l.paragraph(tr("The project has no planning data (the insert's cutting ranges), so no plan was optimised."));
+    } else {
+        PlanningJobOptions o;
+        o.windowSize = 64;
+        const PlanningReport r = runPlanningJob(p, DataLibrary::builtIn(), o);
+        if (r.problem) {
+            const PlanResult &pl = r.plan;
+            l.paragraph(
+                (pl.feasible ? tr("Optimal plan (%1): ")
+                             : tr("No plan meets every constraint; the least-violating one (%1): "))
+                    .arg(keyword(p.planning.objective)) +
+                tr("%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 roughing passes at vc %6 m/min, "
+                   "f %7 mm/rev.")
+                    .arg(num(pl.evaluation.time_min, 3), num(pl.candidate.finishing.cuttingSpeed_m_min, 1),
+                         num(pl.candidate.finishing.feed_mm_rev, 3), num(pl.candidate.finishing.depthOfCut_mm, 3))
+                    .arg(pl.candidate.roughingPasses)
+                    .arg(num(pl.candidate.roughing.cuttingSpeed_m_min, 1), num(pl.candidate.roughing.feed_mm_rev, 3)));
+            QStringList binding;
+            for (const ConstraintValue &c : pl.binding)
+                binding << c.label();
+            for (const ConstraintValue &c : pl.conflicts)
+                binding << tr("%1 violated by %2 %").arg(c.label(), num(100.0 * c.violation(), 1));
+            if (!binding.isEmpty())
+                l.paragraph(tr("Binding: %1.").arg(binding.join(QStringLiteral(", "))));
+            windowMap(l, r);
+            std::vector<QStringList> rows{{tr("Rank"), tr("Clamping"), tr("Result")}};
+            for (std::size_t i = 0; i < r.clamping.size(); ++i)
+                rows.push_back({QString::number(i + 1), displayName(r.clamping[i].method), r.clamping[i].reason});
+            l.table(rows, {36, 110, kWidth - 146});
+        }
+    }
+    std::vector<QStringList> rows{
+        {tr("Feature"), tr("Action"), tr("Offset Ø [µm]"), tr("Residual before [µm]"), tr("Residual after [µm]")}};
+    for (const FeatureCompensation &f : finishing.compensation.features)
+        rows.push_back({f.featureId, compensationKeyword(f.action),
+                        f.action == CompensationAction::ConstantOffset ? num(f.offset_um, 1) : QString(),
+                        num(f.residualBefore_um, 3), num(f.residualAfter_um, 3)});
+    l.paragraph(tr("Compensation of the project's finishing pass, only where a tolerance needs it:"));
+    l.table(rows, {70, 90, 90, 120, 120});
+}
+
+void sources(Layout &l, const Project &p, const DeviationResult &d)
+{
+    l.heading(tr("6  Assumptions and sources"));
+    if (d.inputs) {
+        for (const QString &note : d.inputs->notes)
+            l.paragraph(QStringLiteral("• ") + note, 8.5);
+    }
+    l.paragraph(tr("Model: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP "
+                   "system for turning (2008): eq. 2–8 (deviation), §V and Fig. 4 (tolerances), §VI (optimisation). "
+                   "X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) "
+                   "(2002): eq. 15–20 (forces), §3.4 (compensation). Kienzle (1952) forces; Timoshenko beam with the "
+                   "shear coefficient of G. R. Cowper (1966); ISO 286-1/-2 limits; ISO 1101 characteristics. The "
+                   "equations as implemented, their corrections and the validation: docs/model.md in TolTurn."),
+                8.5);
+    const DataLibrary &data = DataLibrary::builtIn();
+    if (const MaterialData *m = data.material(p.materialId)) {
+        l.paragraph(tr("Material data (%1): %2").arg(m->id, data.sourceText(m->kc11_MPa.source)), 8.0);
+        l.paragraph(tr("Elastic constants: %1").arg(data.sourceText(m->youngsModulus_MPa.source)), 8.0);
+    }
+    if (!p.planning.rangesSource.isEmpty())
+        l.paragraph(tr("Cutting ranges: %1").arg(p.planning.rangesSource), 8.0);
+}
+
+} // namespace
+
+ReportResult writeReport(const Project &project, const QString &projectName, const QString &pdfPath,
+                         const std::function<bool(double)> &progress)
+{
+    ReportResult result;
+    auto step = [&](double f) { return !progress || progress(f); };
+    const DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
+    const std::vector<ToleranceEvaluation> verdictList =
+        deviation.inputs ? evaluateTolerances(project, deviation) : std::vector<ToleranceEvaluation>{};
+    const FinishingOutput finishing = finishingOutput(project, DataLibrary::builtIn());
+
+    Layout layout;
+    titleBlock(layout, project, projectName);
+    drawing(layout, project);
+    inputs(layout, project, deviation);
+    if (!step(0.2))
+        return {false, tr("cancelled"), 0};
+    deviationPlots(layout, project, deviation);
+    verdicts(layout, project, verdictList);
+    if (!step(0.4))
+        return {false, tr("cancelled"), 0};
+    plan(layout, project, finishing);
+    if (!step(0.8))
+        return {false, tr("cancelled"), 0};
+    sources(layout, project, deviation);
+    const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
+
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    {
+        QPdfWriter pdf(&buffer);
+        pdf.setPageSize(QPageSize(QPageSize::A4));
+        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        pdf.setResolution(600);
+        pdf.setTitle(tr("TolTurn report: %1").arg(project.part.name));
+        pdf.setCreator(QStringLiteral("TolTurn %1").arg(tolturnVersion()));
+        QPainter painter(&pdf);
+        const double scale = pdf.resolution() / 72.0;
+        for (std::size_t i = 0; i < pages.size(); ++i) {
+            if (i > 0)
+                pdf.newPage();
+            painter.save();
+            painter.scale(scale, scale);
+            // drawPicture() rescales a picture by the ratio of the device's to the picture's
+            // resolution; the page is laid out in points, so undo that ratio around the replay.
+            const double replay = pages[i]->logicalDpiX() / static_cast<double>(pdf.logicalDpiX());
+            painter.save();
+            painter.scale(replay, replay);
+            painter.drawPicture(QPointF(0, 0), *pages[i]);
+            painter.restore();
+            painter.setFont(font(8));
+            painter.setPen(QColor(0x66, 0x66, 0x66));
+            painter.drawText(QRectF(kMargin, kPageHeight - kMargin, kWidth, 14), Qt::AlignLeft | Qt::AlignVCenter,
+                             QStringLiteral("TolTurn %1 — %2").arg(tolturnVersion(), project.part.name));
+            painter.drawText(QRectF(kMargin, kPageHeight - kMargin, kWidth, 14), Qt::AlignRight | Qt::AlignVCenter,
+                             tr("page %1 of %2").arg(i + 1).arg(pages.size()));
+            painter.restore();
+        }
+    }
+    QSaveFile file(pdfPath);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        result.error = tr("cannot write '%1': %2").arg(pdfPath, file.errorString());
+        return result;
+    }
+    result.ok = true;
+    result.pages = static_cast<int>(pages.size());
+    step(1.0);
+    return result;
+}
+
+} // namespace tolturn

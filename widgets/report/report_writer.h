@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/project/project.h"
+
+#include <QString>
+
+#include <functional>
+
+namespace tolturn {
+
+struct ReportResult {
+    bool ok = false;
+    QString error; // what went wrong, naming the file
+    int pages = 0;
+};
+
+// Writes the PDF report of a project (File > Export Report, `tolturn-cli report`): title block,
+// the part drawing, the inputs (material, machine, tool, clamping, passes), the deviation plots
+// per contribution, the tolerance verdicts, the plan with the cutting window, the clamping
+// ranking and the compensation, the assumptions and the sources of the model and the data, with
+// page numbers. Drawing and plots are vectors. Needs a QApplication (offscreen is enough). The
+// file is written atomically. `progress` (0…1) returning false cancels.
+[[nodiscard]] ReportResult writeReport(const Project &project, const QString &projectName, const QString &pdfPath,
+                                       const std::function<bool(double)> &progress = {});
+
+} // namespace tolturn
