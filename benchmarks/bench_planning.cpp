@@ -18,7 +18,8 @@ using tolturn::bench::medianMilliseconds;
 
 namespace {
 
-Tolerance geometric(const char *id, ToleranceType type, const char *feature, double zone, QStringList datums = {})
+Tolerance geometric(const char *id, ToleranceType type, const char *feature, double zone,
+                    const QStringList &datums = {})
 {
     Tolerance t;
     t.id = QString::fromLatin1(id);
@@ -70,8 +71,9 @@ int main(int argc, char *argv[])
     const double build = medianMilliseconds(21, [&] { (void)PlanningProblem::build(project, DataLibrary::builtIn()); });
     std::printf("problem set-up (inputs, influence table): median %.2f ms\n", build);
 
-    for (const auto &[plane, name] :
+    for (const auto &[windowPlane, name] :
          {std::pair{WindowPlane::FeedSpeed, "feed-speed"}, std::pair{WindowPlane::FeedDepth, "feed-depth"}}) {
+        const WindowPlane plane = windowPlane; // clang 14 cannot capture a structured binding in a lambda (P1091R3)
         for (const int threads : {1, 2}) {
             WindowOptions o;
             o.threads = threads;

@@ -11,6 +11,7 @@
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
 #include "widgets/results/deflection_panel.h"
+#include "widgets/setup/setup_panel.h"
 #include "widgets/tolerances/tolerance_panel.h"
 
 #include <QAction>
@@ -38,6 +39,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_deflection(new DeflectionPanel(this))
     , m_tolerances(new TolerancePanel(*m_document, this))
     , m_planning(new PlanningPanel(*m_document, this))
+    , m_setup(new SetupPanel(*m_document, this))
     , m_summary(new QLabel(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
@@ -58,7 +60,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_tolerances, &TolerancePanel::featureActivated, m_profileView, &ProfileView::selectFeature);
     rebuildRecentMenu();
     updateTitle();
-    resize(1500, 900);
+    resize(1600, 950);
     // Docks and window as the user left them.
     const QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
@@ -88,6 +90,10 @@ void MainWindow::createEditMenu()
 
 void MainWindow::createDocks()
 {
+    auto *setup = new QDockWidget(tr("Set-up"), this);
+    setup->setObjectName(QStringLiteral("setupDock"));
+    setup->setWidget(m_setup);
+    addDockWidget(Qt::LeftDockWidgetArea, setup);
     auto *tolerances = new QDockWidget(tr("Tolerances"), this);
     tolerances->setObjectName(QStringLiteral("tolerancesDock"));
     tolerances->setWidget(m_tolerances);
@@ -103,9 +109,10 @@ void MainWindow::createDocks()
     addDockWidget(Qt::BottomDockWidgetArea, planning);
     tabifyDockWidget(dock, planning);
     dock->raise();
-    resizeDocks({tolerances}, {700}, Qt::Horizontal);
+    resizeDocks({setup, tolerances}, {380, 680}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
     QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(setup->toggleViewAction());
     view->addAction(dock->toggleViewAction());
     view->addAction(tolerances->toggleViewAction());
     view->addAction(planning->toggleViewAction());

@@ -12,6 +12,7 @@ namespace tolturn {
 
 class DeflectionPanel;
 class PlanningPanel;
+class SetupPanel;
 class TolerancePanel;
 class ProfileView;
 class ProjectDocument;
@@ -38,6 +39,8 @@ public:
     [[nodiscard]] TolerancePanel *tolerancePanel() const { return m_tolerances; }
 
     [[nodiscard]] PlanningPanel *planningPanel() const { return m_planning; }
+
+    [[nodiscard]] SetupPanel *setupPanel() const { return m_setup; }
 
     // FilePrompts
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
@@ -66,6 +69,7 @@ private:
     DeflectionPanel *m_deflection;
     TolerancePanel *m_tolerances;
     PlanningPanel *m_planning;
+    SetupPanel *m_setup;
     QMenu *m_recentMenu = nullptr;
     QLabel *m_summary;
     QAction *m_saveAction = nullptr;

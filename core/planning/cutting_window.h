@@ -34,7 +34,8 @@ struct CuttingWindow {
 
     [[nodiscard]] const WindowCell &at(int column, int row) const
     {
-        return cells[static_cast<std::size_t>(row * columns + column)];
+        return cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+                     static_cast<std::size_t>(column)];
     }
 
     // Constraints that bound the feasible region somewhere in the map, with the number of cells

@@ -226,6 +226,26 @@ Diagnostics ProjectDocument::setPasses(const std::vector<CuttingPass> &passes, c
     return editField(&Project::passes, passes, description);
 }
 
+Diagnostics ProjectDocument::setMaterial(const QString &materialId)
+{
+    return editField(&Project::materialId, materialId, tr("Change material to %1").arg(materialId));
+}
+
+Diagnostics ProjectDocument::setMachine(const QString &machineId)
+{
+    return editField(&Project::machineId, machineId, tr("Change machine to %1").arg(machineId));
+}
+
+Diagnostics ProjectDocument::setTool(const Tool &tool)
+{
+    return editField(&Project::tool, tool, tr("Change tool"));
+}
+
+Diagnostics ProjectDocument::setClamping(const Clamping &clamping)
+{
+    return editField(&Project::clamping, clamping, tr("Change clamping"));
+}
+
 QString ProjectDocument::nextToleranceId() const
 {
     for (int n = 1;; ++n) {

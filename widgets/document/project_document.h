@@ -49,6 +49,10 @@ public:
     Diagnostics setDatum(const Datum &datum);
     Diagnostics setPlanning(const PlanningSettings &planning);
     Diagnostics setPasses(const std::vector<CuttingPass> &passes, const QString &description);
+    Diagnostics setMaterial(const QString &materialId);
+    Diagnostics setMachine(const QString &machineId);
+    Diagnostics setTool(const Tool &tool);
+    Diagnostics setClamping(const Clamping &clamping);
 
     // A tolerance id not used yet: "T1", "T2", ...
     [[nodiscard]] QString nextToleranceId() const;

@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Set-up dock driven as a user drives it: each change is one undoable edit, the deflection
+// curves follow it, and a refused value is put back with a message naming the field and value.
+#include "app/gui/file_controller.h"
+#include "app/gui/main_window.h"
+#include "widgets/document/project_document.h"
+#include "widgets/results/deflection_panel.h"
+#include "widgets/setup/setup_panel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+
+using namespace tolturn;
+
+namespace {
+
+QString example(const char *name)
+{
+    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
+}
+
+// What a user's choice in a combo box does: select the item, then the box reports it.
+void choose(QComboBox *box, const QVariant &data)
+{
+    const int index = box->findData(data);
+    QVERIFY2(index >= 0, qPrintable(data.toString()));
+    box->setCurrentIndex(index);
+    Q_EMIT box->activated(index);
+}
+
+// Radial workpiece deflection at the last tool position of the journal O9 (z = 149 mm, 1 mm
+// before the right end face of the stepped shaft).
+double journalEndDeflection_mm(const DeviationResult &result)
+{
+    for (const FeatureDeviation &f : result.features)
+        if (f.featureId == QLatin1String("O9"))
+            return f.stations.back().radial.workpiece_mm;
+    return std::nan("");
+}
+
+} // namespace
+
+class TestSetupPanel : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void showsTheProject()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        QCOMPARE(s->materialBox()->currentData().toString(), QStringLiteral("C45E-N"));
+        QCOMPARE(s->machineBox()->currentData().toString(), QStringLiteral("haas-st-20"));
+        QCOMPARE(s->insertEdit()->text(), QStringLiteral("CNMG 120408"));
+        QCOMPARE(s->holderBox()->currentData().toString(), QStringLiteral("PCLNR 2525M12"));
+        QCOMPARE(s->clampedLengthBox()->value(), 35.0);
+        QCOMPARE(s->passBox(1, 1)->value(), 0.1); // finishing feed
+        QVERIFY(w.fileController()->close());
+        QVERIFY(!s->isEnabled());
+    }
+
+    void tailstockChangesTheCurvesAndUndoes()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        const double inChuck = journalEndDeflection_mm(w.deflectionPanel()->result());
+        QVERIFY(inChuck > 0.0);
+
+        choose(s->clampingBox(), static_cast<int>(ClampingMethod::ChuckTailstock));
+        QCOMPARE(w.document()->project().clamping.method, ClampingMethod::ChuckTailstock);
+        QCOMPARE(w.document()->project().clamping.clampedLength_mm, 35.0);
+        // A rigid centre at z = 150 mm holds the end: 1 mm from it the beam barely moves, while
+        // the cantilever deflects most at its free end.
+        const double withTailstock = journalEndDeflection_mm(w.deflectionPanel()->result());
+        QVERIFY2(std::abs(withTailstock) < 0.05 * inChuck, qPrintable(QString::number(withTailstock)));
+
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->project().clamping.method, ClampingMethod::Chuck);
+        QCOMPARE(s->clampingBox()->currentData().toInt(), static_cast<int>(ClampingMethod::Chuck));
+        QCOMPARE(journalEndDeflection_mm(w.deflectionPanel()->result()), inChuck);
+    }
+
+    void betweenCentresReleasesTheJawsAndBack()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        choose(s->clampingBox(), static_cast<int>(ClampingMethod::BetweenCentres));
+        QCOMPARE(w.document()->project().clamping.clampedLength_mm, 0.0);
+        QVERIFY(!s->clampedLengthBox()->isEnabled());
+        choose(s->clampingBox(), static_cast<int>(ClampingMethod::Chuck));
+        QCOMPARE(w.document()->project().clamping.clampedLength_mm, 35.0); // grips where it gripped
+        QCOMPARE(w.document()->undoStack()->count(), 2);
+    }
+
+    void refusedClampedLengthIsPutBack()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        s->clampedLengthBox()->setValue(200.0); // the part is 150 mm long
+        QVERIFY2(s->message().contains(QStringLiteral("clamping.clamped_length_mm")), qPrintable(s->message()));
+        QVERIFY(s->message().contains(QStringLiteral("200")));
+        QCOMPARE(w.document()->project().clamping.clampedLength_mm, 35.0);
+        QCOMPARE(s->clampedLengthBox()->value(), 35.0);
+        QVERIFY(!w.document()->isModified());
+        s->clampedLengthBox()->setValue(40.0);
+        QVERIFY(s->message().isEmpty());
+        QCOMPARE(w.document()->project().clamping.clampedLength_mm, 40.0);
+    }
+
+    void badInsertCodeNamesThePosition()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        s->insertEdit()->setText(QStringLiteral("CNXG 120408"));
+        Q_EMIT s->insertEdit()->editingFinished();
+        QVERIFY2(s->message().contains(QStringLiteral("tool.insert")), qPrintable(s->message()));
+        QCOMPARE(s->insertEdit()->text(), QStringLiteral("CNMG 120408"));
+        QCOMPARE(w.document()->project().tool.insertCode, QStringLiteral("CNMG 120408"));
+
+        s->insertEdit()->setText(QStringLiteral("cnmg120404"));
+        Q_EMIT s->insertEdit()->editingFinished();
+        QVERIFY(s->message().isEmpty());
+        QCOMPARE(w.document()->project().tool.insertCode, QStringLiteral("CNMG 120404")); // normalised
+    }
+
+    void cuttingConditionsAndMaterialAreEdits()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        const double fcBefore = w.deflectionPanel()->result().inputs->forces.tangential_N;
+        s->passBox(1, 1)->setValue(0.2); // finishing feed doubled
+        QCOMPARE(w.document()->project().passes[1].feed_mm_rev, 0.2);
+        // Kienzle, Fc = kc1.1 b h^(1 - mc): doubling h multiplies Fc by 2^(1 - mc); C45E-N mc = 0.22
+        // (ISCAR group 2, resources/data/materials.json).
+        const double fcAfter = w.deflectionPanel()->result().inputs->forces.tangential_N;
+        QVERIFY2(std::abs(fcAfter / fcBefore - std::pow(2.0, 1.0 - 0.22)) < 1e-6,
+                 qPrintable(QString::number(fcAfter / fcBefore)));
+
+        choose(s->materialBox(), QStringLiteral("42CrMo4-QT"));
+        QCOMPARE(w.document()->project().materialId, QStringLiteral("42CrMo4-QT"));
+        QCOMPARE(w.document()->undoStack()->count(), 2);
+        w.document()->undoStack()->undo();
+        QCOMPARE(s->materialBox()->currentData().toString(), QStringLiteral("C45E-N"));
+    }
+};
+
+QTEST_MAIN(TestSetupPanel)
+#include "tst_setup_panel.moc"

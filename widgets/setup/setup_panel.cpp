@@ -1,0 +1,358 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/setup/setup_panel.h"
+
+#include "core/data/data_library.h"
+#include "core/project/keywords.h"
+#include "core/tooling/iso1832.h"
+#include "widgets/document/project_document.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+enum PassColumn { kSpeed = 0, kFeed = 1, kDepth = 2 };
+
+QString sourced(const DataLibrary &data, const QString &what, const SourcedValue &v)
+{
+    return QStringLiteral("%1 = %2 (%3)").arg(what).arg(v.value).arg(data.sourceText(v.source).left(160));
+}
+
+QString materialTip(const DataLibrary &data, const MaterialData &m)
+{
+    return QStringList{m.name, sourced(data, QStringLiteral("kc1.1 [N/mm²]"), m.kc11_MPa),
+                       sourced(data, QStringLiteral("mc"), m.mc),
+                       sourced(data, QStringLiteral("E [MPa]"), m.youngsModulus_MPa),
+                       SetupPanel::tr("Kienzle: Fc = kc1.1 · b · h^(1 − mc) (MODEL.md §2, Kienzle 1952).")}
+        .join(QLatin1Char('\n'));
+}
+
+// Entry bounds of a spin box: wide enough for any lathe; the document's validation judges the value.
+QDoubleSpinBox *spinBox(double min, double max, int decimals, const QString &suffix, const QString &tip)
+{
+    auto *box = new QDoubleSpinBox;
+    box->setRange(min, max);
+    box->setDecimals(decimals);
+    box->setSuffix(suffix);
+    box->setToolTip(tip);
+    box->setKeyboardTracking(false); // one edit when the value is finished, not per keystroke
+    return box;
+}
+
+// The length of the first cylinder of the outer contour: where a chuck usually grips.
+double firstCylinderLength(const PartProfile &part)
+{
+    for (const Segment &s : part.outer.segments)
+        if (s.kind == SegmentKind::Cylinder)
+            return std::abs(s.to.z_mm - s.from.z_mm);
+    return 0.0;
+}
+
+// Selects the item whose data is `value`, adding it (marked unknown) when the list lacks it.
+void selectData(QComboBox *box, const QString &value)
+{
+    int index = box->findData(value);
+    if (index < 0 && !value.isEmpty()) {
+        box->addItem(SetupPanel::tr("%1 (not in the data library)").arg(value), value);
+        index = box->count() - 1;
+    }
+    box->setCurrentIndex(index);
+}
+
+} // namespace
+
+SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
+    : QWidget(parent)
+    , m_document(document)
+    , m_material(new QComboBox)
+    , m_machine(new QComboBox)
+    , m_machineStiffness(new QLabel)
+    , m_insert(new QLineEdit)
+    , m_insertDecoded(new QLabel)
+    , m_holder(new QComboBox)
+    , m_clamping(new QComboBox)
+    , m_clampedLength(spinBox(0.0, 10000.0, 1, tr(" mm"),
+                              tr("Length of the part in the jaws from its left end; the chuck face is at this z. "
+                                 "The part is a beam built in there (Valiño et al. 2008, eq. 2–5).")))
+    , m_overhang(spinBox(0.0, 1000.0, 1, tr(" mm"),
+                         tr("Tool length out of the turret for the toolpost term (Valiño et al. 2008, eq. 6); "
+                            "'from holder' uses the holder's length.")))
+    , m_message(new QLabel)
+{
+    setObjectName(QStringLiteral("setupPanel"));
+    m_overhang->setSpecialValueText(tr("from holder"));
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_message->setObjectName(QStringLiteral("setupMessage"));
+    auto *content = new QWidget;
+    auto *column = new QVBoxLayout(content);
+    column->addWidget(createPartGroup());
+    column->addWidget(createToolGroup());
+    column->addWidget(createClampingGroup());
+    column->addWidget(createPassesGroup());
+    column->addWidget(m_message);
+    column->addStretch(1);
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(scroll);
+    for (QComboBox *box : {m_material, m_machine, m_holder}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon); // long names elide
+        box->setMinimumContentsLength(14);
+    }
+    fillChoices();
+    connect(&m_document, &ProjectDocument::projectChanged, this, &SetupPanel::projectChanged);
+    projectChanged();
+}
+
+QWidget *SetupPanel::createPartGroup()
+{
+    auto *group = new QGroupBox(tr("Material and machine"));
+    auto *form = new QFormLayout(group);
+    form->addRow(tr("&Material:"), m_material);
+    form->addRow(tr("Mac&hine:"), m_machine);
+    form->addRow(tr("Stiffness:"), m_machineStiffness);
+    m_machineStiffness->setWordWrap(true);
+    connect(m_material, &QComboBox::activated, this, &SetupPanel::applyMaterial);
+    connect(m_machine, &QComboBox::activated, this, &SetupPanel::applyMachine);
+    return group;
+}
+
+QWidget *SetupPanel::createToolGroup()
+{
+    auto *group = new QGroupBox(tr("Tool"));
+    auto *form = new QFormLayout(group);
+    m_insert->setToolTip(tr("ISO 1832 designation, e.g. CNMG 120408: shape, clearance, tolerance, type, size, "
+                            "thickness, corner radius."));
+    m_insert->setPlaceholderText(QStringLiteral("CNMG 120408"));
+    form->addRow(tr("&Insert (ISO 1832):"), m_insert);
+    form->addRow(QString(), m_insertDecoded);
+    form->addRow(tr("H&older (ISO 5608):"), m_holder);
+    form->addRow(tr("&Overhang:"), m_overhang);
+    connect(m_insert, &QLineEdit::editingFinished, this, &SetupPanel::applyTool);
+    connect(m_holder, &QComboBox::activated, this, &SetupPanel::applyTool);
+    connect(m_overhang, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyTool);
+    return group;
+}
+
+QWidget *SetupPanel::createClampingGroup()
+{
+    auto *group = new QGroupBox(tr("Clamping"));
+    auto *form = new QFormLayout(group);
+    for (const ClampingMethod m :
+         {ClampingMethod::Chuck, ClampingMethod::ChuckTailstock, ClampingMethod::BetweenCentres})
+        m_clamping->addItem(displayName(m), static_cast<int>(m));
+    m_clamping->setToolTip(tr("Boundary conditions of the workpiece beam: built in at the chuck face, supported "
+                              "by the tailstock centre, or by two centres (MODEL.md §3)."));
+    form->addRow(tr("&Method:"), m_clamping);
+    form->addRow(tr("Clamped &length:"), m_clampedLength);
+    connect(m_clamping, &QComboBox::activated, this, &SetupPanel::applyClamping);
+    connect(m_clampedLength, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyClamping);
+    return group;
+}
+
+QWidget *SetupPanel::createPassesGroup()
+{
+    auto *group = new QGroupBox(tr("Cutting conditions"));
+    m_passGrid = new QGridLayout(group);
+    m_passGrid->addWidget(new QLabel(tr("Pass")), 0, 0);
+    m_passGrid->addWidget(new QLabel(tr("vc [m/min]")), 0, 1 + kSpeed);
+    m_passGrid->addWidget(new QLabel(tr("f [mm/rev]")), 0, 1 + kFeed);
+    m_passGrid->addWidget(new QLabel(tr("ap [mm]")), 0, 1 + kDepth);
+    return group;
+}
+
+void SetupPanel::fillChoices()
+{
+    const DataLibrary &library = DataLibrary::builtIn();
+    for (const MaterialData &m : library.materials()) {
+        m_material->addItem(QStringLiteral("%1 — %2").arg(m.id, m.name), m.id);
+        m_material->setItemData(m_material->count() - 1, materialTip(library, m), Qt::ToolTipRole);
+    }
+    for (const MachineData &m : library.machines())
+        m_machine->addItem(m.name, m.id);
+    for (const HolderData &h : library.holders())
+        m_holder->addItem(QStringLiteral("%1 (%2, κr %3°)").arg(h.code, h.kind).arg(h.enteringAngle_deg.value), h.code);
+}
+
+void SetupPanel::rebuildPassRows(int count)
+{
+    while (static_cast<int>(m_passBoxes.size()) > count) {
+        for (QDoubleSpinBox *box : m_passBoxes.back())
+            delete box;
+        delete m_passLabels.back();
+        m_passBoxes.pop_back();
+        m_passLabels.pop_back();
+    }
+    while (static_cast<int>(m_passBoxes.size()) < count) {
+        const int row = static_cast<int>(m_passBoxes.size()) + 1;
+        std::vector<QDoubleSpinBox *> boxes{
+            spinBox(1.0, 2000.0, 1, QString(), tr("Cutting speed vc: spindle speed n = 1000 vc / (π D).")),
+            spinBox(0.001, 5.0, 3, QString(),
+                    tr("Feed f: chip thickness h = f sin κr (Kienzle); Ra ≈ f² / (32 rε) (MODEL.md §2).")),
+            spinBox(0.001, 50.0, 3, QString(), tr("Depth of cut ap: chip width b = ap / sin κr (Kienzle)."))};
+        auto *label = new QLabel;
+        m_passGrid->addWidget(label, row, 0);
+        for (int c = 0; c < 3; ++c) {
+            m_passGrid->addWidget(boxes[static_cast<std::size_t>(c)], row, 1 + c);
+            connect(boxes[static_cast<std::size_t>(c)], &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyPasses);
+        }
+        m_passBoxes.push_back(std::move(boxes));
+        m_passLabels.push_back(label);
+    }
+}
+
+QDoubleSpinBox *SetupPanel::passBox(int index, int column) const
+{
+    return m_passBoxes.at(static_cast<std::size_t>(index)).at(static_cast<std::size_t>(column));
+}
+
+QString SetupPanel::message() const
+{
+    return m_message->text();
+}
+
+void SetupPanel::projectChanged()
+{
+    setEnabled(m_document.hasProject());
+    if (m_document.hasProject())
+        showValues();
+}
+
+void SetupPanel::showValues()
+{
+    m_updating = true;
+    const Project &p = m_document.project();
+    selectData(m_material, p.materialId);
+    selectData(m_machine, p.machineId);
+    selectData(m_holder, p.tool.holderCode);
+    m_insert->setText(p.tool.insertCode);
+    const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+    m_insertDecoded->setText(insert.insert ? tr("corner %1°, nose radius %2 mm")
+                                                 .arg(insert.insert->includedAngle_deg)
+                                                 .arg(insert.insert->noseRadius_mm)
+                                           : QString());
+    m_overhang->setValue(p.tool.overhang_mm.value_or(0.0));
+    m_clamping->setCurrentIndex(m_clamping->findData(static_cast<int>(p.clamping.method)));
+    m_clampedLength->setValue(p.clamping.clampedLength_mm);
+    m_clampedLength->setEnabled(p.clamping.method != ClampingMethod::BetweenCentres);
+    if (p.clamping.clampedLength_mm > 0.0)
+        m_lastChuckLength_mm = p.clamping.clampedLength_mm;
+    rebuildPassRows(static_cast<int>(p.passes.size()));
+    for (std::size_t i = 0; i < p.passes.size(); ++i) {
+        const CuttingPass &pass = p.passes[i];
+        m_passLabels[i]->setText(tr("%1 %2").arg(i).arg(keyword(pass.kind)));
+        m_passBoxes[i][kSpeed]->setValue(pass.cuttingSpeed_m_min);
+        m_passBoxes[i][kFeed]->setValue(pass.feed_mm_rev);
+        m_passBoxes[i][kDepth]->setValue(pass.depthOfCut_mm);
+    }
+    showMachineStiffness();
+    m_updating = false;
+}
+
+void SetupPanel::showMachineStiffness()
+{
+    const MachineCharacterisation &c = m_document.project().characterisation;
+    if (!c.spindleRadial && !c.tailstock && !c.centres) {
+        m_machineStiffness->setText(tr("not characterised: the supports are taken as rigid. Measure k1, k2, k3 "
+                                       "(Valiño et al. 2008 §III) and enter them in the project."));
+        return;
+    }
+    QStringList parts;
+    if (c.spindleRadial)
+        parts << tr("spindle k1 %1 N/mm, k2 %2 N·mm/rad, k3 %3 N·mm/rad")
+                     .arg(c.spindleRadial->k1_N_per_mm)
+                     .arg(c.spindleRadial->k2_Nmm_per_rad)
+                     .arg(c.spindleRadial->k3_Nmm_per_rad);
+    if (c.tailstock)
+        parts << tr("tailstock %1 N/mm").arg(c.tailstock->radial_N_per_mm);
+    if (c.centres)
+        parts << tr("centres %1 N/mm").arg(c.centres->radial_N_per_mm);
+    m_machineStiffness->setText(tr("measured (%1): %2").arg(c.source, parts.join(QStringLiteral("; "))));
+}
+
+void SetupPanel::applyMaterial()
+{
+    if (!m_updating)
+        showOutcome(m_document.setMaterial(m_material->currentData().toString()));
+}
+
+void SetupPanel::applyMachine()
+{
+    if (!m_updating)
+        showOutcome(m_document.setMachine(m_machine->currentData().toString()));
+}
+
+void SetupPanel::applyTool()
+{
+    if (m_updating)
+        return;
+    const InsertParseResult insert = parseInsertCode(m_insert->text());
+    if (!insert.insert) {
+        showOutcome(insert.diagnostics);
+        return;
+    }
+    Tool tool = m_document.project().tool;
+    tool.insertCode = insert.insert->code;
+    tool.holderCode = m_holder->currentData().toString();
+    tool.overhang_mm = m_overhang->value() > 0.0 ? std::optional<double>(m_overhang->value()) : std::nullopt;
+    showOutcome(m_document.setTool(tool));
+}
+
+void SetupPanel::applyClamping()
+{
+    if (m_updating)
+        return;
+    const Clamping before = m_document.project().clamping;
+    Clamping clamping;
+    clamping.method = static_cast<ClampingMethod>(m_clamping->currentData().toInt());
+    clamping.clampedLength_mm = m_clampedLength->value();
+    if (clamping.method == ClampingMethod::BetweenCentres) {
+        clamping.clampedLength_mm = 0.0; // nothing is gripped between centres
+    } else if (before.method == ClampingMethod::BetweenCentres) {
+        // From centres to a chuck: grip where it gripped before, else the first cylinder.
+        clamping.clampedLength_mm =
+            m_lastChuckLength_mm > 0.0 ? m_lastChuckLength_mm : firstCylinderLength(m_document.project().part);
+    }
+    showOutcome(m_document.setClamping(clamping));
+}
+
+void SetupPanel::applyPasses()
+{
+    if (m_updating)
+        return;
+    std::vector<CuttingPass> passes = m_document.project().passes;
+    for (std::size_t i = 0; i < passes.size() && i < m_passBoxes.size(); ++i) {
+        passes[i].cuttingSpeed_m_min = m_passBoxes[i][kSpeed]->value();
+        passes[i].feed_mm_rev = m_passBoxes[i][kFeed]->value();
+        passes[i].depthOfCut_mm = m_passBoxes[i][kDepth]->value();
+    }
+    showOutcome(m_document.setPasses(passes, tr("Change cutting conditions")));
+}
+
+void SetupPanel::showOutcome(const Diagnostics &diagnostics)
+{
+    QStringList errors;
+    for (const Diagnostic &d : diagnostics)
+        if (d.severity == Severity::Error)
+            errors << d.toString();
+    m_message->setText(errors.join(QLatin1Char('\n')));
+    if (!errors.isEmpty())
+        showValues(); // put the refused value back
+}
+
+} // namespace tolturn

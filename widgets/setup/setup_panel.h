@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+
+#include <QWidget>
+
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QGridLayout;
+class QLabel;
+class QLineEdit;
+
+namespace tolturn {
+
+class ProjectDocument;
+
+// The set-up of the open project: material, machine (and what is known of its stiffness),
+// insert (ISO 1832 code) and holder, clamping (method, clamped length, tool overhang) and the
+// cutting conditions of each pass. Every change is one undoable edit of the document; a value
+// the document refuses is put back and the reason shown, naming the field and the value.
+class SetupPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit SetupPanel(ProjectDocument &document, QWidget *parent = nullptr);
+
+    // Shows the document's values (after loads, edits, undo and redo).
+    void projectChanged();
+
+    [[nodiscard]] QComboBox *materialBox() const { return m_material; }
+
+    [[nodiscard]] QComboBox *machineBox() const { return m_machine; }
+
+    [[nodiscard]] QLineEdit *insertEdit() const { return m_insert; }
+
+    [[nodiscard]] QComboBox *holderBox() const { return m_holder; }
+
+    [[nodiscard]] QComboBox *clampingBox() const { return m_clamping; }
+
+    [[nodiscard]] QDoubleSpinBox *clampedLengthBox() const { return m_clampedLength; }
+
+    [[nodiscard]] QDoubleSpinBox *overhangBox() const { return m_overhang; }
+
+    // Cutting speed, feed and depth of cut of pass `index`.
+    [[nodiscard]] QDoubleSpinBox *passBox(int index, int column) const;
+
+    // The reason the last change was refused; empty after an accepted one.
+    [[nodiscard]] QString message() const;
+
+private:
+    QWidget *createPartGroup();
+    QWidget *createToolGroup();
+    QWidget *createClampingGroup();
+    QWidget *createPassesGroup();
+    void fillChoices();
+    void showValues();
+    void showMachineStiffness();
+    void rebuildPassRows(int count);
+
+    void applyMaterial();
+    void applyMachine();
+    void applyTool();
+    void applyClamping();
+    void applyPasses();
+    // Shows the outcome of an edit: the errors of a refused one (and the document's values again).
+    void showOutcome(const Diagnostics &diagnostics);
+
+    ProjectDocument &m_document;
+    bool m_updating = false;
+    double m_lastChuckLength_mm = 0.0;
+    QComboBox *m_material;
+    QComboBox *m_machine;
+    QLabel *m_machineStiffness;
+    QLineEdit *m_insert;
+    QLabel *m_insertDecoded;
+    QComboBox *m_holder;
+    QComboBox *m_clamping;
+    QDoubleSpinBox *m_clampedLength;
+    QDoubleSpinBox *m_overhang;
+    QGridLayout *m_passGrid = nullptr;
+    std::vector<std::vector<QDoubleSpinBox *>> m_passBoxes;
+    std::vector<QLabel *> m_passLabels;
+    QLabel *m_message;
+};
+
+} // namespace tolturn
