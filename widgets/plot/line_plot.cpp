@@ -3,6 +3,7 @@
 
 #include "widgets/plot/plot_backend.h"
 
+#include <QToolTip>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -28,6 +29,8 @@ LinePlot::LinePlot(QWidget *parent) : QWidget(parent), m_plot(new QCustomPlot(th
     m_plot->plotLayout()->insertRow(0);
     auto *title = new QCPTextElement(m_plot, QString(), QFont(font().family(), 10, QFont::Bold));
     m_plot->plotLayout()->addElement(0, 0, title);
+    addPlotContextMenu(*m_plot, [this] { return csvText(); });
+    connect(m_plot, &QCustomPlot::mouseMove, this, [this](QMouseEvent *event) { showReadout(event->pos()); });
 }
 
 LinePlot::~LinePlot() = default;
@@ -78,6 +81,95 @@ int LinePlot::curveCount() const
 QString LinePlot::curveName(int index) const
 {
     return m_plot->graph(index)->name();
+}
+
+namespace {
+
+QString csvField(const QString &text)
+{
+    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')))
+        return text;
+    return QLatin1Char('"') + QString(text).replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
+}
+
+QString csvNumber(double v)
+{
+    return std::isfinite(v) ? QString::number(v, 'g', 10) : QString();
+}
+
+bool sameKeys(const QCPGraph &a, const QCPGraph &b)
+{
+    if (a.data()->size() != b.data()->size())
+        return false;
+    auto j = b.data()->constBegin();
+    for (auto i = a.data()->constBegin(); i != a.data()->constEnd(); ++i, ++j)
+        if (i->key != j->key)
+            return false;
+    return true;
+}
+
+} // namespace
+
+QString LinePlot::csvText() const
+{
+    bool shared = m_plot->graphCount() > 0;
+    for (int g = 1; g < m_plot->graphCount() && shared; ++g)
+        shared = sameKeys(*m_plot->graph(0), *m_plot->graph(g));
+    QStringList lines;
+    if (shared) {
+        QStringList header{csvField(m_plot->xAxis->label())};
+        for (int g = 0; g < m_plot->graphCount(); ++g)
+            header << csvField(m_plot->graph(g)->name() + QStringLiteral(" — ") + m_plot->yAxis->label());
+        lines << header.join(QLatin1Char(','));
+        for (int i = 0; i < m_plot->graph(0)->data()->size(); ++i) {
+            QStringList row{csvNumber(m_plot->graph(0)->data()->at(i)->key)};
+            for (int g = 0; g < m_plot->graphCount(); ++g)
+                row << csvNumber(m_plot->graph(g)->data()->at(i)->value);
+            lines << row.join(QLatin1Char(','));
+        }
+    } else {
+        lines << QStringList{QStringLiteral("curve"), csvField(m_plot->xAxis->label()),
+                             csvField(m_plot->yAxis->label())}
+                     .join(QLatin1Char(','));
+        for (int g = 0; g < m_plot->graphCount(); ++g)
+            for (auto p = m_plot->graph(g)->data()->constBegin(); p != m_plot->graph(g)->data()->constEnd(); ++p)
+                lines << QStringList{csvField(m_plot->graph(g)->name()), csvNumber(p->key), csvNumber(p->value)}.join(
+                    QLatin1Char(','));
+    }
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+QString LinePlot::readoutAt(double x) const
+{
+    QStringList lines;
+    for (int g = 0; g < m_plot->graphCount(); ++g) {
+        const QCPGraph *graph = m_plot->graph(g);
+        if (graph->data()->isEmpty())
+            continue;
+        auto it = graph->data()->findBegin(x, false);
+        if (it != graph->data()->constBegin() &&
+            (it == graph->data()->constEnd() || std::abs((it - 1)->key - x) < std::abs(it->key - x)))
+            --it;
+        if (lines.isEmpty())
+            lines << QStringLiteral("%1 = %2").arg(m_plot->xAxis->label(), QString::number(it->key, 'g', 5));
+        lines << QStringLiteral("%1: %2").arg(
+            graph->name(), std::isfinite(it->value) ? QString::number(it->value, 'g', 4) : QStringLiteral("—"));
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
+void LinePlot::showReadout(const QPoint &position)
+{
+    if (!m_plot->axisRect()->rect().contains(position)) {
+        QToolTip::hideText();
+        return;
+    }
+    QToolTip::showText(m_plot->mapToGlobal(position), readoutAt(m_plot->xAxis->pixelToCoord(position.x())), m_plot);
+}
+
+QString LinePlot::exportImage(const QString &path)
+{
+    return exportPlot(*m_plot, path);
 }
 
 void LinePlot::render(QPainter *painter, const QRectF &target, double textScale)

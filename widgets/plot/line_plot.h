@@ -33,10 +33,20 @@ public:
 
     [[nodiscard]] QString title() const { return m_title; }
 
+    // The curves as CSV: one column per curve when they share their x values, else one row per
+    // point (curve, x, y). The header carries the axis labels with their units; gaps are empty.
+    [[nodiscard]] QString csvText() const;
+    // The values of every curve at the point nearest to `x` (the hover read-out).
+    [[nodiscard]] QString readoutAt(double x) const;
+    // Writes the plot as PNG, SVG or PDF (by suffix), atomically; returns the error, if any.
+    [[nodiscard]] QString exportImage(const QString &path);
+
     // Draws the plot as vectors into `target` on `painter` (reports, SVG/PDF export); see renderPlot().
     void render(QPainter *painter, const QRectF &target, double textScale = 1.0);
 
 private:
+    void showReadout(const QPoint &position);
+
     QCustomPlot *m_plot;
     QString m_title;
 };

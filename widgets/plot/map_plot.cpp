@@ -17,6 +17,7 @@ MapPlot::MapPlot(QWidget *parent) : QWidget(parent), m_plot(new QCustomPlot(this
     m_plot->plotLayout()->insertRow(0);
     m_plot->plotLayout()->addElement(0, 0,
                                      new QCPTextElement(m_plot, QString(), QFont(font().family(), 10, QFont::Bold)));
+    addPlotContextMenu(*m_plot, {});
 }
 
 MapPlot::~MapPlot() = default;
@@ -87,6 +88,11 @@ void MapPlot::addMarker(double x, double y, const QString &text)
 void MapPlot::replot()
 {
     m_plot->replot();
+}
+
+QString MapPlot::exportImage(const QString &path)
+{
+    return exportPlot(*m_plot, path);
 }
 
 void MapPlot::render(QPainter *painter, const QRectF &target, double textScale)

@@ -31,6 +31,9 @@ public:
 
     [[nodiscard]] QString title() const { return m_title; }
 
+    // Writes the plot as PNG, SVG or PDF (by suffix), atomically; returns the error, if any.
+    [[nodiscard]] QString exportImage(const QString &path);
+
     // Draws the plot as vectors into `target` on `painter` (reports, SVG/PDF export); see renderPlot().
     void render(QPainter *painter, const QRectF &target, double textScale = 1.0);
 

@@ -1,9 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/plot/plot_backend.h"
 
+#include <QApplication>
+#include <QBuffer>
+#include <QClipboard>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
 #include <QPainter>
+#include <QPdfWriter>
 #include <QPicture>
 #include <QRectF>
+#include <QSaveFile>
+#include <QSvgGenerator>
 #include <qcustomplot.h>
 
 namespace tolturn {
@@ -28,6 +38,83 @@ void renderPlot(QCustomPlot &plot, QPainter &painter, const QRectF &target, doub
     painter.scale(1.0 / textScale, 1.0 / textScale);
     painter.drawPicture(QPointF(0, 0), picture);
     painter.restore();
+}
+
+namespace {
+
+QByteArray vectorBytes(QCustomPlot &plot, bool pdf)
+{
+    const QRectF box(0, 0, plot.width(), plot.height());
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    if (pdf) {
+        QPdfWriter writer(&buffer);
+        writer.setPageSize(QPageSize(box.size(), QPageSize::Point));
+        writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+        writer.setResolution(72); // one plot pixel per point
+        QPainter painter(&writer);
+        renderPlot(plot, painter, box);
+    } else {
+        QSvgGenerator svg;
+        svg.setOutputDevice(&buffer);
+        svg.setSize(box.size().toSize());
+        svg.setViewBox(box);
+        svg.setTitle(QStringLiteral("TolTurn plot"));
+        QPainter painter(&svg);
+        renderPlot(plot, painter, box);
+    }
+    return bytes;
+}
+
+} // namespace
+
+QString exportPlot(QCustomPlot &plot, const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    QByteArray bytes;
+    if (suffix == QLatin1String("png")) {
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        plot.toPixmap(plot.width(), plot.height(), 2.0).save(&buffer, "PNG");
+    } else if (suffix == QLatin1String("svg") || suffix == QLatin1String("pdf")) {
+        bytes = vectorBytes(plot, suffix == QLatin1String("pdf"));
+    } else {
+        return QCoreApplication::translate("PlotExport", "cannot export a plot as '%1': use .png, .svg or .pdf")
+            .arg(QFileInfo(path).fileName());
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
+        return QCoreApplication::translate("PlotExport", "cannot write '%1': %2").arg(path, file.errorString());
+    return {};
+}
+
+QString plotExportFilter()
+{
+    return QCoreApplication::translate("PlotExport", "PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)");
+}
+
+void addPlotContextMenu(QCustomPlot &plot, const std::function<QString()> &csv)
+{
+    plot.setContextMenuPolicy(Qt::CustomContextMenu);
+    QObject::connect(&plot, &QWidget::customContextMenuRequested, &plot, [&plot, csv](const QPoint &at) {
+        QMenu menu(&plot);
+        if (csv) {
+            QObject::connect(menu.addAction(QCoreApplication::translate("PlotExport", "Copy Data as CSV")),
+                             &QAction::triggered, &plot, [csv] { QApplication::clipboard()->setText(csv()); });
+        }
+        QObject::connect(
+            menu.addAction(QCoreApplication::translate("PlotExport", "Export Image…")), &QAction::triggered, &plot,
+            [&plot] {
+                const QString path = QFileDialog::getSaveFileName(
+                    &plot, QCoreApplication::translate("PlotExport", "Export Plot"), QString(), plotExportFilter());
+                if (path.isEmpty())
+                    return;
+                if (const QString error = exportPlot(plot, path); !error.isEmpty())
+                    QMessageBox::warning(&plot, QCoreApplication::translate("PlotExport", "Export Plot"), error);
+            });
+        menu.exec(plot.mapToGlobal(at));
+    });
 }
 
 } // namespace tolturn

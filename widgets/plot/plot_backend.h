@@ -3,6 +3,10 @@
 
 #include "core/common/library_info.h"
 
+#include <QString>
+
+#include <functional>
+
 class QCustomPlot;
 class QPainter;
 class QRectF;
@@ -17,5 +21,15 @@ namespace tolturn {
 // out on a canvas `textScale` times larger than `target` and scaled down, so its screen fonts
 // come out `textScale` times smaller relative to the page.
 void renderPlot(QCustomPlot &plot, QPainter &painter, const QRectF &target, double textScale = 1.0);
+
+// Writes the plot as it is on screen to `path`, atomically, in the format its suffix names: PNG
+// (at twice the screen resolution), SVG or PDF (vectors). Returns the error, empty on success.
+[[nodiscard]] QString exportPlot(QCustomPlot &plot, const QString &path);
+
+// File-dialog filter for exportPlot().
+[[nodiscard]] QString plotExportFilter();
+
+// The right-click menu of a plot: "Copy Data as CSV" (when `csv` is given) and "Export Image…".
+void addPlotContextMenu(QCustomPlot &plot, const std::function<QString()> &csv);
 
 } // namespace tolturn
