@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/file_controller.h"
 
+#include "app/gui/autosave.h"
 #include "app/gui/recent_files.h"
 #include "core/io/project_file.h"
 #include "widgets/document/project_document.h"
@@ -10,6 +11,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QGuiApplication>
+#include <QLocale>
 
 namespace tolturn {
 
@@ -155,6 +157,35 @@ bool FileController::saveAs()
     if (QFileInfo(path).suffix().isEmpty())
         path += QLatin1Char('.') + fileSuffix();
     return saveTo(path);
+}
+
+bool FileController::offerRecovery(const QString &autosaveFolder)
+{
+    for (const Autosave::Copy &copy : Autosave::leftOver(autosaveFolder)) {
+        const QString name = copy.originalPath.isEmpty() ? tr("the unsaved project \"%1\"").arg(copy.partName)
+                                                         : QFileInfo(copy.originalPath).fileName();
+        if (!m_prompts.askToRecover(name, copy.savedAt.toLocalTime())) {
+            Autosave::remove(copy);
+            continue;
+        }
+        const ProjectParseResult read = readProjectFile(copy.autosavePath);
+        if (!read.project) {
+            QStringList problems;
+            for (const Diagnostic &d : read.diagnostics)
+                problems << d.toString();
+            m_prompts.showError(tr("Cannot recover %1").arg(name), tr("The copy %1 cannot be read; it is kept.\n\n%2")
+                                                                       .arg(QDir::toNativeSeparators(copy.autosavePath),
+                                                                            problems.join(QLatin1Char('\n'))));
+            continue;
+        }
+        m_document.load(*read.project, copy.originalPath);
+        m_document.markRecovered();
+        Autosave::remove(copy);
+        Q_EMIT statusMessage(tr("Recovered %1 as it was at %2; save it to keep it.")
+                                 .arg(name, QLocale().toString(copy.savedAt.toLocalTime(), QLocale::ShortFormat)));
+        return true;
+    }
+    return false;
 }
 
 bool FileController::exportReport()

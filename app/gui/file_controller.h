@@ -3,6 +3,7 @@
 
 #include "core/project/project.h"
 
+#include <QDateTime>
 #include <QObject>
 #include <QString>
 
@@ -24,6 +25,8 @@ public:
     [[nodiscard]] virtual QString chooseFileToSave(const QString &suggestedPath) = 0;
     [[nodiscard]] virtual QString chooseReportFile(const QString &suggestedPath) = 0;
     virtual void showError(const QString &title, const QString &text) = 0;
+    // Asked at start for each copy a crashed session left: true to recover it, false to discard it.
+    [[nodiscard]] virtual bool askToRecover(const QString &documentName, const QDateTime &savedAt) = 0;
 };
 
 // File > Open, Save, Save As, Export Report and the recent-file list. Choosing a path and writing a file are
@@ -48,6 +51,8 @@ public:
     bool save();
     bool saveAs();
     bool saveTo(const QString &path);
+    // Offers the autosave copies crashed sessions left in `folder`; true when one was recovered.
+    bool offerRecovery(const QString &autosaveFolder);
     // File > Export Report: the PDF report of the document as it is now (saved or not).
     bool exportReport();
     bool exportReportTo(const QString &pdfPath);

@@ -27,7 +27,9 @@ int main(int argc, char *argv[])
 
     tolturn::MainWindow window;
     window.show();
-    if (!parser.positionalArguments().isEmpty())
+    // Work a crash interrupted comes first; the file named on the command line otherwise.
+    const bool recovered = window.fileController()->offerRecovery(tolturn::MainWindow::autosaveFolder());
+    if (!recovered && !parser.positionalArguments().isEmpty())
         window.fileController()->openFile(parser.positionalArguments().constFirst());
     return QApplication::exec();
 }

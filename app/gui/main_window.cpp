@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/main_window.h"
 
+#include "app/gui/autosave.h"
 #include "app/gui/recent_files.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
@@ -22,9 +23,12 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QUndoStack>
 
@@ -40,6 +44,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_tolerances(new TolerancePanel(*m_document, this))
     , m_planning(new PlanningPanel(*m_document, this))
     , m_setup(new SetupPanel(*m_document, this))
+    , m_autosave(new Autosave(*m_document, autosaveFolder(), this))
     , m_summary(new QLabel(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
@@ -238,6 +243,26 @@ QString MainWindow::chooseFileToSave(const QString &suggestedPath)
 QString MainWindow::chooseReportFile(const QString &suggestedPath)
 {
     return QFileDialog::getSaveFileName(this, tr("Export Report"), suggestedPath, tr("PDF documents (*.pdf)"));
+}
+
+QString MainWindow::autosaveFolder()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
+}
+
+bool MainWindow::askToRecover(const QString &documentName, const QDateTime &savedAt)
+{
+    QMessageBox box(QMessageBox::Question, tr("Recover Unsaved Changes"),
+                    tr("TolTurn did not close normally. A copy of %1 with unsaved changes was kept at %2.")
+                        .arg(documentName, QLocale().toString(savedAt, QLocale::ShortFormat)),
+                    QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("recoverDialog"));
+    box.setInformativeText(tr("Recover it? A discarded copy is deleted."));
+    QPushButton *recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
+    box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+    box.setDefaultButton(recover);
+    box.exec();
+    return box.clickedButton() == recover;
 }
 
 FilePrompts::SaveChoice MainWindow::askToSaveChanges(const QString &documentName)

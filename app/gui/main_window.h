@@ -11,6 +11,7 @@ class QMenu;
 namespace tolturn {
 
 class DeflectionPanel;
+class Autosave;
 class PlanningPanel;
 class SetupPanel;
 class TolerancePanel;
@@ -48,6 +49,12 @@ public:
     [[nodiscard]] QString chooseReportFile(const QString &suggestedPath) override;
     void showError(const QString &title, const QString &text) override;
     [[nodiscard]] SaveChoice askToSaveChanges(const QString &documentName) override;
+    [[nodiscard]] bool askToRecover(const QString &documentName, const QDateTime &savedAt) override;
+
+    // Where the autosave copies live (per user).
+    [[nodiscard]] static QString autosaveFolder();
+
+    [[nodiscard]] Autosave *autosave() const { return m_autosave; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -70,6 +77,7 @@ private:
     TolerancePanel *m_tolerances;
     PlanningPanel *m_planning;
     SetupPanel *m_setup;
+    Autosave *m_autosave;
     QMenu *m_recentMenu = nullptr;
     QLabel *m_summary;
     QAction *m_saveAction = nullptr;

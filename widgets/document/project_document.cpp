@@ -129,6 +129,11 @@ void ProjectDocument::clear()
     Q_EMIT projectChanged();
 }
 
+void ProjectDocument::markRecovered()
+{
+    m_undoStack->resetClean(); // no state of the history matches the file any more
+}
+
 void ProjectDocument::markSaved(const QString &filePath)
 {
     const bool pathChanged = m_filePath != filePath;

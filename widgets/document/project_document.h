@@ -37,6 +37,8 @@ public:
     void load(Project project, const QString &filePath);
     // Empties the document (File > Close).
     void clear();
+    // Marks a document restored from an autosave copy as modified: it differs from its file.
+    void markRecovered();
     // Records that the document now lives in (was just saved to) `filePath`.
     void markSaved(const QString &filePath);
 
