@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/part/profile_editing.h"
+
+#include "core/common/diagnostic.h"
+#include "core/part/profile_geometry.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+struct ProfileEditing {
+    Q_DECLARE_TR_FUNCTIONS(ProfileEditing)
+};
+
+QString tr(const char *text)
+{
+    return ProfileEditing::tr(text);
+}
+
+Contour &contourOf(PartProfile &p, ContourSide side)
+{
+    return side == ContourSide::Outer ? p.outer : p.inner;
+}
+
+bool near(double a, double b)
+{
+    return std::abs(a - b) <= kProfileEpsilon_mm;
+}
+
+// Moves the start of segment i to `to`; a cylinder or face keeps its kind by moving its other
+// end too, and so the start of the segment after it.
+void moveStart(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
+{
+    s[i].from = to;
+    if (s[i].kind == SegmentKind::Cylinder)
+        s[i].to.r_mm = to.r_mm;
+    else if (s[i].kind == SegmentKind::Face)
+        s[i].to.z_mm = to.z_mm;
+    else
+        return;
+    if (i + 1 < s.size())
+        s[i + 1].from = s[i].to;
+}
+
+// The mirror of moveStart for the end of segment i and the segment before it.
+void moveEnd(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
+{
+    s[i].to = to;
+    if (s[i].kind == SegmentKind::Cylinder)
+        s[i].from.r_mm = to.r_mm;
+    else if (s[i].kind == SegmentKind::Face)
+        s[i].from.z_mm = to.z_mm;
+    else
+        return;
+    if (i > 0)
+        s[i - 1].to = s[i].from;
+}
+
+Segment makeSegment(const QString &id, const QString &name, SegmentKind kind, ProfilePoint from, ProfilePoint to)
+{
+    Segment s;
+    s.id = id;
+    s.name = name;
+    s.kind = kind;
+    s.from = from;
+    s.to = to;
+    return s;
+}
+
+int idNumber(const QString &id)
+{
+    bool ok = false;
+    const int n = id.mid(1).toInt(&ok);
+    return ok ? n : 0;
+}
+
+// Joins two neighbours that became one feature: cylinders at one diameter, faces at one z.
+void mergeAt(std::vector<Segment> &s, std::size_t i)
+{
+    if (i == 0 || i >= s.size() || s[i - 1].kind != s[i].kind)
+        return;
+    const bool cylinders = s[i].kind == SegmentKind::Cylinder && near(s[i - 1].to.r_mm, s[i].from.r_mm);
+    const bool faces = s[i].kind == SegmentKind::Face && near(s[i - 1].to.z_mm, s[i].from.z_mm);
+    if (!cylinders && !faces)
+        return;
+    s[i - 1].to = s[i].to;
+    s.erase(s.begin() + static_cast<std::ptrdiff_t>(i));
+}
+
+// Where the lines of two straight segments meet, if they are not parallel.
+std::optional<ProfilePoint> lineIntersection(const Segment &a, const Segment &b)
+{
+    const double dz1 = a.to.z_mm - a.from.z_mm, dr1 = a.to.r_mm - a.from.r_mm;
+    const double dz2 = b.to.z_mm - b.from.z_mm, dr2 = b.to.r_mm - b.from.r_mm;
+    const double det = dz1 * dr2 - dr1 * dz2;
+    if (std::abs(det) < 1e-12)
+        return std::nullopt;
+    const double t = ((b.from.z_mm - a.from.z_mm) * dr2 - (b.from.r_mm - a.from.r_mm) * dz2) / det;
+    return ProfilePoint{a.from.z_mm + t * dz1, a.from.r_mm + t * dr1};
+}
+
+} // namespace
+
+QString nextFeatureId(const PartProfile &profile, ContourSide side)
+{
+    const Contour &c = side == ContourSide::Outer ? profile.outer : profile.inner;
+    int highest = 0;
+    for (const Segment &s : c.segments)
+        highest = std::max(highest, idNumber(s.id));
+    return (side == ContourSide::Outer ? QStringLiteral("O") : QStringLiteral("I")) + QString::number(highest + 1);
+}
+
+ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex, ProfilePoint to)
+{
+    PartProfile result = profile;
+    std::vector<Segment> &s = contourOf(result, side).segments;
+    if (vertex < 0 || vertex > static_cast<int>(s.size()) || s.empty())
+        return tr("the %1 contour has no vertex %2").arg(contourName(side)).arg(vertex);
+    const auto k = static_cast<std::size_t>(vertex);
+    if (k > 0)
+        moveEnd(s, k - 1, to);
+    if (k < s.size())
+        moveStart(s, k, to);
+    return result;
+}
+
+ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, double z_mm, double diameter_mm)
+{
+    const std::optional<FeatureRef> ref = findFeature(profile, featureId);
+    if (!ref || ref->segment->kind != SegmentKind::Cylinder)
+        return tr("a step is inserted into a cylinder; %1 is not one").arg(featureId);
+    const Segment &cylinder = *ref->segment;
+    const double z0 = std::min(cylinder.from.z_mm, cylinder.to.z_mm),
+                 z1 = std::max(cylinder.from.z_mm, cylinder.to.z_mm);
+    if (!(z_mm > z0 + kProfileEpsilon_mm && z_mm < z1 - kProfileEpsilon_mm))
+        return tr("the step of %1 must lie inside it (z %2 … %3 mm), but z is %4 mm")
+            .arg(featureId, formatNumber(z0), formatNumber(z1), formatNumber(z_mm));
+    if (!(diameter_mm > 0.0) || near(diameter_mm / 2.0, cylinder.from.r_mm))
+        return tr("the step's diameter must differ from Ø%1 mm and be above zero, but is %2 mm")
+            .arg(formatNumber(2.0 * cylinder.from.r_mm), formatNumber(diameter_mm));
+    PartProfile result = profile;
+    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    const auto i = static_cast<std::size_t>(ref->index);
+    const double r = cylinder.from.r_mm, r2 = diameter_mm / 2.0;
+    const ProfilePoint corner{z_mm, r}, stepped{z_mm, r2};
+    const QString faceId = nextFeatureId(result, ref->side);
+    const QString cylinderId = (ref->side == ContourSide::Outer ? QStringLiteral("O") : QStringLiteral("I")) +
+                               QString::number(idNumber(faceId) + 1);
+    const ProfilePoint end = s[i].to;
+    s[i].to = corner;
+    const Segment face = makeSegment(faceId, tr("step face"), SegmentKind::Face, corner, stepped);
+    const Segment second = makeSegment(cylinderId, tr("step diameter"), SegmentKind::Cylinder, stepped, {end.z_mm, r2});
+    s.insert(s.begin() + static_cast<std::ptrdiff_t>(i) + 1, {face, second});
+    if (i + 3 < s.size())
+        moveStart(s, i + 3, s[i + 2].to);
+    return result;
+}
+
+ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex, double size_mm, bool round)
+{
+    PartProfile result = profile;
+    std::vector<Segment> &s = contourOf(result, side).segments;
+    if (vertex <= 0 || vertex >= static_cast<int>(s.size()))
+        return tr("vertex %1 of the %2 contour is not a corner between two features")
+            .arg(vertex)
+            .arg(contourName(side));
+    const auto k = static_cast<std::size_t>(vertex);
+    Segment &before = s[k - 1];
+    Segment &after = s[k];
+    const bool faceAndCylinder = (before.kind == SegmentKind::Face && after.kind == SegmentKind::Cylinder) ||
+                                 (before.kind == SegmentKind::Cylinder && after.kind == SegmentKind::Face);
+    if (!faceAndCylinder)
+        return tr("a corner is broken between a face and a cylinder; %1 and %2 are not").arg(before.id, after.id);
+    const double lenBefore = segmentLength_mm(before), lenAfter = segmentLength_mm(after);
+    if (!(size_mm > 0.0) || size_mm >= lenBefore || size_mm >= lenAfter)
+        return tr("the corner of %1 and %2 takes at most %3 mm, but the size is %4 mm")
+            .arg(before.id, after.id, formatNumber(std::min(lenBefore, lenAfter)), formatNumber(size_mm));
+    const ProfilePoint corner = before.to;
+    // Unit directions into the corner along `before` and out of it along `after`.
+    const double d1z = (before.to.z_mm - before.from.z_mm) / lenBefore,
+                 d1r = (before.to.r_mm - before.from.r_mm) / lenBefore;
+    const double d2z = (after.to.z_mm - after.from.z_mm) / lenAfter, d2r = (after.to.r_mm - after.from.r_mm) / lenAfter;
+    const ProfilePoint start{corner.z_mm - size_mm * d1z, corner.r_mm - size_mm * d1r};
+    const ProfilePoint end{corner.z_mm + size_mm * d2z, corner.r_mm + size_mm * d2r};
+    before.to = start;
+    after.from = end;
+    Segment edge = makeSegment(nextFeatureId(result, side), round ? tr("edge round") : tr("chamfer"),
+                               round ? SegmentKind::Radius : SegmentKind::Chamfer, start, end);
+    if (round) {
+        // A quarter circle tangent to both: turning right (clockwise) when the path turns right.
+        edge.arcRadius_mm = size_mm;
+        edge.arcDirection = d1z * d2r - d1r * d2z < 0.0 ? ArcDirection::Clockwise : ArcDirection::CounterClockwise;
+    }
+    s.insert(s.begin() + static_cast<std::ptrdiff_t>(k), edge);
+    return result;
+}
+
+ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
+{
+    const std::optional<FeatureRef> ref = findFeature(profile, featureId);
+    if (!ref)
+        return tr("there is no feature %1").arg(featureId);
+    PartProfile result = profile;
+    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    const auto i = static_cast<std::size_t>(ref->index);
+    if (i == 0 || i + 1 >= s.size())
+        return tr("%1 is an end of the %2 contour; move it instead of deleting it")
+            .arg(featureId, contourName(ref->side));
+    const Segment removed = s[i];
+    s.erase(s.begin() + static_cast<std::ptrdiff_t>(i));
+    Segment &before = s[i - 1];
+    if (removed.kind == SegmentKind::Chamfer || removed.kind == SegmentKind::Radius) {
+        const std::optional<ProfilePoint> corner = lineIntersection(before, s[i]);
+        if (!corner)
+            return tr("the features beside %1 are parallel: there is no corner to give back").arg(featureId);
+        before.to = *corner;
+        s[i].from = *corner;
+    } else if (removed.kind == SegmentKind::Face && before.kind == SegmentKind::Cylinder &&
+               s[i].kind == SegmentKind::Cylinder) {
+        moveStart(s, i, before.to); // the step goes: the second cylinder takes the first's diameter
+    } else {
+        // Close the gap: the rest of the contour shifts by the removed feature's extent.
+        const double dz = removed.to.z_mm - removed.from.z_mm, dr = removed.to.r_mm - removed.from.r_mm;
+        for (std::size_t j = i; j < s.size(); ++j) {
+            s[j].from = {s[j].from.z_mm - dz, s[j].from.r_mm - dr};
+            s[j].to = {s[j].to.z_mm - dz, s[j].to.r_mm - dr};
+        }
+    }
+    mergeAt(s, i);
+    return result;
+}
+
+} // namespace tolturn

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/part/profile.h"
+
+#include <QString>
+
+#include <variant>
+
+namespace tolturn {
+
+// The edits of the profile editor, as functions from a profile to a new one. They keep the
+// contour connected and its features what they are in machining terms (a cylinder stays at one
+// diameter, a face at one z); whether the result is a valid part is for validateProfile() to say.
+// An edit that cannot be made gives the reason instead, naming the feature and the value.
+using ProfileEdit = std::variant<PartProfile, QString>;
+
+// Vertex k of a contour is where segment k-1 ends and segment k starts (0 … n).
+// Moves it to `to`. A neighbouring cylinder keeps its diameter by moving its other end radially,
+// a neighbouring face keeps its z by moving its other end axially (with the vertex beyond);
+// cones, chamfers and radii change their slope.
+[[nodiscard]] ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex, ProfilePoint to);
+
+// Splits cylinder `featureId` at `z_mm` into a cylinder, a face and a cylinder of diameter
+// `diameter_mm` up to the cylinder's end: a step. The new features get fresh ids.
+[[nodiscard]] ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, double z_mm,
+                                     double diameter_mm);
+
+// Breaks the corner at vertex k (between a face and a cylinder) with a 45° chamfer of leg
+// `size_mm`, or a radius `size_mm` tangent to both when `round` is true.
+[[nodiscard]] ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex, double size_mm,
+                                      bool round);
+
+// Removes a feature. A chamfer or radius gives back the sharp corner; a face between two
+// cylinders removes the step (the cylinders merge at the first one's diameter); otherwise the
+// features after it move to close the gap.
+[[nodiscard]] ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId);
+
+// A feature id not used yet on the contour: "O12", "I4", …
+[[nodiscard]] QString nextFeatureId(const PartProfile &profile, ContourSide side);
+
+} // namespace tolturn

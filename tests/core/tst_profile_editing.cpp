@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The profile editor's edits on a two-diameter shaft, checked against coordinates worked out
+// by hand, and each result checked by validateProfile.
+#include "core/common/diagnostic.h"
+#include "core/part/profile_editing.h"
+#include "core/part/profile_validation.h"
+
+#include <QTest>
+
+using namespace tolturn;
+
+namespace {
+
+Segment seg(const char *id, SegmentKind kind, double z0, double r0, double z1, double r1)
+{
+    Segment s;
+    s.id = QString::fromLatin1(id);
+    s.kind = kind;
+    s.from = {z0, r0};
+    s.to = {z1, r1};
+    return s;
+}
+
+// Ø40 × 50 then Ø30 × 50: O1 left face, O2 Ø40, O3 shoulder, O4 Ø30, O5 right face.
+PartProfile shaft()
+{
+    PartProfile p;
+    p.name = QStringLiteral("shaft");
+    p.stockDiameter_mm = 45.0;
+    p.outer.segments = {seg("O1", SegmentKind::Face, 0, 0, 0, 20), seg("O2", SegmentKind::Cylinder, 0, 20, 50, 20),
+                        seg("O3", SegmentKind::Face, 50, 20, 50, 15), seg("O4", SegmentKind::Cylinder, 50, 15, 100, 15),
+                        seg("O5", SegmentKind::Face, 100, 15, 100, 0)};
+    return p;
+}
+
+PartProfile edited(const ProfileEdit &edit)
+{
+    if (const auto *error = std::get_if<QString>(&edit))
+        qFatal("edit refused: %s", qPrintable(*error));
+    const PartProfile p = std::get<PartProfile>(edit);
+    if (hasErrors(validateProfile(p)))
+        qFatal("edit gives an invalid profile: %s", qPrintable(validateProfile(p).front().toString()));
+    return p;
+}
+
+QString refusal(const ProfileEdit &edit)
+{
+    const auto *error = std::get_if<QString>(&edit);
+    return error ? *error : QString();
+}
+
+ProfilePoint pt(double z, double r)
+{
+    return {z, r};
+}
+
+} // namespace
+
+class TestProfileEditing : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void movingTheShoulderKeepsCylindersAndFaces()
+    {
+        // The corner O2|O3 to (60, 22): O2 becomes Ø44 up to z 60, the left face grows to r 22,
+        // the shoulder O3 moves to z 60 and still ends at r 15.
+        const PartProfile p = edited(moveVertex(shaft(), ContourSide::Outer, 2, pt(60, 22)));
+        const auto &s = p.outer.segments;
+        QCOMPARE(s[0].to, pt(0, 22));
+        QCOMPARE(s[1].from, pt(0, 22));
+        QCOMPARE(s[1].to, pt(60, 22));
+        QCOMPARE(s[2].from, pt(60, 22));
+        QCOMPARE(s[2].to, pt(60, 15));
+        QCOMPARE(s[3].from, pt(60, 15));
+        QCOMPARE(s.size(), std::size_t{5});
+    }
+
+    void insertingAStep()
+    {
+        // Ø30 from z 50 to 100 stepped down to Ø20 at z 80.
+        const PartProfile p = edited(insertStep(shaft(), QStringLiteral("O4"), 80.0, 20.0));
+        const auto &s = p.outer.segments;
+        QCOMPARE(s.size(), std::size_t{7});
+        QCOMPARE(s[3].to, pt(80, 15));
+        QCOMPARE(s[4].id, QStringLiteral("O6"));
+        QCOMPARE(s[4].kind, SegmentKind::Face);
+        QCOMPARE(s[4].to, pt(80, 10));
+        QCOMPARE(s[5].id, QStringLiteral("O7"));
+        QCOMPARE(s[5].to, pt(100, 10));
+        QCOMPARE(s[6].from, pt(100, 10)); // the end face now starts at the new diameter
+        QCOMPARE(s[6].to, pt(100, 0));
+    }
+
+    void stepRefusals()
+    {
+        QVERIFY(refusal(insertStep(shaft(), QStringLiteral("O3"), 50.0, 20.0)).contains(QStringLiteral("O3")));
+        QVERIFY(refusal(insertStep(shaft(), QStringLiteral("O4"), 120.0, 20.0)).contains(QStringLiteral("120")));
+        QVERIFY(refusal(insertStep(shaft(), QStringLiteral("O4"), 80.0, 30.0)).contains(QStringLiteral("Ø30")));
+    }
+
+    void chamferAndBackToTheCorner()
+    {
+        // 1 mm × 45° on the right end: O4 ends 1 mm early, the chamfer runs down to r 14.
+        const PartProfile p = edited(breakCorner(shaft(), ContourSide::Outer, 4, 1.0, false));
+        const auto &s = p.outer.segments;
+        QCOMPARE(s[3].to, pt(99, 15));
+        QCOMPARE(s[4].kind, SegmentKind::Chamfer);
+        QCOMPARE(s[4].from, pt(99, 15));
+        QCOMPARE(s[4].to, pt(100, 14));
+        QCOMPARE(s[5].from, pt(100, 14));
+        QVERIFY(edited(deleteFeature(p, s[4].id)) == shaft());
+    }
+
+    void roundTurnsWithThePath()
+    {
+        // Along the outer contour the path turns right (clockwise) at the right end (along z,
+        // then down) and left (counter-clockwise) into the shoulder's lower step.
+        const PartProfile end = edited(breakCorner(shaft(), ContourSide::Outer, 4, 2.0, true));
+        QCOMPARE(end.outer.segments[4].kind, SegmentKind::Radius);
+        QCOMPARE(end.outer.segments[4].arcRadius_mm, 2.0);
+        QCOMPARE(end.outer.segments[4].arcDirection, ArcDirection::Clockwise);
+        const PartProfile fillet = edited(breakCorner(shaft(), ContourSide::Outer, 3, 1.0, true));
+        QCOMPARE(fillet.outer.segments[3].arcDirection, ArcDirection::CounterClockwise);
+        QCOMPARE(fillet.outer.segments[3].from, pt(50, 16));
+        QCOMPARE(fillet.outer.segments[3].to, pt(51, 15));
+    }
+
+    void cornerRefusals()
+    {
+        // 6 mm does not fit on the 5 mm shoulder.
+        QVERIFY(refusal(breakCorner(shaft(), ContourSide::Outer, 3, 6.0, false)).contains(QStringLiteral("6 mm")));
+        QVERIFY(!refusal(breakCorner(shaft(), ContourSide::Outer, 0, 1.0, false)).isEmpty());
+    }
+
+    void deletingTheShoulderRemovesTheStep()
+    {
+        const PartProfile p = edited(deleteFeature(shaft(), QStringLiteral("O3")));
+        const auto &s = p.outer.segments;
+        QCOMPARE(s.size(), std::size_t{3});
+        QCOMPARE(s[1].id, QStringLiteral("O2"));
+        QCOMPARE(s[1].to, pt(100, 20)); // one Ø40 cylinder over the whole length
+        QCOMPARE(s[2].from, pt(100, 20));
+        QVERIFY(refusal(deleteFeature(shaft(), QStringLiteral("O1"))).contains(QStringLiteral("O1")));
+        QVERIFY(refusal(deleteFeature(shaft(), QStringLiteral("O9"))).contains(QStringLiteral("O9")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProfileEditing)
+#include "tst_profile_editing.moc"
