@@ -9,6 +9,7 @@
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/planning_panel.h"
+#include "widgets/profile/feature_panel.h"
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
 #include "widgets/results/deflection_panel.h"
@@ -44,6 +45,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_tolerances(new TolerancePanel(*m_document, this))
     , m_planning(new PlanningPanel(*m_document, this))
     , m_setup(new SetupPanel(*m_document, this))
+    , m_feature(new FeaturePanel(*m_document, this))
     , m_autosave(new Autosave(*m_document, autosaveFolder(), this))
     , m_summary(new QLabel(this))
 {
@@ -62,6 +64,12 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_recentFiles, &RecentFiles::changed, this, &MainWindow::rebuildRecentMenu);
     connect(m_profileView, &ProfileView::featureSelected, m_tolerances, &TolerancePanel::setSelectedFeature);
+    connect(m_profileView, &ProfileView::featureSelected, m_feature, &FeaturePanel::setFeature);
+    connect(m_feature, &FeaturePanel::featureChosen, m_profileView, &ProfileView::selectFeature);
+    connect(m_profileView, &ProfileView::vertexDragged, this, [this](ContourSide side, int vertex, ProfilePoint to) {
+        if (!m_feature->moveVertexTo(side, vertex, to))
+            statusBar()->showMessage(m_feature->message(), 8000);
+    });
     connect(m_tolerances, &TolerancePanel::featureActivated, m_profileView, &ProfileView::selectFeature);
     rebuildRecentMenu();
     updateTitle();
@@ -99,6 +107,12 @@ void MainWindow::createDocks()
     setup->setObjectName(QStringLiteral("setupDock"));
     setup->setWidget(m_setup);
     addDockWidget(Qt::LeftDockWidgetArea, setup);
+    auto *feature = new QDockWidget(tr("Feature"), this);
+    feature->setObjectName(QStringLiteral("featureDock"));
+    feature->setWidget(m_feature);
+    addDockWidget(Qt::LeftDockWidgetArea, feature);
+    tabifyDockWidget(setup, feature);
+    setup->raise();
     auto *tolerances = new QDockWidget(tr("Tolerances"), this);
     tolerances->setObjectName(QStringLiteral("tolerancesDock"));
     tolerances->setWidget(m_tolerances);
@@ -118,6 +132,7 @@ void MainWindow::createDocks()
     resizeDocks({dock}, {380}, Qt::Vertical);
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(setup->toggleViewAction());
+    view->addAction(feature->toggleViewAction());
     view->addAction(dock->toggleViewAction());
     view->addAction(tolerances->toggleViewAction());
     view->addAction(planning->toggleViewAction());

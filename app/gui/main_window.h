@@ -12,6 +12,7 @@ namespace tolturn {
 
 class DeflectionPanel;
 class Autosave;
+class FeaturePanel;
 class PlanningPanel;
 class SetupPanel;
 class TolerancePanel;
@@ -42,6 +43,8 @@ public:
     [[nodiscard]] PlanningPanel *planningPanel() const { return m_planning; }
 
     [[nodiscard]] SetupPanel *setupPanel() const { return m_setup; }
+
+    [[nodiscard]] FeaturePanel *featurePanel() const { return m_feature; }
 
     // FilePrompts
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
@@ -77,6 +80,7 @@ private:
     TolerancePanel *m_tolerances;
     PlanningPanel *m_planning;
     SetupPanel *m_setup;
+    FeaturePanel *m_feature;
     Autosave *m_autosave;
     QMenu *m_recentMenu = nullptr;
     QLabel *m_summary;

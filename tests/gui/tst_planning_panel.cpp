@@ -2,6 +2,8 @@
 // The planning panel offscreen: the optimisation runs off the GUI thread and fills the plan, the
 // window map, the clamping ranking; applying the plan is undoable; constraints switch on and off;
 // G-code preview and export. With TOLTURN_SCREENSHOTS=DIR the window is saved as DIR/planning.png.
+#include "tests/gui/screenshot.h"
+
 #include "app/gui/main_window.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/planning_panel.h"
@@ -27,14 +29,9 @@ QString example(const char *name)
     return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
 }
 
-void saveScreenshot(QWidget &w, const char *name)
-{
-    const QString dir = qEnvironmentVariable("TOLTURN_SCREENSHOTS");
-    if (!dir.isEmpty())
-        w.grab().save(dir + QLatin1Char('/') + QString::fromLatin1(name));
-}
-
 } // namespace
+
+using tolturn::test::saveScreenshot;
 
 class TestPlanningPanel : public QObject {
     Q_OBJECT

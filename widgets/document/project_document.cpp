@@ -251,6 +251,11 @@ Diagnostics ProjectDocument::setClamping(const Clamping &clamping)
     return editField(&Project::clamping, clamping, tr("Change clamping"));
 }
 
+Diagnostics ProjectDocument::setPart(const PartProfile &part, const QString &description)
+{
+    return editField(&Project::part, part, description);
+}
+
 QString ProjectDocument::nextToleranceId() const
 {
     for (int n = 1;; ++n) {

@@ -55,6 +55,8 @@ public:
     Diagnostics setMachine(const QString &machineId);
     Diagnostics setTool(const Tool &tool);
     Diagnostics setClamping(const Clamping &clamping);
+    // The part's profile after an edit of the profile editor, named by `description` in Undo.
+    Diagnostics setPart(const PartProfile &part, const QString &description);
 
     // A tolerance id not used yet: "T1", "T2", ...
     [[nodiscard]] QString nextToleranceId() const;

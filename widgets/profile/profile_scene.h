@@ -15,6 +15,8 @@ enum ProfileItemData : int {
     kItemKindData = 0,   // QString, one of the kinds below
     kFeatureIdData = 1,  // QString, id of the profile segment (contour items)
     kDefaultPenData = 2, // QPen the item is drawn with when not selected
+    kVertexData = 3,     // int, vertex index on its contour (vertex handles)
+    kSideData = 4,       // int, ContourSide of a vertex handle
 };
 
 namespace profile_item {
@@ -25,6 +27,7 @@ inline const QString kInnerContour = QStringLiteral("inner-contour");
 inline const QString kViewOutline = QStringLiteral("view-outline");
 inline const QString kHiddenLine = QStringLiteral("hidden-line");
 inline const QString kDimension = QStringLiteral("dimension");
+inline const QString kVertexHandle = QStringLiteral("vertex-handle");
 } // namespace profile_item
 
 // Draws a part as a half-section drawing: above the axis the section (hatched material,

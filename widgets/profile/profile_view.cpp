@@ -4,8 +4,11 @@
 #include "widgets/profile/profile_scene.h"
 
 #include <QGraphicsPathItem>
+#include <QGraphicsRectItem>
 #include <QGraphicsScene>
 #include <QLineF>
+#include <QMouseEvent>
+#include <QToolTip>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -26,9 +29,13 @@ ProfileView::ProfileView(QWidget *parent) : QGraphicsView(parent), m_scene(new Q
 
 void ProfileView::setProfile(const PartProfile &profile)
 {
+    if (profile.name != m_profile.name || m_profile.outer.empty())
+        m_autoFit = true; // another part: show it whole; edits of this one keep the user's zoom
     buildProfileScene(*m_scene, profile);
-    m_autoFit = true;
-    fitPart();
+    m_profile = profile;
+    m_dragged = nullptr;
+    if (m_autoFit)
+        fitPart();
     const QString previous = m_selected;
     m_selected.clear();
     if (!previous.isEmpty() && findFeature(profile, previous))
@@ -52,10 +59,83 @@ void ProfileView::selectFeature(const QString &featureId)
         }
         path->setPen(pen);
     }
-    if (m_selected == featureId)
-        return;
+    const bool changed = m_selected != featureId;
     m_selected = featureId;
-    Q_EMIT featureSelected(featureId);
+    showVertexHandles();
+    if (changed)
+        Q_EMIT featureSelected(featureId);
+}
+
+void ProfileView::showVertexHandles()
+{
+    const QList<QGraphicsItem *> items = m_scene->items();
+    for (QGraphicsItem *item : items)
+        if (item->data(kItemKindData).toString() == profile_item::kVertexHandle)
+            delete item;
+    const std::optional<FeatureRef> ref = findFeature(m_profile, m_selected);
+    if (!ref)
+        return;
+    const std::pair<int, ProfilePoint> ends[] = {{ref->index, ref->segment->from}, {ref->index + 1, ref->segment->to}};
+    for (const auto &[vertex, point] : ends) {
+        auto *handle = m_scene->addRect(QRectF(-4, -4, 8, 8), QPen(QColor(0xe6, 0x55, 0x0d), 0), QBrush(Qt::white));
+        handle->setFlag(QGraphicsItem::ItemIgnoresTransformations); // 8 pixels at any zoom
+        handle->setPos(point.z_mm, -point.r_mm);
+        handle->setZValue(10);
+        handle->setCursor(Qt::SizeAllCursor);
+        handle->setToolTip(tr("Drag to move this corner (snaps to %1 mm; Shift: 0.01 mm)").arg(kSnapGrid_mm));
+        handle->setData(kItemKindData, profile_item::kVertexHandle);
+        handle->setData(kVertexData, vertex);
+        handle->setData(kSideData, static_cast<int>(ref->side));
+    }
+}
+
+QGraphicsItem *ProfileView::handleAt(const QPoint &viewPoint) const
+{
+    const QList<QGraphicsItem *> items = m_scene->items();
+    for (QGraphicsItem *item : items) {
+        if (item->data(kItemKindData).toString() != profile_item::kVertexHandle)
+            continue;
+        if ((mapFromScene(item->pos()) - viewPoint).manhattanLength() <= 8)
+            return item;
+    }
+    return nullptr;
+}
+
+ProfilePoint ProfileView::snappedPoint(const QPoint &viewPoint, Qt::KeyboardModifiers modifiers) const
+{
+    const double grid = (modifiers & Qt::ShiftModifier) ? 0.01 : kSnapGrid_mm;
+    const QPointF p = mapToScene(viewPoint);
+    const auto snap = [grid](double v) { return std::round(v / grid) * grid; };
+    return {snap(p.x()), std::max(0.0, snap(-p.y()))};
+}
+
+void ProfileView::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_dragged == nullptr) {
+        QGraphicsView::mouseMoveEvent(event);
+        return;
+    }
+    m_dragTo = snappedPoint(event->position().toPoint(), event->modifiers());
+    m_dragged->setPos(m_dragTo.z_mm, -m_dragTo.r_mm);
+    QToolTip::showText(event->globalPosition().toPoint(),
+                       tr("z %1 mm, Ø %2 mm").arg(dimensionText(m_dragTo.z_mm), dimensionText(2.0 * m_dragTo.r_mm)),
+                       this);
+    event->accept();
+}
+
+void ProfileView::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_dragged == nullptr || event->button() != Qt::LeftButton) {
+        QGraphicsView::mouseReleaseEvent(event);
+        return;
+    }
+    const auto side = static_cast<ContourSide>(m_dragged->data(kSideData).toInt());
+    const int vertex = m_dragged->data(kVertexData).toInt();
+    m_dragged = nullptr;
+    QToolTip::hideText();
+    event->accept();
+    Q_EMIT vertexDragged(side, vertex, m_dragTo); // the document redraws the part, or refuses
+    showVertexHandles();                          // a refused drag puts the handle back
 }
 
 QString ProfileView::featureAt(const QPoint &viewPoint, double pixels) const
@@ -91,6 +171,12 @@ QString ProfileView::featureAt(const QPoint &viewPoint, double pixels) const
 void ProfileView::mousePressEvent(QMouseEvent *event)
 {
     if (event->button() == Qt::LeftButton) {
+        if (QGraphicsItem *handle = handleAt(event->position().toPoint())) {
+            m_dragged = handle;
+            m_dragTo = {handle->pos().x(), -handle->pos().y()};
+            event->accept();
+            return;
+        }
         const QString id = featureAt(event->position().toPoint());
         if (!id.isEmpty()) {
             selectFeature(id);
@@ -103,6 +189,8 @@ void ProfileView::mousePressEvent(QMouseEvent *event)
 
 void ProfileView::clearProfile()
 {
+    m_dragged = nullptr;
+    m_profile = PartProfile{};
     m_scene->clear();
 }
 

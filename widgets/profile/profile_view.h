@@ -22,20 +22,34 @@ public:
     [[nodiscard]] QString selectedFeature() const { return m_selected; }
 
     void selectFeature(const QString &featureId);
+    // The grid a dragged corner snaps to; holding Shift snaps to 0.01 mm instead.
+    static constexpr double kSnapGrid_mm = 0.5;
+
     // The feature drawn nearest to a point of the view, within `pixels`; empty if none.
     [[nodiscard]] QString featureAt(const QPoint &viewPoint, double pixels = 8.0) const;
 
 Q_SIGNALS:
     void featureSelected(const QString &featureId);
+    // A corner of the selected feature was dragged to `to` (snapped); one edit per drag.
+    void vertexDragged(tolturn::ContourSide side, int vertex, tolturn::ProfilePoint to);
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
 
 private:
+    void showVertexHandles();
+    [[nodiscard]] QGraphicsItem *handleAt(const QPoint &viewPoint) const;
+    [[nodiscard]] ProfilePoint snappedPoint(const QPoint &viewPoint, Qt::KeyboardModifiers modifiers) const;
+
     QGraphicsScene *m_scene;
+    PartProfile m_profile;
+    QGraphicsItem *m_dragged = nullptr; // the vertex handle being dragged
+    ProfilePoint m_dragTo;
     bool m_autoFit = true;
     QString m_selected;
 };

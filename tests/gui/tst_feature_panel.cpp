@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The profile editor's Feature dock driven on the stepped-shaft example: exact entry of a
+// corner, a step, a chamfer, a delete; each one undoable step; refusals leave the part alone.
+#include "tests/gui/screenshot.h"
+
+#include "app/gui/file_controller.h"
+#include "app/gui/main_window.h"
+#include "widgets/document/project_document.h"
+#include "widgets/profile/feature_panel.h"
+#include "widgets/profile/profile_view.h"
+
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace tolturn;
+
+namespace {
+
+QString example(const char *name)
+{
+    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
+}
+
+const Segment &feature(const MainWindow &w, const char *id)
+{
+    static const Segment none;
+    const std::optional<FeatureRef> ref = findFeature(w.document()->project().part, QString::fromLatin1(id));
+    return ref ? *ref->segment : none;
+}
+
+ProfilePoint pt(double z, double r)
+{
+    return {z, r};
+}
+
+} // namespace
+
+class TestFeaturePanel : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void clickingAFeatureShowsIt()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        QVERIFY(!w.featurePanel()->isEnabled());
+        w.profileView()->selectFeature(QStringLiteral("O6"));
+        QCOMPARE(w.featurePanel()->feature(), QStringLiteral("O6"));
+        QVERIFY(w.featurePanel()->isEnabled());
+        QCOMPARE(w.featurePanel()->startZBox()->value(), 90.0);
+        QCOMPARE(w.featurePanel()->startDiameterBox()->value(), 40.0);
+        QCOMPARE(w.featurePanel()->endZBox()->value(), 118.0);
+    }
+
+    void diameterEntryMovesTheCylinder()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        w.profileView()->selectFeature(QStringLiteral("O4"));
+        w.featurePanel()->startDiameterBox()->setValue(52.0);
+        // The bearing seat O4 (z 35 … 80) goes to Ø52 over its length; the shoulder O3 now ends
+        // at r 26 and the taper O5 starts there.
+        QCOMPARE(feature(w, "O4").from, pt(35, 26));
+        QCOMPARE(feature(w, "O4").to, pt(80, 26));
+        QCOMPARE(feature(w, "O3").to, pt(35, 26));
+        QCOMPARE(feature(w, "O5").from, pt(80, 26));
+        QCOMPARE(w.document()->undoStack()->count(), 1);
+        w.document()->undoStack()->undo();
+        QCOMPARE(feature(w, "O4").from, pt(35, 25));
+        QCOMPARE(w.featurePanel()->startDiameterBox()->value(), 50.0);
+    }
+
+    void stepChamferAndDelete()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        const std::size_t segments = w.document()->project().part.outer.segments.size();
+        w.profileView()->selectFeature(QStringLiteral("O9")); // the Ø30 journal, z 120 … 149
+        w.featurePanel()->stepZBox()->setValue(135.0);
+        w.featurePanel()->stepDiameterBox()->setValue(26.0);
+        w.featurePanel()->insertStep();
+        QCOMPARE(w.document()->project().part.outer.segments.size(), segments + 2);
+        QCOMPARE(feature(w, "O9").to, pt(135, 15));
+        QCOMPARE(feature(w, "O13").from, pt(135, 13)); // the new Ø26 cylinder
+        QCOMPARE(feature(w, "O10").from, pt(149, 13)); // the end chamfer follows the new diameter
+
+        w.profileView()->selectFeature(QStringLiteral("O7")); // the edge round: back to a corner
+        w.featurePanel()->deleteFeature();
+        QCOMPARE(feature(w, "O6").to, pt(120, 20));
+        QCOMPARE(feature(w, "O8").from, pt(120, 20));
+        QCOMPARE(w.profileView()->selectedFeature(), QString());
+
+        w.profileView()->selectFeature(QStringLiteral("O6"));
+        w.featurePanel()->cornerSizeBox()->setValue(1.5);
+        w.featurePanel()->breakCorner(true, false); // chamfer the corner O6|O8
+        QCOMPARE(feature(w, "O6").to, pt(118.5, 20));
+        QCOMPARE(w.document()->undoStack()->count(), 3);
+        for (int i = 0; i < 3; ++i)
+            w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->project().part.outer.segments.size(), segments);
+        QVERIFY(!w.document()->isModified());
+    }
+
+    void draggingACornerSnapsAndIsOneStep()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        ProfileView *view = w.profileView();
+        view->selectFeature(QStringLiteral("O4")); // Ø50 from z 35 to 80; its end is vertex 4
+        QWidget *viewport = view->viewport();
+        const QPoint grab = view->mapFromScene(QPointF(80.0, -25.0));
+        // A grid point, so that whole pixels (about 0.3 mm here) still snap to it.
+        const QPoint drop = view->mapFromScene(QPointF(70.0, -26.5));
+        QTest::mousePress(viewport, Qt::LeftButton, {}, grab);
+        QTest::mouseMove(viewport, (grab + drop) / 2);
+        QTest::mouseMove(viewport, drop);
+        QTest::mouseRelease(viewport, Qt::LeftButton, {}, drop);
+        // The cylinder keeps one diameter: both its ends go to r 26.5; the shoulder follows.
+        QCOMPARE(feature(w, "O4").to, pt(70, 26.5));
+        QCOMPARE(feature(w, "O4").from, pt(35, 26.5));
+        QCOMPARE(feature(w, "O3").to, pt(35, 26.5));
+        QCOMPARE(feature(w, "O5").from, pt(70, 26.5));
+        QCOMPARE(w.document()->undoStack()->count(), 1);
+        if (auto *dock = w.findChild<QDockWidget *>(QStringLiteral("featureDock")))
+            dock->raise();
+        QTest::qWait(50);
+        tolturn::test::saveScreenshot(w, "profile-editor.png");
+    }
+
+    void refusalsLeaveThePart()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        const PartProfile before = w.document()->project().part;
+        w.profileView()->selectFeature(QStringLiteral("O4")); // carries tolerances T1 and T2
+        w.featurePanel()->deleteFeature();
+        QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("O4")), qPrintable(w.featurePanel()->message()));
+        QVERIFY(w.document()->project().part == before);
+        w.featurePanel()->stepZBox()->setValue(10.0); // outside O4 (z 35 … 80)
+        w.featurePanel()->insertStep();
+        QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("10")), qPrintable(w.featurePanel()->message()));
+        QVERIFY(w.document()->project().part == before);
+        // Ø42 on the hub seat would leave the R2 edge round O7 unable to reach r 18 tangentially.
+        w.profileView()->selectFeature(QStringLiteral("O6"));
+        w.featurePanel()->startDiameterBox()->setValue(42.0);
+        QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("part.outer[6]")),
+                 qPrintable(w.featurePanel()->message()));
+        QCOMPARE(w.featurePanel()->startDiameterBox()->value(), 40.0);
+        QCOMPARE(w.document()->undoStack()->count(), 0);
+    }
+};
+
+QTEST_MAIN(TestFeaturePanel)
+#include "tst_feature_panel.moc"

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/profile/feature_panel.h"
+
+#include "core/common/diagnostic.h"
+#include "core/project/keywords.h"
+#include "widgets/document/project_document.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace tolturn {
+
+namespace {
+
+QDoubleSpinBox *millimetres(const QString &tip)
+{
+    auto *box = new QDoubleSpinBox;
+    box->setRange(0.0, 10000.0); // entry bounds; the profile validation judges the value
+    box->setDecimals(3);
+    box->setSuffix(QStringLiteral(" mm"));
+    box->setToolTip(tip);
+    box->setKeyboardTracking(false);
+    return box;
+}
+
+} // namespace
+
+FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
+    : QWidget(parent)
+    , m_document(document)
+    , m_title(new QLabel)
+    , m_startZ(millimetres(tr("z of the start, from the part's left end")))
+    , m_startD(millimetres(tr("Diameter at the start")))
+    , m_endZ(millimetres(tr("z of the end")))
+    , m_endD(millimetres(tr("Diameter at the end")))
+    , m_stepZ(millimetres(tr("Where the step is, inside the cylinder")))
+    , m_stepD(millimetres(tr("Diameter after the step")))
+    , m_insertStep(new QPushButton(tr("Insert &Step")))
+    , m_cornerSize(millimetres(tr("Chamfer leg (45°) or radius")))
+    , m_delete(new QPushButton(tr("&Delete Feature")))
+    , m_message(new QLabel)
+{
+    setObjectName(QStringLiteral("featurePanel"));
+    m_title->setWordWrap(true);
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet(QStringLiteral("color: #b00020;"));
+    auto *geometry = new QGroupBox(tr("Corners"));
+    auto *form = new QFormLayout(geometry);
+    form->addRow(tr("Start z:"), m_startZ);
+    form->addRow(tr("Start Ø:"), m_startD);
+    form->addRow(tr("End z:"), m_endZ);
+    form->addRow(tr("End Ø:"), m_endD);
+    auto *step = new QGroupBox(tr("Step (cylinders)"));
+    auto *stepForm = new QFormLayout(step);
+    stepForm->addRow(tr("At z:"), m_stepZ);
+    stepForm->addRow(tr("To Ø:"), m_stepD);
+    stepForm->addRow(QString(), m_insertStep);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_title);
+    layout->addWidget(geometry);
+    layout->addWidget(step);
+    layout->addWidget(createCornerRow());
+    layout->addWidget(m_delete);
+    layout->addWidget(m_message);
+    layout->addStretch(1);
+    m_cornerSize->setValue(1.0);
+    connect(m_startZ, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(false); });
+    connect(m_startD, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(false); });
+    connect(m_endZ, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(true); });
+    connect(m_endD, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(true); });
+    connect(m_insertStep, &QPushButton::clicked, this, &FeaturePanel::insertStep);
+    connect(m_delete, &QPushButton::clicked, this, &FeaturePanel::deleteFeature);
+    connect(&m_document, &ProjectDocument::projectChanged, this, &FeaturePanel::showFeature);
+    showFeature();
+}
+
+QWidget *FeaturePanel::createCornerRow()
+{
+    auto *group = new QGroupBox(tr("Break a corner"));
+    auto *grid = new QGridLayout(group);
+    grid->addWidget(new QLabel(tr("Size:")), 0, 0);
+    grid->addWidget(m_cornerSize, 0, 1, 1, 2);
+
+    const struct {
+        QString text;
+        bool atEnd;
+        bool round;
+    } commands[] = {{tr("Chamfer start"), false, false},
+                    {tr("Chamfer end"), true, false},
+                    {tr("Round start"), false, true},
+                    {tr("Round end"), true, true}};
+
+    int i = 0;
+    for (const auto &c : commands) {
+        auto *button = new QPushButton(c.text);
+        grid->addWidget(button, 1 + i / 2, 1 + i % 2);
+        connect(button, &QPushButton::clicked, this, [this, c] { breakCorner(c.atEnd, c.round); });
+        ++i;
+    }
+    return group;
+}
+
+void FeaturePanel::setFeature(const QString &featureId)
+{
+    m_featureId = featureId;
+    m_message->clear();
+    showFeature();
+}
+
+QString FeaturePanel::message() const
+{
+    return m_message->text();
+}
+
+void FeaturePanel::showFeature()
+{
+    const std::optional<FeatureRef> ref =
+        m_document.hasProject() ? findFeature(m_document.project().part, m_featureId) : std::nullopt;
+    setEnabled(ref.has_value());
+    if (!ref) {
+        m_title->setText(tr("Click a feature of the drawing to edit it."));
+        return;
+    }
+    const Segment &s = *ref->segment;
+    m_updating = true;
+    m_title->setText(
+        tr("<b>%1</b> %2 — %3, %4 contour").arg(s.id, s.name, displayName(s.kind), contourName(ref->side)));
+    m_startZ->setValue(s.from.z_mm);
+    m_startD->setValue(2.0 * s.from.r_mm);
+    m_endZ->setValue(s.to.z_mm);
+    m_endD->setValue(2.0 * s.to.r_mm);
+    const bool cylinder = s.kind == SegmentKind::Cylinder;
+    m_insertStep->setEnabled(cylinder);
+    if (cylinder) {
+        m_stepZ->setValue(0.5 * (s.from.z_mm + s.to.z_mm));
+        m_stepD->setValue(2.0 * s.from.r_mm - 2.0 * m_cornerSize->value());
+    }
+    m_updating = false;
+}
+
+void FeaturePanel::moveCorner(bool atEnd)
+{
+    if (m_updating)
+        return;
+    const std::optional<FeatureRef> ref = findFeature(m_document.project().part, m_featureId);
+    if (!ref)
+        return;
+    const ProfilePoint to = atEnd ? ProfilePoint{m_endZ->value(), m_endD->value() / 2.0}
+                                  : ProfilePoint{m_startZ->value(), m_startD->value() / 2.0};
+    apply(moveVertex(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0), to),
+          tr("Move corner of %1").arg(m_featureId));
+}
+
+bool FeaturePanel::moveVertexTo(ContourSide side, int vertex, ProfilePoint to)
+{
+    return apply(moveVertex(m_document.project().part, side, vertex, to),
+                 tr("Move corner to z %1, Ø %2").arg(formatNumber(to.z_mm), formatNumber(2.0 * to.r_mm)));
+}
+
+void FeaturePanel::insertStep()
+{
+    const QString cylinder = m_featureId;
+    if (apply(tolturn::insertStep(m_document.project().part, cylinder, m_stepZ->value(), m_stepD->value()),
+              tr("Insert step into %1").arg(cylinder)))
+        Q_EMIT featureChosen(cylinder);
+}
+
+void FeaturePanel::breakCorner(bool atEnd, bool round)
+{
+    const std::optional<FeatureRef> ref = findFeature(m_document.project().part, m_featureId);
+    if (!ref)
+        return;
+    apply(tolturn::breakCorner(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0),
+                               m_cornerSize->value(), round),
+          round ? tr("Round corner of %1").arg(m_featureId) : tr("Chamfer corner of %1").arg(m_featureId));
+}
+
+void FeaturePanel::deleteFeature()
+{
+    const QString removed = m_featureId;
+    if (apply(tolturn::deleteFeature(m_document.project().part, removed), tr("Delete %1").arg(removed)))
+        Q_EMIT featureChosen(QString());
+}
+
+bool FeaturePanel::apply(const ProfileEdit &edit, const QString &description)
+{
+    if (const auto *refusal = std::get_if<QString>(&edit)) {
+        m_message->setText(*refusal);
+        showFeature();
+        return false;
+    }
+    QStringList errors;
+    for (const Diagnostic &d : m_document.setPart(std::get<PartProfile>(edit), description))
+        if (d.severity == Severity::Error)
+            errors << d.toString();
+    m_message->setText(errors.join(QLatin1Char('\n')));
+    if (!errors.isEmpty())
+        showFeature(); // the part is as it was: show its values again
+    return errors.isEmpty();
+}
+
+} // namespace tolturn
