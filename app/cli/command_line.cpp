@@ -108,6 +108,15 @@ QJsonObject diagnosticJson(const Diagnostic &d)
             {QStringLiteral("message"), d.message}};
 }
 
+// Reads a project for a command, printing its problems as "FILE: severity: field: message".
+std::optional<Project> readProject(const QString &file, QTextStream &err)
+{
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    return read.project;
+}
+
 QString projectSummary(const Project &p)
 {
     return tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances")
@@ -344,18 +353,16 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
         }
     }
     const QString file = parser.positionalArguments().constFirst();
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!read.project)
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
         return kExitProblems;
-    const DeviationResult result = computeDeviation(*read.project, DataLibrary::builtIn(), options);
+    const DeviationResult result = computeDeviation(*project, DataLibrary::builtIn(), options);
     for (const Diagnostic &d : result.diagnostics)
         err << file << ": " << d.toString() << '\n';
     if (!result.inputs)
         return kExitProblems;
     if (parser.isSet(json))
-        out << QJsonDocument(deviationJson(file, *read.project, result)).toJson(QJsonDocument::Indented);
+        out << QJsonDocument(deviationJson(file, *project, result)).toJson(QJsonDocument::Indented);
     else
         printDeviationText(out, result);
     return kExitOk;
@@ -598,17 +605,15 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!read.project)
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
         return kExitProblems;
-    const DeviationResult deviation = computeDeviation(*read.project, DataLibrary::builtIn(), {});
+    const DeviationResult deviation = computeDeviation(*project, DataLibrary::builtIn(), {});
     for (const Diagnostic &d : deviation.diagnostics)
         err << file << ": " << d.toString() << '\n';
     if (!deviation.inputs)
         return kExitProblems;
-    const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(*read.project, deviation);
+    const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(*project, deviation);
     if (parser.isSet(json)) {
         QJsonArray list;
         for (const ToleranceEvaluation &e : verdicts)
@@ -733,14 +738,12 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
 std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, QTextStream &err,
                                                            std::optional<Project> *project = nullptr)
 {
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!read.project)
+    const std::optional<Project> read = readProject(file, err);
+    if (!read)
         return nullptr;
     if (project != nullptr)
-        *project = read.project;
-    const PlanningProblem::BuildResult built = PlanningProblem::build(*read.project, DataLibrary::builtIn());
+        *project = read;
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*read, DataLibrary::builtIn());
     for (const Diagnostic &d : built.diagnostics) {
         if (d.severity == Severity::Error)
             err << file << ": " << d.toString() << '\n';
@@ -765,13 +768,9 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
-    std::optional<Project> project;
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!read.project)
+    std::optional<Project> project = readProject(file, err);
+    if (!project)
         return kExitProblems;
-    project = read.project;
     if (parser.isSet(objective)) {
         const auto chosen = fromKeyword<PlanningObjective>(parser.value(objective));
         if (!chosen) {
@@ -885,12 +884,10 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!read.project)
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
         return kExitProblems;
-    const std::vector<ClampingOption> options = adviseClamping(*read.project, DataLibrary::builtIn());
+    const std::vector<ClampingOption> options = adviseClamping(*project, DataLibrary::builtIn());
     if (parser.isSet(json)) {
         QJsonArray list;
         int rank = 1;
@@ -906,7 +903,7 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
             list.append(entry);
         }
         out << QJsonDocument(QJsonObject{{QStringLiteral("file"), file},
-                                         {QStringLiteral("objective"), keyword(read.project->planning.objective)},
+                                         {QStringLiteral("objective"), keyword(project->planning.objective)},
                                          {QStringLiteral("ranking"), list}})
                    .toJson(QJsonDocument::Indented);
         return kExitOk;
@@ -933,25 +930,21 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!read.project)
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
         return kExitProblems;
-    const DeviationResult deviation = computeDeviation(*read.project, DataLibrary::builtIn(), {});
+    const DeviationResult deviation = computeDeviation(*project, DataLibrary::builtIn(), {});
     for (const Diagnostic &d : deviation.diagnostics)
         err << file << ": " << d.toString() << '\n';
     if (!deviation.inputs)
         return kExitProblems;
-    const CompensationPlan plan =
-        planCompensation(*read.project, deviation, evaluateTolerances(*read.project, deviation));
+    const CompensationPlan plan = planCompensation(*project, deviation, evaluateTolerances(*project, deviation));
     GCodeOptions options;
     options.finishing = deviation.inputs->pass;
-    options.maxSpindleSpeed_rpm = read.project->planning.maxSpindleSpeed_rpm
-                                      ? read.project->planning.maxSpindleSpeed_rpm
-                                      : deviation.inputs->maxSpindleSpeed_rpm;
+    options.maxSpindleSpeed_rpm = project->planning.maxSpindleSpeed_rpm ? project->planning.maxSpindleSpeed_rpm
+                                                                        : deviation.inputs->maxSpindleSpeed_rpm;
     options.compensation = parser.isSet(compensated) ? &plan : nullptr;
-    const QString program = finishingProgram(*read.project, options);
+    const QString program = finishingProgram(*project, options);
     QSaveFile target(parser.value(output));
     if (!target.open(QIODevice::WriteOnly) || target.write(program.toUtf8()) < 0 || !target.commit()) {
         err << tr("cannot write '%1': %2").arg(parser.value(output), target.errorString()) << '\n';
@@ -981,12 +974,10 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!read.project)
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
         return kExitProblems;
-    const ReportResult written = writeReport(*read.project, QFileInfo(file).fileName(), parser.value(output));
+    const ReportResult written = writeReport(*project, QFileInfo(file).fileName(), parser.value(output));
     if (!written.ok) {
         err << programName() << " report: " << written.error << '\n';
         return kExitProblems;

@@ -83,7 +83,7 @@ bool Autosave::saveNow()
     return writeProjectFile(copyPath(), m_document.project()).ok && writeMeta(metaPath(copyPath()), m_document);
 }
 
-void Autosave::removeCopy()
+void Autosave::removeCopy() const
 {
     QFile::remove(copyPath());
     QFile::remove(metaPath(copyPath()));

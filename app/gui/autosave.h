@@ -45,7 +45,7 @@ public:
     static void remove(const Copy &copy);
 
 private:
-    void removeCopy();
+    void removeCopy() const;
 
     ProjectDocument &m_document;
     QString m_base; // folder/session without suffix

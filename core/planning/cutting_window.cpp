@@ -49,7 +49,8 @@ void fillColumns(const PlanningProblem &problem, CuttingWindow &w, int firstColu
                 c.finishing.depthOfCut_mm = y;
             const CandidateEvaluation e =
                 problem.evaluate(c, w.plane == WindowPlane::FeedSpeed ? &tolerances : nullptr);
-            WindowCell &cell = w.cells[static_cast<std::size_t>(row * w.columns + column)];
+            WindowCell &cell = w.cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(w.columns) +
+                                       static_cast<std::size_t>(column)];
             cell.x = feed;
             cell.y = y;
             cell.objective = e.objective;
@@ -78,7 +79,7 @@ CuttingWindow cuttingWindow(const PlanningProblem &problem, WindowPlane plane, c
     w.feed = problem.feedRange();
     w.other = plane == WindowPlane::FeedSpeed ? problem.speedRange() : problem.depthRange();
     w.base = base;
-    w.cells.resize(static_cast<std::size_t>(w.columns * w.rows));
+    w.cells.resize(static_cast<std::size_t>(w.columns) * static_cast<std::size_t>(w.rows));
     std::atomic<int> done{0};
     std::atomic<bool> cancel{false};
     const int threads = std::max(1, options.threads);

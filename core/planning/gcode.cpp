@@ -96,8 +96,8 @@ QString finishingProgram(const Project &project, const GCodeOptions &options)
     // The outer contour from its right end to the chuck face, in the order the tool meets it.
     const std::vector<Segment> &segments = part.outer.segments;
     bool first = true;
-    for (auto it = segments.rbegin(); it != segments.rend(); ++it) {
-        const Segment &s = *it;
+    for (std::size_t i = segments.size(); i-- > 0;) { // right to left; clang 14 cannot use views::reverse
+        const Segment &s = segments[i];
         if (s.to.z_mm <= chuckFace + 1e-9 && s.from.z_mm <= chuckFace + 1e-9)
             break; // inside the jaws
         const FeatureCompensation *c = options.compensation ? options.compensation->find(s.id) : nullptr;
@@ -109,8 +109,8 @@ QString finishingProgram(const Project &project, const GCodeOptions &options)
         }
         if (c && c->action == CompensationAction::ProfileCorrection && !c->correctedPath.empty()) {
             w.line(comment(QStringLiteral("%1 CORRECTED").arg(s.id)));
-            for (auto p = c->correctedPath.rbegin(); p != c->correctedPath.rend(); ++p)
-                w.line(QStringLiteral("G01 ") + w.xz(p->z_mm, p->r_mm));
+            for (std::size_t j = c->correctedPath.size(); j-- > 0;)
+                w.line(QStringLiteral("G01 ") + w.xz(c->correctedPath[j].z_mm, c->correctedPath[j].r_mm));
             continue;
         }
         const double shift_mm = c && c->action == CompensationAction::ConstantOffset ? 0.5e-3 * c->offset_um : 0.0;

@@ -84,7 +84,7 @@ void constraints(unsigned m, double *result, unsigned, const double *u, double *
 std::vector<double> runSearch(nlopt::algorithm algorithm, Context &context, std::vector<double> start, int evaluations,
                               nlopt::func objective, bool withConstraints)
 {
-    const unsigned n = static_cast<unsigned>(start.size());
+    const auto n = static_cast<unsigned>(start.size());
     nlopt::opt opt(algorithm, n);
     opt.set_lower_bounds(std::vector<double>(n, 0.0));
     opt.set_upper_bounds(std::vector<double>(n, 1.0));

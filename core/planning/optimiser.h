@@ -41,7 +41,7 @@ struct PlanBox {
     [[nodiscard]] bool empty() const;
 };
 
-[[nodiscard]] PlanBox planBox(const PlanningProblem &problem, int roughingPasses);
+[[nodiscard]] PlanBox planBox(const PlanningProblem &p, int k);
 [[nodiscard]] PlanCandidate candidateAt(const std::vector<double> &x, int roughingPasses);
 
 } // namespace tolturn

@@ -37,7 +37,7 @@ PartProfile edited(const ProfileEdit &edit)
 {
     if (const auto *error = std::get_if<QString>(&edit))
         qFatal("edit refused: %s", qPrintable(*error));
-    const PartProfile p = std::get<PartProfile>(edit);
+    PartProfile p = std::get<PartProfile>(edit);
     if (hasErrors(validateProfile(p)))
         qFatal("edit gives an invalid profile: %s", qPrintable(validateProfile(p).front().toString()));
     return p;

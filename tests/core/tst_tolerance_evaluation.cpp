@@ -34,7 +34,7 @@ Project part()
     return p;
 }
 
-Tolerance geometric(ToleranceType type, const char *feature, double zone, QStringList datums = {})
+Tolerance geometric(ToleranceType type, const char *feature, double zone, const QStringList &datums = {})
 {
     Tolerance t;
     t.id = QStringLiteral("T");
@@ -59,7 +59,9 @@ Tolerance diameter(const char *cls)
 FeatureDeviation curve(const char *id, SegmentKind kind, double z0, double z1, const std::function<double(double)> &e)
 {
     FeatureDeviation f{QString::fromLatin1(id), ContourSide::Outer, kind, {}};
-    for (double z = z0; z <= z1 + 1e-9; z += 5.0) {
+    const int steps = static_cast<int>(std::floor((z1 - z0) / 5.0 + 1e-9));
+    for (int i = 0; i <= steps; ++i) {
+        const double z = z0 + 5.0 * i;
         Station st;
         st.z_mm = z;
         st.radiusError_mm = e(z) / 1000.0;

@@ -141,7 +141,7 @@ private Q_SLOTS:
             candidate.tolerances.push_back(t);
             ProjectDocument doc;
             doc.load(project, QString());
-            const Diagnostics d = doc.addTolerance(t);
+            Diagnostics d = doc.addTolerance(t);
             if (d.empty())
                 applied = t;
             return d;

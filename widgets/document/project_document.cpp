@@ -259,7 +259,7 @@ Diagnostics ProjectDocument::setPart(const PartProfile &part, const QString &des
 QString ProjectDocument::nextToleranceId() const
 {
     for (int n = 1;; ++n) {
-        const QString id = QStringLiteral("T%1").arg(n);
+        QString id = QStringLiteral("T%1").arg(n);
         bool used = false;
         for (const Tolerance &t : m_project.tolerances)
             used = used || t.id == id;

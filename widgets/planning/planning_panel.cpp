@@ -250,6 +250,7 @@ void PlanningPanel::applyPlan()
         return;
     const PlanResult &r = m_report->plan;
     std::vector<CuttingPass> passes;
+    passes.reserve(static_cast<std::size_t>(r.candidate.roughingPasses) + 1);
     const double roughDepth =
         r.candidate.roughingPasses > 0
             ? (m_report->problem->radialStock_mm() - r.candidate.finishing.depthOfCut_mm) / r.candidate.roughingPasses

@@ -9,6 +9,7 @@
 #include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
 #include "widgets/profile/profile_scene.h"
+#include "widgets/results/deflection_panel.h"
 #include "widgets/tolerances/tolerance_verdict_model.h"
 
 #include <QBuffer>
@@ -245,29 +246,7 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d)
         if (side == ContourSide::Inner && p.part.inner.empty())
             continue;
         LinePlot plot;
-        const std::pair<const char *, std::function<double(const Station &)>> curves[] = {
-            {"total", [](const Station &s) { return s.radial.total_mm(); }},
-            {"spindle–chuck / supports", [](const Station &s) { return s.radial.spindleChuck_mm; }},
-            {"workpiece", [](const Station &s) { return s.radial.workpiece_mm; }},
-            {"toolpost", [](const Station &s) { return s.radial.toolpost_mm; }},
-            {"thermal", [](const Station &s) { return s.radial.thermal_mm; }}};
-        const QColor colors[] = {QColor(0x20, 0x20, 0x20), QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0x2c),
-                                 QColor(0xff, 0x7f, 0x0e), QColor(0xd6, 0x27, 0x28)};
-        for (std::size_t c = 0; c < std::size(curves); ++c) {
-            QVector<double> x;
-            QVector<double> y;
-            for (const FeatureDeviation &f : d.features) {
-                if (f.side != side)
-                    continue;
-                for (const Station &s : f.stations) {
-                    x << s.z_mm;
-                    y << 1000.0 * curves[c].second(s);
-                }
-                x << f.stations.back().z_mm;
-                y << std::numeric_limits<double>::quiet_NaN();
-            }
-            plot.addCurve(tr(curves[c].first), x, y, colors[c], Qt::SolidLine, c == 0 ? 2.0 : 1.2);
-        }
+        DeflectionPanel::addContributionCurves(plot, d, side, true);
         plot.setAxisLabels(tr("z from the part's left end [mm]"), tr("deviation [µm]"));
         plot.rescaleAndReplot();
         l.caption(side == ContourSide::Outer ? tr("Radial deviation of the outer contour (material left)")

@@ -118,7 +118,8 @@ void DeflectionPanel::redraw()
     m_plot->rescaleAndReplot();
 }
 
-void DeflectionPanel::plotContributions(bool radial)
+void DeflectionPanel::addContributionCurves(LinePlot &plot, const DeviationResult &result, ContourSide side,
+                                            bool radial)
 {
     const std::vector<CurveSpec> specs{
         {tr("total"), [](const Contributions &c) { return c.total_mm(); }, QColor(0x20, 0x20, 0x20), Qt::SolidLine,
@@ -137,8 +138,8 @@ void DeflectionPanel::plotContributions(bool radial)
             continue; // radial-only terms
         QVector<double> x;
         QVector<double> y;
-        for (const FeatureDeviation &f : m_result.features) {
-            if (f.side != m_side)
+        for (const FeatureDeviation &f : result.features) {
+            if (f.side != side)
                 continue;
             for (const Station &st : f.stations) {
                 x << st.z_mm;
@@ -147,8 +148,13 @@ void DeflectionPanel::plotContributions(bool radial)
             x << f.stations.back().z_mm; // break the curve at the end of each feature
             y << kGap;
         }
-        m_plot->addCurve(spec.name, x, y, spec.color, spec.style, spec.width);
+        plot.addCurve(spec.name, x, y, spec.color, spec.style, spec.width);
     }
+}
+
+void DeflectionPanel::plotContributions(bool radial)
+{
+    addContributionCurves(*m_plot, m_result, m_side, radial);
     m_plot->setTitle(radial ? tr("Radial deviation (material left on the surface)") : tr("Tangential deviation"));
     m_plot->setAxisLabels(tr("z from the part's left end [mm]"), tr("deviation [µm]"));
 }

@@ -24,6 +24,9 @@ public:
 
     // Shows the deviation computed for `project`.
     void showResult(const Project &project, DeviationResult result);
+    // Adds the curves of the total and of each contribution along one contour, in µm, broken at
+    // the ends of the features (also used by the PDF report).
+    static void addContributionCurves(LinePlot &plot, const DeviationResult &result, ContourSide side, bool radial);
     void clear();
 
     void setSide(ContourSide side);
