@@ -230,7 +230,7 @@ void MainWindow::showProject()
         return;
     }
     const Project &project = m_document->project();
-    m_profileView->setProfile(project.part);
+    m_profileView->setProfile(project.part, project.tolerances, project.datums);
     DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
     m_tolerances->showVerdicts(evaluateTolerances(project, deviation));
     m_deflection->showResult(project, std::move(deviation));

@@ -11,6 +11,7 @@
 #include "widgets/profile/dimension_item.h"
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
+#include "widgets/profile/tolerance_frame_item.h"
 #include "widgets/results/deflection_panel.h"
 
 #include <QAction>
@@ -122,8 +123,26 @@ private Q_SLOTS:
         QCOMPARE(dims,
                  (QStringList{QStringLiteral("10"), QStringLiteral("150"), QStringLiteral("30"), QStringLiteral("30"),
                               QStringLiteral("35"), QStringLiteral("45"), QString::fromUtf8("Ø30"),
-                              QString::fromUtf8("Ø40"), QString::fromUtf8("Ø50"), QString::fromUtf8("Ø56")}));
+                              QString::fromUtf8("Ø40 g6"), QString::fromUtf8("Ø50 h6"), QString::fromUtf8("Ø56")}));
         QVERIFY(w.windowTitle().startsWith(QStringLiteral("stepped-shaft-chuck.tolturn")));
+    }
+
+    void tolerancesAreDrawnOnTheirFeatures()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        // Five geometric tolerances (T2 cylindricity, T3 profile, T5 perpendicularity to A, T6
+        // total run-out to A, T8 flatness), each a feature control frame on its feature.
+        QStringList frames;
+        for (QGraphicsItem *item : itemsOfKind(w, profile_item::kToleranceFrame))
+            if (const auto *frame = dynamic_cast<ToleranceFrameItem *>(item))
+                frames << item->data(kFeatureIdData).toString() + QLatin1Char(':') + frame->text();
+        frames.sort();
+        QCOMPARE(frames, (QStringList{QStringLiteral("O11:0.01"), QStringLiteral("O4:0.008"), QStringLiteral("O5:0.02"),
+                                      QStringLiteral("O8:0.015 A"), QStringLiteral("O9:0.02 A")}));
+        const QList<QGraphicsItem *> datums = itemsOfKind(w, profile_item::kDatum);
+        QCOMPARE(datums.size(), 1);
+        QCOMPARE(datums.constFirst()->data(kFeatureIdData).toString(), QStringLiteral("O4"));
     }
 
     void hollowPartHasBoreAndHiddenLines()
@@ -133,8 +152,8 @@ private Q_SLOTS:
         QCOMPARE(itemsOfKind(w, profile_item::kInnerContour).size(), 3);
         QCOMPARE(itemsOfKind(w, profile_item::kHiddenLine).size(), 3);
         const QStringList dims = dimensionTexts(w);
-        QVERIFY(dims.contains(QStringLiteral("Ø40")));
-        QVERIFY(dims.contains(QStringLiteral("Ø45")));
+        QVERIFY(dims.contains(QStringLiteral("Ø40 H7"))); // the bores carry their ISO 286 classes
+        QVERIFY(dims.contains(QStringLiteral("Ø45 H8")));
         QVERIFY(dims.contains(QStringLiteral("400")));
     }
 

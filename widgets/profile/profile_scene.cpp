@@ -4,6 +4,7 @@
 #include "core/part/profile_geometry.h"
 #include "core/project/keywords.h"
 #include "widgets/profile/dimension_item.h"
+#include "widgets/profile/tolerance_frame_item.h"
 
 #include <QBrush>
 #include <QGraphicsPathItem>
@@ -34,6 +35,7 @@ QPen cosmeticPen(const QColor &color, double width, Qt::PenStyle style = Qt::Sol
 const QColor kEdgeColor(0x20, 0x20, 0x20);
 const QColor kHatchColor(0x6a, 0x7f, 0x99);
 const QColor kAxisColor(0xb0, 0x30, 0x30);
+const QColor kAnnotationColor(0x1f, 0x4e, 0x9a);
 
 QPointF scenePoint(const ProfilePoint &p, double sign = 1.0)
 {
@@ -157,14 +159,30 @@ void addDimension(QGraphicsScene &scene, QPointF from, QPointF to, double offset
 // Ø of every cylinder, drawn across the full diameter at the middle of the feature and lettered
 // in the outside view, off the centre line and the hatching; bores are dimensioned a third of the
 // way along so they do not sit on an outer dimension.
-void addDiameterDimensions(QGraphicsScene &scene, const Contour &contour, double where, double arrow)
+// The size tolerance written after a diameter: the ISO 286 class, or the limit deviations in mm.
+QString sizeSuffix(const std::vector<Tolerance> &tolerances, const QString &featureId)
+{
+    for (const Tolerance &t : tolerances) {
+        if (t.type != ToleranceType::Diameter || t.featureId != featureId)
+            continue;
+        if (!t.iso286Class.isEmpty())
+            return QLatin1Char(' ') + t.iso286Class;
+        if (t.upperDeviation_um && t.lowerDeviation_um)
+            return QStringLiteral(" %1/%2").arg(QString::asprintf("%+.3f", *t.upperDeviation_um / 1000.0),
+                                                QString::asprintf("%+.3f", *t.lowerDeviation_um / 1000.0));
+    }
+    return {};
+}
+
+void addDiameterDimensions(QGraphicsScene &scene, const Contour &contour, double where, double arrow,
+                           const std::vector<Tolerance> &tolerances)
 {
     for (const Segment &s : contour.segments) {
         if (s.kind != SegmentKind::Cylinder)
             continue;
         const double z = s.from.z_mm + where * (s.to.z_mm - s.from.z_mm);
         addDimension(scene, scenePoint({z, s.from.r_mm}, -1.0), scenePoint({z, s.from.r_mm}), 0.0,
-                     QStringLiteral("Ø") + dimensionText(2.0 * s.from.r_mm), arrow, 0.3);
+                     QStringLiteral("Ø") + dimensionText(2.0 * s.from.r_mm) + sizeSuffix(tolerances, s.id), arrow, 0.3);
     }
 }
 
@@ -207,6 +225,67 @@ void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, doub
                  dimensionText(profile.length_mm()), arrow);
 }
 
+// The point of a feature annotations point at: the middle of the segment, in the section above
+// the axis (an outer feature from outside, a bore from its surface).
+QPointF annotationPoint(const Segment &s)
+{
+    return scenePoint({0.5 * (s.from.z_mm + s.to.z_mm), 0.5 * (s.from.r_mm + s.to.r_mm)});
+}
+
+// One frame per geometric tolerance. Taken in order along z, the leaders rise in a staircase of
+// three heights, so that the frames of neighbouring features (drawn in pixels, whatever the zoom)
+// do not sit on each other.
+void addToleranceFrames(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances)
+{
+    std::vector<std::pair<const Tolerance *, const Segment *>> frames;
+    for (const Tolerance &t : tolerances) {
+        const std::optional<FeatureRef> ref = findFeature(profile, t.featureId);
+        if (!isSizeTolerance(t.type) && t.zone_um && ref)
+            frames.emplace_back(&t, ref->segment);
+    }
+    std::stable_sort(frames.begin(), frames.end(), [](const auto &a, const auto &b) {
+        return annotationPoint(*a.second).x() < annotationPoint(*b.second).x();
+    });
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const Tolerance &t = *frames[i].first;
+        auto *frame = new ToleranceFrameItem(t.type, dimensionText(*t.zone_um / 1000.0), t.datums,
+                                             30.0 + 24.0 * static_cast<double>(i % 3));
+        // The leader runs in the drawing from the feature up to the part's top line, then on in
+        // pixels to the frame; its arrow ends on the feature.
+        const QPointF onFeature = annotationPoint(*frames[i].second);
+        const QPointF top(onFeature.x(), std::min(onFeature.y(), -profile.maxOuterRadius_mm()));
+        auto *leader = scene.addLine(QLineF(onFeature, top), cosmeticPen(kAnnotationColor, 1.0));
+        auto *arrowhead = new LeaderArrowItem;
+        arrowhead->setPos(onFeature);
+        scene.addItem(arrowhead);
+        for (QGraphicsItem *part : {static_cast<QGraphicsItem *>(leader), static_cast<QGraphicsItem *>(arrowhead)}) {
+            part->setZValue(6.0);
+            tagItem(part, profile_item::kToleranceFrame, t.featureId);
+        }
+        frame->setPos(top);
+        frame->setZValue(6.0);
+        tagItem(frame, profile_item::kToleranceFrame, t.featureId);
+        scene.addItem(frame);
+    }
+}
+
+void addDatums(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Datum> &datums)
+{
+    for (const Datum &d : datums) {
+        const std::optional<FeatureRef> ref = findFeature(profile, d.featureId);
+        if (!ref)
+            continue;
+        auto *item = new DatumItem(d.label);
+        // A fifth of the way along the feature, left of the frames' leaders at its middle.
+        const Segment &s = *ref->segment;
+        item->setPos(
+            scenePoint({s.from.z_mm + 0.2 * (s.to.z_mm - s.from.z_mm), s.from.r_mm + 0.2 * (s.to.r_mm - s.from.r_mm)}));
+        item->setZValue(6.0);
+        tagItem(item, profile_item::kDatum, d.featureId);
+        scene.addItem(item);
+    }
+}
+
 } // namespace
 
 QString dimensionText(double value_mm)
@@ -217,7 +296,8 @@ QString dimensionText(double value_mm)
     return text == QStringLiteral("-0") ? QStringLiteral("0") : text;
 }
 
-void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile)
+void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
+                       const std::vector<Datum> &datums)
 {
     scene.clear();
     if (profile.outer.empty())
@@ -233,9 +313,11 @@ void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile)
     addContourItems(scene, profile.inner, profile_item::kInnerContour);
     addOutsideView(scene, profile);
     addAxis(scene, length);
-    addDiameterDimensions(scene, profile.outer, 0.5, arrow);
-    addDiameterDimensions(scene, profile.inner, 0.3, arrow);
+    addDiameterDimensions(scene, profile.outer, 0.5, arrow, tolerances);
+    addDiameterDimensions(scene, profile.inner, 0.3, arrow, tolerances);
     addLengthDimensions(scene, profile, arrow);
+    addToleranceFrames(scene, profile, tolerances);
+    addDatums(scene, profile, datums);
 }
 
 } // namespace tolturn

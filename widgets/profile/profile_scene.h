@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/part/profile.h"
+#include "core/project/project.h"
 
 #include <QString>
 
@@ -28,13 +28,19 @@ inline const QString kViewOutline = QStringLiteral("view-outline");
 inline const QString kHiddenLine = QStringLiteral("hidden-line");
 inline const QString kDimension = QStringLiteral("dimension");
 inline const QString kVertexHandle = QStringLiteral("vertex-handle");
+inline const QString kToleranceFrame = QStringLiteral("tolerance-frame");
+inline const QString kDatum = QStringLiteral("datum");
 } // namespace profile_item
 
 // Draws a part as a half-section drawing: above the axis the section (hatched material,
 // outer and inner contour, one item per feature), below it the outside view with the bore as
 // hidden lines; diameters of every cylinder and the chain of lengths dimensioned. Scene units
 // are millimetres with y = -r, so the part reads upright.
-void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile);
+// With `tolerances` and `datums`, size tolerances are written after their diameters ("Ø50 h6"),
+// geometric tolerances drawn as feature control frames and datums as datum indicators
+// (ISO 1101, ISO 5459), each on its feature.
+void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances = {},
+                       const std::vector<Datum> &datums = {});
 
 // Text of a dimension value in mm: at most three decimals, no trailing zeros.
 [[nodiscard]] QString dimensionText(double value_mm);

@@ -27,11 +27,12 @@ ProfileView::ProfileView(QWidget *parent) : QGraphicsView(parent), m_scene(new Q
     setMinimumSize(320, 200);
 }
 
-void ProfileView::setProfile(const PartProfile &profile)
+void ProfileView::setProfile(const PartProfile &profile, const std::vector<Tolerance> &tolerances,
+                             const std::vector<Datum> &datums)
 {
     if (profile.name != m_profile.name || m_profile.outer.empty())
         m_autoFit = true; // another part: show it whole; edits of this one keep the user's zoom
-    buildProfileScene(*m_scene, profile);
+    buildProfileScene(*m_scene, profile, tolerances, datums);
     m_profile = profile;
     m_dragged = nullptr;
     if (m_autoFit)

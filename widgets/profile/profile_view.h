@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/part/profile.h"
+#include "core/project/project.h"
 
 #include <QGraphicsView>
 
@@ -14,7 +14,9 @@ class ProfileView : public QGraphicsView {
 public:
     explicit ProfileView(QWidget *parent = nullptr);
 
-    void setProfile(const PartProfile &profile);
+    // Draws the part, with its tolerances and datums annotated when given.
+    void setProfile(const PartProfile &profile, const std::vector<Tolerance> &tolerances = {},
+                    const std::vector<Datum> &datums = {});
     void clearProfile();
     void fitPart();
 

@@ -16,6 +16,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFileInfo>
+#include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QPainter>
 #include <QPdfWriter>
@@ -185,10 +186,19 @@ void drawing(Layout &l, const Project &p)
 {
     l.heading(tr("1  Part"));
     QGraphicsScene scene;
-    buildProfileScene(scene, p.part);
-    const QRectF source = scene.itemsBoundingRect().adjusted(-4, -4, 4, 4);
-    const double height = std::min(300.0, kWidth * source.height() / source.width());
-    l.block(height,
+    buildProfileScene(scene, p.part, p.tolerances, p.datums);
+    // Frames and datum boxes keep their size in points (they ignore the drawing's scale), so the
+    // drawing is fitted on the part and its dimensions, with room above for the frames.
+    QRectF part;
+    for (const QGraphicsItem *item : scene.items()) {
+        const QString kind = item->data(kItemKindData).toString();
+        if (kind != profile_item::kToleranceFrame && kind != profile_item::kDatum)
+            part |= item->sceneBoundingRect();
+    }
+    const double scale = std::min(kWidth / part.width(), 170.0 / part.height()); // points per mm
+    const double frames = 110.0 / scale;                                         // 110 pt of frames
+    const QRectF source = part.adjusted(-4, -frames, 4, 4);
+    l.block(source.height() * scale,
             [&](QPainter &painter, const QRectF &r) { scene.render(&painter, r, source, Qt::KeepAspectRatio); });
 }
 
