@@ -6,6 +6,7 @@
 #include <QPainterPath>
 
 #include <cmath>
+#include <utility>
 
 namespace tolturn {
 
@@ -91,11 +92,10 @@ void drawToleranceSymbol(QPainter &p, ToleranceType type, const QRectF &cell)
     }
 }
 
-ToleranceFrameItem::ToleranceFrameItem(ToleranceType type, const QString &value, const QStringList &datums,
-                                       double leaderPixels)
+ToleranceFrameItem::ToleranceFrameItem(ToleranceType type, QString value, QStringList datums, double leaderPixels)
     : m_type(type)
-    , m_value(value)
-    , m_datums(datums)
+    , m_value(std::move(value))
+    , m_datums(std::move(datums))
     , m_leader(leaderPixels)
 {
     setFlag(ItemIgnoresTransformations);
@@ -163,7 +163,7 @@ void LeaderArrowItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *,
     arrow(*painter, QPointF(0, -7), QPointF(0, 0));
 }
 
-DatumItem::DatumItem(const QString &label) : m_label(label)
+DatumItem::DatumItem(QString label) : m_label(std::move(label))
 {
     setFlag(ItemIgnoresTransformations);
     setToolTip(QObject::tr("Datum %1").arg(label));

@@ -19,7 +19,7 @@ void drawToleranceSymbol(QPainter &painter, ToleranceType type, const QRectF &ce
 // long. Anchored where the leader leaves the drawing; drawn in pixels so it reads at any zoom.
 class ToleranceFrameItem : public QGraphicsItem {
 public:
-    ToleranceFrameItem(ToleranceType type, const QString &value, const QStringList &datums, double leaderPixels);
+    ToleranceFrameItem(ToleranceType type, QString value, QStringList datums, double leaderPixels);
 
     [[nodiscard]] QRectF boundingRect() const override;
     void paint(QPainter *painter, const QStyleOptionGraphicsItem *option, QWidget *widget) override;
@@ -48,7 +48,7 @@ public:
 // box with the datum letter. Anchored at the feature's point; drawn in pixels.
 class DatumItem : public QGraphicsItem {
 public:
-    explicit DatumItem(const QString &label);
+    explicit DatumItem(QString label);
 
     [[nodiscard]] QRectF boundingRect() const override;
     void paint(QPainter *painter, const QStyleOptionGraphicsItem *option, QWidget *widget) override;
