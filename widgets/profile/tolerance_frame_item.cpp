@@ -166,7 +166,7 @@ void LeaderArrowItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *,
 DatumItem::DatumItem(QString label) : m_label(std::move(label))
 {
     setFlag(ItemIgnoresTransformations);
-    setToolTip(QObject::tr("Datum %1").arg(label));
+    setToolTip(QObject::tr("Datum %1").arg(m_label));
 }
 
 QRectF DatumItem::boundingRect() const
