@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QTimer>
 
 int main(int argc, char *argv[])
 {
@@ -31,5 +32,8 @@ int main(int argc, char *argv[])
     const bool recovered = window.fileController()->offerRecovery(tolturn::MainWindow::autosaveFolder());
     if (!recovered && !parser.positionalArguments().isEmpty())
         window.fileController()->openFile(parser.positionalArguments().constFirst());
+    // For the start-up benchmark (benchmarks/bench_gui): quit as soon as the window is usable.
+    if (qEnvironmentVariableIsSet("TOLTURN_QUIT_WHEN_SHOWN"))
+        QTimer::singleShot(0, &app, &QCoreApplication::quit);
     return QApplication::exec();
 }
