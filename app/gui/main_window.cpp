@@ -128,7 +128,7 @@ void MainWindow::createDocks()
     addDockWidget(Qt::BottomDockWidgetArea, planning);
     tabifyDockWidget(dock, planning);
     dock->raise();
-    resizeDocks({setup, tolerances}, {380, 680}, Qt::Horizontal);
+    resizeDocks({setup, tolerances}, {440, 660}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(setup->toggleViewAction());

@@ -6,6 +6,7 @@
 #include "widgets/document/project_document.h"
 #include "widgets/results/deflection_panel.h"
 #include "widgets/setup/setup_panel.h"
+#include "widgets/setup/stiffness_editor.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -133,6 +134,39 @@ private Q_SLOTS:
         Q_EMIT s->insertEdit()->editingFinished();
         QVERIFY(s->message().isEmpty());
         QCOMPARE(w.document()->project().tool.insertCode, QStringLiteral("CNMG 120404")); // normalised
+    }
+
+    void measuredStiffnessIsOneEditWhenComplete()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        StiffnessEditor *e = w.setupPanel()->stiffnessEditor();
+        // Field by field: nothing reaches the project until the row, Lc and the source are there.
+        e->box(0, 0)->setValue(1.0e3);
+        QVERIFY2(w.setupPanel()->message().contains(QStringLiteral("k1, k2, k3")),
+                 qPrintable(w.setupPanel()->message()));
+        e->box(0, 1)->setValue(1.0e12);
+        e->box(0, 2)->setValue(1.0e12);
+        QVERIFY(w.setupPanel()->message().contains(QStringLiteral("Lc")));
+        e->pivotBox()->setValue(100.0);
+        QVERIFY(w.setupPanel()->message().contains(QStringLiteral("source")));
+        QVERIFY(!w.document()->isModified());
+        e->sourceEdit()->setText(QStringLiteral("test: k2, k3 stiff so that only k1 yields"));
+        Q_EMIT e->sourceEdit()->editingFinished();
+        QVERIFY2(w.setupPanel()->message().isEmpty(), qPrintable(w.setupPanel()->message()));
+        QCOMPARE(w.document()->undoStack()->count(), 1);
+        // With k2, k3 practically rigid the chuck only translates, by Fp / k1, at every station
+        // (Valiño et al. 2008 eq. 2 with the rotation terms gone: they add F (Lc + a)^2 / k2, at
+        // most 31 N x (215 mm)^2 / 1e12 = 1.4e-6 mm against 0.031 mm, below 1e-4 of it).
+        const DeviationResult &r = w.deflectionPanel()->result();
+        const double expected_mm = r.inputs->forces.radial_N / 1.0e3;
+        for (const FeatureDeviation &f : r.features)
+            for (const Station &st : f.stations)
+                QVERIFY2(std::abs(std::abs(st.radial.spindleChuck_mm) - expected_mm) < 1e-4 * expected_mm,
+                         qPrintable(QStringLiteral("%1 at z %2").arg(st.radial.spindleChuck_mm).arg(st.z_mm)));
+        w.document()->undoStack()->undo();
+        QVERIFY(!w.document()->project().characterisation.spindleRadial.has_value());
+        QCOMPARE(e->box(0, 0)->value(), 0.0);
     }
 
     void cuttingConditionsAndMaterialAreEdits()

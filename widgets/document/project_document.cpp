@@ -251,6 +251,11 @@ Diagnostics ProjectDocument::setClamping(const Clamping &clamping)
     return editField(&Project::clamping, clamping, tr("Change clamping"));
 }
 
+Diagnostics ProjectDocument::setCharacterisation(const MachineCharacterisation &characterisation)
+{
+    return editField(&Project::characterisation, characterisation, tr("Change machine stiffness"));
+}
+
 Diagnostics ProjectDocument::setPart(const PartProfile &part, const QString &description)
 {
     return editField(&Project::part, part, description);

@@ -55,6 +55,7 @@ public:
     Diagnostics setMachine(const QString &machineId);
     Diagnostics setTool(const Tool &tool);
     Diagnostics setClamping(const Clamping &clamping);
+    Diagnostics setCharacterisation(const MachineCharacterisation &characterisation);
     // The part's profile after an edit of the profile editor, named by `description` in Undo.
     Diagnostics setPart(const PartProfile &part, const QString &description);
 

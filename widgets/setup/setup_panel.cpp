@@ -5,6 +5,7 @@
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 #include "widgets/document/project_document.h"
+#include "widgets/setup/stiffness_editor.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -78,6 +79,7 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     , m_material(new QComboBox)
     , m_machine(new QComboBox)
     , m_machineStiffness(new QLabel)
+    , m_stiffness(new StiffnessEditor)
     , m_insert(new QLineEdit)
     , m_insertDecoded(new QLabel)
     , m_holder(new QComboBox)
@@ -98,6 +100,7 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     auto *content = new QWidget;
     auto *column = new QVBoxLayout(content);
     column->addWidget(createPartGroup());
+    column->addWidget(m_stiffness);
     column->addWidget(createToolGroup());
     column->addWidget(createClampingGroup());
     column->addWidget(createPassesGroup());
@@ -129,6 +132,7 @@ QWidget *SetupPanel::createPartGroup()
     m_machineStiffness->setWordWrap(true);
     connect(m_material, &QComboBox::activated, this, &SetupPanel::applyMaterial);
     connect(m_machine, &QComboBox::activated, this, &SetupPanel::applyMachine);
+    connect(m_stiffness, &StiffnessEditor::edited, this, &SetupPanel::applyStiffness);
     return group;
 }
 
@@ -261,6 +265,7 @@ void SetupPanel::showValues()
         m_passBoxes[i][kDepth]->setValue(pass.depthOfCut_mm);
     }
     showMachineStiffness();
+    m_stiffness->showCharacterisation(p.characterisation);
     m_updating = false;
 }
 
@@ -342,6 +347,18 @@ void SetupPanel::applyPasses()
         passes[i].depthOfCut_mm = m_passBoxes[i][kDepth]->value();
     }
     showOutcome(m_document.setPasses(passes, tr("Change cutting conditions")));
+}
+
+void SetupPanel::applyStiffness()
+{
+    if (m_updating)
+        return;
+    // A measurement is entered field by field: wait for a whole one before editing the project.
+    if (const QString missing = m_stiffness->missing(); !missing.isEmpty()) {
+        m_message->setText(tr("Machine stiffness not applied yet: %1.").arg(missing));
+        return;
+    }
+    showOutcome(m_document.setCharacterisation(m_stiffness->characterisation(m_document.project().characterisation)));
 }
 
 void SetupPanel::showOutcome(const Diagnostics &diagnostics)

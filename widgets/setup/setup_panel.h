@@ -16,6 +16,7 @@ class QLineEdit;
 namespace tolturn {
 
 class ProjectDocument;
+class StiffnessEditor;
 
 // The set-up of the open project: material, machine (and what is known of its stiffness),
 // insert (ISO 1832 code) and holder, clamping (method, clamped length, tool overhang) and the
@@ -43,6 +44,8 @@ public:
 
     [[nodiscard]] QDoubleSpinBox *overhangBox() const { return m_overhang; }
 
+    [[nodiscard]] StiffnessEditor *stiffnessEditor() const { return m_stiffness; }
+
     // Cutting speed, feed and depth of cut of pass `index`.
     [[nodiscard]] QDoubleSpinBox *passBox(int index, int column) const;
 
@@ -64,6 +67,7 @@ private:
     void applyTool();
     void applyClamping();
     void applyPasses();
+    void applyStiffness();
     // Shows the outcome of an edit: the errors of a refused one (and the document's values again).
     void showOutcome(const Diagnostics &diagnostics);
 
@@ -73,6 +77,7 @@ private:
     QComboBox *m_material;
     QComboBox *m_machine;
     QLabel *m_machineStiffness;
+    StiffnessEditor *m_stiffness;
     QLineEdit *m_insert;
     QLabel *m_insertDecoded;
     QComboBox *m_holder;
