@@ -159,17 +159,14 @@ void addDimension(QGraphicsScene &scene, QPointF from, QPointF to, double offset
 // Ø of every cylinder, drawn across the full diameter at the middle of the feature and lettered
 // in the outside view, off the centre line and the hatching; bores are dimensioned a third of the
 // way along so they do not sit on an outer dimension.
-// The size tolerance written after a diameter: the ISO 286 class, or the limit deviations in mm.
+QString limitsText(const Tolerance &t);
+
+// The size tolerance written after a diameter.
 QString sizeSuffix(const std::vector<Tolerance> &tolerances, const QString &featureId)
 {
     for (const Tolerance &t : tolerances) {
-        if (t.type != ToleranceType::Diameter || t.featureId != featureId)
-            continue;
-        if (!t.iso286Class.isEmpty())
-            return QLatin1Char(' ') + t.iso286Class;
-        if (t.upperDeviation_um && t.lowerDeviation_um)
-            return QStringLiteral(" %1/%2").arg(QString::asprintf("%+.3f", *t.upperDeviation_um / 1000.0),
-                                                QString::asprintf("%+.3f", *t.lowerDeviation_um / 1000.0));
+        if (t.type == ToleranceType::Diameter && t.featureId == featureId)
+            return QLatin1Char(' ') + limitsText(t);
     }
     return {};
 }
@@ -223,6 +220,40 @@ void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, doub
     const double overall = z.size() > 2 ? 2.0 * gap : gap;
     addDimension(scene, scenePoint({profile.length_mm(), rMax}, -1.0), scenePoint({0.0, rMax}, -1.0), overall,
                  dimensionText(profile.length_mm()), arrow);
+}
+
+// The limits of a size tolerance as written after its dimension: the ISO 286 class, "±0.05" when
+// symmetric, else "+0.05/-0.02" (mm).
+QString limitsText(const Tolerance &t)
+{
+    if (!t.iso286Class.isEmpty())
+        return t.iso286Class;
+    if (!t.upperDeviation_um || !t.lowerDeviation_um)
+        return {};
+    if (std::abs(*t.upperDeviation_um + *t.lowerDeviation_um) < 1e-9)
+        return QStringLiteral("±") + dimensionText(*t.upperDeviation_um / 1000.0);
+    return QStringLiteral("%1/%2").arg(QString::asprintf("%+.3f", *t.upperDeviation_um / 1000.0),
+                                       QString::asprintf("%+.3f", *t.lowerDeviation_um / 1000.0));
+}
+
+// Each toleranced length between two faces as its own dimension below the overall length.
+void addToleratedLengths(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
+                         double arrow)
+{
+    const double rMax = profile.maxOuterRadius_mm();
+    const double gap = std::max(0.12 * rMax, 4.0 * arrow);
+    double offset = 3.0 * gap;
+    for (const Tolerance &t : tolerances) {
+        const std::optional<FeatureRef> a = findFeature(profile, t.featureId);
+        const std::optional<FeatureRef> b = findFeature(profile, t.toFeatureId);
+        if (t.type != ToleranceType::Length || !a || !b)
+            continue;
+        const double z0 = std::min(a->segment->from.z_mm, b->segment->from.z_mm);
+        const double z1 = std::max(a->segment->from.z_mm, b->segment->from.z_mm);
+        addDimension(scene, scenePoint({z1, rMax}, -1.0), scenePoint({z0, rMax}, -1.0), offset,
+                     dimensionText(z1 - z0) + QLatin1Char(' ') + limitsText(t), arrow);
+        offset += gap;
+    }
 }
 
 // The point of a feature annotations point at: the middle of the segment, in the section above
@@ -316,6 +347,7 @@ void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const 
     addDiameterDimensions(scene, profile.outer, 0.5, arrow, tolerances);
     addDiameterDimensions(scene, profile.inner, 0.3, arrow, tolerances);
     addLengthDimensions(scene, profile, arrow);
+    addToleratedLengths(scene, profile, tolerances, arrow);
     addToleranceFrames(scene, profile, tolerances);
     addDatums(scene, profile, datums);
 }
