@@ -200,6 +200,39 @@ ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex
     return result;
 }
 
+ProfileEdit makeCone(const PartProfile &profile, const QString &featureId, double endDiameter_mm)
+{
+    const std::optional<FeatureRef> ref = findFeature(profile, featureId);
+    if (!ref || ref->segment->kind != SegmentKind::Cylinder)
+        return tr("a cone is made from a cylinder; %1 is not one").arg(featureId);
+    if (!(endDiameter_mm > 0.0) || near(endDiameter_mm / 2.0, ref->segment->from.r_mm))
+        return tr("the cone's end needs a diameter other than Ø%1 mm, but it is %2 mm")
+            .arg(formatNumber(2.0 * ref->segment->from.r_mm), formatNumber(endDiameter_mm));
+    PartProfile result = profile;
+    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    const auto i = static_cast<std::size_t>(ref->index);
+    s[i].kind = SegmentKind::Cone;
+    s[i].to.r_mm = endDiameter_mm / 2.0;
+    if (i + 1 < s.size())
+        moveStart(s, i + 1, s[i].to);
+    return result;
+}
+
+ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId)
+{
+    const std::optional<FeatureRef> ref = findFeature(profile, featureId);
+    if (!ref || ref->segment->kind != SegmentKind::Cone)
+        return tr("a cylinder is made from a cone; %1 is not one").arg(featureId);
+    PartProfile result = profile;
+    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    const auto i = static_cast<std::size_t>(ref->index);
+    s[i].kind = SegmentKind::Cylinder;
+    s[i].to.r_mm = s[i].from.r_mm;
+    if (i + 1 < s.size())
+        moveStart(s, i + 1, s[i].to);
+    return result;
+}
+
 ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
 {
     const std::optional<FeatureRef> ref = findFeature(profile, featureId);

@@ -36,6 +36,11 @@ using ProfileEdit = std::variant<PartProfile, QString>;
 // features after it move to close the gap.
 [[nodiscard]] ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId);
 
+// Turns a cylinder into a cone (taper) ending at `endDiameter_mm`; what follows it moves with its end.
+[[nodiscard]] ProfileEdit makeCone(const PartProfile &profile, const QString &featureId, double endDiameter_mm);
+// Turns a cone into a cylinder at the diameter of its start; what follows it moves with its end.
+[[nodiscard]] ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId);
+
 // A feature id not used yet on the contour: "O12", "I4", …
 [[nodiscard]] QString nextFeatureId(const PartProfile &profile, ContourSide side);
 

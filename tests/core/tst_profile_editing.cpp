@@ -132,6 +132,19 @@ private Q_SLOTS:
         QVERIFY(!refusal(breakCorner(shaft(), ContourSide::Outer, 0, 1.0, false)).isEmpty());
     }
 
+    void cylinderBecomesConeAndBack()
+    {
+        // O4 tapered from Ø30 at z 50 to Ø24 at z 100; the right end face follows to r 12.
+        const PartProfile taper = edited(makeCone(shaft(), QStringLiteral("O4"), 24.0));
+        QCOMPARE(taper.outer.segments[3].kind, SegmentKind::Cone);
+        QCOMPARE(taper.outer.segments[3].from, pt(50, 15));
+        QCOMPARE(taper.outer.segments[3].to, pt(100, 12));
+        QCOMPARE(taper.outer.segments[4].from, pt(100, 12));
+        QVERIFY(edited(makeCylinder(taper, QStringLiteral("O4"))) == shaft());
+        QVERIFY(refusal(makeCone(shaft(), QStringLiteral("O4"), 30.0)).contains(QStringLiteral("Ø30")));
+        QVERIFY(refusal(makeCone(shaft(), QStringLiteral("O3"), 20.0)).contains(QStringLiteral("O3")));
+    }
+
     void deletingTheShoulderRemovesTheStep()
     {
         const PartProfile p = edited(deleteFeature(shaft(), QStringLiteral("O3")));

@@ -134,6 +134,37 @@ private Q_SLOTS:
         tolturn::test::saveScreenshot(w, "profile-editor.png");
     }
 
+    void cylinderToConeThenTaper()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        w.profileView()->selectFeature(QStringLiteral("O2")); // Ø56 clamping diameter, z 0 … 35
+        w.featurePanel()->stepDiameterBox()->setValue(54.0);
+        w.featurePanel()->toggleCone(); // a taper to Ø54 at its end
+        QVERIFY2(w.featurePanel()->message().isEmpty(), qPrintable(w.featurePanel()->message()));
+        QCOMPARE(feature(w, "O2").kind, SegmentKind::Cone);
+        QCOMPARE(feature(w, "O2").from, pt(0, 28));
+        QCOMPARE(feature(w, "O2").to, pt(35, 27));
+        QCOMPARE(feature(w, "O3").from, pt(35, 27)); // the shoulder O3 follows
+        w.featurePanel()->toggleCone();
+        QCOMPARE(feature(w, "O2").kind, SegmentKind::Cylinder);
+        QCOMPARE(feature(w, "O2").to, pt(35, 28));
+        QCOMPARE(w.document()->undoStack()->count(), 2);
+        // The journal O9 tapered to Ø28 would flatten the end chamfer O10: refused, named.
+        w.profileView()->selectFeature(QStringLiteral("O9"));
+        w.featurePanel()->stepDiameterBox()->setValue(28.0);
+        w.featurePanel()->toggleCone();
+        QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("part.outer[9]")),
+                 qPrintable(w.featurePanel()->message()));
+        QCOMPARE(feature(w, "O9").kind, SegmentKind::Cylinder);
+        // The bearing seat O4 carries a diameter tolerance, which a cone cannot: refused.
+        w.profileView()->selectFeature(QStringLiteral("O4"));
+        w.featurePanel()->stepDiameterBox()->setValue(48.0);
+        w.featurePanel()->toggleCone();
+        QVERIFY(!w.featurePanel()->message().isEmpty());
+        QCOMPARE(feature(w, "O4").kind, SegmentKind::Cylinder);
+    }
+
     void refusalsLeaveThePart()
     {
         MainWindow w;

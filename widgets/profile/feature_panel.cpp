@@ -43,6 +43,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     , m_insertStep(new QPushButton(tr("Insert &Step")))
     , m_cornerSize(millimetres(tr("Chamfer leg (45°) or radius")))
     , m_delete(new QPushButton(tr("&Delete Feature")))
+    , m_cone(new QPushButton(tr("Make C&one")))
     , m_message(new QLabel)
 {
     setObjectName(QStringLiteral("featurePanel"));
@@ -65,6 +66,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     layout->addWidget(geometry);
     layout->addWidget(step);
     layout->addWidget(createCornerRow());
+    layout->addWidget(m_cone);
     layout->addWidget(m_delete);
     layout->addWidget(m_message);
     layout->addStretch(1);
@@ -75,6 +77,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     connect(m_endD, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(true); });
     connect(m_insertStep, &QPushButton::clicked, this, &FeaturePanel::insertStep);
     connect(m_delete, &QPushButton::clicked, this, &FeaturePanel::deleteFeature);
+    connect(m_cone, &QPushButton::clicked, this, &FeaturePanel::toggleCone);
     connect(&m_document, &ProjectDocument::projectChanged, this, &FeaturePanel::showFeature);
     showFeature();
 }
@@ -136,6 +139,8 @@ void FeaturePanel::showFeature()
     m_endD->setValue(2.0 * s.to.r_mm);
     const bool cylinder = s.kind == SegmentKind::Cylinder;
     m_insertStep->setEnabled(cylinder);
+    m_cone->setEnabled(cylinder || s.kind == SegmentKind::Cone);
+    m_cone->setText(s.kind == SegmentKind::Cone ? tr("Make C&ylinder") : tr("Make C&one"));
     if (cylinder) {
         m_stepZ->setValue(0.5 * (s.from.z_mm + s.to.z_mm));
         m_stepD->setValue(2.0 * s.from.r_mm - 2.0 * m_cornerSize->value());
@@ -178,6 +183,19 @@ void FeaturePanel::breakCorner(bool atEnd, bool round)
     apply(tolturn::breakCorner(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0),
                                m_cornerSize->value(), round),
           round ? tr("Round corner of %1").arg(m_featureId) : tr("Chamfer corner of %1").arg(m_featureId));
+}
+
+void FeaturePanel::toggleCone()
+{
+    const std::optional<FeatureRef> ref = findFeature(m_document.project().part, m_featureId);
+    if (!ref)
+        return;
+    if (ref->segment->kind == SegmentKind::Cone) {
+        apply(makeCylinder(m_document.project().part, m_featureId), tr("Make %1 a cylinder").arg(m_featureId));
+        return;
+    }
+    // The taper ends at the step diameter field's value (by default one corner size smaller).
+    apply(makeCone(m_document.project().part, m_featureId, m_stepD->value()), tr("Make %1 a cone").arg(m_featureId));
 }
 
 void FeaturePanel::deleteFeature()

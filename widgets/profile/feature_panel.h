@@ -49,6 +49,8 @@ public:
     void insertStep();
     void breakCorner(bool atEnd, bool round);
     void deleteFeature();
+    // A cylinder becomes a cone, a cone of one diameter a cylinder.
+    void toggleCone();
 
 Q_SIGNALS:
     // The feature to select after an edit (a new one, or none after a delete).
@@ -74,6 +76,7 @@ private:
     QPushButton *m_insertStep;
     QDoubleSpinBox *m_cornerSize;
     QPushButton *m_delete;
+    QPushButton *m_cone;
     QLabel *m_message;
 };
 
