@@ -28,6 +28,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -109,7 +110,11 @@ void MainWindow::createDocks()
     addDockWidget(Qt::LeftDockWidgetArea, setup);
     auto *feature = new QDockWidget(tr("Feature"), this);
     feature->setObjectName(QStringLiteral("featureDock"));
-    feature->setWidget(m_feature);
+    auto *featureScroll = new QScrollArea;
+    featureScroll->setWidget(m_feature);
+    featureScroll->setWidgetResizable(true);
+    featureScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    feature->setWidget(featureScroll);
     addDockWidget(Qt::LeftDockWidgetArea, feature);
     tabifyDockWidget(setup, feature);
     setup->raise();

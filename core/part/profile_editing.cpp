@@ -233,6 +233,42 @@ ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId)
     return result;
 }
 
+ProfileEdit addBore(const PartProfile &profile, const QString &endFaceId, double depth_mm, double diameter_mm)
+{
+    const std::vector<Segment> &outer = profile.outer.segments;
+    const bool left = !outer.empty() && outer.front().id == endFaceId;
+    const bool right = !outer.empty() && outer.back().id == endFaceId;
+    if (!left && !right)
+        return tr("a bore starts at an end face of the part; %1 is not one").arg(endFaceId);
+    if (!profile.inner.empty())
+        return tr("the part is bored already; edit its bore instead");
+    const double length = profile.length_mm();
+    const double r = diameter_mm / 2.0;
+    if (!(depth_mm > 0.0) || !(r > 0.0))
+        return tr("a bore needs a depth and a diameter above zero, but they are %1 and %2 mm")
+            .arg(formatNumber(depth_mm), formatNumber(diameter_mm));
+    PartProfile result = profile;
+    std::vector<Segment> &inner = result.inner.segments;
+    const bool through = depth_mm >= length - kProfileEpsilon_mm;
+    const double bottom = left ? std::min(depth_mm, length) : std::max(length - depth_mm, 0.0);
+    if (through) {
+        inner.push_back(makeSegment(QStringLiteral("I1"), tr("bore"), SegmentKind::Cylinder, {0.0, r}, {length, r}));
+    } else if (left) {
+        inner.push_back(makeSegment(QStringLiteral("I1"), tr("bore"), SegmentKind::Cylinder, {0.0, r}, {bottom, r}));
+        inner.push_back(
+            makeSegment(QStringLiteral("I2"), tr("bore bottom"), SegmentKind::Face, {bottom, r}, {bottom, 0.0}));
+    } else {
+        inner.push_back(
+            makeSegment(QStringLiteral("I1"), tr("bore bottom"), SegmentKind::Face, {bottom, 0.0}, {bottom, r}));
+        inner.push_back(makeSegment(QStringLiteral("I2"), tr("bore"), SegmentKind::Cylinder, {bottom, r}, {length, r}));
+    }
+    if (left || through)
+        result.outer.segments.front().from.r_mm = r;
+    if (right || through)
+        result.outer.segments.back().to.r_mm = r;
+    return result;
+}
+
 ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
 {
     const std::optional<FeatureRef> ref = findFeature(profile, featureId);

@@ -41,6 +41,12 @@ using ProfileEdit = std::variant<PartProfile, QString>;
 // Turns a cone into a cylinder at the diameter of its start; what follows it moves with its end.
 [[nodiscard]] ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId);
 
+// Bores a solid part from its end face `endFaceId` (the first or last outer feature): a
+// cylindrical hole of `diameter_mm`, `depth_mm` deep (through when it reaches the other end),
+// with a flat bottom. The end faces then close at the bore.
+[[nodiscard]] ProfileEdit addBore(const PartProfile &profile, const QString &endFaceId, double depth_mm,
+                                  double diameter_mm);
+
 // A feature id not used yet on the contour: "O12", "I4", …
 [[nodiscard]] QString nextFeatureId(const PartProfile &profile, ContourSide side);
 

@@ -145,6 +145,26 @@ private Q_SLOTS:
         QVERIFY(refusal(makeCone(shaft(), QStringLiteral("O3"), 20.0)).contains(QStringLiteral("O3")));
     }
 
+    void boringTheShaft()
+    {
+        // A Ø16 hole 40 mm deep from the right end: its bottom at z 60, the end face O5 now
+        // closes at r 8.
+        const PartProfile blind = edited(addBore(shaft(), QStringLiteral("O5"), 40.0, 16.0));
+        QCOMPARE(blind.inner.segments.size(), std::size_t{2});
+        QCOMPARE(blind.inner.segments[0].kind, SegmentKind::Face);
+        QCOMPARE(blind.inner.segments[0].from, pt(60, 0));
+        QCOMPARE(blind.inner.segments[1].to, pt(100, 8));
+        QCOMPARE(blind.outer.segments.back().to, pt(100, 8));
+        QCOMPARE(blind.outer.segments.front().from, pt(0, 0)); // the left end stays solid
+        // Through from the left: both end faces close at the bore.
+        const PartProfile through = edited(addBore(shaft(), QStringLiteral("O1"), 100.0, 16.0));
+        QCOMPARE(through.inner.segments.size(), std::size_t{1});
+        QCOMPARE(through.outer.segments.front().from, pt(0, 8));
+        QCOMPARE(through.outer.segments.back().to, pt(100, 8));
+        QVERIFY(refusal(addBore(shaft(), QStringLiteral("O3"), 10.0, 16.0)).contains(QStringLiteral("O3")));
+        QVERIFY(!refusal(addBore(blind, QStringLiteral("O1"), 10.0, 10.0)).isEmpty()); // bored already
+    }
+
     void deletingTheShoulderRemovesTheStep()
     {
         const PartProfile p = edited(deleteFeature(shaft(), QStringLiteral("O3")));

@@ -165,6 +165,23 @@ private Q_SLOTS:
         QCOMPARE(feature(w, "O4").kind, SegmentKind::Cylinder);
     }
 
+    void boreFromTheRightEnd()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        w.profileView()->selectFeature(QStringLiteral("O11")); // the right end face
+        w.featurePanel()->boreDepthBox()->setValue(40.0);
+        w.featurePanel()->boreDiameterBox()->setValue(16.0);
+        w.featurePanel()->addBore();
+        QVERIFY2(w.featurePanel()->message().isEmpty(), qPrintable(w.featurePanel()->message()));
+        const PartProfile &p = w.document()->project().part;
+        QCOMPARE(p.inner.segments.size(), std::size_t{2});
+        QCOMPARE(p.inner.segments[0].from, pt(110, 0)); // bottom 40 mm in from z 150
+        QCOMPARE(p.outer.segments.back().to, pt(150, 8));
+        w.document()->undoStack()->undo();
+        QVERIFY(w.document()->project().part.inner.empty());
+    }
+
     void refusalsLeaveThePart()
     {
         MainWindow w;

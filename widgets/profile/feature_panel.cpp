@@ -44,6 +44,9 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     , m_cornerSize(millimetres(tr("Chamfer leg (45°) or radius")))
     , m_delete(new QPushButton(tr("&Delete Feature")))
     , m_cone(new QPushButton(tr("Make C&one")))
+    , m_boreDepth(millimetres(tr("Depth of the bore from this end face; the part's length bores through")))
+    , m_boreD(millimetres(tr("Diameter of the bore")))
+    , m_bore(new QPushButton(tr("&Bore from This Face")))
     , m_message(new QLabel)
 {
     setObjectName(QStringLiteral("featurePanel"));
@@ -67,6 +70,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     layout->addWidget(step);
     layout->addWidget(createCornerRow());
     layout->addWidget(m_cone);
+    layout->addWidget(createBoreGroup());
     layout->addWidget(m_delete);
     layout->addWidget(m_message);
     layout->addStretch(1);
@@ -108,6 +112,17 @@ QWidget *FeaturePanel::createCornerRow()
     return group;
 }
 
+QWidget *FeaturePanel::createBoreGroup()
+{
+    auto *group = new QGroupBox(tr("Bore (solid part, end face)"));
+    auto *form = new QFormLayout(group);
+    form->addRow(tr("Depth:"), m_boreDepth);
+    form->addRow(tr("Ø:"), m_boreD);
+    form->addRow(QString(), m_bore);
+    connect(m_bore, &QPushButton::clicked, this, &FeaturePanel::addBore);
+    return group;
+}
+
 void FeaturePanel::setFeature(const QString &featureId)
 {
     m_featureId = featureId;
@@ -140,6 +155,10 @@ void FeaturePanel::showFeature()
     const bool cylinder = s.kind == SegmentKind::Cylinder;
     m_insertStep->setEnabled(cylinder);
     m_cone->setEnabled(cylinder || s.kind == SegmentKind::Cone);
+    const std::vector<Segment> &outer = m_document.project().part.outer.segments;
+    const bool endFace =
+        ref->side == ContourSide::Outer && (ref->index == 0 || ref->index + 1 == static_cast<int>(outer.size()));
+    m_bore->setEnabled(endFace && m_document.project().part.inner.empty());
     m_cone->setText(s.kind == SegmentKind::Cone ? tr("Make C&ylinder") : tr("Make C&one"));
     if (cylinder) {
         m_stepZ->setValue(0.5 * (s.from.z_mm + s.to.z_mm));
@@ -196,6 +215,12 @@ void FeaturePanel::toggleCone()
     }
     // The taper ends at the step diameter field's value (by default one corner size smaller).
     apply(makeCone(m_document.project().part, m_featureId, m_stepD->value()), tr("Make %1 a cone").arg(m_featureId));
+}
+
+void FeaturePanel::addBore()
+{
+    apply(tolturn::addBore(m_document.project().part, m_featureId, m_boreDepth->value(), m_boreD->value()),
+          tr("Bore from %1").arg(m_featureId));
 }
 
 void FeaturePanel::deleteFeature()

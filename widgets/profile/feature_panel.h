@@ -44,11 +44,17 @@ public:
 
     [[nodiscard]] QDoubleSpinBox *cornerSizeBox() const { return m_cornerSize; }
 
+    [[nodiscard]] QDoubleSpinBox *boreDepthBox() const { return m_boreDepth; }
+
+    [[nodiscard]] QDoubleSpinBox *boreDiameterBox() const { return m_boreD; }
+
     // Moves corner `vertex` of a contour (a drag in the drawing ends here).
     bool moveVertexTo(ContourSide side, int vertex, ProfilePoint to);
     void insertStep();
     void breakCorner(bool atEnd, bool round);
     void deleteFeature();
+    // Bores the solid part from the selected end face.
+    void addBore();
     // A cylinder becomes a cone, a cone of one diameter a cylinder.
     void toggleCone();
 
@@ -58,6 +64,7 @@ Q_SIGNALS:
 
 private:
     QWidget *createCornerRow();
+    QWidget *createBoreGroup();
     void showFeature();
     void moveCorner(bool atEnd);
     // Applies an edit: the new part to the document, or the refusal to the message line.
@@ -77,6 +84,9 @@ private:
     QDoubleSpinBox *m_cornerSize;
     QPushButton *m_delete;
     QPushButton *m_cone;
+    QDoubleSpinBox *m_boreDepth;
+    QDoubleSpinBox *m_boreD;
+    QPushButton *m_bore;
     QLabel *m_message;
 };
 
