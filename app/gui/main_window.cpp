@@ -100,6 +100,15 @@ void MainWindow::createEditMenu()
     redo->setShortcut(QKeySequence::Redo);
     edit->addAction(undo);
     edit->addAction(redo);
+    edit->addSeparator();
+    // The selected feature of the drawing (the Feature dock's Delete, from the keyboard).
+    QAction *deleteFeature = edit->addAction(tr("&Delete Feature"));
+    deleteFeature->setObjectName(QStringLiteral("deleteFeatureAction"));
+    deleteFeature->setShortcut(QKeySequence::Delete);
+    deleteFeature->setEnabled(false);
+    connect(deleteFeature, &QAction::triggered, m_feature, &FeaturePanel::deleteFeature);
+    connect(m_profileView, &ProfileView::featureSelected, deleteFeature,
+            [deleteFeature](const QString &id) { deleteFeature->setEnabled(!id.isEmpty()); });
 }
 
 void MainWindow::createDocks()

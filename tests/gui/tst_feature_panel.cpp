@@ -9,6 +9,7 @@
 #include "widgets/profile/feature_panel.h"
 #include "widgets/profile/profile_view.h"
 
+#include <QAction>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QStandardPaths>
@@ -180,6 +181,21 @@ private Q_SLOTS:
         QCOMPARE(p.outer.segments.back().to, pt(150, 8));
         w.document()->undoStack()->undo();
         QVERIFY(w.document()->project().part.inner.empty());
+    }
+
+    void deleteKeyDeletesTheSelectedFeature()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        auto *action = w.findChild<QAction *>(QStringLiteral("deleteFeatureAction"));
+        QVERIFY(action != nullptr);
+        QCOMPARE(action->shortcut(), QKeySequence(QKeySequence::Delete));
+        QVERIFY(!action->isEnabled());                         // nothing selected
+        w.profileView()->selectFeature(QStringLiteral("O10")); // the end chamfer
+        QVERIFY(action->isEnabled());
+        action->trigger();
+        QVERIFY(!findFeature(w.document()->project().part, QStringLiteral("O10")));
+        QCOMPARE(feature(w, "O9").to, pt(150, 15)); // the sharp corner is back
     }
 
     void refusalsLeaveThePart()
