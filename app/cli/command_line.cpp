@@ -108,6 +108,15 @@ QJsonObject diagnosticJson(const Diagnostic &d)
             {QStringLiteral("message"), d.message}};
 }
 
+// The project file of a command that takes exactly one; empty after printing the usage error.
+QString oneProjectFile(const QCommandLineParser &parser, const QString &command, QTextStream &err)
+{
+    if (parser.positionalArguments().size() == 1)
+        return parser.positionalArguments().constFirst();
+    err << programName() << ' ' << command << ": " << tr("give exactly one project file") << '\n';
+    return {};
+}
+
 // Reads a project for a command, printing its problems as "FILE: severity: field: message".
 std::optional<Project> readProject(const QString &file, QTextStream &err)
 {
@@ -319,10 +328,9 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(1), args, out, err); stop >= 0)
         return stop;
-    if (parser.positionalArguments().size() != 1) {
-        err << programName() << " deflect: " << tr("give exactly one project file") << '\n';
+    const QString file = oneProjectFile(parser, QStringLiteral("deflect"), err);
+    if (file.isEmpty())
         return kExitUsage;
-    }
     DeviationOptions options;
     options.workpieceOnly = parser.isSet(workpieceOnly);
     options.inProcessSection = !parser.isSet(noInProcess);
@@ -352,7 +360,6 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
             return kExitUsage;
         }
     }
-    const QString file = parser.positionalArguments().constFirst();
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
@@ -600,11 +607,9 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(5), args, out, err); stop >= 0)
         return stop;
-    if (parser.positionalArguments().size() != 1) {
-        err << programName() << " evaluate: " << tr("give exactly one project file") << '\n';
+    const QString file = oneProjectFile(parser, QStringLiteral("evaluate"), err);
+    if (file.isEmpty())
         return kExitUsage;
-    }
-    const QString file = parser.positionalArguments().constFirst();
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
@@ -763,11 +768,9 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(6), args, out, err); stop >= 0)
         return stop;
-    if (parser.positionalArguments().size() != 1) {
-        err << programName() << " optimize: " << tr("give exactly one project file") << '\n';
+    const QString file = oneProjectFile(parser, QStringLiteral("optimize"), err);
+    if (file.isEmpty())
         return kExitUsage;
-    }
-    const QString file = parser.positionalArguments().constFirst();
     std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
@@ -879,11 +882,9 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
     parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(8), args, out, err); stop >= 0)
         return stop;
-    if (parser.positionalArguments().size() != 1) {
-        err << programName() << " advise-clamping: " << tr("give exactly one project file") << '\n';
+    const QString file = oneProjectFile(parser, QStringLiteral("advise-clamping"), err);
+    if (file.isEmpty())
         return kExitUsage;
-    }
-    const QString file = parser.positionalArguments().constFirst();
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;

@@ -215,17 +215,24 @@ std::optional<double> machineLimit(const MachineData *m, const char *key)
     return it->second.value;
 }
 
+// The ids of a data library's entries, for the message naming an unknown one.
+template <typename Entries>
+QString libraryIds(const Entries &entries)
+{
+    QStringList ids;
+    for (const auto &entry : entries)
+        ids << entry.id;
+    return ids.join(QStringLiteral(", "));
+}
+
 bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &in, Diagnostics &out,
                      const MaterialData *&material)
 {
     material = data.material(p.materialId);
     if (material == nullptr) {
-        QStringList ids;
-        for (const MaterialData &m : data.materials())
-            ids << m.id;
         out.push_back(makeError(
             QStringLiteral("material"),
-            tr("unknown material \"%1\"; the data library has: %2").arg(p.materialId, ids.join(QStringLiteral(", ")))));
+            tr("unknown material \"%1\"; the data library has: %2").arg(p.materialId, libraryIds(data.materials()))));
         return false;
     }
     if (!material->poissonRatio) {
@@ -341,12 +348,9 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
 
     const MachineData *machine = data.machine(p.machineId);
     if (machine == nullptr) {
-        QStringList ids;
-        for (const MachineData &m : data.machines())
-            ids << m.id;
         out.push_back(makeError(
             QStringLiteral("machine"),
-            tr("unknown machine \"%1\"; the data library has: %2").arg(p.machineId, ids.join(QStringLiteral(", ")))));
+            tr("unknown machine \"%1\"; the data library has: %2").arg(p.machineId, libraryIds(data.machines()))));
         return result;
     }
     in.maxSpindleSpeed_rpm = machineLimit(machine, "max_speed_rpm");
