@@ -37,11 +37,6 @@ struct CommandLine {
     Q_DECLARE_TR_FUNCTIONS(CommandLine)
 };
 
-QString tr(const char *text)
-{
-    return CommandLine::tr(text);
-}
-
 using Handler = std::function<int(const QStringList &, QTextStream &, QTextStream &)>;
 
 struct Command {
@@ -60,14 +55,14 @@ QString programName()
 
 QString usage()
 {
-    QString text = tr("Usage: %1 [--help] [--version] COMMAND [ARGUMENTS]\n\n"
-                      "TolTurn's command-line front end: the same computations as the desktop program, "
-                      "headless, for batch use and regression tests.\n\nCommands:\n")
+    QString text = CommandLine::tr("Usage: %1 [--help] [--version] COMMAND [ARGUMENTS]\n\n"
+                                   "TolTurn's command-line front end: the same computations as the desktop program, "
+                                   "headless, for batch use and regression tests.\n\nCommands:\n")
                        .arg(programName());
     for (const Command &c : commands())
         text += QStringLiteral("  %1\n      %2\n").arg(c.synopsis, c.summary);
-    text += tr("\nRun '%1 COMMAND --help' for the options of a command.\n"
-               "Exit codes: 0 success, 1 the input has errors, 2 wrong command line.\n")
+    text += CommandLine::tr("\nRun '%1 COMMAND --help' for the options of a command.\n"
+                            "Exit codes: 0 success, 1 the input has errors, 2 wrong command line.\n")
                 .arg(programName());
     return text;
 }
@@ -86,14 +81,14 @@ int parseCommand(QCommandLineParser &parser, const Command &command, const QStri
                  QTextStream &err)
 {
     parser.setApplicationDescription(command.summary);
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, tr("Show this help."));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, CommandLine::tr("Show this help."));
     parser.addOption(help);
     if (!parser.parse(args)) {
         err << programName() << ' ' << command.name << ": " << parser.errorText() << '\n';
         return kExitUsage;
     }
     if (parser.isSet(help)) {
-        out << tr("Usage: %1 %2").arg(programName(), command.synopsis) << "\n\n"
+        out << CommandLine::tr("Usage: %1 %2").arg(programName(), command.synopsis) << "\n\n"
             << parser.helpText().section(QLatin1Char('\n'), 2);
         return kExitOk;
     }
@@ -113,7 +108,7 @@ QString oneProjectFile(const QCommandLineParser &parser, const QString &command,
 {
     if (parser.positionalArguments().size() == 1)
         return parser.positionalArguments().constFirst();
-    err << programName() << ' ' << command << ": " << tr("give exactly one project file") << '\n';
+    err << programName() << ' ' << command << ": " << CommandLine::tr("give exactly one project file") << '\n';
     return {};
 }
 
@@ -128,7 +123,7 @@ std::optional<Project> readProject(const QString &file, QTextStream &err)
 
 QString projectSummary(const Project &p)
 {
-    return tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances")
+    return CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances")
         .arg(p.part.name)
         .arg(p.part.length_mm())
         .arg(p.part.outer.segments.size())
@@ -141,15 +136,16 @@ QString projectSummary(const Project &p)
 int runCheck(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the findings as JSON on standard output."));
+    const QCommandLineOption json(QStringLiteral("json"),
+                                  CommandLine::tr("Print the findings as JSON on standard output."));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project files to check."),
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project files to check."),
                                  QStringLiteral("PROJECT..."));
     if (const int stop = parseCommand(parser, commands().at(0), args, out, err); stop >= 0)
         return stop;
     const QStringList files = parser.positionalArguments();
     if (files.isEmpty()) {
-        err << programName() << " check: " << tr("no project file given") << '\n';
+        err << programName() << " check: " << CommandLine::tr("no project file given") << '\n';
         return kExitUsage;
     }
     bool anyErrors = false;
@@ -170,7 +166,7 @@ int runCheck(const QStringList &args, QTextStream &out, QTextStream &err)
         for (const Diagnostic &d : result.diagnostics)
             err << file << ": " << d.toString() << '\n';
         if (valid)
-            out << file << ": " << tr("ok") << " — " << projectSummary(*result.project) << '\n';
+            out << file << ": " << CommandLine::tr("ok") << " — " << projectSummary(*result.project) << '\n';
     }
     if (parser.isSet(json))
         out << QJsonDocument(reports).toJson(QJsonDocument::Indented);
@@ -253,11 +249,11 @@ QJsonObject deviationJson(const QString &file, const Project &project, const Dev
 void printDeviationText(QTextStream &out, const DeviationResult &r)
 {
     const TurningInputs &in = *r.inputs;
-    out << tr("Forces (%1): Fc = %2 N tangential, Ff = %3 N axial, Fp = %4 N radial")
+    out << CommandLine::tr("Forces (%1): Fc = %2 N tangential, Ff = %3 N axial, Fp = %4 N radial")
                .arg(in.forceModel, QString::number(in.forces.tangential_N, 'f', 1),
                     QString::number(in.forces.axial_N, 'f', 1), QString::number(in.forces.radial_N, 'f', 1))
         << '\n';
-    out << tr("Pass %1 (%2): vc %3 m/min, f %4 mm/rev, ap %5 mm; Ra %6 µm, Rz %7 µm; max %8 kW, %9 N·m")
+    out << CommandLine::tr("Pass %1 (%2): vc %3 m/min, f %4 mm/rev, ap %5 mm; Ra %6 µm, Rz %7 µm; max %8 kW, %9 N·m")
                .arg(in.passIndex)
                .arg(keyword(in.pass.kind), formatNumber(in.pass.cuttingSpeed_m_min), formatNumber(in.pass.feed_mm_rev),
                     formatNumber(in.pass.depthOfCut_mm), QString::number(r.theoreticalRa_um, 'f', 2),
@@ -265,8 +261,9 @@ void printDeviationText(QTextStream &out, const DeviationResult &r)
                     QString::number(r.maxTorque_Nm, 'f', 1))
         << '\n';
     for (const QString &note : in.notes)
-        out << tr("note: ") << note << '\n';
-    out << tr("feature  side   z from–to [mm]    radial deviation [µm] min … max   diameter error [µm] min … max")
+        out << CommandLine::tr("note: ") << note << '\n';
+    out << CommandLine::tr(
+               "feature  side   z from–to [mm]    radial deviation [µm] min … max   diameter error [µm] min … max")
         << '\n';
     for (const FeatureDeviation &f : r.features) {
         double rMin = 1e300, rMax = -1e300, dMin = 1e300, dMax = -1e300;
@@ -288,7 +285,7 @@ void printDeviationText(QTextStream &out, const DeviationResult &r)
             << '\n';
     }
     for (const FaceConicity &f : r.faces)
-        out << tr("face %1 at z = %2 mm: tan(theta) = %3, axial run-out e = %4 µm")
+        out << CommandLine::tr("face %1 at z = %2 mm: tan(theta) = %3, axial run-out e = %4 µm")
                    .arg(f.featureId, formatNumber(f.z_mm), QString::number(f.tanTheta, 'g', 4),
                         QString::number(f.axialRunout_mm * kUmPerMm, 'f', 3))
             << '\n';
@@ -312,20 +309,25 @@ std::optional<CuttingForces> parseLoad(const QString &text)
 int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the result as JSON."));
-    const QCommandLineOption load(QStringLiteral("load"),
-                                  tr("Use these forces [N] instead of the force model: radial, tangential, axial."),
-                                  QStringLiteral("Fr,Ft,Fa"));
-    const QCommandLineOption workpieceOnly(QStringLiteral("workpiece-only"),
-                                           tr("Rigid machine supports, no toolpost or thermal term: the beam alone."));
-    const QCommandLineOption stations(QStringLiteral("stations"), tr("Tool positions per turned feature (default 21)."),
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the result as JSON."));
+    const QCommandLineOption load(
+        QStringLiteral("load"),
+        CommandLine::tr("Use these forces [N] instead of the force model: radial, tangential, axial."),
+        QStringLiteral("Fr,Ft,Fa"));
+    const QCommandLineOption workpieceOnly(
+        QStringLiteral("workpiece-only"),
+        CommandLine::tr("Rigid machine supports, no toolpost or thermal term: the beam alone."));
+    const QCommandLineOption stations(QStringLiteral("stations"),
+                                      CommandLine::tr("Tool positions per turned feature (default 21)."),
                                       QStringLiteral("N"), QStringLiteral("21"));
-    const QCommandLineOption pass(QStringLiteral("pass"), tr("Index of the pass (default: the last finishing pass)."),
+    const QCommandLineOption pass(QStringLiteral("pass"),
+                                  CommandLine::tr("Index of the pass (default: the last finishing pass)."),
                                   QStringLiteral("N"));
     const QCommandLineOption noInProcess(QStringLiteral("no-in-process"),
-                                         tr("Ignore the stock still on the uncut side of the tool."));
+                                         CommandLine::tr("Ignore the stock still on the uncut side of the tool."));
     parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess});
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(1), args, out, err); stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("deflect"), err);
@@ -338,15 +340,16 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     options.stationsPerFeature = parser.value(stations).toInt(&ok);
     if (!ok || options.stationsPerFeature < 2 || options.stationsPerFeature > 100000) {
         err << programName() << " deflect: "
-            << tr("--stations must be a whole number from 2 to 100000, not \"%1\"").arg(parser.value(stations)) << '\n';
+            << CommandLine::tr("--stations must be a whole number from 2 to 100000, not \"%1\"")
+                   .arg(parser.value(stations))
+            << '\n';
         return kExitUsage;
     }
     if (parser.isSet(pass)) {
         options.passIndex = parser.value(pass).toInt(&ok);
         if (!ok || options.passIndex < 0) {
-            err << programName()
-                << " deflect: " << tr("--pass must be a pass index (0, 1, …), not \"%1\"").arg(parser.value(pass))
-                << '\n';
+            err << programName() << " deflect: "
+                << CommandLine::tr("--pass must be a pass index (0, 1, …), not \"%1\"").arg(parser.value(pass)) << '\n';
             return kExitUsage;
         }
     }
@@ -354,7 +357,8 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
         options.loadOverride = parseLoad(parser.value(load));
         if (!options.loadOverride) {
             err << programName() << " deflect: "
-                << tr("--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), not \"%1\"")
+                << CommandLine::tr(
+                       "--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), not \"%1\"")
                        .arg(parser.value(load))
                 << '\n';
             return kExitUsage;
@@ -380,13 +384,13 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
 void printCalibration(QTextStream &out, const LiDuCalibration &cal, const LiDuToolGeometry &tool,
                       const std::vector<ForceMeasurement> &cuts)
 {
-    out << tr("K_n = %1 N/mm², K_f = %2 (Li & Du eq. 15), RMS residual %3 N over %4 cuts")
+    out << CommandLine::tr("K_n = %1 N/mm², K_f = %2 (Li & Du eq. 15), RMS residual %3 N over %4 cuts")
                .arg(QString::number(cal.coefficients->normalPressure_MPa, 'f', 1),
                     QString::number(cal.coefficients->frictionRatio, 'f', 4),
                     QString::number(cal.rmsResidual_N, 'f', 2))
                .arg(cuts.size())
         << '\n';
-    out << tr("   f [mm/rev]  d [mm]   Ft meas   Ft model   Fa meas   Fa model   Fr model [N]") << '\n';
+    out << CommandLine::tr("   f [mm/rev]  d [mm]   Ft meas   Ft model   Fa meas   Fa model   Fr model [N]") << '\n';
     for (const ForceMeasurement &m : cuts) {
         const CuttingForces f = liDuForces(*cal.coefficients, tool, m.feed_mm_rev, m.depthOfCut_mm).forces;
         out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7")
@@ -404,19 +408,22 @@ void printCalibration(QTextStream &out, const LiDuCalibration &cal, const LiDuTo
 int runCalibrateForces(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the result as JSON."));
-    const QCommandLineOption write(QStringLiteral("write"),
-                                   tr("Store K_n and K_f in the project (force model li_du) and save it."));
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the result as JSON."));
+    const QCommandLineOption write(
+        QStringLiteral("write"), CommandLine::tr("Store K_n and K_f in the project (force model li_du) and save it."));
     parser.addOptions({json, write});
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file (its tool gives the geometry)."),
+    parser.addPositionalArgument(QStringLiteral("project"),
+                                 CommandLine::tr("Project file (its tool gives the geometry)."),
                                  QStringLiteral("PROJECT"));
-    parser.addPositionalArgument(QStringLiteral("measurements"),
-                                 tr("CSV of measured cuts: feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N."),
-                                 QStringLiteral("MEASUREMENTS.csv"));
+    parser.addPositionalArgument(
+        QStringLiteral("measurements"),
+        CommandLine::tr("CSV of measured cuts: feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N."),
+        QStringLiteral("MEASUREMENTS.csv"));
     if (const int stop = parseCommand(parser, commands().at(2), args, out, err); stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 2) {
-        err << programName() << " calibrate-forces: " << tr("give a project file and a measurements file") << '\n';
+        err << programName() << " calibrate-forces: " << CommandLine::tr("give a project file and a measurements file")
+            << '\n';
         return kExitUsage;
     }
     const QString projectPath = parser.positionalArguments().at(0);
@@ -461,7 +468,7 @@ int runCalibrateForces(const QStringList &args, QTextStream &out, QTextStream &e
             err << w.error << '\n';
             return kExitProblems;
         }
-        err << tr("wrote %1: force model li_du").arg(projectPath) << '\n';
+        err << CommandLine::tr("wrote %1: force model li_du").arg(projectPath) << '\n';
     }
     return kExitOk;
 }
@@ -497,7 +504,7 @@ std::optional<double> nominalArgument(const QString &text, const QString &comman
     const double v = QString(text).replace(QLatin1Char(','), QLatin1Char('.')).toDouble(&ok);
     if (!ok || !std::isfinite(v)) {
         err << programName() << ' ' << command << ": "
-            << tr("the nominal size must be a number in mm, not \"%1\"").arg(text) << '\n';
+            << CommandLine::tr("the nominal size must be a number in mm, not \"%1\"").arg(text) << '\n';
         return std::nullopt;
     }
     return v;
@@ -506,15 +513,17 @@ std::optional<double> nominalArgument(const QString &text, const QString &comman
 int runIso286(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the limits as JSON."));
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the limits as JSON."));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("nominal"), tr("Nominal size [mm]."), QStringLiteral("NOMINAL"));
-    parser.addPositionalArgument(QStringLiteral("class"), tr("Tolerance class, e.g. H7, g6, js12."),
+    parser.addPositionalArgument(QStringLiteral("nominal"), CommandLine::tr("Nominal size [mm]."),
+                                 QStringLiteral("NOMINAL"));
+    parser.addPositionalArgument(QStringLiteral("class"), CommandLine::tr("Tolerance class, e.g. H7, g6, js12."),
                                  QStringLiteral("CLASS"));
     if (const int stop = parseCommand(parser, commands().at(3), args, out, err); stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 2) {
-        err << programName() << " iso286: " << tr("give a nominal size and a tolerance class, e.g. 50 H7") << '\n';
+        err << programName() << " iso286: " << CommandLine::tr("give a nominal size and a tolerance class, e.g. 50 H7")
+            << '\n';
         return kExitUsage;
     }
     const auto nominal = nominalArgument(parser.positionalArguments().at(0), QStringLiteral("iso286"), err);
@@ -527,7 +536,7 @@ int runIso286(const QStringList &args, QTextStream &out, QTextStream &err)
     if (parser.isSet(json))
         out << QJsonDocument(classLimitsJson(*r.limits)).toJson(QJsonDocument::Indented);
     else
-        out << tr("%1 %2: upper %3 µm, lower %4 µm (%5 = %6 µm)")
+        out << CommandLine::tr("%1 %2: upper %3 µm, lower %4 µm (%5 = %6 µm)")
                    .arg(formatNumber(*nominal), r.limits->toleranceClass, signedUm(r.limits->upper_um),
                         signedUm(r.limits->lower_um), r.limits->itName, formatNumber(r.limits->it_um))
             << '\n';
@@ -537,17 +546,18 @@ int runIso286(const QStringList &args, QTextStream &out, QTextStream &err)
 int runFit(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the fit as JSON."));
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the fit as JSON."));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("nominal"), tr("Nominal size [mm]."), QStringLiteral("NOMINAL"));
-    parser.addPositionalArgument(QStringLiteral("fit"), tr("Hole and shaft class, e.g. H7/g6."),
+    parser.addPositionalArgument(QStringLiteral("nominal"), CommandLine::tr("Nominal size [mm]."),
+                                 QStringLiteral("NOMINAL"));
+    parser.addPositionalArgument(QStringLiteral("fit"), CommandLine::tr("Hole and shaft class, e.g. H7/g6."),
                                  QStringLiteral("HOLE/SHAFT"));
     if (const int stop = parseCommand(parser, commands().at(4), args, out, err); stop >= 0)
         return stop;
     const QStringList positional = parser.positionalArguments();
     const QStringList classes = positional.value(1).split(QLatin1Char('/'));
     if (positional.size() != 2 || classes.size() != 2) {
-        err << programName() << " fit: " << tr("give a nominal size and a fit, e.g. 50 H7/g6") << '\n';
+        err << programName() << " fit: " << CommandLine::tr("give a nominal size and a fit, e.g. 50 H7/g6") << '\n';
         return kExitUsage;
     }
     const auto nominal = nominalArgument(positional.at(0), QStringLiteral("fit"), err);
@@ -567,8 +577,9 @@ int runFit(const QStringList &args, QTextStream &out, QTextStream &err)
                                          {QStringLiteral("min_clearance_um"), f.minClearance_um}})
                    .toJson(QJsonDocument::Indented);
     } else {
-        out << tr("%1 %2/%3: %4 fit; hole %5/%6 µm, shaft %7/%8 µm; clearance max %9 µm, min %10 µm (negative: "
-                  "interference)")
+        out << CommandLine::tr(
+                   "%1 %2/%3: %4 fit; hole %5/%6 µm, shaft %7/%8 µm; clearance max %9 µm, min %10 µm (negative: "
+                   "interference)")
                    .arg(formatNumber(*nominal), f.hole.toleranceClass, f.shaft.toleranceClass,
                         iso286::fitTypeName(f.type), signedUm(f.hole.upper_um), signedUm(f.hole.lower_um),
                         signedUm(f.shaft.upper_um), signedUm(f.shaft.lower_um))
@@ -602,9 +613,10 @@ QJsonObject evaluationJson(const ToleranceEvaluation &e)
 int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the verdicts as JSON."));
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the verdicts as JSON."));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(5), args, out, err); stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("evaluate"), err);
@@ -629,7 +641,8 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
                    .toJson(QJsonDocument::Indented);
         return kExitOk;
     }
-    out << tr("tolerance  type                    feature  value [µm]  limit [µm]  use [%]  verdict") << '\n';
+    out << CommandLine::tr("tolerance  type                    feature  value [µm]  limit [µm]  use [%]  verdict")
+        << '\n';
     for (const ToleranceEvaluation &e : verdicts) {
         const auto number = [](const std::optional<double> &v, int width, int decimals) {
             return v ? QStringLiteral("%1").arg(*v, width, 'f', decimals)
@@ -712,31 +725,31 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
 {
     const CandidateEvaluation &e = r.evaluation;
     const PassConditions rough = roughingOf(r, problem);
-    out << (r.feasible ? tr("Optimum (%1)").arg(keyword(problem.project().planning.objective))
-                       : tr("No plan meets every constraint; the one that violates them least"))
+    out << (r.feasible ? CommandLine::tr("Optimum (%1)").arg(keyword(problem.project().planning.objective))
+                       : CommandLine::tr("No plan meets every constraint; the one that violates them least"))
         << '\n';
-    out << tr("  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part")
+    out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part")
                .arg(QString::number(e.time_min, 'f', 3), QString::number(e.finishingTime_min, 'f', 3),
                     QString::number(e.roughingTime_min, 'f', 3), QString::number(e.cost, 'f', 2),
                     QString::number(e.toolEdgesPerPart, 'f', 3))
         << '\n';
-    out << tr("  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
+    out << CommandLine::tr("  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
                .arg(QString::number(r.candidate.finishing.cuttingSpeed_m_min, 'f', 1),
                     QString::number(r.candidate.finishing.feed_mm_rev, 'f', 3),
                     QString::number(r.candidate.finishing.depthOfCut_mm, 'f', 3))
         << '\n';
     if (r.candidate.roughingPasses > 0)
-        out << tr("  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev")
+        out << CommandLine::tr("  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev")
                    .arg(r.candidate.roughingPasses)
                    .arg(QString::number(rough.depthOfCut_mm, 'f', 3), QString::number(rough.cuttingSpeed_m_min, 'f', 1),
                         QString::number(rough.feed_mm_rev, 'f', 3))
             << '\n';
     for (const ConstraintValue &c : r.binding)
-        out << tr("  binding: ") << constraintText(c) << '\n';
+        out << CommandLine::tr("  binding: ") << constraintText(c) << '\n';
     for (const ConstraintValue &c : r.conflicts)
-        out << tr("  violated: ") << constraintText(c) << '\n';
+        out << CommandLine::tr("  violated: ") << constraintText(c) << '\n';
     for (const QString &note : r.notes)
-        out << tr("note: ") << note << '\n';
+        out << CommandLine::tr("note: ") << note << '\n';
 }
 
 // Loads a project and builds its planning problem; prints problems and returns null on failure.
@@ -759,13 +772,16 @@ std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, 
 int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the plan as JSON."));
-    const QCommandLineOption objective(QStringLiteral("objective"), tr("time or cost (default: the project's)."),
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the plan as JSON."));
+    const QCommandLineOption objective(QStringLiteral("objective"),
+                                       CommandLine::tr("time or cost (default: the project's)."),
                                        QStringLiteral("OBJECTIVE"));
-    const QCommandLineOption write(QStringLiteral("write"),
-                                   tr("Store the optimal passes in the project (replacing its passes) and save it."));
+    const QCommandLineOption write(
+        QStringLiteral("write"),
+        CommandLine::tr("Store the optimal passes in the project (replacing its passes) and save it."));
     parser.addOptions({json, objective, write});
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(6), args, out, err); stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("optimize"), err);
@@ -777,8 +793,8 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     if (parser.isSet(objective)) {
         const auto chosen = fromKeyword<PlanningObjective>(parser.value(objective));
         if (!chosen) {
-            err << programName()
-                << " optimize: " << tr("--objective is time or cost, not \"%1\"").arg(parser.value(objective)) << '\n';
+            err << programName() << " optimize: "
+                << CommandLine::tr("--objective is time or cost, not \"%1\"").arg(parser.value(objective)) << '\n';
             return kExitUsage;
         }
         project->planning.objective = *chosen;
@@ -810,7 +826,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
             err << w.error << '\n';
             return kExitProblems;
         }
-        err << tr("wrote %1: %2 passes").arg(file).arg(project->passes.size()) << '\n';
+        err << CommandLine::tr("wrote %1: %2 passes").arg(file).arg(project->passes.size()) << '\n';
     }
     return kExitOk;
 }
@@ -818,13 +834,14 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
 int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption plane(QStringLiteral("plane"), tr("feed-speed (default) or feed-depth."),
+    const QCommandLineOption plane(QStringLiteral("plane"), CommandLine::tr("feed-speed (default) or feed-depth."),
                                    QStringLiteral("PLANE"), QStringLiteral("feed-speed"));
-    const QCommandLineOption csv(QStringLiteral("csv"), tr("Print every grid point as CSV."));
-    const QCommandLineOption size(QStringLiteral("size"), tr("Points along each axis (default 256)."),
+    const QCommandLineOption csv(QStringLiteral("csv"), CommandLine::tr("Print every grid point as CSV."));
+    const QCommandLineOption size(QStringLiteral("size"), CommandLine::tr("Points along each axis (default 256)."),
                                   QStringLiteral("N"), QStringLiteral("256"));
     parser.addOptions({plane, csv, size});
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(7), args, out, err); stop >= 0)
         return stop;
     bool ok = false;
@@ -832,8 +849,8 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
     const QString planeName = parser.value(plane);
     if (parser.positionalArguments().size() != 1 || !ok || n < 2 || n > 4096 ||
         (planeName != QLatin1String("feed-speed") && planeName != QLatin1String("feed-depth"))) {
-        err << programName()
-            << " window: " << tr("give one project file, --plane feed-speed or feed-depth, --size from 2 to 4096")
+        err << programName() << " window: "
+            << CommandLine::tr("give one project file, --plane feed-speed or feed-depth, --size from 2 to 4096")
             << '\n';
         return kExitUsage;
     }
@@ -860,7 +877,7 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
     int feasible = 0;
     for (const WindowCell &c : w.cells)
         feasible += c.feasible ? 1 : 0;
-    out << tr("%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6")
+    out << CommandLine::tr("%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6")
                .arg(w.columns)
                .arg(w.rows)
                .arg(QString::number(100.0 * feasible / static_cast<double>(w.cells.size()), 'f', 1),
@@ -870,16 +887,17 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
                                     'f', 3))
         << '\n';
     for (const auto &[label, cells] : w.boundaries())
-        out << tr("  bounded by %1 (%2 points beyond it)").arg(label).arg(cells) << '\n';
+        out << CommandLine::tr("  bounded by %1 (%2 points beyond it)").arg(label).arg(cells) << '\n';
     return kExitOk;
 }
 
 int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print the ranking as JSON."));
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the ranking as JSON."));
     parser.addOption(json);
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(8), args, out, err); stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("advise-clamping"), err);
@@ -918,16 +936,18 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
 int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, tr("File to write."),
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, CommandLine::tr("File to write."),
                                     QStringLiteral("FILE"));
-    const QCommandLineOption compensated(QStringLiteral("compensated"),
-                                         tr("Correct the path where a tolerance needs it (offset or profile)."));
+    const QCommandLineOption compensated(
+        QStringLiteral("compensated"),
+        CommandLine::tr("Correct the path where a tolerance needs it (offset or profile)."));
     parser.addOptions({output, compensated});
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(9), args, out, err); stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
-        err << programName() << " gcode: " << tr("give one project file and -o FILE") << '\n';
+        err << programName() << " gcode: " << CommandLine::tr("give one project file and -o FILE") << '\n';
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
@@ -948,12 +968,12 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     const QString program = finishingProgram(*project, options);
     QSaveFile target(parser.value(output));
     if (!target.open(QIODevice::WriteOnly) || target.write(program.toUtf8()) < 0 || !target.commit()) {
-        err << tr("cannot write '%1': %2").arg(parser.value(output), target.errorString()) << '\n';
+        err << CommandLine::tr("cannot write '%1': %2").arg(parser.value(output), target.errorString()) << '\n';
         return kExitProblems;
     }
     for (const FeatureCompensation &f : plan.features) {
         if (f.action != CompensationAction::None || !f.note.isEmpty())
-            err << tr("%1: %2, residual %3 -> %4 µm %5")
+            err << CommandLine::tr("%1: %2, residual %3 -> %4 µm %5")
                        .arg(f.featureId, compensationKeyword(f.action), QString::number(f.residualBefore_um, 'f', 3),
                             QString::number(f.residualAfter_um, 'f', 3), f.note)
                 << '\n';
@@ -964,14 +984,15 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
 int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, tr("PDF file to write."),
-                                    QStringLiteral("FILE"));
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    CommandLine::tr("PDF file to write."), QStringLiteral("FILE"));
     parser.addOption(output);
-    parser.addPositionalArgument(QStringLiteral("project"), tr("Project file."), QStringLiteral("PROJECT"));
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commands().at(10), args, out, err); stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
-        err << programName() << " report: " << tr("give one project file and -o FILE.pdf") << '\n';
+        err << programName() << " report: " << CommandLine::tr("give one project file and -o FILE.pdf") << '\n';
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
@@ -983,7 +1004,7 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         err << programName() << " report: " << written.error << '\n';
         return kExitProblems;
     }
-    out << tr("%1: %2 pages").arg(parser.value(output)).arg(written.pages) << '\n';
+    out << CommandLine::tr("%1: %2 pages").arg(parser.value(output)).arg(written.pages) << '\n';
     return kExitOk;
 }
 
@@ -991,43 +1012,51 @@ const std::vector<Command> &commands()
 {
     static const std::vector<Command> list{
         {QStringLiteral("check"), QStringLiteral("check [--json] PROJECT..."),
-         tr("Validate project files: report every problem with the field and value; exit 1 on errors."), runCheck},
+         CommandLine::tr("Validate project files: report every problem with the field and value; exit 1 on errors."),
+         runCheck},
         {QStringLiteral("deflect"),
          QStringLiteral("deflect [--json] [--load Fr,Ft,Fa] [--workpiece-only] [--stations N] [--pass N] PROJECT"),
-         tr("Predict the deviation at each tool position along every turned feature: radial and tangential, total "
-            "and per contribution (spindle–chuck, toolpost, workpiece, thermal), with the forces used."),
+         CommandLine::tr(
+             "Predict the deviation at each tool position along every turned feature: radial and tangential, total "
+             "and per contribution (spindle–chuck, toolpost, workpiece, thermal), with the forces used."),
          runDeflect},
         {QStringLiteral("calibrate-forces"),
          QStringLiteral("calibrate-forces [--json] [--write] PROJECT MEASUREMENTS.csv"),
-         tr("Fit the Li & Du coefficients K_n and K_f to measured tangential and axial forces (eq. 17–18) for the "
-            "project's tool; --write stores them in the project."),
+         CommandLine::tr(
+             "Fit the Li & Du coefficients K_n and K_f to measured tangential and axial forces (eq. 17–18) for the "
+             "project's tool; --write stores them in the project."),
          runCalibrateForces},
         {QStringLiteral("iso286"), QStringLiteral("iso286 [--json] NOMINAL CLASS"),
-         tr("ISO 286 limits of a tolerance class at a nominal size, e.g. 'iso286 50 H7'."), runIso286},
+         CommandLine::tr("ISO 286 limits of a tolerance class at a nominal size, e.g. 'iso286 50 H7'."), runIso286},
         {QStringLiteral("fit"), QStringLiteral("fit [--json] NOMINAL HOLE/SHAFT"),
-         tr("ISO 286 fit of a hole and a shaft class, e.g. 'fit 50 H7/g6': type and clearances."), runFit},
+         CommandLine::tr("ISO 286 fit of a hole and a shaft class, e.g. 'fit 50 H7/g6': type and clearances."), runFit},
         {QStringLiteral("evaluate"), QStringLiteral("evaluate [--json] PROJECT"),
-         tr("Every tolerance of the project against the predicted deviation: value, limit, utilisation, the "
-            "deciding condition of Valiño et al. Fig. 4, and the verdict."),
+         CommandLine::tr(
+             "Every tolerance of the project against the predicted deviation: value, limit, utilisation, the "
+             "deciding condition of Valiño et al. Fig. 4, and the verdict."),
          runEvaluate},
         {QStringLiteral("optimize"), QStringLiteral("optimize [--json] [--objective time|cost] [--write] PROJECT"),
-         tr("Cutting conditions of the finishing and roughing passes at least time or cost per part under every "
-            "constraint (tolerances, roughness, power, torque, force, spindle speed, tool life)."),
+         CommandLine::tr(
+             "Cutting conditions of the finishing and roughing passes at least time or cost per part under every "
+             "constraint (tolerances, roughness, power, torque, force, spindle speed, tool life)."),
          runOptimize},
         {QStringLiteral("window"), QStringLiteral("window [--plane feed-speed|feed-depth] [--csv] [--size N] PROJECT"),
-         tr("The cutting window of the finishing pass around the optimum: per grid point the objective, whether "
-            "it is feasible and the constraint that bounds it."),
+         CommandLine::tr(
+             "The cutting window of the finishing pass around the optimum: per grid point the objective, whether "
+             "it is feasible and the constraint that bounds it."),
          runWindow},
         {QStringLiteral("advise-clamping"), QStringLiteral("advise-clamping [--json] PROJECT"),
-         tr("The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason."),
+         CommandLine::tr("The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason."),
          runAdviseClamping},
         {QStringLiteral("gcode"), QStringLiteral("gcode [--compensated] -o FILE PROJECT"),
-         tr("The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a "
-            "tolerance needs it."),
+         CommandLine::tr(
+             "The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a "
+             "tolerance needs it."),
          runGCode},
         {QStringLiteral("report"), QStringLiteral("report -o FILE.pdf PROJECT"),
-         tr("The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, "
-            "clamping ranking, compensation, assumptions and sources."),
+         CommandLine::tr(
+             "The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, "
+             "clamping ranking, compensation, assumptions and sources."),
          runReport},
     };
     return list;
@@ -1055,7 +1084,9 @@ int runCommandLine(const QStringList &arguments, QTextStream &out, QTextStream &
         if (c.name == first)
             return c.run(QStringList{programName() + QLatin1Char(' ') + c.name} + args.mid(1), out, err);
     }
-    err << tr("%1: unknown command '%2'. Run '%1 --help' for the list of commands.").arg(programName(), first) << '\n';
+    err << CommandLine::tr("%1: unknown command '%2'. Run '%1 --help' for the list of commands.")
+               .arg(programName(), first)
+        << '\n';
     return kExitUsage;
 }
 

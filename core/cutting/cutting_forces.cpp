@@ -15,11 +15,6 @@ struct CuttingModels {
     Q_DECLARE_TR_FUNCTIONS(CuttingModels)
 };
 
-QString tr(const char *text)
-{
-    return CuttingModels::tr(text);
-}
-
 QString num(double v)
 {
     return formatNumber(v);
@@ -42,8 +37,9 @@ void checkRange(Diagnostics &warnings, const QString &field, const QString &what
     // holder sits exactly on gamma_L = -5°.
     if (value >= lo && value <= hi)
         return;
-    warnings.push_back(makeWarning(field, tr("%1 = %2 is outside the range %3 < %1 < %4 in which %5 is stated to hold")
-                                              .arg(what, num(value), num(lo), num(hi), model)));
+    warnings.push_back(
+        makeWarning(field, CuttingModels::tr("%1 = %2 is outside the range %3 < %1 < %4 in which %5 is stated to hold")
+                               .arg(what, num(value), num(lo), num(hi), model)));
 }
 
 struct LiDuFactors {
@@ -79,8 +75,9 @@ ForceResult kienzleForces(const KienzleConstants &constants, double feed_mm_rev,
     if (k.validChipThicknessMax_mm > 0.0 && (h < k.validChipThicknessMin_mm || h > k.validChipThicknessMax_mm))
         r.warnings.push_back(makeWarning(
             QStringLiteral("feed_mm_rev"),
-            tr("chip thickness h = f sin(kappa_r) = %1 mm is outside the range %2–%3 mm over which the Kienzle "
-               "constants of this material were measured")
+            CuttingModels::tr(
+                "chip thickness h = f sin(kappa_r) = %1 mm is outside the range %2–%3 mm over which the Kienzle "
+                "constants of this material were measured")
                 .arg(num(h), num(k.validChipThicknessMin_mm), num(k.validChipThicknessMax_mm))));
     return r;
 }
@@ -98,19 +95,21 @@ double liDuEffectiveLeadAngle_rad(const LiDuToolGeometry &tool, double feed_mm_r
                                   Diagnostics *warnings)
 {
     if (warnings != nullptr) {
-        const QString model = tr("eq. 20 of Li & Du (2002)");
-        checkRange(*warnings, QStringLiteral("tool.lead_angle"), tr("lead angle [°]"), degrees(tool.leadAngle_rad),
-                   -5.0, 45.0, model);
-        checkRange(*warnings, QStringLiteral("depth_of_cut_mm"), tr("depth of cut [mm]"), depthOfCut_mm, 0.5, 5.0,
+        const QString model = CuttingModels::tr("eq. 20 of Li & Du (2002)");
+        checkRange(*warnings, QStringLiteral("tool.lead_angle"), CuttingModels::tr("lead angle [°]"),
+                   degrees(tool.leadAngle_rad), -5.0, 45.0, model);
+        checkRange(*warnings, QStringLiteral("depth_of_cut_mm"), CuttingModels::tr("depth of cut [mm]"), depthOfCut_mm,
+                   0.5, 5.0, model);
+        checkRange(*warnings, QStringLiteral("feed_mm_rev"), CuttingModels::tr("feed [mm/rev]"), feed_mm_rev, 0.1, 1.0,
                    model);
-        checkRange(*warnings, QStringLiteral("feed_mm_rev"), tr("feed [mm/rev]"), feed_mm_rev, 0.1, 1.0, model);
-        checkRange(*warnings, QStringLiteral("tool.nose_radius_mm"), tr("nose radius [mm]"), tool.noseRadius_mm, 0.4,
-                   4.4, model);
+        checkRange(*warnings, QStringLiteral("tool.nose_radius_mm"), CuttingModels::tr("nose radius [mm]"),
+                   tool.noseRadius_mm, 0.4, 4.4, model);
         if (!(tool.noseRadius_mm > feed_mm_rev))
-            warnings->push_back(makeWarning(QStringLiteral("feed_mm_rev"),
-                                            tr("eq. 20 of Li & Du (2002) needs a nose radius larger than the feed, "
-                                               "but r_n = %1 mm and f = %2 mm/rev")
-                                                .arg(num(tool.noseRadius_mm), num(feed_mm_rev))));
+            warnings->push_back(
+                makeWarning(QStringLiteral("feed_mm_rev"),
+                            CuttingModels::tr("eq. 20 of Li & Du (2002) needs a nose radius larger than the feed, "
+                                              "but r_n = %1 mm and f = %2 mm/rev")
+                                .arg(num(tool.noseRadius_mm), num(feed_mm_rev))));
     }
     // tan(gamma_Le) = 0.5053 tan(gamma_L) + 1.0473 f / r_n + 0.4654 r_n / d   (eq. 20)
     const double t = 0.5053 * std::tan(tool.leadAngle_rad) + 1.0473 * feed_mm_rev / tool.noseRadius_mm +
@@ -137,7 +136,8 @@ LiDuCalibration calibrateLiDu(const LiDuToolGeometry &tool, const std::vector<Fo
 {
     LiDuCalibration result;
     if (measurements.empty()) {
-        result.diagnostics.push_back(makeError(QStringLiteral("measurements"), tr("no force measurements given")));
+        result.diagnostics.push_back(
+            makeError(QStringLiteral("measurements"), CuttingModels::tr("no force measurements given")));
         return result;
     }
     const auto rows = static_cast<Eigen::Index>(2 * measurements.size());
@@ -155,17 +155,18 @@ LiDuCalibration calibrateLiDu(const LiDuToolGeometry &tool, const std::vector<Fo
     }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
     if (qr.rank() < 2) {
-        result.diagnostics.push_back(
-            makeError(QStringLiteral("measurements"),
-                      tr("the measurements do not determine K_n and K_f (rank %1 of 2)").arg(qr.rank())));
+        result.diagnostics.push_back(makeError(
+            QStringLiteral("measurements"),
+            CuttingModels::tr("the measurements do not determine K_n and K_f (rank %1 of 2)").arg(qr.rank())));
         return result;
     }
     const Eigen::Vector2d pq = qr.solve(y);
     if (pq(0) <= 0.0) {
         result.diagnostics.push_back(
             makeError(QStringLiteral("measurements"),
-                      tr("the fitted normal pressure K_n = %1 N/mm² is not positive: check the measured forces and "
-                         "the tool angles")
+                      CuttingModels::tr(
+                          "the fitted normal pressure K_n = %1 N/mm² is not positive: check the measured forces and "
+                          "the tool angles")
                           .arg(num(pq(0)))));
         return result;
     }

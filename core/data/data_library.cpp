@@ -15,11 +15,6 @@ struct DataFiles {
     Q_DECLARE_TR_FUNCTIONS(DataFiles)
 };
 
-QString tr(const char *text)
-{
-    return DataFiles::tr(text);
-}
-
 // Reads one data file: a JSON object with "format", "version" 1 and "sources".
 class DataFileReader {
 public:
@@ -30,19 +25,20 @@ public:
     {
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly)) {
-            error(QString(), tr("cannot open the data file: %1").arg(file.errorString()));
+            error(QString(), DataFiles::tr("cannot open the data file: %1").arg(file.errorString()));
             return;
         }
         QJsonParseError parseError;
         const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
         if (parseError.error != QJsonParseError::NoError || !doc.isObject()) {
-            error(QString(), tr("not a valid JSON object: %1").arg(parseError.errorString()));
+            error(QString(), DataFiles::tr("not a valid JSON object: %1").arg(parseError.errorString()));
             return;
         }
         m_root = doc.object();
         if (m_root.value(QStringLiteral("format")).toString() != QLatin1String(format) ||
             m_root.value(QStringLiteral("version")).toInt() != 1) {
-            error(QStringLiteral("format"), tr("expected format \"%1\" version 1").arg(QLatin1String(format)));
+            error(QStringLiteral("format"),
+                  DataFiles::tr("expected format \"%1\" version 1").arg(QLatin1String(format)));
             m_root = {};
             return;
         }
@@ -64,13 +60,14 @@ public:
         const QJsonValue v = object.value(key);
         if (v.isUndefined()) {
             if (required)
-                error(path + QLatin1Char('.') + key, tr("required value is missing"));
+                error(path + QLatin1Char('.') + key, DataFiles::tr("required value is missing"));
             return std::nullopt;
         }
         const QJsonObject o = v.toObject();
         const QString source = o.value(QStringLiteral("source")).toString();
         if (!o.value(QStringLiteral("value")).isDouble() || !m_sources.contains(source)) {
-            error(path + QLatin1Char('.') + key, tr("expected {\"value\": number, \"source\": key of \"sources\"}"));
+            error(path + QLatin1Char('.') + key,
+                  DataFiles::tr("expected {\"value\": number, \"source\": key of \"sources\"}"));
             return std::nullopt;
         }
         return SourcedValue{o.value(QStringLiteral("value")).toDouble(), source};
@@ -125,7 +122,7 @@ void DataLibrary::readMaterials(const QString &path)
         const auto kc = r.value(k, QStringLiteral("kc11_MPa"), kp, true);
         const auto mc = r.value(k, QStringLiteral("mc"), kp, true);
         if (m.id.isEmpty() || !e || !rho || !kc || !mc) {
-            r.error(p, tr("material \"%1\" lacks its id, modulus, density or Kienzle constants").arg(m.id));
+            r.error(p, DataFiles::tr("material \"%1\" lacks its id, modulus, density or Kienzle constants").arg(m.id));
             continue;
         }
         m.youngsModulus_MPa = *e;

@@ -22,11 +22,6 @@ struct DeviationModel {
     Q_DECLARE_TR_FUNCTIONS(DeviationModel)
 };
 
-QString tr(const char *text)
-{
-    return DeviationModel::tr(text);
-}
-
 QString num(double v)
 {
     return formatNumber(v);
@@ -77,11 +72,12 @@ KienzleConstants kienzleOf(const MaterialData &m, const CuttingModel &model, con
         k.feed.reset();
         k.passive.reset();
     } else if ((!k.feed && !m.feedToCuttingRatio) || (!k.passive && !m.passiveToCuttingRatio)) {
-        notes << tr("Feed and passive force from the rule of thumb Ff = %1 Fc, Fp = %2 Fc (%3): the material data "
-                    "give no feed or passive force constants. Calibrate the forces for accuracy.")
+        notes << DeviationModel::tr(
+                     "Feed and passive force from the rule of thumb Ff = %1 Fc, Fp = %2 Fc (%3): the material data "
+                     "give no feed or passive force constants. Calibrate the forces for accuracy.")
                      .arg(num(k.feedToCuttingRatio), num(k.passiveToCuttingRatio),
                           feedRatio ? data.sourceText(feedRatio->source).section(QLatin1Char(','), 0, 1)
-                                    : tr("no source: zero"));
+                                    : DeviationModel::tr("no source: zero"));
     }
     return k;
 }
@@ -130,8 +126,8 @@ double toolpostCompliance(const Project &p, const DataLibrary &data, QStringList
     const HolderData *h = data.holder(p.tool.holderCode);
     const auto modulus = data.shankModulus();
     if (h == nullptr || !modulus) {
-        notes
-            << tr("Toolpost shortening not included: holder \"%1\" is not in the data library.").arg(p.tool.holderCode);
+        notes << DeviationModel::tr("Toolpost shortening not included: holder \"%1\" is not in the data library.")
+                     .arg(p.tool.holderCode);
         return 0.0;
     }
     double area = 0.0;
@@ -142,8 +138,9 @@ double toolpostCompliance(const Project &p, const DataLibrary &data, QStringList
     double length = p.tool.overhang_mm.value_or(0.0);
     if (!p.tool.overhang_mm && h->length_mm) {
         length = h->length_mm->value;
-        notes << tr("Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give "
-                    "tool.overhang_mm for the length out of the turret.")
+        notes << DeviationModel::tr(
+                     "Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give "
+                     "tool.overhang_mm for the length out of the turret.")
                      .arg(num(length));
     }
     ToolpostCompliance tp;
@@ -179,7 +176,7 @@ void resolveSupports(const Project &p, const DeviationOptions &options, TurningI
         in.radialLeft = in.tangentialLeft = chuck ? EndSupport::clamped() : EndSupport::pinned();
         in.radialRight = in.tangentialRight =
             method == ClampingMethod::Chuck ? EndSupport::free() : EndSupport::pinned();
-        in.notes << tr("Workpiece only: machine supports rigid, no toolpost or thermal term.");
+        in.notes << DeviationModel::tr("Workpiece only: machine supports rigid, no toolpost or thermal term.");
         return;
     }
     if (chuck) {
@@ -187,13 +184,14 @@ void resolveSupports(const Project &p, const DeviationOptions &options, TurningI
         in.tangentialLeft = chuckSupport(c, c.spindleTangential);
         in.spindleCharacterised = c.spindleRadial.has_value() && c.pivotDistance_mm.has_value();
         if (!in.spindleCharacterised)
-            in.notes << tr("Spindle–chuck not characterised for this machine: the part is taken as rigidly clamped at "
-                           "the chuck face. Measure k1, k2, k3 (Valiño et al. 2008 §III) for its contribution.");
+            in.notes << DeviationModel::tr(
+                "Spindle–chuck not characterised for this machine: the part is taken as rigidly clamped at "
+                "the chuck face. Measure k1, k2, k3 (Valiño et al. 2008 §III) for its contribution.");
     } else {
         in.radialLeft = centreSupport(c.centres, true);
         in.tangentialLeft = centreSupport(c.centres, false);
         if (!c.centres)
-            in.notes << tr("Headstock centre not characterised: taken as a rigid pin.");
+            in.notes << DeviationModel::tr("Headstock centre not characterised: taken as a rigid pin.");
     }
     if (method == ClampingMethod::Chuck) {
         in.radialRight = in.tangentialRight = EndSupport::free();
@@ -201,7 +199,7 @@ void resolveSupports(const Project &p, const DeviationOptions &options, TurningI
         in.radialRight = centreSupport(c.tailstock, true);
         in.tangentialRight = centreSupport(c.tailstock, false);
         if (!c.tailstock)
-            in.notes << tr("Tailstock not characterised: taken as a rigid pin.");
+            in.notes << DeviationModel::tr("Tailstock not characterised: taken as a rigid pin.");
     }
 }
 
@@ -230,16 +228,17 @@ bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &i
 {
     material = data.material(p.materialId);
     if (material == nullptr) {
-        out.push_back(makeError(
-            QStringLiteral("material"),
-            tr("unknown material \"%1\"; the data library has: %2").arg(p.materialId, libraryIds(data.materials()))));
+        out.push_back(makeError(QStringLiteral("material"),
+                                DeviationModel::tr("unknown material \"%1\"; the data library has: %2")
+                                    .arg(p.materialId, libraryIds(data.materials()))));
         return false;
     }
     if (!material->poissonRatio) {
-        out.push_back(makeError(QStringLiteral("material"),
-                                tr("material \"%1\" has no Poisson's ratio in the data, which the shear deflection "
-                                   "needs")
-                                    .arg(material->id)));
+        out.push_back(makeError(
+            QStringLiteral("material"),
+            DeviationModel::tr("material \"%1\" has no Poisson's ratio in the data, which the shear deflection "
+                               "needs")
+                .arg(material->id)));
         return false;
     }
     in.material = {material->youngsModulus_MPa.value, material->poissonRatio->value, true};
@@ -258,10 +257,11 @@ std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &p, const 
     }
     const auto angle = enteringAngleOf(p.tool.holderCode, data);
     if (!angle) {
-        out.push_back(makeError(QStringLiteral("tool.holder"),
-                                tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
-                                   "character) gives no known entering angle")
-                                    .arg(p.tool.holderCode)));
+        out.push_back(makeError(
+            QStringLiteral("tool.holder"),
+            DeviationModel::tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
+                               "character) gives no known entering angle")
+                .arg(p.tool.holderCode)));
         return std::nullopt;
     }
     const HolderData *holder = data.holder(p.tool.holderCode);
@@ -271,11 +271,12 @@ std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &p, const 
     const auto inclination = seatAngle(p.tool.inclination_deg, holder ? holder->inclination_deg : std::nullopt,
                                        data.negativeSeatInclination(), negative);
     if (!rake || !inclination) {
-        out.push_back(makeError(QStringLiteral("tool.rake_deg"),
-                                tr("the Li & Du model needs the rake and inclination angles of the tool; the data "
-                                   "give none for holder \"%1\" with insert \"%2\": set tool.rake_deg and "
-                                   "tool.inclination_deg")
-                                    .arg(p.tool.holderCode, p.tool.insertCode)));
+        out.push_back(makeError(
+            QStringLiteral("tool.rake_deg"),
+            DeviationModel::tr("the Li & Du model needs the rake and inclination angles of the tool; the data "
+                               "give none for holder \"%1\" with insert \"%2\": set tool.rake_deg and "
+                               "tool.inclination_deg")
+                .arg(p.tool.holderCode, p.tool.insertCode)));
         return std::nullopt;
     }
     LiDuToolGeometry tool;
@@ -292,7 +293,7 @@ std::optional<ForceFunction> projectForceModel(const Project &p, const DataLibra
     const auto angle = enteringAngleOf(p.tool.holderCode, data);
     if (material == nullptr || !angle) {
         out.push_back(makeError(material == nullptr ? QStringLiteral("material") : QStringLiteral("tool.holder"),
-                                tr("the force model needs a known material and holder")));
+                                DeviationModel::tr("the force model needs a known material and holder")));
         return std::nullopt;
     }
     if (p.cuttingModel.forceModel == ForceModel::Kienzle) {
@@ -323,9 +324,10 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
     in.passIndex = choosePass(p, options.passIndex);
     if (in.passIndex < 0 || in.passIndex >= static_cast<int>(p.passes.size())) {
         out.push_back(makeError(QStringLiteral("passes"),
-                                p.passes.empty() ? tr("there is no cutting pass; the deviation is that of the pass "
-                                                      "that finishes the features")
-                                                 : tr("there is no pass %1").arg(in.passIndex)));
+                                p.passes.empty()
+                                    ? DeviationModel::tr("there is no cutting pass; the deviation is that of the pass "
+                                                         "that finishes the features")
+                                    : DeviationModel::tr("there is no pass %1").arg(in.passIndex)));
         return result;
     }
     in.pass = p.passes[static_cast<std::size_t>(in.passIndex)];
@@ -338,19 +340,20 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
     in.noseRadius_mm = insert.insert->noseRadius_mm;
     const auto angle = enteringAngleOf(p.tool.holderCode, data);
     if (!angle) {
-        out.push_back(makeError(QStringLiteral("tool.holder"),
-                                tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
-                                   "character) gives no known entering angle")
-                                    .arg(p.tool.holderCode)));
+        out.push_back(makeError(
+            QStringLiteral("tool.holder"),
+            DeviationModel::tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
+                               "character) gives no known entering angle")
+                .arg(p.tool.holderCode)));
         return result;
     }
     in.enteringAngle_deg = angle->value;
 
     const MachineData *machine = data.machine(p.machineId);
     if (machine == nullptr) {
-        out.push_back(makeError(
-            QStringLiteral("machine"),
-            tr("unknown machine \"%1\"; the data library has: %2").arg(p.machineId, libraryIds(data.machines()))));
+        out.push_back(
+            makeError(QStringLiteral("machine"), DeviationModel::tr("unknown machine \"%1\"; the data library has: %2")
+                                                     .arg(p.machineId, libraryIds(data.machines()))));
         return result;
     }
     in.maxSpindleSpeed_rpm = machineLimit(machine, "max_speed_rpm");
@@ -362,16 +365,16 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
     resolveSupports(p, options, in);
     if (!supportsHoldBeam(in.radialLeft, in.radialRight, in.supportEnd_mm - in.supportStart_mm) ||
         !supportsHoldBeam(in.tangentialLeft, in.tangentialRight, in.supportEnd_mm - in.supportStart_mm)) {
-        out.push_back(
-            makeError(QStringLiteral("clamping"), tr("the %1 clamping with these supports leaves the part free to move")
-                                                      .arg(displayName(p.clamping.method))));
+        out.push_back(makeError(QStringLiteral("clamping"),
+                                DeviationModel::tr("the %1 clamping with these supports leaves the part free to move")
+                                    .arg(displayName(p.clamping.method))));
         return result;
     }
     if (!options.workpieceOnly) {
         in.toolpostCompliance_mm_per_N = toolpostCompliance(p, data, in.notes);
         in.thermal = p.characterisation.thermal;
         if (!in.thermal)
-            in.notes << tr("Thermal drift not characterised for this machine: taken as zero.");
+            in.notes << DeviationModel::tr("Thermal drift not characterised for this machine: taken as zero.");
     }
     in.timeSinceStart_min = p.environment.timeSinceStart_min.value_or(0.0);
     in.ambientTemperature_C = p.environment.ambientTemperature_C.value_or(20.0);
@@ -621,9 +624,10 @@ DeviationResult computeDeviation(const Project &project, const DataLibrary &data
     result.diagnostics = resolved.diagnostics;
     if (in.maxPower_kW && result.maxPower_kW > *in.maxPower_kW)
         result.diagnostics.push_back(
-            makeWarning(QStringLiteral("passes"), tr("the pass needs %1 kW of cutting power, more than the machine's "
-                                                     "%2 kW")
-                                                      .arg(num(result.maxPower_kW), num(*in.maxPower_kW))));
+            makeWarning(QStringLiteral("passes"),
+                        DeviationModel::tr("the pass needs %1 kW of cutting power, more than the machine's "
+                                           "%2 kW")
+                            .arg(num(result.maxPower_kW), num(*in.maxPower_kW))));
     return result;
 }
 

@@ -16,11 +16,6 @@ struct MeasurementFiles {
     Q_DECLARE_TR_FUNCTIONS(MeasurementFiles)
 };
 
-QString tr(const char *text)
-{
-    return MeasurementFiles::tr(text);
-}
-
 constexpr std::array<const char *, 4> kColumns{"feed_mm_rev", "depth_of_cut_mm", "tangential_N", "axial_N"};
 
 } // namespace
@@ -30,8 +25,8 @@ MeasurementsReadResult readForceMeasurements(const QString &path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
         MeasurementsReadResult r;
-        r.diagnostics.push_back(
-            makeError(QStringLiteral("file"), tr("cannot open '%1': %2").arg(path, file.errorString())));
+        r.diagnostics.push_back(makeError(QStringLiteral("file"),
+                                          MeasurementFiles::tr("cannot open '%1': %2").arg(path, file.errorString())));
         return r;
     }
     return parseForceMeasurements(QString::fromUtf8(file.readAll()), path);
@@ -56,7 +51,7 @@ MeasurementsReadResult parseForceMeasurements(const QString &text, const QString
                 columnOf[c] = cells.indexOf(QLatin1String(kColumns[c]));
                 if (columnOf[c] < 0)
                     result.diagnostics.push_back(makeError(
-                        where, tr("the header lacks the column \"%1\"; it needs %2")
+                        where, MeasurementFiles::tr("the header lacks the column \"%1\"; it needs %2")
                                    .arg(QLatin1String(kColumns[c]), QStringLiteral("feed_mm_rev, depth_of_cut_mm, "
                                                                                    "tangential_N, axial_N"))));
             }
@@ -71,16 +66,17 @@ MeasurementsReadResult parseForceMeasurements(const QString &text, const QString
             const QString cell = cells.value(columnOf[c]).trimmed();
             v[c] = cell.toDouble(&ok);
             if (!ok || !std::isfinite(v[c]) || v[c] <= (c < 2 ? 0.0 : -1e300))
-                result.diagnostics.push_back(makeError(
-                    where, tr("%1 must be a number%2, not \"%3\"")
-                               .arg(QLatin1String(kColumns[c]), c < 2 ? tr(" above zero") : QString(), cell)));
+                result.diagnostics.push_back(
+                    makeError(where, MeasurementFiles::tr("%1 must be a number%2, not \"%3\"")
+                                         .arg(QLatin1String(kColumns[c]),
+                                              c < 2 ? MeasurementFiles::tr(" above zero") : QString(), cell)));
         }
         rows.push_back({v[0], v[1], v[2], v[3]});
     }
     if (header)
-        result.diagnostics.push_back(makeError(fileName, tr("the file has no header line")));
+        result.diagnostics.push_back(makeError(fileName, MeasurementFiles::tr("the file has no header line")));
     else if (rows.empty())
-        result.diagnostics.push_back(makeError(fileName, tr("the file has no measurement")));
+        result.diagnostics.push_back(makeError(fileName, MeasurementFiles::tr("the file has no measurement")));
     if (!hasErrors(result.diagnostics))
         result.measurements = rows;
     return result;

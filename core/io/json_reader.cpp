@@ -14,32 +14,27 @@ struct JsonReading {
     Q_DECLARE_TR_FUNCTIONS(JsonReading)
 };
 
-QString tr(const char *text)
-{
-    return JsonReading::tr(text);
-}
-
 } // namespace
 
 QString describeJsonValue(const QJsonValue &value)
 {
     switch (value.type()) {
     case QJsonValue::Null:
-        return tr("null");
+        return JsonReading::tr("null");
     case QJsonValue::Bool:
-        return value.toBool() ? tr("true") : tr("false");
+        return value.toBool() ? JsonReading::tr("true") : JsonReading::tr("false");
     case QJsonValue::Double:
-        return tr("the number %1").arg(formatNumber(value.toDouble()));
+        return JsonReading::tr("the number %1").arg(formatNumber(value.toDouble()));
     case QJsonValue::String:
-        return tr("the text \"%1\"").arg(value.toString());
+        return JsonReading::tr("the text \"%1\"").arg(value.toString());
     case QJsonValue::Array:
-        return tr("a list");
+        return JsonReading::tr("a list");
     case QJsonValue::Object:
-        return tr("an object");
+        return JsonReading::tr("an object");
     case QJsonValue::Undefined:
         break;
     }
-    return tr("nothing");
+    return JsonReading::tr("nothing");
 }
 
 QString elementPath(const QString &arrayPath, qsizetype index)
@@ -65,7 +60,7 @@ std::optional<QJsonValue> JsonObjectReader::take(const QString &key, Presence pr
     const auto it = m_object.constFind(key);
     if (it == m_object.constEnd()) {
         if (presence == Presence::Required)
-            m_out.push_back(makeError(fieldPath(key), tr("this field is required but missing")));
+            m_out.push_back(makeError(fieldPath(key), JsonReading::tr("this field is required but missing")));
         return std::nullopt;
     }
     return it.value();
@@ -73,7 +68,8 @@ std::optional<QJsonValue> JsonObjectReader::take(const QString &key, Presence pr
 
 void JsonObjectReader::typeError(const QString &key, const QString &expected, const QJsonValue &value)
 {
-    m_out.push_back(makeError(fieldPath(key), tr("expected %1, found %2").arg(expected, describeJsonValue(value))));
+    m_out.push_back(
+        makeError(fieldPath(key), JsonReading::tr("expected %1, found %2").arg(expected, describeJsonValue(value))));
 }
 
 std::optional<double> JsonObjectReader::number(const QString &key, Presence presence)
@@ -82,7 +78,7 @@ std::optional<double> JsonObjectReader::number(const QString &key, Presence pres
     if (!value)
         return std::nullopt;
     if (!value->isDouble()) {
-        typeError(key, tr("a number"), *value);
+        typeError(key, JsonReading::tr("a number"), *value);
         return std::nullopt;
     }
     return value->toDouble();
@@ -95,7 +91,7 @@ std::optional<int> JsonObjectReader::integer(const QString &key, Presence presen
         return std::nullopt;
     const double d = value->toDouble(std::nan(""));
     if (!value->isDouble() || d != std::floor(d) || std::abs(d) > 1e9) {
-        typeError(key, tr("a whole number"), *value);
+        typeError(key, JsonReading::tr("a whole number"), *value);
         return std::nullopt;
     }
     return static_cast<int>(d);
@@ -107,7 +103,7 @@ std::optional<QString> JsonObjectReader::text(const QString &key, Presence prese
     if (!value)
         return std::nullopt;
     if (!value->isString()) {
-        typeError(key, tr("a text"), *value);
+        typeError(key, JsonReading::tr("a text"), *value);
         return std::nullopt;
     }
     return value->toString();
@@ -119,7 +115,7 @@ std::optional<QJsonObject> JsonObjectReader::object(const QString &key, Presence
     if (!value)
         return std::nullopt;
     if (!value->isObject()) {
-        typeError(key, tr("an object"), *value);
+        typeError(key, JsonReading::tr("an object"), *value);
         return std::nullopt;
     }
     return value->toObject();
@@ -131,7 +127,7 @@ std::optional<QJsonArray> JsonObjectReader::array(const QString &key, Presence p
     if (!value)
         return std::nullopt;
     if (!value->isArray()) {
-        typeError(key, tr("a list"), *value);
+        typeError(key, JsonReading::tr("a list"), *value);
         return std::nullopt;
     }
     return value->toArray();
@@ -144,9 +140,8 @@ std::optional<QString> JsonObjectReader::keywordText(const QString &key, Presenc
     if (!value)
         return std::nullopt;
     if (!allowed.contains(*value)) {
-        m_out.push_back(makeError(
-            fieldPath(key),
-            tr("unknown %1 \"%2\"; expected one of: %3").arg(what, *value, allowed.join(QStringLiteral(", ")))));
+        m_out.push_back(makeError(fieldPath(key), JsonReading::tr("unknown %1 \"%2\"; expected one of: %3")
+                                                      .arg(what, *value, allowed.join(QStringLiteral(", ")))));
         return std::nullopt;
     }
     return value;
@@ -156,7 +151,7 @@ void JsonObjectReader::finish()
 {
     for (auto it = m_object.constBegin(); it != m_object.constEnd(); ++it) {
         if (!m_read.contains(it.key()))
-            m_out.push_back(makeWarning(fieldPath(it.key()), tr("unknown field, ignored")));
+            m_out.push_back(makeWarning(fieldPath(it.key()), JsonReading::tr("unknown field, ignored")));
     }
 }
 

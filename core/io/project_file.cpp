@@ -16,11 +16,6 @@ struct ProjectFile {
 
 constexpr qint64 kBytesPerMiB = 1024LL * 1024LL;
 
-QString tr(const char *text)
-{
-    return ProjectFile::tr(text);
-}
-
 ProjectParseResult fileError(const QString &message)
 {
     ProjectParseResult result;
@@ -34,17 +29,17 @@ ProjectParseResult readProjectFile(const QString &path)
 {
     const QFileInfo info(path);
     if (!info.exists())
-        return fileError(tr("'%1' does not exist").arg(path));
+        return fileError(ProjectFile::tr("'%1' does not exist").arg(path));
     if (info.isDir())
-        return fileError(tr("'%1' is a folder, not a project file").arg(path));
+        return fileError(ProjectFile::tr("'%1' is a folder, not a project file").arg(path));
     if (info.size() > kMaxProjectFileBytes)
-        return fileError(tr("'%1' is %2 MiB, more than the %3 MiB a project file may have")
+        return fileError(ProjectFile::tr("'%1' is %2 MiB, more than the %3 MiB a project file may have")
                              .arg(path)
                              .arg(info.size() / kBytesPerMiB)
                              .arg(kMaxProjectFileBytes / kBytesPerMiB));
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return fileError(tr("cannot open '%1': %2").arg(path, file.errorString()));
+        return fileError(ProjectFile::tr("cannot open '%1': %2").arg(path, file.errorString()));
     return parseProjectJson(file.readAll());
 }
 
@@ -52,15 +47,15 @@ WriteResult writeProjectFile(const QString &path, const Project &project)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return {false, tr("cannot write '%1': %2").arg(path, file.errorString())};
+        return {false, ProjectFile::tr("cannot write '%1': %2").arg(path, file.errorString())};
     const QByteArray bytes = serializeProjectJson(project);
     if (file.write(bytes) != bytes.size()) {
         const QString reason = file.errorString();
         file.cancelWriting();
-        return {false, tr("cannot write '%1': %2").arg(path, reason)};
+        return {false, ProjectFile::tr("cannot write '%1': %2").arg(path, reason)};
     }
     if (!file.commit())
-        return {false, tr("cannot save '%1': %2").arg(path, file.errorString())};
+        return {false, ProjectFile::tr("cannot save '%1': %2").arg(path, file.errorString())};
     return {true, QString()};
 }
 

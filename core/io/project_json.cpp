@@ -16,11 +16,6 @@ struct ProjectJson {
     Q_DECLARE_TR_FUNCTIONS(ProjectJson)
 };
 
-QString tr(const char *text)
-{
-    return ProjectJson::tr(text);
-}
-
 template <typename Enum>
 std::optional<Enum> readKeyword(JsonObjectReader &reader, const QString &key, Presence presence, const QString &what)
 {
@@ -46,7 +41,7 @@ Segment readSegment(const QJsonObject &json, const QString &path, Diagnostics &o
     Segment s;
     s.id = r.text(QStringLiteral("id"), Presence::Required).value_or(QString());
     s.name = r.text(QStringLiteral("name"), Presence::Optional).value_or(QString());
-    s.kind = readKeyword<SegmentKind>(r, QStringLiteral("type"), Presence::Required, tr("segment type"))
+    s.kind = readKeyword<SegmentKind>(r, QStringLiteral("type"), Presence::Required, ProjectJson::tr("segment type"))
                  .value_or(SegmentKind::Cylinder);
     if (const auto from = r.object(QStringLiteral("from"), Presence::Required))
         s.from = readPoint(*from, r.fieldPath(QStringLiteral("from")), out);
@@ -54,9 +49,9 @@ Segment readSegment(const QJsonObject &json, const QString &path, Diagnostics &o
         s.to = readPoint(*to, r.fieldPath(QStringLiteral("to")), out);
     if (s.kind == SegmentKind::Radius) {
         s.arcRadius_mm = r.number(QStringLiteral("radius_mm"), Presence::Required).value_or(0.0);
-        s.arcDirection =
-            readKeyword<ArcDirection>(r, QStringLiteral("direction"), Presence::Required, tr("arc direction"))
-                .value_or(ArcDirection::CounterClockwise);
+        s.arcDirection = readKeyword<ArcDirection>(r, QStringLiteral("direction"), Presence::Required,
+                                                   ProjectJson::tr("arc direction"))
+                             .value_or(ArcDirection::CounterClockwise);
     }
     r.finish();
     return s;
@@ -68,8 +63,8 @@ Contour readContour(const QJsonArray &json, const QString &path, Diagnostics &ou
     for (qsizetype i = 0; i < json.size(); ++i) {
         const QString itemPath = elementPath(path, i);
         if (!json.at(i).isObject()) {
-            out.push_back(
-                makeError(itemPath, tr("expected a segment object, found %1").arg(describeJsonValue(json.at(i)))));
+            out.push_back(makeError(
+                itemPath, ProjectJson::tr("expected a segment object, found %1").arg(describeJsonValue(json.at(i)))));
             continue;
         }
         c.segments.push_back(readSegment(json.at(i).toObject(), itemPath, out));
@@ -108,8 +103,9 @@ CuttingModel readCuttingModel(const QJsonObject &json, Diagnostics &out)
 {
     JsonObjectReader r(json, QStringLiteral("cutting_model"), out);
     CuttingModel m;
-    m.forceModel = readKeyword<ForceModel>(r, QStringLiteral("force_model"), Presence::Optional, tr("force model"))
-                       .value_or(ForceModel::Kienzle);
+    m.forceModel =
+        readKeyword<ForceModel>(r, QStringLiteral("force_model"), Presence::Optional, ProjectJson::tr("force model"))
+            .value_or(ForceModel::Kienzle);
     m.feedToCuttingRatio = r.number(QStringLiteral("feed_to_cutting_ratio"), Presence::Optional);
     m.passiveToCuttingRatio = r.number(QStringLiteral("passive_to_cutting_ratio"), Presence::Optional);
     m.normalPressure_MPa = r.number(QStringLiteral("normal_pressure_MPa"), Presence::Optional);
@@ -192,8 +188,9 @@ PlanningSettings readPlanning(const QJsonObject &json, Diagnostics &out)
 {
     JsonObjectReader r(json, QStringLiteral("planning"), out);
     PlanningSettings p;
-    p.objective = readKeyword<PlanningObjective>(r, QStringLiteral("objective"), Presence::Optional, tr("objective"))
-                      .value_or(PlanningObjective::Time);
+    p.objective =
+        readKeyword<PlanningObjective>(r, QStringLiteral("objective"), Presence::Optional, ProjectJson::tr("objective"))
+            .value_or(PlanningObjective::Time);
     p.machineRate_per_min = r.number(QStringLiteral("machine_rate_per_min"), Presence::Optional).value_or(0.0);
     p.toolCostPerEdge = r.number(QStringLiteral("tool_cost_per_edge"), Presence::Optional).value_or(0.0);
     p.toolChangeTime_min = r.number(QStringLiteral("tool_change_time_min"), Presence::Optional).value_or(0.0);
@@ -242,8 +239,9 @@ Clamping readClamping(const QJsonObject &json, Diagnostics &out)
 {
     JsonObjectReader r(json, QStringLiteral("clamping"), out);
     Clamping c;
-    c.method = readKeyword<ClampingMethod>(r, QStringLiteral("method"), Presence::Required, tr("clamping method"))
-                   .value_or(ClampingMethod::Chuck);
+    c.method =
+        readKeyword<ClampingMethod>(r, QStringLiteral("method"), Presence::Required, ProjectJson::tr("clamping method"))
+            .value_or(ClampingMethod::Chuck);
     c.clampedLength_mm = r.number(QStringLiteral("clamped_length_mm"), Presence::Optional).value_or(0.0);
     r.finish();
     return c;
@@ -260,7 +258,8 @@ std::vector<T> readList(JsonObjectReader &parent, const QString &key, Diagnostic
     for (qsizetype i = 0; i < json->size(); ++i) {
         const QString itemPath = elementPath(path, i);
         if (!json->at(i).isObject()) {
-            out.push_back(makeError(itemPath, tr("expected an object, found %1").arg(describeJsonValue(json->at(i)))));
+            out.push_back(makeError(
+                itemPath, ProjectJson::tr("expected an object, found %1").arg(describeJsonValue(json->at(i)))));
             continue;
         }
         JsonObjectReader r(json->at(i).toObject(), itemPath, out);
@@ -273,7 +272,7 @@ std::vector<T> readList(JsonObjectReader &parent, const QString &key, Diagnostic
 CuttingPass readPass(JsonObjectReader &r)
 {
     CuttingPass p;
-    p.kind = readKeyword<PassKind>(r, QStringLiteral("kind"), Presence::Required, tr("pass kind"))
+    p.kind = readKeyword<PassKind>(r, QStringLiteral("kind"), Presence::Required, ProjectJson::tr("pass kind"))
                  .value_or(PassKind::Finishing);
     p.cuttingSpeed_m_min = r.number(QStringLiteral("cutting_speed_m_min"), Presence::Required).value_or(0.0);
     p.feed_mm_rev = r.number(QStringLiteral("feed_mm_rev"), Presence::Required).value_or(0.0);
@@ -297,8 +296,9 @@ QStringList readDatumLabels(JsonObjectReader &r, Diagnostics &out)
         return labels;
     for (qsizetype i = 0; i < json->size(); ++i) {
         if (!json->at(i).isString())
-            out.push_back(makeError(elementPath(r.fieldPath(QStringLiteral("datums")), i),
-                                    tr("expected a datum letter, found %1").arg(describeJsonValue(json->at(i)))));
+            out.push_back(
+                makeError(elementPath(r.fieldPath(QStringLiteral("datums")), i),
+                          ProjectJson::tr("expected a datum letter, found %1").arg(describeJsonValue(json->at(i)))));
         else
             labels << json->at(i).toString();
     }
@@ -309,8 +309,9 @@ Tolerance readTolerance(JsonObjectReader &r, Diagnostics &out)
 {
     Tolerance t;
     t.id = r.text(QStringLiteral("id"), Presence::Required).value_or(QString());
-    t.type = readKeyword<ToleranceType>(r, QStringLiteral("type"), Presence::Required, tr("tolerance type"))
-                 .value_or(ToleranceType::Diameter);
+    t.type =
+        readKeyword<ToleranceType>(r, QStringLiteral("type"), Presence::Required, ProjectJson::tr("tolerance type"))
+            .value_or(ToleranceType::Diameter);
     t.featureId = r.text(QStringLiteral("feature"), Presence::Required).value_or(QString());
     if (t.type == ToleranceType::Length)
         t.toFeatureId = r.text(QStringLiteral("to_feature"), Presence::Required).value_or(QString());
@@ -330,16 +331,18 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
     JsonObjectReader r(root, QString(), out);
     const auto format = r.text(QStringLiteral("format"), Presence::Required);
     if (format && *format != QLatin1String(kProjectFormatName)) {
-        out.push_back(makeError(QStringLiteral("format"), tr("this is not a TolTurn project: format is \"%1\", "
-                                                             "expected \"%2\"")
-                                                              .arg(*format, QLatin1String(kProjectFormatName))));
+        out.push_back(
+            makeError(QStringLiteral("format"), ProjectJson::tr("this is not a TolTurn project: format is \"%1\", "
+                                                                "expected \"%2\"")
+                                                    .arg(*format, QLatin1String(kProjectFormatName))));
         return std::nullopt;
     }
     const auto version = r.integer(QStringLiteral("version"), Presence::Required);
     if (version && *version != kProjectFormatVersion) {
-        out.push_back(makeError(
-            QStringLiteral("version"),
-            tr("unknown format version %1; this TolTurn reads version %2").arg(*version).arg(kProjectFormatVersion)));
+        out.push_back(makeError(QStringLiteral("version"),
+                                ProjectJson::tr("unknown format version %1; this TolTurn reads version %2")
+                                    .arg(*version)
+                                    .arg(kProjectFormatVersion)));
         return std::nullopt;
     }
     if (hasErrors(out))
@@ -531,13 +534,15 @@ ProjectParseResult parseProjectJson(const QByteArray &json)
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         const auto [line, column] = lineColumn(json, parseError.offset);
-        result.diagnostics.push_back(makeError(
-            QString(),
-            tr("invalid JSON at line %1, column %2: %3").arg(line).arg(column).arg(parseError.errorString())));
+        result.diagnostics.push_back(makeError(QString(), ProjectJson::tr("invalid JSON at line %1, column %2: %3")
+                                                              .arg(line)
+                                                              .arg(column)
+                                                              .arg(parseError.errorString())));
         return result;
     }
     if (!doc.isObject()) {
-        result.diagnostics.push_back(makeError(QString(), tr("a project file holds one JSON object, not a list")));
+        result.diagnostics.push_back(
+            makeError(QString(), ProjectJson::tr("a project file holds one JSON object, not a list")));
         return result;
     }
     auto project = readProject(doc.object(), result.diagnostics);

@@ -17,11 +17,6 @@ struct ProfileEditing {
     Q_DECLARE_TR_FUNCTIONS(ProfileEditing)
 };
 
-QString tr(const char *text)
-{
-    return ProfileEditing::tr(text);
-}
-
 Contour &contourOf(PartProfile &p, ContourSide side)
 {
     return side == ContourSide::Outer ? p.outer : p.inner;
@@ -120,7 +115,7 @@ ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex,
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, side).segments;
     if (vertex < 0 || vertex > static_cast<int>(s.size()) || s.empty())
-        return tr("the %1 contour has no vertex %2").arg(contourName(side)).arg(vertex);
+        return ProfileEditing::tr("the %1 contour has no vertex %2").arg(contourName(side)).arg(vertex);
     const auto k = static_cast<std::size_t>(vertex);
     if (k > 0)
         moveEnd(s, k - 1, to);
@@ -133,15 +128,15 @@ ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, dou
 {
     const std::optional<FeatureRef> ref = findFeature(profile, featureId);
     if (!ref || ref->segment->kind != SegmentKind::Cylinder)
-        return tr("a step is inserted into a cylinder; %1 is not one").arg(featureId);
+        return ProfileEditing::tr("a step is inserted into a cylinder; %1 is not one").arg(featureId);
     const Segment &cylinder = *ref->segment;
     const double z0 = std::min(cylinder.from.z_mm, cylinder.to.z_mm),
                  z1 = std::max(cylinder.from.z_mm, cylinder.to.z_mm);
     if (!(z_mm > z0 + kProfileEpsilon_mm && z_mm < z1 - kProfileEpsilon_mm))
-        return tr("the step of %1 must lie inside it (z %2 … %3 mm), but z is %4 mm")
+        return ProfileEditing::tr("the step of %1 must lie inside it (z %2 … %3 mm), but z is %4 mm")
             .arg(featureId, formatNumber(z0), formatNumber(z1), formatNumber(z_mm));
     if (!(diameter_mm > 0.0) || near(diameter_mm / 2.0, cylinder.from.r_mm))
-        return tr("the step's diameter must differ from Ø%1 mm and be above zero, but is %2 mm")
+        return ProfileEditing::tr("the step's diameter must differ from Ø%1 mm and be above zero, but is %2 mm")
             .arg(formatNumber(2.0 * cylinder.from.r_mm), formatNumber(diameter_mm));
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, ref->side).segments;
@@ -153,8 +148,9 @@ ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, dou
                                QString::number(idNumber(faceId) + 1);
     const ProfilePoint end = s[i].to;
     s[i].to = corner;
-    const Segment face = makeSegment(faceId, tr("step face"), SegmentKind::Face, corner, stepped);
-    const Segment second = makeSegment(cylinderId, tr("step diameter"), SegmentKind::Cylinder, stepped, {end.z_mm, r2});
+    const Segment face = makeSegment(faceId, ProfileEditing::tr("step face"), SegmentKind::Face, corner, stepped);
+    const Segment second =
+        makeSegment(cylinderId, ProfileEditing::tr("step diameter"), SegmentKind::Cylinder, stepped, {end.z_mm, r2});
     s.insert(s.begin() + static_cast<std::ptrdiff_t>(i) + 1, {face, second});
     if (i + 3 < s.size())
         moveStart(s, i + 3, s[i + 2].to);
@@ -166,7 +162,7 @@ ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, side).segments;
     if (vertex <= 0 || vertex >= static_cast<int>(s.size()))
-        return tr("vertex %1 of the %2 contour is not a corner between two features")
+        return ProfileEditing::tr("vertex %1 of the %2 contour is not a corner between two features")
             .arg(vertex)
             .arg(contourName(side));
     const auto k = static_cast<std::size_t>(vertex);
@@ -175,10 +171,11 @@ ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex
     const bool faceAndCylinder = (before.kind == SegmentKind::Face && after.kind == SegmentKind::Cylinder) ||
                                  (before.kind == SegmentKind::Cylinder && after.kind == SegmentKind::Face);
     if (!faceAndCylinder)
-        return tr("a corner is broken between a face and a cylinder; %1 and %2 are not").arg(before.id, after.id);
+        return ProfileEditing::tr("a corner is broken between a face and a cylinder; %1 and %2 are not")
+            .arg(before.id, after.id);
     const double lenBefore = segmentLength_mm(before), lenAfter = segmentLength_mm(after);
     if (!(size_mm > 0.0) || size_mm >= lenBefore || size_mm >= lenAfter)
-        return tr("the corner of %1 and %2 takes at most %3 mm, but the size is %4 mm")
+        return ProfileEditing::tr("the corner of %1 and %2 takes at most %3 mm, but the size is %4 mm")
             .arg(before.id, after.id, formatNumber(std::min(lenBefore, lenAfter)), formatNumber(size_mm));
     const ProfilePoint corner = before.to;
     // Unit directions into the corner along `before` and out of it along `after`.
@@ -189,7 +186,8 @@ ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex
     const ProfilePoint end{corner.z_mm + size_mm * d2z, corner.r_mm + size_mm * d2r};
     before.to = start;
     after.from = end;
-    Segment edge = makeSegment(nextFeatureId(result, side), round ? tr("edge round") : tr("chamfer"),
+    Segment edge = makeSegment(nextFeatureId(result, side),
+                               round ? ProfileEditing::tr("edge round") : ProfileEditing::tr("chamfer"),
                                round ? SegmentKind::Radius : SegmentKind::Chamfer, start, end);
     if (round) {
         // A quarter circle tangent to both: turning right (clockwise) when the path turns right.
@@ -204,9 +202,9 @@ ProfileEdit makeCone(const PartProfile &profile, const QString &featureId, doubl
 {
     const std::optional<FeatureRef> ref = findFeature(profile, featureId);
     if (!ref || ref->segment->kind != SegmentKind::Cylinder)
-        return tr("a cone is made from a cylinder; %1 is not one").arg(featureId);
+        return ProfileEditing::tr("a cone is made from a cylinder; %1 is not one").arg(featureId);
     if (!(endDiameter_mm > 0.0) || near(endDiameter_mm / 2.0, ref->segment->from.r_mm))
-        return tr("the cone's end needs a diameter other than Ø%1 mm, but it is %2 mm")
+        return ProfileEditing::tr("the cone's end needs a diameter other than Ø%1 mm, but it is %2 mm")
             .arg(formatNumber(2.0 * ref->segment->from.r_mm), formatNumber(endDiameter_mm));
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, ref->side).segments;
@@ -222,7 +220,7 @@ ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId)
 {
     const std::optional<FeatureRef> ref = findFeature(profile, featureId);
     if (!ref || ref->segment->kind != SegmentKind::Cone)
-        return tr("a cylinder is made from a cone; %1 is not one").arg(featureId);
+        return ProfileEditing::tr("a cylinder is made from a cone; %1 is not one").arg(featureId);
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
@@ -239,28 +237,31 @@ ProfileEdit addBore(const PartProfile &profile, const QString &endFaceId, double
     const bool left = !outer.empty() && outer.front().id == endFaceId;
     const bool right = !outer.empty() && outer.back().id == endFaceId;
     if (!left && !right)
-        return tr("a bore starts at an end face of the part; %1 is not one").arg(endFaceId);
+        return ProfileEditing::tr("a bore starts at an end face of the part; %1 is not one").arg(endFaceId);
     if (!profile.inner.empty())
-        return tr("the part is bored already; edit its bore instead");
+        return ProfileEditing::tr("the part is bored already; edit its bore instead");
     const double length = profile.length_mm();
     const double r = diameter_mm / 2.0;
     if (!(depth_mm > 0.0) || !(r > 0.0))
-        return tr("a bore needs a depth and a diameter above zero, but they are %1 and %2 mm")
+        return ProfileEditing::tr("a bore needs a depth and a diameter above zero, but they are %1 and %2 mm")
             .arg(formatNumber(depth_mm), formatNumber(diameter_mm));
     PartProfile result = profile;
     std::vector<Segment> &inner = result.inner.segments;
     const bool through = depth_mm >= length - kProfileEpsilon_mm;
     const double bottom = left ? std::min(depth_mm, length) : std::max(length - depth_mm, 0.0);
     if (through) {
-        inner.push_back(makeSegment(QStringLiteral("I1"), tr("bore"), SegmentKind::Cylinder, {0.0, r}, {length, r}));
+        inner.push_back(makeSegment(QStringLiteral("I1"), ProfileEditing::tr("bore"), SegmentKind::Cylinder, {0.0, r},
+                                    {length, r}));
     } else if (left) {
-        inner.push_back(makeSegment(QStringLiteral("I1"), tr("bore"), SegmentKind::Cylinder, {0.0, r}, {bottom, r}));
-        inner.push_back(
-            makeSegment(QStringLiteral("I2"), tr("bore bottom"), SegmentKind::Face, {bottom, r}, {bottom, 0.0}));
+        inner.push_back(makeSegment(QStringLiteral("I1"), ProfileEditing::tr("bore"), SegmentKind::Cylinder, {0.0, r},
+                                    {bottom, r}));
+        inner.push_back(makeSegment(QStringLiteral("I2"), ProfileEditing::tr("bore bottom"), SegmentKind::Face,
+                                    {bottom, r}, {bottom, 0.0}));
     } else {
-        inner.push_back(
-            makeSegment(QStringLiteral("I1"), tr("bore bottom"), SegmentKind::Face, {bottom, 0.0}, {bottom, r}));
-        inner.push_back(makeSegment(QStringLiteral("I2"), tr("bore"), SegmentKind::Cylinder, {bottom, r}, {length, r}));
+        inner.push_back(makeSegment(QStringLiteral("I1"), ProfileEditing::tr("bore bottom"), SegmentKind::Face,
+                                    {bottom, 0.0}, {bottom, r}));
+        inner.push_back(makeSegment(QStringLiteral("I2"), ProfileEditing::tr("bore"), SegmentKind::Cylinder,
+                                    {bottom, r}, {length, r}));
     }
     if (left || through)
         result.outer.segments.front().from.r_mm = r;
@@ -273,12 +274,12 @@ ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
 {
     const std::optional<FeatureRef> ref = findFeature(profile, featureId);
     if (!ref)
-        return tr("there is no feature %1").arg(featureId);
+        return ProfileEditing::tr("there is no feature %1").arg(featureId);
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
     if (i == 0 || i + 1 >= s.size())
-        return tr("%1 is an end of the %2 contour; move it instead of deleting it")
+        return ProfileEditing::tr("%1 is an end of the %2 contour; move it instead of deleting it")
             .arg(featureId, contourName(ref->side));
     const Segment removed = s[i];
     s.erase(s.begin() + static_cast<std::ptrdiff_t>(i));
@@ -286,7 +287,8 @@ ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
     if (removed.kind == SegmentKind::Chamfer || removed.kind == SegmentKind::Radius) {
         const std::optional<ProfilePoint> corner = lineIntersection(before, s[i]);
         if (!corner)
-            return tr("the features beside %1 are parallel: there is no corner to give back").arg(featureId);
+            return ProfileEditing::tr("the features beside %1 are parallel: there is no corner to give back")
+                .arg(featureId);
         before.to = *corner;
         s[i].from = *corner;
     } else if (removed.kind == SegmentKind::Face && before.kind == SegmentKind::Cylinder &&

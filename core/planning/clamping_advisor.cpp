@@ -16,11 +16,6 @@ struct ClampingAdvice {
     Q_DECLARE_TR_FUNCTIONS(ClampingAdvice)
 };
 
-QString tr(const char *text)
-{
-    return ClampingAdvice::tr(text);
-}
-
 // Length a chuck can grip: the project's own, or the first outer cylinder (at most a third of the part).
 std::optional<double> gripLength(const Project &p)
 {
@@ -42,13 +37,14 @@ QString describe(const ClampingOption &o, const Project &p)
         return o.reason;
     const CandidateEvaluation &e = o.plan.evaluation;
     if (o.plan.feasible)
-        return tr("meets every constraint: %1 %2 per part")
-            .arg(QString::number(e.objective, 'f', 3),
-                 p.planning.objective == PlanningObjective::Time ? tr("min") : tr("cost"));
+        return ClampingAdvice::tr("meets every constraint: %1 %2 per part")
+            .arg(QString::number(e.objective, 'f', 3), p.planning.objective == PlanningObjective::Time
+                                                           ? ClampingAdvice::tr("min")
+                                                           : ClampingAdvice::tr("cost"));
     QStringList violated;
     for (const ConstraintValue &c : o.plan.conflicts)
-        violated << tr("%1 by %2 %").arg(c.label(), QString::number(100.0 * c.violation(), 'f', 0));
-    return tr("no plan meets every constraint: %1").arg(violated.join(QStringLiteral(", ")));
+        violated << ClampingAdvice::tr("%1 by %2 %").arg(c.label(), QString::number(100.0 * c.violation(), 'f', 0));
+    return ClampingAdvice::tr("no plan meets every constraint: %1").arg(violated.join(QStringLiteral(", ")));
 }
 
 } // namespace
@@ -64,7 +60,7 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         o.method = method;
         const bool chuck = method != ClampingMethod::BetweenCentres;
         if (chuck && !grip) {
-            o.reason = tr("no cylinder at the left end of the part for the chuck jaws to grip");
+            o.reason = ClampingAdvice::tr("no cylinder at the left end of the part for the chuck jaws to grip");
             out.push_back(o);
             continue;
         }
@@ -74,7 +70,8 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         o.clampedLength_mm = p.clamping.clampedLength_mm;
         const PlanningProblem::BuildResult built = PlanningProblem::build(p, data);
         if (!built.problem) {
-            o.reason = built.diagnostics.empty() ? tr("cannot be planned") : built.diagnostics.front().toString();
+            o.reason = built.diagnostics.empty() ? ClampingAdvice::tr("cannot be planned")
+                                                 : built.diagnostics.front().toString();
             out.push_back(o);
             continue;
         }

@@ -14,11 +14,6 @@ struct Compensation {
     Q_DECLARE_TR_FUNCTIONS(Compensation)
 };
 
-QString tr(const char *text)
-{
-    return Compensation::tr(text);
-}
-
 constexpr double kUmPerMm = 1000.0;
 
 // Rounds a programmed radius so that the diameter is a whole micrometre (the path's resolution).
@@ -119,8 +114,9 @@ CompensationPlan planCompensation(const Project &project, const DeviationResult 
             c.featureId = t.featureId;
             c.side = feature->side;
             c.tolerances << t.id;
-            c.note = tr("the face's conicity needs a correction along Z, which TolTurn does not generate: reduce the "
-                        "feed or change the clamping");
+            c.note = Compensation::tr(
+                "the face's conicity needs a correction along Z, which TolTurn does not generate: reduce the "
+                "feed or change the clamping");
             plan.features.push_back(c);
         }
     }

@@ -19,11 +19,6 @@ struct Planning {
     Q_DECLARE_TR_FUNCTIONS(Planning)
 };
 
-QString tr(const char *text)
-{
-    return Planning::tr(text);
-}
-
 constexpr double kPi = std::numbers::pi;
 constexpr int kStations = 11; // tool positions per feature for tolerances and times
 
@@ -32,7 +27,7 @@ constexpr int kStations = 11; // tool positions per feature for tolerances and t
 QString ConstraintValue::label() const
 {
     if (name == QLatin1String("tolerances"))
-        return tr("tolerance %1").arg(subject);
+        return Planning::tr("tolerance %1").arg(subject);
     return QStringLiteral("%1 (%2)").arg(name, subject);
 }
 
@@ -66,8 +61,9 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     Diagnostics &out = result.diagnostics;
     const PlanningSettings &s = project.planning;
     if (!s.cuttingSpeed_m_min || !s.feed_mm_rev || !s.depthOfCut_mm) {
-        out.push_back(makeError(QStringLiteral("planning.ranges"),
-                                tr("the optimiser needs the insert's ranges of cutting speed, feed and depth of cut "
+        out.push_back(
+            makeError(QStringLiteral("planning.ranges"),
+                      Planning::tr("the optimiser needs the insert's ranges of cutting speed, feed and depth of cut "
                                    "(from its maker's catalogue), with their source")));
         return result;
     }
@@ -113,10 +109,11 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
         p.m_finishPaths.push_back(std::move(path));
     }
     if (!s.taylorC_m_min || !s.taylorN)
-        p.m_notes << tr("No Taylor constants in the project's planning data: tool life and tool cost are not in the "
-                        "objective, and there is no tool-life constraint.");
+        p.m_notes << Planning::tr(
+            "No Taylor constants in the project's planning data: tool life and tool cost are not in the "
+            "objective, and there is no tool-life constraint.");
     if (!p.m_maxTorque_Nm)
-        p.m_notes << tr("No spindle torque limit given (planning.max_torque_Nm): torque is not constrained.");
+        p.m_notes << Planning::tr("No spindle torque limit given (planning.max_torque_Nm): torque is not constrained.");
     result.problem = problem;
     return result;
 }

@@ -18,11 +18,6 @@ struct ProjectValidation {
     Q_DECLARE_TR_FUNCTIONS(ProjectValidation)
 };
 
-QString tr(const char *text)
-{
-    return ProjectValidation::tr(text);
-}
-
 QString num(double v)
 {
     return formatNumber(v);
@@ -31,7 +26,7 @@ QString num(double v)
 void requireText(const QString &value, const QString &field, const QString &what, Diagnostics &out)
 {
     if (value.trimmed().isEmpty())
-        out.push_back(makeError(field, tr("%1 is missing (empty)").arg(what)));
+        out.push_back(makeError(field, ProjectValidation::tr("%1 is missing (empty)").arg(what)));
 }
 
 void checkClamping(const Project &p, Diagnostics &out)
@@ -39,7 +34,7 @@ void checkClamping(const Project &p, Diagnostics &out)
     const double clamped = p.clamping.clampedLength_mm;
     const QString field = QStringLiteral("clamping.clamped_length_mm");
     if (!std::isfinite(clamped) || clamped < 0.0) {
-        out.push_back(makeError(field, tr("must be zero or more, but is %1 mm").arg(num(clamped))));
+        out.push_back(makeError(field, ProjectValidation::tr("must be zero or more, but is %1 mm").arg(num(clamped))));
         return;
     }
     const double length = p.part.length_mm();
@@ -47,19 +42,22 @@ void checkClamping(const Project &p, Diagnostics &out)
     case ClampingMethod::Chuck:
     case ClampingMethod::ChuckTailstock:
         if (clamped <= 0.0)
-            out.push_back(makeError(field, tr("a part held in a chuck needs a clamped length above zero, but it "
-                                              "is %1 mm")
-                                               .arg(num(clamped))));
+            out.push_back(makeError(
+                field, ProjectValidation::tr("a part held in a chuck needs a clamped length above zero, but it "
+                                             "is %1 mm")
+                           .arg(num(clamped))));
         else if (length > 0.0 && clamped >= length)
-            out.push_back(makeError(field, tr("the clamped length %1 mm leaves nothing to turn on a part %2 mm "
-                                              "long")
-                                               .arg(num(clamped), num(length))));
+            out.push_back(makeError(
+                field, ProjectValidation::tr("the clamped length %1 mm leaves nothing to turn on a part %2 mm "
+                                             "long")
+                           .arg(num(clamped), num(length))));
         break;
     case ClampingMethod::BetweenCentres:
         if (clamped > 0.0)
-            out.push_back(makeWarning(field, tr("a part between centres is not clamped; the clamped length %1 mm "
-                                                "is ignored")
-                                                 .arg(num(clamped))));
+            out.push_back(makeWarning(
+                field, ProjectValidation::tr("a part between centres is not clamped; the clamped length %1 mm "
+                                             "is ignored")
+                           .arg(num(clamped))));
         break;
     }
 }
@@ -74,8 +72,8 @@ void checkPasses(const Project &p, Diagnostics &out)
                                                           {"depth_of_cut_mm", pass.depthOfCut_mm}};
         for (const auto &[name, value] : values) {
             if (!std::isfinite(value) || value <= 0.0)
-                out.push_back(
-                    makeError(path + QLatin1String(name), tr("must be above zero, but is %1").arg(num(value))));
+                out.push_back(makeError(path + QLatin1String(name),
+                                        ProjectValidation::tr("must be above zero, but is %1").arg(num(value))));
         }
     }
 }
@@ -90,13 +88,15 @@ void checkDatums(const Project &p, Diagnostics &out)
         if (!label.match(d.label).hasMatch())
             out.push_back(
                 makeError(path + QStringLiteral("label"),
-                          tr("a datum is named by one or two capital letters (ISO 5459), not '%1'").arg(d.label)));
+                          ProjectValidation::tr("a datum is named by one or two capital letters (ISO 5459), not '%1'")
+                              .arg(d.label)));
         else if (seen.contains(d.label))
-            out.push_back(makeError(path + QStringLiteral("label"), tr("datum '%1' is defined twice").arg(d.label)));
+            out.push_back(makeError(path + QStringLiteral("label"),
+                                    ProjectValidation::tr("datum '%1' is defined twice").arg(d.label)));
         seen.insert(d.label);
         if (!findFeature(p.part, d.featureId))
             out.push_back(makeError(path + QStringLiteral("feature"),
-                                    tr("there is no feature '%1' in the profile").arg(d.featureId)));
+                                    ProjectValidation::tr("there is no feature '%1' in the profile").arg(d.featureId)));
     }
 }
 
@@ -138,8 +138,9 @@ void checkSizeLimits(const Tolerance &t, const FeatureRef &feature, const QStrin
     const bool hasClass = !t.iso286Class.isEmpty();
     const bool hasLimits = t.upperDeviation_um.has_value() || t.lowerDeviation_um.has_value();
     if (hasClass == hasLimits) {
-        out.push_back(makeError(path + QStringLiteral("iso286"),
-                                tr("give either an ISO 286 class or both limit deviations (upper_um, lower_um)")));
+        out.push_back(makeError(
+            path + QStringLiteral("iso286"),
+            ProjectValidation::tr("give either an ISO 286 class or both limit deviations (upper_um, lower_um)")));
         return;
     }
     if (hasClass) {
@@ -147,49 +148,54 @@ void checkSizeLimits(const Tolerance &t, const FeatureRef &feature, const QStrin
         if (!match.hasMatch()) {
             out.push_back(makeError(
                 path + QStringLiteral("iso286"),
-                tr("'%1' is not an ISO 286 tolerance class (a letter and a grade, e.g. h6 or H7)").arg(t.iso286Class)));
+                ProjectValidation::tr("'%1' is not an ISO 286 tolerance class (a letter and a grade, e.g. h6 or H7)")
+                    .arg(t.iso286Class)));
             return;
         }
         if (t.type == ToleranceType::Diameter) {
             const bool holeClass = match.captured(1).at(0).isUpper();
             const bool bore = feature.side == ContourSide::Inner;
             if (holeClass != bore)
-                out.push_back(makeError(path + QStringLiteral("iso286"),
-                                        (bore ? tr("'%1' is a shaft class, but feature '%2' is a bore: use capital "
-                                                   "letters (e.g. H7)")
-                                              : tr("'%1' is a hole class, but feature '%2' is an outer surface: use "
-                                                   "small letters (e.g. h6)"))
-                                            .arg(t.iso286Class, t.featureId)));
+                out.push_back(makeError(
+                    path + QStringLiteral("iso286"),
+                    (bore ? ProjectValidation::tr("'%1' is a shaft class, but feature '%2' is a bore: use capital "
+                                                  "letters (e.g. H7)")
+                          : ProjectValidation::tr("'%1' is a hole class, but feature '%2' is an outer surface: use "
+                                                  "small letters (e.g. h6)"))
+                        .arg(t.iso286Class, t.featureId)));
         }
         return;
     }
     if (!t.upperDeviation_um || !t.lowerDeviation_um) {
         out.push_back(makeError(path + (t.upperDeviation_um ? QStringLiteral("lower_um") : QStringLiteral("upper_um")),
-                                tr("both limit deviations are needed, upper_um and lower_um")));
+                                ProjectValidation::tr("both limit deviations are needed, upper_um and lower_um")));
         return;
     }
     if (*t.upperDeviation_um <= *t.lowerDeviation_um)
-        out.push_back(makeError(path + QStringLiteral("upper_um"),
-                                tr("the upper deviation %1 µm must be above the lower deviation %2 µm")
-                                    .arg(num(*t.upperDeviation_um), num(*t.lowerDeviation_um))));
+        out.push_back(
+            makeError(path + QStringLiteral("upper_um"),
+                      ProjectValidation::tr("the upper deviation %1 µm must be above the lower deviation %2 µm")
+                          .arg(num(*t.upperDeviation_um), num(*t.lowerDeviation_um))));
 }
 
 void checkGeometric(const Tolerance &t, const QSet<QString> &datumLabels, const QString &path, Diagnostics &out)
 {
     if (!t.zone_um || !std::isfinite(*t.zone_um) || *t.zone_um <= 0.0) {
-        out.push_back(
-            makeError(path + QStringLiteral("value_um"),
-                      tr("a %1 tolerance needs a zone width above zero, but it is %2")
-                          .arg(keyword(t.type), t.zone_um ? num(*t.zone_um) + QStringLiteral(" µm") : tr("missing"))));
+        out.push_back(makeError(path + QStringLiteral("value_um"),
+                                ProjectValidation::tr("a %1 tolerance needs a zone width above zero, but it is %2")
+                                    .arg(keyword(t.type), t.zone_um ? num(*t.zone_um) + QStringLiteral(" µm")
+                                                                    : ProjectValidation::tr("missing"))));
     }
     if (needsDatum(t.type) && t.datums.isEmpty())
         out.push_back(
             makeError(path + QStringLiteral("datums"),
-                      tr("a %1 tolerance is defined relative to a datum, but none is given").arg(keyword(t.type))));
+                      ProjectValidation::tr("a %1 tolerance is defined relative to a datum, but none is given")
+                          .arg(keyword(t.type))));
     for (const QString &label : t.datums) {
         if (!datumLabels.contains(label))
-            out.push_back(makeError(path + QStringLiteral("datums"),
-                                    tr("datum '%1' is not defined in the project's datums").arg(label)));
+            out.push_back(
+                makeError(path + QStringLiteral("datums"),
+                          ProjectValidation::tr("datum '%1' is not defined in the project's datums").arg(label)));
     }
 }
 
@@ -199,23 +205,24 @@ void checkTolerance(const Project &p, const Tolerance &t, const QSet<QString> &d
     const auto feature = findFeature(p.part, t.featureId);
     if (!feature) {
         out.push_back(makeError(path + QStringLiteral("feature"),
-                                tr("there is no feature '%1' in the profile").arg(t.featureId)));
+                                ProjectValidation::tr("there is no feature '%1' in the profile").arg(t.featureId)));
         return;
     }
     if (!toleranceFitsFeature(t.type, feature->segment->kind))
         out.push_back(makeError(path + QStringLiteral("feature"),
-                                tr("a %1 tolerance cannot sit on feature '%2', which is a %3")
+                                ProjectValidation::tr("a %1 tolerance cannot sit on feature '%2', which is a %3")
                                     .arg(keyword(t.type), t.featureId, keyword(feature->segment->kind))));
     if (t.type == ToleranceType::Length) {
         const auto other = findFeature(p.part, t.toFeatureId);
         if (!other)
             out.push_back(makeError(
                 path + QStringLiteral("to_feature"),
-                tr("a length runs between two faces; there is no feature '%1' in the profile").arg(t.toFeatureId)));
+                ProjectValidation::tr("a length runs between two faces; there is no feature '%1' in the profile")
+                    .arg(t.toFeatureId)));
         else if (other->segment->kind != SegmentKind::Face || t.toFeatureId == t.featureId)
-            out.push_back(
-                makeError(path + QStringLiteral("to_feature"),
-                          tr("a length runs between two different faces; '%1' is not one").arg(t.toFeatureId)));
+            out.push_back(makeError(path + QStringLiteral("to_feature"),
+                                    ProjectValidation::tr("a length runs between two different faces; '%1' is not one")
+                                        .arg(t.toFeatureId)));
     }
     if (isSizeTolerance(t.type))
         checkSizeLimits(t, *feature, path, out);
@@ -233,10 +240,11 @@ void checkTolerances(const Project &p, Diagnostics &out)
         const Tolerance &t = p.tolerances[i];
         const QString path = QStringLiteral("tolerances[%1].").arg(i);
         if (t.id.trimmed().isEmpty())
-            out.push_back(
-                makeError(path + QStringLiteral("id"), tr("every tolerance needs an id, but this one is empty")));
+            out.push_back(makeError(path + QStringLiteral("id"),
+                                    ProjectValidation::tr("every tolerance needs an id, but this one is empty")));
         else if (ids.contains(t.id))
-            out.push_back(makeError(path + QStringLiteral("id"), tr("the id '%1' is used twice").arg(t.id)));
+            out.push_back(
+                makeError(path + QStringLiteral("id"), ProjectValidation::tr("the id '%1' is used twice").arg(t.id)));
         ids.insert(t.id);
         checkTolerance(p, t, datumLabels, path, out);
     }
@@ -245,13 +253,13 @@ void checkTolerances(const Project &p, Diagnostics &out)
 void requirePositive(const std::optional<double> &value, const QString &field, Diagnostics &out)
 {
     if (value && (!std::isfinite(*value) || *value <= 0.0))
-        out.push_back(makeError(field, tr("must be above zero, but is %1").arg(num(*value))));
+        out.push_back(makeError(field, ProjectValidation::tr("must be above zero, but is %1").arg(num(*value))));
 }
 
 void requireNonNegative(std::optional<double> value, const QString &field, Diagnostics &out)
 {
     if (value && (!std::isfinite(*value) || *value < 0.0))
-        out.push_back(makeError(field, tr("must be zero or more, but is %1").arg(num(*value))));
+        out.push_back(makeError(field, ProjectValidation::tr("must be zero or more, but is %1").arg(num(*value))));
 }
 
 void checkCuttingModel(const Project &p, Diagnostics &out)
@@ -262,9 +270,10 @@ void checkCuttingModel(const Project &p, Diagnostics &out)
     requirePositive(m.normalPressure_MPa, QStringLiteral("cutting_model.normal_pressure_MPa"), out);
     requireNonNegative(m.frictionRatio, QStringLiteral("cutting_model.friction_ratio"), out);
     if (m.forceModel == ForceModel::LiDu && (!m.normalPressure_MPa || !m.frictionRatio))
-        out.push_back(makeError(QStringLiteral("cutting_model"),
-                                tr("the li_du force model needs normal_pressure_MPa (K_n) and friction_ratio (K_f); "
-                                   "fit them from measured forces with 'tolturn-cli calibrate-forces'")));
+        out.push_back(makeError(
+            QStringLiteral("cutting_model"),
+            ProjectValidation::tr("the li_du force model needs normal_pressure_MPa (K_n) and friction_ratio (K_f); "
+                                  "fit them from measured forces with 'tolturn-cli calibrate-forces'")));
     requirePositive(p.tool.overhang_mm, QStringLiteral("tool.overhang_mm"), out);
 }
 
@@ -291,7 +300,7 @@ void checkCharacterisation(const Project &p, Diagnostics &out)
     if (c == MachineCharacterisation{})
         return;
     requireText(c.source, QStringLiteral("characterisation.source"),
-                tr("where the machine characterisation comes from"), out);
+                ProjectValidation::tr("where the machine characterisation comes from"), out);
     checkSprings(c.spindleRadial, QStringLiteral("characterisation.spindle_radial"), out);
     checkSprings(c.spindleTangential, QStringLiteral("characterisation.spindle_tangential"), out);
     checkSupport(c.tailstock, QStringLiteral("characterisation.tailstock"), out);
@@ -299,7 +308,8 @@ void checkCharacterisation(const Project &p, Diagnostics &out)
     if ((c.spindleRadial || c.spindleTangential) && !c.pivotDistance_mm)
         out.push_back(
             makeError(QStringLiteral("characterisation.pivot_distance_mm"),
-                      tr("spindle springs need the pivot distance Lc of the k2 spring behind the chuck face")));
+                      ProjectValidation::tr(
+                          "spindle springs need the pivot distance Lc of the k2 spring behind the chuck face")));
     requireNonNegative(c.pivotDistance_mm, QStringLiteral("characterisation.pivot_distance_mm"), out);
     if (c.thermal)
         requirePositive(c.thermal->timeConstant_min, QStringLiteral("characterisation.thermal.time_constant_min"), out);
@@ -311,12 +321,12 @@ void checkRange(const std::optional<ValueRange> &range, const QString &field, Di
     if (!range)
         return;
     if (!std::isfinite(range->min) || range->min <= 0.0)
-        out.push_back(
-            makeError(field + QStringLiteral(".min"), tr("must be above zero, but is %1").arg(num(range->min))));
+        out.push_back(makeError(field + QStringLiteral(".min"),
+                                ProjectValidation::tr("must be above zero, but is %1").arg(num(range->min))));
     else if (!std::isfinite(range->max) || range->max < range->min)
-        out.push_back(
-            makeError(field + QStringLiteral(".max"),
-                      tr("must be at least the minimum %1, but is %2").arg(num(range->min), num(range->max))));
+        out.push_back(makeError(
+            field + QStringLiteral(".max"),
+            ProjectValidation::tr("must be at least the minimum %1, but is %2").arg(num(range->min), num(range->max))));
 }
 
 void checkPlanning(const Project &p, Diagnostics &out)
@@ -331,18 +341,19 @@ void checkPlanning(const Project &p, Diagnostics &out)
         requireNonNegative(value, path + QLatin1String(name), out);
     requirePositive(s.taylorC_m_min, path + QStringLiteral("tool_life.C_m_min"), out);
     if (s.taylorN && (!std::isfinite(*s.taylorN) || *s.taylorN <= 0.0 || *s.taylorN >= 1.0))
-        out.push_back(makeError(path + QStringLiteral("tool_life.n"),
-                                tr("the Taylor exponent n lies between 0 and 1, but is %1").arg(num(*s.taylorN))));
+        out.push_back(makeError(
+            path + QStringLiteral("tool_life.n"),
+            ProjectValidation::tr("the Taylor exponent n lies between 0 and 1, but is %1").arg(num(*s.taylorN))));
     if (s.taylorC_m_min)
         requireText(s.toolLifeSource, path + QStringLiteral("tool_life.source"),
-                    tr("the source of the Taylor constants"), out);
+                    ProjectValidation::tr("the source of the Taylor constants"), out);
     requirePositive(s.minToolLife_min, path + QStringLiteral("tool_life.min_minutes"), out);
     checkRange(s.cuttingSpeed_m_min, path + QStringLiteral("ranges.cutting_speed_m_min"), out);
     checkRange(s.feed_mm_rev, path + QStringLiteral("ranges.feed_mm_rev"), out);
     checkRange(s.depthOfCut_mm, path + QStringLiteral("ranges.depth_of_cut_mm"), out);
     if (s.cuttingSpeed_m_min || s.feed_mm_rev || s.depthOfCut_mm)
-        requireText(s.rangesSource, path + QStringLiteral("ranges.source"), tr("the source of the cutting ranges"),
-                    out);
+        requireText(s.rangesSource, path + QStringLiteral("ranges.source"),
+                    ProjectValidation::tr("the source of the cutting ranges"), out);
     const std::pair<const char *, std::optional<double>> limits[] = {
         {"max_ra_um", s.maxRa_um},         {"max_rz_um", s.maxRz_um},
         {"max_force_N", s.maxForce_N},     {"max_power_kW", s.maxPower_kW},
@@ -352,7 +363,7 @@ void checkPlanning(const Project &p, Diagnostics &out)
     for (const QString &name : s.disabledConstraints) {
         if (!planningConstraintKeywords().contains(name))
             out.push_back(makeError(path + QStringLiteral("disabled_constraints"),
-                                    tr("unknown constraint \"%1\"; the constraints are: %2")
+                                    ProjectValidation::tr("unknown constraint \"%1\"; the constraints are: %2")
                                         .arg(name, planningConstraintKeywords().join(QStringLiteral(", ")))));
     }
 }
@@ -362,9 +373,9 @@ void checkPlanning(const Project &p, Diagnostics &out)
 Diagnostics validateProject(const Project &project)
 {
     Diagnostics out = validateProfile(project.part);
-    requireText(project.materialId, QStringLiteral("material"), tr("the work material"), out);
-    requireText(project.machineId, QStringLiteral("machine"), tr("the machine"), out);
-    requireText(project.tool.insertCode, QStringLiteral("tool.insert"), tr("the insert code"), out);
+    requireText(project.materialId, QStringLiteral("material"), ProjectValidation::tr("the work material"), out);
+    requireText(project.machineId, QStringLiteral("machine"), ProjectValidation::tr("the machine"), out);
+    requireText(project.tool.insertCode, QStringLiteral("tool.insert"), ProjectValidation::tr("the insert code"), out);
     checkClamping(project, out);
     checkPasses(project, out);
     checkDatums(project, out);

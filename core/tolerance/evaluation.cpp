@@ -18,11 +18,6 @@ struct ToleranceVerdicts {
     Q_DECLARE_TR_FUNCTIONS(ToleranceVerdicts)
 };
 
-QString tr(const char *text)
-{
-    return ToleranceVerdicts::tr(text);
-}
-
 constexpr double kUmPerMm = 1000.0;
 
 // Whether conditions and reasons are written out (evaluateTolerances' `detail`): the optimiser
@@ -77,8 +72,9 @@ void notCut(ToleranceEvaluation &e, const QString &featureId)
 {
     e.verdict = Verdict::CannotEvaluate;
     say(e.reason, [&] {
-        return QString(tr("feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported "
-                          "length), so no deviation is predicted for it")
+        return QString(ToleranceVerdicts::tr(
+                           "feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported "
+                           "length), so no deviation is predicted for it")
                            .arg(featureId));
     });
 }
@@ -93,8 +89,8 @@ bool sizeLimits(const Tolerance &t, double nominal_mm, ToleranceEvaluation &e)
         if (!limits.limits) {
             e.verdict = Verdict::CannotEvaluate;
             say(e.reason, [&] {
-                return QString(
-                    tr("the limits of %1 at %2 mm cannot be formed").arg(t.iso286Class, formatNumber(nominal_mm)));
+                return QString(ToleranceVerdicts::tr("the limits of %1 at %2 mm cannot be formed")
+                                   .arg(t.iso286Class, formatNumber(nominal_mm)));
             });
             return false;
         }
@@ -129,20 +125,24 @@ void evaluateDiameter(const Tolerance &t, const FeatureRef &feature, const Devia
     setValue(e, form, tolerance);
     if (*e.predictedMax_um <= *e.upper_um && *e.predictedMin_um >= *e.lower_um) {
         e.verdict = Verdict::PassesAsProgrammed;
-        say(e.condition, [&] { return QString(tr("Fig. 4b, eq. 13: D'_Md <= Dn + dDu and D'_md >= Dn + dDl")); });
+        say(e.condition,
+            [&] { return QString(ToleranceVerdicts::tr("Fig. 4b, eq. 13: D'_Md <= Dn + dDu and D'_md >= Dn + dDl")); });
     } else if (form <= tolerance) {
         e.verdict = Verdict::PassesAfterOffset;
         e.offset_um = 0.5 * (*e.upper_um + *e.lower_um) - 0.5 * (*e.predictedMax_um + *e.predictedMin_um);
         say(e.condition, [&] {
-            return QString(tr("Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| <= t"));
+            return QString(ToleranceVerdicts::tr(
+                "Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| <= t"));
         });
         say(e.reason, [&] {
-            return QString(tr("a constant tool offset of %1 µm on the diameter centres the size in its tolerance")
+            return QString(ToleranceVerdicts::tr(
+                               "a constant tool offset of %1 µm on the diameter centres the size in its tolerance")
                                .arg(QString::number(*e.offset_um, 'f', 1)));
         });
     } else {
         e.verdict = Verdict::NeedsProfileCorrection;
-        say(e.condition, [&] { return QString(tr("Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| > t")); });
+        say(e.condition,
+            [&] { return QString(ToleranceVerdicts::tr("Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| > t")); });
     }
 }
 
@@ -164,7 +164,7 @@ void evaluateLength(const Project &p, const Tolerance &t, const DeviationResult 
     const double value = (fi->axialRunout_mm + fj->axialRunout_mm) * kUmPerMm;
     setValue(e, value, *e.upper_um - *e.lower_um);
     e.verdict = value <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-    say(e.condition, [&] { return QString(tr("Fig. 4a, eq. 11–12: e_i + e_j <= t")); });
+    say(e.condition, [&] { return QString(ToleranceVerdicts::tr("Fig. 4a, eq. 11–12: e_i + e_j <= t")); });
 }
 
 // A face's own conicity against the zone (flatness eq. 16; parallelism eq. 23; perpendicularity
@@ -233,20 +233,25 @@ void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const Deviat
     setValue(e, value, zone);
     if (value <= zone) {
         e.verdict = Verdict::PassesAsProgrammed;
-        say(e.condition, [&] { return QString(tr("Fig. 4e, eq. 22: delta_TMd + delta_Tmd <= t / cos(alpha)")); });
+        say(e.condition,
+            [&] { return QString(ToleranceVerdicts::tr("Fig. 4e, eq. 22: delta_TMd + delta_Tmd <= t / cos(alpha)")); });
     } else if (largest - smallest <= zone) {
         e.verdict = Verdict::PassesAfterOffset;
         e.offset_um = -0.5 * (largest + smallest);
         say(e.condition, [&] {
-            return QString(tr("Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t"));
+            return QString(ToleranceVerdicts::tr(
+                "Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t"));
         });
         say(e.reason, [&] {
-            return QString(tr("a constant offset of %1 µm normal to the surface centres it in the zone")
-                               .arg(QString::number(*e.offset_um, 'f', 1)));
+            return QString(
+                ToleranceVerdicts::tr("a constant offset of %1 µm normal to the surface centres it in the zone")
+                    .arg(QString::number(*e.offset_um, 'f', 1)));
         });
     } else {
         e.verdict = Verdict::NeedsProfileCorrection;
-        say(e.condition, [&] { return QString(tr("Fig. 4e, eq. 22: the spread of the normal deviation exceeds t")); });
+        say(e.condition, [&] {
+            return QString(ToleranceVerdicts::tr("Fig. 4e, eq. 22: the spread of the normal deviation exceeds t"));
+        });
     }
 }
 
@@ -264,7 +269,8 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
     e.featureId = t.featureId;
     const auto feature = findFeature(p.part, t.featureId);
     if (!feature) {
-        say(e.reason, [&] { return QString(tr("there is no feature '%1' in the profile").arg(t.featureId)); });
+        say(e.reason,
+            [&] { return QString(ToleranceVerdicts::tr("there is no feature '%1' in the profile").arg(t.featureId)); });
         return e;
     }
     switch (t.type) {
@@ -275,41 +281,44 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
         evaluateLength(p, t, r, e);
         break;
     case ToleranceType::Flatness:
-        evaluateFaceConicity(t, r, e, tr("Fig. 4c, eq. 16: e_i <= t"));
+        evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4c, eq. 16: e_i <= t"));
         break;
     case ToleranceType::Parallelism:
-        evaluateFaceConicity(t, r, e, tr("Fig. 4f, eq. 23: e_j <= t"));
+        evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4f, eq. 23: e_j <= t"));
         break;
     case ToleranceType::TotalAxialRunout:
-        evaluateFaceConicity(t, r, e, tr("Fig. 4i, §V.J (eq. 16 and 24): e_j <= t"));
+        evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4i, §V.J (eq. 16 and 24): e_j <= t"));
         break;
     case ToleranceType::Perpendicularity:
         if (feature->segment->kind == SegmentKind::Face)
-            evaluateFaceConicity(t, r, e, tr("Fig. 4g, eq. 24 (face to the datum axis): e_j <= t"));
+            evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4g, eq. 24 (face to the datum axis): e_j <= t"));
         else
-            notPredicted(e, tr("Perpendicularity of an axis to a face depends on how the part is aligned in the "
-                               "lathe; the axis recovers elastically after cutting, so the cutting-force deflection "
-                               "does not decide it (Valiño et al. 2008 §V.G.2)."));
+            notPredicted(e, ToleranceVerdicts::tr(
+                                "Perpendicularity of an axis to a face depends on how the part is aligned in the "
+                                "lathe; the axis recovers elastically after cutting, so the cutting-force deflection "
+                                "does not decide it (Valiño et al. 2008 §V.G.2)."));
         break;
     case ToleranceType::Cylindricity:
-        evaluateRadialSpread(t, r, e, tr("Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| <= t"));
+        evaluateRadialSpread(t, r, e, ToleranceVerdicts::tr("Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| <= t"));
         break;
     case ToleranceType::TotalRadialRunout:
-        evaluateRadialSpread(t, r, e, tr("Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| <= t"));
+        evaluateRadialSpread(t, r, e, ToleranceVerdicts::tr("Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| <= t"));
         break;
     case ToleranceType::Profile:
         evaluateProfile(t, *feature, r, e);
         break;
     case ToleranceType::Coaxiality:
-        notPredicted(e, tr("Coaxiality limits how far parts of the axis lie apart; the axis recovers elastically "
-                           "after cutting, so the error comes from set-up and alignment, not from the cutting-force "
-                           "deflection (Valiño et al. 2008 §V.H)."));
+        notPredicted(e, ToleranceVerdicts::tr(
+                            "Coaxiality limits how far parts of the axis lie apart; the axis recovers elastically "
+                            "after cutting, so the error comes from set-up and alignment, not from the cutting-force "
+                            "deflection (Valiño et al. 2008 §V.H)."));
         break;
     case ToleranceType::CircularRadialRunout:
     case ToleranceType::CircularAxialRunout:
-        notPredicted(e, tr("The deflection under the cutting force is symmetrical about the axis of rotation and "
-                           "leaves no circular run-out; that comes from clamping deformation or misalignment "
-                           "(Valiño et al. 2008 §V.I)."));
+        notPredicted(e, ToleranceVerdicts::tr(
+                            "The deflection under the cutting force is symmetrical about the axis of rotation and "
+                            "leaves no circular run-out; that comes from clamping deformation or misalignment "
+                            "(Valiño et al. 2008 §V.I)."));
         break;
     }
     return e;
@@ -356,15 +365,15 @@ QString verdictName(Verdict verdict)
 {
     switch (verdict) {
     case Verdict::PassesAsProgrammed:
-        return tr("passes as programmed");
+        return ToleranceVerdicts::tr("passes as programmed");
     case Verdict::PassesAfterOffset:
-        return tr("passes after a constant offset");
+        return ToleranceVerdicts::tr("passes after a constant offset");
     case Verdict::NeedsProfileCorrection:
-        return tr("needs a profile correction");
+        return ToleranceVerdicts::tr("needs a profile correction");
     case Verdict::NotPredicted:
-        return tr("not predicted by this model");
+        return ToleranceVerdicts::tr("not predicted by this model");
     case Verdict::CannotEvaluate:
-        return tr("cannot be evaluated");
+        return ToleranceVerdicts::tr("cannot be evaluated");
     }
     return {};
 }

@@ -22,11 +22,6 @@ struct Iso286 {
     Q_DECLARE_TR_FUNCTIONS(Iso286)
 };
 
-QString tr(const char *text)
-{
-    return Iso286::tr(text);
-}
-
 QString num(double v)
 {
     return formatNumber(v);
@@ -56,7 +51,7 @@ QString letterList(Kind kind)
 
 QString kindWord(Kind kind)
 {
-    return kind == Kind::Hole ? tr("hole") : tr("shaft");
+    return kind == Kind::Hole ? Iso286::tr("hole") : Iso286::tr("shaft");
 }
 
 QString gradeSuffix(int itGrade)
@@ -71,21 +66,23 @@ QString gradeSuffix(int itGrade)
 bool checkNominal(double nominal_mm, const QString &field, Diagnostics &out)
 {
     if (!std::isfinite(nominal_mm)) {
-        out.push_back(makeError(field, tr("the nominal size is not a finite number")));
+        out.push_back(makeError(field, Iso286::tr("the nominal size is not a finite number")));
         return false;
     }
     if (nominal_mm == 0.0) {
-        out.push_back(makeError(field, tr("0 mm is not a nominal size: the first range of ISO 286 is above 0 up to and "
-                                          "including 3 mm")));
+        out.push_back(
+            makeError(field, Iso286::tr("0 mm is not a nominal size: the first range of ISO 286 is above 0 up to and "
+                                        "including 3 mm")));
         return false;
     }
     if (nominal_mm < 0.0) {
-        out.push_back(makeError(field, tr("the nominal size must be above 0 mm, but is %1 mm").arg(num(nominal_mm))));
+        out.push_back(
+            makeError(field, Iso286::tr("the nominal size must be above 0 mm, but is %1 mm").arg(num(nominal_mm))));
         return false;
     }
     if (nominal_mm > kMaxNominal_mm) {
-        out.push_back(
-            makeError(field, tr("%1 mm is above 3150 mm, the largest nominal size of ISO 286").arg(num(nominal_mm))));
+        out.push_back(makeError(
+            field, Iso286::tr("%1 mm is above 3150 mm, the largest nominal size of ISO 286").arg(num(nominal_mm))));
         return false;
     }
     return true;
@@ -99,23 +96,26 @@ std::optional<double> toleranceFor(double nominal_mm, int itGrade, const QString
         return std::nullopt;
     const auto it = tables::standardTolerance_um(*range, itGrade);
     if (!it) {
-        out.push_back(makeError(gradeField, tr("%1 is given by ISO 286-1 only for nominal sizes up to and including "
-                                               "500 mm, not for %2 mm")
-                                                .arg(itGradeName(itGrade), num(nominal_mm))));
+        out.push_back(
+            makeError(gradeField, Iso286::tr("%1 is given by ISO 286-1 only for nominal sizes up to and including "
+                                             "500 mm, not for %2 mm")
+                                      .arg(itGradeName(itGrade), num(nominal_mm))));
         return std::nullopt;
     }
     // ISO 286-1:2010 Table 1, note: IT14 to IT18 shall not be used for nominal sizes up to and including 1 mm.
     if (itGrade >= 14 && nominal_mm <= 1.0) {
-        out.push_back(makeError(gradeField, tr("%1 shall not be used for nominal sizes up to and including 1 mm "
-                                               "(ISO 286-1 Table 1), but the size is %2 mm")
-                                                .arg(itGradeName(itGrade), num(nominal_mm))));
+        out.push_back(
+            makeError(gradeField, Iso286::tr("%1 shall not be used for nominal sizes up to and including 1 mm "
+                                             "(ISO 286-1 Table 1), but the size is %2 mm")
+                                      .arg(itGradeName(itGrade), num(nominal_mm))));
         return std::nullopt;
     }
     // ISO 286-1:2010 Table 1, note: IT1 to IT5 above 500 mm are included for experimental use.
     if (itGrade >= 1 && itGrade <= 5 && nominal_mm > 500.0)
-        out.push_back(makeWarning(gradeField, tr("%1 above 500 mm is given by ISO 286-1 for experimental use only "
-                                                 "(size %2 mm)")
-                                                  .arg(itGradeName(itGrade), num(nominal_mm))));
+        out.push_back(
+            makeWarning(gradeField, Iso286::tr("%1 above 500 mm is given by ISO 286-1 for experimental use only "
+                                               "(size %2 mm)")
+                                        .arg(itGradeName(itGrade), num(nominal_mm))));
     return it;
 }
 
@@ -211,10 +211,11 @@ private:
         // defined there; above 3 mm Δ is tabulated for IT3 to IT8 only.
         const auto delta = m_tolRange == 0 ? std::optional<double>(0.0) : tables::delta_um(m_tolRange, grade);
         if (!delta) {
-            m_out.push_back(makeError(m_field, tr("hole %1 is not defined: ISO 286-1 forms %2 up to IT%3 as ES = -ei + "
-                                                  "Δ, and tabulates Δ only for IT3 to IT8")
-                                                   .arg(m_cls.name, letterName(letter))
-                                                   .arg(deltaUpTo)));
+            m_out.push_back(
+                makeError(m_field, Iso286::tr("hole %1 is not defined: ISO 286-1 forms %2 up to IT%3 as ES = -ei + "
+                                              "Δ, and tabulates Δ only for IT3 to IT8")
+                                       .arg(m_cls.name, letterName(letter))
+                                       .arg(deltaUpTo)));
             return std::nullopt;
         }
         // Special case (ISO 286-1:2010 Table 4, note): M6 from above 250 up to 315 mm has ES = -9 µm (instead
@@ -231,10 +232,11 @@ private:
         if (letter == Letter::K) {
             // K above IT8 is tabulated (0) only up to 3 mm; the cells above 3 mm are empty.
             if (m_devRange != 0) {
-                m_out.push_back(makeError(m_field, tr("hole %1 is not defined for a nominal size of %2 mm: ISO 286-1 "
-                                                      "gives K above IT8 only for nominal sizes up to and including "
-                                                      "3 mm")
-                                                       .arg(m_cls.name, num(m_nominal_mm))));
+                m_out.push_back(
+                    makeError(m_field, Iso286::tr("hole %1 is not defined for a nominal size of %2 mm: ISO 286-1 "
+                                                  "gives K above IT8 only for nominal sizes up to and including "
+                                                  "3 mm")
+                                           .arg(m_cls.name, num(m_nominal_mm))));
                 return std::nullopt;
             }
             return Deviation{0.0, true};
@@ -242,10 +244,11 @@ private:
         if (letter == Letter::N) {
             // Note to ISO 286-1:2010 Table 5: N above IT8 shall not be used for nominal sizes up to 1 mm.
             if (m_nominal_mm <= 1.0) {
-                m_out.push_back(makeError(m_field, tr("hole %1 is not defined for a nominal size of %2 mm: ISO 286-1 "
-                                                      "says N above IT8 shall not be used for nominal sizes up to "
-                                                      "and including 1 mm")
-                                                       .arg(m_cls.name, num(m_nominal_mm))));
+                m_out.push_back(
+                    makeError(m_field, Iso286::tr("hole %1 is not defined for a nominal size of %2 mm: ISO 286-1 "
+                                                  "says N above IT8 shall not be used for nominal sizes up to "
+                                                  "and including 1 mm")
+                                           .arg(m_cls.name, num(m_nominal_mm))));
                 return std::nullopt;
             }
             // N above IT8: -4 µm up to 3 mm, 0 above.
@@ -259,9 +262,9 @@ private:
     {
         if ((letter == Letter::A || letter == Letter::B) && m_nominal_mm <= 1.0) {
             m_out.push_back(makeError(
-                m_field, tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 says "
-                            "the fundamental deviations %4 shall not be used for nominal sizes "
-                            "up to and including 1 mm")
+                m_field, Iso286::tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 says "
+                                    "the fundamental deviations %4 shall not be used for nominal sizes "
+                                    "up to and including 1 mm")
                              .arg(kindWord(m_cls.kind), m_cls.name, num(m_nominal_mm),
                                   m_cls.kind == Kind::Hole ? QStringLiteral("A and B") : QStringLiteral("a and b"))));
             return false;
@@ -283,10 +286,11 @@ private:
         }
         const double from = first ? tables::deviationRangeLower_mm(*first) : 0.0;
         const double to = tables::kDeviationRangeUpper_mm.at(last);
-        m_out.push_back(makeError(m_field, tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives the "
-                                              "fundamental deviation %4 only above %5 mm up to and including %6 mm")
-                                               .arg(kindWord(m_cls.kind), m_cls.name, num(m_nominal_mm),
-                                                    letterName(letter), num(from), num(to))));
+        m_out.push_back(
+            makeError(m_field, Iso286::tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives the "
+                                          "fundamental deviation %4 only above %5 mm up to and including %6 mm")
+                                   .arg(kindWord(m_cls.kind), m_cls.name, num(m_nominal_mm), letterName(letter),
+                                        num(from), num(to))));
         return std::nullopt;
     }
 
@@ -295,19 +299,19 @@ private:
         const int grade = m_cls.itGrade;
         QString message;
         if (grade < firstGrade || grade > lastGrade)
-            message = tr("%1 %2 is not defined: ISO 286-1 tabulates %3 only for the grades IT%4 to IT%5 (the "
-                         "symmetric %6 covers every grade)")
+            message = Iso286::tr("%1 %2 is not defined: ISO 286-1 tabulates %3 only for the grades IT%4 to IT%5 (the "
+                                 "symmetric %6 covers every grade)")
                           .arg(kindWord(m_cls.kind), m_cls.name, letter)
                           .arg(firstGrade)
                           .arg(lastGrade)
                           .arg(letter == QLatin1String("j") ? QStringLiteral("js") : QStringLiteral("JS"));
         else if (m_nominal_mm > 500.0)
-            message = tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives %4 only up to and "
-                         "including 500 mm")
+            message = Iso286::tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives %4 only up to and "
+                                 "including 500 mm")
                           .arg(kindWord(m_cls.kind), m_cls.name, num(m_nominal_mm), letter);
         else
-            message = tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives j8 only up to and "
-                         "including 3 mm")
+            message = Iso286::tr("%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives j8 only up to and "
+                                 "including 3 mm")
                           .arg(kindWord(m_cls.kind), m_cls.name, num(m_nominal_mm));
         m_out.push_back(makeError(m_field, message));
         return std::nullopt;
@@ -405,13 +409,15 @@ ClassResult parseToleranceClass(const QString &text, const QString &field)
     const auto match = pattern.match(t);
     if (!match.hasMatch()) {
         if (t.isEmpty())
-            r.diagnostics.push_back(makeError(field, tr("the tolerance class is empty; write a fundamental deviation "
-                                                        "letter and a tolerance grade, such as H7 or g6")));
+            r.diagnostics.push_back(
+                makeError(field, Iso286::tr("the tolerance class is empty; write a fundamental deviation "
+                                            "letter and a tolerance grade, such as H7 or g6")));
         else
-            r.diagnostics.push_back(makeError(field, tr("\"%1\" is not a tolerance class: write a fundamental "
-                                                        "deviation letter and a tolerance grade, such as H7, g6 or "
-                                                        "js6")
-                                                         .arg(t)));
+            r.diagnostics.push_back(
+                makeError(field, Iso286::tr("\"%1\" is not a tolerance class: write a fundamental "
+                                            "deviation letter and a tolerance grade, such as H7, g6 or "
+                                            "js6")
+                                     .arg(t)));
         return r;
     }
     const QString letters = match.captured(1);
@@ -423,17 +429,19 @@ ClassResult parseToleranceClass(const QString &text, const QString &field)
     else if (letters == letters.toLower())
         kind = Kind::Shaft;
     else {
-        r.diagnostics.push_back(makeError(field, tr("\"%1\" mixes upper and lower case in \"%2\": hole letters are "
-                                                    "upper case (H7), shaft letters lower case (g6)")
-                                                     .arg(t, letters)));
+        r.diagnostics.push_back(
+            makeError(field, Iso286::tr("\"%1\" mixes upper and lower case in \"%2\": hole letters are "
+                                        "upper case (H7), shaft letters lower case (g6)")
+                                 .arg(t, letters)));
         return r;
     }
 
     const auto letter = letterFromName(letters.toLower());
     if (!letter)
-        r.diagnostics.push_back(makeError(field, tr("\"%1\": \"%2\" is not a fundamental deviation of ISO 286-1; the "
-                                                    "%3 letters are %4")
-                                                     .arg(t, letters, kindWord(kind), letterList(kind))));
+        r.diagnostics.push_back(
+            makeError(field, Iso286::tr("\"%1\": \"%2\" is not a fundamental deviation of ISO 286-1; the "
+                                        "%3 letters are %4")
+                                 .arg(t, letters, kindWord(kind), letterList(kind))));
 
     std::optional<int> grade;
     if (digits == QLatin1String("01"))
@@ -443,9 +451,10 @@ ClassResult parseToleranceClass(const QString &text, const QString &field)
     else if (!digits.startsWith(QLatin1Char('0')) && digits.size() <= 2 && digits.toInt() <= 18)
         grade = digits.toInt();
     if (!grade)
-        r.diagnostics.push_back(makeError(field, tr("\"%1\": IT%2 is not a standard tolerance grade; the grades are "
-                                                    "IT01, IT0 and IT1 to IT18")
-                                                     .arg(t, digits)));
+        r.diagnostics.push_back(
+            makeError(field, Iso286::tr("\"%1\": IT%2 is not a standard tolerance grade; the grades are "
+                                        "IT01, IT0 and IT1 to IT18")
+                                 .arg(t, digits)));
     if (!letter || !grade)
         return r;
 
@@ -464,9 +473,10 @@ ToleranceResult standardTolerance(double nominal_mm, int itGrade)
     ToleranceResult r;
     const QString gradeField = QStringLiteral("itGrade");
     if (itGrade < -1 || itGrade > 18) {
-        r.diagnostics.push_back(makeError(gradeField, tr("IT%1 is not a standard tolerance grade; the grades are "
-                                                         "IT01, IT0 and IT1 to IT18")
-                                                          .arg(itGrade)));
+        r.diagnostics.push_back(
+            makeError(gradeField, Iso286::tr("IT%1 is not a standard tolerance grade; the grades are "
+                                             "IT01, IT0 and IT1 to IT18")
+                                      .arg(itGrade)));
         return r;
     }
     if (!checkNominal(nominal_mm, QStringLiteral("nominal_mm"), r.diagnostics))
@@ -495,14 +505,15 @@ FitResult fit(double nominal_mm, const QString &holeClass, const QString &shaftC
     auto hole = parseInto(holeClass, holeField, r.diagnostics);
     auto shaft = parseInto(shaftClass, shaftField, r.diagnostics);
     if (hole && hole->kind != Kind::Hole) {
-        r.diagnostics.push_back(makeError(holeField, tr("%1 is a shaft class; the first class of a fit is the hole, "
-                                                        "written in upper case (H7)")
-                                                         .arg(hole->name)));
+        r.diagnostics.push_back(
+            makeError(holeField, Iso286::tr("%1 is a shaft class; the first class of a fit is the hole, "
+                                            "written in upper case (H7)")
+                                     .arg(hole->name)));
         hole.reset();
     }
     if (shaft && shaft->kind != Kind::Shaft) {
-        r.diagnostics.push_back(makeError(shaftField, tr("%1 is a hole class; the second class of a fit is the "
-                                                         "shaft, written in lower case (g6)")
+        r.diagnostics.push_back(makeError(shaftField, Iso286::tr("%1 is a hole class; the second class of a fit is the "
+                                                                 "shaft, written in lower case (g6)")
                                                           .arg(shaft->name)));
         shaft.reset();
     }
@@ -533,11 +544,11 @@ QString fitTypeName(FitType type)
 {
     switch (type) {
     case FitType::Clearance:
-        return tr("clearance");
+        return Iso286::tr("clearance");
     case FitType::Transition:
-        return tr("transition");
+        return Iso286::tr("transition");
     case FitType::Interference:
-        return tr("interference");
+        return Iso286::tr("interference");
     }
     return {};
 }
@@ -548,8 +559,9 @@ DesignationResult parseDesignation(const QString &text)
     const QString field = QStringLiteral("designation");
     QString t = text.trimmed();
     if (t.isEmpty()) {
-        r.diagnostics.push_back(makeError(field, tr("the designation is empty; write one such as 50 H7, Ø50 g6 or "
-                                                    "50 H7/g6")));
+        r.diagnostics.push_back(
+            makeError(field, Iso286::tr("the designation is empty; write one such as 50 H7, Ø50 g6 or "
+                                        "50 H7/g6")));
         return r;
     }
     const bool diameterSign = isDiameterSign(t.front());
@@ -566,24 +578,27 @@ DesignationResult parseDesignation(const QString &text)
         d.nominal_mm = value.toDouble();
         rest = match.captured(2).trimmed();
     } else if (diameterSign) {
-        r.diagnostics.push_back(makeError(field, tr("\"%1\": the diameter sign must be followed by the nominal size, "
-                                                    "as in Ø50 H7")
-                                                     .arg(text.trimmed())));
+        r.diagnostics.push_back(
+            makeError(field, Iso286::tr("\"%1\": the diameter sign must be followed by the nominal size, "
+                                        "as in Ø50 H7")
+                                 .arg(text.trimmed())));
         return r;
     }
     if (rest.isEmpty()) {
-        r.diagnostics.push_back(makeError(field, tr("\"%1\" has no tolerance class; write one after the nominal size, "
-                                                    "such as 50 H7 or 50 H7/g6")
-                                                     .arg(text.trimmed())));
+        r.diagnostics.push_back(
+            makeError(field, Iso286::tr("\"%1\" has no tolerance class; write one after the nominal size, "
+                                        "such as 50 H7 or 50 H7/g6")
+                                 .arg(text.trimmed())));
         return r;
     }
 
     const QStringList parts = rest.split(QLatin1Char('/'));
     if (parts.size() > 2 ||
         std::any_of(parts.begin(), parts.end(), [](const QString &p) { return p.trimmed().isEmpty(); })) {
-        r.diagnostics.push_back(makeError(field, tr("\"%1\" is not a designation: a fit is a hole class, a slash and "
-                                                    "a shaft class, as in 50 H7/g6")
-                                                     .arg(text.trimmed())));
+        r.diagnostics.push_back(
+            makeError(field, Iso286::tr("\"%1\" is not a designation: a fit is a hole class, a slash and "
+                                        "a shaft class, as in 50 H7/g6")
+                                 .arg(text.trimmed())));
         return r;
     }
     std::vector<ToleranceClass> classes;
@@ -597,9 +612,10 @@ DesignationResult parseDesignation(const QString &text)
 
     if (classes.size() == 2) {
         if (classes[0].kind != Kind::Hole || classes[1].kind != Kind::Shaft) {
-            r.diagnostics.push_back(makeError(field, tr("\"%1\": a fit is written hole class first (upper case), then "
-                                                        "the shaft class (lower case), as in 50 H7/g6")
-                                                         .arg(text.trimmed())));
+            r.diagnostics.push_back(
+                makeError(field, Iso286::tr("\"%1\": a fit is written hole class first (upper case), then "
+                                            "the shaft class (lower case), as in 50 H7/g6")
+                                     .arg(text.trimmed())));
             return r;
         }
         d.holeClass = classes[0].name;
@@ -625,15 +641,16 @@ DesignationLimits evaluate(const QString &designation, std::optional<double> nom
     std::optional<double> size = d.nominal_mm ? d.nominal_mm : nominal_mm;
     if (d.nominal_mm && nominal_mm && *d.nominal_mm != *nominal_mm) {
         r.diagnostics.push_back(
-            makeError(nominalField, tr("the designation \"%1\" names %2 mm, but %3 mm was given "
-                                       "separately")
+            makeError(nominalField, Iso286::tr("the designation \"%1\" names %2 mm, but %3 mm was given "
+                                               "separately")
                                         .arg(designation.trimmed(), num(*d.nominal_mm), num(*nominal_mm))));
         return r;
     }
     if (!size) {
-        r.diagnostics.push_back(makeError(nominalField, tr("\"%1\" has no nominal size; write it in the designation "
-                                                           "(50 H7) or give it separately")
-                                                            .arg(designation.trimmed())));
+        r.diagnostics.push_back(
+            makeError(nominalField, Iso286::tr("\"%1\" has no nominal size; write it in the designation "
+                                               "(50 H7) or give it separately")
+                                        .arg(designation.trimmed())));
         return r;
     }
     if (d.isFit()) {

@@ -17,11 +17,6 @@ struct InsertCodes {
     Q_DECLARE_TR_FUNCTIONS(InsertCodes)
 };
 
-QString tr(const char *text)
-{
-    return InsertCodes::tr(text);
-}
-
 // ISO 1832:2017 clause 4.1, Table 1: insert shape and its included (corner) angle.
 constexpr std::array<std::pair<char, double>, 16> kShapes{{{'A', 85.0},
                                                            {'B', 82.0},
@@ -130,7 +125,7 @@ InsertParseResult parseInsertCode(const QString &code, const QString &field)
 {
     InsertParseResult result;
     auto fail = [&](const QString &message) {
-        result.diagnostics.push_back(makeError(field, tr("insert code \"%1\": %2").arg(code, message)));
+        result.diagnostics.push_back(makeError(field, InsertCodes::tr("insert code \"%1\": %2").arg(code, message)));
         return result;
     };
     static const QRegularExpression pattern(
@@ -138,25 +133,27 @@ InsertParseResult parseInsertCode(const QString &code, const QString &field)
     const QString text = code.trimmed().toUpper();
     const auto m = pattern.match(text);
     if (!m.hasMatch())
-        return fail(tr("not an ISO 1832 designation (four letters, then size, thickness and corner digits, as in "
-                       "CNMG 120408)"));
+        return fail(
+            InsertCodes::tr("not an ISO 1832 designation (four letters, then size, thickness and corner digits, as in "
+                            "CNMG 120408)"));
     const char shape = m.captured(1).at(0).toLatin1();
     const char clearance = m.captured(2).at(0).toLatin1();
     const char tolerance = m.captured(3).at(0).toLatin1();
     const char type = m.captured(4).at(0).toLatin1();
     const auto angle = lookup(kShapes, shape);
     if (!angle)
-        return fail(
-            tr("position 1 (shape) '%1' is not one of %2").arg(QString(QLatin1Char(shape)), tableLetters(kShapes)));
+        return fail(InsertCodes::tr("position 1 (shape) '%1' is not one of %2")
+                        .arg(QString(QLatin1Char(shape)), tableLetters(kShapes)));
     const auto clearanceAngle = lookup(kClearances, clearance);
     if (!clearanceAngle)
-        return fail(tr("position 2 (clearance angle) '%1' is not one of %2")
+        return fail(InsertCodes::tr("position 2 (clearance angle) '%1' is not one of %2")
                         .arg(QString(QLatin1Char(clearance)), tableLetters(kClearances)));
     if (QByteArray(kToleranceClasses).indexOf(tolerance) < 0)
-        return fail(tr("position 3 (tolerance class) '%1' is not one of %2")
+        return fail(InsertCodes::tr("position 3 (tolerance class) '%1' is not one of %2")
                         .arg(QString(QLatin1Char(tolerance)), letters(kToleranceClasses)));
     if (QByteArray(kTypes).indexOf(type) < 0)
-        return fail(tr("position 4 (type) '%1' is not one of %2").arg(QString(QLatin1Char(type)), letters(kTypes)));
+        return fail(InsertCodes::tr("position 4 (type) '%1' is not one of %2")
+                        .arg(QString(QLatin1Char(type)), letters(kTypes)));
 
     const int sizeCode = m.captured(5).toInt();
     std::optional<double> ic;
@@ -184,7 +181,7 @@ InsertParseResult parseInsertCode(const QString &code, const QString &field)
         }
     }
     if (!ic)
-        return fail(tr("position 5 (size) '%1' is not a standard cutting-edge length for shape %2")
+        return fail(InsertCodes::tr("position 5 (size) '%1' is not a standard cutting-edge length for shape %2")
                         .arg(m.captured(5), QString(QLatin1Char(shape))));
 
     QString thicknessCode = m.captured(6);
@@ -196,15 +193,17 @@ InsertParseResult parseInsertCode(const QString &code, const QString &field)
             thickness = value;
     }
     if (!thickness)
-        return fail(tr("position 6 (thickness) '%1' is not an ISO 1832 thickness symbol").arg(m.captured(6)));
+        return fail(
+            InsertCodes::tr("position 6 (thickness) '%1' is not an ISO 1832 thickness symbol").arg(m.captured(6)));
 
     const QString corner = m.captured(7);
     const double nose = corner == QLatin1String("M0") ? 0.0 : corner.toInt() / 10.0;
     if (shape == 'R' && corner != QLatin1String("M0") && corner != QLatin1String("00"))
-        return fail(tr("position 7 of a round insert is M0 or 00, not '%1'").arg(corner));
+        return fail(InsertCodes::tr("position 7 of a round insert is M0 or 00, not '%1'").arg(corner));
     if (shape != 'R' && nose <= 0.0)
-        return fail(tr("position 7 (corner radius) '%1' gives a sharp corner, which turning inserts of shape %2 do "
-                       "not have in TolTurn's models")
+        return fail(InsertCodes::tr(
+                        "position 7 (corner radius) '%1' gives a sharp corner, which turning inserts of shape %2 do "
+                        "not have in TolTurn's models")
                         .arg(corner, QString(QLatin1Char(shape))));
 
     InsertGeometry g;

@@ -35,11 +35,6 @@ struct Report {
     Q_DECLARE_TR_FUNCTIONS(Report)
 };
 
-QString tr(const char *text)
-{
-    return Report::tr(text);
-}
-
 // A4 in points; everything is laid out in points and replayed on the PDF at its resolution.
 constexpr double kPageWidth = 595.0;
 constexpr double kPageHeight = 842.0;
@@ -171,12 +166,12 @@ void titleBlock(Layout &l, const Project &p, const QString &projectName)
         painter.drawRect(r);
         painter.setFont(font(18, true));
         painter.drawText(r.adjusted(10, 6, -10, -30), Qt::AlignLeft | Qt::AlignTop,
-                         tr("Tolerance report: %1").arg(p.part.name.isEmpty() ? projectName : p.part.name));
+                         Report::tr("Tolerance report: %1").arg(p.part.name.isEmpty() ? projectName : p.part.name));
         painter.setPen(Qt::black);
         painter.setFont(font(9));
         painter.drawText(
             r.adjusted(10, 36, -10, -4), Qt::AlignLeft | Qt::AlignTop,
-            tr("Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
+            Report::tr("Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
                 .arg(projectName, QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")),
                      tolturnVersion(), dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm)));
     });
@@ -184,7 +179,7 @@ void titleBlock(Layout &l, const Project &p, const QString &projectName)
 
 void drawing(Layout &l, const Project &p)
 {
-    l.heading(tr("1  Part"));
+    l.heading(Report::tr("1  Part"));
     QGraphicsScene scene;
     buildProfileScene(scene, p.part, p.tolerances, p.datums);
     // Frames and datum boxes keep their size in points (they ignore the drawing's scale), so the
@@ -204,51 +199,52 @@ void drawing(Layout &l, const Project &p)
 
 void inputs(Layout &l, const Project &p, const DeviationResult &d)
 {
-    l.heading(tr("2  Inputs"));
+    l.heading(Report::tr("2  Inputs"));
     const DataLibrary &data = DataLibrary::builtIn();
     const MaterialData *m = data.material(p.materialId);
     const MachineData *machine = data.machine(p.machineId);
     const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
-    std::vector<QStringList> rows{{tr("Input"), tr("Value")}};
-    rows.push_back({tr("Material"), m ? QStringLiteral("%1 — %2; E %3 MPa, kc1.1 %4 N/mm², mc %5")
-                                            .arg(m->id, m->name, num(m->youngsModulus_MPa.value, 0),
-                                                 num(m->kc11_MPa.value, 0), num(m->mc.value, 2))
-                                      : p.materialId});
-    rows.push_back({tr("Machine"), machine ? machine->name : p.machineId});
-    rows.push_back({tr("Insert"), insert.insert
-                                      ? tr("%1: %2° corner, nose radius %3 mm")
-                                            .arg(insert.insert->code, num(insert.insert->includedAngle_deg, 0),
-                                                 num(insert.insert->noseRadius_mm, 1))
-                                      : p.tool.insertCode});
-    rows.push_back({tr("Holder"),
-                    d.inputs ? tr("%1: entering angle %2°").arg(p.tool.holderCode, num(d.inputs->enteringAngle_deg, 0))
-                             : p.tool.holderCode});
+    std::vector<QStringList> rows{{Report::tr("Input"), Report::tr("Value")}};
+    rows.push_back({Report::tr("Material"), m ? QStringLiteral("%1 — %2; E %3 MPa, kc1.1 %4 N/mm², mc %5")
+                                                    .arg(m->id, m->name, num(m->youngsModulus_MPa.value, 0),
+                                                         num(m->kc11_MPa.value, 0), num(m->mc.value, 2))
+                                              : p.materialId});
+    rows.push_back({Report::tr("Machine"), machine ? machine->name : p.machineId});
+    rows.push_back({Report::tr("Insert"), insert.insert
+                                              ? Report::tr("%1: %2° corner, nose radius %3 mm")
+                                                    .arg(insert.insert->code, num(insert.insert->includedAngle_deg, 0),
+                                                         num(insert.insert->noseRadius_mm, 1))
+                                              : p.tool.insertCode});
     rows.push_back(
-        {tr("Clamping"), tr("%1, clamped length %2 mm")
-                             .arg(displayName(p.clamping.method), dimensionText(p.clamping.clampedLength_mm))});
+        {Report::tr("Holder"),
+         d.inputs ? Report::tr("%1: entering angle %2°").arg(p.tool.holderCode, num(d.inputs->enteringAngle_deg, 0))
+                  : p.tool.holderCode});
+    rows.push_back(
+        {Report::tr("Clamping"), Report::tr("%1, clamped length %2 mm")
+                                     .arg(displayName(p.clamping.method), dimensionText(p.clamping.clampedLength_mm))});
     for (std::size_t i = 0; i < p.passes.size(); ++i) {
         const CuttingPass &pass = p.passes[i];
         rows.push_back(
-            {tr("Pass %1").arg(i), tr("%1: vc %2 m/min, f %3 mm/rev, ap %4 mm")
-                                       .arg(keyword(pass.kind), formatNumber(pass.cuttingSpeed_m_min),
-                                            formatNumber(pass.feed_mm_rev), formatNumber(pass.depthOfCut_mm))});
+            {Report::tr("Pass %1").arg(i), Report::tr("%1: vc %2 m/min, f %3 mm/rev, ap %4 mm")
+                                               .arg(keyword(pass.kind), formatNumber(pass.cuttingSpeed_m_min),
+                                                    formatNumber(pass.feed_mm_rev), formatNumber(pass.depthOfCut_mm))});
     }
-    rows.push_back({tr("Force model"), keyword(p.cuttingModel.forceModel)});
-    rows.push_back({tr("Machine characterisation"),
-                    p.characterisation.source.isEmpty() ? tr("not characterised") : p.characterisation.source});
+    rows.push_back({Report::tr("Force model"), keyword(p.cuttingModel.forceModel)});
+    rows.push_back({Report::tr("Machine characterisation"),
+                    p.characterisation.source.isEmpty() ? Report::tr("not characterised") : p.characterisation.source});
     l.table(rows, {130, kWidth - 130});
 }
 
 void deviationPlots(Layout &l, const Project &p, const DeviationResult &d)
 {
-    l.heading(tr("3  Predicted deviation"));
+    l.heading(Report::tr("3  Predicted deviation"));
     if (!d.inputs) {
         for (const Diagnostic &x : d.diagnostics)
             l.paragraph(x.toString());
         return;
     }
     const TurningInputs &in = *d.inputs;
-    l.paragraph(tr("Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.")
+    l.paragraph(Report::tr("Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.")
                     .arg(in.passIndex)
                     .arg(in.forceModel, num(in.forces.tangential_N, 1), num(in.forces.axial_N, 1),
                          num(in.forces.radial_N, 1), num(d.theoreticalRa_um, 2), num(d.theoreticalRz_um, 2)));
@@ -257,14 +253,15 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d)
             continue;
         LinePlot plot;
         DeflectionPanel::addContributionCurves(plot, d, side, true);
-        plot.setAxisLabels(tr("z from the part's left end [mm]"), tr("deviation [µm]"));
+        plot.setAxisLabels(Report::tr("z from the part's left end [mm]"), Report::tr("deviation [µm]"));
         plot.rescaleAndReplot();
-        l.caption(side == ContourSide::Outer ? tr("Radial deviation of the outer contour (material left)")
-                                             : tr("Radial deviation of the bores (material left)"));
+        l.caption(side == ContourSide::Outer ? Report::tr("Radial deviation of the outer contour (material left)")
+                                             : Report::tr("Radial deviation of the bores (material left)"));
         l.block(190, [&](QPainter &painter, const QRectF &r) { plot.render(&painter, r, kPlotTextScale); });
     }
     if (!d.faces.empty()) {
-        std::vector<QStringList> rows{{tr("Face"), tr("z [mm]"), tr("tan θ"), tr("axial run-out e [µm]")}};
+        std::vector<QStringList> rows{
+            {Report::tr("Face"), Report::tr("z [mm]"), Report::tr("tan θ"), Report::tr("axial run-out e [µm]")}};
         for (const FaceConicity &f : d.faces)
             rows.push_back({f.featureId, dimensionText(f.z_mm), QString::number(f.tanTheta, 'g', 3),
                             num(1000.0 * f.axialRunout_mm, 3)});
@@ -274,13 +271,14 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d)
 
 void verdicts(Layout &l, const Project &p, const std::vector<ToleranceEvaluation> &v)
 {
-    l.heading(tr("4  Tolerances"));
+    l.heading(Report::tr("4  Tolerances"));
     if (p.tolerances.empty()) {
-        l.paragraph(tr("The project has no tolerances."));
+        l.paragraph(Report::tr("The project has no tolerances."));
         return;
     }
-    std::vector<QStringList> rows{{tr("ID"), tr("Characteristic"), tr("Feature"), tr("Specification"), tr("Value [µm]"),
-                                   tr("Limit [µm]"), tr("Use"), tr("Verdict")}};
+    std::vector<QStringList> rows{{Report::tr("ID"), Report::tr("Characteristic"), Report::tr("Feature"),
+                                   Report::tr("Specification"), Report::tr("Value [µm]"), Report::tr("Limit [µm]"),
+                                   Report::tr("Use"), Report::tr("Verdict")}};
     for (std::size_t i = 0; i < v.size(); ++i) {
         const ToleranceEvaluation &e = v[i];
         rows.push_back({e.toleranceId, displayName(e.type), e.featureId,
@@ -325,18 +323,20 @@ void windowMap(Layout &l, const PlanningReport &r)
         map.addLabel(x / count, y / count, label);
     }
     if (pl.feasible)
-        map.addMarker(pl.candidate.finishing.feed_mm_rev, pl.candidate.finishing.cuttingSpeed_m_min, tr("optimum"));
-    map.setAxisLabels(tr("feed f [mm/rev]"), tr("cutting speed vc [m/min]"));
+        map.addMarker(pl.candidate.finishing.feed_mm_rev, pl.candidate.finishing.cuttingSpeed_m_min,
+                      Report::tr("optimum"));
+    map.setAxisLabels(Report::tr("feed f [mm/rev]"), Report::tr("cutting speed vc [m/min]"));
     map.replot();
-    l.caption(tr("Cutting window of the finishing pass (green: feasible)"));
+    l.caption(Report::tr("Cutting window of the finishing pass (green: feasible)"));
     l.block(200, [&](QPainter &painter, const QRectF &rect) { map.render(&painter, rect, kPlotTextScale); });
 }
 
 void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
 {
-    l.heading(tr("5  Plan"));
+    l.heading(Report::tr("5  Plan"));
     if (!p.planning.cuttingSpeed_m_min) {
-        l.paragraph(tr("The project has no planning data (the insert's cutting ranges), so no plan was optimised."));
+        l.paragraph(
+            Report::tr("The project has no planning data (the insert's cutting ranges), so no plan was optimised."));
     } else {
         PlanningJobOptions o;
         o.windowSize = 64;
@@ -344,11 +344,12 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
         if (r.problem) {
             const PlanResult &pl = r.plan;
             l.paragraph(
-                (pl.feasible ? tr("Optimal plan (%1): ")
-                             : tr("No plan meets every constraint; the least-violating one (%1): "))
+                (pl.feasible ? Report::tr("Optimal plan (%1): ")
+                             : Report::tr("No plan meets every constraint; the least-violating one (%1): "))
                     .arg(keyword(p.planning.objective)) +
-                tr("%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 roughing passes at vc %6 m/min, "
-                   "f %7 mm/rev.")
+                Report::tr(
+                    "%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 roughing passes at vc %6 m/min, "
+                    "f %7 mm/rev.")
                     .arg(num(pl.evaluation.time_min, 3), num(pl.candidate.finishing.cuttingSpeed_m_min, 1),
                          num(pl.candidate.finishing.feed_mm_rev, 3), num(pl.candidate.finishing.depthOfCut_mm, 3))
                     .arg(pl.candidate.roughingPasses)
@@ -357,47 +358,48 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
             for (const ConstraintValue &c : pl.binding)
                 binding << c.label();
             for (const ConstraintValue &c : pl.conflicts)
-                binding << tr("%1 violated by %2 %").arg(c.label(), num(100.0 * c.violation(), 1));
+                binding << Report::tr("%1 violated by %2 %").arg(c.label(), num(100.0 * c.violation(), 1));
             if (!binding.isEmpty())
-                l.paragraph(tr("Binding: %1.").arg(binding.join(QStringLiteral(", "))));
+                l.paragraph(Report::tr("Binding: %1.").arg(binding.join(QStringLiteral(", "))));
             windowMap(l, r);
-            std::vector<QStringList> rows{{tr("Rank"), tr("Clamping"), tr("Result")}};
+            std::vector<QStringList> rows{{Report::tr("Rank"), Report::tr("Clamping"), Report::tr("Result")}};
             for (std::size_t i = 0; i < r.clamping.size(); ++i)
                 rows.push_back({QString::number(i + 1), displayName(r.clamping[i].method), r.clamping[i].reason});
             l.table(rows, {36, 110, kWidth - 146});
         }
     }
-    std::vector<QStringList> rows{
-        {tr("Feature"), tr("Action"), tr("Offset Ø [µm]"), tr("Residual before [µm]"), tr("Residual after [µm]")}};
+    std::vector<QStringList> rows{{Report::tr("Feature"), Report::tr("Action"), Report::tr("Offset Ø [µm]"),
+                                   Report::tr("Residual before [µm]"), Report::tr("Residual after [µm]")}};
     for (const FeatureCompensation &f : finishing.compensation.features)
         rows.push_back({f.featureId, compensationKeyword(f.action),
                         f.action == CompensationAction::ConstantOffset ? num(f.offset_um, 1) : QString(),
                         num(f.residualBefore_um, 3), num(f.residualAfter_um, 3)});
-    l.paragraph(tr("Compensation of the project's finishing pass, only where a tolerance needs it:"));
+    l.paragraph(Report::tr("Compensation of the project's finishing pass, only where a tolerance needs it:"));
     l.table(rows, {70, 90, 90, 120, 120});
 }
 
 void sources(Layout &l, const Project &p, const DeviationResult &d)
 {
-    l.heading(tr("6  Assumptions and sources"));
+    l.heading(Report::tr("6  Assumptions and sources"));
     if (d.inputs) {
         for (const QString &note : d.inputs->notes)
             l.paragraph(QStringLiteral("• ") + note, 8.5);
     }
-    l.paragraph(tr("Model: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP "
+    l.paragraph(
+        Report::tr("Model: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP "
                    "system for turning (2008): eq. 2–8 (deviation), §V and Fig. 4 (tolerances), §VI (optimisation). "
                    "X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) "
                    "(2002): eq. 15–20 (forces), §3.4 (compensation). Kienzle (1952) forces; Timoshenko beam with the "
                    "shear coefficient of G. R. Cowper (1966); ISO 286-1/-2 limits; ISO 1101 characteristics. The "
                    "equations as implemented, their corrections and the validation: docs/model.md in TolTurn."),
-                8.5);
+        8.5);
     const DataLibrary &data = DataLibrary::builtIn();
     if (const MaterialData *m = data.material(p.materialId)) {
-        l.paragraph(tr("Material data (%1): %2").arg(m->id, data.sourceText(m->kc11_MPa.source)), 8.0);
-        l.paragraph(tr("Elastic constants: %1").arg(data.sourceText(m->youngsModulus_MPa.source)), 8.0);
+        l.paragraph(Report::tr("Material data (%1): %2").arg(m->id, data.sourceText(m->kc11_MPa.source)), 8.0);
+        l.paragraph(Report::tr("Elastic constants: %1").arg(data.sourceText(m->youngsModulus_MPa.source)), 8.0);
     }
     if (!p.planning.rangesSource.isEmpty())
-        l.paragraph(tr("Cutting ranges: %1").arg(p.planning.rangesSource), 8.0);
+        l.paragraph(Report::tr("Cutting ranges: %1").arg(p.planning.rangesSource), 8.0);
 }
 
 } // namespace
@@ -417,14 +419,14 @@ ReportResult writeReport(const Project &project, const QString &projectName, con
     drawing(layout, project);
     inputs(layout, project, deviation);
     if (!step(0.2))
-        return {false, tr("cancelled"), 0};
+        return {false, Report::tr("cancelled"), 0};
     deviationPlots(layout, project, deviation);
     verdicts(layout, project, verdictList);
     if (!step(0.4))
-        return {false, tr("cancelled"), 0};
+        return {false, Report::tr("cancelled"), 0};
     plan(layout, project, finishing);
     if (!step(0.8))
-        return {false, tr("cancelled"), 0};
+        return {false, Report::tr("cancelled"), 0};
     sources(layout, project, deviation);
     const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
 
@@ -436,7 +438,7 @@ ReportResult writeReport(const Project &project, const QString &projectName, con
         pdf.setPageSize(QPageSize(QPageSize::A4));
         pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
         pdf.setResolution(600);
-        pdf.setTitle(tr("TolTurn report: %1").arg(project.part.name));
+        pdf.setTitle(Report::tr("TolTurn report: %1").arg(project.part.name));
         pdf.setCreator(QStringLiteral("TolTurn %1").arg(tolturnVersion()));
         QPainter painter(&pdf);
         const double scale = pdf.resolution() / 72.0;
@@ -457,13 +459,13 @@ ReportResult writeReport(const Project &project, const QString &projectName, con
             painter.drawText(QRectF(kMargin, kPageHeight - kMargin, kWidth, 14), Qt::AlignLeft | Qt::AlignVCenter,
                              QStringLiteral("TolTurn %1 — %2").arg(tolturnVersion(), project.part.name));
             painter.drawText(QRectF(kMargin, kPageHeight - kMargin, kWidth, 14), Qt::AlignRight | Qt::AlignVCenter,
-                             tr("page %1 of %2").arg(i + 1).arg(pages.size()));
+                             Report::tr("page %1 of %2").arg(i + 1).arg(pages.size()));
             painter.restore();
         }
     }
     QSaveFile file(pdfPath);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        result.error = tr("cannot write '%1': %2").arg(pdfPath, file.errorString());
+        result.error = Report::tr("cannot write '%1': %2").arg(pdfPath, file.errorString());
         return result;
     }
     result.ok = true;
