@@ -5,31 +5,31 @@
     <name>ClampingAdvice</name>
     <message>
         <source>meets every constraint: %1 %2 per part</source>
-        <translation type="unfinished"></translation>
+        <translation>cumple todas las restricciones: %1 %2 por pieza</translation>
     </message>
     <message>
         <source>min</source>
-        <translation type="unfinished"></translation>
+        <translation>min</translation>
     </message>
     <message>
         <source>cost</source>
-        <translation type="unfinished"></translation>
+        <translation>coste</translation>
     </message>
     <message>
         <source>%1 by %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 en un %2 %</translation>
     </message>
     <message>
         <source>no plan meets every constraint: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ningún plan cumple todas las restricciones: %1</translation>
     </message>
     <message>
         <source>no cylinder at the left end of the part for the chuck jaws to grip</source>
-        <translation type="unfinished"></translation>
+        <translation>no hay ningún cilindro en el extremo izquierdo de la pieza que puedan sujetar las garras del plato</translation>
     </message>
     <message>
         <source>cannot be planned</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede planificar</translation>
     </message>
 </context>
 <context>
@@ -41,2938 +41,2991 @@ TolTurn&apos;s command-line front end: the same computations as the desktop prog
 
 Commands:
 </source>
-        <translation type="unfinished"></translation>
+        <translation>Uso: %1 [--help] [--version] COMANDO [ARGUMENTOS]
+
+Interfaz de línea de comandos de TolTurn: los mismos cálculos que el programa de escritorio, sin interfaz gráfica, para procesamiento por lotes y pruebas de regresión.
+
+Comandos:
+</translation>
     </message>
     <message>
         <source>
 Run &apos;%1 COMMAND --help&apos; for the options of a command.
 Exit codes: 0 success, 1 the input has errors, 2 wrong command line.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+Ejecute &apos;%1 COMANDO --help&apos; para ver las opciones de un comando.
+Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos incorrecta.
+</translation>
     </message>
     <message>
         <source>Show this help.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar esta ayuda.</translation>
     </message>
     <message>
         <source>Usage: %1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Uso: %1 %2</translation>
     </message>
     <message>
         <source>give exactly one project file</source>
-        <translation type="unfinished"></translation>
+        <translation>indique exactamente un archivo de proyecto</translation>
     </message>
     <message>
         <source>part &quot;%1&quot;, %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances</source>
-        <translation type="unfinished"></translation>
+        <translation>pieza &quot;%1&quot;, %2 mm de longitud, %3 elementos exteriores y %4 interiores, %5, %6 pasadas, %7 tolerancias</translation>
     </message>
     <message>
         <source>Print the findings as JSON on standard output.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir los problemas detectados en formato JSON en la salida estándar.</translation>
     </message>
     <message>
         <source>Project files to check.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivos de proyecto que se van a comprobar.</translation>
     </message>
     <message>
         <source>no project file given</source>
-        <translation type="unfinished"></translation>
+        <translation>no se ha indicado ningún archivo de proyecto</translation>
     </message>
     <message>
         <source>ok</source>
-        <translation type="unfinished"></translation>
+        <translation>correcto</translation>
     </message>
     <message>
         <source>Forces (%1): Fc = %2 N tangential, Ff = %3 N axial, Fp = %4 N radial</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerzas (%1): Fc = %2 N tangencial, Ff = %3 N axial, Fp = %4 N radial</translation>
     </message>
     <message>
         <source>Pass %1 (%2): vc %3 m/min, f %4 mm/rev, ap %5 mm; Ra %6 µm, Rz %7 µm; max %8 kW, %9 N·m</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasada %1 (%2): vc %3 m/min, f %4 mm/rev, ap %5 mm; Ra %6 µm, Rz %7 µm; máx. %8 kW, %9 N·m</translation>
     </message>
     <message>
         <source>note: </source>
-        <translation type="unfinished"></translation>
+        <translation>nota: </translation>
     </message>
     <message>
         <source>feature  side   z from–to [mm]    radial deviation [µm] min … max   diameter error [µm] min … max</source>
-        <translation type="unfinished"></translation>
+        <translation>elemento lado   z desde–hasta [mm] desviación radial [µm] mín … máx   error de diámetro [µm] mín … máx</translation>
     </message>
     <message>
         <source>face %1 at z = %2 mm: tan(theta) = %3, axial run-out e = %4 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>cara %1 en z = %2 mm: tan(theta) = %3, oscilación axial e = %4 µm</translation>
     </message>
     <message>
         <source>Print the result as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir el resultado en formato JSON.</translation>
     </message>
     <message>
         <source>Use these forces [N] instead of the force model: radial, tangential, axial.</source>
-        <translation type="unfinished"></translation>
+        <translation>Usar estas fuerzas [N] en lugar del modelo de fuerzas: radial, tangencial, axial.</translation>
     </message>
     <message>
         <source>Rigid machine supports, no toolpost or thermal term: the beam alone.</source>
-        <translation type="unfinished"></translation>
+        <translation>Apoyos de la máquina rígidos, sin término de torreta ni térmico: solo la viga.</translation>
     </message>
     <message>
         <source>Tool positions per turned feature (default 21).</source>
-        <translation type="unfinished"></translation>
+        <translation>Posiciones de la herramienta por elemento torneado (por defecto 21).</translation>
     </message>
     <message>
         <source>Index of the pass (default: the last finishing pass).</source>
-        <translation type="unfinished"></translation>
+        <translation>Índice de la pasada (por defecto: la última pasada de acabado).</translation>
     </message>
     <message>
         <source>Ignore the stock still on the uncut side of the tool.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ignorar el material que aún queda en el lado no cortado de la herramienta.</translation>
     </message>
     <message>
         <source>Project file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo de proyecto.</translation>
     </message>
     <message>
         <source>--stations must be a whole number from 2 to 100000, not &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>--stations debe ser un número entero de 2 a 100000, no &quot;%1&quot;</translation>
     </message>
     <message>
         <source>--pass must be a pass index (0, 1, …), not &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>--pass debe ser un índice de pasada (0, 1, …), no &quot;%1&quot;</translation>
     </message>
     <message>
         <source>--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), not &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>--load admite tres números en newtons, radial,tangencial,axial (p. ej. 200,500,150), no &quot;%1&quot;</translation>
     </message>
     <message>
         <source>K_n = %1 N/mm², K_f = %2 (Li &amp; Du eq. 15), RMS residual %3 N over %4 cuts</source>
-        <translation type="unfinished"></translation>
+        <translation>K_n = %1 N/mm², K_f = %2 (Li &amp; Du ec. 15), residuo RMS %3 N en %4 cortes</translation>
     </message>
     <message>
         <source>   f [mm/rev]  d [mm]   Ft meas   Ft model   Fa meas   Fa model   Fr model [N]</source>
-        <translation type="unfinished"></translation>
+        <translation>   f [mm/rev]  d [mm]   Ft med.  Ft modelo   Fa med.  Fa modelo  Fr modelo [N]</translation>
     </message>
     <message>
         <source>Store K_n and K_f in the project (force model li_du) and save it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Almacenar K_n y K_f en el proyecto (modelo de fuerzas li_du) y guardarlo.</translation>
     </message>
     <message>
         <source>Project file (its tool gives the geometry).</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo de proyecto (su herramienta define la geometría).</translation>
     </message>
     <message>
         <source>CSV of measured cuts: feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N.</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV de cortes medidos: feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N.</translation>
     </message>
     <message>
         <source>give a project file and a measurements file</source>
-        <translation type="unfinished"></translation>
+        <translation>indique un archivo de proyecto y un archivo de mediciones</translation>
     </message>
     <message>
         <source>wrote %1: force model li_du</source>
-        <translation type="unfinished"></translation>
+        <translation>se ha escrito %1: modelo de fuerzas li_du</translation>
     </message>
     <message>
         <source>the nominal size must be a number in mm, not &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>la medida nominal debe ser un número en mm, no &quot;%1&quot;</translation>
     </message>
     <message>
         <source>Print the limits as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir los límites en formato JSON.</translation>
     </message>
     <message>
         <source>Nominal size [mm].</source>
-        <translation type="unfinished"></translation>
+        <translation>Medida nominal [mm].</translation>
     </message>
     <message>
         <source>Tolerance class, e.g. H7, g6, js12.</source>
-        <translation type="unfinished"></translation>
+        <translation>Clase de tolerancia, p. ej. H7, g6, js12.</translation>
     </message>
     <message>
         <source>give a nominal size and a tolerance class, e.g. 50 H7</source>
-        <translation type="unfinished"></translation>
+        <translation>indique una medida nominal y una clase de tolerancia, p. ej. 50 H7</translation>
     </message>
     <message>
         <source>%1 %2: upper %3 µm, lower %4 µm (%5 = %6 µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2: superior %3 µm, inferior %4 µm (%5 = %6 µm)</translation>
     </message>
     <message>
         <source>Print the fit as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir el ajuste en formato JSON.</translation>
     </message>
     <message>
         <source>Hole and shaft class, e.g. H7/g6.</source>
-        <translation type="unfinished"></translation>
+        <translation>Clase del agujero y del eje, p. ej. H7/g6.</translation>
     </message>
     <message>
         <source>give a nominal size and a fit, e.g. 50 H7/g6</source>
-        <translation type="unfinished"></translation>
+        <translation>indique una medida nominal y un ajuste, p. ej. 50 H7/g6</translation>
     </message>
     <message>
         <source>%1 %2/%3: %4 fit; hole %5/%6 µm, shaft %7/%8 µm; clearance max %9 µm, min %10 µm (negative: interference)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2/%3: ajuste %4; agujero %5/%6 µm, eje %7/%8 µm; juego máx. %9 µm, mín. %10 µm (negativo: apriete)</translation>
     </message>
     <message>
         <source>Print the verdicts as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir los veredictos en formato JSON.</translation>
     </message>
     <message>
         <source>tolerance  type                    feature  value [µm]  limit [µm]  use [%]  verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>tolerancia tipo                    elemento valor [µm] límite [µm]  uso [%]  veredicto</translation>
     </message>
     <message>
         <source>Optimum (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Óptimo (%1)</translation>
     </message>
     <message>
         <source>No plan meets every constraint; the one that violates them least</source>
-        <translation type="unfinished"></translation>
+        <translation>Ningún plan cumple todas las restricciones; el que menos las incumple</translation>
     </message>
     <message>
         <source>  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part</source>
-        <translation type="unfinished"></translation>
+        <translation>  tiempo por pieza %1 min (acabado %2, desbaste %3), coste %4, %5 filos de herramienta por pieza</translation>
     </message>
     <message>
         <source>  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>  acabado: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
     <message>
         <source>  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev</source>
-        <translation type="unfinished"></translation>
+        <translation>  desbaste: %1 pasadas de ap %2 mm a vc %3 m/min, f %4 mm/rev</translation>
     </message>
     <message>
         <source>  binding: </source>
-        <translation type="unfinished"></translation>
+        <translation>  restricciones activas: </translation>
     </message>
     <message>
         <source>  violated: </source>
-        <translation type="unfinished"></translation>
+        <translation>  restricciones incumplidas: </translation>
     </message>
     <message>
         <source>Print the plan as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir el plan en formato JSON.</translation>
     </message>
     <message>
         <source>time or cost (default: the project&apos;s).</source>
-        <translation type="unfinished"></translation>
+        <translation>time o cost (por defecto: el del proyecto).</translation>
     </message>
     <message>
         <source>Store the optimal passes in the project (replacing its passes) and save it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Almacenar las pasadas óptimas en el proyecto (sustituyendo sus pasadas) y guardarlo.</translation>
     </message>
     <message>
         <source>--objective is time or cost, not &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>--objective es time o cost, no &quot;%1&quot;</translation>
     </message>
     <message>
         <source>wrote %1: %2 passes</source>
-        <translation type="unfinished"></translation>
+        <translation>se ha escrito %1: %2 pasadas</translation>
     </message>
     <message>
         <source>feed-speed (default) or feed-depth.</source>
-        <translation type="unfinished"></translation>
+        <translation>feed-speed (por defecto) o feed-depth.</translation>
     </message>
     <message>
         <source>Print every grid point as CSV.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir cada punto de la malla en formato CSV.</translation>
     </message>
     <message>
         <source>Points along each axis (default 256).</source>
-        <translation type="unfinished"></translation>
+        <translation>Puntos en cada eje (por defecto 256).</translation>
     </message>
     <message>
         <source>give one project file, --plane feed-speed or feed-depth, --size from 2 to 4096</source>
-        <translation type="unfinished"></translation>
+        <translation>indique un archivo de proyecto, --plane feed-speed o feed-depth, --size de 2 a 4096</translation>
     </message>
     <message>
         <source>%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6</source>
-        <translation type="unfinished"></translation>
+        <translation>ventana de %1 × %2, %3 % factible; óptimo en f = %4 mm/rev, %5 = %6</translation>
     </message>
     <message>
         <source>  bounded by %1 (%2 points beyond it)</source>
-        <translation type="unfinished"></translation>
+        <translation>  limitada por %1 (%2 puntos fuera de ella)</translation>
     </message>
     <message>
         <source>Print the ranking as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir la clasificación en formato JSON.</translation>
     </message>
     <message>
         <source>File to write.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo de salida.</translation>
     </message>
     <message>
         <source>Correct the path where a tolerance needs it (offset or profile).</source>
-        <translation type="unfinished"></translation>
+        <translation>Corregir la trayectoria donde lo requiera una tolerancia (corrección constante o de perfil).</translation>
     </message>
     <message>
         <source>give one project file and -o FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>indique un archivo de proyecto y -o ARCHIVO</translation>
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>%1: %2, residual %3 -&gt; %4 µm %5</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2, residuo %3 -&gt; %4 µm %5</translation>
     </message>
     <message>
         <source>PDF file to write.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo PDF de salida.</translation>
     </message>
     <message>
         <source>give one project file and -o FILE.pdf</source>
-        <translation type="unfinished"></translation>
+        <translation>indique un archivo de proyecto y -o ARCHIVO.pdf</translation>
     </message>
     <message>
         <source>%1: %2 pages</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 páginas</translation>
     </message>
     <message>
         <source>Validate project files: report every problem with the field and value; exit 1 on errors.</source>
-        <translation type="unfinished"></translation>
+        <translation>Validar archivos de proyecto: informar de cada problema con el campo y el valor; código de salida 1 si hay errores.</translation>
     </message>
     <message>
         <source>Predict the deviation at each tool position along every turned feature: radial and tangential, total and per contribution (spindle–chuck, toolpost, workpiece, thermal), with the forces used.</source>
-        <translation type="unfinished"></translation>
+        <translation>Predecir la desviación en cada posición de la herramienta a lo largo de cada elemento torneado: radial y tangencial, total y por contribución (husillo–plato, torreta, pieza, térmica), con las fuerzas utilizadas.</translation>
     </message>
     <message>
         <source>Fit the Li &amp; Du coefficients K_n and K_f to measured tangential and axial forces (eq. 17–18) for the project&apos;s tool; --write stores them in the project.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar los coeficientes K_n y K_f de Li &amp; Du a las fuerzas tangenciales y axiales medidas (ec. 17–18) para la herramienta del proyecto; --write los almacena en el proyecto.</translation>
     </message>
     <message>
         <source>ISO 286 limits of a tolerance class at a nominal size, e.g. &apos;iso286 50 H7&apos;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Límites ISO 286 de una clase de tolerancia para una medida nominal, p. ej. &apos;iso286 50 H7&apos;.</translation>
     </message>
     <message>
         <source>ISO 286 fit of a hole and a shaft class, e.g. &apos;fit 50 H7/g6&apos;: type and clearances.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajuste ISO 286 entre una clase de agujero y una de eje, p. ej. &apos;fit 50 H7/g6&apos;: tipo y juegos.</translation>
     </message>
     <message>
         <source>Every tolerance of the project against the predicted deviation: value, limit, utilisation, the deciding condition of Valiño et al. Fig. 4, and the verdict.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada tolerancia del proyecto frente a la desviación prevista: valor, límite, utilización, la condición determinante de Valiño et al. Fig. 4 y el veredicto.</translation>
     </message>
     <message>
         <source>Cutting conditions of the finishing and roughing passes at least time or cost per part under every constraint (tolerances, roughness, power, torque, force, spindle speed, tool life).</source>
-        <translation type="unfinished"></translation>
+        <translation>Condiciones de corte de las pasadas de acabado y desbaste con el mínimo tiempo o coste por pieza respetando todas las restricciones (tolerancias, rugosidad, potencia, par, fuerza, velocidad del husillo, vida de la herramienta).</translation>
     </message>
     <message>
         <source>The cutting window of the finishing pass around the optimum: per grid point the objective, whether it is feasible and the constraint that bounds it.</source>
-        <translation type="unfinished"></translation>
+        <translation>La ventana de corte de la pasada de acabado alrededor del óptimo: para cada punto de la malla, el objetivo, si es factible y la restricción que lo limita.</translation>
     </message>
     <message>
         <source>The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason.</source>
-        <translation type="unfinished"></translation>
+        <translation>El plan óptimo para plato, entre puntos y plato + contrapunto, clasificados y con el motivo.</translation>
     </message>
     <message>
         <source>The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a tolerance needs it.</source>
-        <translation type="unfinished"></translation>
+        <translation>La trayectoria de acabado del contorno exterior como código G ISO 6983, nominal o compensada solo donde lo requiera una tolerancia.</translation>
     </message>
     <message>
         <source>The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, clamping ranking, compensation, assumptions and sources.</source>
-        <translation type="unfinished"></translation>
+        <translation>El informe PDF: pieza, datos de entrada, desviación prevista, veredictos de las tolerancias, plan con la ventana de corte, clasificación de sujeciones, compensación, hipótesis y fuentes.</translation>
     </message>
     <message>
         <source>%1: unknown command &apos;%2&apos;. Run &apos;%1 --help&apos; for the list of commands.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: comando desconocido &apos;%2&apos;. Ejecute &apos;%1 --help&apos; para ver la lista de comandos.</translation>
     </message>
 </context>
 <context>
     <name>Compensation</name>
     <message>
         <source>the face&apos;s conicity needs a correction along Z, which TolTurn does not generate: reduce the feed or change the clamping</source>
-        <translation type="unfinished"></translation>
+        <translation>la conicidad de la cara requiere una corrección en Z, que TolTurn no genera: reduzca el avance o cambie la sujeción</translation>
     </message>
 </context>
 <context>
     <name>CuttingModels</name>
     <message>
         <source>%1 = %2 is outside the range %3 &lt; %1 &lt; %4 in which %5 is stated to hold</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 = %2 está fuera del intervalo %3 &lt; %1 &lt; %4 para el que se declara la validez de %5</translation>
     </message>
     <message>
         <source>chip thickness h = f sin(kappa_r) = %1 mm is outside the range %2–%3 mm over which the Kienzle constants of this material were measured</source>
-        <translation type="unfinished"></translation>
+        <translation>el espesor de viruta h = f sin(kappa_r) = %1 mm está fuera del intervalo %2–%3 mm en el que se midieron las constantes de Kienzle de este material</translation>
     </message>
     <message>
         <source>eq. 20 of Li &amp; Du (2002)</source>
-        <translation type="unfinished"></translation>
+        <translation>ec. 20 de Li &amp; Du (2002)</translation>
     </message>
     <message>
         <source>lead angle [°]</source>
-        <translation type="unfinished"></translation>
+        <translation>ángulo de entrada [°]</translation>
     </message>
     <message>
         <source>depth of cut [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>profundidad de corte [mm]</translation>
     </message>
     <message>
         <source>feed [mm/rev]</source>
-        <translation type="unfinished"></translation>
+        <translation>avance [mm/rev]</translation>
     </message>
     <message>
         <source>nose radius [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>radio de punta [mm]</translation>
     </message>
     <message>
         <source>eq. 20 of Li &amp; Du (2002) needs a nose radius larger than the feed, but r_n = %1 mm and f = %2 mm/rev</source>
-        <translation type="unfinished"></translation>
+        <translation>la ec. 20 de Li &amp; Du (2002) requiere un radio de punta mayor que el avance, pero r_n = %1 mm y f = %2 mm/rev</translation>
     </message>
     <message>
         <source>no force measurements given</source>
-        <translation type="unfinished"></translation>
+        <translation>no se han indicado mediciones de fuerza</translation>
     </message>
     <message>
         <source>the measurements do not determine K_n and K_f (rank %1 of 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>las mediciones no determinan K_n y K_f (rango %1 de 2)</translation>
     </message>
     <message>
         <source>the fitted normal pressure K_n = %1 N/mm² is not positive: check the measured forces and the tool angles</source>
-        <translation type="unfinished"></translation>
+        <translation>la presión normal ajustada K_n = %1 N/mm² no es positiva: compruebe las fuerzas medidas y los ángulos de la herramienta</translation>
     </message>
 </context>
 <context>
     <name>DataFiles</name>
     <message>
         <source>cannot open the data file: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede abrir el archivo de datos: %1</translation>
     </message>
     <message>
         <source>not a valid JSON object: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un objeto JSON válido: %1</translation>
     </message>
     <message>
         <source>expected format &quot;%1&quot; version 1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba el formato &quot;%1&quot; versión 1</translation>
     </message>
     <message>
         <source>required value is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>falta un valor obligatorio</translation>
     </message>
     <message>
         <source>expected {&quot;value&quot;: number, &quot;source&quot;: key of &quot;sources&quot;}</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba {&quot;value&quot;: número, &quot;source&quot;: clave de &quot;sources&quot;}</translation>
     </message>
     <message>
         <source>material &quot;%1&quot; lacks its id, modulus, density or Kienzle constants</source>
-        <translation type="unfinished"></translation>
+        <translation>al material &quot;%1&quot; le falta el id, el módulo, la densidad o las constantes de Kienzle</translation>
     </message>
 </context>
 <context>
     <name>DeviationModel</name>
     <message>
         <source>Feed and passive force from the rule of thumb Ff = %1 Fc, Fp = %2 Fc (%3): the material data give no feed or passive force constants. Calibrate the forces for accuracy.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerza de avance y fuerza pasiva según la regla empírica Ff = %1 Fc, Fp = %2 Fc (%3): los datos del material no incluyen constantes de fuerza de avance ni de fuerza pasiva. Calibre las fuerzas para mayor precisión.</translation>
     </message>
     <message>
         <source>no source: zero</source>
-        <translation type="unfinished"></translation>
+        <translation>sin fuente: cero</translation>
     </message>
     <message>
         <source>Toolpost shortening not included: holder &quot;%1&quot; is not in the data library.</source>
-        <translation type="unfinished"></translation>
+        <translation>No se incluye el acortamiento de la torreta: el portaherramientas &quot;%1&quot; no está en la biblioteca de datos.</translation>
     </message>
     <message>
         <source>Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give tool.overhang_mm for the length out of the turret.</source>
-        <translation type="unfinished"></translation>
+        <translation>Torreta: se considera comprimida toda la longitud del portaherramientas (%1 mm), una cota superior; indique tool.overhang_mm para la longitud que sobresale de la torreta.</translation>
     </message>
     <message>
         <source>Workpiece only: machine supports rigid, no toolpost or thermal term.</source>
-        <translation type="unfinished"></translation>
+        <translation>Solo la pieza: apoyos de la máquina rígidos, sin término de torreta ni térmico.</translation>
     </message>
     <message>
         <source>Spindle–chuck not characterised for this machine: the part is taken as rigidly clamped at the chuck face. Measure k1, k2, k3 (Valiño et al. 2008 §III) for its contribution.</source>
-        <translation type="unfinished"></translation>
+        <translation>Husillo–plato no caracterizado para esta máquina: la pieza se considera empotrada rígidamente en la cara del plato. Mida k1, k2, k3 (Valiño et al. 2008 §III) para obtener su contribución.</translation>
     </message>
     <message>
         <source>Headstock centre not characterised: taken as a rigid pin.</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto del cabezal no caracterizado: se considera un apoyo articulado rígido.</translation>
     </message>
     <message>
         <source>Tailstock not characterised: taken as a rigid pin.</source>
-        <translation type="unfinished"></translation>
+        <translation>Contrapunto no caracterizado: se considera un apoyo articulado rígido.</translation>
     </message>
     <message>
         <source>unknown material &quot;%1&quot;; the data library has: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>material desconocido &quot;%1&quot;; la biblioteca de datos contiene: %2</translation>
     </message>
     <message>
         <source>material &quot;%1&quot; has no Poisson&apos;s ratio in the data, which the shear deflection needs</source>
-        <translation type="unfinished"></translation>
+        <translation>el material &quot;%1&quot; no tiene coeficiente de Poisson en los datos, necesario para la flexión por cortante</translation>
     </message>
     <message>
         <source>holder &quot;%1&quot; is not in the data library and its ISO 5608 style letter (third character) gives no known entering angle</source>
-        <translation type="unfinished"></translation>
+        <translation>el portaherramientas &quot;%1&quot; no está en la biblioteca de datos y su letra de forma ISO 5608 (tercer carácter) no corresponde a ningún ángulo de posición conocido</translation>
     </message>
     <message>
         <source>the Li &amp; Du model needs the rake and inclination angles of the tool; the data give none for holder &quot;%1&quot; with insert &quot;%2&quot;: set tool.rake_deg and tool.inclination_deg</source>
-        <translation type="unfinished"></translation>
+        <translation>el modelo de Li &amp; Du necesita los ángulos de desprendimiento y de inclinación de la herramienta; los datos no los incluyen para el portaherramientas &quot;%1&quot; con la plaquita &quot;%2&quot;: defina tool.rake_deg y tool.inclination_deg</translation>
     </message>
     <message>
         <source>the force model needs a known material and holder</source>
-        <translation type="unfinished"></translation>
+        <translation>el modelo de fuerzas necesita un material y un portaherramientas conocidos</translation>
     </message>
     <message>
         <source>there is no cutting pass; the deviation is that of the pass that finishes the features</source>
-        <translation type="unfinished"></translation>
+        <translation>no hay ninguna pasada de corte; la desviación es la de la pasada que acaba los elementos</translation>
     </message>
     <message>
         <source>there is no pass %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe la pasada %1</translation>
     </message>
     <message>
         <source>unknown machine &quot;%1&quot;; the data library has: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>máquina desconocida &quot;%1&quot;; la biblioteca de datos contiene: %2</translation>
     </message>
     <message>
         <source>the %1 clamping with these supports leaves the part free to move</source>
-        <translation type="unfinished"></translation>
+        <translation>la sujeción (%1) con estos apoyos deja la pieza libre para moverse</translation>
     </message>
     <message>
         <source>Thermal drift not characterised for this machine: taken as zero.</source>
-        <translation type="unfinished"></translation>
+        <translation>Deriva térmica no caracterizada para esta máquina: se considera nula.</translation>
     </message>
     <message>
         <source>the pass needs %1 kW of cutting power, more than the machine&apos;s %2 kW</source>
-        <translation type="unfinished"></translation>
+        <translation>la pasada requiere %1 kW de potencia de corte, más que los %2 kW de la máquina</translation>
     </message>
 </context>
 <context>
     <name>InsertCodes</name>
     <message>
         <source>insert code &quot;%1&quot;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>código de plaquita &quot;%1&quot;: %2</translation>
     </message>
     <message>
         <source>not an ISO 1832 designation (four letters, then size, thickness and corner digits, as in CNMG 120408)</source>
-        <translation type="unfinished"></translation>
+        <translation>no es una designación ISO 1832 (cuatro letras y después las cifras de tamaño, espesor y radio de punta, como en CNMG 120408)</translation>
     </message>
     <message>
         <source>position 1 (shape) &apos;%1&apos; is not one of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>posición 1 (forma): &apos;%1&apos; no es ninguno de %2</translation>
     </message>
     <message>
         <source>position 2 (clearance angle) &apos;%1&apos; is not one of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>posición 2 (ángulo de incidencia): &apos;%1&apos; no es ninguno de %2</translation>
     </message>
     <message>
         <source>position 3 (tolerance class) &apos;%1&apos; is not one of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>posición 3 (clase de tolerancia): &apos;%1&apos; no es ninguno de %2</translation>
     </message>
     <message>
         <source>position 4 (type) &apos;%1&apos; is not one of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>posición 4 (tipo): &apos;%1&apos; no es ninguno de %2</translation>
     </message>
     <message>
         <source>position 5 (size) &apos;%1&apos; is not a standard cutting-edge length for shape %2</source>
-        <translation type="unfinished"></translation>
+        <translation>posición 5 (tamaño): &apos;%1&apos; no es una longitud de filo normalizada para la forma %2</translation>
     </message>
     <message>
         <source>position 6 (thickness) &apos;%1&apos; is not an ISO 1832 thickness symbol</source>
-        <translation type="unfinished"></translation>
+        <translation>posición 6 (espesor): &apos;%1&apos; no es un símbolo de espesor ISO 1832</translation>
     </message>
     <message>
         <source>position 7 of a round insert is M0 or 00, not &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>la posición 7 de una plaquita redonda es M0 o 00, no &apos;%1&apos;</translation>
     </message>
     <message>
         <source>position 7 (corner radius) &apos;%1&apos; gives a sharp corner, which turning inserts of shape %2 do not have in TolTurn&apos;s models</source>
-        <translation type="unfinished"></translation>
+        <translation>posición 7 (radio de punta): &apos;%1&apos; indica una punta viva, que las plaquitas de torneado de forma %2 no tienen en los modelos de TolTurn</translation>
     </message>
 </context>
 <context>
     <name>Iso286</name>
     <message>
         <source>hole</source>
-        <translation type="unfinished"></translation>
+        <translation>agujero</translation>
     </message>
     <message>
         <source>shaft</source>
-        <translation type="unfinished"></translation>
+        <translation>eje</translation>
     </message>
     <message>
         <source>the nominal size is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>la medida nominal no es un número finito</translation>
     </message>
     <message>
         <source>0 mm is not a nominal size: the first range of ISO 286 is above 0 up to and including 3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>0 mm no es una medida nominal: el primer grupo de ISO 286 va de más de 0 hasta 3 mm inclusive</translation>
     </message>
     <message>
         <source>the nominal size must be above 0 mm, but is %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>la medida nominal debe ser mayor que 0 mm, pero es %1 mm</translation>
     </message>
     <message>
         <source>%1 mm is above 3150 mm, the largest nominal size of ISO 286</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mm supera los 3150 mm, la mayor medida nominal de ISO 286</translation>
     </message>
     <message>
         <source>%1 is given by ISO 286-1 only for nominal sizes up to and including 500 mm, not for %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 286-1 solo define %1 para medidas nominales hasta 500 mm inclusive, no para %2 mm</translation>
     </message>
     <message>
         <source>%1 shall not be used for nominal sizes up to and including 1 mm (ISO 286-1 Table 1), but the size is %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no debe utilizarse para medidas nominales hasta 1 mm inclusive (ISO 286-1, tabla 1), pero la medida es %2 mm</translation>
     </message>
     <message>
         <source>%1 above 500 mm is given by ISO 286-1 for experimental use only (size %2 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 286-1 define %1 por encima de 500 mm solo para uso experimental (medida %2 mm)</translation>
     </message>
     <message>
         <source>hole %1 is not defined: ISO 286-1 forms %2 up to IT%3 as ES = -ei + Δ, and tabulates Δ only for IT3 to IT8</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero %1 no está definido: ISO 286-1 forma %2 hasta IT%3 como ES = -ei + Δ y solo tabula Δ de IT3 a IT8</translation>
     </message>
     <message>
         <source>hole %1 is not defined for a nominal size of %2 mm: ISO 286-1 gives K above IT8 only for nominal sizes up to and including 3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero %1 no está definido para una medida nominal de %2 mm: ISO 286-1 solo define K por encima de IT8 para medidas nominales hasta 3 mm inclusive</translation>
     </message>
     <message>
         <source>hole %1 is not defined for a nominal size of %2 mm: ISO 286-1 says N above IT8 shall not be used for nominal sizes up to and including 1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero %1 no está definido para una medida nominal de %2 mm: según ISO 286-1, N por encima de IT8 no debe utilizarse para medidas nominales hasta 1 mm inclusive</translation>
     </message>
     <message>
         <source>%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 says the fundamental deviations %4 shall not be used for nominal sizes up to and including 1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el %1 %2 no está definido para una medida nominal de %3 mm: según ISO 286-1, las diferencias fundamentales %4 no deben utilizarse para medidas nominales hasta 1 mm inclusive</translation>
     </message>
     <message>
         <source>%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives the fundamental deviation %4 only above %5 mm up to and including %6 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el %1 %2 no está definido para una medida nominal de %3 mm: ISO 286-1 solo define la diferencia fundamental %4 por encima de %5 mm y hasta %6 mm inclusive</translation>
     </message>
     <message>
         <source>%1 %2 is not defined: ISO 286-1 tabulates %3 only for the grades IT%4 to IT%5 (the symmetric %6 covers every grade)</source>
-        <translation type="unfinished"></translation>
+        <translation>el %1 %2 no está definido: ISO 286-1 solo tabula %3 para los grados IT%4 a IT%5 (la diferencia simétrica %6 abarca todos los grados)</translation>
     </message>
     <message>
         <source>%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives %4 only up to and including 500 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el %1 %2 no está definido para una medida nominal de %3 mm: ISO 286-1 solo define %4 hasta 500 mm inclusive</translation>
     </message>
     <message>
         <source>%1 %2 is not defined for a nominal size of %3 mm: ISO 286-1 gives j8 only up to and including 3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el %1 %2 no está definido para una medida nominal de %3 mm: ISO 286-1 solo define j8 hasta 3 mm inclusive</translation>
     </message>
     <message>
         <source>the tolerance class is empty; write a fundamental deviation letter and a tolerance grade, such as H7 or g6</source>
-        <translation type="unfinished"></translation>
+        <translation>la clase de tolerancia está vacía; escriba una letra de diferencia fundamental y un grado de tolerancia, como H7 o g6</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a tolerance class: write a fundamental deviation letter and a tolerance grade, such as H7, g6 or js6</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; no es una clase de tolerancia: escriba una letra de diferencia fundamental y un grado de tolerancia, como H7, g6 o js6</translation>
     </message>
     <message>
         <source>&quot;%1&quot; mixes upper and lower case in &quot;%2&quot;: hole letters are upper case (H7), shaft letters lower case (g6)</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; mezcla mayúsculas y minúsculas en &quot;%2&quot;: las letras de agujero van en mayúsculas (H7) y las de eje en minúsculas (g6)</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: &quot;%2&quot; is not a fundamental deviation of ISO 286-1; the %3 letters are %4</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot;: &quot;%2&quot; no es una diferencia fundamental de ISO 286-1; las letras de %3 son %4</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: IT%2 is not a standard tolerance grade; the grades are IT01, IT0 and IT1 to IT18</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot;: IT%2 no es un grado de tolerancia normalizado; los grados son IT01, IT0 e IT1 a IT18</translation>
     </message>
     <message>
         <source>IT%1 is not a standard tolerance grade; the grades are IT01, IT0 and IT1 to IT18</source>
-        <translation type="unfinished"></translation>
+        <translation>IT%1 no es un grado de tolerancia normalizado; los grados son IT01, IT0 e IT1 a IT18</translation>
     </message>
     <message>
         <source>%1 is a shaft class; the first class of a fit is the hole, written in upper case (H7)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 es una clase de eje; la primera clase de un ajuste es la del agujero, escrita en mayúsculas (H7)</translation>
     </message>
     <message>
         <source>%1 is a hole class; the second class of a fit is the shaft, written in lower case (g6)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 es una clase de agujero; la segunda clase de un ajuste es la del eje, escrita en minúsculas (g6)</translation>
     </message>
     <message>
         <source>clearance</source>
-        <translation type="unfinished"></translation>
+        <translation>con juego</translation>
     </message>
     <message>
         <source>transition</source>
-        <translation type="unfinished"></translation>
+        <translation>indeterminado</translation>
     </message>
     <message>
         <source>interference</source>
-        <translation type="unfinished"></translation>
+        <translation>con apriete</translation>
     </message>
     <message>
         <source>the designation is empty; write one such as 50 H7, Ø50 g6 or 50 H7/g6</source>
-        <translation type="unfinished"></translation>
+        <translation>la designación está vacía; escriba una como 50 H7, Ø50 g6 o 50 H7/g6</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: the diameter sign must be followed by the nominal size, as in Ø50 H7</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot;: el símbolo de diámetro debe ir seguido de la medida nominal, como en Ø50 H7</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has no tolerance class; write one after the nominal size, such as 50 H7 or 50 H7/g6</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; no tiene clase de tolerancia; escriba una después de la medida nominal, como 50 H7 o 50 H7/g6</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a designation: a fit is a hole class, a slash and a shaft class, as in 50 H7/g6</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; no es una designación: un ajuste es una clase de agujero, una barra y una clase de eje, como en 50 H7/g6</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: a fit is written hole class first (upper case), then the shaft class (lower case), as in 50 H7/g6</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot;: un ajuste se escribe primero con la clase del agujero (mayúsculas) y después con la del eje (minúsculas), como en 50 H7/g6</translation>
     </message>
     <message>
         <source>the designation &quot;%1&quot; names %2 mm, but %3 mm was given separately</source>
-        <translation type="unfinished"></translation>
+        <translation>la designación &quot;%1&quot; indica %2 mm, pero se ha indicado %3 mm por separado</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has no nominal size; write it in the designation (50 H7) or give it separately</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; no tiene medida nominal; escríbala en la designación (50 H7) o indíquela por separado</translation>
     </message>
 </context>
 <context>
     <name>JsonReading</name>
     <message>
         <source>null</source>
-        <translation type="unfinished"></translation>
+        <translation>null</translation>
     </message>
     <message>
         <source>true</source>
-        <translation type="unfinished"></translation>
+        <translation>true</translation>
     </message>
     <message>
         <source>false</source>
-        <translation type="unfinished"></translation>
+        <translation>false</translation>
     </message>
     <message>
         <source>the number %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el número %1</translation>
     </message>
     <message>
         <source>the text &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>el texto &quot;%1&quot;</translation>
     </message>
     <message>
         <source>a list</source>
-        <translation type="unfinished"></translation>
+        <translation>una lista</translation>
     </message>
     <message>
         <source>an object</source>
-        <translation type="unfinished"></translation>
+        <translation>un objeto</translation>
     </message>
     <message>
         <source>nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>nada</translation>
     </message>
     <message>
         <source>this field is required but missing</source>
-        <translation type="unfinished"></translation>
+        <translation>este campo es obligatorio, pero falta</translation>
     </message>
     <message>
         <source>expected %1, found %2</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba %1 y se ha encontrado %2</translation>
     </message>
     <message>
         <source>a number</source>
-        <translation type="unfinished"></translation>
+        <translation>un número</translation>
     </message>
     <message>
         <source>a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>un número entero</translation>
     </message>
     <message>
         <source>a text</source>
-        <translation type="unfinished"></translation>
+        <translation>un texto</translation>
     </message>
     <message>
         <source>unknown %1 &quot;%2&quot;; expected one of: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 desconocido &quot;%2&quot;; se esperaba uno de: %3</translation>
     </message>
     <message>
         <source>unknown field, ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>campo desconocido, se ignora</translation>
     </message>
 </context>
 <context>
     <name>MeasurementFiles</name>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede abrir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>the header lacks the column &quot;%1&quot;; it needs %2</source>
-        <translation type="unfinished"></translation>
+        <translation>a la cabecera le falta la columna &quot;%1&quot;; necesita %2</translation>
     </message>
     <message>
         <source>%1 must be a number%2, not &quot;%3&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 debe ser un número%2, no &quot;%3&quot;</translation>
     </message>
     <message>
         <source> above zero</source>
-        <translation type="unfinished"></translation>
+        <translation> mayor que cero</translation>
     </message>
     <message>
         <source>the file has no header line</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo no tiene línea de cabecera</translation>
     </message>
     <message>
         <source>the file has no measurement</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo no contiene ninguna medición</translation>
     </message>
 </context>
 <context>
     <name>Names</name>
     <message>
         <source>chuck</source>
-        <translation type="unfinished"></translation>
+        <translation>plato</translation>
     </message>
     <message>
         <source>between centres</source>
-        <translation type="unfinished"></translation>
+        <translation>entre puntos</translation>
     </message>
     <message>
         <source>chuck + tailstock</source>
-        <translation type="unfinished"></translation>
+        <translation>plato + contrapunto</translation>
     </message>
     <message>
         <source>cylinder</source>
-        <translation type="unfinished"></translation>
+        <translation>cilindro</translation>
     </message>
     <message>
         <source>face</source>
-        <translation type="unfinished"></translation>
+        <translation>cara</translation>
     </message>
     <message>
         <source>cone</source>
-        <translation type="unfinished"></translation>
+        <translation>cono</translation>
     </message>
     <message>
         <source>chamfer</source>
-        <translation type="unfinished"></translation>
+        <translation>chaflán</translation>
     </message>
     <message>
         <source>radius</source>
-        <translation type="unfinished"></translation>
+        <translation>radio</translation>
     </message>
     <message>
         <source>length</source>
-        <translation type="unfinished"></translation>
+        <translation>longitud</translation>
     </message>
     <message>
         <source>diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>diámetro</translation>
     </message>
     <message>
         <source>flatness</source>
-        <translation type="unfinished"></translation>
+        <translation>planitud</translation>
     </message>
     <message>
         <source>cylindricity</source>
-        <translation type="unfinished"></translation>
+        <translation>cilindricidad</translation>
     </message>
     <message>
         <source>profile of a surface</source>
-        <translation type="unfinished"></translation>
+        <translation>perfil de una superficie</translation>
     </message>
     <message>
         <source>parallelism</source>
-        <translation type="unfinished"></translation>
+        <translation>paralelismo</translation>
     </message>
     <message>
         <source>perpendicularity</source>
-        <translation type="unfinished"></translation>
+        <translation>perpendicularidad</translation>
     </message>
     <message>
         <source>coaxiality</source>
-        <translation type="unfinished"></translation>
+        <translation>coaxialidad</translation>
     </message>
     <message>
         <source>circular radial run-out</source>
-        <translation type="unfinished"></translation>
+        <translation>oscilación circular radial</translation>
     </message>
     <message>
         <source>circular axial run-out</source>
-        <translation type="unfinished"></translation>
+        <translation>oscilación circular axial</translation>
     </message>
     <message>
         <source>total radial run-out</source>
-        <translation type="unfinished"></translation>
+        <translation>oscilación total radial</translation>
     </message>
     <message>
         <source>total axial run-out</source>
-        <translation type="unfinished"></translation>
+        <translation>oscilación total axial</translation>
     </message>
 </context>
 <context>
     <name>Planning</name>
     <message>
         <source>tolerance %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tolerancia %1</translation>
     </message>
     <message>
         <source>the optimiser needs the insert&apos;s ranges of cutting speed, feed and depth of cut (from its maker&apos;s catalogue), with their source</source>
-        <translation type="unfinished"></translation>
+        <translation>el optimizador necesita los intervalos de velocidad de corte, avance y profundidad de corte de la plaquita (del catálogo del fabricante), con su fuente</translation>
     </message>
     <message>
         <source>No Taylor constants in the project&apos;s planning data: tool life and tool cost are not in the objective, and there is no tool-life constraint.</source>
-        <translation type="unfinished"></translation>
+        <translation>No hay constantes de Taylor en los datos de planificación del proyecto: la vida y el coste de la herramienta no entran en el objetivo y no hay restricción de vida de la herramienta.</translation>
     </message>
     <message>
         <source>No spindle torque limit given (planning.max_torque_Nm): torque is not constrained.</source>
-        <translation type="unfinished"></translation>
+        <translation>No se ha indicado ningún límite de par del husillo (planning.max_torque_Nm): el par no está restringido.</translation>
     </message>
 </context>
 <context>
     <name>PlotExport</name>
     <message>
         <source>cannot export a plot as &apos;%1&apos;: use .png, .svg or .pdf</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede exportar un gráfico como &apos;%1&apos;: use .png, .svg o .pdf</translation>
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>Imagen PNG (*.png);;Dibujo SVG (*.svg);;Documento PDF (*.pdf)</translation>
     </message>
     <message>
         <source>Copy Data as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Copiar datos como CSV</translation>
     </message>
     <message>
         <source>Export Image…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar imagen…</translation>
     </message>
     <message>
         <source>Export Plot</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar gráfico</translation>
     </message>
 </context>
 <context>
     <name>ProfileEditing</name>
     <message>
         <source>the %1 contour has no vertex %2</source>
-        <translation type="unfinished"></translation>
+        <translation>el contorno %1 no tiene el vértice %2</translation>
     </message>
     <message>
         <source>a step is inserted into a cylinder; %1 is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>un escalón se inserta en un cilindro; %1 no lo es</translation>
     </message>
     <message>
         <source>the step of %1 must lie inside it (z %2 … %3 mm), but z is %4 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el escalón de %1 debe quedar dentro de él (z %2 … %3 mm), pero z es %4 mm</translation>
     </message>
     <message>
         <source>the step&apos;s diameter must differ from Ø%1 mm and be above zero, but is %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el diámetro del escalón debe ser distinto de Ø%1 mm y mayor que cero, pero es %2 mm</translation>
     </message>
     <message>
         <source>step face</source>
-        <translation type="unfinished"></translation>
+        <translation>cara del escalón</translation>
     </message>
     <message>
         <source>step diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>diámetro del escalón</translation>
     </message>
     <message>
         <source>vertex %1 of the %2 contour is not a corner between two features</source>
-        <translation type="unfinished"></translation>
+        <translation>el vértice %1 del contorno %2 no es una esquina entre dos elementos</translation>
     </message>
     <message>
         <source>a corner is broken between a face and a cylinder; %1 and %2 are not</source>
-        <translation type="unfinished"></translation>
+        <translation>una arista se rompe entre una cara y un cilindro; %1 y %2 no lo son</translation>
     </message>
     <message>
         <source>the corner of %1 and %2 takes at most %3 mm, but the size is %4 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>la esquina entre %1 y %2 admite como máximo %3 mm, pero el tamaño es %4 mm</translation>
     </message>
     <message>
         <source>edge round</source>
-        <translation type="unfinished"></translation>
+        <translation>redondeo de arista</translation>
     </message>
     <message>
         <source>chamfer</source>
-        <translation type="unfinished"></translation>
+        <translation>chaflán</translation>
     </message>
     <message>
         <source>a cone is made from a cylinder; %1 is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>un cono se crea a partir de un cilindro; %1 no lo es</translation>
     </message>
     <message>
         <source>the cone&apos;s end needs a diameter other than Ø%1 mm, but it is %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el final del cono necesita un diámetro distinto de Ø%1 mm, pero es %2 mm</translation>
     </message>
     <message>
         <source>a cylinder is made from a cone; %1 is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>un cilindro se crea a partir de un cono; %1 no lo es</translation>
     </message>
     <message>
         <source>a bore starts at an end face of the part; %1 is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>un agujero empieza en una cara extrema de la pieza; %1 no lo es</translation>
     </message>
     <message>
         <source>the part is bored already; edit its bore instead</source>
-        <translation type="unfinished"></translation>
+        <translation>la pieza ya tiene un agujero; edite ese agujero</translation>
     </message>
     <message>
         <source>a bore needs a depth and a diameter above zero, but they are %1 and %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>un agujero necesita una profundidad y un diámetro mayores que cero, pero son %1 y %2 mm</translation>
     </message>
     <message>
         <source>bore</source>
-        <translation type="unfinished"></translation>
+        <translation>agujero</translation>
     </message>
     <message>
         <source>bore bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>fondo del agujero</translation>
     </message>
     <message>
         <source>there is no feature %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe el elemento %1</translation>
     </message>
     <message>
         <source>%1 is an end of the %2 contour; move it instead of deleting it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 es un extremo del contorno %2; muévalo en lugar de eliminarlo</translation>
     </message>
     <message>
         <source>the features beside %1 are parallel: there is no corner to give back</source>
-        <translation type="unfinished"></translation>
+        <translation>los elementos contiguos a %1 son paralelos: no hay ninguna esquina que restituir</translation>
     </message>
 </context>
 <context>
     <name>ProfileValidation</name>
     <message>
         <source>the coordinate is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>la coordenada no es un número finito</translation>
     </message>
     <message>
         <source>must not be negative, but is %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>no debe ser negativo, pero es %1 mm</translation>
     </message>
     <message>
         <source>the %1 runs backwards along z, from z = %2 mm to z = %3 mm: a contour runs from left to right, so this segment overlaps the one before it</source>
-        <translation type="unfinished"></translation>
+        <translation>el segmento %1 retrocede en z, de z = %2 mm a z = %3 mm: un contorno va de izquierda a derecha, así que este segmento se solapa con el anterior</translation>
     </message>
     <message>
         <source>a cylinder keeps one radius, but this one goes from r = %1 mm to r = %2 mm (a cone?)</source>
-        <translation type="unfinished"></translation>
+        <translation>un cilindro mantiene un único radio, pero este va de r = %1 mm a r = %2 mm (¿un cono?)</translation>
     </message>
     <message>
         <source>the cylinder has zero length: it starts and ends at z = %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el cilindro tiene longitud cero: empieza y termina en z = %1 mm</translation>
     </message>
     <message>
         <source>a cylinder needs a radius above zero, but r = %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>un cilindro necesita un radio mayor que cero, pero r = %1 mm</translation>
     </message>
     <message>
         <source>a face stays at one z, but this one goes from z = %1 mm to z = %2 mm (a cone?)</source>
-        <translation type="unfinished"></translation>
+        <translation>una cara se mantiene en una única z, pero esta va de z = %1 mm a z = %2 mm (¿un cono?)</translation>
     </message>
     <message>
         <source>the face has zero length: it starts and ends at r = %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>la cara tiene longitud cero: empieza y termina en r = %1 mm</translation>
     </message>
     <message>
         <source>a %1 must advance along z, but it starts and ends at z = %2 mm (a face?)</source>
-        <translation type="unfinished"></translation>
+        <translation>un segmento %1 debe avanzar en z, pero empieza y termina en z = %2 mm (¿una cara?)</translation>
     </message>
     <message>
         <source>a %1 must change radius, but it stays at r = %2 mm (a cylinder?)</source>
-        <translation type="unfinished"></translation>
+        <translation>un segmento %1 debe cambiar de radio, pero se mantiene en r = %2 mm (¿un cilindro?)</translation>
     </message>
     <message>
         <source>the radius must be above zero, but is %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el radio debe ser mayor que cero, pero es %1 mm</translation>
     </message>
     <message>
         <source>the radius has zero length: both ends are at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el radio tiene longitud cero: ambos extremos están en %1</translation>
     </message>
     <message>
         <source>a radius of %1 mm cannot join two points %2 mm apart (it needs at least %3 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>un radio de %1 mm no puede unir dos puntos separados %2 mm (necesita al menos %3 mm)</translation>
     </message>
     <message>
         <source>the %1 arc of radius %2 mm turns back along z (an undercut), which cannot be turned from left to right; try the other direction</source>
-        <translation type="unfinished"></translation>
+        <translation>el arco %1 de radio %2 mm retrocede en z (un destalonado), que no se puede tornear de izquierda a derecha; pruebe el otro sentido</translation>
     </message>
     <message>
         <source>overlaps %1: it starts at %2, left of where %1 ends, %3</source>
-        <translation type="unfinished"></translation>
+        <translation>se solapa con %1: empieza en %2, a la izquierda de donde termina %1, %3</translation>
     </message>
     <message>
         <source>leaves a gap: it starts at %2, but %1 ends at %3</source>
-        <translation type="unfinished"></translation>
+        <translation>deja un hueco: empieza en %2, pero %1 termina en %3</translation>
     </message>
     <message>
         <source>the face turns back over %1 at z = %2 mm: the two faces overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>la cara retrocede sobre %1 en z = %2 mm: las dos caras se solapan</translation>
     </message>
     <message>
         <source>the outer contour must start at the left end of the part, z = 0 mm, but starts at z = %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el contorno exterior debe empezar en el extremo izquierdo de la pieza, z = 0 mm, pero empieza en z = %1 mm</translation>
     </message>
     <message>
         <source>the part has zero length: the outer contour ends at z = %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>la pieza tiene longitud cero: el contorno exterior termina en z = %1 mm</translation>
     </message>
     <message>
         <source>the left end face must start at r = %1 mm (%2), but starts at r = %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>la cara extrema izquierda debe empezar en r = %1 mm (%2), pero empieza en r = %3 mm</translation>
     </message>
     <message>
         <source>the bore</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero</translation>
     </message>
     <message>
         <source>the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>el eje de giro</translation>
     </message>
     <message>
         <source>the right end face must end at r = %1 mm (%2), but ends at r = %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>la cara extrema derecha debe terminar en r = %1 mm (%2), pero termina en r = %3 mm</translation>
     </message>
     <message>
         <source>the inner contour must start at the left end (z = 0 mm) or on the axis (r = 0 mm), but starts at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el contorno interior debe empezar en el extremo izquierdo (z = 0 mm) o en el eje (r = 0 mm), pero empieza en %1</translation>
     </message>
     <message>
         <source>the inner contour must end at the right end (z = %1 mm) or on the axis (r = 0 mm), but ends at %2</source>
-        <translation type="unfinished"></translation>
+        <translation>el contorno interior debe terminar en el extremo derecho (z = %1 mm) o en el eje (r = 0 mm), pero termina en %2</translation>
     </message>
     <message>
         <source>the bore is closed at both ends (a cavity that no tool can reach): it must open at z = 0 mm or at z = %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero está cerrado por ambos extremos (una cavidad a la que no llega ninguna herramienta): debe abrirse en z = 0 mm o en z = %1 mm</translation>
     </message>
     <message>
         <source>the bore ends at z = %1 mm, beyond the right end of the part at z = %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero termina en z = %1 mm, más allá del extremo derecho de la pieza en z = %2 mm</translation>
     </message>
     <message>
         <source>the bore reaches r = %1 mm at z = %2 mm, where the outer contour is at r = %3 mm: the inner radius meets the outer one</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero alcanza r = %1 mm en z = %2 mm, donde el contorno exterior está en r = %3 mm: el radio interior llega al exterior</translation>
     </message>
     <message>
         <source>every feature needs an id, but this one is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>cada elemento necesita un id, pero este está vacío</translation>
     </message>
     <message>
         <source>the id &apos;%1&apos; is used by another feature; ids must be unique</source>
-        <translation type="unfinished"></translation>
+        <translation>el id &apos;%1&apos; ya lo usa otro elemento; los id deben ser únicos</translation>
     </message>
     <message>
         <source>the stock diameter must be above zero, but is %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el diámetro del bruto debe ser mayor que cero, pero es %1 mm</translation>
     </message>
     <message>
         <source>the outer contour has no segments</source>
-        <translation type="unfinished"></translation>
+        <translation>el contorno exterior no tiene segmentos</translation>
     </message>
     <message>
         <source>the stock diameter %1 mm is smaller than the part, whose largest diameter is %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>el diámetro del bruto, %1 mm, es menor que la pieza, cuyo diámetro máximo es %2 mm</translation>
     </message>
 </context>
 <context>
     <name>ProjectFile</name>
     <message>
         <source>&apos;%1&apos; does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no existe</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is a folder, not a project file</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; es una carpeta, no un archivo de proyecto</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is %2 MiB, more than the %3 MiB a project file may have</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; ocupa %2 MiB, más de los %3 MiB que puede ocupar un archivo de proyecto</translation>
     </message>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede abrir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede guardar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
     <name>ProjectJson</name>
     <message>
         <source>segment type</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo de segmento</translation>
     </message>
     <message>
         <source>arc direction</source>
-        <translation type="unfinished"></translation>
+        <translation>sentido del arco</translation>
     </message>
     <message>
         <source>expected a segment object, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba un objeto de segmento y se ha encontrado %1</translation>
     </message>
     <message>
         <source>force model</source>
-        <translation type="unfinished"></translation>
+        <translation>modelo de fuerzas</translation>
     </message>
     <message>
         <source>objective</source>
-        <translation type="unfinished"></translation>
+        <translation>objetivo</translation>
     </message>
     <message>
         <source>clamping method</source>
-        <translation type="unfinished"></translation>
+        <translation>método de sujeción</translation>
     </message>
     <message>
         <source>expected an object, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba un objeto y se ha encontrado %1</translation>
     </message>
     <message>
         <source>pass kind</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo de pasada</translation>
     </message>
     <message>
         <source>expected a datum letter, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba una letra de referencia y se ha encontrado %1</translation>
     </message>
     <message>
         <source>tolerance type</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo de tolerancia</translation>
     </message>
     <message>
         <source>this is not a TolTurn project: format is &quot;%1&quot;, expected &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un proyecto de TolTurn: el formato es &quot;%1&quot; y se esperaba &quot;%2&quot;</translation>
     </message>
     <message>
         <source>unknown format version %1; this TolTurn reads version %2</source>
-        <translation type="unfinished"></translation>
+        <translation>versión de formato desconocida %1; esta versión de TolTurn lee la versión %2</translation>
     </message>
     <message>
         <source>invalid JSON at line %1, column %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON no válido en la línea %1, columna %2: %3</translation>
     </message>
     <message>
         <source>a project file holds one JSON object, not a list</source>
-        <translation type="unfinished"></translation>
+        <translation>un archivo de proyecto contiene un único objeto JSON, no una lista</translation>
     </message>
 </context>
 <context>
     <name>ProjectValidation</name>
     <message>
         <source>%1 is missing (empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>falta %1 (vacío)</translation>
     </message>
     <message>
         <source>must be zero or more, but is %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>debe ser cero o más, pero es %1 mm</translation>
     </message>
     <message>
         <source>a part held in a chuck needs a clamped length above zero, but it is %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>una pieza sujeta en un plato necesita una longitud de amarre mayor que cero, pero es %1 mm</translation>
     </message>
     <message>
         <source>the clamped length %1 mm leaves nothing to turn on a part %2 mm long</source>
-        <translation type="unfinished"></translation>
+        <translation>la longitud de amarre de %1 mm no deja nada que tornear en una pieza de %2 mm de longitud</translation>
     </message>
     <message>
         <source>a part between centres is not clamped; the clamped length %1 mm is ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>una pieza entre puntos no está amarrada; se ignora la longitud de amarre de %1 mm</translation>
     </message>
     <message>
         <source>must be above zero, but is %1</source>
-        <translation type="unfinished"></translation>
+        <translation>debe ser mayor que cero, pero es %1</translation>
     </message>
     <message>
         <source>a datum is named by one or two capital letters (ISO 5459), not &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>una referencia se designa con una o dos letras mayúsculas (ISO 5459), no &apos;%1&apos;</translation>
     </message>
     <message>
         <source>datum &apos;%1&apos; is defined twice</source>
-        <translation type="unfinished"></translation>
+        <translation>la referencia &apos;%1&apos; está definida dos veces</translation>
     </message>
     <message>
         <source>there is no feature &apos;%1&apos; in the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe el elemento &apos;%1&apos; en el perfil</translation>
     </message>
     <message>
         <source>give either an ISO 286 class or both limit deviations (upper_um, lower_um)</source>
-        <translation type="unfinished"></translation>
+        <translation>indique una clase ISO 286 o las dos diferencias límite (upper_um, lower_um)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not an ISO 286 tolerance class (a letter and a grade, e.g. h6 or H7)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no es una clase de tolerancia ISO 286 (una letra y un grado, p. ej. h6 o H7)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is a shaft class, but feature &apos;%2&apos; is a bore: use capital letters (e.g. H7)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; es una clase de eje, pero el elemento &apos;%2&apos; es un agujero: use mayúsculas (p. ej. H7)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is a hole class, but feature &apos;%2&apos; is an outer surface: use small letters (e.g. h6)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; es una clase de agujero, pero el elemento &apos;%2&apos; es una superficie exterior: use minúsculas (p. ej. h6)</translation>
     </message>
     <message>
         <source>both limit deviations are needed, upper_um and lower_um</source>
-        <translation type="unfinished"></translation>
+        <translation>se necesitan las dos diferencias límite, upper_um y lower_um</translation>
     </message>
     <message>
         <source>the upper deviation %1 µm must be above the lower deviation %2 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>la diferencia superior %1 µm debe ser mayor que la diferencia inferior %2 µm</translation>
     </message>
     <message>
         <source>a %1 tolerance needs a zone width above zero, but it is %2</source>
-        <translation type="unfinished"></translation>
+        <translation>una tolerancia %1 necesita una anchura de zona mayor que cero (valor: %2)</translation>
     </message>
     <message>
         <source>missing</source>
-        <translation type="unfinished"></translation>
+        <translation>no indicado</translation>
     </message>
     <message>
         <source>a %1 tolerance is defined relative to a datum, but none is given</source>
-        <translation type="unfinished"></translation>
+        <translation>una tolerancia %1 se define respecto a una referencia, pero no se ha indicado ninguna</translation>
     </message>
     <message>
         <source>datum &apos;%1&apos; is not defined in the project&apos;s datums</source>
-        <translation type="unfinished"></translation>
+        <translation>la referencia &apos;%1&apos; no está definida entre las referencias del proyecto</translation>
     </message>
     <message>
         <source>a %1 tolerance cannot sit on feature &apos;%2&apos;, which is a %3</source>
-        <translation type="unfinished"></translation>
+        <translation>una tolerancia %1 no puede aplicarse al elemento &apos;%2&apos;, que es de tipo %3</translation>
     </message>
     <message>
         <source>a length runs between two faces; there is no feature &apos;%1&apos; in the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>una longitud se mide entre dos caras; no existe el elemento &apos;%1&apos; en el perfil</translation>
     </message>
     <message>
         <source>a length runs between two different faces; &apos;%1&apos; is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>una longitud se mide entre dos caras distintas; &apos;%1&apos; no lo es</translation>
     </message>
     <message>
         <source>every tolerance needs an id, but this one is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>cada tolerancia necesita un id, pero este está vacío</translation>
     </message>
     <message>
         <source>the id &apos;%1&apos; is used twice</source>
-        <translation type="unfinished"></translation>
+        <translation>el id &apos;%1&apos; se usa dos veces</translation>
     </message>
     <message>
         <source>must be zero or more, but is %1</source>
-        <translation type="unfinished"></translation>
+        <translation>debe ser cero o más, pero es %1</translation>
     </message>
     <message>
         <source>the li_du force model needs normal_pressure_MPa (K_n) and friction_ratio (K_f); fit them from measured forces with &apos;tolturn-cli calibrate-forces&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>el modelo de fuerzas li_du necesita normal_pressure_MPa (K_n) y friction_ratio (K_f); ajústelos a partir de fuerzas medidas con &apos;tolturn-cli calibrate-forces&apos;</translation>
     </message>
     <message>
         <source>where the machine characterisation comes from</source>
-        <translation type="unfinished"></translation>
+        <translation>la procedencia de la caracterización de la máquina</translation>
     </message>
     <message>
         <source>spindle springs need the pivot distance Lc of the k2 spring behind the chuck face</source>
-        <translation type="unfinished"></translation>
+        <translation>los muelles del husillo necesitan la distancia de pivote Lc del muelle k2 detrás de la cara del plato</translation>
     </message>
     <message>
         <source>must be at least the minimum %1, but is %2</source>
-        <translation type="unfinished"></translation>
+        <translation>debe ser al menos el mínimo %1, pero es %2</translation>
     </message>
     <message>
         <source>the Taylor exponent n lies between 0 and 1, but is %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el exponente de Taylor n está entre 0 y 1, pero es %1</translation>
     </message>
     <message>
         <source>the source of the Taylor constants</source>
-        <translation type="unfinished"></translation>
+        <translation>la fuente de las constantes de Taylor</translation>
     </message>
     <message>
         <source>the source of the cutting ranges</source>
-        <translation type="unfinished"></translation>
+        <translation>la fuente de los intervalos de corte</translation>
     </message>
     <message>
         <source>unknown constraint &quot;%1&quot;; the constraints are: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>restricción desconocida &quot;%1&quot;; las restricciones son: %2</translation>
     </message>
     <message>
         <source>the work material</source>
-        <translation type="unfinished"></translation>
+        <translation>el material de la pieza</translation>
     </message>
     <message>
         <source>the machine</source>
-        <translation type="unfinished"></translation>
+        <translation>la máquina</translation>
     </message>
     <message>
         <source>the insert code</source>
-        <translation type="unfinished"></translation>
+        <translation>el código de la plaquita</translation>
     </message>
 </context>
 <context>
     <name>QObject</name>
     <message>
         <source>Datum %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Referencia %1</translation>
     </message>
 </context>
 <context>
     <name>Report</name>
     <message>
         <source>Tolerance report: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Informe de tolerancias: %1</translation>
     </message>
     <message>
         <source>Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Proyecto %1 · %2 · TolTurn %3 · longitud %4 mm, bruto Ø%5 mm</translation>
     </message>
     <message>
         <source>1  Part</source>
-        <translation type="unfinished"></translation>
+        <translation>1  Pieza</translation>
     </message>
     <message>
         <source>2  Inputs</source>
-        <translation type="unfinished"></translation>
+        <translation>2  Datos de entrada</translation>
     </message>
     <message>
         <source>Input</source>
-        <translation type="unfinished"></translation>
+        <translation>Dato</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor</translation>
     </message>
     <message>
         <source>Material</source>
-        <translation type="unfinished"></translation>
+        <translation>Material</translation>
     </message>
     <message>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Máquina</translation>
     </message>
     <message>
         <source>Insert</source>
-        <translation type="unfinished"></translation>
+        <translation>Plaquita</translation>
     </message>
     <message>
         <source>%1: %2° corner, nose radius %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ángulo de punta %2°, radio de punta %3 mm</translation>
     </message>
     <message>
         <source>Holder</source>
-        <translation type="unfinished"></translation>
+        <translation>Portaherramientas</translation>
     </message>
     <message>
         <source>%1: entering angle %2°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ángulo de posición %2°</translation>
     </message>
     <message>
         <source>Clamping</source>
-        <translation type="unfinished"></translation>
+        <translation>Sujeción</translation>
     </message>
     <message>
         <source>%1, clamped length %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, longitud de amarre %2 mm</translation>
     </message>
     <message>
         <source>Pass %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasada %1</translation>
     </message>
     <message>
         <source>%1: vc %2 m/min, f %3 mm/rev, ap %4 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: vc %2 m/min, f %3 mm/rev, ap %4 mm</translation>
     </message>
     <message>
         <source>Force model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modelo de fuerzas</translation>
     </message>
     <message>
         <source>Machine characterisation</source>
-        <translation type="unfinished"></translation>
+        <translation>Caracterización de la máquina</translation>
     </message>
     <message>
         <source>not characterised</source>
-        <translation type="unfinished"></translation>
+        <translation>no caracterizada</translation>
     </message>
     <message>
         <source>3  Predicted deviation</source>
-        <translation type="unfinished"></translation>
+        <translation>3  Desviación prevista</translation>
     </message>
     <message>
         <source>Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasada de acabado %1: fuerzas (%2) Fc %3 N, Ff %4 N, Fp %5 N; Ra teórica %6 µm, Rz %7 µm.</translation>
     </message>
     <message>
         <source>z from the part&apos;s left end [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>z desde el extremo izquierdo de la pieza [mm]</translation>
     </message>
     <message>
         <source>deviation [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>desviación [µm]</translation>
     </message>
     <message>
         <source>Radial deviation of the outer contour (material left)</source>
-        <translation type="unfinished"></translation>
+        <translation>Desviación radial del contorno exterior (material sobrante)</translation>
     </message>
     <message>
         <source>Radial deviation of the bores (material left)</source>
-        <translation type="unfinished"></translation>
+        <translation>Desviación radial de los agujeros (material sobrante)</translation>
     </message>
     <message>
         <source>Face</source>
-        <translation type="unfinished"></translation>
+        <translation>Cara</translation>
     </message>
     <message>
         <source>z [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>z [mm]</translation>
     </message>
     <message>
         <source>tan θ</source>
-        <translation type="unfinished"></translation>
+        <translation>tan θ</translation>
     </message>
     <message>
         <source>axial run-out e [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>oscilación axial e [µm]</translation>
     </message>
     <message>
         <source>4  Tolerances</source>
-        <translation type="unfinished"></translation>
+        <translation>4  Tolerancias</translation>
     </message>
     <message>
         <source>The project has no tolerances.</source>
-        <translation type="unfinished"></translation>
+        <translation>El proyecto no tiene tolerancias.</translation>
     </message>
     <message>
         <source>ID</source>
-        <translation type="unfinished"></translation>
+        <translation>ID</translation>
     </message>
     <message>
         <source>Characteristic</source>
-        <translation type="unfinished"></translation>
+        <translation>Característica</translation>
     </message>
     <message>
         <source>Feature</source>
-        <translation type="unfinished"></translation>
+        <translation>Elemento</translation>
     </message>
     <message>
         <source>Specification</source>
-        <translation type="unfinished"></translation>
+        <translation>Especificación</translation>
     </message>
     <message>
         <source>Value [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor [µm]</translation>
     </message>
     <message>
         <source>Limit [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Límite [µm]</translation>
     </message>
     <message>
         <source>Use</source>
-        <translation type="unfinished"></translation>
+        <translation>Uso</translation>
     </message>
     <message>
         <source>Verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>Veredicto</translation>
     </message>
     <message>
         <source>optimum</source>
-        <translation type="unfinished"></translation>
+        <translation>óptimo</translation>
     </message>
     <message>
         <source>feed f [mm/rev]</source>
-        <translation type="unfinished"></translation>
+        <translation>avance f [mm/rev]</translation>
     </message>
     <message>
         <source>cutting speed vc [m/min]</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad de corte vc [m/min]</translation>
     </message>
     <message>
         <source>Cutting window of the finishing pass (green: feasible)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ventana de corte de la pasada de acabado (verde: factible)</translation>
     </message>
     <message>
         <source>5  Plan</source>
-        <translation type="unfinished"></translation>
+        <translation>5  Plan</translation>
     </message>
     <message>
         <source>The project has no planning data (the insert&apos;s cutting ranges), so no plan was optimised.</source>
-        <translation type="unfinished"></translation>
+        <translation>El proyecto no tiene datos de planificación (los intervalos de corte de la plaquita), por lo que no se ha optimizado ningún plan.</translation>
     </message>
     <message>
         <source>Optimal plan (%1): </source>
-        <translation type="unfinished"></translation>
+        <translation>Plan óptimo (%1): </translation>
     </message>
     <message>
         <source>No plan meets every constraint; the least-violating one (%1): </source>
-        <translation type="unfinished"></translation>
+        <translation>Ningún plan cumple todas las restricciones; el que menos las incumple (%1): </translation>
     </message>
     <message>
         <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 roughing passes at vc %6 m/min, f %7 mm/rev.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 pasadas de desbaste a vc %6 m/min, f %7 mm/rev.</translation>
     </message>
     <message>
         <source>%1 violated by %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: incumplida en un %2 %</translation>
     </message>
     <message>
         <source>Binding: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Restricciones activas: %1.</translation>
     </message>
     <message>
         <source>Rank</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición</translation>
     </message>
     <message>
         <source>Result</source>
-        <translation type="unfinished"></translation>
+        <translation>Resultado</translation>
     </message>
     <message>
         <source>Action</source>
-        <translation type="unfinished"></translation>
+        <translation>Acción</translation>
     </message>
     <message>
         <source>Offset Ø [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Corrección Ø [µm]</translation>
     </message>
     <message>
         <source>Residual before [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Residuo antes [µm]</translation>
     </message>
     <message>
         <source>Residual after [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Residuo después [µm]</translation>
     </message>
     <message>
         <source>Compensation of the project&apos;s finishing pass, only where a tolerance needs it:</source>
-        <translation type="unfinished"></translation>
+        <translation>Compensación de la pasada de acabado del proyecto, solo donde lo requiere una tolerancia:</translation>
     </message>
     <message>
         <source>6  Assumptions and sources</source>
-        <translation type="unfinished"></translation>
+        <translation>6  Hipótesis y fuentes</translation>
     </message>
     <message>
         <source>Model: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP system for turning (2008): eq. 2–8 (deviation), §V and Fig. 4 (tolerances), §VI (optimisation). X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) (2002): eq. 15–20 (forces), §3.4 (compensation). Kienzle (1952) forces; Timoshenko beam with the shear coefficient of G. R. Cowper (1966); ISO 286-1/-2 limits; ISO 1101 characteristics. The equations as implemented, their corrections and the validation: docs/model.md in TolTurn.</source>
-        <translation type="unfinished"></translation>
+        <translation>Modelo: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP system for turning (2008): ec. 2–8 (desviación), §V y Fig. 4 (tolerancias), §VI (optimización). X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) (2002): ec. 15–20 (fuerzas), §3.4 (compensación). Fuerzas de Kienzle (1952); viga de Timoshenko con el coeficiente de cortante de G. R. Cowper (1966); límites ISO 286-1/-2; características ISO 1101. Las ecuaciones tal como están implementadas, sus correcciones y la validación: docs/model.md en TolTurn.</translation>
     </message>
     <message>
         <source>Material data (%1): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Datos del material (%1): %2</translation>
     </message>
     <message>
         <source>Elastic constants: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Constantes elásticas: %1</translation>
     </message>
     <message>
         <source>Cutting ranges: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Intervalos de corte: %1</translation>
     </message>
     <message>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>cancelado</translation>
     </message>
     <message>
         <source>TolTurn report: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Informe de TolTurn: %1</translation>
     </message>
     <message>
         <source>page %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>página %1 de %2</translation>
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
     <name>ToleranceVerdicts</name>
     <message>
         <source>feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported length), so no deviation is predicted for it</source>
-        <translation type="unfinished"></translation>
+        <translation>el elemento %1 no se mecaniza en este montaje (está dentro de las garras del plato o fuera de la longitud apoyada), por lo que no se predice ninguna desviación para él</translation>
     </message>
     <message>
         <source>the limits of %1 at %2 mm cannot be formed</source>
-        <translation type="unfinished"></translation>
+        <translation>no se pueden formar los límites de %1 para %2 mm</translation>
     </message>
     <message>
         <source>Fig. 4b, eq. 13: D&apos;_Md &lt;= Dn + dDu and D&apos;_md &gt;= Dn + dDl</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4b, eq. 13: D&apos;_Md &lt;= Dn + dDu y D&apos;_md &gt;= Dn + dDl</translation>
     </message>
     <message>
         <source>Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4b: eq. 13 no se cumple tal como está programado, eq. 15 se cumple: 2|delta_TMd - delta_Tmd| &lt;= t</translation>
     </message>
     <message>
         <source>a constant tool offset of %1 µm on the diameter centres the size in its tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>una corrección constante de la herramienta de %1 µm en el diámetro centra la medida en su tolerancia</translation>
     </message>
     <message>
         <source>Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| &gt; t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| &gt; t</translation>
     </message>
     <message>
         <source>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</translation>
     </message>
     <message>
         <source>Fig. 4e, eq. 22: delta_TMd + delta_Tmd &lt;= t / cos(alpha)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4e, eq. 22: delta_TMd + delta_Tmd &lt;= t / cos(alpha)</translation>
     </message>
     <message>
         <source>Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4e: eq. 22 no se cumple tal como está programado; la dispersión de la desviación normal cabe en t</translation>
     </message>
     <message>
         <source>a constant offset of %1 µm normal to the surface centres it in the zone</source>
-        <translation type="unfinished"></translation>
+        <translation>una corrección constante de %1 µm normal a la superficie la centra en la zona</translation>
     </message>
     <message>
         <source>Fig. 4e, eq. 22: the spread of the normal deviation exceeds t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4e, eq. 22: la dispersión de la desviación normal supera t</translation>
     </message>
     <message>
         <source>there is no feature &apos;%1&apos; in the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe el elemento &apos;%1&apos; en el perfil</translation>
     </message>
     <message>
         <source>Fig. 4c, eq. 16: e_i &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4c, eq. 16: e_i &lt;= t</translation>
     </message>
     <message>
         <source>Fig. 4f, eq. 23: e_j &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4f, eq. 23: e_j &lt;= t</translation>
     </message>
     <message>
         <source>Fig. 4i, §V.J (eq. 16 and 24): e_j &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4i, §V.J (eq. 16 y 24): e_j &lt;= t</translation>
     </message>
     <message>
         <source>Fig. 4g, eq. 24 (face to the datum axis): e_j &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4g, eq. 24 (cara respecto al eje de referencia): e_j &lt;= t</translation>
     </message>
     <message>
         <source>Perpendicularity of an axis to a face depends on how the part is aligned in the lathe; the axis recovers elastically after cutting, so the cutting-force deflection does not decide it (Valiño et al. 2008 §V.G.2).</source>
-        <translation type="unfinished"></translation>
+        <translation>La perpendicularidad de un eje respecto a una cara depende de cómo se alinea la pieza en el torno; el eje se recupera elásticamente tras el corte, por lo que la flexión debida a la fuerza de corte no la determina (Valiño et al. 2008 §V.G.2).</translation>
     </message>
     <message>
         <source>Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| &lt;= t</translation>
     </message>
     <message>
         <source>Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| &lt;= t</translation>
     </message>
     <message>
         <source>Coaxiality limits how far parts of the axis lie apart; the axis recovers elastically after cutting, so the error comes from set-up and alignment, not from the cutting-force deflection (Valiño et al. 2008 §V.H).</source>
-        <translation type="unfinished"></translation>
+        <translation>La coaxialidad limita la separación entre las distintas partes del eje; el eje se recupera elásticamente tras el corte, por lo que el error procede del montaje y la alineación, no de la flexión debida a la fuerza de corte (Valiño et al. 2008 §V.H).</translation>
     </message>
     <message>
         <source>The deflection under the cutting force is symmetrical about the axis of rotation and leaves no circular run-out; that comes from clamping deformation or misalignment (Valiño et al. 2008 §V.I).</source>
-        <translation type="unfinished"></translation>
+        <translation>La flexión bajo la fuerza de corte es simétrica respecto al eje de giro y no produce oscilación circular; esta procede de la deformación por sujeción o de la desalineación (Valiño et al. 2008 §V.I).</translation>
     </message>
     <message>
         <source>passes as programmed</source>
-        <translation type="unfinished"></translation>
+        <translation>cumple tal como está programado</translation>
     </message>
     <message>
         <source>passes after a constant offset</source>
-        <translation type="unfinished"></translation>
+        <translation>cumple tras una corrección constante</translation>
     </message>
     <message>
         <source>needs a profile correction</source>
-        <translation type="unfinished"></translation>
+        <translation>requiere una corrección del perfil</translation>
     </message>
     <message>
         <source>not predicted by this model</source>
-        <translation type="unfinished"></translation>
+        <translation>no lo predice este modelo</translation>
     </message>
     <message>
         <source>cannot be evaluated</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede evaluar</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
         <source>Tolerance-aware planning of CNC turning.</source>
-        <translation type="unfinished"></translation>
+        <translation>Planificación del torneado CNC teniendo en cuenta las tolerancias.</translation>
     </message>
     <message>
         <source>Project file to open (.tolturn).</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo de proyecto que se va a abrir (.tolturn).</translation>
     </message>
 </context>
 <context>
     <name>tolturn::AboutDialog</name>
     <message>
         <source>&lt;p&gt;Tolerance-aware planning of CNC turning: deflection of machine, workpiece and tool, ISO 286 and ISO 1101 verdicts, and cutting conditions that hold them.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later (GPL-3.0-or-later). There is no warranty.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Planificación del torneado CNC teniendo en cuenta las tolerancias: flexión de la máquina, la pieza y la herramienta, veredictos ISO 286 e ISO 1101, y condiciones de corte que permiten cumplirlos.&lt;/p&gt;&lt;p&gt;Publicado bajo la Licencia Pública General de GNU, versión 3 o posterior (GPL-3.0-or-later). No se ofrece ninguna garantía.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Built with</source>
-        <translation type="unfinished"></translation>
+        <translation>Compilado con</translation>
     </message>
     <message>
         <source>Library</source>
-        <translation type="unfinished"></translation>
+        <translation>Biblioteca</translation>
     </message>
     <message>
         <source>Version</source>
-        <translation type="unfinished"></translation>
+        <translation>Versión</translation>
     </message>
     <message>
         <source>Licence</source>
-        <translation type="unfinished"></translation>
+        <translation>Licencia</translation>
     </message>
     <message>
         <source>About TolTurn</source>
-        <translation type="unfinished"></translation>
+        <translation>Acerca de TolTurn</translation>
     </message>
 </context>
 <context>
     <name>tolturn::DeflectionPanel</name>
     <message>
         <source>Outer contour</source>
-        <translation type="unfinished"></translation>
+        <translation>Contorno exterior</translation>
     </message>
     <message>
         <source>Inner contour (bores)</source>
-        <translation type="unfinished"></translation>
+        <translation>Contorno interior (agujeros)</translation>
     </message>
     <message>
         <source>Radial deviation by contribution</source>
-        <translation type="unfinished"></translation>
+        <translation>Desviación radial por contribución</translation>
     </message>
     <message>
         <source>Tangential deviation by contribution</source>
-        <translation type="unfinished"></translation>
+        <translation>Desviación tangencial por contribución</translation>
     </message>
     <message>
         <source>Diameter error</source>
-        <translation type="unfinished"></translation>
+        <translation>Error de diámetro</translation>
     </message>
     <message>
         <source>Radial deviation: material left on the surface, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, eq. 2). Diameter error: 2 (r - r_nominal) with the radial and tangential deviation combined exactly.</source>
-        <translation type="unfinished"></translation>
+        <translation>Desviación radial: material sobrante en la superficie, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, ec. 2). Error de diámetro: 2 (r - r_nominal), combinando exactamente la desviación radial y la tangencial.</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>total</translation>
     </message>
     <message>
         <source>spindle–chuck / supports</source>
-        <translation type="unfinished"></translation>
+        <translation>husillo–plato / apoyos</translation>
     </message>
     <message>
         <source>workpiece</source>
-        <translation type="unfinished"></translation>
+        <translation>pieza</translation>
     </message>
     <message>
         <source>toolpost</source>
-        <translation type="unfinished"></translation>
+        <translation>torreta</translation>
     </message>
     <message>
         <source>thermal</source>
-        <translation type="unfinished"></translation>
+        <translation>térmica</translation>
     </message>
     <message>
         <source>Radial deviation (material left on the surface)</source>
-        <translation type="unfinished"></translation>
+        <translation>Desviación radial (material sobrante en la superficie)</translation>
     </message>
     <message>
         <source>Tangential deviation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>z from the part&apos;s left end [mm]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>deviation [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Desviación tangencial</translation>
     </message>
     <message>
         <source>diameter error</source>
-        <translation type="unfinished"></translation>
+        <translation>error de diámetro</translation>
     </message>
     <message>
         <source>Diameter error: machined minus nominal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>diameter error [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Error de diámetro: mecanizado menos nominal</translation>
     </message>
     <message>
         <source>Forces (%1): Fc %2 N, Ff %3 N, Fp %4 N · pass %5: vc %6 m/min, f %7 mm/rev, ap %8 mm · Ra %9 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerzas (%1): Fc %2 N, Ff %3 N, Fp %4 N · pasada %5: vc %6 m/min, f %7 mm/rev, ap %8 mm · Ra %9 µm</translation>
     </message>
     <message>
         <source>Error: </source>
-        <translation type="unfinished"></translation>
+        <translation>Error: </translation>
     </message>
     <message>
         <source>Warning: </source>
-        <translation type="unfinished"></translation>
+        <translation>Advertencia: </translation>
+    </message>
+    <message>
+        <source>z from the part&apos;s left end [%1]</source>
+        <translation>z desde el extremo izquierdo de la pieza [%1]</translation>
+    </message>
+    <message>
+        <source>deviation [%1]</source>
+        <translation>desviación [%1]</translation>
+    </message>
+    <message>
+        <source>diameter error [%1]</source>
+        <translation>error de diámetro [%1]</translation>
     </message>
 </context>
 <context>
     <name>tolturn::FeaturePanel</name>
     <message>
         <source>z of the start, from the part&apos;s left end</source>
-        <translation type="unfinished"></translation>
+        <translation>z del inicio, desde el extremo izquierdo de la pieza</translation>
     </message>
     <message>
         <source>Diameter at the start</source>
-        <translation type="unfinished"></translation>
+        <translation>Diámetro en el inicio</translation>
     </message>
     <message>
         <source>z of the end</source>
-        <translation type="unfinished"></translation>
+        <translation>z del final</translation>
     </message>
     <message>
         <source>Diameter at the end</source>
-        <translation type="unfinished"></translation>
+        <translation>Diámetro en el final</translation>
     </message>
     <message>
         <source>Where the step is, inside the cylinder</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición del escalón dentro del cilindro</translation>
     </message>
     <message>
         <source>Diameter after the step</source>
-        <translation type="unfinished"></translation>
+        <translation>Diámetro después del escalón</translation>
     </message>
     <message>
         <source>Insert &amp;Step</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Insertar escalón</translation>
     </message>
     <message>
         <source>Chamfer leg (45°) or radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Cateto del chaflán (45°) o radio</translation>
     </message>
     <message>
         <source>&amp;Delete Feature</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Eliminar elemento</translation>
     </message>
     <message>
         <source>Make C&amp;one</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir en c&amp;ono</translation>
     </message>
     <message>
         <source>Depth of the bore from this end face; the part&apos;s length bores through</source>
-        <translation type="unfinished"></translation>
+        <translation>Profundidad del agujero desde esta cara extrema; la longitud de la pieza lo hace pasante</translation>
     </message>
     <message>
         <source>Diameter of the bore</source>
-        <translation type="unfinished"></translation>
+        <translation>Diámetro del agujero</translation>
     </message>
     <message>
         <source>&amp;Bore from This Face</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Agujero desde esta cara</translation>
     </message>
     <message>
         <source>Corners</source>
-        <translation type="unfinished"></translation>
+        <translation>Esquinas</translation>
     </message>
     <message>
         <source>Start z:</source>
-        <translation type="unfinished"></translation>
+        <translation>z inicial:</translation>
     </message>
     <message>
         <source>Start Ø:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ø inicial:</translation>
     </message>
     <message>
         <source>End z:</source>
-        <translation type="unfinished"></translation>
+        <translation>z final:</translation>
     </message>
     <message>
         <source>End Ø:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ø final:</translation>
     </message>
     <message>
         <source>Step (cylinders)</source>
-        <translation type="unfinished"></translation>
+        <translation>Escalón (cilindros)</translation>
     </message>
     <message>
         <source>At z:</source>
-        <translation type="unfinished"></translation>
+        <translation>En z:</translation>
     </message>
     <message>
         <source>To Ø:</source>
-        <translation type="unfinished"></translation>
+        <translation>A Ø:</translation>
     </message>
     <message>
         <source>Break a corner</source>
-        <translation type="unfinished"></translation>
+        <translation>Romper una arista</translation>
     </message>
     <message>
         <source>Size:</source>
-        <translation type="unfinished"></translation>
+        <translation>Tamaño:</translation>
     </message>
     <message>
         <source>Chamfer start</source>
-        <translation type="unfinished"></translation>
+        <translation>Chaflán al inicio</translation>
     </message>
     <message>
         <source>Chamfer end</source>
-        <translation type="unfinished"></translation>
+        <translation>Chaflán al final</translation>
     </message>
     <message>
         <source>Round start</source>
-        <translation type="unfinished"></translation>
+        <translation>Redondeo al inicio</translation>
     </message>
     <message>
         <source>Round end</source>
-        <translation type="unfinished"></translation>
+        <translation>Redondeo al final</translation>
     </message>
     <message>
         <source>Bore (solid part, end face)</source>
-        <translation type="unfinished"></translation>
+        <translation>Agujero (pieza maciza, cara extrema)</translation>
     </message>
     <message>
         <source>Depth:</source>
-        <translation type="unfinished"></translation>
+        <translation>Profundidad:</translation>
     </message>
     <message>
         <source>Ø:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ø:</translation>
     </message>
     <message>
         <source>Click a feature of the drawing to edit it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Haga clic en un elemento del dibujo para editarlo.</translation>
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt; %2 — %3, %4 contour</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt; %2 — %3, contorno %4</translation>
     </message>
     <message>
         <source>Make C&amp;ylinder</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir en ci&amp;lindro</translation>
     </message>
     <message>
         <source>Move corner of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Mover esquina de %1</translation>
     </message>
     <message>
         <source>Move corner to z %1, Ø %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Mover esquina a z %1, Ø %2</translation>
     </message>
     <message>
         <source>Insert step into %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Insertar escalón en %1</translation>
     </message>
     <message>
         <source>Round corner of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Redondear esquina de %1</translation>
     </message>
     <message>
         <source>Chamfer corner of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Achaflanar esquina de %1</translation>
     </message>
     <message>
         <source>Make %1 a cylinder</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir %1 en cilindro</translation>
     </message>
     <message>
         <source>Make %1 a cone</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir %1 en cono</translation>
     </message>
     <message>
         <source>Bore from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Agujero desde %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Eliminar %1</translation>
     </message>
 </context>
 <context>
     <name>tolturn::FileController</name>
     <message>
         <source>TolTurn projects (*.tolturn *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Proyectos de TolTurn (*.tolturn *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
         <source>New part</source>
-        <translation type="unfinished"></translation>
+        <translation>Pieza nueva</translation>
     </message>
     <message>
         <source>New project: a plain bar to shape</source>
-        <translation type="unfinished"></translation>
+        <translation>Proyecto nuevo: una barra lisa a la que dar forma</translation>
     </message>
     <message>
         <source>Cannot open %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede abrir %1</translation>
     </message>
     <message>
         <source>The file was not opened; the current project is unchanged.
 
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se ha abierto el archivo; el proyecto actual no ha cambiado.
+
+%1</translation>
     </message>
     <message>
         <source>Opened %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Se ha abierto %1</translation>
     </message>
     <message>
         <source>the unsaved project &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>el proyecto sin guardar &quot;%1&quot;</translation>
     </message>
     <message>
         <source>Cannot recover %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede recuperar %1</translation>
     </message>
     <message>
         <source>The copy %1 cannot be read; it is kept.
 
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede leer la copia %1; se conserva.
+
+%2</translation>
     </message>
     <message>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Se ha recuperado %1 tal como estaba el %2; guárdelo para conservarlo.</translation>
     </message>
     <message>
         <source>Cannot export the report</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede exportar el informe</translation>
     </message>
     <message numerus="yes">
         <source>Report written to %1 (%n page(s))</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Informe escrito en %1 (%n página)</numerusform>
+            <numerusform>Informe escrito en %1 (%n páginas)</numerusform>
         </translation>
     </message>
     <message>
         <source>Cannot save %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede guardar %1</translation>
     </message>
     <message>
         <source>The project was not saved; the file on disk is unchanged.
 
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se ha guardado el proyecto; el archivo en disco no ha cambiado.
+
+%1</translation>
     </message>
     <message>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Se ha guardado %1</translation>
     </message>
 </context>
 <context>
     <name>tolturn::MainWindow</name>
     <message>
         <source>Open a project (File &gt; Open) or an example part (File &gt; Open Example).</source>
-        <translation type="unfinished"></translation>
+        <translation>Abra un proyecto (Archivo &gt; Abrir) o una pieza de ejemplo (Archivo &gt; Abrir ejemplo).</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Editar</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Deshacer</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rehacer</translation>
     </message>
     <message>
         <source>&amp;Delete Feature</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Eliminar elemento</translation>
     </message>
     <message>
         <source>Set-up</source>
-        <translation type="unfinished"></translation>
+        <translation>Preparación</translation>
     </message>
     <message>
         <source>Feature</source>
-        <translation type="unfinished"></translation>
+        <translation>Elemento</translation>
     </message>
     <message>
         <source>Tolerances</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancias</translation>
     </message>
     <message>
         <source>Deflection</source>
-        <translation type="unfinished"></translation>
+        <translation>Flexión</translation>
     </message>
     <message>
         <source>Planning</source>
-        <translation type="unfinished"></translation>
+        <translation>Planificación</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ver</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Archivo</translation>
     </message>
     <message>
         <source>&amp;New</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nuevo</translation>
     </message>
     <message>
         <source>&amp;Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Abrir…</translation>
     </message>
     <message>
         <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir &amp;reciente</translation>
     </message>
     <message>
         <source>Open &amp;Example</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir e&amp;jemplo</translation>
     </message>
     <message>
         <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Guardar</translation>
     </message>
     <message>
         <source>Save &amp;As…</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar &amp;como…</translation>
     </message>
     <message>
         <source>Export &amp;Report…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar &amp;informe…</translation>
     </message>
     <message>
         <source>&amp;Close</source>
-        <translation type="unfinished"></translation>
+        <translation>C&amp;errar</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Salir</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>Ay&amp;uda</translation>
     </message>
     <message>
         <source>&amp;About TolTurn</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Acerca de TolTurn</translation>
     </message>
     <message>
         <source>About &amp;Qt</source>
-        <translation type="unfinished"></translation>
+        <translation>Acerca de &amp;Qt</translation>
     </message>
     <message>
         <source>&amp;Clear List</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Borrar lista</translation>
     </message>
     <message>
         <source>%1[*] — TolTurn</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 — length %2 mm, Ø max %3 mm, %4 outer / %5 inner features, clamping: %6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1[*] — TolTurn</translation>
     </message>
     <message>
         <source>Part</source>
-        <translation type="unfinished"></translation>
+        <translation>Pieza</translation>
     </message>
     <message>
         <source>Open Project</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir proyecto</translation>
     </message>
     <message>
         <source>Save Project As</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar proyecto como</translation>
     </message>
     <message>
         <source>Export Report</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar informe</translation>
     </message>
     <message>
         <source>PDF documents (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>Documentos PDF (*.pdf)</translation>
     </message>
     <message>
         <source>Recover Unsaved Changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Recuperar cambios sin guardar</translation>
     </message>
     <message>
         <source>TolTurn did not close normally. A copy of %1 with unsaved changes was kept at %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>TolTurn no se cerró correctamente. Se conservó una copia de %1 con cambios sin guardar en %2.</translation>
     </message>
     <message>
         <source>Recover it? A discarded copy is deleted.</source>
-        <translation type="unfinished"></translation>
+        <translation>¿Recuperarla? Si se descarta, la copia se elimina.</translation>
     </message>
     <message>
         <source>&amp;Recover</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Recuperar</translation>
     </message>
     <message>
         <source>&amp;Discard</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Descartar</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambios sin guardar</translation>
     </message>
     <message>
         <source>%1 has changes that are not saved.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 tiene cambios sin guardar.</translation>
     </message>
     <message>
         <source>Save them before going on?</source>
-        <translation type="unfinished"></translation>
+        <translation>¿Guardarlos antes de continuar?</translation>
+    </message>
+    <message>
+        <source>Pre&amp;ferences…</source>
+        <translation>Pre&amp;ferencias…</translation>
+    </message>
+    <message>
+        <source>The new language is used when TolTurn is next started.</source>
+        <translation>El nuevo idioma se usará la próxima vez que se inicie TolTurn.</translation>
+    </message>
+    <message>
+        <source>%1 — length %2 %7, Ø max %3 %7, %4 outer / %5 inner features, clamping: %6</source>
+        <translation>%1 — longitud %2 %7, Ø máx. %3 %7, %4 elementos exteriores / %5 interiores, sujeción: %6</translation>
     </message>
 </context>
 <context>
     <name>tolturn::PlanningPanel</name>
     <message>
         <source>Optimise</source>
-        <translation type="unfinished"></translation>
+        <translation>Optimizar</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelar</translation>
     </message>
     <message>
         <source>Apply to Passes</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar a las pasadas</translation>
     </message>
     <message>
         <source>Compensated</source>
-        <translation type="unfinished"></translation>
+        <translation>Compensado</translation>
     </message>
     <message>
         <source>Export G-code…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar código G…</translation>
     </message>
     <message>
         <source>Least time per part</source>
-        <translation type="unfinished"></translation>
+        <translation>Mínimo tiempo por pieza</translation>
     </message>
     <message>
         <source>Least cost per part</source>
-        <translation type="unfinished"></translation>
+        <translation>Mínimo coste por pieza</translation>
     </message>
     <message>
         <source>Window: feed – cutting speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Ventana: avance – velocidad de corte</translation>
     </message>
     <message>
         <source>Window: feed – depth of cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Ventana: avance – profundidad de corte</translation>
     </message>
     <message>
         <source>Constraints:</source>
-        <translation type="unfinished"></translation>
+        <translation>Restricciones:</translation>
     </message>
     <message>
         <source>Switch the %1 constraint on or off (docs/planning.md §2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Activar o desactivar la restricción %1 (docs/planning.md §2)</translation>
     </message>
     <message>
         <source>Rank</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición</translation>
     </message>
     <message>
         <source>Clamping</source>
-        <translation type="unfinished"></translation>
+        <translation>Sujeción</translation>
     </message>
     <message>
         <source>Result</source>
-        <translation type="unfinished"></translation>
+        <translation>Resultado</translation>
     </message>
     <message>
         <source>Feature</source>
-        <translation type="unfinished"></translation>
+        <translation>Elemento</translation>
     </message>
     <message>
         <source>Tolerances</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerancias</translation>
     </message>
     <message>
         <source>Action</source>
-        <translation type="unfinished"></translation>
+        <translation>Acción</translation>
     </message>
     <message>
         <source>Offset Ø [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Corrección Ø [µm]</translation>
     </message>
     <message>
         <source>Residual before [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Residuo antes [µm]</translation>
     </message>
     <message>
         <source>Residual after [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Residuo después [µm]</translation>
     </message>
     <message>
         <source>Note</source>
-        <translation type="unfinished"></translation>
+        <translation>Nota</translation>
     </message>
     <message>
         <source>Plan</source>
-        <translation type="unfinished"></translation>
+        <translation>Plan</translation>
     </message>
     <message>
         <source>Cutting Window</source>
-        <translation type="unfinished"></translation>
+        <translation>Ventana de corte</translation>
     </message>
     <message>
         <source>Compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>Compensación</translation>
     </message>
     <message>
         <source>G-code</source>
-        <translation type="unfinished"></translation>
+        <translation>Código G</translation>
     </message>
     <message>
         <source>Export G-code</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar código G</translation>
     </message>
     <message>
         <source>G-code (*.nc *.ngc *.tap);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Código G (*.nc *.ngc *.tap);;Todos los archivos (*)</translation>
     </message>
     <message>
         <source>Apply optimal passes</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar pasadas óptimas</translation>
     </message>
     <message>
         <source>Cancelled.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelado.</translation>
     </message>
     <message>
         <source>Optimal plan</source>
-        <translation type="unfinished"></translation>
+        <translation>Plan óptimo</translation>
     </message>
     <message>
         <source>No plan meets every constraint; the least-violating one:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ningún plan cumple todas las restricciones; el que menos las incumple:</translation>
     </message>
     <message>
         <source>Time per part %1 min (finishing %2 min, roughing %3 min); cost %4; tool edges %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo por pieza %1 min (acabado %2 min, desbaste %3 min); coste %4; filos de herramienta %5</translation>
     </message>
     <message>
         <source>Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Acabado: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
     <message>
         <source>Roughing: %1 passes at vc %2 m/min, f %3 mm/rev</source>
-        <translation type="unfinished"></translation>
+        <translation>Desbaste: %1 pasadas a vc %2 m/min, f %3 mm/rev</translation>
     </message>
     <message>
         <source>Binding: %1 (%2 of %3 %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Restricción activa: %1 (%2 de %3 %4)</translation>
     </message>
     <message>
         <source>Violated: %1 by %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>Restricción incumplida: %1 en un %2 %</translation>
     </message>
     <message>
         <source>Note: </source>
-        <translation type="unfinished"></translation>
+        <translation>Nota: </translation>
     </message>
     <message>
         <source>&lt;b&gt;Green&lt;/b&gt;: feasible, darker is better.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Verde&lt;/b&gt;: factible; cuanto más oscuro, mejor.</translation>
     </message>
     <message>
         <source>optimum</source>
-        <translation type="unfinished"></translation>
+        <translation>óptimo</translation>
     </message>
     <message>
         <source>Cutting window of the finishing pass: feed – cutting speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Ventana de corte de la pasada de acabado: avance – velocidad de corte</translation>
     </message>
     <message>
         <source>Cutting window of the finishing pass: feed – depth of cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Ventana de corte de la pasada de acabado: avance – profundidad de corte</translation>
     </message>
     <message>
         <source>feed f [mm/rev]</source>
-        <translation type="unfinished"></translation>
+        <translation>avance f [mm/rev]</translation>
     </message>
     <message>
         <source>cutting speed vc [m/min]</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad de corte vc [m/min]</translation>
     </message>
     <message>
         <source>depth of cut ap [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>profundidad de corte ap [mm]</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>ninguna</translation>
     </message>
     <message>
         <source>constant offset</source>
-        <translation type="unfinished"></translation>
+        <translation>corrección constante</translation>
     </message>
     <message>
         <source>profile correction</source>
-        <translation type="unfinished"></translation>
+        <translation>corrección del perfil</translation>
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede guardar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
     <message>
-        <source>Drag to move this corner (snaps to %1 mm; Shift: 0.01 mm)</source>
-        <translation type="unfinished"></translation>
+        <source>Drag to move this corner (snaps to %1 %3; Shift: %2 %3)</source>
+        <translation>Arrastrar para mover esta esquina (ajusta a %1 %3; Mayús: %2 %3)</translation>
     </message>
     <message>
-        <source>z %1 mm, Ø %2 mm</source>
-        <translation type="unfinished"></translation>
+        <source>z %1 %3, Ø %2 %3</source>
+        <translation>z %1 %3, Ø %2 %3</translation>
     </message>
 </context>
 <context>
     <name>tolturn::ProjectDocument</name>
     <message>
         <source>Untitled</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin título</translation>
     </message>
     <message>
         <source>Add tolerance %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir tolerancia %1</translation>
     </message>
     <message>
         <source>there is no tolerance %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe la tolerancia %1</translation>
     </message>
     <message>
         <source>Edit tolerance %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar tolerancia %1</translation>
     </message>
     <message>
         <source>Remove tolerance %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Quitar tolerancia %1</translation>
     </message>
     <message>
         <source>Set datum %1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Definir referencia %1 en %2</translation>
     </message>
     <message>
         <source>Change planning settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar la configuración de planificación</translation>
     </message>
     <message>
         <source>Change material to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar material a %1</translation>
     </message>
     <message>
         <source>Change machine to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar máquina a %1</translation>
     </message>
     <message>
         <source>Change tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar herramienta</translation>
     </message>
     <message>
         <source>Change clamping</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar sujeción</translation>
     </message>
     <message>
         <source>Change machine stiffness</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar rigidez de la máquina</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::SettingsDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Preferencias</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Idioma del sistema</translation>
+    </message>
+    <message>
+        <source>Millimetres (lengths in mm, deviations in µm)</source>
+        <translation>Milímetros (longitudes en mm, desviaciones en µm)</translation>
+    </message>
+    <message>
+        <source>Inches (lengths in in, deviations in µin)</source>
+        <translation>Pulgadas (longitudes en in, desviaciones en µin)</translation>
+    </message>
+    <message>
+        <source>Lengths on the drawing, in the feature and set-up panels and in the plots; deviations in the plots and the verdict table. Files, reports, cutting data and the ISO 286 tables stay in millimetres and micrometres.</source>
+        <translation>Longitudes en el dibujo, en los paneles de elemento y de preparación y en los gráficos; desviaciones en los gráficos y en la tabla de veredictos. Los archivos, los informes, los datos de corte y las tablas ISO 286 siguen en milímetros y micrómetros.</translation>
+    </message>
+    <message>
+        <source>A new language is used when TolTurn is next started.</source>
+        <translation>Un nuevo idioma se usará la próxima vez que se inicie TolTurn.</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Idioma:</translation>
+    </message>
+    <message>
+        <source>&amp;Units:</source>
+        <translation>&amp;Unidades:</translation>
     </message>
 </context>
 <context>
     <name>tolturn::SetupPanel</name>
     <message>
         <source>Kienzle: Fc = kc1.1 · b · h^(1 − mc) (MODEL.md §2, Kienzle 1952).</source>
-        <translation type="unfinished"></translation>
+        <translation>Kienzle: Fc = kc1.1 · b · h^(1 − mc) (MODEL.md §2, Kienzle 1952).</translation>
     </message>
     <message>
         <source>%1 (not in the data library)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (no está en la biblioteca de datos)</translation>
     </message>
     <message>
         <source>Length of the part in the jaws from its left end; the chuck face is at this z. The part is a beam built in there (Valiño et al. 2008, eq. 2–5).</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud de la pieza dentro de las garras desde su extremo izquierdo; la cara del plato está en esta z. La pieza es una viga empotrada en ese punto (Valiño et al. 2008, ec. 2–5).</translation>
     </message>
     <message>
         <source>Tool length out of the turret for the toolpost term (Valiño et al. 2008, eq. 6); &apos;from holder&apos; uses the holder&apos;s length.</source>
-        <translation type="unfinished"></translation>
+        <translation>Longitud de la herramienta fuera de la torreta para el término de la torreta (Valiño et al. 2008, ec. 6); &apos;según portaherramientas&apos; usa la longitud del portaherramientas.</translation>
     </message>
     <message>
         <source>from holder</source>
-        <translation type="unfinished"></translation>
+        <translation>según portaherramientas</translation>
     </message>
     <message>
         <source>Material and machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Material y máquina</translation>
     </message>
     <message>
         <source>&amp;Material:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Material:</translation>
     </message>
     <message>
         <source>Mac&amp;hine:</source>
-        <translation type="unfinished"></translation>
+        <translation>Má&amp;quina:</translation>
     </message>
     <message>
         <source>Stiffness:</source>
-        <translation type="unfinished"></translation>
+        <translation>Rigidez:</translation>
     </message>
     <message>
         <source>Tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Herramienta</translation>
     </message>
     <message>
         <source>ISO 1832 designation, e.g. CNMG 120408: shape, clearance, tolerance, type, size, thickness, corner radius.</source>
-        <translation type="unfinished"></translation>
+        <translation>Designación ISO 1832, p. ej. CNMG 120408: forma, ángulo de incidencia, tolerancia, tipo, tamaño, espesor, radio de punta.</translation>
     </message>
     <message>
         <source>&amp;Insert (ISO 1832):</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Plaquita (ISO 1832):</translation>
     </message>
     <message>
         <source>H&amp;older (ISO 5608):</source>
-        <translation type="unfinished"></translation>
+        <translation>P&amp;ortaherramientas (ISO 5608):</translation>
     </message>
     <message>
         <source>&amp;Overhang:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Voladizo:</translation>
     </message>
     <message>
         <source>Clamping</source>
-        <translation type="unfinished"></translation>
+        <translation>Sujeción</translation>
     </message>
     <message>
         <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3).</source>
-        <translation type="unfinished"></translation>
+        <translation>Condiciones de contorno de la viga de la pieza: empotrada en la cara del plato, apoyada en el punto del contrapunto o entre dos puntos (MODEL.md §3).</translation>
     </message>
     <message>
         <source>&amp;Method:</source>
-        <translation type="unfinished"></translation>
+        <translation>Mé&amp;todo:</translation>
     </message>
     <message>
         <source>Clamped &amp;length:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Longitud de amarre:</translation>
     </message>
     <message>
         <source>Cutting conditions</source>
-        <translation type="unfinished"></translation>
+        <translation>Condiciones de corte</translation>
     </message>
     <message>
         <source>Pass</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasada</translation>
     </message>
     <message>
         <source>vc [m/min]</source>
-        <translation type="unfinished"></translation>
+        <translation>vc [m/min]</translation>
     </message>
     <message>
         <source>f [mm/rev]</source>
-        <translation type="unfinished"></translation>
+        <translation>f [mm/rev]</translation>
     </message>
     <message>
         <source>ap [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>ap [mm]</translation>
     </message>
     <message>
         <source>Cutting speed vc: spindle speed n = 1000 vc / (π D).</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad de corte vc: velocidad del husillo n = 1000 vc / (π D).</translation>
     </message>
     <message>
         <source>Feed f: chip thickness h = f sin κr (Kienzle); Ra ≈ f² / (32 rε) (MODEL.md §2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Avance f: espesor de viruta h = f sin κr (Kienzle); Ra ≈ f² / (32 rε) (MODEL.md §2).</translation>
     </message>
     <message>
         <source>Depth of cut ap: chip width b = ap / sin κr (Kienzle).</source>
-        <translation type="unfinished"></translation>
+        <translation>Profundidad de corte ap: anchura de viruta b = ap / sin κr (Kienzle).</translation>
     </message>
     <message>
         <source>corner %1°, nose radius %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>ángulo de punta %1°, radio de punta %2 mm</translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>not characterised: the supports are taken as rigid. Measure k1, k2, k3 (Valiño et al. 2008 §III) and enter them in the project.</source>
-        <translation type="unfinished"></translation>
+        <translation>no caracterizada: los apoyos se consideran rígidos. Mida k1, k2, k3 (Valiño et al. 2008 §III) e introdúzcalos en el proyecto.</translation>
     </message>
     <message>
         <source>spindle k1 %1 N/mm, k2 %2 N·mm/rad, k3 %3 N·mm/rad</source>
-        <translation type="unfinished"></translation>
+        <translation>husillo k1 %1 N/mm, k2 %2 N·mm/rad, k3 %3 N·mm/rad</translation>
     </message>
     <message>
         <source>tailstock %1 N/mm</source>
-        <translation type="unfinished"></translation>
+        <translation>contrapunto %1 N/mm</translation>
     </message>
     <message>
         <source>centres %1 N/mm</source>
-        <translation type="unfinished"></translation>
+        <translation>puntos %1 N/mm</translation>
     </message>
     <message>
         <source>measured (%1): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>medida (%1): %2</translation>
     </message>
     <message>
         <source>Change cutting conditions</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar condiciones de corte</translation>
     </message>
     <message>
         <source>Machine stiffness not applied yet: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rigidez de la máquina aún no aplicada: %1.</translation>
     </message>
 </context>
 <context>
     <name>tolturn::StiffnessEditor</name>
     <message>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
     <message>
         <source>Measured machine stiffness</source>
-        <translation type="unfinished"></translation>
+        <translation>Rigidez medida de la máquina</translation>
     </message>
     <message>
         <source>Spindle–chuck springs (Valiño et al. 2008, §III, eq. 2–4): k1 radial translation [N/mm], k2 and k3 rotation [N·mm/rad] about the pivot Lc behind the chuck face.</source>
-        <translation type="unfinished"></translation>
+        <translation>Muelles husillo–plato (Valiño et al. 2008, §III, ec. 2–4): k1 traslación radial [N/mm], k2 y k3 giro [N·mm/rad] alrededor del pivote Lc detrás de la cara del plato.</translation>
     </message>
     <message>
         <source>Support stiffness of the centre at the part&apos;s right (or both) ends [N/mm], as a spring under the workpiece beam (MODEL.md §3).</source>
-        <translation type="unfinished"></translation>
+        <translation>Rigidez de apoyo del punto en el extremo derecho de la pieza (o en ambos extremos) [N/mm], como un muelle bajo la viga de la pieza (MODEL.md §3).</translation>
     </message>
     <message>
         <source>mm</source>
-        <translation type="unfinished"></translation>
+        <translation>mm</translation>
     </message>
     <message>
         <source>Lc: distance of the k2 spring behind the chuck face (Valiño et al. 2008, Fig. 2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Lc: distancia del muelle k2 detrás de la cara del plato (Valiño et al. 2008, Fig. 2).</translation>
     </message>
     <message>
         <source>who measured it, when, how</source>
-        <translation type="unfinished"></translation>
+        <translation>quién la midió, cuándo y cómo</translation>
     </message>
     <message>
         <source>Source:</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuente:</translation>
     </message>
     <message>
         <source>Lc:</source>
-        <translation type="unfinished"></translation>
+        <translation>Lc:</translation>
     </message>
     <message>
         <source>k1 [N/mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>k1 [N/mm]</translation>
     </message>
     <message>
         <source>k2 [N·mm/rad]</source>
-        <translation type="unfinished"></translation>
+        <translation>k2 [N·mm/rad]</translation>
     </message>
     <message>
         <source>k3 [N·mm/rad]</source>
-        <translation type="unfinished"></translation>
+        <translation>k3 [N·mm/rad]</translation>
     </message>
     <message>
         <source>radial [N/mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>radial [N/mm]</translation>
     </message>
     <message>
         <source>tangential [N/mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>tangencial [N/mm]</translation>
     </message>
     <message>
         <source>Spindle radial</source>
-        <translation type="unfinished"></translation>
+        <translation>Husillo radial</translation>
     </message>
     <message>
         <source>Spindle tangential</source>
-        <translation type="unfinished"></translation>
+        <translation>Husillo tangencial</translation>
     </message>
     <message>
         <source>Tailstock</source>
-        <translation type="unfinished"></translation>
+        <translation>Contrapunto</translation>
     </message>
     <message>
         <source>Centres</source>
-        <translation type="unfinished"></translation>
+        <translation>Puntos</translation>
     </message>
     <message>
         <source> Radial.</source>
-        <translation type="unfinished"></translation>
+        <translation> Radial.</translation>
     </message>
     <message>
         <source> Tangential.</source>
-        <translation type="unfinished"></translation>
+        <translation> Tangencial.</translation>
     </message>
     <message>
         <source>spindle radial k1, k2, k3</source>
-        <translation type="unfinished"></translation>
+        <translation>husillo radial k1, k2, k3</translation>
     </message>
     <message>
         <source>spindle tangential k1, k2, k3</source>
-        <translation type="unfinished"></translation>
+        <translation>husillo tangencial k1, k2, k3</translation>
     </message>
     <message>
         <source>tailstock radial and tangential</source>
-        <translation type="unfinished"></translation>
+        <translation>contrapunto radial y tangencial</translation>
     </message>
     <message>
         <source>centres radial and tangential</source>
-        <translation type="unfinished"></translation>
+        <translation>puntos radial y tangencial</translation>
     </message>
     <message>
         <source>enter all of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>introduzca todos los valores de %1</translation>
     </message>
     <message>
         <source>enter the pivot distance Lc of the spindle springs</source>
-        <translation type="unfinished"></translation>
+        <translation>introduzca la distancia de pivote Lc de los muelles del husillo</translation>
     </message>
     <message>
         <source>enter where the numbers come from (source)</source>
-        <translation type="unfinished"></translation>
+        <translation>indique la procedencia de los valores (fuente)</translation>
     </message>
 </context>
 <context>
     <name>tolturn::ToleranceDialog</name>
     <message>
         <source>ISO 286 class</source>
-        <translation type="unfinished"></translation>
+        <translation>Clase ISO 286</translation>
     </message>
     <message>
         <source>Limit deviations</source>
-        <translation type="unfinished"></translation>
+        <translation>Diferencias límite</translation>
     </message>
     <message>
         <source>Add Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir tolerancia</translation>
     </message>
     <message>
         <source>Edit Tolerance %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar tolerancia %1</translation>
     </message>
     <message>
         <source>To face</source>
-        <translation type="unfinished"></translation>
+        <translation>Hasta la cara</translation>
     </message>
     <message>
         <source>Upper deviation</source>
-        <translation type="unfinished"></translation>
+        <translation>Diferencia superior</translation>
     </message>
     <message>
         <source>Lower deviation</source>
-        <translation type="unfinished"></translation>
+        <translation>Diferencia inferior</translation>
     </message>
     <message>
         <source>e.g. h6, H7, js12</source>
-        <translation type="unfinished"></translation>
+        <translation>p. ej. h6, H7, js12</translation>
     </message>
     <message>
         <source>ISO 286-1 tolerance class: small letters for shafts, capitals for holes.</source>
-        <translation type="unfinished"></translation>
+        <translation>Clase de tolerancia ISO 286-1: minúsculas para ejes, mayúsculas para agujeros.</translation>
     </message>
     <message>
         <source>Tolerance zone t</source>
-        <translation type="unfinished"></translation>
+        <translation>Zona de tolerancia t</translation>
     </message>
     <message>
         <source>Datums</source>
-        <translation type="unfinished"></translation>
+        <translation>Referencias</translation>
     </message>
     <message>
         <source>no datum defined yet</source>
-        <translation type="unfinished"></translation>
+        <translation>aún no hay ninguna referencia definida</translation>
     </message>
     <message>
         <source>e.g. A; defined: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>p. ej. A; definidas: %1</translation>
     </message>
     <message>
         <source>Feature</source>
-        <translation type="unfinished"></translation>
+        <translation>Elemento</translation>
     </message>
     <message>
         <source>Characteristic</source>
-        <translation type="unfinished"></translation>
+        <translation>Característica</translation>
     </message>
     <message>
         <source>at %1 mm: upper %2 µm, lower %3 µm (%4 = %5 µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>para %1 mm: superior %2 µm, inferior %3 µm (%4 = %5 µm)</translation>
     </message>
 </context>
 <context>
     <name>tolturn::TolerancePanel</name>
     <message>
         <source>Add…</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir…</translation>
     </message>
     <message>
         <source>Edit…</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar…</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>Quitar</translation>
     </message>
     <message>
         <source>Set Datum…</source>
-        <translation type="unfinished"></translation>
+        <translation>Definir referencia…</translation>
     </message>
     <message>
         <source>Add a tolerance on the feature selected in the drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir una tolerancia al elemento seleccionado en el dibujo</translation>
     </message>
     <message>
         <source>Make the feature selected in the drawing a datum (ISO 5459)</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir el elemento seleccionado en el dibujo en una referencia (ISO 5459)</translation>
     </message>
     <message>
         <source>Set Datum</source>
-        <translation type="unfinished"></translation>
+        <translation>Definir referencia</translation>
     </message>
     <message>
         <source>Datum letter for feature %1 (ISO 5459):</source>
-        <translation type="unfinished"></translation>
+        <translation>Letra de referencia para el elemento %1 (ISO 5459):</translation>
     </message>
 </context>
 <context>
     <name>tolturn::ToleranceVerdictModel</name>
     <message>
         <source>%1/%2 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1/%2 µm</translation>
     </message>
     <message>
         <source>%1 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 µm</translation>
     </message>
     <message>
         <source>ID</source>
-        <translation type="unfinished"></translation>
+        <translation>ID</translation>
     </message>
     <message>
         <source>Characteristic</source>
-        <translation type="unfinished"></translation>
+        <translation>Característica</translation>
     </message>
     <message>
         <source>Feature</source>
-        <translation type="unfinished"></translation>
+        <translation>Elemento</translation>
     </message>
     <message>
         <source>Specification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Predicted [µm]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Limit [µm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Especificación</translation>
     </message>
     <message>
         <source>Utilisation</source>
-        <translation type="unfinished"></translation>
+        <translation>Utilización</translation>
     </message>
     <message>
         <source>Verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <source>Predicted [%1]</source>
+        <translation>Previsto [%1]</translation>
+    </message>
+    <message>
+        <source>Limit [%1]</source>
+        <translation>Límite [%1]</translation>
     </message>
 </context>
 </TS>

@@ -572,7 +572,7 @@ int runFit(const QStringList &args, QTextStream &out, QTextStream &err)
         out << QJsonDocument(QJsonObject{{QStringLiteral("nominal_mm"), *nominal},
                                          {QStringLiteral("hole"), classLimitsJson(f.hole)},
                                          {QStringLiteral("shaft"), classLimitsJson(f.shaft)},
-                                         {QStringLiteral("type"), iso286::fitTypeName(f.type)},
+                                         {QStringLiteral("type"), iso286::fitTypeKeyword(f.type)},
                                          {QStringLiteral("max_clearance_um"), f.maxClearance_um},
                                          {QStringLiteral("min_clearance_um"), f.minClearance_um}})
                    .toJson(QJsonDocument::Indented);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tolturn: the desktop program.
 #include "app/gui/main_window.h"
+#include "app/gui/preferences.h"
 #include "core/common/library_info.h"
 #include "translations/i18n.h"
 
@@ -15,7 +16,9 @@ int main(int argc, char *argv[])
     QApplication::setApplicationName(QStringLiteral("TolTurn"));
     QApplication::setApplicationVersion(tolturn::tolturnVersion());
     QApplication::setDesktopFileName(QStringLiteral("org.tolturn.TolTurn"));
-    tolturn::installTranslations(app);
+    const tolturn::Preferences preferences = tolturn::loadPreferences();
+    tolturn::installTranslations(app, tolturn::translationLocale(preferences));
+    tolturn::DisplaySettings::instance().setUnits(tolturn::DisplayUnits(preferences.lengthUnit));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Tolerance-aware planning of CNC turning."));

@@ -3,6 +3,7 @@
 
 #include "app/gui/autosave.h"
 #include "app/gui/recent_files.h"
+#include "app/gui/settings_dialog.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
 #include "resources/bundled.h"
@@ -72,6 +73,7 @@ MainWindow::MainWindow(QWidget *parent)
             statusBar()->showMessage(m_feature->message(), 8000);
     });
     connect(m_tolerances, &TolerancePanel::featureActivated, m_profileView, &ProfileView::selectFeature);
+    connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &MainWindow::updateSummary);
     rebuildRecentMenu();
     updateTitle();
     resize(1600, 950);
@@ -109,6 +111,28 @@ void MainWindow::createEditMenu()
     connect(deleteFeature, &QAction::triggered, m_feature, &FeaturePanel::deleteFeature);
     connect(m_profileView, &ProfileView::featureSelected, deleteFeature,
             [deleteFeature](const QString &id) { deleteFeature->setEnabled(!id.isEmpty()); });
+    edit->addSeparator();
+    QAction *preferences = edit->addAction(QIcon::fromTheme(QStringLiteral("preferences-system")), tr("Pre&ferences…"));
+    preferences->setObjectName(QStringLiteral("preferencesAction"));
+    preferences->setShortcut(QKeySequence::Preferences);
+    preferences->setMenuRole(QAction::PreferencesRole);
+    connect(preferences, &QAction::triggered, this, &MainWindow::editPreferences);
+}
+
+void MainWindow::editPreferences()
+{
+    SettingsDialog dialog(loadPreferences(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        applyPreferences(dialog.preferences());
+}
+
+void MainWindow::applyPreferences(const Preferences &preferences)
+{
+    const Preferences before = loadPreferences();
+    savePreferences(preferences);
+    DisplaySettings::instance().setUnits(DisplayUnits(preferences.lengthUnit));
+    if (preferences.language != before.language)
+        statusBar()->showMessage(tr("The new language is used when TolTurn is next started."), 8000);
 }
 
 void MainWindow::createDocks()
@@ -249,14 +273,23 @@ void MainWindow::showProject()
     m_tolerances->showVerdicts(evaluateTolerances(project, deviation));
     m_deflection->showResult(project, std::move(deviation));
     m_planning->projectChanged();
+    updateSummary();
+    updateTitle();
+}
+
+void MainWindow::updateSummary()
+{
+    if (!m_document->hasProject())
+        return;
+    const Project &project = m_document->project();
     const PartProfile &part = project.part;
-    m_summary->setText(tr("%1 — length %2 mm, Ø max %3 mm, %4 outer / %5 inner features, clamping: %6")
-                           .arg(part.name.isEmpty() ? tr("Part") : part.name, dimensionText(part.length_mm()),
-                                dimensionText(2.0 * part.maxOuterRadius_mm()))
+    const DisplayUnits units = DisplaySettings::instance().units();
+    m_summary->setText(tr("%1 — length %2 %7, Ø max %3 %7, %4 outer / %5 inner features, clamping: %6")
+                           .arg(part.name.isEmpty() ? tr("Part") : part.name, units.lengthText(part.length_mm()),
+                                units.lengthText(2.0 * part.maxOuterRadius_mm()))
                            .arg(part.outer.segments.size())
                            .arg(part.inner.segments.size())
-                           .arg(displayName(project.clamping.method)));
-    updateTitle();
+                           .arg(displayName(project.clamping.method), units.lengthSymbol()));
 }
 
 QString MainWindow::chooseFileToOpen(const QString &startFolder)

@@ -10,6 +10,8 @@ class QMenu;
 
 namespace tolturn {
 
+struct Preferences;
+
 class DeflectionPanel;
 class Autosave;
 class FeaturePanel;
@@ -59,6 +61,9 @@ public:
 
     [[nodiscard]] Autosave *autosave() const { return m_autosave; }
 
+    // Stores the preferences and applies what can change at once (the units).
+    void applyPreferences(const Preferences &preferences);
+
 protected:
     void closeEvent(QCloseEvent *event) override;
 
@@ -71,6 +76,8 @@ private:
     void rebuildRecentMenu();
     void updateTitle();
     void showProject();
+    void updateSummary();
+    void editPreferences();
 
     ProjectDocument *m_document;
     RecentFiles *m_recentFiles;

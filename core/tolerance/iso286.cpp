@@ -540,17 +540,30 @@ FitResult fit(double nominal_mm, const QString &holeClass, const QString &shaftC
     return r;
 }
 
-QString fitTypeName(FitType type)
+namespace {
+// The three kinds of fit of ISO 286-1:2010 §3.3.4 (clearance, transition, interference fit).
+const char *fitTypeText(FitType type)
 {
     switch (type) {
     case FitType::Clearance:
-        return Iso286::tr("clearance");
+        return QT_TRANSLATE_NOOP("Iso286", "clearance");
     case FitType::Transition:
-        return Iso286::tr("transition");
+        return QT_TRANSLATE_NOOP("Iso286", "transition");
     case FitType::Interference:
-        return Iso286::tr("interference");
+        return QT_TRANSLATE_NOOP("Iso286", "interference");
     }
-    return {};
+    return "";
+}
+} // namespace
+
+QString fitTypeName(FitType type)
+{
+    return Iso286::tr(fitTypeText(type));
+}
+
+QString fitTypeKeyword(FitType type)
+{
+    return QString::fromLatin1(fitTypeText(type));
 }
 
 DesignationResult parseDesignation(const QString &text)

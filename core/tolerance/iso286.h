@@ -107,6 +107,8 @@ struct FitResult {
                             const Options &options = {});
 
 [[nodiscard]] QString fitTypeName(FitType type);
+// The same as a keyword for files and JSON ("clearance", "transition", "interference"): never translated.
+[[nodiscard]] QString fitTypeKeyword(FitType type);
 
 // A designation as people write it: "50 H7", "Ø50g6", "50h7", "50 js6", "50 H7/g6", "Ø50 H7/g6", or a
 // class or fit alone ("H7", "H7/g6") whose nominal size is given separately.

@@ -735,6 +735,7 @@ private Q_SLOTS:
         QVERIFY(h5.diagnostics.front().message.contains(QStringLiteral("experimental")));
 
         QCOMPARE(fitTypeName(FitType::Transition), QStringLiteral("transition"));
+        QCOMPARE(fitTypeKeyword(FitType::Interference), QStringLiteral("interference"));
     }
 
     // ---- designations ----

@@ -5,6 +5,7 @@
 
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
+#include "widgets/common/length_spin_box.h"
 #include "widgets/document/project_document.h"
 #include "widgets/profile/feature_panel.h"
 #include "widgets/profile/profile_view.h"

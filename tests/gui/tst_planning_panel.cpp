@@ -9,6 +9,7 @@
 #include "widgets/planning/planning_panel.h"
 #include "widgets/plot/map_plot.h"
 
+#include <QAbstractItemModelTester>
 #include <QCheckBox>
 #include <QDockWidget>
 #include <QFile>
@@ -50,6 +51,11 @@ private Q_SLOTS:
         w.show();
         QVERIFY(w.fileController()->openFile(example("long-shaft-centres.tolturn")));
         PlanningPanel *panel = w.planningPanel();
+        // The tables' models are checked through every fill the run makes.
+        const QAbstractItemModelTester clampingModel(panel->clampingTable()->model(),
+                                                     QAbstractItemModelTester::FailureReportingMode::QtTest);
+        const QAbstractItemModelTester compensationModel(panel->compensationTable()->model(),
+                                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
         QSignalSpy finished(panel, &PlanningPanel::finished);
         panel->optimise();
         QVERIFY(panel->isRunning() || finished.count() == 1);
@@ -104,6 +110,11 @@ private Q_SLOTS:
         MainWindow w;
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
         PlanningPanel *panel = w.planningPanel();
+        // The tables' models are checked through every fill the run makes.
+        const QAbstractItemModelTester clampingModel(panel->clampingTable()->model(),
+                                                     QAbstractItemModelTester::FailureReportingMode::QtTest);
+        const QAbstractItemModelTester compensationModel(panel->compensationTable()->model(),
+                                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
         QSignalSpy finished(panel, &PlanningPanel::finished);
         panel->optimise();
         panel->cancel();

@@ -3,6 +3,7 @@
 // curves follow it, and a refused value is put back with a message naming the field and value.
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
+#include "widgets/common/length_spin_box.h"
 #include "widgets/document/project_document.h"
 #include "widgets/results/deflection_panel.h"
 #include "widgets/setup/setup_panel.h"

@@ -3,9 +3,9 @@
 
 #include "core/common/diagnostic.h"
 #include "core/project/keywords.h"
+#include "widgets/common/length_spin_box.h"
 #include "widgets/document/project_document.h"
 
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -17,14 +17,10 @@ namespace tolturn {
 
 namespace {
 
-QDoubleSpinBox *millimetres(const QString &tip)
+LengthSpinBox *millimetres(const QString &tip)
 {
-    auto *box = new QDoubleSpinBox;
-    box->setRange(0.0, 10000.0); // entry bounds; the profile validation judges the value
-    box->setDecimals(3);
-    box->setSuffix(QStringLiteral(" mm"));
+    auto *box = new LengthSpinBox(10000.0); // entry bounds; the profile validation judges the value
     box->setToolTip(tip);
-    box->setKeyboardTracking(false);
     return box;
 }
 
@@ -74,7 +70,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     layout->addWidget(m_delete);
     layout->addWidget(m_message);
     layout->addStretch(1);
-    m_cornerSize->setValue(1.0);
+    m_cornerSize->setMillimetres(1.0);
     connect(m_startZ, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(false); });
     connect(m_startD, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(false); });
     connect(m_endZ, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(true); });
@@ -148,10 +144,10 @@ void FeaturePanel::showFeature()
     m_updating = true;
     m_title->setText(
         tr("<b>%1</b> %2 — %3, %4 contour").arg(s.id, s.name, displayName(s.kind), contourName(ref->side)));
-    m_startZ->setValue(s.from.z_mm);
-    m_startD->setValue(2.0 * s.from.r_mm);
-    m_endZ->setValue(s.to.z_mm);
-    m_endD->setValue(2.0 * s.to.r_mm);
+    m_startZ->setMillimetres(s.from.z_mm);
+    m_startD->setMillimetres(2.0 * s.from.r_mm);
+    m_endZ->setMillimetres(s.to.z_mm);
+    m_endD->setMillimetres(2.0 * s.to.r_mm);
     const bool cylinder = s.kind == SegmentKind::Cylinder;
     m_insertStep->setEnabled(cylinder);
     m_cone->setEnabled(cylinder || s.kind == SegmentKind::Cone);
@@ -161,8 +157,8 @@ void FeaturePanel::showFeature()
     m_bore->setEnabled(endFace && m_document.project().part.inner.empty());
     m_cone->setText(s.kind == SegmentKind::Cone ? tr("Make C&ylinder") : tr("Make C&one"));
     if (cylinder) {
-        m_stepZ->setValue(0.5 * (s.from.z_mm + s.to.z_mm));
-        m_stepD->setValue(2.0 * s.from.r_mm - 2.0 * m_cornerSize->value());
+        m_stepZ->setMillimetres(0.5 * (s.from.z_mm + s.to.z_mm));
+        m_stepD->setMillimetres(2.0 * s.from.r_mm - 2.0 * m_cornerSize->millimetres());
     }
     m_updating = false;
 }
@@ -174,8 +170,8 @@ void FeaturePanel::moveCorner(bool atEnd)
     const std::optional<FeatureRef> ref = findFeature(m_document.project().part, m_featureId);
     if (!ref)
         return;
-    const ProfilePoint to = atEnd ? ProfilePoint{m_endZ->value(), m_endD->value() / 2.0}
-                                  : ProfilePoint{m_startZ->value(), m_startD->value() / 2.0};
+    const ProfilePoint to = atEnd ? ProfilePoint{m_endZ->millimetres(), m_endD->millimetres() / 2.0}
+                                  : ProfilePoint{m_startZ->millimetres(), m_startD->millimetres() / 2.0};
     apply(moveVertex(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0), to),
           tr("Move corner of %1").arg(m_featureId));
 }
@@ -189,7 +185,7 @@ bool FeaturePanel::moveVertexTo(ContourSide side, int vertex, ProfilePoint to)
 void FeaturePanel::insertStep()
 {
     const QString cylinder = m_featureId;
-    if (apply(tolturn::insertStep(m_document.project().part, cylinder, m_stepZ->value(), m_stepD->value()),
+    if (apply(tolturn::insertStep(m_document.project().part, cylinder, m_stepZ->millimetres(), m_stepD->millimetres()),
               tr("Insert step into %1").arg(cylinder)))
         Q_EMIT featureChosen(cylinder);
 }
@@ -200,7 +196,7 @@ void FeaturePanel::breakCorner(bool atEnd, bool round)
     if (!ref)
         return;
     apply(tolturn::breakCorner(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0),
-                               m_cornerSize->value(), round),
+                               m_cornerSize->millimetres(), round),
           round ? tr("Round corner of %1").arg(m_featureId) : tr("Chamfer corner of %1").arg(m_featureId));
 }
 
@@ -214,12 +210,13 @@ void FeaturePanel::toggleCone()
         return;
     }
     // The taper ends at the step diameter field's value (by default one corner size smaller).
-    apply(makeCone(m_document.project().part, m_featureId, m_stepD->value()), tr("Make %1 a cone").arg(m_featureId));
+    apply(makeCone(m_document.project().part, m_featureId, m_stepD->millimetres()),
+          tr("Make %1 a cone").arg(m_featureId));
 }
 
 void FeaturePanel::addBore()
 {
-    apply(tolturn::addBore(m_document.project().part, m_featureId, m_boreDepth->value(), m_boreD->value()),
+    apply(tolturn::addBore(m_document.project().part, m_featureId, m_boreDepth->millimetres(), m_boreD->millimetres()),
           tr("Bore from %1").arg(m_featureId));
 }
 

@@ -5,12 +5,13 @@
 
 #include <QWidget>
 
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
 
 namespace tolturn {
+
+class LengthSpinBox;
 
 class ProjectDocument;
 
@@ -30,23 +31,23 @@ public:
     [[nodiscard]] QString message() const;
 
     // The entry fields and commands, for the window's menus and for tests.
-    [[nodiscard]] QDoubleSpinBox *startZBox() const { return m_startZ; }
+    [[nodiscard]] LengthSpinBox *startZBox() const { return m_startZ; }
 
-    [[nodiscard]] QDoubleSpinBox *startDiameterBox() const { return m_startD; }
+    [[nodiscard]] LengthSpinBox *startDiameterBox() const { return m_startD; }
 
-    [[nodiscard]] QDoubleSpinBox *endZBox() const { return m_endZ; }
+    [[nodiscard]] LengthSpinBox *endZBox() const { return m_endZ; }
 
-    [[nodiscard]] QDoubleSpinBox *endDiameterBox() const { return m_endD; }
+    [[nodiscard]] LengthSpinBox *endDiameterBox() const { return m_endD; }
 
-    [[nodiscard]] QDoubleSpinBox *stepZBox() const { return m_stepZ; }
+    [[nodiscard]] LengthSpinBox *stepZBox() const { return m_stepZ; }
 
-    [[nodiscard]] QDoubleSpinBox *stepDiameterBox() const { return m_stepD; }
+    [[nodiscard]] LengthSpinBox *stepDiameterBox() const { return m_stepD; }
 
-    [[nodiscard]] QDoubleSpinBox *cornerSizeBox() const { return m_cornerSize; }
+    [[nodiscard]] LengthSpinBox *cornerSizeBox() const { return m_cornerSize; }
 
-    [[nodiscard]] QDoubleSpinBox *boreDepthBox() const { return m_boreDepth; }
+    [[nodiscard]] LengthSpinBox *boreDepthBox() const { return m_boreDepth; }
 
-    [[nodiscard]] QDoubleSpinBox *boreDiameterBox() const { return m_boreD; }
+    [[nodiscard]] LengthSpinBox *boreDiameterBox() const { return m_boreD; }
 
     // Moves corner `vertex` of a contour (a drag in the drawing ends here).
     bool moveVertexTo(ContourSide side, int vertex, ProfilePoint to);
@@ -74,18 +75,18 @@ private:
     QString m_featureId;
     bool m_updating = false;
     QLabel *m_title;
-    QDoubleSpinBox *m_startZ;
-    QDoubleSpinBox *m_startD;
-    QDoubleSpinBox *m_endZ;
-    QDoubleSpinBox *m_endD;
-    QDoubleSpinBox *m_stepZ;
-    QDoubleSpinBox *m_stepD;
+    LengthSpinBox *m_startZ;
+    LengthSpinBox *m_startD;
+    LengthSpinBox *m_endZ;
+    LengthSpinBox *m_endD;
+    LengthSpinBox *m_stepZ;
+    LengthSpinBox *m_stepD;
     QPushButton *m_insertStep;
-    QDoubleSpinBox *m_cornerSize;
+    LengthSpinBox *m_cornerSize;
     QPushButton *m_delete;
     QPushButton *m_cone;
-    QDoubleSpinBox *m_boreDepth;
-    QDoubleSpinBox *m_boreD;
+    LengthSpinBox *m_boreDepth;
+    LengthSpinBox *m_boreD;
     QPushButton *m_bore;
     QLabel *m_message;
 };

@@ -9,7 +9,6 @@
 #include <QBrush>
 #include <QGraphicsPathItem>
 #include <QGraphicsScene>
-#include <QLocale>
 #include <QPainterPath>
 #include <QPen>
 
@@ -89,25 +88,26 @@ void tagItem(QGraphicsItem *item, const QString &kind, const QString &featureId 
         item->setData(kDefaultPenData, QVariant::fromValue(shape->pen()));
 }
 
-QString featureToolTip(const Segment &s)
+QString featureToolTip(const Segment &s, const DisplayUnits &units)
 {
     QString text = QStringLiteral("<b>%1</b> %2").arg(s.id.toHtmlEscaped(), displayName(s.kind));
     if (!s.name.isEmpty())
         text += QStringLiteral(" — ") + s.name.toHtmlEscaped();
-    text += QStringLiteral("<br>z %1 → %2 mm, r %3 → %4 mm")
-                .arg(dimensionText(s.from.z_mm), dimensionText(s.to.z_mm), dimensionText(s.from.r_mm),
-                     dimensionText(s.to.r_mm));
+    const QString unit = units.lengthSymbol();
+    text += QStringLiteral("<br>z %1 → %2 %5, r %3 → %4 %5")
+                .arg(units.lengthText(s.from.z_mm), units.lengthText(s.to.z_mm), units.lengthText(s.from.r_mm),
+                     units.lengthText(s.to.r_mm), unit);
     if (s.kind == SegmentKind::Radius)
-        text += QStringLiteral("<br>R %1 mm, %2").arg(dimensionText(s.arcRadius_mm), keyword(s.arcDirection));
+        text += QStringLiteral("<br>R %1 %2, %3").arg(units.lengthText(s.arcRadius_mm), unit, keyword(s.arcDirection));
     return text;
 }
 
-void addContourItems(QGraphicsScene &scene, const Contour &contour, const QString &kind)
+void addContourItems(QGraphicsScene &scene, const Contour &contour, const QString &kind, const DisplayUnits &units)
 {
     for (const Segment &s : contour.segments) {
         auto *item = scene.addPath(segmentPath(s, 1.0), cosmeticPen(kEdgeColor, 2.2));
         tagItem(item, kind, s.id);
-        item->setToolTip(featureToolTip(s));
+        item->setToolTip(featureToolTip(s, units));
         item->setZValue(2.0);
     }
 }
@@ -159,27 +159,28 @@ void addDimension(QGraphicsScene &scene, QPointF from, QPointF to, double offset
 // Ø of every cylinder, drawn across the full diameter at the middle of the feature and lettered
 // in the outside view, off the centre line and the hatching; bores are dimensioned a third of the
 // way along so they do not sit on an outer dimension.
-QString limitsText(const Tolerance &t);
+QString limitsText(const Tolerance &t, const DisplayUnits &units);
 
 // The size tolerance written after a diameter.
-QString sizeSuffix(const std::vector<Tolerance> &tolerances, const QString &featureId)
+QString sizeSuffix(const std::vector<Tolerance> &tolerances, const QString &featureId, const DisplayUnits &units)
 {
     for (const Tolerance &t : tolerances) {
         if (t.type == ToleranceType::Diameter && t.featureId == featureId)
-            return QLatin1Char(' ') + limitsText(t);
+            return QLatin1Char(' ') + limitsText(t, units);
     }
     return {};
 }
 
 void addDiameterDimensions(QGraphicsScene &scene, const Contour &contour, double where, double arrow,
-                           const std::vector<Tolerance> &tolerances)
+                           const std::vector<Tolerance> &tolerances, const DisplayUnits &units)
 {
     for (const Segment &s : contour.segments) {
         if (s.kind != SegmentKind::Cylinder)
             continue;
         const double z = s.from.z_mm + where * (s.to.z_mm - s.from.z_mm);
         addDimension(scene, scenePoint({z, s.from.r_mm}, -1.0), scenePoint({z, s.from.r_mm}), 0.0,
-                     QStringLiteral("Ø") + dimensionText(2.0 * s.from.r_mm) + sizeSuffix(tolerances, s.id), arrow, 0.3);
+                     QStringLiteral("Ø") + units.lengthText(2.0 * s.from.r_mm) + sizeSuffix(tolerances, s.id, units),
+                     arrow, 0.3);
     }
 }
 
@@ -207,7 +208,7 @@ std::vector<double> chainStations(const PartProfile &profile, double minSpan)
 
 // A chain of lengths between the stations of the outer contour, below the outside view, and
 // the overall length below that.
-void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, double arrow)
+void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, double arrow, const DisplayUnits &units)
 {
     const double rMax = profile.maxOuterRadius_mm();
     const double gap = std::max(0.12 * rMax, 4.0 * arrow);
@@ -215,30 +216,34 @@ void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, doub
     const std::vector<double> z = chainStations(profile, 0.04 * profile.length_mm());
     for (std::size_t i = 1; i < z.size() && z.size() > 2; ++i) {
         addDimension(scene, scenePoint({z[i], rMax}, -1.0), scenePoint({z[i - 1], rMax}, -1.0), gap,
-                     dimensionText(z[i] - z[i - 1]), arrow);
+                     units.lengthText(z[i] - z[i - 1]), arrow);
     }
     const double overall = z.size() > 2 ? 2.0 * gap : gap;
     addDimension(scene, scenePoint({profile.length_mm(), rMax}, -1.0), scenePoint({0.0, rMax}, -1.0), overall,
-                 dimensionText(profile.length_mm()), arrow);
+                 units.lengthText(profile.length_mm()), arrow);
 }
 
 // The limits of a size tolerance as written after its dimension: the ISO 286 class, "±0.05" when
-// symmetric, else "+0.05/-0.02" (mm).
-QString limitsText(const Tolerance &t)
+// symmetric, else "+0.05/-0.02" (in the length unit, mm or in).
+QString limitsText(const Tolerance &t, const DisplayUnits &units)
 {
     if (!t.iso286Class.isEmpty())
         return t.iso286Class;
     if (!t.upperDeviation_um || !t.lowerDeviation_um)
         return {};
     if (std::abs(*t.upperDeviation_um + *t.lowerDeviation_um) < 1e-9)
-        return QStringLiteral("±") + dimensionText(*t.upperDeviation_um / 1000.0);
-    return QStringLiteral("%1/%2").arg(QString::asprintf("%+.3f", *t.upperDeviation_um / 1000.0),
-                                       QString::asprintf("%+.3f", *t.lowerDeviation_um / 1000.0));
+        return QStringLiteral("±") + units.lengthText(*t.upperDeviation_um / 1000.0);
+    const int decimals = units.lengthUnit() == LengthUnit::Inch ? 4 : 3;
+    const auto signedLimit = [&](double deviation_um) {
+        const double shown = units.lengthFromMm(deviation_um / 1000.0);
+        return QString::number(shown, 'f', decimals).prepend(shown >= 0.0 ? QStringLiteral("+") : QString());
+    };
+    return QStringLiteral("%1/%2").arg(signedLimit(*t.upperDeviation_um), signedLimit(*t.lowerDeviation_um));
 }
 
 // Each toleranced length between two faces as its own dimension below the overall length.
 void addToleratedLengths(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
-                         double arrow)
+                         double arrow, const DisplayUnits &units)
 {
     const double rMax = profile.maxOuterRadius_mm();
     const double gap = std::max(0.12 * rMax, 4.0 * arrow);
@@ -251,7 +256,7 @@ void addToleratedLengths(QGraphicsScene &scene, const PartProfile &profile, cons
         const double z0 = std::min(a->segment->from.z_mm, b->segment->from.z_mm);
         const double z1 = std::max(a->segment->from.z_mm, b->segment->from.z_mm);
         addDimension(scene, scenePoint({z1, rMax}, -1.0), scenePoint({z0, rMax}, -1.0), offset,
-                     dimensionText(z1 - z0) + QLatin1Char(' ') + limitsText(t), arrow);
+                     units.lengthText(z1 - z0) + QLatin1Char(' ') + limitsText(t, units), arrow);
         offset += gap;
     }
 }
@@ -266,7 +271,8 @@ QPointF annotationPoint(const Segment &s)
 // One frame per geometric tolerance. Taken in order along z, the leaders rise in a staircase of
 // three heights, so that the frames of neighbouring features (drawn in pixels, whatever the zoom)
 // do not sit on each other.
-void addToleranceFrames(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances)
+void addToleranceFrames(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
+                        const DisplayUnits &units)
 {
     std::vector<std::pair<const Tolerance *, const Segment *>> frames;
     for (const Tolerance &t : tolerances) {
@@ -279,7 +285,7 @@ void addToleranceFrames(QGraphicsScene &scene, const PartProfile &profile, const
     });
     for (std::size_t i = 0; i < frames.size(); ++i) {
         const Tolerance &t = *frames[i].first;
-        auto *frame = new ToleranceFrameItem(t.type, dimensionText(*t.zone_um / 1000.0), t.datums,
+        auto *frame = new ToleranceFrameItem(t.type, units.lengthText(*t.zone_um / 1000.0), t.datums,
                                              30.0 + 24.0 * static_cast<double>(i % 3));
         // The leader runs in the drawing from the feature up to the part's top line, then on in
         // pixels to the frame; its arrow ends on the feature.
@@ -321,14 +327,11 @@ void addDatums(QGraphicsScene &scene, const PartProfile &profile, const std::vec
 
 QString dimensionText(double value_mm)
 {
-    QString text = QLocale::c().toString(value_mm, 'f', 3);
-    while (text.contains(QLatin1Char('.')) && (text.endsWith(QLatin1Char('0')) || text.endsWith(QLatin1Char('.'))))
-        text.chop(1);
-    return text == QStringLiteral("-0") ? QStringLiteral("0") : text;
+    return DisplayUnits().lengthText(value_mm);
 }
 
 void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
-                       const std::vector<Datum> &datums)
+                       const std::vector<Datum> &datums, const DisplayUnits &units)
 {
     scene.clear();
     if (profile.outer.empty())
@@ -340,15 +343,15 @@ void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const 
     tagItem(section, profile_item::kSection);
     section->setZValue(1.0);
 
-    addContourItems(scene, profile.outer, profile_item::kOuterContour);
-    addContourItems(scene, profile.inner, profile_item::kInnerContour);
+    addContourItems(scene, profile.outer, profile_item::kOuterContour, units);
+    addContourItems(scene, profile.inner, profile_item::kInnerContour, units);
     addOutsideView(scene, profile);
     addAxis(scene, length);
-    addDiameterDimensions(scene, profile.outer, 0.5, arrow, tolerances);
-    addDiameterDimensions(scene, profile.inner, 0.3, arrow, tolerances);
-    addLengthDimensions(scene, profile, arrow);
-    addToleratedLengths(scene, profile, tolerances, arrow);
-    addToleranceFrames(scene, profile, tolerances);
+    addDiameterDimensions(scene, profile.outer, 0.5, arrow, tolerances, units);
+    addDiameterDimensions(scene, profile.inner, 0.3, arrow, tolerances, units);
+    addLengthDimensions(scene, profile, arrow, units);
+    addToleratedLengths(scene, profile, tolerances, arrow, units);
+    addToleranceFrames(scene, profile, tolerances, units);
     addDatums(scene, profile, datums);
 }
 

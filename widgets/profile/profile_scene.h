@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/project/project.h"
+#include "widgets/common/display_units.h"
 
 #include <QString>
 
@@ -39,8 +40,9 @@ inline const QString kDatum = QStringLiteral("datum");
 // With `tolerances` and `datums`, size tolerances are written after their diameters ("Ø50 h6"),
 // geometric tolerances drawn as feature control frames and datums as datum indicators
 // (ISO 1101, ISO 5459), each on its feature.
+// Dimension texts are in `units` (millimetres unless the settings say inches).
 void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances = {},
-                       const std::vector<Datum> &datums = {});
+                       const std::vector<Datum> &datums = {}, const DisplayUnits &units = DisplayUnits());
 
 // Text of a dimension value in mm: at most three decimals, no trailing zeros.
 [[nodiscard]] QString dimensionText(double value_mm);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/profile/profile_view.h"
 
+#include "widgets/common/display_units.h"
 #include "widgets/profile/profile_scene.h"
 
 #include <QGraphicsPathItem>
@@ -25,6 +26,7 @@ ProfileView::ProfileView(QWidget *parent) : QGraphicsView(parent), m_scene(new Q
     setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
     setViewportUpdateMode(QGraphicsView::BoundingRectViewportUpdate);
     setMinimumSize(320, 200);
+    connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &ProfileView::redraw);
 }
 
 void ProfileView::setProfile(const PartProfile &profile, const std::vector<Tolerance> &tolerances,
@@ -32,9 +34,10 @@ void ProfileView::setProfile(const PartProfile &profile, const std::vector<Toler
 {
     if (profile.name != m_profile.name || m_profile.outer.empty())
         m_autoFit = true; // another part: show it whole; edits of this one keep the user's zoom
-    buildProfileScene(*m_scene, profile, tolerances, datums);
     m_profile = profile;
-    m_dragged = nullptr;
+    m_tolerances = tolerances;
+    m_datums = datums;
+    redraw();
     if (m_autoFit)
         fitPart();
     const QString previous = m_selected;
@@ -43,6 +46,22 @@ void ProfileView::setProfile(const PartProfile &profile, const std::vector<Toler
         selectFeature(previous); // keep the selection across edits of the same part
     else if (!previous.isEmpty())
         Q_EMIT featureSelected(QString());
+}
+
+// Builds the drawing anew (a new profile, or other display units), keeping the zoom.
+void ProfileView::redraw()
+{
+    buildProfileScene(*m_scene, m_profile, m_tolerances, m_datums, DisplaySettings::instance().units());
+    m_dragged = nullptr;
+    if (!m_selected.isEmpty() && findFeature(m_profile, m_selected))
+        showVertexHandles();
+}
+
+double ProfileView::snapGrid_mm(bool fine) const
+{
+    if (DisplaySettings::instance().units().lengthUnit() == LengthUnit::Inch)
+        return (fine ? kFineSnapGrid_in : kSnapGrid_in) * kMillimetresPerInch;
+    return fine ? kFineSnapGrid_mm : kSnapGrid_mm;
 }
 
 void ProfileView::selectFeature(const QString &featureId)
@@ -83,7 +102,10 @@ void ProfileView::showVertexHandles()
         handle->setPos(point.z_mm, -point.r_mm);
         handle->setZValue(10);
         handle->setCursor(Qt::SizeAllCursor);
-        handle->setToolTip(tr("Drag to move this corner (snaps to %1 mm; Shift: 0.01 mm)").arg(kSnapGrid_mm));
+        const DisplayUnits units = DisplaySettings::instance().units();
+        handle->setToolTip(
+            tr("Drag to move this corner (snaps to %1 %3; Shift: %2 %3)")
+                .arg(units.lengthText(snapGrid_mm(false)), units.lengthText(snapGrid_mm(true)), units.lengthSymbol()));
         handle->setData(kItemKindData, profile_item::kVertexHandle);
         handle->setData(kVertexData, vertex);
         handle->setData(kSideData, static_cast<int>(ref->side));
@@ -104,7 +126,7 @@ QGraphicsItem *ProfileView::handleAt(const QPoint &viewPoint) const
 
 ProfilePoint ProfileView::snappedPoint(const QPoint &viewPoint, Qt::KeyboardModifiers modifiers) const
 {
-    const double grid = (modifiers & Qt::ShiftModifier) ? 0.01 : kSnapGrid_mm;
+    const double grid = snapGrid_mm((modifiers & Qt::ShiftModifier) != 0);
     const QPointF p = mapToScene(viewPoint);
     const auto snap = [grid](double v) { return std::round(v / grid) * grid; };
     return {snap(p.x()), std::max(0.0, snap(-p.y()))};
@@ -118,9 +140,12 @@ void ProfileView::mouseMoveEvent(QMouseEvent *event)
     }
     m_dragTo = snappedPoint(event->position().toPoint(), event->modifiers());
     m_dragged->setPos(m_dragTo.z_mm, -m_dragTo.r_mm);
-    QToolTip::showText(event->globalPosition().toPoint(),
-                       tr("z %1 mm, Ø %2 mm").arg(dimensionText(m_dragTo.z_mm), dimensionText(2.0 * m_dragTo.r_mm)),
-                       this);
+    const DisplayUnits units = DisplaySettings::instance().units();
+    QToolTip::showText(
+        event->globalPosition().toPoint(),
+        tr("z %1 %3, Ø %2 %3")
+            .arg(units.lengthText(m_dragTo.z_mm), units.lengthText(2.0 * m_dragTo.r_mm), units.lengthSymbol()),
+        this);
     event->accept();
 }
 
@@ -192,6 +217,8 @@ void ProfileView::clearProfile()
 {
     m_dragged = nullptr;
     m_profile = PartProfile{};
+    m_tolerances.clear();
+    m_datums.clear();
     m_scene->clear();
 }
 

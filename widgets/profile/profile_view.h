@@ -24,8 +24,12 @@ public:
     [[nodiscard]] QString selectedFeature() const { return m_selected; }
 
     void selectFeature(const QString &featureId);
-    // The grid a dragged corner snaps to; holding Shift snaps to 0.01 mm instead.
+    // The grid a dragged corner snaps to in millimetres (0.5 mm; Shift: 0.01 mm), and in inches
+    // when the settings show inches (0.02 in; Shift: 0.0005 in).
     static constexpr double kSnapGrid_mm = 0.5;
+    static constexpr double kFineSnapGrid_mm = 0.01;
+    static constexpr double kSnapGrid_in = 0.02;
+    static constexpr double kFineSnapGrid_in = 0.0005;
 
     // The feature drawn nearest to a point of the view, within `pixels`; empty if none.
     [[nodiscard]] QString featureAt(const QPoint &viewPoint, double pixels = 8.0) const;
@@ -48,8 +52,13 @@ private:
     [[nodiscard]] QGraphicsItem *handleAt(const QPoint &viewPoint) const;
     [[nodiscard]] ProfilePoint snappedPoint(const QPoint &viewPoint, Qt::KeyboardModifiers modifiers) const;
 
+    void redraw();
+    [[nodiscard]] double snapGrid_mm(bool fine) const;
+
     QGraphicsScene *m_scene;
     PartProfile m_profile;
+    std::vector<Tolerance> m_tolerances;
+    std::vector<Datum> m_datums;
     QGraphicsItem *m_dragged = nullptr; // the vertex handle being dragged
     ProfilePoint m_dragTo;
     bool m_autoFit = true;

@@ -64,6 +64,7 @@ DeflectionPanel::DeflectionPanel(QWidget *parent)
             [this](int index) { setSide(index == 0 ? ContourSide::Outer : ContourSide::Inner); });
     connect(m_quantityBox, &QComboBox::currentIndexChanged, this,
             [this](int index) { setQuantity(static_cast<Quantity>(index)); });
+    connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &DeflectionPanel::redraw);
 }
 
 void DeflectionPanel::showResult(const Project &project, DeviationResult result)
@@ -119,7 +120,7 @@ void DeflectionPanel::redraw()
 }
 
 void DeflectionPanel::addContributionCurves(LinePlot &plot, const DeviationResult &result, ContourSide side,
-                                            bool radial)
+                                            bool radial, const DisplayUnits &units)
 {
     const std::vector<CurveSpec> specs{
         {tr("total"), [](const Contributions &c) { return c.total_mm(); }, QColor(0x20, 0x20, 0x20), Qt::SolidLine,
@@ -142,10 +143,10 @@ void DeflectionPanel::addContributionCurves(LinePlot &plot, const DeviationResul
             if (f.side != side)
                 continue;
             for (const Station &st : f.stations) {
-                x << st.z_mm;
-                y << spec.value(radial ? st.radial : st.tangential) * kUmPerMm;
+                x << units.lengthFromMm(st.z_mm);
+                y << units.deviationFromUm(spec.value(radial ? st.radial : st.tangential) * kUmPerMm);
             }
-            x << f.stations.back().z_mm; // break the curve at the end of each feature
+            x << units.lengthFromMm(f.stations.back().z_mm); // break the curve at the end of each feature
             y << kGap;
         }
         plot.addCurve(spec.name, x, y, spec.color, spec.style, spec.width);
@@ -154,28 +155,32 @@ void DeflectionPanel::addContributionCurves(LinePlot &plot, const DeviationResul
 
 void DeflectionPanel::plotContributions(bool radial)
 {
-    addContributionCurves(*m_plot, m_result, m_side, radial);
+    const DisplayUnits units = DisplaySettings::instance().units();
+    addContributionCurves(*m_plot, m_result, m_side, radial, units);
     m_plot->setTitle(radial ? tr("Radial deviation (material left on the surface)") : tr("Tangential deviation"));
-    m_plot->setAxisLabels(tr("z from the part's left end [mm]"), tr("deviation [µm]"));
+    m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
+                          tr("deviation [%1]").arg(units.deviationSymbol()));
 }
 
 void DeflectionPanel::plotDiameterError()
 {
+    const DisplayUnits units = DisplaySettings::instance().units();
     QVector<double> x;
     QVector<double> y;
     for (const FeatureDeviation &f : m_result.features) {
         if (f.side != m_side)
             continue;
         for (const Station &st : f.stations) {
-            x << st.z_mm;
-            y << 2.0 * st.radiusError_mm * kUmPerMm;
+            x << units.lengthFromMm(st.z_mm);
+            y << units.deviationFromUm(2.0 * st.radiusError_mm * kUmPerMm);
         }
-        x << f.stations.back().z_mm;
+        x << units.lengthFromMm(f.stations.back().z_mm);
         y << kGap;
     }
     m_plot->addCurve(tr("diameter error"), x, y, QColor(0x6a, 0x3d, 0x9a), Qt::SolidLine, 2.2);
     m_plot->setTitle(tr("Diameter error: machined minus nominal"));
-    m_plot->setAxisLabels(tr("z from the part's left end [mm]"), tr("diameter error [µm]"));
+    m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
+                          tr("diameter error [%1]").arg(units.deviationSymbol()));
 }
 
 QString DeflectionPanel::summaryText() const

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/deviation/deviation_model.h"
+#include "widgets/common/display_units.h"
 
 #include <QWidget>
 
@@ -26,7 +27,8 @@ public:
     void showResult(const Project &project, DeviationResult result);
     // Adds the curves of the total and of each contribution along one contour, in µm, broken at
     // the ends of the features (also used by the PDF report).
-    static void addContributionCurves(LinePlot &plot, const DeviationResult &result, ContourSide side, bool radial);
+    static void addContributionCurves(LinePlot &plot, const DeviationResult &result, ContourSide side, bool radial,
+                                      const DisplayUnits &units = DisplayUnits());
     void clear();
 
     void setSide(ContourSide side);

@@ -4,6 +4,7 @@
 #include "core/data/data_library.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
+#include "widgets/common/length_spin_box.h"
 #include "widgets/document/project_document.h"
 #include "widgets/setup/stiffness_editor.h"
 
@@ -40,6 +41,13 @@ QString materialTip(const DataLibrary &data, const MaterialData &m)
 }
 
 // Entry bounds of a spin box: wide enough for any lathe; the document's validation judges the value.
+LengthSpinBox *lengthBox(double maximum_mm, const QString &tip)
+{
+    auto *box = new LengthSpinBox(maximum_mm);
+    box->setToolTip(tip);
+    return box;
+}
+
 QDoubleSpinBox *spinBox(double min, double max, int decimals, const QString &suffix, const QString &tip)
 {
     auto *box = new QDoubleSpinBox;
@@ -84,12 +92,12 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     , m_insertDecoded(new QLabel)
     , m_holder(new QComboBox)
     , m_clamping(new QComboBox)
-    , m_clampedLength(spinBox(0.0, 10000.0, 1, tr(" mm"),
-                              tr("Length of the part in the jaws from its left end; the chuck face is at this z. "
-                                 "The part is a beam built in there (Valiño et al. 2008, eq. 2–5).")))
-    , m_overhang(spinBox(0.0, 1000.0, 1, tr(" mm"),
-                         tr("Tool length out of the turret for the toolpost term (Valiño et al. 2008, eq. 6); "
-                            "'from holder' uses the holder's length.")))
+    , m_clampedLength(
+          lengthBox(10000.0, tr("Length of the part in the jaws from its left end; the chuck face is at this z. "
+                                "The part is a beam built in there (Valiño et al. 2008, eq. 2–5).")))
+    , m_overhang(
+          lengthBox(1000.0, tr("Tool length out of the turret for the toolpost term (Valiño et al. 2008, eq. 6); "
+                               "'from holder' uses the holder's length.")))
     , m_message(new QLabel)
 {
     setObjectName(QStringLiteral("setupPanel"));
@@ -250,9 +258,9 @@ void SetupPanel::showValues()
                                                  .arg(insert.insert->includedAngle_deg)
                                                  .arg(insert.insert->noseRadius_mm)
                                            : QString());
-    m_overhang->setValue(p.tool.overhang_mm.value_or(0.0));
+    m_overhang->setMillimetres(p.tool.overhang_mm.value_or(0.0));
     m_clamping->setCurrentIndex(m_clamping->findData(static_cast<int>(p.clamping.method)));
-    m_clampedLength->setValue(p.clamping.clampedLength_mm);
+    m_clampedLength->setMillimetres(p.clamping.clampedLength_mm);
     m_clampedLength->setEnabled(p.clamping.method != ClampingMethod::BetweenCentres);
     if (p.clamping.clampedLength_mm > 0.0)
         m_lastChuckLength_mm = p.clamping.clampedLength_mm;
@@ -314,7 +322,7 @@ void SetupPanel::applyTool()
     Tool tool = m_document.project().tool;
     tool.insertCode = insert.insert->code;
     tool.holderCode = m_holder->currentData().toString();
-    tool.overhang_mm = m_overhang->value() > 0.0 ? std::optional<double>(m_overhang->value()) : std::nullopt;
+    tool.overhang_mm = m_overhang->value() > 0.0 ? std::optional<double>(m_overhang->millimetres()) : std::nullopt;
     showOutcome(m_document.setTool(tool));
 }
 
@@ -325,7 +333,7 @@ void SetupPanel::applyClamping()
     const Clamping before = m_document.project().clamping;
     Clamping clamping;
     clamping.method = static_cast<ClampingMethod>(m_clamping->currentData().toInt());
-    clamping.clampedLength_mm = m_clampedLength->value();
+    clamping.clampedLength_mm = m_clampedLength->millimetres();
     if (clamping.method == ClampingMethod::BetweenCentres) {
         clamping.clampedLength_mm = 0.0; // nothing is gripped between centres
     } else if (before.method == ClampingMethod::BetweenCentres) {

@@ -15,6 +15,8 @@ class QLineEdit;
 
 namespace tolturn {
 
+class LengthSpinBox;
+
 class ProjectDocument;
 class StiffnessEditor;
 
@@ -40,9 +42,9 @@ public:
 
     [[nodiscard]] QComboBox *clampingBox() const { return m_clamping; }
 
-    [[nodiscard]] QDoubleSpinBox *clampedLengthBox() const { return m_clampedLength; }
+    [[nodiscard]] LengthSpinBox *clampedLengthBox() const { return m_clampedLength; }
 
-    [[nodiscard]] QDoubleSpinBox *overhangBox() const { return m_overhang; }
+    [[nodiscard]] LengthSpinBox *overhangBox() const { return m_overhang; }
 
     [[nodiscard]] StiffnessEditor *stiffnessEditor() const { return m_stiffness; }
 
@@ -82,8 +84,8 @@ private:
     QLabel *m_insertDecoded;
     QComboBox *m_holder;
     QComboBox *m_clamping;
-    QDoubleSpinBox *m_clampedLength;
-    QDoubleSpinBox *m_overhang;
+    LengthSpinBox *m_clampedLength;
+    LengthSpinBox *m_overhang;
     QGridLayout *m_passGrid = nullptr;
     std::vector<std::vector<QDoubleSpinBox *>> m_passBoxes;
     std::vector<QLabel *> m_passLabels;

@@ -2,6 +2,7 @@
 #include "widgets/tolerances/tolerance_verdict_model.h"
 
 #include "core/project/keywords.h"
+#include "widgets/common/display_units.h"
 
 #include <QColor>
 
@@ -9,9 +10,13 @@ namespace tolturn {
 
 namespace {
 
-QString number(const std::optional<double> &v, int decimals)
+// A deviation in µm in the display unit (µm, or µin with no decimals), or a dash.
+QString deviation(const std::optional<double> &value_um, const DisplayUnits &units)
 {
-    return v ? QString::number(*v, 'f', decimals) : QStringLiteral("—");
+    if (!value_um)
+        return QStringLiteral("—");
+    const int decimals = units.lengthUnit() == LengthUnit::Inch ? 0 : 3;
+    return QString::number(units.deviationFromUm(*value_um), 'f', decimals);
 }
 
 QString signedNumber(double v)
@@ -21,7 +26,14 @@ QString signedNumber(double v)
 
 } // namespace
 
-ToleranceVerdictModel::ToleranceVerdictModel(QObject *parent) : QAbstractTableModel(parent) {}
+ToleranceVerdictModel::ToleranceVerdictModel(QObject *parent) : QAbstractTableModel(parent)
+{
+    connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, [this] {
+        if (rowCount() > 0)
+            Q_EMIT dataChanged(index(0, Value), index(rowCount() - 1, Limit), {Qt::DisplayRole});
+        Q_EMIT headerDataChanged(Qt::Horizontal, Value, Limit);
+    });
+}
 
 void ToleranceVerdictModel::setVerdicts(const Project &project, std::vector<ToleranceEvaluation> verdicts)
 {
@@ -71,9 +83,9 @@ QVariant ToleranceVerdictModel::display(int row, int column) const
     case Specification:
         return specification(t);
     case Value:
-        return number(e.value_um, 3);
+        return deviation(e.value_um, DisplaySettings::instance().units());
     case Limit:
-        return number(e.limit_um, 3);
+        return deviation(e.limit_um, DisplaySettings::instance().units());
     case Utilisation:
         return e.utilisation_pct ? QStringLiteral("%1 %").arg(*e.utilisation_pct, 0, 'f', 1) : QStringLiteral("—");
     case VerdictColumn:
@@ -130,9 +142,9 @@ QVariant ToleranceVerdictModel::headerData(int section, Qt::Orientation orientat
     case Specification:
         return tr("Specification");
     case Value:
-        return tr("Predicted [µm]");
+        return tr("Predicted [%1]").arg(DisplaySettings::instance().units().deviationSymbol());
     case Limit:
-        return tr("Limit [µm]");
+        return tr("Limit [%1]").arg(DisplaySettings::instance().units().deviationSymbol());
     case Utilisation:
         return tr("Utilisation");
     case VerdictColumn:

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/common/length_spin_box.h"
+
+#include <QSignalBlocker>
+
+#include <cmath>
+
+namespace tolturn {
+
+LengthSpinBox::LengthSpinBox(double maximum_mm, QWidget *parent) : QDoubleSpinBox(parent), m_maximum_mm(maximum_mm)
+{
+    setKeyboardTracking(false);
+    applyUnits();
+    connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &LengthSpinBox::applyUnits);
+}
+
+double LengthSpinBox::millimetres() const
+{
+    // The box holds a rounded number (5 decimals of an inch are 0.254 µm); while it shows the
+    // length last set, that length is returned exactly, so that showing a value in other
+    // units, or editing a neighbouring field, never changes it.
+    const double scale = std::pow(10.0, decimals());
+    const double shownLast = std::round(m_shown.lengthFromMm(m_value_mm) * scale) / scale;
+    if (std::abs(value() - shownLast) <= 0.5 / scale * 1e-6)
+        return m_value_mm;
+    return m_shown.lengthToMm(value());
+}
+
+void LengthSpinBox::setMillimetres(double value_mm)
+{
+    m_value_mm = value_mm;
+    setValue(m_shown.lengthFromMm(value_mm));
+}
+
+void LengthSpinBox::applyUnits()
+{
+    const double kept_mm = millimetres();
+    m_shown = DisplaySettings::instance().units();
+    const QSignalBlocker quiet(this); // the length does not change, only how it is shown
+    setDecimals(m_shown.lengthDecimals());
+    setRange(0.0, m_shown.lengthFromMm(m_maximum_mm));
+    setSuffix(QLatin1Char(' ') + m_shown.lengthSymbol());
+    setMillimetres(kept_mm);
+}
+
+} // namespace tolturn
