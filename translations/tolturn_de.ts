@@ -1038,6 +1038,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the features beside %1 are parallel: there is no corner to give back</source>
         <translation>die Formelemente neben %1 sind parallel: es gibt keine Ecke, die wiederhergestellt werden kann</translation>
     </message>
+    <message>
+        <source>only a chamfer or an edge round changes into the other; %1 is neither</source>
+        <translation>nur eine Fase oder eine Kantenrundung lässt sich in die andere umwandeln; %1 ist keines von beiden</translation>
+    </message>
 </context>
 <context>
     <name>ProfileValidation</name>
@@ -2082,6 +2086,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Delete %1</source>
         <translation>%1 löschen</translation>
+    </message>
+    <message>
+        <source>Make R&amp;ound</source>
+        <translation>In &amp;Rundung umwandeln</translation>
+    </message>
+    <message>
+        <source>Make C&amp;hamfer</source>
+        <translation>In F&amp;ase umwandeln</translation>
+    </message>
+    <message>
+        <source>Make %1 an edge round</source>
+        <translation>%1 in Kantenrundung umwandeln</translation>
+    </message>
+    <message>
+        <source>Make %1 a chamfer</source>
+        <translation>%1 in Fase umwandeln</translation>
     </message>
 </context>
 <context>

@@ -1038,6 +1038,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the features beside %1 are parallel: there is no corner to give back</source>
         <translation>los elementos contiguos a %1 son paralelos: no hay ninguna esquina que restituir</translation>
     </message>
+    <message>
+        <source>only a chamfer or an edge round changes into the other; %1 is neither</source>
+        <translation>solo un chaflán o un redondeo de arista se convierte en el otro; %1 no es ninguno de los dos</translation>
+    </message>
 </context>
 <context>
     <name>ProfileValidation</name>
@@ -2082,6 +2086,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Delete %1</source>
         <translation>Eliminar %1</translation>
+    </message>
+    <message>
+        <source>Make R&amp;ound</source>
+        <translation>Convertir en &amp;redondeo</translation>
+    </message>
+    <message>
+        <source>Make C&amp;hamfer</source>
+        <translation>Convertir en c&amp;haflán</translation>
+    </message>
+    <message>
+        <source>Make %1 an edge round</source>
+        <translation>Convertir %1 en redondeo de arista</translation>
+    </message>
+    <message>
+        <source>Make %1 a chamfer</source>
+        <translation>Convertir %1 en chaflán</translation>
     </message>
 </context>
 <context>

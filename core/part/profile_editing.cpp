@@ -270,6 +270,32 @@ ProfileEdit addBore(const PartProfile &profile, const QString &endFaceId, double
     return result;
 }
 
+ProfileEdit swapCornerBreak(const PartProfile &profile, const QString &featureId)
+{
+    const std::optional<FeatureRef> ref = findFeature(profile, featureId);
+    const bool edge = ref && (ref->segment->kind == SegmentKind::Chamfer || ref->segment->kind == SegmentKind::Radius);
+    if (!edge)
+        return ProfileEditing::tr("only a chamfer or an edge round changes into the other; %1 is neither")
+            .arg(featureId);
+    const Segment old = *ref->segment;
+    const bool toRound = old.kind == SegmentKind::Chamfer;
+    // The size both breaks share at a right-angled corner: a 45° chamfer's leg along each side
+    // is the tangent length of the quarter circle that replaces it, which is its radius.
+    const double size_mm = toRound
+                               ? std::max(std::abs(old.to.z_mm - old.from.z_mm), std::abs(old.to.r_mm - old.from.r_mm))
+                               : old.arcRadius_mm;
+    const ProfileEdit sharp = deleteFeature(profile, featureId);
+    if (const auto *refusal = std::get_if<QString>(&sharp))
+        return *refusal;
+    ProfileEdit swapped = breakCorner(std::get<PartProfile>(sharp), ref->side, ref->index, size_mm, toRound);
+    if (auto *part = std::get_if<PartProfile>(&swapped)) {
+        // The break keeps its id, so that tolerances on it stay attached.
+        Segment &made = contourOf(*part, ref->side).segments[static_cast<std::size_t>(ref->index)];
+        made.id = old.id;
+    }
+    return swapped;
+}
+
 ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
 {
     const std::optional<FeatureRef> ref = findFeature(profile, featureId);

@@ -31,6 +31,10 @@ using ProfileEdit = std::variant<PartProfile, QString>;
 [[nodiscard]] ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex, double size_mm,
                                       bool round);
 
+// Turns a chamfer into an edge round of the same size (its leg as the radius) or a round into
+// a 45° chamfer, keeping the feature's id. Both sit between a face and a cylinder.
+[[nodiscard]] ProfileEdit swapCornerBreak(const PartProfile &profile, const QString &featureId);
+
 // Removes a feature. A chamfer or radius gives back the sharp corner; a face between two
 // cylinders removes the step (the cylinders merge at the first one's diameter); otherwise the
 // features after it move to close the gap.

@@ -125,6 +125,26 @@ private Q_SLOTS:
         QCOMPARE(fillet.outer.segments[3].to, pt(51, 15));
     }
 
+    // A 1.5 mm × 45° chamfer at the right end (z 98.5 → 100, r 15 → 13.5) becomes a quarter
+    // circle of radius 1.5 between the same two points, turning right, under the same id; and
+    // back to the chamfer it was.
+    void chamferBecomesRoundAndBack()
+    {
+        const PartProfile chamfered = edited(breakCorner(shaft(), ContourSide::Outer, 4, 1.5, false));
+        const QString id = chamfered.outer.segments[4].id;
+        const PartProfile rounded = edited(swapCornerBreak(chamfered, id));
+        const Segment &round = rounded.outer.segments[4];
+        QCOMPARE(round.id, id);
+        QCOMPARE(round.kind, SegmentKind::Radius);
+        QCOMPARE(round.arcRadius_mm, 1.5);
+        QCOMPARE(round.arcDirection, ArcDirection::Clockwise);
+        QCOMPARE(round.from, pt(98.5, 15));
+        QCOMPARE(round.to, pt(100, 13.5));
+        QCOMPARE(rounded.outer.segments.size(), std::size_t(6));
+        QVERIFY(edited(swapCornerBreak(rounded, id)) == chamfered);
+        QVERIFY(refusal(swapCornerBreak(shaft(), QStringLiteral("O2"))).contains(QStringLiteral("O2")));
+    }
+
     void cornerRefusals()
     {
         // 6 mm does not fit on the 5 mm shoulder.

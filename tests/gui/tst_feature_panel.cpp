@@ -142,29 +142,53 @@ private Q_SLOTS:
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
         w.profileView()->selectFeature(QStringLiteral("O2")); // Ø56 clamping diameter, z 0 … 35
         w.featurePanel()->stepDiameterBox()->setValue(54.0);
-        w.featurePanel()->toggleCone(); // a taper to Ø54 at its end
+        w.featurePanel()->changeKind(); // a taper to Ø54 at its end
         QVERIFY2(w.featurePanel()->message().isEmpty(), qPrintable(w.featurePanel()->message()));
         QCOMPARE(feature(w, "O2").kind, SegmentKind::Cone);
         QCOMPARE(feature(w, "O2").from, pt(0, 28));
         QCOMPARE(feature(w, "O2").to, pt(35, 27));
         QCOMPARE(feature(w, "O3").from, pt(35, 27)); // the shoulder O3 follows
-        w.featurePanel()->toggleCone();
+        w.featurePanel()->changeKind();
         QCOMPARE(feature(w, "O2").kind, SegmentKind::Cylinder);
         QCOMPARE(feature(w, "O2").to, pt(35, 28));
         QCOMPARE(w.document()->undoStack()->count(), 2);
         // The journal O9 tapered to Ø28 would flatten the end chamfer O10: refused, named.
         w.profileView()->selectFeature(QStringLiteral("O9"));
         w.featurePanel()->stepDiameterBox()->setValue(28.0);
-        w.featurePanel()->toggleCone();
+        w.featurePanel()->changeKind();
         QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("part.outer[9]")),
                  qPrintable(w.featurePanel()->message()));
         QCOMPARE(feature(w, "O9").kind, SegmentKind::Cylinder);
         // The bearing seat O4 carries a diameter tolerance, which a cone cannot: refused.
         w.profileView()->selectFeature(QStringLiteral("O4"));
         w.featurePanel()->stepDiameterBox()->setValue(48.0);
-        w.featurePanel()->toggleCone();
+        w.featurePanel()->changeKind();
         QVERIFY(!w.featurePanel()->message().isEmpty());
         QCOMPARE(feature(w, "O4").kind, SegmentKind::Cylinder);
+    }
+
+    // The end chamfer O10 (1 mm × 45°, z 149 → 150 down from the journal Ø30) becomes a 1 mm edge round
+    // under the same id, and back; one undo step each.
+    void chamferBecomesRound()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        const Segment chamfer = feature(w, "O10");
+        QCOMPARE(chamfer.kind, SegmentKind::Chamfer);
+        w.profileView()->selectFeature(QStringLiteral("O10"));
+        w.featurePanel()->changeKind();
+        QVERIFY2(w.featurePanel()->message().isEmpty(), qPrintable(w.featurePanel()->message()));
+        QCOMPARE(feature(w, "O10").kind, SegmentKind::Radius);
+        QCOMPARE(feature(w, "O10").from, chamfer.from);
+        QCOMPARE(feature(w, "O10").to, chamfer.to);
+        QCOMPARE(feature(w, "O10").arcRadius_mm, chamfer.to.z_mm - chamfer.from.z_mm);
+        w.featurePanel()->changeKind();
+        QCOMPARE(feature(w, "O10").kind, SegmentKind::Chamfer);
+        QCOMPARE(feature(w, "O10").from, chamfer.from);
+        QCOMPARE(feature(w, "O10").to, chamfer.to);
+        QCOMPARE(w.document()->undoStack()->count(), 2);
+        w.document()->undoStack()->undo();
+        QCOMPARE(feature(w, "O10").kind, SegmentKind::Radius);
     }
 
     void boreFromTheRightEnd()

@@ -24,6 +24,21 @@ LengthSpinBox *millimetres(const QString &tip)
     return box;
 }
 
+// The kind-change button's text for a feature of `kind`.
+QString kindChangeText(SegmentKind kind)
+{
+    switch (kind) {
+    case SegmentKind::Cone:
+        return FeaturePanel::tr("Make C&ylinder");
+    case SegmentKind::Chamfer:
+        return FeaturePanel::tr("Make R&ound");
+    case SegmentKind::Radius:
+        return FeaturePanel::tr("Make C&hamfer");
+    default:
+        return FeaturePanel::tr("Make C&one");
+    }
+}
+
 } // namespace
 
 FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
@@ -39,7 +54,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     , m_insertStep(new QPushButton(tr("Insert &Step")))
     , m_cornerSize(millimetres(tr("Chamfer leg (45°) or radius")))
     , m_delete(new QPushButton(tr("&Delete Feature")))
-    , m_cone(new QPushButton(tr("Make C&one")))
+    , m_changeKind(new QPushButton(tr("Make C&one")))
     , m_boreDepth(millimetres(tr("Depth of the bore from this end face; the part's length bores through")))
     , m_boreD(millimetres(tr("Diameter of the bore")))
     , m_bore(new QPushButton(tr("&Bore from This Face")))
@@ -65,7 +80,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     layout->addWidget(geometry);
     layout->addWidget(step);
     layout->addWidget(createCornerRow());
-    layout->addWidget(m_cone);
+    layout->addWidget(m_changeKind);
     layout->addWidget(createBoreGroup());
     layout->addWidget(m_delete);
     layout->addWidget(m_message);
@@ -77,7 +92,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     connect(m_endD, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(true); });
     connect(m_insertStep, &QPushButton::clicked, this, &FeaturePanel::insertStep);
     connect(m_delete, &QPushButton::clicked, this, &FeaturePanel::deleteFeature);
-    connect(m_cone, &QPushButton::clicked, this, &FeaturePanel::toggleCone);
+    connect(m_changeKind, &QPushButton::clicked, this, &FeaturePanel::changeKind);
     connect(&m_document, &ProjectDocument::projectChanged, this, &FeaturePanel::showFeature);
     showFeature();
 }
@@ -150,12 +165,13 @@ void FeaturePanel::showFeature()
     m_endD->setMillimetres(2.0 * s.to.r_mm);
     const bool cylinder = s.kind == SegmentKind::Cylinder;
     m_insertStep->setEnabled(cylinder);
-    m_cone->setEnabled(cylinder || s.kind == SegmentKind::Cone);
+    const bool edgeBreak = s.kind == SegmentKind::Chamfer || s.kind == SegmentKind::Radius;
+    m_changeKind->setEnabled(cylinder || s.kind == SegmentKind::Cone || edgeBreak);
     const std::vector<Segment> &outer = m_document.project().part.outer.segments;
     const bool endFace =
         ref->side == ContourSide::Outer && (ref->index == 0 || ref->index + 1 == static_cast<int>(outer.size()));
     m_bore->setEnabled(endFace && m_document.project().part.inner.empty());
-    m_cone->setText(s.kind == SegmentKind::Cone ? tr("Make C&ylinder") : tr("Make C&one"));
+    m_changeKind->setText(kindChangeText(s.kind));
     if (cylinder) {
         m_stepZ->setMillimetres(0.5 * (s.from.z_mm + s.to.z_mm));
         m_stepD->setMillimetres(2.0 * s.from.r_mm - 2.0 * m_cornerSize->millimetres());
@@ -200,11 +216,17 @@ void FeaturePanel::breakCorner(bool atEnd, bool round)
           round ? tr("Round corner of %1").arg(m_featureId) : tr("Chamfer corner of %1").arg(m_featureId));
 }
 
-void FeaturePanel::toggleCone()
+void FeaturePanel::changeKind()
 {
     const std::optional<FeatureRef> ref = findFeature(m_document.project().part, m_featureId);
     if (!ref)
         return;
+    if (ref->segment->kind == SegmentKind::Chamfer || ref->segment->kind == SegmentKind::Radius) {
+        apply(swapCornerBreak(m_document.project().part, m_featureId),
+              ref->segment->kind == SegmentKind::Chamfer ? tr("Make %1 an edge round").arg(m_featureId)
+                                                         : tr("Make %1 a chamfer").arg(m_featureId));
+        return;
+    }
     if (ref->segment->kind == SegmentKind::Cone) {
         apply(makeCylinder(m_document.project().part, m_featureId), tr("Make %1 a cylinder").arg(m_featureId));
         return;

@@ -56,8 +56,9 @@ public:
     void deleteFeature();
     // Bores the solid part from the selected end face.
     void addBore();
-    // A cylinder becomes a cone, a cone of one diameter a cylinder.
-    void toggleCone();
+    // Changes the feature's kind: a cylinder becomes a cone, a cone of one diameter a cylinder;
+    // a chamfer becomes an edge round of the same size, a round a chamfer.
+    void changeKind();
 
 Q_SIGNALS:
     // The feature to select after an edit (a new one, or none after a delete).
@@ -84,7 +85,7 @@ private:
     QPushButton *m_insertStep;
     LengthSpinBox *m_cornerSize;
     QPushButton *m_delete;
-    QPushButton *m_cone;
+    QPushButton *m_changeKind;
     LengthSpinBox *m_boreDepth;
     LengthSpinBox *m_boreD;
     QPushButton *m_bore;
