@@ -27,6 +27,20 @@ bool near(double a, double b)
     return std::abs(a - b) <= kProfileEpsilon_mm;
 }
 
+// A bore open at an end of the part is where that end face stops: after an edit of the bore,
+// the outer contour's end faces close at the bore's new radius there.
+void joinEndFacesToBore(PartProfile &p)
+{
+    if (p.inner.empty() || p.outer.empty())
+        return;
+    const Segment &first = p.inner.segments.front();
+    const Segment &last = p.inner.segments.back();
+    if (near(first.from.z_mm, 0.0) && first.from.r_mm > kProfileEpsilon_mm)
+        p.outer.segments.front().from.r_mm = first.from.r_mm;
+    if (near(last.to.z_mm, p.length_mm()) && last.to.r_mm > kProfileEpsilon_mm)
+        p.outer.segments.back().to.r_mm = last.to.r_mm;
+}
+
 // Moves the start of segment i to `to`; a cylinder or face keeps its kind by moving its other
 // end too, and so the start of the segment after it.
 void moveStart(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
@@ -121,6 +135,7 @@ ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex,
         moveEnd(s, k - 1, to);
     if (k < s.size())
         moveStart(s, k, to);
+    joinEndFacesToBore(result);
     return result;
 }
 
@@ -154,6 +169,7 @@ ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, dou
     s.insert(s.begin() + static_cast<std::ptrdiff_t>(i) + 1, {face, second});
     if (i + 3 < s.size())
         moveStart(s, i + 3, s[i + 2].to);
+    joinEndFacesToBore(result);
     return result;
 }
 
@@ -213,6 +229,7 @@ ProfileEdit makeCone(const PartProfile &profile, const QString &featureId, doubl
     s[i].to.r_mm = endDiameter_mm / 2.0;
     if (i + 1 < s.size())
         moveStart(s, i + 1, s[i].to);
+    joinEndFacesToBore(result);
     return result;
 }
 
@@ -228,6 +245,7 @@ ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId)
     s[i].to.r_mm = s[i].from.r_mm;
     if (i + 1 < s.size())
         moveStart(s, i + 1, s[i].to);
+    joinEndFacesToBore(result);
     return result;
 }
 
@@ -329,6 +347,7 @@ ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
         }
     }
     mergeAt(s, i);
+    joinEndFacesToBore(result);
     return result;
 }
 

@@ -185,6 +185,26 @@ private Q_SLOTS:
         QVERIFY(!refusal(addBore(blind, QStringLiteral("O1"), 10.0, 10.0)).isEmpty()); // bored already
     }
 
+    // A bore is edited like the outside: a through Ø16 bore stepped at z 20 to Ø24 (I1 Ø16 over
+    // z 0 … 20, the step face I2, I3 Ø24 to the right end, whose face now closes at r 12), the
+    // inner corner at the step chamfered 1 mm × 45°.
+    void steppingAndChamferingTheBore()
+    {
+        const PartProfile through = edited(addBore(shaft(), QStringLiteral("O1"), 100.0, 16.0));
+        const PartProfile stepped = edited(insertStep(through, QStringLiteral("I1"), 20.0, 24.0));
+        const auto &in = stepped.inner.segments;
+        QCOMPARE(in.size(), std::size_t{3});
+        QCOMPARE(in[0].to, pt(20, 8));
+        QCOMPARE(in[1].kind, SegmentKind::Face);
+        QCOMPARE(in[1].to, pt(20, 12));
+        QCOMPARE(in[2].to, pt(100, 12));
+        QCOMPARE(stepped.outer.segments.back().to, pt(100, 12));
+        const PartProfile chamfered = edited(breakCorner(stepped, ContourSide::Inner, 2, 1.0, false));
+        QCOMPARE(chamfered.inner.segments[2].kind, SegmentKind::Chamfer);
+        QCOMPARE(chamfered.inner.segments[2].from, pt(20, 11));
+        QCOMPARE(chamfered.inner.segments[2].to, pt(21, 12));
+    }
+
     void deletingTheShoulderRemovesTheStep()
     {
         const PartProfile p = edited(deleteFeature(shaft(), QStringLiteral("O3")));
