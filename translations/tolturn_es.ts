@@ -2181,6 +2181,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Saved %1</source>
         <translation>Se ha guardado %1</translation>
     </message>
+    <message>
+        <source>Writing the report…</source>
+        <translation>Escribiendo el informe…</translation>
+    </message>
+    <message>
+        <source>Report cancelled; nothing was written.</source>
+        <translation>Informe cancelado; no se ha escrito nada.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::MainWindow</name>
@@ -2351,6 +2359,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 — length %2 %7, Ø max %3 %7, %4 outer / %5 inner features, clamping: %6</source>
         <translation>%1 — longitud %2 %7, Ø máx. %3 %7, %4 elementos exteriores / %5 interiores, sujeción: %6</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>

@@ -206,11 +206,17 @@ bool FileController::exportReportTo(const QString &pdfPath)
 {
     if (!m_document.hasProject())
         return false;
-    // About a quarter of a second for a typical part (docs/benchmarks.md); the plots are widgets,
-    // so the report is drawn on this thread behind a busy cursor.
+    // About a tenth of a second for a typical part (docs/benchmarks.md); the plots are widgets,
+    // so the report is drawn on this thread, with a progress dialog that can cancel it.
     QGuiApplication::setOverrideCursor(QCursor(Qt::WaitCursor));
-    const ReportResult result = writeReport(m_document.project(), m_document.displayName(), pdfPath);
+    const std::unique_ptr<TaskProgress> progress = m_prompts.startProgress(tr("Writing the report…"));
+    const ReportResult result = writeReport(m_document.project(), m_document.displayName(), pdfPath,
+                                            [&progress](double f) { return !progress || progress->update(f); });
     QGuiApplication::restoreOverrideCursor();
+    if (result.cancelled) {
+        Q_EMIT statusMessage(tr("Report cancelled; nothing was written."));
+        return false;
+    }
     if (!result.ok) {
         m_prompts.showError(tr("Cannot export the report"), result.error);
         return false;

@@ -7,6 +7,8 @@
 #include <QObject>
 #include <QString>
 
+#include <memory>
+
 namespace tolturn {
 
 class ProjectDocument;
@@ -14,6 +16,14 @@ class RecentFiles;
 
 // What file commands need from the user: a path chosen, an error shown. The main window answers
 // with dialogs; tests answer with fixed paths and record the errors.
+// The progress of a task as the user sees it, for as long as the object lives.
+class TaskProgress {
+public:
+    virtual ~TaskProgress() = default;
+    // `fraction` done (0…1); false once the user has asked to cancel.
+    [[nodiscard]] virtual bool update(double fraction) = 0;
+};
+
 class FilePrompts {
 public:
     enum class SaveChoice { Save, Discard, Cancel };
@@ -27,6 +37,14 @@ public:
     virtual void showError(const QString &title, const QString &text) = 0;
     // Asked at start for each copy a crashed session left: true to recover it, false to discard it.
     [[nodiscard]] virtual bool askToRecover(const QString &documentName, const QDateTime &savedAt) = 0;
+
+    // Shown while a long task runs on the GUI thread (the report draws widgets, so it cannot
+    // move off it); none by default.
+    [[nodiscard]] virtual std::unique_ptr<TaskProgress> startProgress(const QString &label)
+    {
+        Q_UNUSED(label);
+        return nullptr;
+    }
 };
 
 // File > Open, Save, Save As, Export Report and the recent-file list. Choosing a path and writing a file are

@@ -28,6 +28,7 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
@@ -310,6 +311,35 @@ QString MainWindow::chooseReportFile(const QString &suggestedPath)
 QString MainWindow::autosaveFolder()
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
+}
+
+namespace {
+
+// A window-modal progress dialog: setValue() lets the event loop run, so Cancel is seen.
+class DialogProgress : public TaskProgress {
+public:
+    DialogProgress(const QString &label, QWidget *parent) : m_dialog(label, MainWindow::tr("Cancel"), 0, 100, parent)
+    {
+        m_dialog.setWindowModality(Qt::WindowModal);
+        m_dialog.setMinimumDuration(300); // a quick task shows nothing
+        m_dialog.setAutoReset(false);
+    }
+
+    bool update(double fraction) override
+    {
+        m_dialog.setValue(static_cast<int>(100.0 * fraction));
+        return !m_dialog.wasCanceled();
+    }
+
+private:
+    QProgressDialog m_dialog;
+};
+
+} // namespace
+
+std::unique_ptr<TaskProgress> MainWindow::startProgress(const QString &label)
+{
+    return std::make_unique<DialogProgress>(label, this);
 }
 
 bool MainWindow::askToRecover(const QString &documentName, const QDateTime &savedAt)

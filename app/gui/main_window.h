@@ -55,6 +55,7 @@ public:
     void showError(const QString &title, const QString &text) override;
     [[nodiscard]] SaveChoice askToSaveChanges(const QString &documentName) override;
     [[nodiscard]] bool askToRecover(const QString &documentName, const QDateTime &savedAt) override;
+    [[nodiscard]] std::unique_ptr<TaskProgress> startProgress(const QString &label) override;
 
     // Where the autosave copies live (per user).
     [[nodiscard]] static QString autosaveFolder();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop program's main window, offscreen: open an example, see its drawing, survive bad
 // files with a dialog and the document untouched, save, recent files, About.
+#include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
 #include "app/gui/recent_files.h"
 #include "core/project/project_validation.h"
@@ -17,11 +18,13 @@
 #include <QAction>
 #include <QApplication>
 #include <QFile>
+#include <QFileInfo>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -82,6 +85,42 @@ void answerNextSavePrompt(QMessageBox::StandardButton button, bool *asked)
         box->button(button)->click();
     });
 }
+
+// Prompts that answer nothing and cancel a long task once it reports `cancelAt` done.
+class CancellingPrompts : public FilePrompts {
+public:
+    std::vector<double> reported;
+    double cancelAt = 0.4;
+
+    SaveChoice askToSaveChanges(const QString &) override { return SaveChoice::Cancel; }
+
+    QString chooseFileToOpen(const QString &) override { return {}; }
+
+    QString chooseFileToSave(const QString &) override { return {}; }
+
+    QString chooseReportFile(const QString &) override { return {}; }
+
+    void showError(const QString &, const QString &) override {}
+
+    bool askToRecover(const QString &, const QDateTime &) override { return false; }
+
+    std::unique_ptr<TaskProgress> startProgress(const QString &) override
+    {
+        struct Progress : TaskProgress {
+            CancellingPrompts *owner = nullptr;
+
+            bool update(double fraction) override
+            {
+                owner->reported.push_back(fraction);
+                return fraction < owner->cancelAt;
+            }
+        };
+
+        auto progress = std::make_unique<Progress>();
+        progress->owner = this;
+        return progress;
+    }
+};
 
 } // namespace
 
@@ -231,6 +270,23 @@ private Q_SLOTS:
         closeNextMessageBox(&shown);
         QVERIFY(!w.fileController()->exportReportTo(QStringLiteral("/nonexistent-folder/r.pdf")));
         QVERIFY2(shown.contains(QStringLiteral("/nonexistent-folder/r.pdf")), qPrintable(shown));
+    }
+
+    // Cancelling the report while it is written: nothing on disk, the user told.
+    void cancellingTheReportWritesNothing()
+    {
+        ProjectDocument document;
+        RecentFiles recent;
+        CancellingPrompts prompts;
+        FileController files(document, recent, prompts);
+        QVERIFY(files.openFile(example("stepped-shaft-chuck.tolturn")));
+        QSignalSpy messages(&files, &FileController::statusMessage);
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("cancelled.pdf"));
+        QVERIFY(!files.exportReportTo(pdf));
+        QVERIFY(!QFileInfo::exists(pdf));
+        QCOMPARE(prompts.reported, (std::vector<double>{0.2, 0.4}));
+        QVERIFY(messages.last().constFirst().toString().contains(QStringLiteral("cancelled")));
     }
 
     void bundledExamplesAllOpen()

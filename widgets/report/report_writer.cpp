@@ -402,6 +402,14 @@ void sources(Layout &l, const Project &p, const DeviationResult &d)
         l.paragraph(Report::tr("Cutting ranges: %1").arg(p.planning.rangesSource), 8.0);
 }
 
+ReportResult cancelledReport()
+{
+    ReportResult r;
+    r.error = Report::tr("cancelled");
+    r.cancelled = true;
+    return r;
+}
+
 } // namespace
 
 ReportResult writeReport(const Project &project, const QString &projectName, const QString &pdfPath,
@@ -419,14 +427,14 @@ ReportResult writeReport(const Project &project, const QString &projectName, con
     drawing(layout, project);
     inputs(layout, project, deviation);
     if (!step(0.2))
-        return {false, Report::tr("cancelled"), 0};
+        return cancelledReport();
     deviationPlots(layout, project, deviation);
     verdicts(layout, project, verdictList);
     if (!step(0.4))
-        return {false, Report::tr("cancelled"), 0};
+        return cancelledReport();
     plan(layout, project, finishing);
     if (!step(0.8))
-        return {false, Report::tr("cancelled"), 0};
+        return cancelledReport();
     sources(layout, project, deviation);
     const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
 

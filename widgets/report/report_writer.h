@@ -13,6 +13,7 @@ struct ReportResult {
     bool ok = false;
     QString error; // what went wrong, naming the file
     int pages = 0;
+    bool cancelled = false; // stopped through `progress`; no file was written
 };
 
 // Writes the PDF report of a project (File > Export Report, `tolturn-cli report`): title block,
