@@ -1853,10 +1853,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Durchmesserfehler</translation>
     </message>
     <message>
-        <source>Radial deviation: material left on the surface, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, eq. 2). Diameter error: 2 (r - r_nominal) with the radial and tangential deviation combined exactly.</source>
-        <translation>Radialabweichung: auf der Oberfläche stehen gebliebenes Material, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, Gl. 2). Durchmesserfehler: 2 (r - r_nominal), mit exakt kombinierter Radial- und Tangentialabweichung.</translation>
-    </message>
-    <message>
         <source>total</source>
         <translation>gesamt</translation>
     </message>
@@ -1915,6 +1911,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>diameter error [%1]</source>
         <translation>Durchmesserfehler [%1]</translation>
+    </message>
+    <message>
+        <source>Face conicity</source>
+        <translation>Konizität der Planflächen</translation>
+    </message>
+    <message>
+        <source>Radial deviation: material left on the surface, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, eq. 2). Diameter error: 2 (r - r_nominal) with the radial and tangential deviation combined exactly. Face conicity: the axial run-out e = h · tan θ of each faced surface, tan θ = dδ/dz at the face (eq. 12).</source>
+        <translation>Radialabweichung: auf der Oberfläche stehen gebliebenes Material, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, Gl. 2). Durchmesserfehler: 2 (r - r_nominal), mit exakt kombinierter Radial- und Tangentialabweichung. Konizität der Planflächen: der Planlauf e = h · tan θ jeder plangedrehten Fläche, tan θ = dδ/dz an der Planfläche (Gl. 12).</translation>
+    </message>
+    <message>
+        <source>axial run-out e of each face</source>
+        <translation>Planlauf e jeder Planfläche</translation>
+    </message>
+    <message>
+        <source>Face conicity: axial run-out of each face</source>
+        <translation>Konizität der Planflächen: Planlauf jeder Planfläche</translation>
+    </message>
+    <message>
+        <source>axial run-out e [%1]</source>
+        <translation>Planlauf e [%1]</translation>
     </message>
 </context>
 <context>

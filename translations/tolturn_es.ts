@@ -1853,10 +1853,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Error de diámetro</translation>
     </message>
     <message>
-        <source>Radial deviation: material left on the surface, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, eq. 2). Diameter error: 2 (r - r_nominal) with the radial and tangential deviation combined exactly.</source>
-        <translation>Desviación radial: material sobrante en la superficie, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, ec. 2). Error de diámetro: 2 (r - r_nominal), combinando exactamente la desviación radial y la tangencial.</translation>
-    </message>
-    <message>
         <source>total</source>
         <translation>total</translation>
     </message>
@@ -1915,6 +1911,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>diameter error [%1]</source>
         <translation>error de diámetro [%1]</translation>
+    </message>
+    <message>
+        <source>Face conicity</source>
+        <translation>Conicidad de las caras</translation>
+    </message>
+    <message>
+        <source>Radial deviation: material left on the surface, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, eq. 2). Diameter error: 2 (r - r_nominal) with the radial and tangential deviation combined exactly. Face conicity: the axial run-out e = h · tan θ of each faced surface, tan θ = dδ/dz at the face (eq. 12).</source>
+        <translation>Desviación radial: material sobrante en la superficie, δ_T = δ_sc + δ_tp + δ_p + δ_th (Valiño et al. 2008, ec. 2). Error de diámetro: 2 (r - r_nominal), combinando exactamente la desviación radial y la tangencial. Conicidad de las caras: la oscilación axial e = h · tan θ de cada superficie refrentada, tan θ = dδ/dz en la cara (ec. 12).</translation>
+    </message>
+    <message>
+        <source>axial run-out e of each face</source>
+        <translation>oscilación axial e de cada cara</translation>
+    </message>
+    <message>
+        <source>Face conicity: axial run-out of each face</source>
+        <translation>Conicidad de las caras: oscilación axial de cada cara</translation>
+    </message>
+    <message>
+        <source>axial run-out e [%1]</source>
+        <translation>oscilación axial e [%1]</translation>
     </message>
 </context>
 <context>

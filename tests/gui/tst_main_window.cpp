@@ -23,6 +23,7 @@
 #include <QGraphicsScene>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -316,6 +317,19 @@ private Q_SLOTS:
         QCOMPARE(panel->plot()->curveCount(), 3); // toolpost and thermal act radially only
         panel->setQuantity(DeflectionPanel::Quantity::DiameterError);
         QCOMPARE(panel->plot()->curveCount(), 1);
+        // One stem per face of the outer contour, at the face's z, of height e (eq. 12).
+        panel->setQuantity(DeflectionPanel::Quantity::FaceConicity);
+        QCOMPARE(panel->plot()->curveCount(), 1);
+        const std::vector<FaceConicity> &faces = panel->result().faces;
+        const auto o3 = std::find_if(faces.begin(), faces.end(),
+                                     [](const FaceConicity &f) { return f.featureId == QStringLiteral("O3"); });
+        QVERIFY(o3 != faces.end());
+        const FaceConicity &shoulder = *o3; // z 35, from r 28 down to r 25
+        QCOMPARE(shoulder.z_mm, 35.0);
+        QVERIFY(std::abs(shoulder.axialRunout_mm - 3.0 * std::abs(shoulder.tanTheta)) < 1e-15);
+        const QStringList rows = panel->plot()->csvText().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(rows.size() - 1, static_cast<int>(faces.size()));
+        QVERIFY(rows.filter(QRegularExpression(QStringLiteral("^35,"))).size() == 1);
 
         QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
         QVERIFY(panel->result().inputs->forces.tangential_N != shaftFc);

@@ -63,6 +63,16 @@ void LinePlot::addCurve(const QString &name, const QVector<double> &x, const QVe
     graph->setData(x, y, true);
 }
 
+void LinePlot::addStems(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color)
+{
+    QCPGraph *graph = m_plot->addGraph();
+    graph->setName(name);
+    graph->setPen(QPen(color, 2.0));
+    graph->setLineStyle(QCPGraph::lsImpulse);
+    graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, color, color, 7));
+    graph->setData(x, y, true);
+}
+
 void LinePlot::rescaleAndReplot()
 {
     m_plot->rescaleAxes();

@@ -25,6 +25,8 @@ public:
     void clear();
     void addCurve(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color,
                   Qt::PenStyle style = Qt::SolidLine, double width = 1.5);
+    // Values at separate positions (one per face, say): a stem from zero up to each, with a dot.
+    void addStems(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color);
     // Fits the axes to the data (y always includes zero) and redraws.
     void rescaleAndReplot();
 

@@ -44,9 +44,11 @@ DeflectionPanel::DeflectionPanel(QWidget *parent)
     m_quantityBox->addItem(tr("Radial deviation by contribution"));
     m_quantityBox->addItem(tr("Tangential deviation by contribution"));
     m_quantityBox->addItem(tr("Diameter error"));
+    m_quantityBox->addItem(tr("Face conicity"));
     m_quantityBox->setToolTip(tr("Radial deviation: material left on the surface, δ_T = δ_sc + δ_tp + δ_p + δ_th "
                                  "(Valiño et al. 2008, eq. 2). Diameter error: 2 (r - r_nominal) with the radial and "
-                                 "tangential deviation combined exactly."));
+                                 "tangential deviation combined exactly. Face conicity: the axial run-out "
+                                 "e = h · tan θ of each faced surface, tan θ = dδ/dz at the face (eq. 12)."));
     auto *controls = new QHBoxLayout;
     controls->addWidget(m_sideBox);
     controls->addWidget(m_quantityBox);
@@ -113,6 +115,9 @@ void DeflectionPanel::redraw()
             break;
         case Quantity::DiameterError:
             plotDiameterError();
+            break;
+        case Quantity::FaceConicity:
+            plotFaceConicity();
             break;
         }
     }
@@ -181,6 +186,25 @@ void DeflectionPanel::plotDiameterError()
     m_plot->setTitle(tr("Diameter error: machined minus nominal"));
     m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
                           tr("diameter error [%1]").arg(units.deviationSymbol()));
+}
+
+// Each face of the chosen contour as a stem at its z: its axial run-out e (Valiño et al. 2008,
+// eq. 12), the tilt tan θ of the face times its radial height.
+void DeflectionPanel::plotFaceConicity()
+{
+    const DisplayUnits units = DisplaySettings::instance().units();
+    QVector<double> x;
+    QVector<double> y;
+    for (const FaceConicity &f : m_result.faces) {
+        if (f.side != m_side)
+            continue;
+        x << units.lengthFromMm(f.z_mm);
+        y << units.deviationFromUm(f.axialRunout_mm * kUmPerMm);
+    }
+    m_plot->addStems(tr("axial run-out e of each face"), x, y, QColor(0x8c, 0x56, 0x4b));
+    m_plot->setTitle(tr("Face conicity: axial run-out of each face"));
+    m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
+                          tr("axial run-out e [%1]").arg(units.deviationSymbol()));
 }
 
 QString DeflectionPanel::summaryText() const

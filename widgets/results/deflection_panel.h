@@ -19,7 +19,7 @@ class LinePlot;
 class DeflectionPanel : public QWidget {
     Q_OBJECT
 public:
-    enum class Quantity { RadialContributions, TangentialContributions, DiameterError };
+    enum class Quantity { RadialContributions, TangentialContributions, DiameterError, FaceConicity };
 
     explicit DeflectionPanel(QWidget *parent = nullptr);
 
@@ -44,6 +44,7 @@ private:
     void redraw();
     void plotContributions(bool radial);
     void plotDiameterError();
+    void plotFaceConicity();
     void updateTexts();
 
     DeviationResult m_result;
