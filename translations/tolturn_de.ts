@@ -2380,6 +2380,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Part</source>
+        <translation>&amp;Werkstück einpassen</translation>
+    </message>
+    <message>
+        <source>Show the whole part in the drawing (Ctrl+0, or double-click the drawing)</source>
+        <translation>Das ganze Werkstück in der Zeichnung zeigen (Strg+0, oder Doppelklick in die Zeichnung)</translation>
+    </message>
+    <message>
+        <source>&amp;Optimise Cutting Conditions</source>
+        <translation>Schnittwerte &amp;optimieren</translation>
+    </message>
+    <message>
+        <source>Find the cutting conditions that hold every tolerance at least time or cost (F5)</source>
+        <translation>Die Schnittwerte finden, die jede Toleranz bei geringster Zeit oder geringsten Kosten einhalten (F5)</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningPanel</name>

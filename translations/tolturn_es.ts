@@ -2380,6 +2380,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Barra de herramientas principal</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Part</source>
+        <translation>&amp;Encajar pieza</translation>
+    </message>
+    <message>
+        <source>Show the whole part in the drawing (Ctrl+0, or double-click the drawing)</source>
+        <translation>Mostrar la pieza entera en el dibujo (Ctrl+0, o doble clic en el dibujo)</translation>
+    </message>
+    <message>
+        <source>&amp;Optimise Cutting Conditions</source>
+        <translation>&amp;Optimizar condiciones de corte</translation>
+    </message>
+    <message>
+        <source>Find the cutting conditions that hold every tolerance at least time or cost (F5)</source>
+        <translation>Buscar las condiciones de corte que cumplen todas las tolerancias con el mínimo tiempo o coste (F5)</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningPanel</name>

@@ -34,9 +34,20 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QUndoStack>
 
 namespace tolturn {
+
+namespace {
+
+// TolTurn's own SVG icons (resources/icons), sharp at any screen scale, the same on every desktop.
+QIcon actionIcon(const char *name)
+{
+    return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)));
+}
+
+} // namespace
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
@@ -88,6 +99,8 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::createActions()
 {
+    m_toolBar = addToolBar(tr("Main Toolbar"));
+    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
     createFileMenu();
     createEditMenu();
     createDocks();
@@ -101,8 +114,12 @@ void MainWindow::createEditMenu()
     undo->setShortcut(QKeySequence::Undo);
     QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcut(QKeySequence::Redo);
+    undo->setIcon(actionIcon("edit-undo"));
+    redo->setIcon(actionIcon("edit-redo"));
     edit->addAction(undo);
     edit->addAction(redo);
+    m_toolBar->addActions({undo, redo});
+    m_toolBar->addSeparator();
     edit->addSeparator();
     // The selected feature of the drawing (the Feature dock's Delete, from the keyboard).
     QAction *deleteFeature = edit->addAction(tr("&Delete Feature"));
@@ -113,7 +130,7 @@ void MainWindow::createEditMenu()
     connect(m_profileView, &ProfileView::featureSelected, deleteFeature,
             [deleteFeature](const QString &id) { deleteFeature->setEnabled(!id.isEmpty()); });
     edit->addSeparator();
-    QAction *preferences = edit->addAction(QIcon::fromTheme(QStringLiteral("preferences-system")), tr("Pre&ferences…"));
+    QAction *preferences = edit->addAction(actionIcon("preferences"), tr("Pre&ferences…"));
     preferences->setObjectName(QStringLiteral("preferencesAction"));
     preferences->setShortcut(QKeySequence::Preferences);
     preferences->setMenuRole(QAction::PreferencesRole);
@@ -170,6 +187,25 @@ void MainWindow::createDocks()
     resizeDocks({setup, tolerances}, {440, 660}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
     QMenu *view = menuBar()->addMenu(tr("&View"));
+    QAction *fit = view->addAction(actionIcon("zoom-fit"), tr("&Fit Part"));
+    fit->setObjectName(QStringLiteral("fitPartAction"));
+    fit->setShortcut(Qt::CTRL | Qt::Key_0);
+    fit->setToolTip(tr("Show the whole part in the drawing (Ctrl+0, or double-click the drawing)"));
+    connect(fit, &QAction::triggered, m_profileView, &ProfileView::fitPart);
+    QAction *optimise = view->addAction(actionIcon("optimise"), tr("&Optimise Cutting Conditions"));
+    optimise->setObjectName(QStringLiteral("optimiseAction"));
+    optimise->setShortcut(Qt::Key_F5);
+    optimise->setToolTip(tr("Find the cutting conditions that hold every tolerance at least time or cost (F5)"));
+    connect(optimise, &QAction::triggered, this, [this, planning] {
+        planning->raise();
+        if (m_document->hasProject() && !m_planning->isRunning())
+            m_planning->optimise();
+    });
+    m_toolBar->addAction(fit);
+    m_toolBar->addSeparator();
+    m_toolBar->addActions({optimise, m_exportReportAction});
+    view->addSeparator();
+    view->addAction(m_toolBar->toggleViewAction());
     view->addAction(setup->toggleViewAction());
     view->addAction(feature->toggleViewAction());
     view->addAction(dock->toggleViewAction());
@@ -180,10 +216,10 @@ void MainWindow::createDocks()
 void MainWindow::createFileMenu()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *newProject = file->addAction(QIcon::fromTheme(QStringLiteral("document-new")), tr("&New"));
+    QAction *newProject = file->addAction(actionIcon("document-new"), tr("&New"));
     newProject->setShortcut(QKeySequence::New);
     connect(newProject, &QAction::triggered, m_files, [this] { m_files->newProject(); });
-    QAction *open = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"));
+    QAction *open = file->addAction(actionIcon("document-open"), tr("&Open…"));
     open->setShortcut(QKeySequence::Open);
     connect(open, &QAction::triggered, m_files, [this] { m_files->open(); });
 
@@ -195,17 +231,18 @@ void MainWindow::createFileMenu()
     }
     file->addSeparator();
 
-    m_saveAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save"));
+    m_saveAction = file->addAction(actionIcon("document-save"), tr("&Save"));
     m_saveAction->setShortcut(QKeySequence::Save);
     connect(m_saveAction, &QAction::triggered, m_files, [this] { m_files->save(); });
-    m_saveAsAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save-as")), tr("Save &As…"));
+    m_saveAsAction = file->addAction(tr("Save &As…"));
     m_saveAsAction->setShortcut(QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, m_files, [this] { m_files->saveAs(); });
-    m_exportReportAction =
-        file->addAction(QIcon::fromTheme(QStringLiteral("x-office-document")), tr("Export &Report…"));
+    m_exportReportAction = file->addAction(actionIcon("export-report"), tr("Export &Report…"));
     m_exportReportAction->setShortcut(Qt::CTRL | Qt::Key_P);
     m_exportReportAction->setObjectName(QStringLiteral("exportReportAction"));
     connect(m_exportReportAction, &QAction::triggered, m_files, [this] { m_files->exportReport(); });
+    m_toolBar->addActions({newProject, open, m_saveAction});
+    m_toolBar->addSeparator();
     QAction *closeAction = file->addAction(tr("&Close"));
     closeAction->setShortcut(QKeySequence::Close);
     connect(closeAction, &QAction::triggered, m_files, [this] { m_files->close(); });

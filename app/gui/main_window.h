@@ -7,6 +7,7 @@
 
 class QLabel;
 class QMenu;
+class QToolBar;
 
 namespace tolturn {
 
@@ -91,6 +92,7 @@ private:
     FeaturePanel *m_feature;
     Autosave *m_autosave;
     QMenu *m_recentMenu = nullptr;
+    QToolBar *m_toolBar = nullptr;
     QLabel *m_summary;
     QAction *m_saveAction = nullptr;
     QAction *m_exportReportAction = nullptr;

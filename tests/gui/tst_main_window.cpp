@@ -30,6 +30,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
 
 using namespace tolturn;
 
@@ -288,6 +289,32 @@ private Q_SLOTS:
         QVERIFY(!QFileInfo::exists(pdf));
         QCOMPARE(prompts.reported, (std::vector<double>{0.2, 0.4}));
         QVERIFY(messages.last().constFirst().toString().contains(QStringLiteral("cancelled")));
+    }
+
+    // The toolbar's icons are TolTurn's SVGs, drawn sharp at twice the size (High-DPI).
+    void toolbarIconsAreScalable()
+    {
+        MainWindow w;
+        auto *toolBar = w.findChild<QToolBar *>(QStringLiteral("mainToolBar"));
+        QVERIFY(toolBar);
+        int icons = 0;
+        const QList<QAction *> actions = toolBar->actions();
+        for (const QAction *action : actions) {
+            if (action->isSeparator())
+                continue;
+            const QImage image = action->icon().pixmap(QSize(48, 48)).toImage();
+            QVERIFY2(!image.isNull() && image.width() == 48, qPrintable(action->text()));
+            // Not blank: an SVG that failed to load would give a transparent or empty image.
+            bool drawn = false;
+            for (int y = 0; y < image.height() && !drawn; ++y)
+                for (int x = 0; x < image.width() && !drawn; ++x)
+                    drawn = qAlpha(image.pixel(x, y)) > 0;
+            QVERIFY2(drawn, qPrintable(action->text()));
+            ++icons;
+        }
+        QVERIFY(icons >= 8);
+        QVERIFY(w.findChild<QAction *>(QStringLiteral("optimiseAction")) != nullptr);
+        QVERIFY(w.findChild<QAction *>(QStringLiteral("fitPartAction")) != nullptr);
     }
 
     void bundledExamplesAllOpen()
