@@ -1686,6 +1686,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>TableCopy</name>
+    <message>
+        <source>Copy Table as CSV</source>
+        <translation>Tabelle als CSV kopieren</translation>
+    </message>
+</context>
+<context>
     <name>ToleranceVerdicts</name>
     <message>
         <source>feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported length), so no deviation is predicted for it</source>

@@ -1686,6 +1686,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>TableCopy</name>
+    <message>
+        <source>Copy Table as CSV</source>
+        <translation>Copiar tabla como CSV</translation>
+    </message>
+</context>
+<context>
     <name>ToleranceVerdicts</name>
     <message>
         <source>feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported length), so no deviation is predicted for it</source>

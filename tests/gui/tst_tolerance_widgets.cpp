@@ -2,6 +2,7 @@
 // Tolerances in the desktop program, offscreen: the verdict model, undoable edits that change the
 // verdicts, the tolerance dialog's live ISO 286 limits and its refusals, feature selection.
 #include "app/gui/main_window.h"
+#include "core/common/csv.h"
 #include "core/io/project_file.h"
 #include "widgets/document/project_document.h"
 #include "widgets/profile/profile_scene.h"
@@ -11,10 +12,14 @@
 #include "widgets/tolerances/tolerance_verdict_model.h"
 
 #include <QAbstractItemModelTester>
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTableView>
 #include <QTest>
 #include <QUndoStack>
 
@@ -46,6 +51,28 @@ private Q_SLOTS:
     {
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("TolTurnTest"));
+    }
+
+    // The verdict table goes to the clipboard as CSV: headers with units, one line per tolerance,
+    // fields with commas quoted (RFC 4180).
+    void verdictTableCopiesAsCsv()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        QAction *copy = nullptr;
+        const QList<QAction *> actions = w.tolerancePanel()->table()->actions();
+        for (QAction *a : actions)
+            copy = a->shortcut() == QKeySequence(QKeySequence::Copy) ? a : copy;
+        if (copy == nullptr)
+            QFAIL("the table has no Copy action");
+        copy->trigger();
+        const QStringList lines = QApplication::clipboard()->text().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + 8); // the example's eight tolerances
+        QCOMPARE(lines.constFirst(), QString::fromUtf8("ID,Characteristic,Feature,Specification,Predicted [µm],"
+                                                       "Limit [µm],Utilisation,Verdict"));
+        QVERIFY(lines.at(1).startsWith(QStringLiteral("T1,diameter,O4,h6,")));
+        QCOMPARE(csvField(QStringLiteral("8 µm | A")), QString::fromUtf8("8 µm | A"));
+        QCOMPARE(csvField(QStringLiteral("a,\"b\"")), QStringLiteral("\"a,\"\"b\"\"\""));
     }
 
     void verdictModelIsAProperModel()

@@ -2,6 +2,7 @@
 #include "widgets/planning/planning_panel.h"
 
 #include "core/project/keywords.h"
+#include "widgets/common/table_copy.h"
 #include "widgets/document/project_document.h"
 #include "widgets/plot/map_plot.h"
 
@@ -59,6 +60,7 @@ void setupTable(QTableWidget *table, const QStringList &headers)
     table->verticalHeader()->hide();
     table->horizontalHeader()->setStretchLastSection(true);
     table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    addCopyAsCsv(*table);
 }
 
 QString number(double v, int decimals)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/plot/line_plot.h"
 
+#include "core/common/csv.h"
 #include "widgets/plot/plot_backend.h"
 
 #include <QToolTip>
@@ -94,13 +95,6 @@ QString LinePlot::curveName(int index) const
 }
 
 namespace {
-
-QString csvField(const QString &text)
-{
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')))
-        return text;
-    return QLatin1Char('"') + QString(text).replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
-}
 
 QString csvNumber(double v)
 {

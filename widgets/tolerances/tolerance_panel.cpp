@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/tolerances/tolerance_panel.h"
 
+#include "widgets/common/table_copy.h"
 #include "widgets/document/project_document.h"
 #include "widgets/tolerances/tolerance_dialog.h"
 #include "widgets/tolerances/tolerance_verdict_model.h"
@@ -30,6 +31,7 @@ TolerancePanel::TolerancePanel(ProjectDocument &document, QWidget *parent)
     m_table->setModel(m_model);
     m_table->setItemDelegateForColumn(ToleranceVerdictModel::Utilisation, new UtilisationDelegate(m_table));
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    addCopyAsCsv(*m_table);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
