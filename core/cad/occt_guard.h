@@ -4,15 +4,31 @@
 // IGES), so every use of a reader or a writer holds this lock.
 #pragma once
 
+#include <Message_Gravity.hxx>
 #include <Message_ProgressIndicator.hxx>
 #include <Message_ProgressScope.hxx>
 #include <atomic>
 #include <functional>
 #include <mutex>
+#include <vector>
 
 namespace tolturn::cad {
 
 [[nodiscard]] std::mutex &occtMutex();
+
+// While alive (and while the lock is held), OpenCascade's default messenger prints failures only:
+// its readers and writers print transfer statistics to standard output, which would mix with
+// the CLI's results (JSON). The previous trace levels are restored afterwards.
+class QuietMessages {
+public:
+    QuietMessages();
+    ~QuietMessages();
+    QuietMessages(const QuietMessages &) = delete;
+    QuietMessages &operator=(const QuietMessages &) = delete;
+
+private:
+    std::vector<Message_Gravity> m_levels;
+};
 
 // Passes OpenCascade's progress (Message_ProgressRange, 7.5 and later) on to a callback that maps
 // it into [from, to] of the whole import and may ask to stop.

@@ -93,6 +93,7 @@ TopoDS_Shape revolvedSolid(const PartProfile &profile)
 bool writeStep(const TopoDS_Shape &shape, const QString &file)
 {
     const std::lock_guard lock(cad::occtMutex());
+    const cad::QuietMessages quiet;
     STEPControl_Writer writer;
     Interface_Static::SetCVal("write.step.unit", "MM");
     if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)

@@ -122,6 +122,7 @@ QString checkFile(const QString &path, CadFormat format)
 TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOptions &options, CadImportResult &result)
 {
     const std::lock_guard lock(cad::occtMutex());
+    const cad::QuietMessages quiet;
     STEPControl_Reader step;
     IGESControl_Reader iges;
     XSControl_Reader &reader = format == CadFormat::Step ? static_cast<XSControl_Reader &>(step) : iges;
