@@ -13,6 +13,7 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
@@ -21,6 +22,7 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
@@ -109,6 +111,27 @@ PartProfile expectedTube()
         {seg(K::Cylinder, {0, 15}, {10, 15})});
 }
 
+// Part D: a bolt blank with a blind bore Ø16 from the right end, 20 deep, ending in a 90° drill
+// point (a 45° cone, 11.3 mm long: a cone, not a chamfer).
+const std::vector<ProfilePoint> kBlindSection = {{0, 0}, {0, 15}, {50, 15}, {50, 8}, {30, 8}, {22, 0}};
+
+PartProfile expectedBlind()
+{
+    using K = SegmentKind;
+    return profileOf(
+        {seg(K::Face, {0, 0}, {0, 15}), seg(K::Cylinder, {0, 15}, {50, 15}), seg(K::Face, {50, 15}, {50, 8})},
+        {seg(K::Cone, {22, 0}, {30, 8}), seg(K::Cylinder, {30, 8}, {50, 8})});
+}
+
+// Part E: a pin Ø20, 40 long, with a hemispherical end (a sphere fused on): an arc R10 centred
+// on the axis.
+PartProfile expectedBall()
+{
+    using K = SegmentKind;
+    return profileOf({seg(K::Face, {0, 0}, {0, 10}), seg(K::Cylinder, {0, 10}, {40, 10}),
+                      seg(K::Radius, {40, 10}, {50, 0}, 10.0, ArcDirection::Clockwise)});
+}
+
 // The half-section lies in the XZ plane: z along Z, r along X.
 gp_Pnt at(const ProfilePoint &p)
 {
@@ -181,6 +204,13 @@ TopoDS_Shape pinPart()
     s = fillet(s, 30, 10, 1.0);
     s = fillet(s, 60, 10, 3.0);
     return chamfer(s, 0, 15, 1.5);
+}
+
+TopoDS_Shape ballPart()
+{
+    const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+    const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(axis, 10.0, 40.0).Shape();
+    return BRepAlgoAPI_Fuse(cylinder, BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 40), 10.0).Shape()).Shape();
 }
 
 TopoDS_Shape moved(const TopoDS_Shape &shape, const gp_Vec &by)
@@ -388,6 +418,30 @@ private Q_SLOTS:
         QCOMPARE(r.profile->name, part);
     }
 
+    void importsBoresAndSpheres_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<PartProfile>("want");
+        QTest::newRow("blind bore from the right") << QStringLiteral("blind") << expectedBlind();
+        QTest::newRow("ball end") << QStringLiteral("ball") << expectedBall();
+    }
+
+    void importsBoresAndSpheres()
+    {
+        QFETCH(QString, name);
+        QFETCH(PartProfile, want);
+        const QString path = m_dir.filePath(name + QStringLiteral(".step"));
+        writeStep(name == QLatin1String("ball") ? ballPart() : revolve(kBlindSection), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        compareProfiles(*r.profile, want);
+        CadImportOptions options;
+        options.flip = true;
+        const CadImportResult f = importCadFile(path, options);
+        QVERIFY2(f.profile && hasNoErrors(f), qPrintable(errorsOf(f)));
+        compareProfiles(*f.profile, flipped(want));
+    }
+
     void leavesOutFeaturesWithWarnings_data()
     {
         QTest::addColumn<QString>("suffix");
@@ -403,6 +457,11 @@ private Q_SLOTS:
         const CadImportResult r = importCadFile(path);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
         compareProfiles(*r.profile, expectedShaft());
+        // Two axes: the part's (Z) and the cross hole's (Y), the part's first by revolved area.
+        QCOMPARE(r.axes.size(), std::size_t{2});
+        QCOMPARE(r.chosenAxis, 0);
+        QCOMPARE(std::abs(r.axes[0].direction[2]), 1.0);
+        QCOMPARE(std::abs(r.axes[1].direction[1]), 1.0);
         // Keyway: its sides and bottom are planes along the axis, its end walls parts of faces.
         QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 10, 30, kMicrometre_mm), qPrintable(errorsOf(r)));
         QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 10, 10, kMicrometre_mm), qPrintable(errorsOf(r)));
