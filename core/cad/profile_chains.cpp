@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace tolturn::cad {
 
@@ -291,28 +292,81 @@ void markUsed(const Walk &w, std::vector<bool> &used)
         used[static_cast<std::size_t>(s.piece)] = true;
 }
 
-// The bores: the chain from the left end that does not reach the right end, and the one from the
-// right end back to the axis. A TolTurn profile has one inner contour, so a second blind bore
-// (from the right when there is one from the left) is reported and left out.
-std::vector<Step> innerChain(const Graph &g, int left, int right, const std::vector<Walk> &fromLeft,
-                             std::vector<bool> &used, bool &reversed)
+// The bore chains: from the left end to the right end (a through bore), or from either end to
+// the axis (blind bores, centre holes).
+struct Bores {
+    std::optional<Walk> through;
+    std::optional<Walk> left;
+    std::optional<Walk> right; // walked from the right end towards the axis
+};
+
+Bores findBores(const Graph &g, int left, int right, const std::vector<Walk> &fromLeft, const std::vector<bool> &used)
 {
-    reversed = false;
+    Bores b;
     for (const Walk &w : fromLeft) {
-        if (!used[static_cast<std::size_t>(w.steps.front().piece)]) {
-            markUsed(w, used);
-            return w.steps;
-        }
+        if (used[static_cast<std::size_t>(w.steps.front().piece)])
+            continue;
+        if (w.endVertex == right)
+            b.through = w;
+        else
+            b.left = w;
     }
+    if (b.through)
+        return b;
     for (const int p : g.incident[static_cast<std::size_t>(right)]) {
-        if (!used[static_cast<std::size_t>(p)]) {
-            const Walk w = walkChain(g, right, p, left);
-            markUsed(w, used);
-            reversed = true;
-            return w.steps;
-        }
+        if (!used[static_cast<std::size_t>(p)])
+            b.right = walkChain(g, right, p, left);
     }
-    return {};
+    return b;
+}
+
+double depthOf(const Graph &g, const Walk &w, int start)
+{
+    return std::abs(g.vertices[static_cast<std::size_t>(w.endVertex)].z_mm -
+                    g.vertices[static_cast<std::size_t>(start)].z_mm);
+}
+
+// A TolTurn profile has one inner contour. With blind bores at both ends (a bore and a centre
+// hole, or two centre holes) the deeper one is kept; the other end face is drawn closed to the
+// axis, and a warning says so.
+void closeEndFace(std::vector<Segment> &outer, bool atRight)
+{
+    Segment &end = atRight ? outer.back() : outer.front();
+    ProfilePoint &onAxisSide = atRight ? end.to : end.from;
+    if (end.kind == SegmentKind::Face) {
+        onAxisSide.r_mm = 0.0;
+        return;
+    }
+    Segment face;
+    face.kind = SegmentKind::Face;
+    if (atRight) {
+        face.from = end.to;
+        face.to = {end.to.z_mm, 0.0};
+        outer.push_back(face);
+    } else {
+        face.from = {end.from.z_mm, 0.0};
+        face.to = end.from;
+        outer.insert(outer.begin(), face);
+    }
+}
+
+Diagnostic droppedBoreWarning(const Graph &g, const std::vector<SectionPiece> &pieces, const Walk &w, int start,
+                              bool atRight)
+{
+    const SectionPiece &first = pieces[static_cast<std::size_t>(w.steps.front().piece)];
+    const int face = first.faces.empty() ? 0 : first.faces.front();
+    const double z0 = g.vertices[static_cast<std::size_t>(start)].z_mm;
+    const double z1 = g.vertices[static_cast<std::size_t>(w.endVertex)].z_mm;
+    return makeWarning(
+        QStringLiteral("step.face[%1]").arg(face),
+        (atRight ? ProfileChains::tr("the bore at the right end, from z = %1 mm to z = %2 mm (face %3 and the "
+                                     "faces after it), is left out: a profile has one inner contour and the deeper "
+                                     "bore at the left end is kept; the right end face is closed to the axis")
+                 : ProfileChains::tr("the bore at the left end, from z = %1 mm to z = %2 mm (face %3 and the faces "
+                                     "after it), is left out: a profile has one inner contour and the deeper bore "
+                                     "at the right end is kept; the left end face is closed to the axis"))
+            .arg(num(std::min(z0, z1)), num(std::max(z0, z1)))
+            .arg(face));
 }
 
 void reportLeftOver(const std::vector<SectionPiece> &pieces, const std::vector<bool> &used, Diagnostics &out)
@@ -407,11 +461,25 @@ ContourBuild buildContours(const std::vector<SectionPiece> &pieces, double chamf
         return out;
     }
     markUsed(*outer, used);
-    out.outer = finishContour(toSegments(g, pieces, outer->steps), ContourSide::Outer, chamferMaxLength_mm);
-    bool reversed = false;
-    std::vector<Segment> inner = toSegments(g, pieces, innerChain(g, left, right, fromLeft, used, reversed));
-    if (reversed)
-        reverseChain(inner);
+    std::vector<Segment> outerSegments = toSegments(g, pieces, outer->steps);
+    Bores bores = findBores(g, left, right, fromLeft, used);
+    if (bores.left && bores.right) {
+        const bool keepLeft = depthOf(g, *bores.left, left) >= depthOf(g, *bores.right, right);
+        const Walk &dropped = keepLeft ? *bores.right : *bores.left;
+        markUsed(dropped, used);
+        out.diagnostics.push_back(droppedBoreWarning(g, pieces, dropped, keepLeft ? right : left, keepLeft));
+        closeEndFace(outerSegments, keepLeft);
+        (keepLeft ? bores.right : bores.left).reset();
+    }
+    std::vector<Segment> inner;
+    const std::optional<Walk> *kept = bores.through ? &bores.through : (bores.left ? &bores.left : &bores.right);
+    if (kept->has_value()) {
+        markUsed(**kept, used);
+        inner = toSegments(g, pieces, (*kept)->steps);
+        if (kept == &bores.right)
+            reverseChain(inner); // walked from the right end: contours run left to right
+    }
+    out.outer = finishContour(std::move(outerSegments), ContourSide::Outer, chamferMaxLength_mm);
     if (!inner.empty())
         out.inner = finishContour(std::move(inner), ContourSide::Inner, chamferMaxLength_mm);
     reportLeftOver(pieces, used, out.diagnostics);

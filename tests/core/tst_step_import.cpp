@@ -123,6 +123,19 @@ PartProfile expectedBlind()
         {seg(K::Cone, {22, 0}, {30, 8}), seg(K::Cylinder, {30, 8}, {50, 8})});
 }
 
+// Part F: a shaft Ø30 x 100 with a 90° centre hole 3 mm deep at the left end and a bore Ø8, 20
+// deep with a 90° drill point, at the right. One inner contour: the deeper right bore is kept,
+// the centre hole left out with a warning and the left end face closed to the axis.
+const std::vector<ProfilePoint> kCentredSection = {{3, 0}, {0, 3}, {0, 15}, {100, 15}, {100, 4}, {80, 4}, {76, 0}};
+
+PartProfile expectedCentred()
+{
+    using K = SegmentKind;
+    return profileOf(
+        {seg(K::Face, {0, 0}, {0, 15}), seg(K::Cylinder, {0, 15}, {100, 15}), seg(K::Face, {100, 15}, {100, 4})},
+        {seg(K::Cone, {76, 0}, {80, 4}), seg(K::Cylinder, {80, 4}, {100, 4})});
+}
+
 // Part E: a pin Ø20, 40 long, with a hemispherical end (a sphere fused on): an arc R10 centred
 // on the axis.
 PartProfile expectedBall()
@@ -424,6 +437,7 @@ private Q_SLOTS:
         QTest::addColumn<PartProfile>("want");
         QTest::newRow("blind bore from the right") << QStringLiteral("blind") << expectedBlind();
         QTest::newRow("ball end") << QStringLiteral("ball") << expectedBall();
+        QTest::newRow("centre hole and bore") << QStringLiteral("centred") << expectedCentred();
     }
 
     void importsBoresAndSpheres()
@@ -431,10 +445,15 @@ private Q_SLOTS:
         QFETCH(QString, name);
         QFETCH(PartProfile, want);
         const QString path = m_dir.filePath(name + QStringLiteral(".step"));
-        writeStep(name == QLatin1String("ball") ? ballPart() : revolve(kBlindSection), path);
+        const bool centred = name == QLatin1String("centred");
+        writeStep(name == QLatin1String("ball") ? ballPart() : revolve(centred ? kCentredSection : kBlindSection),
+                  path);
         const CadImportResult r = importCadFile(path);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
         compareProfiles(*r.profile, want);
+        if (centred)
+            QVERIFY2(errorsOf(r).contains(QStringLiteral("the bore at the left end, from z = 0 mm to z = 3 mm")),
+                     qPrintable(errorsOf(r)));
         CadImportOptions options;
         options.flip = true;
         const CadImportResult f = importCadFile(path, options);
