@@ -397,6 +397,26 @@ std::pair<double, double> zExtent(const std::vector<SectionPiece> &pieces)
     return {lo, hi};
 }
 
+// Where the section breaks: the end of the longest chain from the left end (the place to look
+// for the face that is missing or not turned).
+Diagnostic brokenSectionError(const Graph &g, const std::vector<Walk> &fromLeft, int left, double zLeft, double zRight)
+{
+    int stop = left;
+    std::size_t longest = 0;
+    for (const Walk &w : fromLeft) {
+        if (w.steps.size() > longest) {
+            longest = w.steps.size();
+            stop = w.endVertex;
+        }
+    }
+    const ProfilePoint &p = g.vertices[static_cast<std::size_t>(stop)];
+    return makeError(QStringLiteral("step"),
+                     ProfileChains::tr("the revolved faces do not form a closed section from the left end (z = %1 mm) "
+                                       "to the right end (z = %2 mm): the contour from the left end stops at z = %3 "
+                                       "mm, r = %4 mm, where a face is missing or not turned (see the warnings)")
+                         .arg(num(zLeft), num(zRight), num(p.z_mm), num(p.r_mm)));
+}
+
 } // namespace
 
 double revolvedArea_mm2(const SectionPiece &piece)
@@ -453,11 +473,7 @@ ContourBuild buildContours(const std::vector<SectionPiece> &pieces, double chamf
     }
     std::vector<bool> used(pieces.size(), false);
     if (outer == nullptr) {
-        out.diagnostics.push_back(makeError(
-            QStringLiteral("step"),
-            ProfileChains::tr("the revolved faces do not form a closed section from the left end (z = %1 mm) to "
-                              "the right end (z = %2 mm): a revolved face is missing or not recognised")
-                .arg(num(zLeft), num(zRight))));
+        out.diagnostics.push_back(brokenSectionError(g, fromLeft, left, zLeft, zRight));
         return out;
     }
     markUsed(*outer, used);

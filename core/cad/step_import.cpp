@@ -73,7 +73,9 @@ std::optional<CadFormat> formatOf(const QString &path)
 // "END-ISO-10303-21;". A file cut short (an interrupted download or copy) lacks the end.
 QString checkStepText(const QString &path, const QByteArray &head, const QByteArray &tail)
 {
-    if (!head.trimmed().startsWith("ISO-10303-21;"))
+    // Some editors save the file with a UTF-8 byte order mark, which the standard does not have.
+    const QByteArray start = head.startsWith("\xEF\xBB\xBF") ? head.mid(3) : head;
+    if (!start.trimmed().startsWith("ISO-10303-21;"))
         return StepImport::tr("'%1' is not a STEP file: it does not begin with 'ISO-10303-21;' (ISO 10303-21)")
             .arg(path);
     if (!tail.trimmed().endsWith("END-ISO-10303-21;"))

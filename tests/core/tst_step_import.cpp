@@ -21,6 +21,7 @@
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
@@ -224,6 +225,22 @@ TopoDS_Shape ballPart()
     const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
     const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(axis, 10.0, 40.0).Shape();
     return BRepAlgoAPI_Fuse(cylinder, BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 40), 10.0).Shape()).Shape();
+}
+
+// A pin Ø20 x 30 with a hexagon 24 across flats from z = 30 to 40: not turned all round.
+TopoDS_Shape hexPart()
+{
+    BRepBuilderAPI_MakePolygon hexagon;
+    const double corner = 12.0 / std::cos(std::numbers::pi / 6.0);
+    for (int i = 0; i < 6; ++i) {
+        const double a = i * std::numbers::pi / 3.0;
+        hexagon.Add(gp_Pnt(corner * std::cos(a), corner * std::sin(a), 30.0));
+    }
+    hexagon.Close();
+    const TopoDS_Face base = BRepBuilderAPI_MakeFace(hexagon.Wire(), Standard_True);
+    const TopoDS_Shape prism = BRepPrimAPI_MakePrism(base, gp_Vec(0, 0, 10)).Shape();
+    const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+    return BRepAlgoAPI_Fuse(BRepPrimAPI_MakeCylinder(axis, 10.0, 30.0).Shape(), prism).Shape();
 }
 
 TopoDS_Shape moved(const TopoDS_Shape &shape, const gp_Vec &by)
@@ -612,6 +629,17 @@ private Q_SLOTS:
         QVERIFY(file.resize(file.size() / 2));
         file.close();
         expectNamedError(importCadFile(path), name, QStringLiteral("truncated"));
+    }
+
+    void sectionNotTurnedAllRoundIsAnError()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("hex.step"));
+        writeStep(hexPart(), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY(!r.profile);
+        // The six flats are warnings; the error says where the turned contour stops.
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("flat"), 30, 40, kMicrometre_mm), qPrintable(errorsOf(r)));
+        QVERIFY2(errorsOf(r).contains(QStringLiteral("stops at z = 30 mm, r = 13.856")), qPrintable(errorsOf(r)));
     }
 
     void reportsProgressAndCancels()
