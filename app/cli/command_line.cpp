@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/command_line.h"
 
+#include "app/cli/import_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -1058,6 +1059,8 @@ const std::vector<Command> &commands()
              "The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, "
              "clamping ranking, compensation, assumptions and sources."),
          runReport},
+        {QStringLiteral("import"), importSynopsis(), importSummary(), runImport},
+        {QStringLiteral("export-step"), exportStepSynopsis(), exportStepSummary(), runExportStep},
     };
     return list;
 }

@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/import_command.h"
+
+#include "app/cli/command_line.h"
+#include "core/cad/step_export.h"
+#include "core/cad/step_import.h"
+#include "core/io/project_file.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTextStream>
+
+#include <algorithm>
+
+namespace tolturn {
+
+namespace {
+
+struct ImportCommand {
+    Q_DECLARE_TR_FUNCTIONS(ImportCommand)
+};
+
+// What an imported part gets besides its profile: the starting values of File > New in the
+// desktop program (app/gui/file_controller.cpp), so that the project is valid and ready to
+// tolerance; the planner then sets the real material, machine and tool.
+constexpr const char *kDefaultMaterial = "C45E-N";
+constexpr const char *kDefaultMachine = "haas-st-20";
+constexpr double kDefaultClampedLength_mm = 30.0;
+constexpr double kDefaultSpeed_m_min = 200.0;
+constexpr double kDefaultFeed_mm_rev = 0.2;
+constexpr double kDefaultDepth_mm = 0.5;
+
+QString programName()
+{
+    return QStringLiteral("tolturn-cli");
+}
+
+// --help and parse errors; -1 to go on, otherwise the exit code.
+int parse(QCommandLineParser &parser, const QString &synopsis, const QStringList &args, QTextStream &out,
+          QTextStream &err)
+{
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, ImportCommand::tr("Show this help."));
+    parser.addOption(help);
+    if (!parser.parse(args)) {
+        err << args.value(0) << ": " << parser.errorText() << '\n';
+        return kExitUsage;
+    }
+    if (parser.isSet(help)) {
+        out << ImportCommand::tr("Usage: %1 %2").arg(programName(), synopsis) << "\n\n"
+            << parser.helpText().section(QLatin1Char('\n'), 2);
+        return kExitOk;
+    }
+    return -1;
+}
+
+std::optional<int> indexOption(const QCommandLineParser &parser, const QCommandLineOption &option, QTextStream &err)
+{
+    if (!parser.isSet(option))
+        return -1;
+    bool ok = false;
+    const int value = parser.value(option).toInt(&ok);
+    if (ok && value >= 0)
+        return value;
+    err << programName() << " import: "
+        << ImportCommand::tr("--%1 takes a number from 0, not '%2'")
+               .arg(option.names().constFirst(), parser.value(option))
+        << '\n';
+    return std::nullopt;
+}
+
+Project projectFor(const PartProfile &part, const QString &material, const QString &machine)
+{
+    Project p;
+    p.part = part;
+    p.materialId = material;
+    p.machineId = machine;
+    p.tool.insertCode = QStringLiteral("CNMG 120408");
+    p.tool.holderCode = QStringLiteral("PCLNR 2525M12");
+    // 30 mm in the jaws, or a third of a part shorter than 90 mm: something must stick out.
+    p.clamping = {ClampingMethod::Chuck, std::min(kDefaultClampedLength_mm, part.length_mm() / 3.0)};
+    p.passes = {{PassKind::Finishing, kDefaultSpeed_m_min, kDefaultFeed_mm_rev, kDefaultDepth_mm}};
+    return p;
+}
+
+QJsonObject diagnosticJson(const Diagnostic &d)
+{
+    return {{QStringLiteral("severity"),
+             d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning")},
+            {QStringLiteral("field"), d.field},
+            {QStringLiteral("message"), d.message}};
+}
+
+QJsonArray vectorJson(const double (&v)[3])
+{
+    return {v[0], v[1], v[2]};
+}
+
+QJsonObject importJson(const QString &file, const QString &output, const CadImportResult &r, bool written)
+{
+    QJsonArray solids;
+    for (const CadSolidInfo &s : r.solids)
+        solids.append(
+            QJsonObject{{QStringLiteral("volume_mm3"), s.volume_mm3}, {QStringLiteral("faces"), s.faceCount}});
+    QJsonArray axes;
+    for (const CadAxisInfo &a : r.axes)
+        axes.append(QJsonObject{{QStringLiteral("origin_mm"), vectorJson(a.origin_mm)},
+                                {QStringLiteral("direction"), vectorJson(a.direction)},
+                                {QStringLiteral("revolved_area_mm2"), a.revolvedArea_mm2},
+                                {QStringLiteral("faces"), a.faceCount}});
+    QJsonArray diagnostics;
+    for (const Diagnostic &d : r.diagnostics)
+        diagnostics.append(diagnosticJson(d));
+    return {{QStringLiteral("file"), file},
+            {QStringLiteral("output"), output},
+            {QStringLiteral("written"), written},
+            {QStringLiteral("solids"), solids},
+            {QStringLiteral("chosen_solid"), r.chosenSolid},
+            {QStringLiteral("axes"), axes},
+            {QStringLiteral("chosen_axis"), r.chosenAxis},
+            {QStringLiteral("diagnostics"), diagnostics}};
+}
+
+// Writes the project when the import gave a valid profile; the reason otherwise, empty on success.
+QString writeImported(const CadImportResult &r, const QString &output, const QString &material, const QString &machine)
+{
+    if (!r.profile || hasErrors(r.diagnostics))
+        return ImportCommand::tr("no project written: the import has errors");
+    const WriteResult written = writeProjectFile(output, projectFor(*r.profile, material, machine));
+    return written.ok ? QString() : written.error;
+}
+
+} // namespace
+
+QString importSynopsis()
+{
+    return QStringLiteral(
+        "import [--json] [--flip] [--solid N] [--axis N] [--material ID] [--machine ID] -o PROJECT FILE");
+}
+
+QString importSummary()
+{
+    return ImportCommand::tr(
+        "Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in "
+        "mm, z = 0 at the left end; features that are not turned (flats, keyways, cross holes) are listed as "
+        "warnings.");
+}
+
+int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), ImportCommand::tr("Print the result as JSON."));
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    ImportCommand::tr("The project file to write."), QStringLiteral("PROJECT"));
+    const QCommandLineOption flip(QStringLiteral("flip"),
+                                  ImportCommand::tr("Turn the part end for end (z = 0 at the other end)."));
+    const QCommandLineOption solid(QStringLiteral("solid"),
+                                   ImportCommand::tr("The body to import, from 0 (default: the largest)."),
+                                   QStringLiteral("N"));
+    const QCommandLineOption axis(QStringLiteral("axis"),
+                                  ImportCommand::tr("The axis to turn about, from 0 (default: most revolved area)."),
+                                  QStringLiteral("N"));
+    const QCommandLineOption material(
+        QStringLiteral("material"),
+        ImportCommand::tr("The work material's id (default: %1).").arg(QLatin1String(kDefaultMaterial)),
+        QStringLiteral("ID"), QLatin1String(kDefaultMaterial));
+    const QCommandLineOption machine(
+        QStringLiteral("machine"),
+        ImportCommand::tr("The machine's id (default: %1).").arg(QLatin1String(kDefaultMachine)), QStringLiteral("ID"),
+        QLatin1String(kDefaultMachine));
+    parser.addOptions({json, output, flip, solid, axis, material, machine});
+    parser.addPositionalArgument(QStringLiteral("file"), ImportCommand::tr("The STEP or IGES file."),
+                                 QStringLiteral("FILE"));
+    if (const int stop = parse(parser, importSynopsis(), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
+        err << programName() << " import: " << ImportCommand::tr("give one STEP or IGES file and -o PROJECT") << '\n';
+        return kExitUsage;
+    }
+    const auto solidIndex = indexOption(parser, solid, err);
+    const auto axisIndex = indexOption(parser, axis, err);
+    if (!solidIndex || !axisIndex)
+        return kExitUsage;
+    const QString file = parser.positionalArguments().constFirst();
+    CadImportOptions options;
+    options.flip = parser.isSet(flip);
+    options.solidIndex = *solidIndex;
+    options.axisIndex = *axisIndex;
+    const CadImportResult r = importCadFile(file, options);
+    const QString problem = writeImported(r, parser.value(output), parser.value(material), parser.value(machine));
+    if (parser.isSet(json)) {
+        out << QJsonDocument(importJson(file, parser.value(output), r, problem.isEmpty()))
+                   .toJson(QJsonDocument::Indented);
+    } else {
+        for (const Diagnostic &d : r.diagnostics)
+            err << file << ": " << d.toString() << '\n';
+        if (problem.isEmpty())
+            out << ImportCommand::tr("%1: written, part \"%2\", %3 mm long, %4 outer and %5 inner features, %6 "
+                                     "warnings")
+                       .arg(parser.value(output), r.profile->name)
+                       .arg(r.profile->length_mm())
+                       .arg(r.profile->outer.segments.size())
+                       .arg(r.profile->inner.segments.size())
+                       .arg(r.diagnostics.size())
+                << '\n';
+    }
+    if (!problem.isEmpty()) {
+        err << programName() << " import: " << problem << '\n';
+        return kExitProblems;
+    }
+    return kExitOk;
+}
+
+QString exportStepSynopsis()
+{
+    return QStringLiteral("export-step -o FILE.step PROJECT");
+}
+
+QString exportStepSummary()
+{
+    return ImportCommand::tr(
+        "Write the project's part as a solid of revolution to a STEP file in mm (AP214), for CAD and CAM.");
+}
+
+int runExportStep(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    ImportCommand::tr("The STEP file to write."), QStringLiteral("FILE.step"));
+    parser.addOption(output);
+    parser.addPositionalArgument(QStringLiteral("project"), ImportCommand::tr("The project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parse(parser, exportStepSynopsis(), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
+        err << programName() << " export-step: " << ImportCommand::tr("give one project file and -o FILE.step") << '\n';
+        return kExitUsage;
+    }
+    const QString file = parser.positionalArguments().constFirst();
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!read.project)
+        return kExitProblems;
+    const StepExportResult written = exportProfileToStep(read.project->part, parser.value(output));
+    if (!written.ok) {
+        err << programName() << " export-step: " << written.error << '\n';
+        return kExitProblems;
+    }
+    out << ImportCommand::tr("%1: written").arg(parser.value(output)) << '\n';
+    return kExitOk;
+}
+
+} // namespace tolturn

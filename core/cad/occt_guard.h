@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Private to core/cad: OpenCascade's data exchange keeps global state (Interface_Static
+// parameters such as the unit of the transferred shapes, the static controllers of STEP and
+// IGES), so every use of a reader or a writer holds this lock.
+#pragma once
+
+#include <Message_Gravity.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
+#include <atomic>
+#include <functional>
+#include <mutex>
+#include <vector>
+
+namespace tolturn::cad {
+
+[[nodiscard]] std::mutex &occtMutex();
+
+// While alive (and while the lock is held), OpenCascade's default messenger prints failures only:
+// its readers and writers print transfer statistics to standard output, which would mix with
+// the CLI's results (JSON). The previous trace levels are restored afterwards.
+class QuietMessages {
+public:
+    QuietMessages();
+    ~QuietMessages();
+    QuietMessages(const QuietMessages &) = delete;
+    QuietMessages &operator=(const QuietMessages &) = delete;
+
+private:
+    std::vector<Message_Gravity> m_levels;
+};
+
+// Passes OpenCascade's progress (Message_ProgressRange, 7.5 and later) on to a callback that maps
+// it into [from, to] of the whole import and may ask to stop.
+class ProgressBridge : public Message_ProgressIndicator {
+public:
+    ProgressBridge(std::function<bool(double)> callback, double from, double to)
+        : m_callback(std::move(callback))
+        , m_from(from)
+        , m_to(to)
+    {
+    }
+
+    Standard_Boolean UserBreak() override { return m_cancelled.load(); }
+
+    void Show(const Message_ProgressScope & /*scope*/, const Standard_Boolean /*force*/) override
+    {
+        if (m_callback && !m_callback(m_from + (m_to - m_from) * GetPosition()))
+            m_cancelled = true;
+    }
+
+    [[nodiscard]] bool cancelled() const { return m_cancelled.load(); }
+
+private:
+    std::function<bool(double)> m_callback;
+    double m_from;
+    double m_to;
+    std::atomic<bool> m_cancelled{false};
+};
+
+} // namespace tolturn::cad

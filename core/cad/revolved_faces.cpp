@@ -1,0 +1,436 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/cad/revolved_faces.h"
+
+#include <QCoreApplication>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepClass_FaceClassifier.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <algorithm>
+#include <cmath>
+#include <gp_Lin.hxx>
+
+namespace tolturn::cad {
+
+namespace {
+
+struct RevolvedFaces {
+    Q_DECLARE_TR_FUNCTIONS(RevolvedFaces)
+};
+
+// Two axes are the same when their directions differ by less than this and each passes within
+// kJoinTolerance_mm of the other's origin. OpenCascade's own angular confusion
+// (Precision::Angular) is 1e-12; files written by other systems round directions to ~1e-9.
+constexpr double kAngularTolerance_rad = 1e-6;
+
+// Points sampled along a curved edge to bound its extent. The extreme z of a face revolved about
+// the axis lies on its circular edges (constant z, any sample is exact); the samples only bound
+// the other edges (cuts of keyways and flats), whose z ranges are reported, not used.
+constexpr int kEdgeSamples = 16;
+
+// A revolved face that covers less than this fraction of the area its trace sweeps in a full
+// turn is not a turned surface but part of one (the end wall of a keyway, the bottom of a slot).
+constexpr double kMinRevolvedCoverage = 0.5;
+
+struct Frame {
+    gp_Ax1 axis;
+
+    [[nodiscard]] double z(const gp_Pnt &p) const { return gp_Vec(axis.Location(), p).Dot(gp_Vec(axis.Direction())); }
+
+    [[nodiscard]] double r(const gp_Pnt &p) const { return gp_Lin(axis).Distance(p); }
+};
+
+bool coaxial(const gp_Ax1 &a, const gp_Ax1 &b)
+{
+    return a.IsParallel(b, kAngularTolerance_rad) && gp_Lin(a).Distance(b.Location()) <= kJoinTolerance_mm;
+}
+
+// One representation per line: the direction with its largest component positive, the origin
+// the point of the line nearest the model origin. So a part modelled along +Z gets z = 0 at its
+// lowest Z end.
+gp_Ax1 canonical(const gp_Ax1 &a)
+{
+    gp_Dir d = a.Direction();
+    const double x = d.X();
+    const double y = d.Y();
+    const double z = d.Z();
+    const double largest = std::abs(x) >= std::abs(y) && std::abs(x) >= std::abs(z) ? x
+                           : std::abs(y) >= std::abs(z)                             ? y
+                                                                                    : z;
+    if (largest < 0.0)
+        d.Reverse();
+    const gp_Pnt o = a.Location();
+    const double t = gp_Vec(gp_Pnt(0, 0, 0), o).Dot(gp_Vec(d));
+    return {gp_Pnt(o.XYZ() - t * d.XYZ()), d};
+}
+
+std::optional<gp_Ax1> surfaceAxis(const BRepAdaptor_Surface &s)
+{
+    switch (s.GetType()) {
+    case GeomAbs_Cylinder:
+        return s.Cylinder().Axis();
+    case GeomAbs_Cone:
+        return s.Cone().Axis();
+    case GeomAbs_Torus:
+        return s.Torus().Axis();
+    default:
+        return std::nullopt; // a sphere is symmetric about every line through its centre
+    }
+}
+
+double faceArea(const TopoDS_Face &face)
+{
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(face, props);
+    return props.Mass();
+}
+
+struct Extent {
+    double zMin = HUGE_VAL;
+    double zMax = -HUGE_VAL;
+    double rMin = HUGE_VAL;
+    double rMax = -HUGE_VAL;
+
+    void add(const Frame &f, const gp_Pnt &p)
+    {
+        const double z = f.z(p);
+        const double r = f.r(p);
+        zMin = std::min(zMin, z);
+        zMax = std::max(zMax, z);
+        rMin = std::min(rMin, r);
+        rMax = std::max(rMax, r);
+    }
+};
+
+Extent faceExtent(const TopoDS_Face &face, const Frame &f)
+{
+    Extent e;
+    for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+        const TopoDS_Edge &edge = TopoDS::Edge(ex.Current());
+        if (BRep_Tool::Degenerated(edge))
+            continue; // the apex of a cone, the pole of a sphere: no 3-D curve
+        const BRepAdaptor_Curve c(edge);
+        const int n = c.GetType() == GeomAbs_Line ? 1 : kEdgeSamples;
+        for (int i = 0; i <= n; ++i)
+            e.add(f, c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * i / n));
+    }
+    return e;
+}
+
+SectionPiece line(ProfilePoint a, ProfilePoint b)
+{
+    SectionPiece p;
+    p.a = a;
+    p.b = b;
+    return p;
+}
+
+SectionPiece arc(ProfilePoint a, ProfilePoint b, ProfilePoint centre, double radius)
+{
+    SectionPiece p = line(a, b);
+    p.arc = true;
+    p.centre = centre;
+    p.radius_mm = radius;
+    return p;
+}
+
+// The point of the face in the middle of its parameter range, to tell which half of a circle
+// an arc of a torus lies on.
+gp_Pnt midPoint(const TopoDS_Face &face, const BRepAdaptor_Surface &s)
+{
+    double u0 = 0.0;
+    double u1 = 0.0;
+    double v0 = 0.0;
+    double v1 = 0.0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    return s.Value(0.5 * (u0 + u1), 0.5 * (v0 + v1));
+}
+
+class FaceTracer {
+public:
+    FaceTracer(const gp_Ax1 &axis, SectionTrace &out) : m_frame{axis}, m_out(out) {}
+
+    void trace(int index, const TopoDS_Face &face)
+    {
+        const BRepAdaptor_Surface s(face);
+        const Extent e = faceExtent(face, m_frame);
+        std::optional<SectionPiece> piece;
+        QString what;
+        switch (s.GetType()) {
+        case GeomAbs_Plane:
+            piece = plane(face, s, e, what);
+            break;
+        case GeomAbs_Cylinder:
+            piece = cylinder(s, e, what);
+            break;
+        case GeomAbs_Cone:
+            piece = cone(s, e, what);
+            break;
+        case GeomAbs_Torus:
+            piece = torus(face, s, e, what);
+            break;
+        case GeomAbs_Sphere:
+            piece = sphere(s, e, what);
+            break;
+        case GeomAbs_SurfaceOfRevolution:
+            piece = revolution(face, s, what);
+            break;
+        default:
+            what = otherSurface(s.GetType());
+            break;
+        }
+        if (piece) {
+            piece->faces.push_back(index);
+            piece->faceArea_mm2 = faceArea(face);
+            m_out.pieces.push_back(*piece);
+        } else {
+            m_out.leftOut.push_back({index, what, e.zMin, e.zMax});
+        }
+    }
+
+private:
+    // A plane is a turned face when its normal is the axis (the trace is a line at constant z);
+    // the face reaches the axis when the axis point of the plane lies inside it.
+    std::optional<SectionPiece> plane(const TopoDS_Face &face, const BRepAdaptor_Surface &s, const Extent &e,
+                                      QString &what) const
+    {
+        const gp_Pln pln = s.Plane();
+        if (!pln.Axis().IsParallel(m_frame.axis, kAngularTolerance_rad)) {
+            what = RevolvedFaces::tr("a plane not perpendicular to the axis (a flat or a side of a keyway)");
+            return std::nullopt;
+        }
+        const double z = m_frame.z(pln.Location());
+        const gp_Pnt onAxis(m_frame.axis.Location().XYZ() + z * m_frame.axis.Direction().XYZ());
+        const BRepClass_FaceClassifier classifier(face, onAxis, kJoinTolerance_mm);
+        const bool throughAxis = classifier.State() == TopAbs_IN || classifier.State() == TopAbs_ON;
+        return line({z, throughAxis ? 0.0 : e.rMin}, {z, e.rMax});
+    }
+
+    std::optional<SectionPiece> cylinder(const BRepAdaptor_Surface &s, const Extent &e, QString &what) const
+    {
+        const gp_Cylinder c = s.Cylinder();
+        if (!coaxial(c.Axis(), m_frame.axis)) {
+            what = c.Axis().IsParallel(m_frame.axis, kAngularTolerance_rad)
+                       ? RevolvedFaces::tr("a cylinder parallel to the axis but off it (an eccentric or an "
+                                           "off-centre hole)")
+                       : RevolvedFaces::tr("a cylinder across the axis (a cross hole)");
+            return std::nullopt;
+        }
+        const double r = c.Radius();
+        return line({e.zMin, r}, {e.zMax, r});
+    }
+
+    // gp_Cone: P(u, v) = O + (R + v sin a)(cos u X + sin u Y) + v cos a Z, so the radius grows by
+    // tan a per unit along the cone's own axis direction Z.
+    std::optional<SectionPiece> cone(const BRepAdaptor_Surface &s, const Extent &e, QString &what) const
+    {
+        const gp_Cone c = s.Cone();
+        if (!coaxial(c.Axis(), m_frame.axis)) {
+            what = RevolvedFaces::tr("a cone whose axis is not the part axis (a countersink of a cross hole)");
+            return std::nullopt;
+        }
+        const double z0 = m_frame.z(c.Location());
+        const double sense = c.Axis().Direction().Dot(m_frame.axis.Direction()) > 0.0 ? 1.0 : -1.0;
+        const auto radiusAt = [&](double z) {
+            return std::max(0.0, c.RefRadius() + sense * (z - z0) * std::tan(c.SemiAngle()));
+        };
+        return line({e.zMin, radiusAt(e.zMin)}, {e.zMax, radiusAt(e.zMax)});
+    }
+
+    // gp_Torus: the tube circle of minor radius rho is centred at the major radius R; its trace
+    // is an arc centred at (z of the torus centre, R). Its ends are at the face's z extremes,
+    // on the half of the circle the middle of the face lies on.
+    std::optional<SectionPiece> torus(const TopoDS_Face &face, const BRepAdaptor_Surface &s, const Extent &e,
+                                      QString &what) const
+    {
+        const gp_Torus t = s.Torus();
+        if (!coaxial(t.Axis(), m_frame.axis)) {
+            what = RevolvedFaces::tr("a torus whose axis is not the part axis");
+            return std::nullopt;
+        }
+        const ProfilePoint centre{m_frame.z(t.Location()), t.MajorRadius()};
+        const double rho = t.MinorRadius();
+        const double side = m_frame.r(midPoint(face, s)) >= centre.r_mm ? 1.0 : -1.0;
+        const auto at = [&](double z) {
+            const double dz = z - centre.z_mm;
+            return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
+        };
+        return arc(at(e.zMin), at(e.zMax), centre, rho);
+    }
+
+    // A sphere centred on the axis traces an arc centred on the axis (a ball end, a spherical
+    // seat); r >= 0 takes the upper half of its circle.
+    std::optional<SectionPiece> sphere(const BRepAdaptor_Surface &s, const Extent &e, QString &what) const
+    {
+        const gp_Sphere sp = s.Sphere();
+        if (m_frame.r(sp.Location()) > kJoinTolerance_mm) {
+            what = RevolvedFaces::tr("a sphere whose centre is off the axis");
+            return std::nullopt;
+        }
+        const ProfilePoint centre{m_frame.z(sp.Location()), 0.0};
+        const double radius = sp.Radius();
+        const auto at = [&](double z) {
+            const double dz = z - centre.z_mm;
+            return ProfilePoint{z, std::sqrt(std::max(0.0, radius * radius - dz * dz))};
+        };
+        return arc(at(e.zMin), at(e.zMax), centre, radius);
+    }
+
+    // A curve swept about an axis (what BRepPrimAPI_MakeRevol makes of a line or an arc): its
+    // meridian is the basis curve, traced at the middle angle of the face from the first to the
+    // last parameter of the curve. Lines and circles are turned; other curves are free-form.
+    std::optional<SectionPiece> revolution(const TopoDS_Face &face, const BRepAdaptor_Surface &s, QString &what) const
+    {
+        const GeomAbs_CurveType basis = s.BasisCurve()->GetType();
+        if (!coaxial(s.AxeOfRevolution(), m_frame.axis) || (basis != GeomAbs_Line && basis != GeomAbs_Circle)) {
+            what = otherSurface(GeomAbs_SurfaceOfRevolution);
+            return std::nullopt;
+        }
+        double u0 = 0.0;
+        double u1 = 0.0;
+        double v0 = 0.0;
+        double v1 = 0.0;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        const double u = 0.5 * (u0 + u1);
+        const auto at = [&](double v) {
+            const gp_Pnt p = s.Value(u, v);
+            return ProfilePoint{m_frame.z(p), m_frame.r(p)};
+        };
+        const ProfilePoint a = at(v0);
+        const ProfilePoint b = at(v1);
+        if (basis == GeomAbs_Line)
+            return line(a, b);
+        const auto circle = circleThrough(a, at(0.5 * (v0 + v1)), b);
+        if (!circle) {
+            what = otherSurface(GeomAbs_SurfaceOfRevolution);
+            return std::nullopt;
+        }
+        return arc(a, b, circle->first, circle->second);
+    }
+
+    // The circle through three points (centre, radius); nullopt when they are in a line.
+    static std::optional<std::pair<ProfilePoint, double>> circleThrough(const ProfilePoint &p, const ProfilePoint &q,
+                                                                        const ProfilePoint &w)
+    {
+        const double ax = q.z_mm - p.z_mm;
+        const double ay = q.r_mm - p.r_mm;
+        const double bx = w.z_mm - p.z_mm;
+        const double by = w.r_mm - p.r_mm;
+        const double d = 2.0 * (ax * by - ay * bx);
+        if (std::abs(d) <= kJoinTolerance_mm * kJoinTolerance_mm)
+            return std::nullopt;
+        const double a2 = ax * ax + ay * ay;
+        const double b2 = bx * bx + by * by;
+        const ProfilePoint centre{p.z_mm + (by * a2 - ay * b2) / d, p.r_mm + (ax * b2 - bx * a2) / d};
+        return std::pair{centre, std::hypot(p.z_mm - centre.z_mm, p.r_mm - centre.r_mm)};
+    }
+
+    static QString otherSurface(GeomAbs_SurfaceType type)
+    {
+        switch (type) {
+        case GeomAbs_BezierSurface:
+        case GeomAbs_BSplineSurface:
+            return RevolvedFaces::tr("a free-form (B-spline) surface, such as a modelled thread or an engraving");
+        case GeomAbs_SurfaceOfRevolution:
+            return RevolvedFaces::tr("a surface of revolution of a free-form curve");
+        case GeomAbs_SurfaceOfExtrusion:
+            return RevolvedFaces::tr("an extruded free-form surface");
+        default:
+            return RevolvedFaces::tr("a surface of a kind TolTurn does not turn (offset or other)");
+        }
+    }
+
+    Frame m_frame;
+    SectionTrace &m_out;
+};
+
+bool sameTrace(const SectionPiece &p, const SectionPiece &q)
+{
+    const auto near = [](const ProfilePoint &a, const ProfilePoint &b) {
+        return std::abs(a.z_mm - b.z_mm) <= kJoinTolerance_mm && std::abs(a.r_mm - b.r_mm) <= kJoinTolerance_mm;
+    };
+    return p.arc == q.arc && ((near(p.a, q.a) && near(p.b, q.b)) || (near(p.a, q.b) && near(p.b, q.a)));
+}
+
+// Several faces on one trace (a cylinder written as two half-cylinders) are one piece; a piece
+// whose faces cover too little of its revolution is a partial wall, reported instead.
+void mergeAndFilter(SectionTrace &trace)
+{
+    std::vector<SectionPiece> merged;
+    for (SectionPiece &p : trace.pieces) {
+        const auto same = std::find_if(merged.begin(), merged.end(), [&](const auto &m) { return sameTrace(m, p); });
+        if (same == merged.end()) {
+            merged.push_back(std::move(p));
+            continue;
+        }
+        same->faces.insert(same->faces.end(), p.faces.begin(), p.faces.end());
+        same->faceArea_mm2 += p.faceArea_mm2;
+    }
+    trace.pieces.clear();
+    for (SectionPiece &p : merged) {
+        const double length = std::hypot(p.b.z_mm - p.a.z_mm, p.b.r_mm - p.a.r_mm);
+        if (length <= kJoinTolerance_mm)
+            continue; // a sliver with no extent in the section
+        if (p.faceArea_mm2 >= kMinRevolvedCoverage * revolvedArea_mm2(p)) {
+            trace.pieces.push_back(std::move(p));
+            continue;
+        }
+        const QString what = RevolvedFaces::tr("a part of a turned surface that does not go round (the end wall of "
+                                               "a keyway or a slot)");
+        for (const int face : p.faces)
+            trace.leftOut.push_back({face, what, std::min(p.a.z_mm, p.b.z_mm), std::max(p.a.z_mm, p.b.z_mm)});
+    }
+}
+
+} // namespace
+
+std::vector<AxisCandidate> findAxes(const TopoDS_Shape &body)
+{
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(body, TopAbs_FACE, faces);
+    std::vector<AxisCandidate> axes;
+    for (int i = 1; i <= faces.Extent(); ++i) {
+        const TopoDS_Face &face = TopoDS::Face(faces(i));
+        const auto axis = surfaceAxis(BRepAdaptor_Surface(face));
+        if (!axis)
+            continue;
+        const double area = faceArea(face);
+        auto known = std::find_if(axes.begin(), axes.end(), [&](const auto &c) { return coaxial(c.axis, *axis); });
+        if (known == axes.end()) {
+            axes.push_back({canonical(*axis), 0.0, 0});
+            known = axes.end() - 1;
+        }
+        known->revolvedArea_mm2 += area;
+        ++known->faceCount;
+    }
+    std::stable_sort(axes.begin(), axes.end(),
+                     [](const auto &a, const auto &b) { return a.revolvedArea_mm2 > b.revolvedArea_mm2; });
+    return axes;
+}
+
+SectionTrace traceSection(const TopoDS_Shape &body, const gp_Ax1 &axis, const std::function<bool(double)> &progress)
+{
+    SectionTrace out;
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(body, TopAbs_FACE, faces);
+    FaceTracer tracer(axis, out);
+    for (int i = 1; i <= faces.Extent(); ++i) {
+        if (progress && !progress(static_cast<double>(i - 1) / faces.Extent())) {
+            out.cancelled = true;
+            return out;
+        }
+        tracer.trace(i, TopoDS::Face(faces(i)));
+    }
+    mergeAndFilter(out);
+    return out;
+}
+
+} // namespace tolturn::cad

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Private to core/cad: which faces of a body are revolved about an axis, and their traces in the
+// half-plane through it. Uses OpenCascade types; not part of the public API.
+#pragma once
+
+#include "core/cad/profile_chains.h"
+
+#include <QString>
+
+#include <TopoDS_Shape.hxx>
+#include <functional>
+#include <gp_Ax1.hxx>
+#include <vector>
+
+namespace tolturn::cad {
+
+// An axis shared by revolved faces (cylinders, cones, tori) of a body.
+struct AxisCandidate {
+    gp_Ax1 axis;
+    double revolvedArea_mm2 = 0.0;
+    int faceCount = 0;
+};
+
+// The candidate axes of a body, most revolved face area first.
+[[nodiscard]] std::vector<AxisCandidate> findAxes(const TopoDS_Shape &body);
+
+// A face that is not revolved about the axis, kept out of the profile and reported.
+struct LeftOutFace {
+    int face = 0;         // 1-based, as in TopExp::MapShapes
+    QString what;         // "a plane not perpendicular to the axis (a flat or a keyway side)", …
+    double zMin_mm = 0.0; // along the axis, in the same frame as the section pieces
+    double zMax_mm = 0.0;
+};
+
+struct SectionTrace {
+    std::vector<SectionPiece> pieces;
+    std::vector<LeftOutFace> leftOut;
+    bool cancelled = false;
+};
+
+// The traces of the body's faces revolved about `axis` (z = distance along it from its origin),
+// the same trace of several faces merged, and the faces that are not revolved about it.
+// `progress` is called with the fraction of faces done and returns false to stop.
+[[nodiscard]] SectionTrace traceSection(const TopoDS_Shape &body, const gp_Ax1 &axis,
+                                        const std::function<bool(double)> &progress);
+
+} // namespace tolturn::cad

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/part/profile.h"
+
+#include <QString>
+
+namespace tolturn {
+
+struct StepExportResult {
+    bool ok = false;
+    QString error; // what went wrong, naming the file; empty when ok
+};
+
+// Writes the profile as a solid revolved about the z axis (the face bounded by the outer contour,
+// the axis and the inner contour, turned a full revolution) to a STEP file in millimetres.
+// Atomic: written to a temporary file in the same folder, then renamed over `path`.
+[[nodiscard]] StepExportResult exportProfileToStep(const PartProfile &profile, const QString &path);
+
+} // namespace tolturn

@@ -1,0 +1,356 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/cad/step_import.h"
+
+#include "core/cad/occt_guard.h"
+#include "core/cad/profile_chains.h"
+#include "core/cad/revolved_faces.h"
+#include "core/part/profile_validation.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <Standard_Failure.hxx>
+
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <IGESControl_Reader.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+namespace tolturn {
+
+namespace {
+
+struct StepImport {
+    Q_DECLARE_TR_FUNCTIONS(StepImport)
+};
+
+enum class CadFormat { Step, Iges };
+
+// Shares of the progress bar: parsing the file, transferring its entities to shapes, tracing
+// the faces (the rest is quick).
+constexpr double kReadDone = 0.4;
+constexpr double kTransferDone = 0.8;
+constexpr double kTraceDone = 0.95;
+
+// Bytes read from each end of the file to recognise its format.
+constexpr qint64 kSniffBytes = 4096;
+
+QString num(double v)
+{
+    return formatNumber(v);
+}
+
+void fail(CadImportResult &result, const QString &message)
+{
+    result.diagnostics.push_back(makeError(QStringLiteral("file"), message));
+}
+
+bool report(const CadImportOptions &options, CadImportResult &result, double fraction)
+{
+    if (options.progress && !options.progress(fraction))
+        result.cancelled = true;
+    return !result.cancelled;
+}
+
+std::optional<CadFormat> formatOf(const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("step") || suffix == QLatin1String("stp"))
+        return CadFormat::Step;
+    if (suffix == QLatin1String("iges") || suffix == QLatin1String("igs"))
+        return CadFormat::Iges;
+    return std::nullopt;
+}
+
+// ISO 10303-21 §5: an exchange structure begins with the keyword "ISO-10303-21;" and ends with
+// "END-ISO-10303-21;". A file cut short (an interrupted download or copy) lacks the end.
+QString checkStepText(const QString &path, const QByteArray &head, const QByteArray &tail)
+{
+    // Some editors save the file with a UTF-8 byte order mark, which the standard does not have.
+    const QByteArray start = head.startsWith("\xEF\xBB\xBF") ? head.mid(3) : head;
+    if (!start.trimmed().startsWith("ISO-10303-21;"))
+        return StepImport::tr("'%1' is not a STEP file: it does not begin with 'ISO-10303-21;' (ISO 10303-21)")
+            .arg(path);
+    if (!tail.trimmed().endsWith("END-ISO-10303-21;"))
+        return StepImport::tr("'%1' is truncated: a STEP file ends with 'END-ISO-10303-21;', which is missing")
+            .arg(path);
+    return {};
+}
+
+// IGES 5.3 §2.1: 80-column records whose column 73 names the section; the first is the Start
+// section (S) or the flag of the compressed form (F), the last the Terminate section (T).
+QString checkIgesText(const QString &path, const QByteArray &head, const QByteArray &tail)
+{
+    const QByteArray first = head.left(head.indexOf('\n'));
+    const QList<QByteArray> lines = tail.trimmed().split('\n');
+    const QByteArray last = lines.isEmpty() ? QByteArray() : lines.constLast();
+    constexpr int kSectionColumn = 72;
+    if (first.size() <= kSectionColumn || (first.at(kSectionColumn) != 'S' && first.at(kSectionColumn) != 'F'))
+        return StepImport::tr("'%1' is not an IGES file: its first line is not a Start section record (IGES 5.3)")
+            .arg(path);
+    if (last.size() <= kSectionColumn || last.at(kSectionColumn) != 'T')
+        return StepImport::tr("'%1' is truncated: an IGES file ends with a Terminate section record, which is missing")
+            .arg(path);
+    return {};
+}
+
+// The problem with the file before OpenCascade sees it, empty when it looks readable.
+QString checkFile(const QString &path, CadFormat format)
+{
+    const QFileInfo info(path);
+    if (!info.exists())
+        return StepImport::tr("'%1' does not exist").arg(path);
+    if (!info.isFile())
+        return StepImport::tr("'%1' is not a file").arg(path);
+    if (info.size() == 0)
+        return StepImport::tr("'%1' is empty").arg(path);
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return StepImport::tr("cannot open '%1': %2").arg(path, file.errorString());
+    const QByteArray head = file.read(kSniffBytes);
+    file.seek(std::max<qint64>(0, info.size() - kSniffBytes));
+    const QByteArray tail = file.readAll();
+    return format == CadFormat::Step ? checkStepText(path, head, tail) : checkIgesText(path, head, tail);
+}
+
+// Reads and transfers the file under the OpenCascade lock; a null shape after an error.
+TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOptions &options, CadImportResult &result)
+{
+    const std::lock_guard lock(cad::occtMutex());
+    const cad::QuietMessages quiet;
+    STEPControl_Reader step;
+    IGESControl_Reader iges;
+    XSControl_Reader &reader = format == CadFormat::Step ? static_cast<XSControl_Reader &>(step) : iges;
+    // The unit of the transferred shapes, whatever the file's own unit (STEP: the
+    // SI_UNIT/CONVERSION_BASED_UNIT of its context; IGES: the global section's unit flag).
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    if (!report(options, result, 0.0))
+        return {};
+    const IFSelect_ReturnStatus status = reader.ReadFile(QFile::encodeName(path).constData());
+    if (status != IFSelect_RetDone) {
+        fail(result, format == CadFormat::Step
+                         ? StepImport::tr("OpenCascade cannot parse '%1' as a STEP file (ISO 10303-21)").arg(path)
+                         : StepImport::tr("OpenCascade cannot parse '%1' as an IGES file").arg(path));
+        return {};
+    }
+    if (!report(options, result, kReadDone))
+        return {};
+    const Handle(cad::ProgressBridge) bridge = new cad::ProgressBridge(options.progress, kReadDone, kTransferDone);
+    reader.TransferRoots(bridge->Start());
+    if (bridge->cancelled()) {
+        result.cancelled = true;
+        return {};
+    }
+    if (reader.NbShapes() == 0) {
+        fail(result,
+             StepImport::tr("'%1' holds no shape that OpenCascade can transfer (no solid, shell or face)").arg(path));
+        return {};
+    }
+    return reader.OneShape();
+}
+
+std::vector<TopoDS_Shape> bodiesOf(const TopoDS_Shape &shape)
+{
+    std::vector<TopoDS_Shape> bodies;
+    for (const TopAbs_ShapeEnum kind : {TopAbs_SOLID, TopAbs_SHELL}) {
+        for (TopExp_Explorer ex(shape, kind); ex.More(); ex.Next())
+            bodies.push_back(ex.Current());
+        if (!bodies.empty())
+            return bodies; // shells only when there is no solid (IGES surfaces, open models)
+    }
+    if (TopExp_Explorer(shape, TopAbs_FACE).More())
+        bodies.push_back(shape);
+    return bodies;
+}
+
+CadSolidInfo solidInfo(const TopoDS_Shape &body)
+{
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(body, props);
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(body, TopAbs_FACE, faces);
+    return {std::abs(props.Mass()), faces.Extent()};
+}
+
+CadAxisInfo axisInfo(const cad::AxisCandidate &c)
+{
+    CadAxisInfo info;
+    const gp_Pnt o = c.axis.Location();
+    const gp_Dir d = c.axis.Direction();
+    info.origin_mm[0] = o.X();
+    info.origin_mm[1] = o.Y();
+    info.origin_mm[2] = o.Z();
+    info.direction[0] = d.X();
+    info.direction[1] = d.Y();
+    info.direction[2] = d.Z();
+    info.revolvedArea_mm2 = c.revolvedArea_mm2;
+    info.faceCount = c.faceCount;
+    return info;
+}
+
+// The index the caller asked for, or the default; -1 (after an error) when out of range.
+int choose(int requested, int fallback, int count, const QString &field, const QString &what, CadImportResult &result)
+{
+    if (requested < 0)
+        return fallback;
+    if (requested < count)
+        return requested;
+    result.diagnostics.push_back(makeError(
+        field,
+        StepImport::tr("there is no %1 %2: the file has %3 (numbered from 0)").arg(what).arg(requested).arg(count)));
+    return -1;
+}
+
+int chooseSolid(const std::vector<TopoDS_Shape> &bodies, const CadImportOptions &options, CadImportResult &result)
+{
+    for (const TopoDS_Shape &b : bodies)
+        result.solids.push_back(solidInfo(b));
+    const auto largest = std::max_element(result.solids.begin(), result.solids.end(),
+                                          [](const auto &a, const auto &b) { return a.volume_mm3 < b.volume_mm3; });
+    const int chosen =
+        choose(options.solidIndex, static_cast<int>(largest - result.solids.begin()), static_cast<int>(bodies.size()),
+               QStringLiteral("step.solid"), StepImport::tr("body"), result);
+    if (chosen >= 0 && bodies.size() > 1)
+        result.diagnostics.push_back(makeWarning(
+            QStringLiteral("step.solid"),
+            StepImport::tr("the file holds %1 bodies; body %2 (%3 mm³) is imported, choose another with the solid "
+                           "option")
+                .arg(bodies.size())
+                .arg(chosen)
+                .arg(num(result.solids[static_cast<std::size_t>(chosen)].volume_mm3))));
+    return chosen;
+}
+
+int chooseAxis(const std::vector<cad::AxisCandidate> &axes, const CadImportOptions &options, const QString &path,
+               CadImportResult &result)
+{
+    for (const auto &a : axes)
+        result.axes.push_back(axisInfo(a));
+    if (axes.empty()) {
+        fail(result, StepImport::tr("the body in '%1' has no cylindrical, conical or toroidal face: it is not a "
+                                    "turned part")
+                         .arg(path));
+        return -1;
+    }
+    const int chosen = choose(options.axisIndex, 0, static_cast<int>(axes.size()), QStringLiteral("step.axis"),
+                              StepImport::tr("axis"), result);
+    if (chosen >= 0 && axes.size() > 1)
+        result.diagnostics.push_back(makeWarning(
+            QStringLiteral("step.axis"),
+            StepImport::tr("the body has revolved faces about %1 different axes; axis %2 (%3 mm² of revolved faces) "
+                           "is the part axis, choose another with the axis option")
+                .arg(axes.size())
+                .arg(chosen)
+                .arg(num(axes[static_cast<std::size_t>(chosen)].revolvedArea_mm2))));
+    return chosen;
+}
+
+void reportLeftOut(const std::vector<cad::LeftOutFace> &faces, const cad::Placement &place, Diagnostics &out)
+{
+    for (const cad::LeftOutFace &f : faces) {
+        const double z0 = place(f.zMin_mm);
+        const double z1 = place(f.zMax_mm);
+        out.push_back(makeWarning(QStringLiteral("step.face[%1]").arg(f.face),
+                                  StepImport::tr("face %1 is %2, from z = %3 mm to z = %4 mm; it is not "
+                                                 "rotationally symmetric about the part axis and is left out of the "
+                                                 "profile")
+                                      .arg(f.face)
+                                      .arg(f.what, num(std::min(z0, z1)), num(std::max(z0, z1)))));
+    }
+}
+
+PartProfile makeProfile(const QString &path, cad::ContourBuild &contours)
+{
+    PartProfile profile;
+    profile.name = QFileInfo(path).completeBaseName();
+    profile.outer = std::move(contours.outer);
+    profile.inner = std::move(contours.inner);
+    // The smallest bar the part can be turned from; the planner raises it to a stock size.
+    profile.stockDiameter_mm = 2.0 * profile.maxOuterRadius_mm();
+    return profile;
+}
+
+void extractProfile(const QString &path, const TopoDS_Shape &body, const gp_Ax1 &axis, const CadImportOptions &options,
+                    CadImportResult &result)
+{
+    const auto progress = [&](double f) {
+        return report(options, result, kTransferDone + (kTraceDone - kTransferDone) * f);
+    };
+    cad::SectionTrace trace = cad::traceSection(body, axis, progress);
+    if (trace.cancelled)
+        return;
+    const cad::Placement place = cad::placementOf(trace.pieces, options.flip, options.zOffset_mm);
+    cad::placePieces(trace.pieces, place);
+    std::sort(trace.leftOut.begin(), trace.leftOut.end(), [](const auto &a, const auto &b) { return a.face < b.face; });
+    reportLeftOut(trace.leftOut, place, result.diagnostics);
+    cad::ContourBuild contours = cad::buildContours(trace.pieces, options.chamferMaxLength_mm);
+    const bool broken = hasErrors(contours.diagnostics);
+    result.diagnostics.insert(result.diagnostics.end(), contours.diagnostics.begin(), contours.diagnostics.end());
+    if (broken)
+        return;
+    PartProfile profile = makeProfile(path, contours);
+    const Diagnostics findings = validateProfile(profile);
+    result.diagnostics.insert(result.diagnostics.end(), findings.begin(), findings.end());
+    result.profile = std::move(profile);
+}
+
+void importInto(const QString &path, const CadImportOptions &options, CadImportResult &result)
+{
+    const auto format = formatOf(path);
+    if (!format) {
+        fail(result, StepImport::tr("'%1' is not a STEP or IGES file: TolTurn reads files ending in .step, .stp, "
+                                    ".iges or .igs")
+                         .arg(path));
+        return;
+    }
+    if (const QString problem = checkFile(path, *format); !problem.isEmpty()) {
+        fail(result, problem);
+        return;
+    }
+    const TopoDS_Shape shape = readShape(path, *format, options, result);
+    if (shape.IsNull())
+        return;
+    const std::vector<TopoDS_Shape> bodies = bodiesOf(shape);
+    if (bodies.empty()) {
+        fail(result, StepImport::tr("'%1' holds no solid, shell or face").arg(path));
+        return;
+    }
+    result.chosenSolid = chooseSolid(bodies, options, result);
+    if (result.chosenSolid < 0)
+        return;
+    const TopoDS_Shape &body = bodies[static_cast<std::size_t>(result.chosenSolid)];
+    const std::vector<cad::AxisCandidate> axes = cad::findAxes(body);
+    result.chosenAxis = chooseAxis(axes, options, path, result);
+    if (result.chosenAxis < 0)
+        return;
+    extractProfile(path, body, axes[static_cast<std::size_t>(result.chosenAxis)].axis, options, result);
+    if (result.profile)
+        report(options, result, 1.0);
+}
+
+} // namespace
+
+CadImportResult importCadFile(const QString &path, const CadImportOptions &options)
+{
+    CadImportResult result;
+    try {
+        importInto(path, options, result);
+    } catch (const Standard_Failure &e) {
+        fail(result, StepImport::tr("OpenCascade failed while reading '%1': %2")
+                         .arg(path, QString::fromLocal8Bit(e.GetMessageString())));
+    } catch (const std::exception &e) {
+        fail(result, StepImport::tr("reading '%1' failed: %2").arg(path, QString::fromLocal8Bit(e.what())));
+    }
+    if (result.cancelled)
+        result.profile.reset();
+    return result;
+}
+
+} // namespace tolturn

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+#include "core/part/profile.h"
+
+#include <QString>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+// Reports progress from 0 to 1; returning false cancels the import.
+using CadProgress = std::function<bool(double fraction)>;
+
+// Cones no longer than this along their slant, between two other segments, become chamfers
+// (docs/step-import.md): the usual edge breaks of drawings (0.2 to 3 mm x 45°).
+inline constexpr double kDefaultChamferMaxLength_mm = 3.0;
+
+struct CadImportOptions {
+    int solidIndex = -1;   // which body (index into CadImportResult::solids); -1: the largest
+    int axisIndex = -1;    // which axis (index into CadImportResult::axes); -1: most revolved area
+    bool flip = false;     // turn the part end for end: z = 0 at the other end
+    double zOffset_mm = 0; // added to every z after placing z = 0 at the left end
+    double chamferMaxLength_mm = kDefaultChamferMaxLength_mm;
+    CadProgress progress; // optional
+};
+
+// A body of the file the caller may choose with CadImportOptions::solidIndex.
+struct CadSolidInfo {
+    double volume_mm3 = 0.0;
+    int faceCount = 0;
+};
+
+// A candidate rotation axis: the common axis of revolved faces of the chosen body.
+struct CadAxisInfo {
+    double origin_mm[3] = {0.0, 0.0, 0.0};
+    double direction[3] = {0.0, 0.0, 1.0};
+    double revolvedArea_mm2 = 0.0; // area of the faces revolved about this axis
+    int faceCount = 0;
+};
+
+struct CadImportResult {
+    // Absent when the file cannot be read or holds no turned section, and on cancel. Present
+    // otherwise, with validateProfile's findings among the diagnostics.
+    std::optional<PartProfile> profile;
+    Diagnostics diagnostics; // warnings (left-out features, profile findings) and errors
+    std::vector<CadSolidInfo> solids;
+    std::vector<CadAxisInfo> axes; // of the chosen solid, most revolved area first
+    int chosenSolid = -1;
+    int chosenAxis = -1;
+    bool cancelled = false;
+};
+
+// Reads a STEP (.step, .stp) or IGES (.iges, .igs) file, converting its units to millimetres,
+// finds the rotation axis and returns the half-section of the chosen body as a TolTurn profile.
+// Never throws: every failure is an error diagnostic naming the file.
+[[nodiscard]] CadImportResult importCadFile(const QString &path, const CadImportOptions &options = {});
+
+} // namespace tolturn

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tolturn-cli import and export-step (issue 7) as a user runs them: the bundled examples written
+// as STEP solids, imported back into projects that 'check' accepts, with the same contours.
+#include "tests/cli/cli_runner.h"
+
+#include "core/cad/step_export.h"
+#include "core/io/project_file.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace tolturn;
+using tolturn::test::example;
+using tolturn::test::Run;
+using tolturn::test::runCli;
+
+namespace {
+
+bool sameContour(const Contour &got, const Contour &want)
+{
+    const auto near = [](const ProfilePoint &a, const ProfilePoint &b) {
+        return std::abs(a.z_mm - b.z_mm) <= 1e-3 && std::abs(a.r_mm - b.r_mm) <= 1e-3;
+    };
+    if (got.segments.size() != want.segments.size())
+        return false;
+    for (std::size_t i = 0; i < got.segments.size(); ++i) {
+        const Segment &g = got.segments[i];
+        const Segment &w = want.segments[i];
+        if (g.kind != w.kind || !near(g.from, w.from) || !near(g.to, w.to))
+            return false;
+    }
+    return true;
+}
+
+PartProfile readPart(const QString &path)
+{
+    const ProjectParseResult read = readProjectFile(path);
+    if (!read.project)
+        qFatal("cannot read %s", qPrintable(path));
+    return read.project->part;
+}
+
+} // namespace
+
+class TestImportCli : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+
+    void exportThenImportExamples_data()
+    {
+        QTest::addColumn<QString>("name");
+        for (const char *name : {"stepped-shaft-chuck", "hollow-sleeve-tailstock", "long-shaft-centres"})
+            QTest::newRow(name) << QString::fromLatin1(name);
+    }
+
+    void exportThenImportExamples()
+    {
+        QFETCH(QString, name);
+        const QString source = example(qPrintable(name + QStringLiteral(".tolturn")));
+        const QString step = m_dir.filePath(name + QStringLiteral(".step"));
+        const QString project = m_dir.filePath(name + QStringLiteral(".tolturn"));
+        const Run exported = runCli({QStringLiteral("export-step"), QStringLiteral("-o"), step, source});
+        QVERIFY2(exported.exitCode == 0, qPrintable(exported.err));
+        QCOMPARE(exported.out, step + QStringLiteral(": written\n"));
+        const Run imported = runCli({QStringLiteral("import"), QStringLiteral("-o"), project, step});
+        QVERIFY2(imported.exitCode == 0, qPrintable(imported.err));
+        QVERIFY(imported.out.startsWith(project + QStringLiteral(": written")));
+        const Run checked = runCli({QStringLiteral("check"), project});
+        QVERIFY2(checked.exitCode == 0, qPrintable(checked.err));
+        const PartProfile want = readPart(source);
+        const PartProfile got = readPart(project);
+        QVERIFY(sameContour(got.outer, want.outer));
+        QVERIFY(sameContour(got.inner, want.inner));
+    }
+
+    void importJsonListsSolidsAndAxes()
+    {
+        const QString step = m_dir.filePath(QStringLiteral("sleeve.step"));
+        const QString project = m_dir.filePath(QStringLiteral("sleeve.tolturn"));
+        QVERIFY(exportProfileToStep(readPart(example("hollow-sleeve-tailstock.tolturn")), step).ok);
+        const Run r = runCli({QStringLiteral("import"), QStringLiteral("--json"), QStringLiteral("--flip"),
+                              QStringLiteral("-o"), project, step});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(json.value(QStringLiteral("written")).toBool(), true);
+        QCOMPARE(json.value(QStringLiteral("solids")).toArray().size(), 1);
+        QCOMPARE(json.value(QStringLiteral("chosen_axis")).toInt(), 0);
+        const QJsonArray direction =
+            json.value(QStringLiteral("axes")).toArray().at(0).toObject().value(QStringLiteral("direction")).toArray();
+        QCOMPARE(direction.at(2).toDouble(), 1.0);
+        // Flipped: the counterbore (Ø45, at the right end in the example) is now at the left.
+        const PartProfile got = readPart(project);
+        QVERIFY(!got.inner.empty());
+        QCOMPARE(got.inner.segments.front().from.r_mm, 22.5);
+        QVERIFY(runCli({QStringLiteral("check"), project}).exitCode == 0);
+    }
+
+    void importErrors()
+    {
+        const QString notStep = m_dir.filePath(QStringLiteral("notes.step"));
+        QFile file(notStep);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("not a model\n");
+        file.close();
+        const QString project = m_dir.filePath(QStringLiteral("never.tolturn"));
+        const Run bad = runCli({QStringLiteral("import"), QStringLiteral("-o"), project, notStep});
+        QCOMPARE(bad.exitCode, 1);
+        QVERIFY2(bad.err.contains(QStringLiteral("'%1' is not a STEP file").arg(notStep)), qPrintable(bad.err));
+        QVERIFY(!QFile::exists(project));
+        const Run usage = runCli({QStringLiteral("import"), notStep});
+        QCOMPARE(usage.exitCode, 2);
+        const Run badIndex = runCli({QStringLiteral("import"), QStringLiteral("--solid"), QStringLiteral("x"),
+                                     QStringLiteral("-o"), project, notStep});
+        QCOMPARE(badIndex.exitCode, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestImportCli)
+#include "tst_import_cli.moc"

@@ -1,0 +1,670 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// STEP/IGES import (issue 7): parts are built here with OpenCascade from hand-made profiles (with
+// fillets, chamfers, a bore, and non-turned features cut in), written to files and imported; the
+// extracted contours must match the hand-made ones to 1 µm.
+#include "core/cad/step_export.h"
+#include "core/cad/step_import.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepFilletAPI_MakeChamfer.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRep_Builder.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <cmath>
+#include <gp_Ax2.hxx>
+#include <numbers>
+
+using namespace tolturn;
+
+namespace {
+
+// The accuracy the issue asks for.
+constexpr double kMicrometre_mm = 1e-3;
+
+Segment seg(SegmentKind kind, ProfilePoint from, ProfilePoint to, double radius = 0.0,
+            ArcDirection direction = ArcDirection::CounterClockwise)
+{
+    Segment s;
+    s.kind = kind;
+    s.from = from;
+    s.to = to;
+    s.arcRadius_mm = radius;
+    s.arcDirection = direction;
+    return s;
+}
+
+PartProfile profileOf(std::vector<Segment> outer, std::vector<Segment> inner = {})
+{
+    PartProfile p;
+    p.outer.segments = std::move(outer);
+    p.inner.segments = std::move(inner);
+    const auto number = [](Contour &c, const QString &prefix) {
+        for (std::size_t i = 0; i < c.segments.size(); ++i)
+            c.segments[i].id = prefix + QString::number(i + 1);
+    };
+    number(p.outer, QStringLiteral("O"));
+    number(p.inner, QStringLiteral("I"));
+    p.stockDiameter_mm = 2.0 * p.maxOuterRadius_mm();
+    return p;
+}
+
+// Part A: a bored stepped shaft. Base section (z, r): Ø40 to z = 40, Ø30 to z = 70, a cone down
+// to Ø24 at z = 90, Ø24 to z = 100, bore Ø20 through; then a fillet R2 in the step at z = 40,
+// 1 mm chamfers on the left outer edge, the right outer edge and the bore mouth.
+const std::vector<ProfilePoint> kShaftSection = {{0, 10},  {0, 20},  {40, 20},  {40, 15},
+                                                 {70, 15}, {90, 12}, {100, 12}, {100, 10}};
+
+PartProfile expectedShaft()
+{
+    using K = SegmentKind;
+    return profileOf(
+        {seg(K::Face, {0, 11}, {0, 19}), seg(K::Chamfer, {0, 19}, {1, 20}), seg(K::Cylinder, {1, 20}, {40, 20}),
+         seg(K::Face, {40, 20}, {40, 17}), seg(K::Radius, {40, 17}, {42, 15}, 2.0, ArcDirection::CounterClockwise),
+         seg(K::Cylinder, {42, 15}, {70, 15}), seg(K::Cone, {70, 15}, {90, 12}), seg(K::Cylinder, {90, 12}, {99, 12}),
+         seg(K::Chamfer, {99, 12}, {100, 11}), seg(K::Face, {100, 11}, {100, 10})},
+        {seg(K::Chamfer, {0, 11}, {1, 10}), seg(K::Cylinder, {1, 10}, {100, 10})});
+}
+
+// Part B: a solid pin. Ø30 to z = 30, Ø20 to z = 60; a 1.5 mm chamfer on the left edge, a fillet
+// R1 in the step, an edge radius R3 on the right end.
+const std::vector<ProfilePoint> kPinSection = {{0, 0}, {0, 15}, {30, 15}, {30, 10}, {60, 10}, {60, 0}};
+
+PartProfile expectedPin()
+{
+    using K = SegmentKind;
+    return profileOf({seg(K::Face, {0, 0}, {0, 13.5}), seg(K::Chamfer, {0, 13.5}, {1.5, 15}),
+                      seg(K::Cylinder, {1.5, 15}, {30, 15}), seg(K::Face, {30, 15}, {30, 11}),
+                      seg(K::Radius, {30, 11}, {31, 10}, 1.0, ArcDirection::CounterClockwise),
+                      seg(K::Cylinder, {31, 10}, {57, 10}),
+                      seg(K::Radius, {57, 10}, {60, 7}, 3.0, ArcDirection::Clockwise), seg(K::Face, {60, 7}, {60, 0})});
+}
+
+// Part C: a short tube, Ø40 x Ø30, 10 mm long.
+const std::vector<ProfilePoint> kTubeSection = {{0, 15}, {0, 20}, {10, 20}, {10, 15}};
+
+PartProfile expectedTube()
+{
+    using K = SegmentKind;
+    return profileOf(
+        {seg(K::Face, {0, 15}, {0, 20}), seg(K::Cylinder, {0, 20}, {10, 20}), seg(K::Face, {10, 20}, {10, 15})},
+        {seg(K::Cylinder, {0, 15}, {10, 15})});
+}
+
+// Part D: a bolt blank with a blind bore Ø16 from the right end, 20 deep, ending in a 90° drill
+// point (a 45° cone, 11.3 mm long: a cone, not a chamfer).
+const std::vector<ProfilePoint> kBlindSection = {{0, 0}, {0, 15}, {50, 15}, {50, 8}, {30, 8}, {22, 0}};
+
+PartProfile expectedBlind()
+{
+    using K = SegmentKind;
+    return profileOf(
+        {seg(K::Face, {0, 0}, {0, 15}), seg(K::Cylinder, {0, 15}, {50, 15}), seg(K::Face, {50, 15}, {50, 8})},
+        {seg(K::Cone, {22, 0}, {30, 8}), seg(K::Cylinder, {30, 8}, {50, 8})});
+}
+
+// Part F: a shaft Ø30 x 100 with a 90° centre hole 3 mm deep at the left end and a bore Ø8, 20
+// deep with a 90° drill point, at the right. One inner contour: the deeper right bore is kept,
+// the centre hole left out with a warning and the left end face closed to the axis.
+const std::vector<ProfilePoint> kCentredSection = {{3, 0}, {0, 3}, {0, 15}, {100, 15}, {100, 4}, {80, 4}, {76, 0}};
+
+PartProfile expectedCentred()
+{
+    using K = SegmentKind;
+    return profileOf(
+        {seg(K::Face, {0, 0}, {0, 15}), seg(K::Cylinder, {0, 15}, {100, 15}), seg(K::Face, {100, 15}, {100, 4})},
+        {seg(K::Cone, {76, 0}, {80, 4}), seg(K::Cylinder, {80, 4}, {100, 4})});
+}
+
+// Part E: a pin Ø20, 40 long, with a hemispherical end (a sphere fused on): an arc R10 centred
+// on the axis.
+PartProfile expectedBall()
+{
+    using K = SegmentKind;
+    return profileOf({seg(K::Face, {0, 0}, {0, 10}), seg(K::Cylinder, {0, 10}, {40, 10}),
+                      seg(K::Radius, {40, 10}, {50, 0}, 10.0, ArcDirection::Clockwise)});
+}
+
+// The half-section lies in the XZ plane: z along Z, r along X.
+gp_Pnt at(const ProfilePoint &p)
+{
+    return {p.r_mm, 0.0, p.z_mm};
+}
+
+TopoDS_Shape revolve(const std::vector<ProfilePoint> &section)
+{
+    BRepBuilderAPI_MakePolygon polygon;
+    for (const ProfilePoint &p : section)
+        polygon.Add(at(p));
+    polygon.Close();
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(polygon.Wire(), Standard_True);
+    return BRepPrimAPI_MakeRevol(face, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 2.0 * std::numbers::pi).Shape();
+}
+
+// The circular edge of the part at z with radius r (the edges the fillets and chamfers break).
+TopoDS_Edge circleEdge(const TopoDS_Shape &shape, double z, double r)
+{
+    for (TopExp_Explorer ex(shape, TopAbs_EDGE); ex.More(); ex.Next()) {
+        const BRepAdaptor_Curve c(TopoDS::Edge(ex.Current()));
+        if (c.GetType() == GeomAbs_Circle && std::abs(c.Circle().Radius() - r) < 1e-9 &&
+            std::abs(c.Circle().Location().Z() - z) < 1e-9)
+            return TopoDS::Edge(ex.Current());
+    }
+    qFatal("no circular edge at z = %g, r = %g", z, r);
+}
+
+TopoDS_Shape fillet(const TopoDS_Shape &shape, double z, double r, double radius)
+{
+    BRepFilletAPI_MakeFillet maker(shape);
+    maker.Add(radius, circleEdge(shape, z, r));
+    return maker.Shape();
+}
+
+TopoDS_Shape chamfer(const TopoDS_Shape &shape, double z, double r, double size)
+{
+    BRepFilletAPI_MakeChamfer maker(shape);
+    maker.Add(size, circleEdge(shape, z, r));
+    return maker.Shape();
+}
+
+TopoDS_Shape cutBox(const TopoDS_Shape &shape, const gp_Pnt &low, const gp_Pnt &high)
+{
+    return BRepAlgoAPI_Cut(shape, BRepPrimAPI_MakeBox(low, high).Shape()).Shape();
+}
+
+TopoDS_Shape shaftPart()
+{
+    TopoDS_Shape s = revolve(kShaftSection);
+    s = fillet(s, 40, 15, 2.0);
+    s = chamfer(s, 0, 20, 1.0);
+    s = chamfer(s, 100, 12, 1.0);
+    return chamfer(s, 0, 10, 1.0);
+}
+
+// A keyway (z 10 to 30, 6 wide, 3 deep in the Ø40), a flat (x = 13 on the Ø30, z 45 to 60) and a
+// cross hole Ø4 along Y at z = 94.5.
+TopoDS_Shape withFeatures(TopoDS_Shape s)
+{
+    s = cutBox(s, gp_Pnt(17, -3, 10), gp_Pnt(25, 3, 30));
+    s = cutBox(s, gp_Pnt(13, -30, 45), gp_Pnt(30, 30, 60));
+    const gp_Ax2 holeAxis(gp_Pnt(0, -30, 94.5), gp_Dir(0, 1, 0));
+    return BRepAlgoAPI_Cut(s, BRepPrimAPI_MakeCylinder(holeAxis, 2.0, 60.0).Shape()).Shape();
+}
+
+TopoDS_Shape pinPart()
+{
+    TopoDS_Shape s = revolve(kPinSection);
+    s = fillet(s, 30, 10, 1.0);
+    s = fillet(s, 60, 10, 3.0);
+    return chamfer(s, 0, 15, 1.5);
+}
+
+TopoDS_Shape ballPart()
+{
+    const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+    const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(axis, 10.0, 40.0).Shape();
+    return BRepAlgoAPI_Fuse(cylinder, BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 40), 10.0).Shape()).Shape();
+}
+
+// A pin Ø20 x 30 with a hexagon 24 across flats from z = 30 to 40: not turned all round.
+TopoDS_Shape hexPart()
+{
+    BRepBuilderAPI_MakePolygon hexagon;
+    const double corner = 12.0 / std::cos(std::numbers::pi / 6.0);
+    for (int i = 0; i < 6; ++i) {
+        const double a = i * std::numbers::pi / 3.0;
+        hexagon.Add(gp_Pnt(corner * std::cos(a), corner * std::sin(a), 30.0));
+    }
+    hexagon.Close();
+    const TopoDS_Face base = BRepBuilderAPI_MakeFace(hexagon.Wire(), Standard_True);
+    const TopoDS_Shape prism = BRepPrimAPI_MakePrism(base, gp_Vec(0, 0, 10)).Shape();
+    const gp_Ax2 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+    return BRepAlgoAPI_Fuse(BRepPrimAPI_MakeCylinder(axis, 10.0, 30.0).Shape(), prism).Shape();
+}
+
+TopoDS_Shape moved(const TopoDS_Shape &shape, const gp_Vec &by)
+{
+    gp_Trsf t;
+    t.SetTranslation(by);
+    return BRepBuilderAPI_Transform(shape, t, Standard_True).Shape();
+}
+
+TopoDS_Shape assembly()
+{
+    TopoDS_Compound compound;
+    BRep_Builder builder;
+    builder.MakeCompound(compound);
+    builder.Add(compound, pinPart());
+    builder.Add(compound, moved(revolve(kTubeSection), gp_Vec(100, 0, 0)));
+    return compound;
+}
+
+void writeStep(const TopoDS_Shape &shape, const QString &path, const char *unit = "MM")
+{
+    STEPControl_Writer writer;
+    Interface_Static::SetCVal("write.step.unit", unit);
+    QVERIFY(writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone);
+    QVERIFY(writer.Write(QFile::encodeName(path).constData()) == IFSelect_RetDone);
+    Interface_Static::SetCVal("write.step.unit", "MM");
+}
+
+void writeIges(const TopoDS_Shape &shape, const QString &path)
+{
+    IGESControl_Controller::Init();
+    IGESControl_Writer writer("MM", 1); // 1: faces as B-Rep solids (IGES 186 MSBO)
+    QVERIFY(writer.AddShape(shape));
+    writer.ComputeModel();
+    QVERIFY(writer.Write(QFile::encodeName(path).constData()));
+}
+
+void writeCad(const TopoDS_Shape &shape, const QString &path)
+{
+    if (path.endsWith(QLatin1String(".igs")))
+        writeIges(shape, path);
+    else
+        writeStep(shape, path);
+}
+
+QString describe(const Contour &c)
+{
+    QString text;
+    for (const Segment &s : c.segments)
+        text += QStringLiteral("  %1 %2 (%3, %4) -> (%5, %6) R%7 %8\n")
+                    .arg(s.id)
+                    .arg(static_cast<int>(s.kind))
+                    .arg(s.from.z_mm, 0, 'f', 6)
+                    .arg(s.from.r_mm, 0, 'f', 6)
+                    .arg(s.to.z_mm, 0, 'f', 6)
+                    .arg(s.to.r_mm, 0, 'f', 6)
+                    .arg(s.arcRadius_mm)
+                    .arg(s.arcDirection == ArcDirection::Clockwise ? QStringLiteral("cw") : QStringLiteral("ccw"));
+    return text;
+}
+
+bool near(const ProfilePoint &a, const ProfilePoint &b)
+{
+    return std::abs(a.z_mm - b.z_mm) <= kMicrometre_mm && std::abs(a.r_mm - b.r_mm) <= kMicrometre_mm;
+}
+
+bool sameSegment(const Segment &got, const Segment &want)
+{
+    if (got.kind != want.kind || !near(got.from, want.from) || !near(got.to, want.to))
+        return false;
+    return want.kind != SegmentKind::Radius ||
+           (std::abs(got.arcRadius_mm - want.arcRadius_mm) <= kMicrometre_mm && got.arcDirection == want.arcDirection);
+}
+
+bool sameContour(const Contour &got, const Contour &want)
+{
+    if (got.segments.size() != want.segments.size())
+        return false;
+    for (std::size_t i = 0; i < got.segments.size(); ++i) {
+        if (!sameSegment(got.segments[i], want.segments[i]))
+            return false;
+    }
+    return true;
+}
+
+void compareProfiles(const PartProfile &got, const PartProfile &want)
+{
+    QVERIFY2(
+        sameContour(got.outer, want.outer),
+        qPrintable(QStringLiteral("outer contour\ngot:\n%1want:\n%2").arg(describe(got.outer), describe(want.outer))));
+    QVERIFY2(
+        sameContour(got.inner, want.inner),
+        qPrintable(QStringLiteral("inner contour\ngot:\n%1want:\n%2").arg(describe(got.inner), describe(want.inner))));
+}
+
+// The same part turned end for end: z -> L - z, the contours reversed (an arc keeps its sense:
+// the mirror and the reversal each swap it).
+PartProfile flipped(const PartProfile &p)
+{
+    const double length = p.length_mm();
+    PartProfile out = p;
+    for (Contour *c : {&out.outer, &out.inner}) {
+        std::reverse(c->segments.begin(), c->segments.end());
+        for (Segment &s : c->segments) {
+            std::swap(s.from, s.to);
+            s.from.z_mm = length - s.from.z_mm;
+            s.to.z_mm = length - s.to.z_mm;
+        }
+    }
+    return out;
+}
+
+QString errorsOf(const CadImportResult &r)
+{
+    QString text;
+    for (const Diagnostic &d : r.diagnostics)
+        text += d.toString() + QLatin1Char('\n');
+    return text;
+}
+
+bool hasNoErrors(const CadImportResult &r)
+{
+    return !hasErrors(r.diagnostics);
+}
+
+struct ZRange {
+    double from = 0.0;
+    double to = 0.0;
+};
+
+// The z range a warning names ("from z = 10 mm to z = 30 mm").
+std::optional<ZRange> zRangeOf(const QString &message)
+{
+    static const QRegularExpression re(QStringLiteral("from z = ([-0-9.e]+) mm to z = ([-0-9.e]+) mm"));
+    const auto m = re.match(message);
+    if (!m.hasMatch())
+        return std::nullopt;
+    return ZRange{m.captured(1).toDouble(), m.captured(2).toDouble()};
+}
+
+bool hasFaceWarning(const CadImportResult &r, const QString &word, double z0, double z1, double tolerance)
+{
+    for (const Diagnostic &d : r.diagnostics) {
+        if (d.severity != Severity::Warning || !d.field.startsWith(QLatin1String("step.face[")) ||
+            !d.message.contains(word))
+            continue;
+        const auto range = zRangeOf(d.message);
+        if (range && std::abs(range->from - z0) <= tolerance && std::abs(range->to - z1) <= tolerance)
+            return true;
+    }
+    return false;
+}
+
+void expectNamedError(const CadImportResult &r, const QString &name, const QString &reason)
+{
+    QVERIFY(!r.profile);
+    QVERIFY(hasErrors(r.diagnostics));
+    const QString message = r.diagnostics.front().message;
+    QVERIFY2(message.contains(name) && message.contains(reason), qPrintable(message));
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(tolturn::PartProfile)
+
+class TestStepImport : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+
+    void initTestCase() { QVERIFY(m_dir.isValid()); }
+
+    void importsKnownParts_data()
+    {
+        QTest::addColumn<QString>("part");
+        QTest::addColumn<QString>("suffix");
+        QTest::addColumn<bool>("flip");
+        for (const char *suffix : {"step", "igs"}) {
+            for (const char *part : {"shaft", "pin"}) {
+                for (const bool flip : {false, true})
+                    QTest::addRow("%s.%s%s", part, suffix, flip ? " flipped" : "")
+                        << QString::fromLatin1(part) << QString::fromLatin1(suffix) << flip;
+            }
+        }
+    }
+
+    void importsKnownParts()
+    {
+        QFETCH(QString, part);
+        QFETCH(QString, suffix);
+        QFETCH(bool, flip);
+        const bool shaft = part == QLatin1String("shaft");
+        const QString path = m_dir.filePath(part + QLatin1Char('.') + suffix);
+        if (!QFileInfo::exists(path))
+            writeCad(shaft ? shaftPart() : pinPart(), path);
+        CadImportOptions options;
+        options.flip = flip;
+        const CadImportResult r = importCadFile(path, options);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        const PartProfile want = shaft ? expectedShaft() : expectedPin();
+        compareProfiles(*r.profile, flip ? flipped(want) : want);
+        QCOMPARE(r.solids.size(), std::size_t{1});
+        QCOMPARE(r.chosenAxis, 0);
+        QCOMPARE(r.profile->name, part);
+    }
+
+    void importsBoresAndSpheres_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<PartProfile>("want");
+        QTest::newRow("blind bore from the right") << QStringLiteral("blind") << expectedBlind();
+        QTest::newRow("ball end") << QStringLiteral("ball") << expectedBall();
+        QTest::newRow("centre hole and bore") << QStringLiteral("centred") << expectedCentred();
+    }
+
+    void importsBoresAndSpheres()
+    {
+        QFETCH(QString, name);
+        QFETCH(PartProfile, want);
+        const QString path = m_dir.filePath(name + QStringLiteral(".step"));
+        const bool centred = name == QLatin1String("centred");
+        writeStep(name == QLatin1String("ball") ? ballPart() : revolve(centred ? kCentredSection : kBlindSection),
+                  path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        compareProfiles(*r.profile, want);
+        if (centred)
+            QVERIFY2(errorsOf(r).contains(QStringLiteral("the bore at the left end, from z = 0 mm to z = 3 mm")),
+                     qPrintable(errorsOf(r)));
+        CadImportOptions options;
+        options.flip = true;
+        const CadImportResult f = importCadFile(path, options);
+        QVERIFY2(f.profile && hasNoErrors(f), qPrintable(errorsOf(f)));
+        compareProfiles(*f.profile, flipped(want));
+    }
+
+    void leavesOutFeaturesWithWarnings_data()
+    {
+        QTest::addColumn<QString>("suffix");
+        QTest::newRow("step") << QStringLiteral("step");
+        QTest::newRow("iges") << QStringLiteral("igs");
+    }
+
+    void leavesOutFeaturesWithWarnings()
+    {
+        QFETCH(QString, suffix);
+        const QString path = m_dir.filePath(QStringLiteral("keyed-shaft.") + suffix);
+        writeCad(withFeatures(shaftPart()), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        compareProfiles(*r.profile, expectedShaft());
+        // Two axes: the part's (Z) and the cross hole's (Y), the part's first by revolved area.
+        QCOMPARE(r.axes.size(), std::size_t{2});
+        QCOMPARE(r.chosenAxis, 0);
+        QCOMPARE(std::abs(r.axes[0].direction[2]), 1.0);
+        QCOMPARE(std::abs(r.axes[1].direction[1]), 1.0);
+        // Keyway: its sides and bottom are planes along the axis, its end walls parts of faces.
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 10, 30, kMicrometre_mm), qPrintable(errorsOf(r)));
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 10, 10, kMicrometre_mm), qPrintable(errorsOf(r)));
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 30, 30, kMicrometre_mm), qPrintable(errorsOf(r)));
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("flat"), 45, 60, kMicrometre_mm), qPrintable(errorsOf(r)));
+        // The hole's z range comes from points sampled along its intersection curves.
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("cross hole"), 92.5, 96.5, 0.05), qPrintable(errorsOf(r)));
+    }
+
+    void convertsInchesToMillimetres()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("pin-inch.step"));
+        // OpenCascade 7.6 writes coordinates as they are and only names the unit, so the part is
+        // scaled to inches first: the file then holds the pin as a CAD system working in inches
+        // would write it (Ø30 mm = 1.1811 in).
+        gp_Trsf toInches;
+        toInches.SetScale(gp_Pnt(0, 0, 0), 1.0 / 25.4);
+        writeStep(BRepBuilderAPI_Transform(pinPart(), toInches, Standard_True).Shape(), path, "INCH");
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray text = file.readAll();
+        QVERIFY2(text.contains("INCH") && text.contains("0.590551"), "the file is not written in inches");
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        compareProfiles(*r.profile, expectedPin());
+    }
+
+    void choosesAmongSolids()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("assembly.step"));
+        writeStep(assembly(), path);
+        const CadImportResult first = importCadFile(path);
+        QCOMPARE(first.solids.size(), std::size_t{2});
+        QVERIFY2(first.profile, qPrintable(errorsOf(first)));
+        // By default the largest: the pin (about 39 cm³) rather than the tube (5.5 cm³).
+        compareProfiles(*first.profile, expectedPin());
+        bool sawPin = false;
+        bool sawTube = false;
+        for (int i = 0; i < 2; ++i) {
+            CadImportOptions options;
+            options.solidIndex = i;
+            const CadImportResult r = importCadFile(path, options);
+            QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+            QCOMPARE(r.chosenSolid, i);
+            const bool pin = sameContour(r.profile->outer, expectedPin().outer);
+            compareProfiles(*r.profile, pin ? expectedPin() : expectedTube());
+            (pin ? sawPin : sawTube) = true;
+        }
+        QVERIFY(sawPin && sawTube);
+        CadImportOptions options;
+        options.solidIndex = 2;
+        const CadImportResult none = importCadFile(path, options);
+        QVERIFY(!none.profile);
+        QVERIFY(hasErrors(none.diagnostics));
+    }
+
+    void exportThenImportRoundTrips_data()
+    {
+        QTest::addColumn<PartProfile>("profile");
+        QTest::newRow("bored shaft") << expectedShaft();
+        QTest::newRow("pin") << expectedPin();
+        QTest::newRow("tube") << expectedTube();
+    }
+
+    void exportThenImportRoundTrips()
+    {
+        QFETCH(PartProfile, profile);
+        const QString path = m_dir.filePath(QStringLiteral("round-trip.step"));
+        const StepExportResult written = exportProfileToStep(profile, path);
+        QVERIFY2(written.ok, qPrintable(written.error));
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        compareProfiles(*r.profile, profile);
+        QVERIFY(QDir(m_dir.path()).entryList({QStringLiteral(".tolturn-*")}, QDir::Files | QDir::Hidden).isEmpty());
+    }
+
+    void exportFailsWithNamedError()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("no-such-folder/part.step"));
+        const StepExportResult written = exportProfileToStep(expectedPin(), path);
+        QVERIFY(!written.ok);
+        QVERIFY2(written.error.contains(path), qPrintable(written.error));
+    }
+
+    void badFilesGiveNamedErrors_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("empty") << QStringLiteral("empty.step") << QByteArray() << QStringLiteral("empty");
+        QTest::newRow("not STEP") << QStringLiteral("notes.step") << QByteArray("Hello, this is not a model.\n")
+                                  << QStringLiteral("not a STEP file");
+        QTest::newRow("not IGES") << QStringLiteral("notes.igs") << QByteArray("Hello, this is not a model.\n")
+                                  << QStringLiteral("not an IGES file");
+        QTest::newRow("wrong suffix") << QStringLiteral("part.obj") << QByteArray("v 0 0 0\n")
+                                      << QStringLiteral("not a STEP or IGES file");
+        QTest::newRow("missing") << QStringLiteral("missing.step") << QByteArray("-")
+                                 << QStringLiteral("does not exist");
+    }
+
+    void badFilesGiveNamedErrors()
+    {
+        QFETCH(QString, name);
+        QFETCH(QByteArray, content);
+        QFETCH(QString, reason);
+        const QString path = m_dir.filePath(name);
+        if (content != "-") {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(content);
+        }
+        expectNamedError(importCadFile(path), name, reason);
+    }
+
+    void truncatedFilesGiveNamedErrors_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("step") << QStringLiteral("cut.step");
+        QTest::newRow("iges") << QStringLiteral("cut.igs");
+    }
+
+    void truncatedFilesGiveNamedErrors()
+    {
+        QFETCH(QString, name);
+        const QString path = m_dir.filePath(name);
+        writeCad(pinPart(), path);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadWrite));
+        QVERIFY(file.resize(file.size() / 2));
+        file.close();
+        expectNamedError(importCadFile(path), name, QStringLiteral("truncated"));
+    }
+
+    void sectionNotTurnedAllRoundIsAnError()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("hex.step"));
+        writeStep(hexPart(), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY(!r.profile);
+        // The six flats are warnings; the error says where the turned contour stops.
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("flat"), 30, 40, kMicrometre_mm), qPrintable(errorsOf(r)));
+        QVERIFY2(errorsOf(r).contains(QStringLiteral("stops at z = 30 mm, r = 13.856")), qPrintable(errorsOf(r)));
+    }
+
+    void reportsProgressAndCancels()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("progress.step"));
+        writeStep(shaftPart(), path);
+        std::vector<double> seen;
+        CadImportOptions options;
+        options.progress = [&](double f) {
+            seen.push_back(f);
+            return true;
+        };
+        const CadImportResult done = importCadFile(path, options);
+        QVERIFY(done.profile && !done.cancelled);
+        QVERIFY(seen.size() >= 3);
+        QVERIFY(std::is_sorted(seen.begin(), seen.end()));
+        QCOMPARE(seen.back(), 1.0);
+        for (const double stopAt : {0.0, 0.5, 0.9}) {
+            options.progress = [stopAt](double f) { return f < stopAt; };
+            const CadImportResult cancelled = importCadFile(path, options);
+            QVERIFY(cancelled.cancelled);
+            QVERIFY(!cancelled.profile);
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestStepImport)
+#include "tst_step_import.moc"
