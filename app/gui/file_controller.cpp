@@ -4,6 +4,7 @@
 #include "app/gui/autosave.h"
 #include "app/gui/recent_files.h"
 #include "core/io/project_file.h"
+#include "core/project/project_defaults.h"
 #include "widgets/document/project_document.h"
 #include "widgets/report/report_writer.h"
 
@@ -53,19 +54,13 @@ Project FileController::newBar()
         s.to = b;
         return s;
     };
-    Project p;
-    p.part.name = tr("New part");
-    p.part.stockDiameter_mm = 45.0;
-    p.part.outer.segments = {seg("O1", SegmentKind::Face, {0, 0}, {0, 20}),
-                             seg("O2", SegmentKind::Cylinder, {0, 20}, {120, 20}),
-                             seg("O3", SegmentKind::Face, {120, 20}, {120, 0})};
-    p.materialId = QStringLiteral("C45E-N");
-    p.machineId = QStringLiteral("haas-st-20");
-    p.tool.insertCode = QStringLiteral("CNMG 120408");
-    p.tool.holderCode = QStringLiteral("PCLNR 2525M12");
-    p.clamping = {ClampingMethod::Chuck, 30.0};
-    p.passes = {{PassKind::Finishing, 200.0, 0.2, 0.5}};
-    return p;
+    PartProfile bar;
+    bar.name = tr("New part");
+    bar.stockDiameter_mm = 45.0;
+    bar.outer.segments = {seg("O1", SegmentKind::Face, {0, 0}, {0, 20}),
+                          seg("O2", SegmentKind::Cylinder, {0, 20}, {120, 20}),
+                          seg("O3", SegmentKind::Face, {120, 20}, {120, 0})};
+    return projectForPart(std::move(bar));
 }
 
 bool FileController::maybeSave()

@@ -2,11 +2,13 @@
 #include "app/gui/main_window.h"
 
 #include "app/gui/autosave.h"
+#include "app/gui/import_dialog.h"
 #include "app/gui/recent_files.h"
 #include "app/gui/settings_dialog.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
 #include "resources/bundled.h"
+#include "widgets/common/diagnostics_panel.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/planning_panel.h"
@@ -54,6 +56,8 @@ MainWindow::MainWindow(QWidget *parent)
     , m_document(new ProjectDocument(this))
     , m_recentFiles(new RecentFiles(this))
     , m_files(new FileController(*m_document, *m_recentFiles, *this, this))
+    , m_cad(new CadFileController(*m_document, *m_files, *this, this))
+    , m_importMessages(new DiagnosticsPanel(this))
     , m_profileView(new ProfileView(this))
     , m_deflection(new DeflectionPanel(this))
     , m_tolerances(new TolerancePanel(*m_document, this))
@@ -73,6 +77,9 @@ MainWindow::MainWindow(QWidget *parent)
     createActions();
     connect(m_files, &FileController::statusMessage, this,
             [this](const QString &message) { statusBar()->showMessage(message, 5000); });
+    connect(m_cad, &CadFileController::statusMessage, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 8000); });
+    connect(m_cad, &CadFileController::importFinished, this, &MainWindow::showImportMessages);
     connect(m_document, &ProjectDocument::projectChanged, this, &MainWindow::showProject);
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
@@ -184,6 +191,9 @@ void MainWindow::createDocks()
     addDockWidget(Qt::BottomDockWidgetArea, planning);
     tabifyDockWidget(dock, planning);
     dock->raise();
+    createImportDock();
+    tabifyDockWidget(planning, m_importDock);
+    dock->raise();
     resizeDocks({setup, tolerances}, {440, 660}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
     QMenu *view = menuBar()->addMenu(tr("&View"));
@@ -211,6 +221,7 @@ void MainWindow::createDocks()
     view->addAction(dock->toggleViewAction());
     view->addAction(tolerances->toggleViewAction());
     view->addAction(planning->toggleViewAction());
+    view->addAction(m_importDock->toggleViewAction());
 }
 
 void MainWindow::createFileMenu()
@@ -222,6 +233,11 @@ void MainWindow::createFileMenu()
     QAction *open = file->addAction(actionIcon("document-open"), tr("&Open…"));
     open->setShortcut(QKeySequence::Open);
     connect(open, &QAction::triggered, m_files, [this] { m_files->open(); });
+    QAction *importCad = file->addAction(actionIcon("import-step"), tr("&Import STEP/IGES…"));
+    importCad->setObjectName(QStringLiteral("importCadAction"));
+    importCad->setShortcut(Qt::CTRL | Qt::Key_I);
+    importCad->setToolTip(tr("Read a turned part from a STEP or IGES solid (Ctrl+I)"));
+    connect(importCad, &QAction::triggered, m_cad, &CadFileController::importCad);
 
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     QMenu *examples = file->addMenu(tr("Open &Example"));
@@ -241,7 +257,11 @@ void MainWindow::createFileMenu()
     m_exportReportAction->setShortcut(Qt::CTRL | Qt::Key_P);
     m_exportReportAction->setObjectName(QStringLiteral("exportReportAction"));
     connect(m_exportReportAction, &QAction::triggered, m_files, [this] { m_files->exportReport(); });
-    m_toolBar->addActions({newProject, open, m_saveAction});
+    m_exportStepAction = file->addAction(tr("Export S&TEP…"));
+    m_exportStepAction->setObjectName(QStringLiteral("exportStepAction"));
+    m_exportStepAction->setToolTip(tr("Write the part as a solid revolved about its axis (STEP, mm)"));
+    connect(m_exportStepAction, &QAction::triggered, m_cad, [this] { m_cad->exportStep(); });
+    m_toolBar->addActions({newProject, open, importCad, m_saveAction});
     m_toolBar->addSeparator();
     QAction *closeAction = file->addAction(tr("&Close"));
     closeAction->setShortcut(QKeySequence::Close);
@@ -291,6 +311,7 @@ void MainWindow::updateTitle()
     m_saveAction->setEnabled(has);
     m_saveAsAction->setEnabled(has);
     m_exportReportAction->setEnabled(has);
+    m_exportStepAction->setEnabled(has);
     setWindowModified(m_document->isModified());
     setWindowTitle(has ? tr("%1[*] — TolTurn").arg(m_document->displayName()) : QStringLiteral("TolTurn"));
 }
@@ -348,6 +369,45 @@ QString MainWindow::chooseReportFile(const QString &suggestedPath)
 QString MainWindow::autosaveFolder()
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
+}
+
+void MainWindow::createImportDock()
+{
+    m_importDock = new QDockWidget(tr("Import Messages"), this);
+    m_importDock->setObjectName(QStringLiteral("importDock"));
+    m_importDock->setWidget(m_importMessages);
+    addDockWidget(Qt::BottomDockWidgetArea, m_importDock);
+    m_importMessages->showDiagnostics(tr("No STEP or IGES file imported in this session."), {});
+}
+
+// After an import: what it left out of the profile, or why it failed, in the dock in front.
+void MainWindow::showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics)
+{
+    Q_UNUSED(ok);
+    m_importMessages->showDiagnostics(heading, diagnostics);
+    if (!diagnostics.empty()) {
+        m_importDock->show();
+        m_importDock->raise();
+    }
+}
+
+QString MainWindow::chooseCadFile(const QString &startFolder)
+{
+    return QFileDialog::getOpenFileName(this, tr("Import STEP or IGES"), startFolder,
+                                        tr("STEP and IGES files (*.step *.stp *.iges *.igs);;All files (*)"));
+}
+
+QString MainWindow::chooseStepExportFile(const QString &suggestedPath)
+{
+    return QFileDialog::getSaveFileName(this, tr("Export STEP"), suggestedPath, tr("STEP files (*.step *.stp)"));
+}
+
+std::optional<CadImportChoice> MainWindow::confirmImport(const QString &fileName, const CadImportResult &read)
+{
+    ImportDialog dialog(fileName, read, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return std::nullopt;
+    return dialog.choice();
 }
 
 namespace {

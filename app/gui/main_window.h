@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "app/gui/cad_files.h"
 #include "app/gui/file_controller.h"
 
 #include <QMainWindow>
 
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QToolBar;
@@ -14,6 +16,7 @@ namespace tolturn {
 struct Preferences;
 
 class DeflectionPanel;
+class DiagnosticsPanel;
 class Autosave;
 class FeaturePanel;
 class PlanningPanel;
@@ -27,7 +30,8 @@ class RecentFiles;
 // File commands live in FileController; this class only wires them to actions and dialogs.
 class MainWindow
     : public QMainWindow
-    , public FilePrompts {
+    , public FilePrompts
+    , public CadPrompts {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget *parent = nullptr);
@@ -36,6 +40,10 @@ public:
     [[nodiscard]] ProjectDocument *document() const { return m_document; }
 
     [[nodiscard]] FileController *fileController() const { return m_files; }
+
+    [[nodiscard]] CadFileController *cadFiles() const { return m_cad; }
+
+    [[nodiscard]] DiagnosticsPanel *importMessages() const { return m_importMessages; }
 
     [[nodiscard]] ProfileView *profileView() const { return m_profileView; }
 
@@ -57,6 +65,11 @@ public:
     [[nodiscard]] SaveChoice askToSaveChanges(const QString &documentName) override;
     [[nodiscard]] bool askToRecover(const QString &documentName, const QDateTime &savedAt) override;
     [[nodiscard]] std::unique_ptr<TaskProgress> startProgress(const QString &label) override;
+    // CadPrompts (showError and startProgress as above)
+    [[nodiscard]] QString chooseCadFile(const QString &startFolder) override;
+    [[nodiscard]] QString chooseStepExportFile(const QString &suggestedPath) override;
+    [[nodiscard]] std::optional<CadImportChoice> confirmImport(const QString &fileName,
+                                                               const CadImportResult &read) override;
 
     // Where the autosave copies live (per user).
     [[nodiscard]] static QString autosaveFolder();
@@ -75,6 +88,8 @@ private:
     void createEditMenu();
     void createHelpMenu();
     void createDocks();
+    void createImportDock();
+    void showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics);
     void rebuildRecentMenu();
     void updateTitle();
     void showProject();
@@ -84,6 +99,8 @@ private:
     ProjectDocument *m_document;
     RecentFiles *m_recentFiles;
     FileController *m_files;
+    CadFileController *m_cad;
+    DiagnosticsPanel *m_importMessages;
     ProfileView *m_profileView;
     DeflectionPanel *m_deflection;
     TolerancePanel *m_tolerances;
@@ -97,6 +114,8 @@ private:
     QAction *m_saveAction = nullptr;
     QAction *m_exportReportAction = nullptr;
     QAction *m_saveAsAction = nullptr;
+    QAction *m_exportStepAction = nullptr;
+    QDockWidget *m_importDock = nullptr;
 };
 
 } // namespace tolturn

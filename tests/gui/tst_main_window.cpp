@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop program's main window, offscreen: open an example, see its drawing, survive bad
 // files with a dialog and the document untouched, save, recent files, About.
+#include "tests/gui/modal.h"
+
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
 #include "app/gui/recent_files.h"
@@ -33,6 +35,7 @@
 #include <QToolBar>
 
 using namespace tolturn;
+using tolturn::test::closeNextMessageBox;
 
 namespace {
 
@@ -58,20 +61,6 @@ QStringList dimensionTexts(const MainWindow &w)
     for (QGraphicsItem *item : itemsOfKind(w, profile_item::kDimension))
         texts << static_cast<DimensionItem *>(item)->text();
     return texts;
-}
-
-// Closes the next modal message box and returns its text through `text`.
-void closeNextMessageBox(QString *text)
-{
-    QTimer::singleShot(0, [text] {
-        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
-        if (box == nullptr) {
-            closeNextMessageBox(text); // not shown yet: try again on the next turn of the loop
-            return;
-        }
-        *text = box->text();
-        box->accept();
-    });
 }
 
 // Answers the next "unsaved changes" question with `button` and records that it was asked.

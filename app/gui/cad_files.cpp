@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/cad_files.h"
+
+#include "core/cad/step_export.h"
+#include "core/project/project_defaults.h"
+#include "widgets/document/project_document.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace tolturn {
+
+namespace {
+
+QString joined(const Diagnostics &diagnostics)
+{
+    QStringList lines;
+    for (const Diagnostic &d : diagnostics)
+        lines << d.toString();
+    return lines.join(QLatin1Char('\n'));
+}
+
+int countWarnings(const Diagnostics &diagnostics)
+{
+    return static_cast<int>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                          [](const Diagnostic &d) { return d.severity == Severity::Warning; }));
+}
+
+} // namespace
+
+CadFileController::CadFileController(ProjectDocument &document, FileController &files, CadPrompts &prompts,
+                                     QObject *parent)
+    : QObject(parent)
+    , m_document(document)
+    , m_files(files)
+    , m_prompts(prompts)
+{
+    connect(&m_watcher, &QFutureWatcher<CadImportResult>::finished, this, &CadFileController::readFinished);
+    connect(this, &CadFileController::importProgress, this, [this](int percent) {
+        if (m_progress && !m_progress->update(percent / 100.0))
+            m_cancel = true;
+    });
+}
+
+CadFileController::~CadFileController()
+{
+    // The reader calls back into this object: stop it before it goes.
+    m_cancel = true;
+    m_watcher.waitForFinished();
+}
+
+void CadFileController::importCad()
+{
+    const QString start =
+        m_document.filePath().isEmpty() ? QDir::homePath() : QFileInfo(m_document.filePath()).absolutePath();
+    const QString path = m_prompts.chooseCadFile(start);
+    if (!path.isEmpty())
+        importFile(path);
+}
+
+void CadFileController::importFile(const QString &path)
+{
+    if (isImporting())
+        return;
+    m_path = path;
+    m_confirmed = false;
+    startReading({});
+}
+
+void CadFileController::startReading(const CadImportOptions &options)
+{
+    m_cancel = false;
+    m_progress = m_prompts.startProgress(tr("Reading %1…").arg(QFileInfo(m_path).fileName()));
+    CadImportOptions run = options;
+    // Called on the reader's thread: hand the fraction to this (GUI) thread, and say whether
+    // the planner has cancelled.
+    run.progress = [this](double fraction) {
+        QMetaObject::invokeMethod(
+            this, [this, fraction] { Q_EMIT importProgress(static_cast<int>(100.0 * fraction)); },
+            Qt::QueuedConnection);
+        return !m_cancel.load();
+    };
+    m_watcher.setFuture(QtConcurrent::run([path = m_path, run] { return importCadFile(path, run); }));
+}
+
+void CadFileController::readFinished()
+{
+    m_progress.reset();
+    const CadImportResult result = m_watcher.result();
+    const QString name = QFileInfo(m_path).fileName();
+    if (result.cancelled) {
+        Q_EMIT statusMessage(tr("Import of %1 cancelled; the project is unchanged.").arg(name));
+        finish(false, tr("Import of %1 cancelled.").arg(name), {});
+        return;
+    }
+    if (!result.profile || hasErrors(result.diagnostics)) {
+        m_prompts.showError(
+            tr("Cannot import %1").arg(name),
+            tr("The part was not imported; the current project is unchanged.\n\n%1").arg(joined(result.diagnostics)));
+        finish(false, tr("%1 could not be imported:").arg(name), result.diagnostics);
+        return;
+    }
+    if (m_confirmed) {
+        openImported(result);
+        return;
+    }
+    const std::optional<CadImportChoice> choice = m_prompts.confirmImport(name, result);
+    if (!choice) {
+        finish(false, tr("Import of %1 cancelled.").arg(name), {});
+        return;
+    }
+    if (choice->solid == result.chosenSolid && choice->axis == result.chosenAxis && !choice->flip) {
+        openImported(result);
+        return;
+    }
+    // Another body, axis or end: read again with the choice (the file is parsed anew; OpenCascade
+    // keeps no state between reads).
+    m_confirmed = true;
+    CadImportOptions options;
+    options.solidIndex = choice->solid;
+    options.axisIndex = choice->axis;
+    options.flip = choice->flip;
+    startReading(options);
+}
+
+void CadFileController::openImported(const CadImportResult &result)
+{
+    const QString name = QFileInfo(m_path).fileName();
+    if (!m_files.maybeSave()) {
+        finish(false, tr("Import of %1 cancelled.").arg(name), {});
+        return;
+    }
+    PartProfile part = *result.profile;
+    if (part.name.isEmpty())
+        part.name = QFileInfo(m_path).completeBaseName();
+    m_document.load(projectForPart(std::move(part)), QString());
+    const int warnings = countWarnings(result.diagnostics);
+    Q_EMIT statusMessage(tr("Imported %1: %2 outer and %3 inner features, %4 warning(s); set material, machine, "
+                            "tool and clamping, then save.")
+                             .arg(name)
+                             .arg(m_document.project().part.outer.segments.size())
+                             .arg(m_document.project().part.inner.segments.size())
+                             .arg(warnings));
+    finish(true, tr("Imported from %1; left out or noted:").arg(name), result.diagnostics);
+}
+
+void CadFileController::finish(bool ok, const QString &heading, const Diagnostics &diagnostics)
+{
+    Q_EMIT importFinished(ok, heading, diagnostics);
+}
+
+bool CadFileController::exportStep()
+{
+    if (!m_document.hasProject())
+        return false;
+    const QFileInfo project(m_document.filePath());
+    const QString folder = project.filePath().isEmpty() ? QDir::homePath() : project.absolutePath();
+    QString path = m_prompts.chooseStepExportFile(
+        QDir(folder).filePath(QFileInfo(m_document.displayName()).completeBaseName() + QStringLiteral(".step")));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".step");
+    return exportStepTo(path);
+}
+
+bool CadFileController::exportStepTo(const QString &path)
+{
+    if (!m_document.hasProject())
+        return false;
+    const StepExportResult result = exportProfileToStep(m_document.project().part, path);
+    if (!result.ok) {
+        m_prompts.showError(tr("Cannot export %1").arg(QFileInfo(path).fileName()), result.error);
+        return false;
+    }
+    Q_EMIT statusMessage(tr("Exported the part as a revolved solid to %1").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+} // namespace tolturn

@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// File > Import STEP/IGES and Export STEP, offscreen: the file is read off the GUI thread, the
+// planner's choice of chuck end is applied, the part opens as a new project; a bad file or a
+// cancel leaves the open project as it was.
+#include "tests/gui/modal.h"
+
+#include "app/gui/cad_files.h"
+#include "app/gui/file_controller.h"
+#include "app/gui/main_window.h"
+#include "app/gui/recent_files.h"
+#include "core/cad/step_export.h"
+#include "core/io/project_file.h"
+#include "widgets/common/diagnostics_panel.h"
+#include "widgets/document/project_document.h"
+
+#include <QAction>
+#include <QFile>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace tolturn;
+
+namespace {
+
+QString example(const char *name)
+{
+    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
+}
+
+// Answers with a fixed file and choice; records what it was shown.
+class CannedPrompts
+    : public FilePrompts
+    , public CadPrompts {
+public:
+    QString file;
+    std::optional<CadImportChoice> choice = CadImportChoice{};
+    QString error;
+    int confirmations = 0;
+
+    SaveChoice askToSaveChanges(const QString &) override { return SaveChoice::Discard; }
+
+    QString chooseFileToOpen(const QString &) override { return {}; }
+
+    QString chooseFileToSave(const QString &) override { return {}; }
+
+    QString chooseReportFile(const QString &) override { return {}; }
+
+    bool askToRecover(const QString &, const QDateTime &) override { return false; }
+
+    QString chooseCadFile(const QString &) override { return file; }
+
+    QString chooseStepExportFile(const QString &) override { return file; }
+
+    void showError(const QString &title, const QString &text) override { error = title + QLatin1Char('\n') + text; }
+
+    std::unique_ptr<TaskProgress> startProgress(const QString &) override { return nullptr; }
+
+    std::optional<CadImportChoice> confirmImport(const QString &, const CadImportResult &read) override
+    {
+        ++confirmations;
+        if (choice) {
+            choice->solid = read.chosenSolid;
+            choice->axis = read.chosenAxis;
+        }
+        return choice;
+    }
+};
+
+struct Fixture {
+    ProjectDocument document;
+    RecentFiles recent;
+    CannedPrompts prompts;
+    FileController files{document, recent, prompts};
+    CadFileController cad{document, files, prompts};
+};
+
+// Imports and waits; the `ok` the controller reported.
+bool runImport(Fixture &f, const QString &path)
+{
+    QSignalSpy finished(&f.cad, &CadFileController::importFinished);
+    f.prompts.file = path;
+    f.cad.importCad();
+    if (finished.isEmpty() && !finished.wait(30000))
+        return false;
+    // A second read (another end) reports once more.
+    while (f.cad.isImporting())
+        finished.wait(30000);
+    return finished.last().constFirst().toBool();
+}
+
+PartProfile stepped()
+{
+    return readProjectFile(example("stepped-shaft-chuck.tolturn")).project->part;
+}
+
+bool near(ProfilePoint a, ProfilePoint b)
+{
+    return std::abs(a.z_mm - b.z_mm) < 1e-3 && std::abs(a.r_mm - b.r_mm) < 1e-3;
+}
+
+} // namespace
+
+class TestCadImport : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // The example shaft written as a solid comes back corner for corner (to 1 µm) as a new,
+    // unsaved project with the default set-up around it.
+    void importOpensThePart()
+    {
+        QTemporaryDir dir;
+        const QString step = dir.filePath(QStringLiteral("shaft.step"));
+        QVERIFY(exportProfileToStep(stepped(), step).ok);
+        Fixture f;
+        QVERIFY(runImport(f, step));
+        QCOMPARE(f.prompts.confirmations, 1);
+        QVERIFY(f.document.hasProject());
+        QVERIFY(f.document.filePath().isEmpty());
+        const PartProfile &got = f.document.project().part;
+        const PartProfile want = stepped();
+        QCOMPARE(got.outer.segments.size(), want.outer.segments.size());
+        for (std::size_t i = 0; i < want.outer.segments.size(); ++i) {
+            QCOMPARE(got.outer.segments[i].kind, want.outer.segments[i].kind);
+            QVERIFY2(near(got.outer.segments[i].to, want.outer.segments[i].to), qPrintable(QString::number(i)));
+        }
+        QCOMPARE(f.document.project().clamping.clampedLength_mm, 30.0);
+        QCOMPARE(f.document.project().clamping.method, ClampingMethod::Chuck);
+    }
+
+    // Chuck at the other end: the Ø56 clamping diameter (z 0 … 35 in the model) ends up at
+    // z 115 … 150, the Ø30 journal at the left.
+    void flipPutsTheOtherEndInTheChuck()
+    {
+        QTemporaryDir dir;
+        const QString step = dir.filePath(QStringLiteral("shaft.step"));
+        QVERIFY(exportProfileToStep(stepped(), step).ok);
+        Fixture f;
+        f.prompts.choice = CadImportChoice{0, 0, true};
+        QVERIFY(runImport(f, step));
+        const PartProfile &got = f.document.project().part;
+        bool clampingDiameterAtRight = false;
+        for (const Segment &s : got.outer.segments)
+            clampingDiameterAtRight =
+                clampingDiameterAtRight || (s.kind == SegmentKind::Cylinder && std::abs(s.from.r_mm - 28.0) < 1e-3 &&
+                                            std::abs(s.to.z_mm - 150.0) < 1e-3 && std::abs(s.from.z_mm - 115.0) < 1e-3);
+        QVERIFY(clampingDiameterAtRight);
+    }
+
+    // Not a STEP file: an error naming it, and the open project untouched.
+    void badFileLeavesTheProject()
+    {
+        QTemporaryDir dir;
+        const QString bad = dir.filePath(QStringLiteral("drawing.step"));
+        QFile file(bad);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("this is not ISO 10303-21\n");
+        file.close();
+        Fixture f;
+        QVERIFY(f.files.openFile(example("hollow-sleeve-tailstock.tolturn")));
+        const Project before = f.document.project();
+        QVERIFY(!runImport(f, bad));
+        QVERIFY2(f.prompts.error.contains(QStringLiteral("drawing.step")), qPrintable(f.prompts.error));
+        QCOMPARE(f.document.project(), before);
+        QCOMPARE(f.prompts.confirmations, 0);
+    }
+
+    // Cancelled (here in the confirmation): nothing changes.
+    void cancelLeavesTheProject()
+    {
+        QTemporaryDir dir;
+        const QString step = dir.filePath(QStringLiteral("shaft.step"));
+        QVERIFY(exportProfileToStep(stepped(), step).ok);
+        Fixture f;
+        QVERIFY(f.files.openFile(example("long-shaft-centres.tolturn")));
+        const Project before = f.document.project();
+        f.prompts.choice.reset();
+        QSignalSpy finished(&f.cad, &CadFileController::importFinished);
+        QVERIFY(!runImport(f, step));
+        QCOMPARE(f.document.project(), before);
+        QVERIFY(finished.last().at(1).toString().contains(QStringLiteral("cancelled")));
+    }
+
+    // Cancelled while the file is read (the reader checks at its first progress report).
+    void cancelWhileReading()
+    {
+        QTemporaryDir dir;
+        const QString step = dir.filePath(QStringLiteral("shaft.step"));
+        QVERIFY(exportProfileToStep(stepped(), step).ok);
+        Fixture f;
+        QSignalSpy finished(&f.cad, &CadFileController::importFinished);
+        f.cad.importFile(step);
+        QVERIFY(f.cad.isImporting());
+        f.cad.cancelImport();
+        QVERIFY(finished.wait(30000));
+        QVERIFY(!finished.last().constFirst().toBool());
+        QVERIFY(finished.last().at(1).toString().contains(QStringLiteral("cancelled")));
+        QCOMPARE(f.prompts.confirmations, 0);
+        QVERIFY(!f.document.hasProject());
+    }
+
+    // Export: a STEP file that reads back; a folder that does not exist gives an error naming it.
+    void exportWritesAStepFile()
+    {
+        QTemporaryDir dir;
+        Fixture f;
+        QVERIFY(f.files.openFile(example("hollow-sleeve-tailstock.tolturn")));
+        const QString step = dir.filePath(QStringLiteral("sleeve.step"));
+        QVERIFY(f.cad.exportStepTo(step));
+        const CadImportResult back = importCadFile(step);
+        QVERIFY(back.profile.has_value());
+        QCOMPARE(back.profile->inner.segments.size(), f.document.project().part.inner.segments.size());
+        QVERIFY(!f.cad.exportStepTo(QStringLiteral("/nonexistent-folder/x.step")));
+        QVERIFY(f.prompts.error.contains(QStringLiteral("x.step")));
+    }
+
+    // In the window: the menu action, and the messages dock after an import.
+    void windowShowsTheImportMessages()
+    {
+        MainWindow w;
+        QVERIFY(w.findChild<QAction *>(QStringLiteral("importCadAction")) != nullptr);
+        const auto *exportStep = w.findChild<QAction *>(QStringLiteral("exportStepAction"));
+        if (exportStep == nullptr)
+            QFAIL("no Export STEP action");
+        QCOMPARE(exportStep->isEnabled(), w.document()->hasProject()); // nothing to export without a part
+        QTemporaryDir dir;
+        const QString bad = dir.filePath(QStringLiteral("empty.step"));
+        QFile file(bad);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.close();
+        QSignalSpy finished(w.cadFiles(), &CadFileController::importFinished);
+        QString shown;
+        test::closeNextMessageBox(&shown); // the error dialog is modal
+        w.cadFiles()->importFile(bad);
+        QVERIFY(finished.wait(30000) || !finished.isEmpty());
+        QVERIFY(shown.contains(QStringLiteral("empty.step")));
+        QVERIFY(w.importMessages()->heading().contains(QStringLiteral("empty.step")));
+        QVERIFY(w.importMessages()->table()->rowCount() >= 1);
+    }
+};
+
+QTEST_MAIN(TestCadImport)
+#include "tst_cad_import.moc"
