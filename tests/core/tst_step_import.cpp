@@ -269,10 +269,10 @@ void writeStep(const TopoDS_Shape &shape, const QString &path, const char *unit 
     Interface_Static::SetCVal("write.step.unit", "MM");
 }
 
-void writeIges(const TopoDS_Shape &shape, const QString &path)
+void writeIges(const TopoDS_Shape &shape, const QString &path, const char *unit = "MM")
 {
     IGESControl_Controller::Init();
-    IGESControl_Writer writer("MM", 1); // 1: faces as B-Rep solids (IGES 186 MSBO)
+    IGESControl_Writer writer(unit, 1); // 1: faces as B-Rep solids (IGES 186 MSBO)
     QVERIFY(writer.AddShape(shape));
     writer.ComputeModel();
     QVERIFY(writer.Write(QFile::encodeName(path).constData()));
@@ -507,19 +507,34 @@ private Q_SLOTS:
         QVERIFY2(hasFaceWarning(r, QStringLiteral("cross hole"), 92.5, 96.5, 0.05), qPrintable(errorsOf(r)));
     }
 
+    void convertsInchesToMillimetres_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("unitMark"); // how the file names its unit
+        QTest::newRow("step") << QStringLiteral("pin-inch.step") << QByteArray("INCH");
+        QTest::newRow("iges") << QStringLiteral("pin-inch.igs") << QByteArray("4HINCH");
+    }
+
     void convertsInchesToMillimetres()
     {
-        const QString path = m_dir.filePath(QStringLiteral("pin-inch.step"));
-        // OpenCascade 7.6 writes coordinates as they are and only names the unit, so the part is
-        // scaled to inches first: the file then holds the pin as a CAD system working in inches
-        // would write it (Ø30 mm = 1.1811 in).
-        gp_Trsf toInches;
-        toInches.SetScale(gp_Pnt(0, 0, 0), 1.0 / 25.4);
-        writeStep(BRepBuilderAPI_Transform(pinPart(), toInches, Standard_True).Shape(), path, "INCH");
+        QFETCH(QString, name);
+        QFETCH(QByteArray, unitMark);
+        const QString path = m_dir.filePath(name);
+        // The file must hold the pin as a CAD system working in inches writes it (Ø30 mm =
+        // 1.1811 in). OpenCascade 7.6's IGES writer converts from millimetres to the unit it is
+        // given; its STEP writer writes coordinates as they are and only names the unit, so for
+        // STEP the part is scaled to inches first.
+        if (name.endsWith(QLatin1String(".igs"))) {
+            writeIges(pinPart(), path, "IN");
+        } else {
+            gp_Trsf toInches;
+            toInches.SetScale(gp_Pnt(0, 0, 0), 1.0 / 25.4);
+            writeStep(BRepBuilderAPI_Transform(pinPart(), toInches, Standard_True).Shape(), path, "INCH");
+        }
         QFile file(path);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QByteArray text = file.readAll();
-        QVERIFY2(text.contains("INCH") && text.contains("0.590551"), "the file is not written in inches");
+        QVERIFY2(text.contains(unitMark) && text.contains("0.590551"), "the file is not written in inches");
         const CadImportResult r = importCadFile(path);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
         compareProfiles(*r.profile, expectedPin());
