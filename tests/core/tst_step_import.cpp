@@ -595,6 +595,14 @@ private Q_SLOTS:
         const StepExportResult written = exportProfileToStep(expectedPin(), path);
         QVERIFY(!written.ok);
         QVERIFY2(written.error.contains(path), qPrintable(written.error));
+        PartProfile broken = expectedPin();
+        broken.outer.segments.erase(broken.outer.segments.begin() + 2); // a gap after the chamfer
+        const QString target = m_dir.filePath(QStringLiteral("broken.step"));
+        const StepExportResult refused = exportProfileToStep(broken, target);
+        QVERIFY(!refused.ok);
+        QVERIFY2(refused.error.contains(target) && refused.error.contains(QStringLiteral("part.outer[2]")),
+                 qPrintable(refused.error));
+        QVERIFY(!QFile::exists(target));
     }
 
     void badFilesGiveNamedErrors_data()
