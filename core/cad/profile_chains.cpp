@@ -378,8 +378,8 @@ void reportLeftOver(const std::vector<SectionPiece> &pieces, const std::vector<b
         out.push_back(makeWarning(
             QStringLiteral("step.face[%1]").arg(p.faces.empty() ? 0 : p.faces.front()),
             ProfileChains::tr("the revolved face %1 (from z = %2 mm to z = %3 mm, r = %4 to %5 mm) does not join the "
-                              "outer or inner contour (an inner cavity or a second blind bore) and is left out of "
-                              "the profile")
+                              "outer or inner contour (a closed inner cavity, or faces beyond a gap in the "
+                              "section) and is left out of the profile")
                 .arg(p.faces.empty() ? 0 : p.faces.front())
                 .arg(num(std::min(p.a.z_mm, p.b.z_mm)), num(std::max(p.a.z_mm, p.b.z_mm)),
                      num(std::min(p.a.r_mm, p.b.r_mm)), num(std::max(p.a.r_mm, p.b.r_mm)))));

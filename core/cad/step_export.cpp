@@ -3,6 +3,7 @@
 
 #include "core/cad/occt_guard.h"
 #include "core/part/profile_geometry.h"
+#include "core/part/profile_validation.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -19,6 +20,7 @@
 #include <Interface_Static.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopoDS_Edge.hxx>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <gp_Ax1.hxx>
@@ -103,8 +105,14 @@ bool writeStep(const TopoDS_Shape &shape, const QString &file)
 
 StepExportResult exportInto(const PartProfile &profile, const QString &path)
 {
-    if (profile.outer.empty())
-        return {false, StepExport::tr("cannot write '%1': the part has no outer contour").arg(path)};
+    // Only a valid profile bounds a face: a gap or an overlap leaves no closed wire to revolve.
+    const Diagnostics findings = validateProfile(profile);
+    const auto firstError = std::find_if(findings.begin(), findings.end(),
+                                         [](const Diagnostic &d) { return d.severity == Severity::Error; });
+    if (firstError != findings.end())
+        return {
+            false,
+            StepExport::tr("cannot write '%1': the profile has errors, first %2").arg(path, firstError->toString())};
     const TopoDS_Shape solid = revolvedSolid(profile);
     // A temporary file beside the target, renamed over it once complete (rename is atomic within
     // a file system, POSIX rename(2)), so a failed export leaves the previous file untouched.

@@ -28,6 +28,9 @@
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
 #include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -269,10 +272,10 @@ void writeStep(const TopoDS_Shape &shape, const QString &path, const char *unit 
     Interface_Static::SetCVal("write.step.unit", "MM");
 }
 
-void writeIges(const TopoDS_Shape &shape, const QString &path)
+void writeIges(const TopoDS_Shape &shape, const QString &path, const char *unit = "MM")
 {
     IGESControl_Controller::Init();
-    IGESControl_Writer writer("MM", 1); // 1: faces as B-Rep solids (IGES 186 MSBO)
+    IGESControl_Writer writer(unit, 1); // 1: faces as B-Rep solids (IGES 186 MSBO)
     QVERIFY(writer.AddShape(shape));
     writer.ComputeModel();
     QVERIFY(writer.Write(QFile::encodeName(path).constData()));
@@ -412,7 +415,13 @@ class TestStepImport : public QObject {
 
 private Q_SLOTS:
 
-    void initTestCase() { QVERIFY(m_dir.isValid()); }
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        // The writers used here print transfer statistics; only failures matter in the log.
+        for (const Handle(Message_Printer) & printer : Message::DefaultMessenger()->Printers())
+            printer->SetTraceLevel(Message_Fail);
+    }
 
     void importsKnownParts_data()
     {
@@ -507,19 +516,34 @@ private Q_SLOTS:
         QVERIFY2(hasFaceWarning(r, QStringLiteral("cross hole"), 92.5, 96.5, 0.05), qPrintable(errorsOf(r)));
     }
 
+    void convertsInchesToMillimetres_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("unitMark"); // how the file names its unit
+        QTest::newRow("step") << QStringLiteral("pin-inch.step") << QByteArray("INCH");
+        QTest::newRow("iges") << QStringLiteral("pin-inch.igs") << QByteArray("4HINCH");
+    }
+
     void convertsInchesToMillimetres()
     {
-        const QString path = m_dir.filePath(QStringLiteral("pin-inch.step"));
-        // OpenCascade 7.6 writes coordinates as they are and only names the unit, so the part is
-        // scaled to inches first: the file then holds the pin as a CAD system working in inches
-        // would write it (Ø30 mm = 1.1811 in).
-        gp_Trsf toInches;
-        toInches.SetScale(gp_Pnt(0, 0, 0), 1.0 / 25.4);
-        writeStep(BRepBuilderAPI_Transform(pinPart(), toInches, Standard_True).Shape(), path, "INCH");
+        QFETCH(QString, name);
+        QFETCH(QByteArray, unitMark);
+        const QString path = m_dir.filePath(name);
+        // The file must hold the pin as a CAD system working in inches writes it (Ø30 mm =
+        // 1.1811 in). OpenCascade 7.6's IGES writer converts from millimetres to the unit it is
+        // given; its STEP writer writes coordinates as they are and only names the unit, so for
+        // STEP the part is scaled to inches first.
+        if (name.endsWith(QLatin1String(".igs"))) {
+            writeIges(pinPart(), path, "IN");
+        } else {
+            gp_Trsf toInches;
+            toInches.SetScale(gp_Pnt(0, 0, 0), 1.0 / 25.4);
+            writeStep(BRepBuilderAPI_Transform(pinPart(), toInches, Standard_True).Shape(), path, "INCH");
+        }
         QFile file(path);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QByteArray text = file.readAll();
-        QVERIFY2(text.contains("INCH") && text.contains("0.590551"), "the file is not written in inches");
+        QVERIFY2(text.contains(unitMark) && text.contains("0.590551"), "the file is not written in inches");
         const CadImportResult r = importCadFile(path);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
         compareProfiles(*r.profile, expectedPin());
@@ -580,6 +604,14 @@ private Q_SLOTS:
         const StepExportResult written = exportProfileToStep(expectedPin(), path);
         QVERIFY(!written.ok);
         QVERIFY2(written.error.contains(path), qPrintable(written.error));
+        PartProfile broken = expectedPin();
+        broken.outer.segments.erase(broken.outer.segments.begin() + 2); // a gap after the chamfer
+        const QString target = m_dir.filePath(QStringLiteral("broken.step"));
+        const StepExportResult refused = exportProfileToStep(broken, target);
+        QVERIFY(!refused.ok);
+        QVERIFY2(refused.error.contains(target) && refused.error.contains(QStringLiteral("part.outer[2]")),
+                 qPrintable(refused.error));
+        QVERIFY(!QFile::exists(target));
     }
 
     void badFilesGiveNamedErrors_data()
