@@ -544,6 +544,81 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>ImportCommand</name>
+    <message>
+        <source>--%1 takes a number from 0, not &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no project written: the import has errors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; features that are not turned (flats, keyways, cross holes) are listed as warnings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the result as JSON.</source>
+        <translation type="unfinished">Ergebnis als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>The project file to write.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn the part end for end (z = 0 at the other end).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The body to import, from 0 (default: the largest).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis to turn about, from 0 (default: most revolved area).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The work material&apos;s id (default: %1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine&apos;s id (default: %1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The STEP or IGES file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give one STEP or IGES file and -o PROJECT</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: written, part &quot;%2&quot;, %3 mm long, %4 outer and %5 inner features, %6 warnings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the project&apos;s part as a solid of revolution to a STEP file in mm (AP214), for CAD and CAM.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The STEP file to write.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give one project file and -o FILE.step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: written</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>InsertCodes</name>
     <message>
         <source>insert code &quot;%1&quot;: %2</source>
@@ -946,6 +1021,81 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Export Plot</source>
         <translation>Diagramm exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>ProfileChains</name>
+    <message>
+        <source>left end face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right end face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>shoulder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cylinder %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cone</source>
+        <translation type="unfinished">Kegel</translation>
+    </message>
+    <message>
+        <source>chamfer</source>
+        <translation type="unfinished">Fase</translation>
+    </message>
+    <message>
+        <source>radius R%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bore bottom</source>
+        <translation type="unfinished">Bohrungsgrund</translation>
+    </message>
+    <message>
+        <source>bore step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bore %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>drill point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bore cone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bore chamfer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bore radius R%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the bore at the right end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the left end is kept; the right end face is closed to the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the bore at the left end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the right end is kept; the left end face is closed to the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the revolved face %1 (from z = %2 mm to z = %3 mm, r = %4 to %5 mm) does not join the outer or inner contour (a closed inner cavity, or faces beyond a gap in the section) and is left out of the profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the revolved faces do not form a closed section from the left end (z = %1 mm) to the right end (z = %2 mm): the contour from the left end stops at z = %3 mm, r = %4 mm, where a face is missing or not turned (see the warnings)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1686,6 +1836,171 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>RevolvedFaces</name>
+    <message>
+        <source>a plane not perpendicular to the axis (a flat or a side of a keyway)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a cylinder parallel to the axis but off it (an eccentric or an off-centre hole)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a cylinder across the axis (a cross hole)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a cone whose axis is not the part axis (a countersink of a cross hole)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a torus whose axis is not the part axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a sphere whose centre is off the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a free-form (B-spline) surface, such as a modelled thread or an engraving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a surface of revolution of a free-form curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an extruded free-form surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a surface of a kind TolTurn does not turn (offset or other)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a part of a turned surface that does not go round (the end wall of a keyway or a slot)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>StepExport</name>
+    <message>
+        <source>cannot write &apos;%1&apos;: the profile has errors, first %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation type="unfinished">„%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>OpenCascade could not write the solid to &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: renaming the temporary file failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenCascade failed while writing &apos;%1&apos;: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing &apos;%1&apos; failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>StepImport</name>
+    <message>
+        <source>&apos;%1&apos; is not a STEP file: it does not begin with &apos;ISO-10303-21;&apos; (ISO 10303-21)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is truncated: a STEP file ends with &apos;END-ISO-10303-21;&apos;, which is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an IGES file: its first line is not a Start section record (IGES 5.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is truncated: an IGES file ends with a Terminate section record, which is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not exist</source>
+        <translation type="unfinished">„%1“ existiert nicht</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos;: %2</source>
+        <translation type="unfinished">„%1“ kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>OpenCascade cannot parse &apos;%1&apos; as a STEP file (ISO 10303-21)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenCascade cannot parse &apos;%1&apos; as an IGES file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; holds no shape that OpenCascade can transfer (no solid, shell or face)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>there is no %1 %2: the file has %3 (numbered from 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file holds %1 bodies; body %2 (%3 mm³) is imported, choose another with the solid option</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the body in &apos;%1&apos; has no cylindrical, conical or toroidal face: it is not a turned part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the body has revolved faces about %1 different axes; axis %2 (%3 mm² of revolved faces) is the part axis, choose another with the axis option</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face %1 is %2, from z = %3 mm to z = %4 mm; it is not rotationally symmetric about the part axis and is left out of the profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a STEP or IGES file: TolTurn reads files ending in .step, .stp, .iges or .igs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; holds no solid, shell or face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenCascade failed while reading &apos;%1&apos;: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading &apos;%1&apos; failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>TableCopy</name>
     <message>
         <source>Copy Table as CSV</source>
@@ -1838,6 +2153,51 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>tolturn::CadFileController</name>
+    <message>
+        <source>Reading %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled; the project is unchanged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot import %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The part was not imported; the current project is unchanged.
+
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 could not be imported:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported %1: %2 outer and %3 inner features, %4 warning(s); set material, machine, tool and clamping, then save.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported from %1; left out or noted:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot export %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported the part as a revolved solid to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tolturn::DeflectionPanel</name>
     <message>
         <source>Outer contour</source>
@@ -1938,6 +2298,29 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>axial run-out e [%1]</source>
         <translation>Planlauf e [%1]</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::DiagnosticsPanel</name>
+    <message>
+        <source>Severity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2214,6 +2597,49 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>tolturn::ImportDialog</name>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: a turned part %2 mm long, Ø max %3 mm, with %4 outer and %5 inner features; %6 warning(s), listed after the import.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Body %1: %2 mm³, %3 faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1: through %2 along %3, %4 revolved faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The common axis of the body&apos;s cylindrical, conical, toroidal and spherical faces; the one with the most revolved area is proposed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chuck at the model&apos;s other end (turn the part end for end)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>z = 0 is the part&apos;s left end, the end held in the chuck. Tick to put the model&apos;s right end there instead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Body:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Axis:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tolturn::MainWindow</name>
     <message>
         <source>Open a project (File &gt; Open) or an example part (File &gt; Open Example).</source>
@@ -2406,6 +2832,46 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Find the cutting conditions that hold every tolerance at least time or cost (F5)</source>
         <translation>Die Schnittwerte finden, die jede Toleranz bei geringster Zeit oder geringsten Kosten einhalten (F5)</translation>
+    </message>
+    <message>
+        <source>&amp;Import STEP/IGES…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read a turned part from a STEP or IGES solid (Ctrl+I)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export S&amp;TEP…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the part as a solid revolved about its axis (STEP, mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No STEP or IGES file imported in this session.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import STEP or IGES</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STEP and IGES files (*.step *.stp *.iges *.igs);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export STEP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STEP files (*.step *.stp)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

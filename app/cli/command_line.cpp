@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/command_line.h"
 
+#include "app/cli/cli_common.h"
 #include "app/cli/import_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
@@ -49,11 +50,6 @@ struct Command {
 
 const std::vector<Command> &commands();
 
-QString programName()
-{
-    return QStringLiteral("tolturn-cli");
-}
-
 QString usage()
 {
     QString text = CommandLine::tr("Usage: %1 [--help] [--version] COMMAND [ARGUMENTS]\n\n"
@@ -76,32 +72,12 @@ QString versionText()
     return text;
 }
 
-// Parses the options of one command; handles --help. Returns nullopt-like -1 to go on, or an
-// exit code when the command must stop here.
+// Parses the options of one command; handles --help. Returns -1 to go on, or an exit code when
+// the command must stop here.
 int parseCommand(QCommandLineParser &parser, const Command &command, const QStringList &args, QTextStream &out,
                  QTextStream &err)
 {
-    parser.setApplicationDescription(command.summary);
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, CommandLine::tr("Show this help."));
-    parser.addOption(help);
-    if (!parser.parse(args)) {
-        err << programName() << ' ' << command.name << ": " << parser.errorText() << '\n';
-        return kExitUsage;
-    }
-    if (parser.isSet(help)) {
-        out << CommandLine::tr("Usage: %1 %2").arg(programName(), command.synopsis) << "\n\n"
-            << parser.helpText().section(QLatin1Char('\n'), 2);
-        return kExitOk;
-    }
-    return -1;
-}
-
-QJsonObject diagnosticJson(const Diagnostic &d)
-{
-    return {{QStringLiteral("severity"),
-             d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning")},
-            {QStringLiteral("field"), d.field},
-            {QStringLiteral("message"), d.message}};
+    return tolturn::parseCommand(parser, command.name, command.synopsis, command.summary, args, out, err);
 }
 
 // The project file of a command that takes exactly one; empty after printing the usage error.

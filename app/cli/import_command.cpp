@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/import_command.h"
 
+#include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
 #include "core/cad/step_export.h"
 #include "core/cad/step_import.h"
 #include "core/io/project_file.h"
+#include "core/project/project_defaults.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -23,39 +25,6 @@ struct ImportCommand {
     Q_DECLARE_TR_FUNCTIONS(ImportCommand)
 };
 
-// What an imported part gets besides its profile: the starting values of File > New in the
-// desktop program (app/gui/file_controller.cpp), so that the project is valid and ready to
-// tolerance; the planner then sets the real material, machine and tool.
-constexpr const char *kDefaultMaterial = "C45E-N";
-constexpr const char *kDefaultMachine = "haas-st-20";
-constexpr double kDefaultClampedLength_mm = 30.0;
-constexpr double kDefaultSpeed_m_min = 200.0;
-constexpr double kDefaultFeed_mm_rev = 0.2;
-constexpr double kDefaultDepth_mm = 0.5;
-
-QString programName()
-{
-    return QStringLiteral("tolturn-cli");
-}
-
-// --help and parse errors; -1 to go on, otherwise the exit code.
-int parse(QCommandLineParser &parser, const QString &synopsis, const QStringList &args, QTextStream &out,
-          QTextStream &err)
-{
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, ImportCommand::tr("Show this help."));
-    parser.addOption(help);
-    if (!parser.parse(args)) {
-        err << args.value(0) << ": " << parser.errorText() << '\n';
-        return kExitUsage;
-    }
-    if (parser.isSet(help)) {
-        out << ImportCommand::tr("Usage: %1 %2").arg(programName(), synopsis) << "\n\n"
-            << parser.helpText().section(QLatin1Char('\n'), 2);
-        return kExitOk;
-    }
-    return -1;
-}
-
 std::optional<int> indexOption(const QCommandLineParser &parser, const QCommandLineOption &option, QTextStream &err)
 {
     if (!parser.isSet(option))
@@ -73,24 +42,10 @@ std::optional<int> indexOption(const QCommandLineParser &parser, const QCommandL
 
 Project projectFor(const PartProfile &part, const QString &material, const QString &machine)
 {
-    Project p;
-    p.part = part;
+    Project p = projectForPart(part);
     p.materialId = material;
     p.machineId = machine;
-    p.tool.insertCode = QStringLiteral("CNMG 120408");
-    p.tool.holderCode = QStringLiteral("PCLNR 2525M12");
-    // 30 mm in the jaws, or a third of a part shorter than 90 mm: something must stick out.
-    p.clamping = {ClampingMethod::Chuck, std::min(kDefaultClampedLength_mm, part.length_mm() / 3.0)};
-    p.passes = {{PassKind::Finishing, kDefaultSpeed_m_min, kDefaultFeed_mm_rev, kDefaultDepth_mm}};
     return p;
-}
-
-QJsonObject diagnosticJson(const Diagnostic &d)
-{
-    return {{QStringLiteral("severity"),
-             d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning")},
-            {QStringLiteral("field"), d.field},
-            {QStringLiteral("message"), d.message}};
 }
 
 QJsonArray vectorJson(const double (&v)[3])
@@ -164,16 +119,18 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
                                   QStringLiteral("N"));
     const QCommandLineOption material(
         QStringLiteral("material"),
-        ImportCommand::tr("The work material's id (default: %1).").arg(QLatin1String(kDefaultMaterial)),
-        QStringLiteral("ID"), QLatin1String(kDefaultMaterial));
+        ImportCommand::tr("The work material's id (default: %1).").arg(QLatin1String(kDefaultMaterialId)),
+        QStringLiteral("ID"), QLatin1String(kDefaultMaterialId));
     const QCommandLineOption machine(
         QStringLiteral("machine"),
-        ImportCommand::tr("The machine's id (default: %1).").arg(QLatin1String(kDefaultMachine)), QStringLiteral("ID"),
-        QLatin1String(kDefaultMachine));
+        ImportCommand::tr("The machine's id (default: %1).").arg(QLatin1String(kDefaultMachineId)),
+        QStringLiteral("ID"), QLatin1String(kDefaultMachineId));
     parser.addOptions({json, output, flip, solid, axis, material, machine});
     parser.addPositionalArgument(QStringLiteral("file"), ImportCommand::tr("The STEP or IGES file."),
                                  QStringLiteral("FILE"));
-    if (const int stop = parse(parser, importSynopsis(), args, out, err); stop >= 0)
+    if (const int stop =
+            parseCommand(parser, QStringLiteral("import"), importSynopsis(), importSummary(), args, out, err);
+        stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
         err << programName() << " import: " << ImportCommand::tr("give one STEP or IGES file and -o PROJECT") << '\n';
@@ -232,7 +189,9 @@ int runExportStep(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOption(output);
     parser.addPositionalArgument(QStringLiteral("project"), ImportCommand::tr("The project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parse(parser, exportStepSynopsis(), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, QStringLiteral("export-step"), exportStepSynopsis(), exportStepSummary(),
+                                      args, out, err);
+        stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
         err << programName() << " export-step: " << ImportCommand::tr("give one project file and -o FILE.step") << '\n';

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/cli_common.h"
+
+#include "app/cli/command_line.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QTextStream>
+
+namespace tolturn {
+
+namespace {
+struct CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
+} // namespace
+
+QString programName()
+{
+    return QStringLiteral("tolturn-cli");
+}
+
+int parseCommand(QCommandLineParser &parser, const QString &name, const QString &synopsis, const QString &summary,
+                 const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    parser.setApplicationDescription(summary);
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, CommandLine::tr("Show this help."));
+    parser.addOption(help);
+    if (!parser.parse(args)) {
+        err << programName() << ' ' << name << ": " << parser.errorText() << '\n';
+        return kExitUsage;
+    }
+    if (parser.isSet(help)) {
+        out << CommandLine::tr("Usage: %1 %2").arg(programName(), synopsis) << "\n\n"
+            << parser.helpText().section(QLatin1Char('\n'), 2);
+        return kExitOk;
+    }
+    return -1;
+}
+
+QJsonObject diagnosticJson(const Diagnostic &d)
+{
+    return {{QStringLiteral("severity"),
+             d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning")},
+            {QStringLiteral("field"), d.field},
+            {QStringLiteral("message"), d.message}};
+}
+
+} // namespace tolturn
