@@ -547,75 +547,75 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <name>ImportCommand</name>
     <message>
         <source>--%1 takes a number from 0, not &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 erwartet eine Zahl ab 0, nicht „%2“</translation>
     </message>
     <message>
         <source>no project written: the import has errors</source>
-        <translation type="unfinished"></translation>
+        <translation>es wurde kein Projekt geschrieben: der Import enthält Fehler</translation>
     </message>
     <message>
         <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; features that are not turned (flats, keyways, cross holes) are listed as warnings.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Teil aus STEP (.step, .stp) oder IGES (.iges, .igs) in ein neues Projekt umwandeln: Außen- und Innenkontur in mm, z = 0 am linken Ende; nicht gedrehte Formelemente (Abflachungen, Passfedernuten, Querbohrungen) werden als Warnungen aufgeführt.</translation>
     </message>
     <message>
         <source>Print the result as JSON.</source>
-        <translation type="unfinished">Ergebnis als JSON ausgeben.</translation>
+        <translation>Ergebnis als JSON ausgeben.</translation>
     </message>
     <message>
         <source>The project file to write.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu schreibende Projektdatei.</translation>
     </message>
     <message>
         <source>Turn the part end for end (z = 0 at the other end).</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil wenden (z = 0 am anderen Ende).</translation>
     </message>
     <message>
         <source>The body to import, from 0 (default: the largest).</source>
-        <translation type="unfinished"></translation>
+        <translation>Der zu importierende Körper, ab 0 (Standard: der größte).</translation>
     </message>
     <message>
         <source>The axis to turn about, from 0 (default: most revolved area).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Drehachse, ab 0 (Standard: die mit der größten Rotationsfläche).</translation>
     </message>
     <message>
         <source>The work material&apos;s id (default: %1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ID des Werkstoffs (Standard: %1).</translation>
     </message>
     <message>
         <source>The machine&apos;s id (default: %1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ID der Maschine (Standard: %1).</translation>
     </message>
     <message>
         <source>The STEP or IGES file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die STEP- oder IGES-Datei.</translation>
     </message>
     <message>
         <source>give one STEP or IGES file and -o PROJECT</source>
-        <translation type="unfinished"></translation>
+        <translation>geben Sie eine STEP- oder IGES-Datei und -o PROJEKT an</translation>
     </message>
     <message>
         <source>%1: written, part &quot;%2&quot;, %3 mm long, %4 outer and %5 inner features, %6 warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: geschrieben, Teil „%2“, %3 mm lang, %4 äußere und %5 innere Formelemente, %6 Warnungen</translation>
     </message>
     <message>
         <source>Write the project&apos;s part as a solid of revolution to a STEP file in mm (AP214), for CAD and CAM.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil des Projekts als Rotationskörper in eine STEP-Datei in mm (AP214) schreiben, für CAD und CAM.</translation>
     </message>
     <message>
         <source>The STEP file to write.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu schreibende STEP-Datei.</translation>
     </message>
     <message>
         <source>The project file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Projektdatei.</translation>
     </message>
     <message>
         <source>give one project file and -o FILE.step</source>
-        <translation type="unfinished"></translation>
+        <translation>geben Sie eine Projektdatei und -o DATEI.step an</translation>
     </message>
     <message>
         <source>%1: written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: geschrieben</translation>
     </message>
 </context>
 <context>
@@ -1027,75 +1027,75 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <name>ProfileChains</name>
     <message>
         <source>left end face</source>
-        <translation type="unfinished"></translation>
+        <translation>linke Stirnfläche</translation>
     </message>
     <message>
         <source>right end face</source>
-        <translation type="unfinished"></translation>
+        <translation>rechte Stirnfläche</translation>
     </message>
     <message>
         <source>shoulder</source>
-        <translation type="unfinished"></translation>
+        <translation>Absatzfläche</translation>
     </message>
     <message>
         <source>cylinder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zylinder %1</translation>
     </message>
     <message>
         <source>cone</source>
-        <translation type="unfinished">Kegel</translation>
+        <translation>Kegel</translation>
     </message>
     <message>
         <source>chamfer</source>
-        <translation type="unfinished">Fase</translation>
+        <translation>Fase</translation>
     </message>
     <message>
         <source>radius R%1</source>
-        <translation type="unfinished"></translation>
+        <translation>Radius R%1</translation>
     </message>
     <message>
         <source>bore bottom</source>
-        <translation type="unfinished">Bohrungsgrund</translation>
+        <translation>Bohrungsgrund</translation>
     </message>
     <message>
         <source>bore step</source>
-        <translation type="unfinished"></translation>
+        <translation>Bohrungsabsatz</translation>
     </message>
     <message>
         <source>bore %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bohrung %1</translation>
     </message>
     <message>
         <source>drill point</source>
-        <translation type="unfinished"></translation>
+        <translation>Bohrspitze</translation>
     </message>
     <message>
         <source>bore cone</source>
-        <translation type="unfinished"></translation>
+        <translation>Bohrungskegel</translation>
     </message>
     <message>
         <source>bore chamfer</source>
-        <translation type="unfinished"></translation>
+        <translation>Bohrungsfase</translation>
     </message>
     <message>
         <source>bore radius R%1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bohrungsradius R%1</translation>
     </message>
     <message>
         <source>the bore at the right end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the left end is kept; the right end face is closed to the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>die Bohrung am rechten Ende, von z = %1 mm bis z = %2 mm (Fläche %3 und die folgenden Flächen), wird weggelassen: ein Profil hat nur eine Innenkontur, und die tiefere Bohrung am linken Ende wird beibehalten; die rechte Stirnfläche wird bis zur Achse geschlossen</translation>
     </message>
     <message>
         <source>the bore at the left end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the right end is kept; the left end face is closed to the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>die Bohrung am linken Ende, von z = %1 mm bis z = %2 mm (Fläche %3 und die folgenden Flächen), wird weggelassen: ein Profil hat nur eine Innenkontur, und die tiefere Bohrung am rechten Ende wird beibehalten; die linke Stirnfläche wird bis zur Achse geschlossen</translation>
     </message>
     <message>
         <source>the revolved face %1 (from z = %2 mm to z = %3 mm, r = %4 to %5 mm) does not join the outer or inner contour (a closed inner cavity, or faces beyond a gap in the section) and is left out of the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>die Rotationsfläche %1 (von z = %2 mm bis z = %3 mm, r = %4 bis %5 mm) schließt weder an die Außen- noch an die Innenkontur an (ein geschlossener innerer Hohlraum oder Flächen jenseits einer Lücke im Längsschnitt) und wird im Profil weggelassen</translation>
     </message>
     <message>
         <source>the revolved faces do not form a closed section from the left end (z = %1 mm) to the right end (z = %2 mm): the contour from the left end stops at z = %3 mm, r = %4 mm, where a face is missing or not turned (see the warnings)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Rotationsflächen bilden keinen geschlossenen Längsschnitt vom linken Ende (z = %1 mm) bis zum rechten Ende (z = %2 mm): die Kontur vom linken Ende bricht bei z = %3 mm, r = %4 mm ab, wo eine Fläche fehlt oder nicht gedreht ist (siehe die Warnungen)</translation>
     </message>
 </context>
 <context>
@@ -1839,165 +1839,165 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <name>RevolvedFaces</name>
     <message>
         <source>a plane not perpendicular to the axis (a flat or a side of a keyway)</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Ebene, die nicht senkrecht zur Achse steht (eine Abflachung oder eine Flanke einer Passfedernut)</translation>
     </message>
     <message>
         <source>a cylinder parallel to the axis but off it (an eccentric or an off-centre hole)</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Zylinder parallel zur Achse, aber außerhalb von ihr (ein Exzenter oder eine außermittige Bohrung)</translation>
     </message>
     <message>
         <source>a cylinder across the axis (a cross hole)</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Zylinder quer zur Achse (eine Querbohrung)</translation>
     </message>
     <message>
         <source>a cone whose axis is not the part axis (a countersink of a cross hole)</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Kegel, dessen Achse nicht die Teilachse ist (eine Senkung einer Querbohrung)</translation>
     </message>
     <message>
         <source>a torus whose axis is not the part axis</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Torus, dessen Achse nicht die Teilachse ist</translation>
     </message>
     <message>
         <source>a sphere whose centre is off the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Kugel, deren Mittelpunkt nicht auf der Achse liegt</translation>
     </message>
     <message>
         <source>a free-form (B-spline) surface, such as a modelled thread or an engraving</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Freiformfläche (B-Spline), etwa ein modelliertes Gewinde oder eine Gravur</translation>
     </message>
     <message>
         <source>a surface of revolution of a free-form curve</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Rotationsfläche einer Freiformkurve</translation>
     </message>
     <message>
         <source>an extruded free-form surface</source>
-        <translation type="unfinished"></translation>
+        <translation>eine extrudierte Freiformfläche</translation>
     </message>
     <message>
         <source>a surface of a kind TolTurn does not turn (offset or other)</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Fläche einer Art, die TolTurn nicht dreht (Offsetfläche oder andere)</translation>
     </message>
     <message>
         <source>a part of a turned surface that does not go round (the end wall of a keyway or a slot)</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Abschnitt einer gedrehten Fläche, der nicht ganz umläuft (die Stirnwand einer Passfedernut oder einer Nut)</translation>
     </message>
 </context>
 <context>
     <name>StepExport</name>
     <message>
         <source>cannot write &apos;%1&apos;: the profile has errors, first %2</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ kann nicht geschrieben werden: das Profil enthält Fehler, der erste: %2</translation>
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
-        <translation type="unfinished">„%1“ kann nicht geschrieben werden: %2</translation>
+        <translation>„%1“ kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
         <source>OpenCascade could not write the solid to &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade konnte den Körper nicht in „%1“ schreiben</translation>
     </message>
     <message>
         <source>cannot save &apos;%1&apos;: renaming the temporary file failed</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ kann nicht gespeichert werden: das Umbenennen der temporären Datei ist fehlgeschlagen</translation>
     </message>
     <message>
         <source>OpenCascade failed while writing &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler in OpenCascade beim Schreiben von „%1“: %2</translation>
     </message>
     <message>
         <source>writing &apos;%1&apos; failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>das Schreiben von „%1“ ist fehlgeschlagen: %2</translation>
     </message>
 </context>
 <context>
     <name>StepImport</name>
     <message>
         <source>&apos;%1&apos; is not a STEP file: it does not begin with &apos;ISO-10303-21;&apos; (ISO 10303-21)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine STEP-Datei: sie beginnt nicht mit „ISO-10303-21;“ (ISO 10303-21)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is truncated: a STEP file ends with &apos;END-ISO-10303-21;&apos;, which is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist unvollständig: eine STEP-Datei endet mit „END-ISO-10303-21;“, was hier fehlt</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not an IGES file: its first line is not a Start section record (IGES 5.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine IGES-Datei: ihre erste Zeile ist kein Datensatz des Start-Abschnitts (IGES 5.3)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is truncated: an IGES file ends with a Terminate section record, which is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist unvollständig: eine IGES-Datei endet mit einem Datensatz des Terminate-Abschnitts, der hier fehlt</translation>
     </message>
     <message>
         <source>&apos;%1&apos; does not exist</source>
-        <translation type="unfinished">„%1“ existiert nicht</translation>
+        <translation>„%1“ existiert nicht</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a file</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine Datei</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist leer</translation>
     </message>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
-        <translation type="unfinished">„%1“ kann nicht geöffnet werden: %2</translation>
+        <translation>„%1“ kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
         <source>OpenCascade cannot parse &apos;%1&apos; as a STEP file (ISO 10303-21)</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade kann „%1“ nicht als STEP-Datei (ISO 10303-21) einlesen</translation>
     </message>
     <message>
         <source>OpenCascade cannot parse &apos;%1&apos; as an IGES file</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade kann „%1“ nicht als IGES-Datei einlesen</translation>
     </message>
     <message>
         <source>&apos;%1&apos; holds no shape that OpenCascade can transfer (no solid, shell or face)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ enthält keine Geometrie, die OpenCascade übernehmen kann (keinen Körper, keine Schale und keine Fläche)</translation>
     </message>
     <message>
         <source>there is no %1 %2: the file has %3 (numbered from 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 gibt es nicht: die Datei enthält %3 (nummeriert ab 0)</translation>
     </message>
     <message>
         <source>body</source>
-        <translation type="unfinished"></translation>
+        <translation>Körper</translation>
     </message>
     <message>
         <source>the file holds %1 bodies; body %2 (%3 mm³) is imported, choose another with the solid option</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei enthält %1 Körper; Körper %2 (%3 mm³) wird importiert, wählen Sie mit der Option solid einen anderen</translation>
     </message>
     <message>
         <source>the body in &apos;%1&apos; has no cylindrical, conical or toroidal face: it is not a turned part</source>
-        <translation type="unfinished"></translation>
+        <translation>der Körper in „%1“ hat keine zylindrische, kegelige oder torusförmige Fläche: er ist kein Drehteil</translation>
     </message>
     <message>
         <source>axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Achse</translation>
     </message>
     <message>
         <source>the body has revolved faces about %1 different axes; axis %2 (%3 mm² of revolved faces) is the part axis, choose another with the axis option</source>
-        <translation type="unfinished"></translation>
+        <translation>der Körper hat Rotationsflächen um %1 verschiedene Achsen; Achse %2 (%3 mm² Rotationsflächen) ist die Teilachse, wählen Sie mit der Option axis eine andere</translation>
     </message>
     <message>
         <source>face %1 is %2, from z = %3 mm to z = %4 mm; it is not rotationally symmetric about the part axis and is left out of the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Fläche %1 ist %2, von z = %3 mm bis z = %4 mm; sie ist nicht rotationssymmetrisch zur Teilachse und wird im Profil weggelassen</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a STEP or IGES file: TolTurn reads files ending in .step, .stp, .iges or .igs</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine STEP- oder IGES-Datei: TolTurn liest Dateien mit den Endungen .step, .stp, .iges oder .igs</translation>
     </message>
     <message>
         <source>&apos;%1&apos; holds no solid, shell or face</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ enthält keinen Körper, keine Schale und keine Fläche</translation>
     </message>
     <message>
         <source>OpenCascade failed while reading &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler in OpenCascade beim Lesen von „%1“: %2</translation>
     </message>
     <message>
         <source>reading &apos;%1&apos; failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>das Lesen von „%1“ ist fehlgeschlagen: %2</translation>
     </message>
 </context>
 <context>
@@ -2156,45 +2156,47 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <name>tolturn::CadFileController</name>
     <message>
         <source>Reading %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 wird gelesen…</translation>
     </message>
     <message>
         <source>Import of %1 cancelled; the project is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>Import von %1 abgebrochen; das Projekt ist unverändert.</translation>
     </message>
     <message>
         <source>Import of %1 cancelled.</source>
-        <translation type="unfinished"></translation>
+        <translation>Import von %1 abgebrochen.</translation>
     </message>
     <message>
         <source>Cannot import %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht importiert werden</translation>
     </message>
     <message>
         <source>The part was not imported; the current project is unchanged.
 
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil wurde nicht importiert; das aktuelle Projekt ist unverändert.
+
+%1</translation>
     </message>
     <message>
         <source>%1 could not be imported:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht importiert werden:</translation>
     </message>
     <message>
         <source>Imported %1: %2 outer and %3 inner features, %4 warning(s); set material, machine, tool and clamping, then save.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 importiert: %2 äußere und %3 innere Formelemente, %4 Warnung(en); legen Sie Werkstoff, Maschine, Werkzeug und Aufspannung fest und speichern Sie dann.</translation>
     </message>
     <message>
         <source>Imported from %1; left out or noted:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus %1 importiert; weggelassen oder vermerkt:</translation>
     </message>
     <message>
         <source>Cannot export %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht exportiert werden</translation>
     </message>
     <message>
         <source>Exported the part as a revolved solid to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil wurde als Rotationskörper nach %1 exportiert</translation>
     </message>
 </context>
 <context>
@@ -2304,23 +2306,23 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <name>tolturn::DiagnosticsPanel</name>
     <message>
         <source>Severity</source>
-        <translation type="unfinished"></translation>
+        <translation>Schweregrad</translation>
     </message>
     <message>
         <source>Where</source>
-        <translation type="unfinished"></translation>
+        <translation>Ort</translation>
     </message>
     <message>
         <source>Message</source>
-        <translation type="unfinished"></translation>
+        <translation>Meldung</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler</translation>
     </message>
     <message>
         <source>warning</source>
-        <translation type="unfinished"></translation>
+        <translation>Warnung</translation>
     </message>
 </context>
 <context>
@@ -2600,43 +2602,43 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <name>tolturn::ImportDialog</name>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;: a turned part %2 mm long, Ø max %3 mm, with %4 outer and %5 inner features; %6 warning(s), listed after the import.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: ein Drehteil, %2 mm lang, Ø max. %3 mm, mit %4 äußeren und %5 inneren Formelementen; %6 Warnung(en), die nach dem Import aufgeführt werden.</translation>
     </message>
     <message>
         <source>Import %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 importieren</translation>
     </message>
     <message>
         <source>Body %1: %2 mm³, %3 faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Körper %1: %2 mm³, %3 Flächen</translation>
     </message>
     <message>
         <source>Axis %1: through %2 along %3, %4 revolved faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Achse %1: durch %2 in Richtung %3, %4 Rotationsflächen</translation>
     </message>
     <message>
         <source>The common axis of the body&apos;s cylindrical, conical, toroidal and spherical faces; the one with the most revolved area is proposed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die gemeinsame Achse der zylindrischen, kegeligen, torusförmigen und kugelförmigen Flächen des Körpers; vorgeschlagen wird die Achse mit der größten Rotationsfläche.</translation>
     </message>
     <message>
         <source>Chuck at the model&apos;s other end (turn the part end for end)</source>
-        <translation type="unfinished"></translation>
+        <translation>Spannfutter am anderen Ende des Modells (Teil wenden)</translation>
     </message>
     <message>
         <source>z = 0 is the part&apos;s left end, the end held in the chuck. Tick to put the model&apos;s right end there instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>z = 0 ist das linke Ende des Teils, das im Spannfutter gehaltene Ende. Aktivieren Sie diese Option, um stattdessen das rechte Ende des Modells dorthin zu legen.</translation>
     </message>
     <message>
         <source>&amp;Body:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Körper:</translation>
     </message>
     <message>
         <source>&amp;Axis:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Achse:</translation>
     </message>
     <message>
         <source>&amp;Import</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Importieren</translation>
     </message>
 </context>
 <context>
@@ -2835,43 +2837,43 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>&amp;Import STEP/IGES…</source>
-        <translation type="unfinished"></translation>
+        <translation>STEP/IGES &amp;importieren…</translation>
     </message>
     <message>
         <source>Read a turned part from a STEP or IGES solid (Ctrl+I)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Drehteil aus einem STEP- oder IGES-Körper einlesen (Strg+I)</translation>
     </message>
     <message>
         <source>Export S&amp;TEP…</source>
-        <translation type="unfinished"></translation>
+        <translation>S&amp;TEP exportieren…</translation>
     </message>
     <message>
         <source>Write the part as a solid revolved about its axis (STEP, mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Teil als Rotationskörper um seine Achse schreiben (STEP, mm)</translation>
     </message>
     <message>
         <source>Import Messages</source>
-        <translation type="unfinished"></translation>
+        <translation>Importmeldungen</translation>
     </message>
     <message>
         <source>No STEP or IGES file imported in this session.</source>
-        <translation type="unfinished"></translation>
+        <translation>In dieser Sitzung wurde keine STEP- oder IGES-Datei importiert.</translation>
     </message>
     <message>
         <source>Import STEP or IGES</source>
-        <translation type="unfinished"></translation>
+        <translation>STEP oder IGES importieren</translation>
     </message>
     <message>
         <source>STEP and IGES files (*.step *.stp *.iges *.igs);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>STEP- und IGES-Dateien (*.step *.stp *.iges *.igs);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Export STEP</source>
-        <translation type="unfinished"></translation>
+        <translation>STEP exportieren</translation>
     </message>
     <message>
         <source>STEP files (*.step *.stp)</source>
-        <translation type="unfinished"></translation>
+        <translation>STEP-Dateien (*.step *.stp)</translation>
     </message>
 </context>
 <context>

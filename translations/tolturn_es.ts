@@ -547,75 +547,75 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <name>ImportCommand</name>
     <message>
         <source>--%1 takes a number from 0, not &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 admite un número a partir de 0, no &apos;%2&apos;</translation>
     </message>
     <message>
         <source>no project written: the import has errors</source>
-        <translation type="unfinished"></translation>
+        <translation>no se ha escrito ningún proyecto: la importación tiene errores</translation>
     </message>
     <message>
         <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; features that are not turned (flats, keyways, cross holes) are listed as warnings.</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir una pieza STEP (.step, .stp) o IGES (.iges, .igs) en un proyecto nuevo: el contorno exterior y el interior en mm, z = 0 en el extremo izquierdo; los elementos que no se tornean (planos, chaveteros, agujeros transversales) se indican como avisos.</translation>
     </message>
     <message>
         <source>Print the result as JSON.</source>
-        <translation type="unfinished">Escribir el resultado en formato JSON.</translation>
+        <translation>Escribir el resultado en formato JSON.</translation>
     </message>
     <message>
         <source>The project file to write.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo de proyecto de salida.</translation>
     </message>
     <message>
         <source>Turn the part end for end (z = 0 at the other end).</source>
-        <translation type="unfinished"></translation>
+        <translation>Dar la vuelta a la pieza (z = 0 en el otro extremo).</translation>
     </message>
     <message>
         <source>The body to import, from 0 (default: the largest).</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuerpo que se va a importar, a partir de 0 (por defecto: el mayor).</translation>
     </message>
     <message>
         <source>The axis to turn about, from 0 (default: most revolved area).</source>
-        <translation type="unfinished"></translation>
+        <translation>Eje alrededor del cual se tornea, a partir de 0 (por defecto: el de mayor área de revolución).</translation>
     </message>
     <message>
         <source>The work material&apos;s id (default: %1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Id del material de la pieza (por defecto: %1).</translation>
     </message>
     <message>
         <source>The machine&apos;s id (default: %1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Id de la máquina (por defecto: %1).</translation>
     </message>
     <message>
         <source>The STEP or IGES file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo STEP o IGES.</translation>
     </message>
     <message>
         <source>give one STEP or IGES file and -o PROJECT</source>
-        <translation type="unfinished"></translation>
+        <translation>indique un archivo STEP o IGES y -o PROYECTO</translation>
     </message>
     <message>
         <source>%1: written, part &quot;%2&quot;, %3 mm long, %4 outer and %5 inner features, %6 warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: escrito, pieza &quot;%2&quot;, %3 mm de longitud, %4 elementos exteriores y %5 interiores, %6 avisos</translation>
     </message>
     <message>
         <source>Write the project&apos;s part as a solid of revolution to a STEP file in mm (AP214), for CAD and CAM.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir la pieza del proyecto como cuerpo de revolución en un archivo STEP en mm (AP214), para CAD y CAM.</translation>
     </message>
     <message>
         <source>The STEP file to write.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo STEP de salida.</translation>
     </message>
     <message>
         <source>The project file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo de proyecto.</translation>
     </message>
     <message>
         <source>give one project file and -o FILE.step</source>
-        <translation type="unfinished"></translation>
+        <translation>indique un archivo de proyecto y -o ARCHIVO.step</translation>
     </message>
     <message>
         <source>%1: written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: escrito</translation>
     </message>
 </context>
 <context>
@@ -1027,75 +1027,75 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <name>ProfileChains</name>
     <message>
         <source>left end face</source>
-        <translation type="unfinished"></translation>
+        <translation>cara extrema izquierda</translation>
     </message>
     <message>
         <source>right end face</source>
-        <translation type="unfinished"></translation>
+        <translation>cara extrema derecha</translation>
     </message>
     <message>
         <source>shoulder</source>
-        <translation type="unfinished"></translation>
+        <translation>resalte</translation>
     </message>
     <message>
         <source>cylinder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>cilindro %1</translation>
     </message>
     <message>
         <source>cone</source>
-        <translation type="unfinished">cono</translation>
+        <translation>cono</translation>
     </message>
     <message>
         <source>chamfer</source>
-        <translation type="unfinished">chaflán</translation>
+        <translation>chaflán</translation>
     </message>
     <message>
         <source>radius R%1</source>
-        <translation type="unfinished"></translation>
+        <translation>radio R%1</translation>
     </message>
     <message>
         <source>bore bottom</source>
-        <translation type="unfinished">fondo del agujero</translation>
+        <translation>fondo del agujero</translation>
     </message>
     <message>
         <source>bore step</source>
-        <translation type="unfinished"></translation>
+        <translation>escalón del agujero</translation>
     </message>
     <message>
         <source>bore %1</source>
-        <translation type="unfinished"></translation>
+        <translation>agujero %1</translation>
     </message>
     <message>
         <source>drill point</source>
-        <translation type="unfinished"></translation>
+        <translation>punta de broca</translation>
     </message>
     <message>
         <source>bore cone</source>
-        <translation type="unfinished"></translation>
+        <translation>cono del agujero</translation>
     </message>
     <message>
         <source>bore chamfer</source>
-        <translation type="unfinished"></translation>
+        <translation>chaflán del agujero</translation>
     </message>
     <message>
         <source>bore radius R%1</source>
-        <translation type="unfinished"></translation>
+        <translation>radio del agujero R%1</translation>
     </message>
     <message>
         <source>the bore at the right end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the left end is kept; the right end face is closed to the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero del extremo derecho, de z = %1 mm a z = %2 mm (cara %3 y las caras siguientes), se excluye: un perfil tiene un único contorno interior y se conserva el agujero más profundo, el del extremo izquierdo; la cara extrema derecha se cierra hasta el eje</translation>
     </message>
     <message>
         <source>the bore at the left end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the right end is kept; the left end face is closed to the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>el agujero del extremo izquierdo, de z = %1 mm a z = %2 mm (cara %3 y las caras siguientes), se excluye: un perfil tiene un único contorno interior y se conserva el agujero más profundo, el del extremo derecho; la cara extrema izquierda se cierra hasta el eje</translation>
     </message>
     <message>
         <source>the revolved face %1 (from z = %2 mm to z = %3 mm, r = %4 to %5 mm) does not join the outer or inner contour (a closed inner cavity, or faces beyond a gap in the section) and is left out of the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>la cara de revolución %1 (de z = %2 mm a z = %3 mm, r = %4 a %5 mm) no se une al contorno exterior ni al interior (una cavidad interior cerrada, o caras situadas más allá de una interrupción de la sección) y se excluye del perfil</translation>
     </message>
     <message>
         <source>the revolved faces do not form a closed section from the left end (z = %1 mm) to the right end (z = %2 mm): the contour from the left end stops at z = %3 mm, r = %4 mm, where a face is missing or not turned (see the warnings)</source>
-        <translation type="unfinished"></translation>
+        <translation>las caras de revolución no forman una sección cerrada desde el extremo izquierdo (z = %1 mm) hasta el extremo derecho (z = %2 mm): el contorno que parte del extremo izquierdo se interrumpe en z = %3 mm, r = %4 mm, donde falta una cara o hay una que no se tornea (véanse los avisos)</translation>
     </message>
 </context>
 <context>
@@ -1839,165 +1839,165 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <name>RevolvedFaces</name>
     <message>
         <source>a plane not perpendicular to the axis (a flat or a side of a keyway)</source>
-        <translation type="unfinished"></translation>
+        <translation>un plano no perpendicular al eje (un plano o un flanco de un chavetero)</translation>
     </message>
     <message>
         <source>a cylinder parallel to the axis but off it (an eccentric or an off-centre hole)</source>
-        <translation type="unfinished"></translation>
+        <translation>un cilindro paralelo al eje pero desplazado de él (una excéntrica o un agujero descentrado)</translation>
     </message>
     <message>
         <source>a cylinder across the axis (a cross hole)</source>
-        <translation type="unfinished"></translation>
+        <translation>un cilindro transversal al eje (un agujero transversal)</translation>
     </message>
     <message>
         <source>a cone whose axis is not the part axis (a countersink of a cross hole)</source>
-        <translation type="unfinished"></translation>
+        <translation>un cono cuyo eje no es el eje de la pieza (el avellanado de un agujero transversal)</translation>
     </message>
     <message>
         <source>a torus whose axis is not the part axis</source>
-        <translation type="unfinished"></translation>
+        <translation>un toro cuyo eje no es el eje de la pieza</translation>
     </message>
     <message>
         <source>a sphere whose centre is off the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>una esfera cuyo centro está fuera del eje</translation>
     </message>
     <message>
         <source>a free-form (B-spline) surface, such as a modelled thread or an engraving</source>
-        <translation type="unfinished"></translation>
+        <translation>una superficie de forma libre (B-spline), como una rosca modelada o un grabado</translation>
     </message>
     <message>
         <source>a surface of revolution of a free-form curve</source>
-        <translation type="unfinished"></translation>
+        <translation>una superficie de revolución de una curva de forma libre</translation>
     </message>
     <message>
         <source>an extruded free-form surface</source>
-        <translation type="unfinished"></translation>
+        <translation>una superficie de forma libre extruida</translation>
     </message>
     <message>
         <source>a surface of a kind TolTurn does not turn (offset or other)</source>
-        <translation type="unfinished"></translation>
+        <translation>una superficie de un tipo que TolTurn no tornea (desplazada u otro)</translation>
     </message>
     <message>
         <source>a part of a turned surface that does not go round (the end wall of a keyway or a slot)</source>
-        <translation type="unfinished"></translation>
+        <translation>una parte de una superficie torneada que no da la vuelta completa (la pared final de un chavetero o de una ranura)</translation>
     </message>
 </context>
 <context>
     <name>StepExport</name>
     <message>
         <source>cannot write &apos;%1&apos;: the profile has errors, first %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir &apos;%1&apos;: el perfil tiene errores; el primero: %2</translation>
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
-        <translation type="unfinished">no se puede escribir &apos;%1&apos;: %2</translation>
+        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>OpenCascade could not write the solid to &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade no ha podido escribir el cuerpo en &apos;%1&apos;</translation>
     </message>
     <message>
         <source>cannot save &apos;%1&apos;: renaming the temporary file failed</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede guardar &apos;%1&apos;: no se ha podido cambiar el nombre del archivo temporal</translation>
     </message>
     <message>
         <source>OpenCascade failed while writing &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade ha fallado al escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>writing &apos;%1&apos; failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>error al escribir &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
     <name>StepImport</name>
     <message>
         <source>&apos;%1&apos; is not a STEP file: it does not begin with &apos;ISO-10303-21;&apos; (ISO 10303-21)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no es un archivo STEP: no empieza por &apos;ISO-10303-21;&apos; (ISO 10303-21)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is truncated: a STEP file ends with &apos;END-ISO-10303-21;&apos;, which is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; está truncado: un archivo STEP termina con &apos;END-ISO-10303-21;&apos;, que falta</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not an IGES file: its first line is not a Start section record (IGES 5.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no es un archivo IGES: su primera línea no es un registro de la sección Start (IGES 5.3)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is truncated: an IGES file ends with a Terminate section record, which is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; está truncado: un archivo IGES termina con un registro de la sección Terminate, que falta</translation>
     </message>
     <message>
         <source>&apos;%1&apos; does not exist</source>
-        <translation type="unfinished">&apos;%1&apos; no existe</translation>
+        <translation>&apos;%1&apos; no existe</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a file</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no es un archivo</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; está vacío</translation>
     </message>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
-        <translation type="unfinished">no se puede abrir &apos;%1&apos;: %2</translation>
+        <translation>no se puede abrir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>OpenCascade cannot parse &apos;%1&apos; as a STEP file (ISO 10303-21)</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade no puede analizar &apos;%1&apos; como archivo STEP (ISO 10303-21)</translation>
     </message>
     <message>
         <source>OpenCascade cannot parse &apos;%1&apos; as an IGES file</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade no puede analizar &apos;%1&apos; como archivo IGES</translation>
     </message>
     <message>
         <source>&apos;%1&apos; holds no shape that OpenCascade can transfer (no solid, shell or face)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no contiene ninguna forma que OpenCascade pueda transferir (ningún cuerpo, lámina ni cara)</translation>
     </message>
     <message>
         <source>there is no %1 %2: the file has %3 (numbered from 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe el %1 %2: el archivo tiene %3 (numerados desde 0)</translation>
     </message>
     <message>
         <source>body</source>
-        <translation type="unfinished"></translation>
+        <translation>cuerpo</translation>
     </message>
     <message>
         <source>the file holds %1 bodies; body %2 (%3 mm³) is imported, choose another with the solid option</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo contiene %1 cuerpos; se importa el cuerpo %2 (%3 mm³); elija otro con la opción solid</translation>
     </message>
     <message>
         <source>the body in &apos;%1&apos; has no cylindrical, conical or toroidal face: it is not a turned part</source>
-        <translation type="unfinished"></translation>
+        <translation>el cuerpo de &apos;%1&apos; no tiene ninguna cara cilíndrica, cónica ni toroidal: no es una pieza torneada</translation>
     </message>
     <message>
         <source>axis</source>
-        <translation type="unfinished"></translation>
+        <translation>eje</translation>
     </message>
     <message>
         <source>the body has revolved faces about %1 different axes; axis %2 (%3 mm² of revolved faces) is the part axis, choose another with the axis option</source>
-        <translation type="unfinished"></translation>
+        <translation>el cuerpo tiene caras de revolución alrededor de %1 ejes distintos; el eje %2 (%3 mm² de caras de revolución) es el eje de la pieza; elija otro con la opción axis</translation>
     </message>
     <message>
         <source>face %1 is %2, from z = %3 mm to z = %4 mm; it is not rotationally symmetric about the part axis and is left out of the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>la cara %1 es %2, de z = %3 mm a z = %4 mm; no tiene simetría de revolución respecto al eje de la pieza y se excluye del perfil</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a STEP or IGES file: TolTurn reads files ending in .step, .stp, .iges or .igs</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no es un archivo STEP ni IGES: TolTurn lee archivos con extensión .step, .stp, .iges o .igs</translation>
     </message>
     <message>
         <source>&apos;%1&apos; holds no solid, shell or face</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; no contiene ningún cuerpo, lámina ni cara</translation>
     </message>
     <message>
         <source>OpenCascade failed while reading &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCascade ha fallado al leer &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>reading &apos;%1&apos; failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>error al leer &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -2156,45 +2156,47 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <name>tolturn::CadFileController</name>
     <message>
         <source>Reading %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>Leyendo %1…</translation>
     </message>
     <message>
         <source>Import of %1 cancelled; the project is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>Importación de %1 cancelada; el proyecto no ha cambiado.</translation>
     </message>
     <message>
         <source>Import of %1 cancelled.</source>
-        <translation type="unfinished"></translation>
+        <translation>Importación de %1 cancelada.</translation>
     </message>
     <message>
         <source>Cannot import %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede importar %1</translation>
     </message>
     <message>
         <source>The part was not imported; the current project is unchanged.
 
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se ha importado la pieza; el proyecto actual no ha cambiado.
+
+%1</translation>
     </message>
     <message>
         <source>%1 could not be imported:</source>
-        <translation type="unfinished"></translation>
+        <translation>No se ha podido importar %1:</translation>
     </message>
     <message>
         <source>Imported %1: %2 outer and %3 inner features, %4 warning(s); set material, machine, tool and clamping, then save.</source>
-        <translation type="unfinished"></translation>
+        <translation>Se ha importado %1: %2 elementos exteriores y %3 interiores, %4 aviso(s); defina el material, la máquina, la herramienta y la sujeción, y después guarde.</translation>
     </message>
     <message>
         <source>Imported from %1; left out or noted:</source>
-        <translation type="unfinished"></translation>
+        <translation>Importado de %1; elementos excluidos u observaciones:</translation>
     </message>
     <message>
         <source>Cannot export %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede exportar %1</translation>
     </message>
     <message>
         <source>Exported the part as a revolved solid to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Se ha exportado la pieza como cuerpo de revolución a %1</translation>
     </message>
 </context>
 <context>
@@ -2265,7 +2267,7 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>Warning: </source>
-        <translation>Advertencia: </translation>
+        <translation>Aviso: </translation>
     </message>
     <message>
         <source>z from the part&apos;s left end [%1]</source>
@@ -2304,23 +2306,23 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <name>tolturn::DiagnosticsPanel</name>
     <message>
         <source>Severity</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravedad</translation>
     </message>
     <message>
         <source>Where</source>
-        <translation type="unfinished"></translation>
+        <translation>Ubicación</translation>
     </message>
     <message>
         <source>Message</source>
-        <translation type="unfinished"></translation>
+        <translation>Mensaje</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>error</translation>
     </message>
     <message>
         <source>warning</source>
-        <translation type="unfinished"></translation>
+        <translation>aviso</translation>
     </message>
 </context>
 <context>
@@ -2600,43 +2602,43 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <name>tolturn::ImportDialog</name>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;: a turned part %2 mm long, Ø max %3 mm, with %4 outer and %5 inner features; %6 warning(s), listed after the import.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: una pieza torneada de %2 mm de longitud, Ø máx. %3 mm, con %4 elementos exteriores y %5 interiores; %6 aviso(s), que se mostrarán tras la importación.</translation>
     </message>
     <message>
         <source>Import %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Importar %1</translation>
     </message>
     <message>
         <source>Body %1: %2 mm³, %3 faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuerpo %1: %2 mm³, %3 caras</translation>
     </message>
     <message>
         <source>Axis %1: through %2 along %3, %4 revolved faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Eje %1: pasa por %2 con dirección %3, %4 caras de revolución</translation>
     </message>
     <message>
         <source>The common axis of the body&apos;s cylindrical, conical, toroidal and spherical faces; the one with the most revolved area is proposed.</source>
-        <translation type="unfinished"></translation>
+        <translation>El eje común de las caras cilíndricas, cónicas, toroidales y esféricas del cuerpo; se propone el de mayor área de revolución.</translation>
     </message>
     <message>
         <source>Chuck at the model&apos;s other end (turn the part end for end)</source>
-        <translation type="unfinished"></translation>
+        <translation>Plato en el otro extremo del modelo (dar la vuelta a la pieza)</translation>
     </message>
     <message>
         <source>z = 0 is the part&apos;s left end, the end held in the chuck. Tick to put the model&apos;s right end there instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>z = 0 es el extremo izquierdo de la pieza, el que se sujeta en el plato. Marque esta opción para situar allí el extremo derecho del modelo.</translation>
     </message>
     <message>
         <source>&amp;Body:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Cuerpo:</translation>
     </message>
     <message>
         <source>&amp;Axis:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Eje:</translation>
     </message>
     <message>
         <source>&amp;Import</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Importar</translation>
     </message>
 </context>
 <context>
@@ -2835,43 +2837,43 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>&amp;Import STEP/IGES…</source>
-        <translation type="unfinished"></translation>
+        <translation>I&amp;mportar STEP/IGES…</translation>
     </message>
     <message>
         <source>Read a turned part from a STEP or IGES solid (Ctrl+I)</source>
-        <translation type="unfinished"></translation>
+        <translation>Leer una pieza torneada de un cuerpo STEP o IGES (Ctrl+I)</translation>
     </message>
     <message>
         <source>Export S&amp;TEP…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar S&amp;TEP…</translation>
     </message>
     <message>
         <source>Write the part as a solid revolved about its axis (STEP, mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir la pieza como cuerpo de revolución alrededor de su eje (STEP, mm)</translation>
     </message>
     <message>
         <source>Import Messages</source>
-        <translation type="unfinished"></translation>
+        <translation>Mensajes de importación</translation>
     </message>
     <message>
         <source>No STEP or IGES file imported in this session.</source>
-        <translation type="unfinished"></translation>
+        <translation>No se ha importado ningún archivo STEP o IGES en esta sesión.</translation>
     </message>
     <message>
         <source>Import STEP or IGES</source>
-        <translation type="unfinished"></translation>
+        <translation>Importar STEP o IGES</translation>
     </message>
     <message>
         <source>STEP and IGES files (*.step *.stp *.iges *.igs);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivos STEP e IGES (*.step *.stp *.iges *.igs);;Todos los archivos (*)</translation>
     </message>
     <message>
         <source>Export STEP</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar STEP</translation>
     </message>
     <message>
         <source>STEP files (*.step *.stp)</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivos STEP (*.step *.stp)</translation>
     </message>
 </context>
 <context>

@@ -154,15 +154,8 @@ bool CadFileController::exportStep()
 {
     if (!m_document.hasProject())
         return false;
-    const QFileInfo project(m_document.filePath());
-    const QString folder = project.filePath().isEmpty() ? QDir::homePath() : project.absolutePath();
-    QString path = m_prompts.chooseStepExportFile(
-        QDir(folder).filePath(QFileInfo(m_document.displayName()).completeBaseName() + QStringLiteral(".step")));
-    if (path.isEmpty())
-        return false;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".step");
-    return exportStepTo(path);
+    const QString path = m_prompts.chooseStepExportFile(suggestedExportPath(m_document, QStringLiteral("step")));
+    return !path.isEmpty() && exportStepTo(withDefaultSuffix(path, QStringLiteral("step")));
 }
 
 bool CadFileController::exportStepTo(const QString &path)

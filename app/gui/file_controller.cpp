@@ -183,18 +183,24 @@ bool FileController::offerRecovery(const QString &autosaveFolder)
     return false;
 }
 
+QString suggestedExportPath(const ProjectDocument &document, const QString &suffix)
+{
+    const QFileInfo project(document.filePath());
+    const QString folder = project.filePath().isEmpty() ? QDir::homePath() : project.absolutePath();
+    return QDir(folder).filePath(QFileInfo(document.displayName()).completeBaseName() + QLatin1Char('.') + suffix);
+}
+
+QString withDefaultSuffix(const QString &path, const QString &suffix)
+{
+    return QFileInfo(path).suffix().isEmpty() ? path + QLatin1Char('.') + suffix : path;
+}
+
 bool FileController::exportReport()
 {
     if (!m_document.hasProject())
         return false;
-    const QFileInfo project(m_document.filePath());
-    const QString folder = project.filePath().isEmpty() ? QDir::homePath() : project.absolutePath();
-    QString path = m_prompts.chooseReportFile(QDir(folder).filePath(m_document.displayName() + QStringLiteral(".pdf")));
-    if (path.isEmpty())
-        return false;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".pdf");
-    return exportReportTo(path);
+    const QString path = m_prompts.chooseReportFile(suggestedExportPath(m_document, QStringLiteral("pdf")));
+    return !path.isEmpty() && exportReportTo(withDefaultSuffix(path, QStringLiteral("pdf")));
 }
 
 bool FileController::exportReportTo(const QString &pdfPath)

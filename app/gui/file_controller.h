@@ -47,6 +47,12 @@ public:
     }
 };
 
+// Where an export of the document is offered: beside its project file (else in the home folder),
+// named after it with `suffix` ("pdf", "step").
+[[nodiscard]] QString suggestedExportPath(const ProjectDocument &document, const QString &suffix);
+// `path` as chosen, with ".suffix" added when it has none.
+[[nodiscard]] QString withDefaultSuffix(const QString &path, const QString &suffix);
+
 // File > Open, Save, Save As, Export Report and the recent-file list. Choosing a path and writing a file are
 // separate steps; a failed open leaves the document as it was, a failed save leaves both the
 // document (still modified) and the file on disk as they were.

@@ -13,6 +13,7 @@
 #include "widgets/common/diagnostics_panel.h"
 #include "widgets/document/project_document.h"
 
+#include <QAbstractItemModelTester>
 #include <QAction>
 #include <QFile>
 #include <QSignalSpy>
@@ -234,6 +235,8 @@ private Q_SLOTS:
         QFile file(bad);
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.close();
+        const QAbstractItemModelTester messagesModel(w.importMessages()->table()->model(),
+                                                     QAbstractItemModelTester::FailureReportingMode::QtTest);
         QSignalSpy finished(w.cadFiles(), &CadFileController::importFinished);
         QString shown;
         test::closeNextMessageBox(&shown); // the error dialog is modal
