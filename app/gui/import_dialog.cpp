@@ -8,6 +8,7 @@
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -48,7 +49,7 @@ ImportDialog::ImportDialog(const QString &fileName, const CadImportResult &read,
     for (std::size_t i = 0; i < read.solids.size(); ++i)
         m_solid->addItem(tr("Body %1: %2 mm³, %3 faces")
                              .arg(i + 1)
-                             .arg(formatNumber(read.solids[i].volume_mm3))
+                             .arg(QLocale().toString(read.solids[i].volume_mm3, 'f', 0))
                              .arg(read.solids[i].faceCount));
     m_solid->setCurrentIndex(read.chosenSolid);
     m_solid->setEnabled(read.solids.size() > 1);

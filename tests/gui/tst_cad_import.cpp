@@ -3,9 +3,11 @@
 // planner's choice of chuck end is applied, the part opens as a new project; a bad file or a
 // cancel leaves the open project as it was.
 #include "tests/gui/modal.h"
+#include "tests/gui/screenshot.h"
 
 #include "app/gui/cad_files.h"
 #include "app/gui/file_controller.h"
+#include "app/gui/import_dialog.h"
 #include "app/gui/main_window.h"
 #include "app/gui/recent_files.h"
 #include "core/cad/step_export.h"
@@ -219,6 +221,23 @@ private Q_SLOTS:
         QCOMPARE(back.profile->inner.segments.size(), f.document.project().part.inner.segments.size());
         QVERIFY(!f.cad.exportStepTo(QStringLiteral("/nonexistent-folder/x.step")));
         QVERIFY(f.prompts.error.contains(QStringLiteral("x.step")));
+    }
+
+    // The confirmation shows what was read and proposes the first body and axis, chuck on the left.
+    void dialogProposesTheDefaults()
+    {
+        QTemporaryDir dir;
+        const QString step = dir.filePath(QStringLiteral("shaft.step"));
+        QVERIFY(exportProfileToStep(stepped(), step).ok);
+        const CadImportResult read = importCadFile(step);
+        QVERIFY(read.profile.has_value());
+        ImportDialog dialog(QStringLiteral("shaft.step"), read);
+        const CadImportChoice choice = dialog.choice();
+        QCOMPARE(choice.solid, read.chosenSolid);
+        QCOMPARE(choice.axis, read.chosenAxis);
+        QVERIFY(!choice.flip);
+        dialog.show();
+        test::saveScreenshot(dialog, "import-dialog.png");
     }
 
     // In the window: the menu action, and the messages dock after an import.
