@@ -9,6 +9,8 @@
 #include <QFileInfo>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <utility>
+
 namespace tolturn {
 
 namespace {
@@ -38,7 +40,16 @@ CadFileController::CadFileController(ProjectDocument &document, FileController &
 {
     connect(&m_watcher, &QFutureWatcher<CadImportResult>::finished, this, &CadFileController::readFinished);
     connect(this, &CadFileController::importProgress, this, [this](int percent) {
-        if (m_progress && !m_progress->update(percent / 100.0))
+        if (!m_progress || m_cancel)
+            return;
+        // A shown modal progress dialog runs the event loop in update(), where the reader's
+        // finished() can arrive: readFinished() waits until every update has returned.
+        ++m_progressUpdates; // they nest when the event loop runs inside
+        const bool goOn = m_progress->update(percent / 100.0);
+        --m_progressUpdates;
+        if (m_progressUpdates == 0 && std::exchange(m_finishPending, false))
+            QMetaObject::invokeMethod(this, &CadFileController::readFinished, Qt::QueuedConnection);
+        if (!goOn)
             m_cancel = true;
     });
 }
@@ -72,6 +83,8 @@ void CadFileController::startReading(const CadImportOptions &options)
 {
     m_cancel = false;
     m_progress = m_prompts.startProgress(tr("Reading %1…").arg(QFileInfo(m_path).fileName()));
+    if (m_progress)
+        m_progress->onCancel([this] { m_cancel = true; }); // the reader sees it at its next report
     CadImportOptions run = options;
     // Called on the reader's thread: hand the fraction to this (GUI) thread, and say whether
     // the planner has cancelled.
@@ -86,6 +99,10 @@ void CadFileController::startReading(const CadImportOptions &options)
 
 void CadFileController::readFinished()
 {
+    if (m_progressUpdates > 0) { // inside the progress dialog's update: finish once it has returned
+        m_finishPending = true;
+        return;
+    }
     m_progress.reset();
     const CadImportResult result = m_watcher.result();
     const QString name = QFileInfo(m_path).fileName();

@@ -78,7 +78,9 @@ private:
     std::unique_ptr<TaskProgress> m_progress;
     std::atomic<bool> m_cancel = false;
     QString m_path;
-    bool m_confirmed = false; // the second read, with the planner's choice
+    bool m_confirmed = false;     // the second read, with the planner's choice
+    int m_progressUpdates = 0;    // m_progress->update() calls running (they may run the event loop)
+    bool m_finishPending = false; // the reader finished during one of them
 };
 
 } // namespace tolturn

@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <memory>
 
 namespace tolturn {
@@ -20,8 +21,12 @@ class RecentFiles;
 class TaskProgress {
 public:
     virtual ~TaskProgress() = default;
-    // `fraction` done (0…1); false once the user has asked to cancel.
+    // `fraction` done (0…1); false once the user has asked to cancel. May run the event loop.
     [[nodiscard]] virtual bool update(double fraction) = 0;
+
+    // Called as soon as the user asks to cancel, for a task that runs elsewhere and would only
+    // learn of it at its next update.
+    virtual void onCancel(const std::function<void()> &handler) { Q_UNUSED(handler); }
 };
 
 class FilePrompts {

@@ -424,8 +424,14 @@ public:
 
     bool update(double fraction) override
     {
-        m_dialog.setValue(static_cast<int>(100.0 * fraction));
+        if (!m_dialog.wasCanceled()) // setValue would show a cancelled dialog again
+            m_dialog.setValue(static_cast<int>(100.0 * fraction));
         return !m_dialog.wasCanceled();
+    }
+
+    void onCancel(const std::function<void()> &handler) override
+    {
+        QObject::connect(&m_dialog, &QProgressDialog::canceled, &m_dialog, handler);
     }
 
 private:

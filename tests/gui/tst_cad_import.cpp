@@ -25,6 +25,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <utility>
 
 using namespace tolturn;
 
@@ -61,7 +62,36 @@ public:
 
     void showError(const QString &title, const QString &text) override { error = title + QLatin1Char('\n') + text; }
 
-    std::unique_ptr<TaskProgress> startProgress(const QString &) override { return nullptr; }
+    // A progress that runs the event loop while it updates, as a shown modal progress dialog does.
+    bool eventLoopProgress = false;
+    bool destroyedInsideUpdate = false;
+
+    std::unique_ptr<TaskProgress> startProgress(const QString &) override
+    {
+        if (!eventLoopProgress)
+            return nullptr;
+
+        struct Progress : TaskProgress {
+            CannedPrompts *owner = nullptr;
+            int depth = 0; // updates running (they nest, as the event loop runs inside)
+            bool first = true;
+
+            ~Progress() override { owner->destroyedInsideUpdate = owner->destroyedInsideUpdate || depth > 0; }
+
+            bool update(double) override
+            {
+                ++depth;
+                if (std::exchange(first, false))
+                    QTest::qWait(300); // the reader (some ms) finishes meanwhile
+                --depth;
+                return true;
+            }
+        };
+
+        auto progress = std::make_unique<Progress>();
+        progress->owner = this;
+        return progress;
+    }
 
     std::optional<CadImportChoice> confirmImport(const QString &, const CadImportResult &read) override
     {
@@ -135,6 +165,20 @@ private Q_SLOTS:
         }
         QCOMPARE(f.document.project().clamping.clampedLength_mm, 30.0);
         QCOMPARE(f.document.project().clamping.method, ClampingMethod::Chuck);
+    }
+
+    // The reader finishing while the progress runs the event loop must not delete the progress
+    // under its own update (a shown modal QProgressDialog does run it).
+    void finishingInsideTheProgressUpdate()
+    {
+        QTemporaryDir dir;
+        const QString step = dir.filePath(QStringLiteral("shaft.step"));
+        QVERIFY(exportProfileToStep(stepped(), step).ok);
+        Fixture f;
+        f.prompts.eventLoopProgress = true;
+        QVERIFY(runImport(f, step));
+        QVERIFY(!f.prompts.destroyedInsideUpdate);
+        QVERIFY(f.document.hasProject());
     }
 
     // Chuck at the other end: the Ø56 clamping diameter (z 0 … 35 in the model) ends up at

@@ -88,6 +88,27 @@ private Q_SLOTS:
         QCOMPARE(lengthUnitFromKeyword(QStringLiteral("furlong")), LengthUnit::Millimetre);
     }
 
+    // A length is kept exactly while the box shows it, even where the shown number is rounded on
+    // a tie (1/16 in = 1.5875 mm shows as 1.587 or 1.588 mm); a typed number is taken as typed.
+    void lengthBoxKeepsTheExactLength()
+    {
+        LengthSpinBox box(1000.0);
+        for (const double length : {1.5875, 14.2875, 1.0005, 38.1}) {
+            box.setMillimetres(length);
+            QCOMPARE(box.millimetres(), length);
+            DisplaySettings::instance().setUnits(DisplayUnits(LengthUnit::Inch));
+            QCOMPARE(box.millimetres(), length);
+            DisplaySettings::instance().setUnits(DisplayUnits());
+            QCOMPARE(box.millimetres(), length);
+        }
+        box.setValue(12.5);
+        QCOMPARE(box.millimetres(), 12.5);
+        DisplaySettings::instance().setUnits(DisplayUnits(LengthUnit::Inch));
+        box.setValue(0.25); // typed in inches
+        QCOMPARE(box.millimetres(), 6.35);
+        QCOMPARE(box.singleStep(), 0.05);
+    }
+
     void preferencesSurviveARestart()
     {
         Preferences p;

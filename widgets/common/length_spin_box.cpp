@@ -3,8 +3,6 @@
 
 #include <QSignalBlocker>
 
-#include <cmath>
-
 namespace tolturn {
 
 LengthSpinBox::LengthSpinBox(double maximum_mm, QWidget *parent) : QDoubleSpinBox(parent), m_maximum_mm(maximum_mm)
@@ -16,20 +14,17 @@ LengthSpinBox::LengthSpinBox(double maximum_mm, QWidget *parent) : QDoubleSpinBo
 
 double LengthSpinBox::millimetres() const
 {
-    // The box holds a rounded number (5 decimals of an inch are 0.254 µm); while it shows the
-    // length last set, that length is returned exactly, so that showing a value in other
-    // units, or editing a neighbouring field, never changes it.
-    const double scale = std::pow(10.0, decimals());
-    const double shownLast = std::round(m_shown.lengthFromMm(m_value_mm) * scale) / scale;
-    if (std::abs(value() - shownLast) <= 0.5 / scale * 1e-6)
-        return m_value_mm;
-    return m_shown.lengthToMm(value());
+    // The box holds a rounded number (5 decimals of an inch are 0.254 µm); while it still shows
+    // the number it showed for the length last set, that length is returned exactly, so that
+    // showing a value in other units, or editing a neighbouring field, never changes it.
+    return value() == m_shownForSet ? m_value_mm : m_shown.lengthToMm(value());
 }
 
 void LengthSpinBox::setMillimetres(double value_mm)
 {
     m_value_mm = value_mm;
     setValue(m_shown.lengthFromMm(value_mm));
+    m_shownForSet = value(); // as the box rounded it
 }
 
 void LengthSpinBox::applyUnits()
@@ -40,6 +35,8 @@ void LengthSpinBox::applyUnits()
     setDecimals(m_shown.lengthDecimals());
     setRange(0.0, m_shown.lengthFromMm(m_maximum_mm));
     setSuffix(QLatin1Char(' ') + m_shown.lengthSymbol());
+    // One step of the arrows or the wheel: 1 mm, or 0.05 in (1.27 mm).
+    setSingleStep(m_shown.lengthUnit() == LengthUnit::Inch ? 0.05 : 1.0);
     setMillimetres(kept_mm);
 }
 

@@ -22,8 +22,9 @@ private:
     void applyUnits();
 
     double m_maximum_mm;
-    DisplayUnits m_shown;    // the units the value is in now
-    double m_value_mm = 0.0; // the length last set, unrounded
+    DisplayUnits m_shown;       // the units the value is in now
+    double m_value_mm = 0.0;    // the length last set, unrounded
+    double m_shownForSet = 0.0; // the number shown for it
 };
 
 } // namespace tolturn

@@ -54,7 +54,7 @@ void ProfileView::redraw()
     buildProfileScene(*m_scene, m_profile, m_tolerances, m_datums, DisplaySettings::instance().units());
     m_dragged = nullptr;
     if (!m_selected.isEmpty() && findFeature(m_profile, m_selected))
-        showVertexHandles();
+        selectFeature(m_selected); // highlight and corner handles again, in the new scene
 }
 
 double ProfileView::snapGrid_mm(bool fine) const
