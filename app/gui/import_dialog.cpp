@@ -46,16 +46,17 @@ ImportDialog::ImportDialog(const QString &fileName, const CadImportResult &read,
 {
     setObjectName(QStringLiteral("importDialog"));
     setWindowTitle(tr("Import %1").arg(fileName));
+    // Bodies and axes are numbered from 0, as in the import's messages and `tolturn-cli import`.
     for (std::size_t i = 0; i < read.solids.size(); ++i)
         m_solid->addItem(tr("Body %1: %2 mm³, %3 faces")
-                             .arg(i + 1)
+                             .arg(i)
                              .arg(QLocale().toString(read.solids[i].volume_mm3, 'f', 0))
                              .arg(read.solids[i].faceCount));
     m_solid->setCurrentIndex(read.chosenSolid);
     m_solid->setEnabled(read.solids.size() > 1);
     for (std::size_t i = 0; i < read.axes.size(); ++i)
         m_axis->addItem(tr("Axis %1: through %2 along %3, %4 revolved faces")
-                            .arg(i + 1)
+                            .arg(i)
                             .arg(vectorText(read.axes[i].origin_mm), vectorText(read.axes[i].direction))
                             .arg(read.axes[i].faceCount));
     m_axis->setCurrentIndex(read.chosenAxis);
