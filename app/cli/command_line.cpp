@@ -26,6 +26,7 @@
 #include <QSaveFile>
 #include <QTextStream>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -49,6 +50,13 @@ struct Command {
 };
 
 const std::vector<Command> &commands();
+
+// The command called `name` (for its synopsis and summary in --help).
+const Command &commandNamed(const QString &name)
+{
+    const std::vector<Command> &list = commands();
+    return *std::find_if(list.begin(), list.end(), [&name](const Command &c) { return c.name == name; });
+}
 
 QString usage()
 {
@@ -118,7 +126,7 @@ int runCheck(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOption(json);
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project files to check."),
                                  QStringLiteral("PROJECT..."));
-    if (const int stop = parseCommand(parser, commands().at(0), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("check")), args, out, err); stop >= 0)
         return stop;
     const QStringList files = parser.positionalArguments();
     if (files.isEmpty()) {
@@ -305,7 +313,7 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commands().at(1), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("deflect")), args, out, err); stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("deflect"), err);
     if (file.isEmpty())
@@ -396,7 +404,8 @@ int runCalibrateForces(const QStringList &args, QTextStream &out, QTextStream &e
         QStringLiteral("measurements"),
         CommandLine::tr("CSV of measured cuts: feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N."),
         QStringLiteral("MEASUREMENTS.csv"));
-    if (const int stop = parseCommand(parser, commands().at(2), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("calibrate-forces")), args, out, err);
+        stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 2) {
         err << programName() << " calibrate-forces: " << CommandLine::tr("give a project file and a measurements file")
@@ -496,7 +505,7 @@ int runIso286(const QStringList &args, QTextStream &out, QTextStream &err)
                                  QStringLiteral("NOMINAL"));
     parser.addPositionalArgument(QStringLiteral("class"), CommandLine::tr("Tolerance class, e.g. H7, g6, js12."),
                                  QStringLiteral("CLASS"));
-    if (const int stop = parseCommand(parser, commands().at(3), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("iso286")), args, out, err); stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 2) {
         err << programName() << " iso286: " << CommandLine::tr("give a nominal size and a tolerance class, e.g. 50 H7")
@@ -529,7 +538,7 @@ int runFit(const QStringList &args, QTextStream &out, QTextStream &err)
                                  QStringLiteral("NOMINAL"));
     parser.addPositionalArgument(QStringLiteral("fit"), CommandLine::tr("Hole and shaft class, e.g. H7/g6."),
                                  QStringLiteral("HOLE/SHAFT"));
-    if (const int stop = parseCommand(parser, commands().at(4), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("fit")), args, out, err); stop >= 0)
         return stop;
     const QStringList positional = parser.positionalArguments();
     const QStringList classes = positional.value(1).split(QLatin1Char('/'));
@@ -594,7 +603,7 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOption(json);
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commands().at(5), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("evaluate")), args, out, err); stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("evaluate"), err);
     if (file.isEmpty())
@@ -759,7 +768,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOptions({json, objective, write});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commands().at(6), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("optimize")), args, out, err); stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("optimize"), err);
     if (file.isEmpty())
@@ -819,7 +828,7 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOptions({plane, csv, size});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commands().at(7), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("window")), args, out, err); stop >= 0)
         return stop;
     bool ok = false;
     const int n = parser.value(size).toInt(&ok);
@@ -875,7 +884,8 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
     parser.addOption(json);
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commands().at(8), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("advise-clamping")), args, out, err);
+        stop >= 0)
         return stop;
     const QString file = oneProjectFile(parser, QStringLiteral("advise-clamping"), err);
     if (file.isEmpty())
@@ -921,7 +931,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOptions({output, compensated});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commands().at(9), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("gcode")), args, out, err); stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
         err << programName() << " gcode: " << CommandLine::tr("give one project file and -o FILE") << '\n';
@@ -966,7 +976,7 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOption(output);
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commands().at(10), args, out, err); stop >= 0)
+    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("report")), args, out, err); stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
         err << programName() << " report: " << CommandLine::tr("give one project file and -o FILE.pdf") << '\n';

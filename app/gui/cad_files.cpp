@@ -23,12 +23,6 @@ QString joined(const Diagnostics &diagnostics)
     return lines.join(QLatin1Char('\n'));
 }
 
-int countWarnings(const Diagnostics &diagnostics)
-{
-    return static_cast<int>(std::count_if(diagnostics.begin(), diagnostics.end(),
-                                          [](const Diagnostic &d) { return d.severity == Severity::Warning; }));
-}
-
 } // namespace
 
 CadFileController::CadFileController(ProjectDocument &document, FileController &files, CadPrompts &prompts,
@@ -108,14 +102,14 @@ void CadFileController::readFinished()
     const QString name = QFileInfo(m_path).fileName();
     if (result.cancelled) {
         Q_EMIT statusMessage(tr("Import of %1 cancelled; the project is unchanged.").arg(name));
-        finish(false, tr("Import of %1 cancelled.").arg(name), {});
+        Q_EMIT importFinished(false, tr("Import of %1 cancelled.").arg(name), {});
         return;
     }
     if (!result.profile || hasErrors(result.diagnostics)) {
         m_prompts.showError(
             tr("Cannot import %1").arg(name),
             tr("The part was not imported; the current project is unchanged.\n\n%1").arg(joined(result.diagnostics)));
-        finish(false, tr("%1 could not be imported:").arg(name), result.diagnostics);
+        Q_EMIT importFinished(false, tr("%1 could not be imported:").arg(name), result.diagnostics);
         return;
     }
     if (m_confirmed) {
@@ -124,7 +118,7 @@ void CadFileController::readFinished()
     }
     const std::optional<CadImportChoice> choice = m_prompts.confirmImport(name, result);
     if (!choice) {
-        finish(false, tr("Import of %1 cancelled.").arg(name), {});
+        Q_EMIT importFinished(false, tr("Import of %1 cancelled.").arg(name), {});
         return;
     }
     if (choice->solid == result.chosenSolid && choice->axis == result.chosenAxis && !choice->flip) {
@@ -145,26 +139,21 @@ void CadFileController::openImported(const CadImportResult &result)
 {
     const QString name = QFileInfo(m_path).fileName();
     if (!m_files.maybeSave()) {
-        finish(false, tr("Import of %1 cancelled.").arg(name), {});
+        Q_EMIT importFinished(false, tr("Import of %1 cancelled.").arg(name), {});
         return;
     }
     PartProfile part = *result.profile;
     if (part.name.isEmpty())
         part.name = QFileInfo(m_path).completeBaseName();
     m_document.load(projectForPart(std::move(part)), QString());
-    const int warnings = countWarnings(result.diagnostics);
+    const int warnings = countOf(result.diagnostics, Severity::Warning);
     Q_EMIT statusMessage(tr("Imported %1: %2 outer and %3 inner features, %4 warning(s); set material, machine, "
                             "tool and clamping, then save.")
                              .arg(name)
                              .arg(m_document.project().part.outer.segments.size())
                              .arg(m_document.project().part.inner.segments.size())
                              .arg(warnings));
-    finish(true, tr("Imported from %1; left out or noted:").arg(name), result.diagnostics);
-}
-
-void CadFileController::finish(bool ok, const QString &heading, const Diagnostics &diagnostics)
-{
-    Q_EMIT importFinished(ok, heading, diagnostics);
+    Q_EMIT importFinished(true, tr("Imported from %1; left out or noted:").arg(name), result.diagnostics);
 }
 
 bool CadFileController::exportStep()

@@ -68,7 +68,6 @@ Q_SIGNALS:
 private:
     void startReading(const CadImportOptions &options);
     void readFinished();
-    void finish(bool ok, const QString &heading, const Diagnostics &diagnostics);
     void openImported(const CadImportResult &result);
 
     ProjectDocument &m_document;

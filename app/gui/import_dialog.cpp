@@ -12,8 +12,6 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include <algorithm>
-
 namespace tolturn {
 
 namespace {
@@ -26,14 +24,12 @@ QString vectorText(const double (&v)[3])
 QString summary(const QString &fileName, const CadImportResult &read)
 {
     const PartProfile &p = *read.profile;
-    const auto warnings = std::count_if(read.diagnostics.begin(), read.diagnostics.end(),
-                                        [](const Diagnostic &d) { return d.severity == Severity::Warning; });
     return ImportDialog::tr("<b>%1</b>: a turned part %2 mm long, Ø max %3 mm, with %4 outer and %5 inner "
                             "features; %6 warning(s), listed after the import.")
         .arg(fileName.toHtmlEscaped(), formatNumber(p.length_mm()), formatNumber(2.0 * p.maxOuterRadius_mm()))
         .arg(p.outer.segments.size())
         .arg(p.inner.segments.size())
-        .arg(warnings);
+        .arg(countOf(read.diagnostics, Severity::Warning));
 }
 
 } // namespace

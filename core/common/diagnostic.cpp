@@ -19,6 +19,12 @@ bool hasErrors(const Diagnostics &diagnostics)
                        [](const Diagnostic &d) { return d.severity == Severity::Error; });
 }
 
+int countOf(const Diagnostics &diagnostics, Severity severity)
+{
+    return static_cast<int>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                          [severity](const Diagnostic &d) { return d.severity == severity; }));
+}
+
 Diagnostic makeError(const QString &field, const QString &message)
 {
     return Diagnostic{Severity::Error, field, message};

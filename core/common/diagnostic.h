@@ -23,6 +23,7 @@ struct Diagnostic {
 using Diagnostics = std::vector<Diagnostic>;
 
 [[nodiscard]] bool hasErrors(const Diagnostics &diagnostics);
+[[nodiscard]] int countOf(const Diagnostics &diagnostics, Severity severity);
 [[nodiscard]] Diagnostic makeError(const QString &field, const QString &message);
 [[nodiscard]] Diagnostic makeWarning(const QString &field, const QString &message);
 

@@ -5,8 +5,11 @@
 
 namespace tolturn {
 
-LengthSpinBox::LengthSpinBox(double maximum_mm, QWidget *parent) : QDoubleSpinBox(parent), m_maximum_mm(maximum_mm)
+LengthSpinBox::LengthSpinBox(double maximum_mm, const QString &toolTip, QWidget *parent)
+    : QDoubleSpinBox(parent)
+    , m_maximum_mm(maximum_mm)
 {
+    setToolTip(toolTip);
     setKeyboardTracking(false);
     applyUnits();
     connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &LengthSpinBox::applyUnits);

@@ -12,7 +12,7 @@ namespace tolturn {
 class LengthSpinBox : public QDoubleSpinBox {
     Q_OBJECT
 public:
-    explicit LengthSpinBox(double maximum_mm, QWidget *parent = nullptr);
+    explicit LengthSpinBox(double maximum_mm, const QString &toolTip = QString(), QWidget *parent = nullptr);
 
     // The length shown, in mm: exactly the one last set unless the user has changed it.
     [[nodiscard]] double millimetres() const;

@@ -17,11 +17,12 @@ namespace tolturn {
 
 namespace {
 
+// Entry bounds of every length; the profile validation judges the value.
+constexpr double kMaxEntry_mm = 10000.0;
+
 LengthSpinBox *millimetres(const QString &tip)
 {
-    auto *box = new LengthSpinBox(10000.0); // entry bounds; the profile validation judges the value
-    box->setToolTip(tip);
-    return box;
+    return new LengthSpinBox(kMaxEntry_mm, tip);
 }
 
 // The kind-change button's text for a feature of `kind`.

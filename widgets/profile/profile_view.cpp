@@ -26,7 +26,11 @@ ProfileView::ProfileView(QWidget *parent) : QGraphicsView(parent), m_scene(new Q
     setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
     setViewportUpdateMode(QGraphicsView::BoundingRectViewportUpdate);
     setMinimumSize(320, 200);
-    connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &ProfileView::redraw);
+    connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, [this] {
+        redraw();
+        if (!m_selected.isEmpty() && findFeature(m_profile, m_selected))
+            selectFeature(m_selected); // highlight and corner handles again, in the new scene
+    });
 }
 
 void ProfileView::setProfile(const PartProfile &profile, const std::vector<Tolerance> &tolerances,
@@ -48,13 +52,12 @@ void ProfileView::setProfile(const PartProfile &profile, const std::vector<Toler
         Q_EMIT featureSelected(QString());
 }
 
-// Builds the drawing anew (a new profile, or other display units), keeping the zoom.
+// Builds the drawing anew (a new profile, or other display units), keeping the zoom; the
+// caller selects again.
 void ProfileView::redraw()
 {
     buildProfileScene(*m_scene, m_profile, m_tolerances, m_datums, DisplaySettings::instance().units());
     m_dragged = nullptr;
-    if (!m_selected.isEmpty() && findFeature(m_profile, m_selected))
-        selectFeature(m_selected); // highlight and corner handles again, in the new scene
 }
 
 double ProfileView::snapGrid_mm(bool fine) const

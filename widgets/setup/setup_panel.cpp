@@ -41,13 +41,6 @@ QString materialTip(const DataLibrary &data, const MaterialData &m)
 }
 
 // Entry bounds of a spin box: wide enough for any lathe; the document's validation judges the value.
-LengthSpinBox *lengthBox(double maximum_mm, const QString &tip)
-{
-    auto *box = new LengthSpinBox(maximum_mm);
-    box->setToolTip(tip);
-    return box;
-}
-
 QDoubleSpinBox *spinBox(double min, double max, int decimals, const QString &suffix, const QString &tip)
 {
     auto *box = new QDoubleSpinBox;
@@ -92,12 +85,12 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     , m_insertDecoded(new QLabel)
     , m_holder(new QComboBox)
     , m_clamping(new QComboBox)
-    , m_clampedLength(
-          lengthBox(10000.0, tr("Length of the part in the jaws from its left end; the chuck face is at this z. "
-                                "The part is a beam built in there (Valiño et al. 2008, eq. 2–5).")))
-    , m_overhang(
-          lengthBox(1000.0, tr("Tool length out of the turret for the toolpost term (Valiño et al. 2008, eq. 6); "
-                               "'from holder' uses the holder's length.")))
+    , m_clampedLength(new LengthSpinBox(
+          10000.0, tr("Length of the part in the jaws from its left end; the chuck face is at this z. "
+                      "The part is a beam built in there (Valiño et al. 2008, eq. 2–5).")))
+    , m_overhang(new LengthSpinBox(
+          1000.0, tr("Tool length out of the turret for the toolpost term (Valiño et al. 2008, eq. 6); "
+                     "'from holder' uses the holder's length.")))
     , m_message(new QLabel)
 {
     setObjectName(QStringLiteral("setupPanel"));
