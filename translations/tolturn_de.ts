@@ -1560,6 +1560,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the insert code</source>
         <translation>die Bezeichnung der Wendeschneidplatte</translation>
     </message>
+    <message>
+        <source>give both Taylor constants C and n, or neither</source>
+        <translation>beide Taylor-Konstanten C und n angeben oder keine</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -2875,6 +2879,237 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>STEP files (*.step *.stp)</source>
         <translation>STEP-Dateien (*.step *.stp)</translation>
     </message>
+    <message>
+        <source>Planning &amp;Data…</source>
+        <translation>Planungs&amp;daten…</translation>
+    </message>
+    <message>
+        <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits for the optimiser</source>
+        <translation>Kostensätze, Standzeit, Schnittbereiche der Wendeschneidplatte und Grenzwerte des Teils für die Optimierung</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::PlanningDataDialog</name>
+    <message>
+        <source>Planning Data</source>
+        <translation>Planungsdaten</translation>
+    </message>
+    <message>
+        <source>What the optimiser works with (docs/planning.md). A box showing “—” is not given.</source>
+        <translation>Womit die Optimierung rechnet (docs/planning.md). Ein Feld mit „—“ ist nicht angegeben.</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>Rates and times</source>
+        <translation>Kostensätze und Zeiten</translation>
+    </message>
+    <message>
+        <source>Cost per part C = M·t + C_edge·edges (docs/planning.md §1); in the currency of your choice, the same for both rates.</source>
+        <translation>Kosten je Teil C = M·t + C_edge·Schneiden (docs/planning.md §1); in einer Währung Ihrer Wahl, für beide Sätze dieselbe.</translation>
+    </message>
+    <message>
+        <source>&amp;Machine and operator rate:</source>
+        <translation>&amp;Maschinen- und Bedienersatz:</translation>
+    </message>
+    <message>
+        <source>per min</source>
+        <translation>je min</translation>
+    </message>
+    <message>
+        <source>Tool cost per &amp;edge:</source>
+        <translation>Werkzeugkosten je &amp;Schneide:</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>Time to index or change the cutting edge, t_change (docs/planning.md §1).</source>
+        <translation>Zeit zum Drehen oder Wechseln der Schneide, t_change (docs/planning.md §1).</translation>
+    </message>
+    <message>
+        <source>&amp;Handling time per part:</source>
+        <translation>&amp;Nebenzeit je Teil:</translation>
+    </message>
+    <message>
+        <source>Loading, unloading and idle moves per part, t_handling (docs/planning.md §1).</source>
+        <translation>Be- und Entladen und Leerwege je Teil, t_handling (docs/planning.md §1).</translation>
+    </message>
+    <message>
+        <source>Tool life (Taylor: v·Tⁿ = C)</source>
+        <translation>Standzeit (Taylor: v·Tⁿ = C)</translation>
+    </message>
+    <message>
+        <source>Taylor (1907): v·Tⁿ = C with v in m/min and T in min; give both C and n, from the insert maker or your own tool-life tests, with their source. Without them tool life is left out of the plan.</source>
+        <translation>Taylor (1907): v·Tⁿ = C mit v in m/min und T in min; C und n zusammen angeben, vom Plattenhersteller oder aus eigenen Standzeitversuchen, mit Quelle. Ohne sie bleibt die Standzeit im Plan unberücksichtigt.</translation>
+    </message>
+    <message>
+        <source>&amp;C:</source>
+        <translation>&amp;C:</translation>
+    </message>
+    <message>
+        <source>m/min</source>
+        <translation>m/min</translation>
+    </message>
+    <message>
+        <source>&amp;n:</source>
+        <translation>&amp;n:</translation>
+    </message>
+    <message>
+        <source>Minimum tool &amp;life:</source>
+        <translation>Mindest&amp;standzeit:</translation>
+    </message>
+    <message>
+        <source>The tool_life constraint: T(v) at least this (docs/planning.md §2).</source>
+        <translation>Die Nebenbedingung tool_life: T(v) mindestens dieser Wert (docs/planning.md §2).</translation>
+    </message>
+    <message>
+        <source>where C and n come from</source>
+        <translation>woher C und n stammen</translation>
+    </message>
+    <message>
+        <source>&amp;Source:</source>
+        <translation>&amp;Quelle:</translation>
+    </message>
+    <message>
+        <source>From the Material&apos;s Data</source>
+        <translation>Aus den Werkstoffdaten</translation>
+    </message>
+    <message>
+        <source>Fill C, n and the source from the data of %1.</source>
+        <translation>C, n und Quelle aus den Daten von %1 übernehmen.</translation>
+    </message>
+    <message>
+        <source>The data of %1 gives no Taylor constants.</source>
+        <translation>Die Daten von %1 enthalten keine Taylor-Konstanten.</translation>
+    </message>
+    <message>
+        <source>%1 (material %2): C from %3; n from %4</source>
+        <translation>%1 (Werkstoff %2): C aus %3; n aus %4</translation>
+    </message>
+    <message>
+        <source>TolTurn material data</source>
+        <translation>TolTurn-Werkstoffdaten</translation>
+    </message>
+    <message>
+        <source>Cutting ranges of the insert</source>
+        <translation>Schnittbereiche der Wendeschneidplatte</translation>
+    </message>
+    <message>
+        <source>The insert maker&apos;s recommended range (catalogue), the bounds of the optimiser&apos;s variables (docs/planning.md §2–3).</source>
+        <translation>Der vom Plattenhersteller empfohlene Bereich (Katalog), die Grenzen der Optimierungsvariablen (docs/planning.md §2–3).</translation>
+    </message>
+    <message>
+        <source>&amp;Feed:</source>
+        <translation>&amp;Vorschub:</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/U</translation>
+    </message>
+    <message>
+        <source>&amp;Depth of cut:</source>
+        <translation>Schnitt&amp;tiefe:</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>catalogue, page, chip breaker</source>
+        <translation>Katalog, Seite, Spanformer</translation>
+    </message>
+    <message>
+        <source>S&amp;ource:</source>
+        <translation>Q&amp;uelle:</translation>
+    </message>
+    <message>
+        <source>Requirements and limits</source>
+        <translation>Anforderungen und Grenzwerte</translation>
+    </message>
+    <message>
+        <source> “—”: the machine&apos;s limit from its data, if it has one.</source>
+        <translation> „—“: die Grenze der Maschine aus ihren Daten, falls vorhanden.</translation>
+    </message>
+    <message>
+        <source>Max. &amp;Ra:</source>
+        <translation>Max. &amp;Ra:</translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation>µm</translation>
+    </message>
+    <message>
+        <source>Theoretical roughness Ra = f²/(32·rε) of the finishing pass.</source>
+        <translation>Theoretische Rauheit Ra = f²/(32·rε) des Schlichtschnitts.</translation>
+    </message>
+    <message>
+        <source>Max. R&amp;z:</source>
+        <translation>Max. R&amp;z:</translation>
+    </message>
+    <message>
+        <source>Theoretical roughness Rz = f²/(8·rε) of the finishing pass.</source>
+        <translation>Theoretische Rauheit Rz = f²/(8·rε) des Schlichtschnitts.</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>Upper limit of the cutting force F_c.</source>
+        <translation>Obergrenze der Schnittkraft F_c.</translation>
+    </message>
+    <message>
+        <source>kW</source>
+        <translation>kW</translation>
+    </message>
+    <message>
+        <source>Spindle power F_c·v available.</source>
+        <translation>Verfügbare Spindelleistung F_c·v.</translation>
+    </message>
+    <message>
+        <source>N·m</source>
+        <translation>N·m</translation>
+    </message>
+    <message>
+        <source>Spindle torque F_c·D/2 available.</source>
+        <translation>Verfügbares Spindeldrehmoment F_c·D/2.</translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation>1/min</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed (G92).</source>
+        <translation>Höchste Spindeldrehzahl (G92).</translation>
+    </message>
+    <message>
+        <source>Tool change &amp;time:</source>
+        <translation>Werkzeug&amp;wechselzeit:</translation>
+    </message>
+    <message>
+        <source>Cutting s&amp;peed:</source>
+        <translation>Schnitt&amp;geschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>Ma&amp;x. cutting force:</source>
+        <translation>Max. Schnitt&amp;kraft:</translation>
+    </message>
+    <message>
+        <source>Max. po&amp;wer:</source>
+        <translation>Max. &amp;Leistung:</translation>
+    </message>
+    <message>
+        <source>Max. tor&amp;que:</source>
+        <translation>Max. &amp;Drehmoment:</translation>
+    </message>
+    <message>
+        <source>Max. sp&amp;indle speed:</source>
+        <translation>Max. S&amp;pindeldrehzahl:</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningPanel</name>
@@ -3073,6 +3308,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>„%1“ kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Planning Data…</source>
+        <translation>Planungsdaten…</translation>
+    </message>
+    <message>
+        <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits the optimiser works with</source>
+        <translation>Kostensätze, Standzeit, Schnittbereiche der Platte und Grenzwerte des Teils, mit denen die Optimierung rechnet</translation>
     </message>
 </context>
 <context>

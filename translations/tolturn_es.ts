@@ -1560,6 +1560,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the insert code</source>
         <translation>el código de la plaquita</translation>
     </message>
+    <message>
+        <source>give both Taylor constants C and n, or neither</source>
+        <translation>indique las dos constantes de Taylor C y n, o ninguna</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -2875,6 +2879,237 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>STEP files (*.step *.stp)</source>
         <translation>Archivos STEP (*.step *.stp)</translation>
     </message>
+    <message>
+        <source>Planning &amp;Data…</source>
+        <translation>&amp;Datos de planificación…</translation>
+    </message>
+    <message>
+        <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits for the optimiser</source>
+        <translation>Tarifas, vida de herramienta, rangos de corte de la plaquita y límites de la pieza para el optimizador</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::PlanningDataDialog</name>
+    <message>
+        <source>Planning Data</source>
+        <translation>Datos de planificación</translation>
+    </message>
+    <message>
+        <source>What the optimiser works with (docs/planning.md). A box showing “—” is not given.</source>
+        <translation>Con qué trabaja el optimizador (docs/planning.md). Un campo con «—» no está indicado.</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>Rates and times</source>
+        <translation>Tarifas y tiempos</translation>
+    </message>
+    <message>
+        <source>Cost per part C = M·t + C_edge·edges (docs/planning.md §1); in the currency of your choice, the same for both rates.</source>
+        <translation>Coste por pieza C = M·t + C_filo·filos (docs/planning.md §1); en la moneda que elija, la misma para ambas tarifas.</translation>
+    </message>
+    <message>
+        <source>&amp;Machine and operator rate:</source>
+        <translation>Tarifa de &amp;máquina y operario:</translation>
+    </message>
+    <message>
+        <source>per min</source>
+        <translation>por min</translation>
+    </message>
+    <message>
+        <source>Tool cost per &amp;edge:</source>
+        <translation>Coste de herramienta por &amp;filo:</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>Time to index or change the cutting edge, t_change (docs/planning.md §1).</source>
+        <translation>Tiempo para girar o cambiar el filo, t_change (docs/planning.md §1).</translation>
+    </message>
+    <message>
+        <source>&amp;Handling time per part:</source>
+        <translation>Tiempo de &amp;manipulación por pieza:</translation>
+    </message>
+    <message>
+        <source>Loading, unloading and idle moves per part, t_handling (docs/planning.md §1).</source>
+        <translation>Carga, descarga y movimientos en vacío por pieza, t_handling (docs/planning.md §1).</translation>
+    </message>
+    <message>
+        <source>Tool life (Taylor: v·Tⁿ = C)</source>
+        <translation>Vida de herramienta (Taylor: v·Tⁿ = C)</translation>
+    </message>
+    <message>
+        <source>Taylor (1907): v·Tⁿ = C with v in m/min and T in min; give both C and n, from the insert maker or your own tool-life tests, with their source. Without them tool life is left out of the plan.</source>
+        <translation>Taylor (1907): v·Tⁿ = C con v en m/min y T en min; indique C y n juntos, del fabricante de la plaquita o de sus propios ensayos de vida, con su fuente. Sin ellos la vida de herramienta queda fuera del plan.</translation>
+    </message>
+    <message>
+        <source>&amp;C:</source>
+        <translation>&amp;C:</translation>
+    </message>
+    <message>
+        <source>m/min</source>
+        <translation>m/min</translation>
+    </message>
+    <message>
+        <source>&amp;n:</source>
+        <translation>&amp;n:</translation>
+    </message>
+    <message>
+        <source>Minimum tool &amp;life:</source>
+        <translation>&amp;Vida mínima de herramienta:</translation>
+    </message>
+    <message>
+        <source>The tool_life constraint: T(v) at least this (docs/planning.md §2).</source>
+        <translation>La restricción tool_life: T(v) al menos este valor (docs/planning.md §2).</translation>
+    </message>
+    <message>
+        <source>where C and n come from</source>
+        <translation>de dónde proceden C y n</translation>
+    </message>
+    <message>
+        <source>&amp;Source:</source>
+        <translation>&amp;Fuente:</translation>
+    </message>
+    <message>
+        <source>From the Material&apos;s Data</source>
+        <translation>De los datos del material</translation>
+    </message>
+    <message>
+        <source>Fill C, n and the source from the data of %1.</source>
+        <translation>Rellenar C, n y la fuente con los datos de %1.</translation>
+    </message>
+    <message>
+        <source>The data of %1 gives no Taylor constants.</source>
+        <translation>Los datos de %1 no incluyen constantes de Taylor.</translation>
+    </message>
+    <message>
+        <source>%1 (material %2): C from %3; n from %4</source>
+        <translation>%1 (material %2): C de %3; n de %4</translation>
+    </message>
+    <message>
+        <source>TolTurn material data</source>
+        <translation>datos de materiales de TolTurn</translation>
+    </message>
+    <message>
+        <source>Cutting ranges of the insert</source>
+        <translation>Rangos de corte de la plaquita</translation>
+    </message>
+    <message>
+        <source>The insert maker&apos;s recommended range (catalogue), the bounds of the optimiser&apos;s variables (docs/planning.md §2–3).</source>
+        <translation>El rango recomendado por el fabricante de la plaquita (catálogo), los límites de las variables del optimizador (docs/planning.md §2–3).</translation>
+    </message>
+    <message>
+        <source>&amp;Feed:</source>
+        <translation>&amp;Avance:</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/rev</translation>
+    </message>
+    <message>
+        <source>&amp;Depth of cut:</source>
+        <translation>&amp;Profundidad de corte:</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>catalogue, page, chip breaker</source>
+        <translation>catálogo, página, rompevirutas</translation>
+    </message>
+    <message>
+        <source>S&amp;ource:</source>
+        <translation>F&amp;uente:</translation>
+    </message>
+    <message>
+        <source>Requirements and limits</source>
+        <translation>Requisitos y límites</translation>
+    </message>
+    <message>
+        <source> “—”: the machine&apos;s limit from its data, if it has one.</source>
+        <translation> «—»: el límite de la máquina según sus datos, si lo tiene.</translation>
+    </message>
+    <message>
+        <source>Max. &amp;Ra:</source>
+        <translation>&amp;Ra máx.:</translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation>µm</translation>
+    </message>
+    <message>
+        <source>Theoretical roughness Ra = f²/(32·rε) of the finishing pass.</source>
+        <translation>Rugosidad teórica Ra = f²/(32·rε) de la pasada de acabado.</translation>
+    </message>
+    <message>
+        <source>Max. R&amp;z:</source>
+        <translation>R&amp;z máx.:</translation>
+    </message>
+    <message>
+        <source>Theoretical roughness Rz = f²/(8·rε) of the finishing pass.</source>
+        <translation>Rugosidad teórica Rz = f²/(8·rε) de la pasada de acabado.</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>Upper limit of the cutting force F_c.</source>
+        <translation>Límite superior de la fuerza de corte F_c.</translation>
+    </message>
+    <message>
+        <source>kW</source>
+        <translation>kW</translation>
+    </message>
+    <message>
+        <source>Spindle power F_c·v available.</source>
+        <translation>Potencia de husillo disponible F_c·v.</translation>
+    </message>
+    <message>
+        <source>N·m</source>
+        <translation>N·m</translation>
+    </message>
+    <message>
+        <source>Spindle torque F_c·D/2 available.</source>
+        <translation>Par de husillo disponible F_c·D/2.</translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation>rpm</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed (G92).</source>
+        <translation>Velocidad de husillo más alta (G92).</translation>
+    </message>
+    <message>
+        <source>Tool change &amp;time:</source>
+        <translation>&amp;Tiempo de cambio de herramienta:</translation>
+    </message>
+    <message>
+        <source>Cutting s&amp;peed:</source>
+        <translation>Veloc&amp;idad de corte:</translation>
+    </message>
+    <message>
+        <source>Ma&amp;x. cutting force:</source>
+        <translation>&amp;Fuerza de corte máx.:</translation>
+    </message>
+    <message>
+        <source>Max. po&amp;wer:</source>
+        <translation>&amp;Potencia máx.:</translation>
+    </message>
+    <message>
+        <source>Max. tor&amp;que:</source>
+        <translation>Par de &amp;giro máx.:</translation>
+    </message>
+    <message>
+        <source>Max. sp&amp;indle speed:</source>
+        <translation>Velocidad de &amp;husillo máx.:</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningPanel</name>
@@ -3073,6 +3308,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>no se puede guardar &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>Planning Data…</source>
+        <translation>Datos de planificación…</translation>
+    </message>
+    <message>
+        <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits the optimiser works with</source>
+        <translation>Tarifas, vida de herramienta, rangos de corte de la plaquita y límites de la pieza con los que trabaja el optimizador</translation>
     </message>
 </context>
 <context>

@@ -211,6 +211,14 @@ void MainWindow::createDocks()
         if (m_document->hasProject() && !m_planning->isRunning())
             m_planning->optimise();
     });
+    QAction *planningData = view->addAction(tr("Planning &Data…"));
+    planningData->setObjectName(QStringLiteral("planningDataAction"));
+    planningData->setToolTip(
+        tr("Rates, tool life, the insert's cutting ranges and the part's limits for the optimiser"));
+    connect(planningData, &QAction::triggered, this, [this, planning] {
+        planning->raise();
+        m_planning->editPlanningData();
+    });
     m_toolBar->addAction(fit);
     m_toolBar->addSeparator();
     m_toolBar->addActions({optimise, m_exportReportAction});

@@ -344,6 +344,10 @@ void checkPlanning(const Project &p, Diagnostics &out)
         out.push_back(makeError(
             path + QStringLiteral("tool_life.n"),
             ProjectValidation::tr("the Taylor exponent n lies between 0 and 1, but is %1").arg(num(*s.taylorN))));
+    if (s.taylorC_m_min.has_value() != s.taylorN.has_value())
+        out.push_back(
+            makeError(path + (s.taylorN ? QStringLiteral("tool_life.C_m_min") : QStringLiteral("tool_life.n")),
+                      ProjectValidation::tr("give both Taylor constants C and n, or neither")));
     if (s.taylorC_m_min)
         requireText(s.toolLifeSource, path + QStringLiteral("tool_life.source"),
                     ProjectValidation::tr("the source of the Taylor constants"), out);

@@ -5,20 +5,27 @@
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/main_window.h"
+#include "core/data/data_library.h"
 #include "widgets/document/project_document.h"
+#include "widgets/planning/planning_data_dialog.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/plot/map_plot.h"
 
 #include <QAbstractItemModelTester>
+#include <QApplication>
 #include <QCheckBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFile>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 using namespace tolturn;
@@ -33,6 +40,22 @@ QString example(const char *name)
 } // namespace
 
 using tolturn::test::saveScreenshot;
+
+namespace {
+
+// Sets the machine rate of the planning data dialog once it is shown, and presses OK.
+void editOpenDialog()
+{
+    auto *dialog = qobject_cast<PlanningDataDialog *>(QApplication::activeModalWidget());
+    if (dialog == nullptr) {
+        QTimer::singleShot(0, [] { editOpenDialog(); }); // not shown yet
+        return;
+    }
+    dialog->field(QStringLiteral("machine_rate_per_min"))->setValue(2.5);
+    dialog->accept();
+}
+
+} // namespace
 
 class TestPlanningPanel : public QObject {
     Q_OBJECT
@@ -103,6 +126,83 @@ private Q_SLOTS:
         w.document()->undoStack()->undo();
         QVERIFY(w.document()->project().planning.disabledConstraints.isEmpty());
         QVERIFY(roughness->isChecked());
+    }
+
+    void planningDataDialogShowsTheFile()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        const PlanningSettings &s = w.document()->project().planning;
+        PlanningDataDialog dialog(s, DataLibrary::builtIn(), w.document()->project().materialId,
+                                  [](const PlanningSettings &) { return Diagnostics{}; });
+        // The example's planning block: rate 1.2/min, Kyocera's ranges 201.2-353.6 m/min,
+        // 0.17-0.399 mm/rev, 0.5-2 mm, Ra 1.6 um, no Taylor constants.
+        QCOMPARE(dialog.field(QStringLiteral("machine_rate_per_min"))->value(), 1.2);
+        QCOMPARE(dialog.field(QStringLiteral("ranges.cutting_speed_m_min.min"))->value(), 201.2);
+        QCOMPARE(dialog.field(QStringLiteral("ranges.feed_mm_rev.max"))->value(), 0.399);
+        QCOMPARE(dialog.field(QStringLiteral("ranges.depth_of_cut_mm.max"))->value(), 2.0);
+        QCOMPARE(dialog.field(QStringLiteral("max_ra_um"))->value(), 1.6);
+        QCOMPARE(dialog.field(QStringLiteral("tool_life.C_m_min"))->text(), QStringLiteral("—"));
+        QVERIFY(dialog.rangesSourceEdit()->text().startsWith(QStringLiteral("Kyocera")));
+        // Unchanged fields give back exactly the settings they were shown.
+        QVERIFY(dialog.settings() == s);
+        dialog.show();
+        QTest::qWait(20);
+        saveScreenshot(dialog, "planning-data.png");
+    }
+
+    void planningDataDialogRefusesAndKeepsWhatWasTyped()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->newProject()); // no planning data at all
+        ProjectDocument &doc = *w.document();
+        const PlanningSettings before = doc.project().planning;
+        PlanningDataDialog dialog(
+            before, DataLibrary::builtIn(), doc.project().materialId,
+            [&doc](const PlanningSettings &s) { return doc.setPlanning(s); }, &w);
+        dialog.show();
+        // C without n: refused, the message names the missing field, the box keeps its value.
+        dialog.field(QStringLiteral("tool_life.C_m_min"))->setValue(400.0);
+        dialog.accept();
+        QVERIFY(dialog.isVisible());
+        QVERIFY(dialog.message().contains(QStringLiteral("planning.tool_life.n")));
+        QCOMPARE(dialog.field(QStringLiteral("tool_life.C_m_min"))->value(), 400.0);
+        QVERIFY(doc.project().planning == before);
+        // Both constants but no source: refused on the source.
+        dialog.field(QStringLiteral("tool_life.n"))->setValue(0.25);
+        dialog.accept();
+        QVERIFY(dialog.message().contains(QStringLiteral("planning.tool_life.source")));
+        // A feed range whose maximum is below its minimum: refused, naming the value.
+        dialog.toolLifeSourceEdit()->setText(QStringLiteral("own tests, 2026"));
+        dialog.field(QStringLiteral("ranges.feed_mm_rev.min"))->setValue(0.3);
+        dialog.field(QStringLiteral("ranges.feed_mm_rev.max"))->setValue(0.1);
+        dialog.rangesSourceEdit()->setText(QStringLiteral("catalogue p. 1"));
+        dialog.accept();
+        QVERIFY(dialog.message().contains(QStringLiteral("planning.ranges.feed_mm_rev.max")));
+        QVERIFY(dialog.message().contains(QStringLiteral("0.1")));
+        // Corrected: accepted as one undoable edit.
+        dialog.field(QStringLiteral("ranges.feed_mm_rev.max"))->setValue(0.4);
+        dialog.accept();
+        QVERIFY(!dialog.isVisible());
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        const PlanningSettings &after = doc.project().planning;
+        QCOMPARE(after.taylorC_m_min.value_or(0.0), 400.0);
+        QCOMPARE(after.taylorN.value_or(0.0), 0.25);
+        QCOMPARE(after.toolLifeSource, QStringLiteral("own tests, 2026"));
+        QVERIFY(after.feed_mm_rev == (ValueRange{0.3, 0.4}));
+        QVERIFY(!after.cuttingSpeed_m_min.has_value());
+        doc.undoStack()->undo();
+        QVERIFY(doc.project().planning == before);
+    }
+
+    void planningDataIsReachableFromThePanel()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        QTimer::singleShot(0, [] { editOpenDialog(); });
+        w.planningPanel()->editPlanningData();
+        QCOMPARE(w.document()->project().planning.machineRate_per_min, 2.5);
+        QVERIFY(w.document()->undoStack()->canUndo());
     }
 
     void cancelStopsTheRun()

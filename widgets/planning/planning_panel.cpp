@@ -4,6 +4,7 @@
 #include "core/project/keywords.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/document/project_document.h"
+#include "widgets/planning/planning_data_dialog.h"
 #include "widgets/plot/map_plot.h"
 
 #include <QCheckBox>
@@ -78,6 +79,7 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     , m_run(new QPushButton(tr("Optimise"), this))
     , m_cancel(new QPushButton(tr("Cancel"), this))
     , m_apply(new QPushButton(tr("Apply to Passes"), this))
+    , m_data(new QPushButton(tr("Planning Data…"), this))
     , m_progress(new QProgressBar(this))
     , m_tabs(new QTabWidget(this))
     , m_plan(new QLabel(this))
@@ -119,7 +121,8 @@ void PlanningPanel::buildControls()
     m_progress->setRange(0, 100);
     m_progress->setValue(0);
     auto *top = new QHBoxLayout;
-    for (QWidget *w : std::initializer_list<QWidget *>{m_objective, m_plane, m_run, m_cancel, m_progress, m_apply})
+    for (QWidget *w :
+         std::initializer_list<QWidget *>{m_data, m_objective, m_plane, m_run, m_cancel, m_progress, m_apply})
         top->addWidget(w);
     auto *constraints = new QHBoxLayout;
     constraints->addWidget(new QLabel(tr("Constraints:"), this));
@@ -166,6 +169,9 @@ void PlanningPanel::buildControls()
     connect(m_run, &QPushButton::clicked, this, &PlanningPanel::optimise);
     connect(m_cancel, &QPushButton::clicked, this, &PlanningPanel::cancel);
     connect(m_apply, &QPushButton::clicked, this, &PlanningPanel::applyPlan);
+    m_data->setToolTip(tr("Rates, tool life, the insert's cutting ranges and the part's limits the optimiser "
+                          "works with"));
+    connect(m_data, &QPushButton::clicked, this, &PlanningPanel::editPlanningData);
     connect(m_objective, &QComboBox::currentIndexChanged, this, &PlanningPanel::settingsEdited);
     connect(m_compensated, &QCheckBox::toggled, this, &PlanningPanel::showFinishing);
     connect(m_export, &QPushButton::clicked, this, [this] {
@@ -204,6 +210,17 @@ void PlanningPanel::settingsEdited()
             s.disabledConstraints << box->property("constraint").toString();
     }
     (void)m_document.setPlanning(s);
+}
+
+void PlanningPanel::editPlanningData()
+{
+    if (!m_document.hasProject())
+        return;
+    const Project &project = m_document.project();
+    PlanningDataDialog dialog(
+        project.planning, DataLibrary::builtIn(), project.materialId,
+        [this](const PlanningSettings &s) { return m_document.setPlanning(s); }, this);
+    dialog.exec();
 }
 
 bool PlanningPanel::isRunning() const

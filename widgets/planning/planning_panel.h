@@ -39,6 +39,9 @@ public:
     [[nodiscard]] bool isRunning() const;
     // Replaces the project's passes with the optimal ones (undoable).
     void applyPlan();
+    // Opens the planning data (rates, tool life, cutting ranges, limits) for editing; OK applies
+    // them as one undoable edit.
+    void editPlanningData();
     // Writes the G-code shown (nominal or compensated) to a file atomically; returns the error, if any.
     [[nodiscard]] QString exportGCode(const QString &path) const;
 
@@ -74,6 +77,7 @@ private:
     QPushButton *m_run;
     QPushButton *m_cancel;
     QPushButton *m_apply;
+    QPushButton *m_data;
     QProgressBar *m_progress;
     QTabWidget *m_tabs;
     QLabel *m_plan;
