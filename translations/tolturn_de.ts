@@ -1887,6 +1887,49 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>SpindleCalibration</name>
+    <message>
+        <source>the %1 fit gives %2 = %3, which is not a spring (it must be above zero): the measured deviation does not grow from the chuck as a spindle–chuck held by springs would. Check the measurement, the forces, Lc and that the bar is held in the chuck only</source>
+        <translation>die Anpassung (%1) ergibt %2 = %3, das ist keine Feder (der Wert muss über null liegen): die gemessene Abweichung wächst nicht vom Futter weg, wie es bei einer von Federn gehaltenen Spindel–Futter-Einheit wäre. Prüfen Sie die Messung, die Kräfte, Lc und dass der Stab nur im Futter gespannt ist</translation>
+    </message>
+    <message>
+        <source>the test bar must be held in the chuck only (Valiño et al. 2008 §III); a centre would carry part of the load</source>
+        <translation>der Prüfstab muss nur im Futter gespannt sein (Valiño et al. 2008 §III); eine Spitze würde einen Teil der Last tragen</translation>
+    </message>
+    <message>
+        <source>Lc, the distance of the spindle bearing behind the chuck face, must be above zero, but is %1 mm</source>
+        <translation>Lc, der Abstand des Spindellagers hinter der Futterfläche, muss über null liegen, ist aber %1 mm</translation>
+    </message>
+    <message>
+        <source>the fit of a z² + b z + c needs points at three or more positions z, but there are %1</source>
+        <translation>die Anpassung von a z² + b z + c braucht Punkte an drei oder mehr Stellen z, es sind aber %1</translation>
+    </message>
+    <message>
+        <source>z = %1 mm is not on the turned outer surface of the bar</source>
+        <translation>z = %1 mm liegt nicht auf der gedrehten Außenfläche des Stabs</translation>
+    </message>
+    <message>
+        <source>z = %1 mm lies on Ø%2 mm, but the first point on Ø%3 mm: the fit needs the bar&apos;s points on one diameter</source>
+        <translation>z = %1 mm liegt auf Ø%2 mm, der erste Punkt aber auf Ø%3 mm: die Anpassung braucht die Punkte des Stabs auf einem Durchmesser</translation>
+    </message>
+    <message>
+        <source>the radial force must be above zero, but is %1 N</source>
+        <translation>die Radialkraft muss über null liegen, ist aber %1 N</translation>
+    </message>
+    <message>
+        <source>the bar&apos;s own bending and the toolpost make %1 % of the deviation measured at z = %2 mm: a stiffer (shorter, thicker) bar gives a surer fit</source>
+        <translation>die Biegung des Stabs selbst und der Werkzeughalter machen %1 % der bei z = %2 mm gemessenen Abweichung aus: ein steiferer (kürzerer, dickerer) Stab gibt eine sicherere Anpassung</translation>
+    </message>
+    <message>
+        <source>radial</source>
+        <translation>radial</translation>
+    </message>
+    <message>
+        <source>tangential</source>
+        <translation>tangential</translation>
+    </message>
+</context>
+<context>
     <name>StepExport</name>
     <message>
         <source>cannot write &apos;%1&apos;: the profile has errors, first %2</source>
@@ -2002,6 +2045,85 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>reading &apos;%1&apos; failed: %2</source>
         <translation>das Lesen von „%1“ ist fehlgeschlagen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>StiffnessCommand</name>
+    <message>
+        <source>  %1: k1 = %2 N/mm, k2 = %3 N·mm/rad, k3 = %4 N·mm/rad; RMS residual %5 µm over %6 points</source>
+        <translation>  %1: k1 = %2 N/mm, k2 = %3 N·mm/rad, k3 = %4 N·mm/rad; RMS-Restfehler %5 µm über %6 Punkte</translation>
+    </message>
+    <message>
+        <source>Spindle–chuck springs from the test bar (Valiño et al. 2008 §III): Lc = %1 mm, Ø%2 mm, F_r = %3 N, F_t = %4 N, F_a = %5 N</source>
+        <translation>Federn der Spindel–Futter-Einheit aus dem Prüfstab (Valiño et al. 2008 §III): Lc = %1 mm, Ø%2 mm, F_r = %3 N, F_t = %4 N, F_a = %5 N</translation>
+    </message>
+    <message>
+        <source>radial</source>
+        <translation>radial</translation>
+    </message>
+    <message>
+        <source>tangential</source>
+        <translation>tangential</translation>
+    </message>
+    <message>
+        <source>  tangential: not measured (no tangential_um column)</source>
+        <translation>  tangential: nicht gemessen (keine Spalte tangential_um)</translation>
+    </message>
+    <message>
+        <source>The bar&apos;s own bending and the toolpost, subtracted before the fit: %1 % of the deviation measured farthest from the chuck.</source>
+        <translation>Biegung des Stabs und Werkzeughalter, vor der Anpassung abgezogen: %1 % der am weitesten vom Futter gemessenen Abweichung.</translation>
+    </message>
+    <message>
+        <source>Test bar fit (Valiño et al. 2008 §III), tolturn-cli calibrate-stiffness, %1, %2: %3 points, RMS residual %4 µm</source>
+        <translation>Prüfstab-Anpassung (Valiño et al. 2008 §III), tolturn-cli calibrate-stiffness, %1, %2: %3 Punkte, RMS-Restfehler %4 µm</translation>
+    </message>
+    <message>
+        <source>Fit the spindle–chuck springs k1, k2, k3 (radial, and tangential where measured) to the measured deviation of a test bar turned in the chuck (Valiño et al. 2008 §III); --write stores them in the test bar&apos;s project, --into in another project on the same machine.</source>
+        <translation>Die Federn k1, k2, k3 der Spindel–Futter-Einheit (radial, und tangential, wo gemessen) an die gemessene Abweichung eines im Futter gedrehten Prüfstabs anpassen (Valiño et al. 2008 §III); --write speichert sie im Projekt des Prüfstabs, --into in einem anderen Projekt auf derselben Maschine.</translation>
+    </message>
+    <message>
+        <source>Print the result as JSON.</source>
+        <translation>Das Ergebnis als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>Lc: distance of the front spindle bearing behind the chuck face, in mm (default: the project&apos;s characterisation).</source>
+        <translation>Lc: Abstand des vorderen Spindellagers hinter der Futterfläche in mm (Vorgabe: die Charakterisierung des Projekts).</translation>
+    </message>
+    <message>
+        <source>Measured forces of the test cut in newtons, radial,tangential,axial (default: the project&apos;s force model).</source>
+        <translation>Gemessene Kräfte des Prüfschnitts in Newton, radial,tangential,axial (Vorgabe: das Kraftmodell des Projekts).</translation>
+    </message>
+    <message>
+        <source>Store the springs in the test bar&apos;s project and save it.</source>
+        <translation>Die Federn im Projekt des Prüfstabs speichern und es sichern.</translation>
+    </message>
+    <message>
+        <source>Store the springs in this project instead and save it.</source>
+        <translation>Die Federn stattdessen in diesem Projekt speichern und es sichern.</translation>
+    </message>
+    <message>
+        <source>Project of the test bar as cut: chuck only, its part, tool, material and pass.</source>
+        <translation>Projekt des Prüfstabs wie gedreht: nur Futter, sein Teil, Werkzeug, Werkstoff und Schnitt.</translation>
+    </message>
+    <message>
+        <source>CSV of the measured bar: z_mm,radial_um[,tangential_um].</source>
+        <translation>CSV des gemessenen Stabs: z_mm,radial_um[,tangential_um].</translation>
+    </message>
+    <message>
+        <source>give a test bar project and a measurements file, and --write or --into, not both</source>
+        <translation>ein Prüfstab-Projekt und eine Messdatei angeben, und --write oder --into, nicht beides</translation>
+    </message>
+    <message>
+        <source>--load takes three numbers in newtons, radial,tangential,axial, not &quot;%1&quot;</source>
+        <translation>--load erwartet drei Zahlen in Newton, radial,tangential,axial, nicht &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>--pivot takes a length in mm, not &quot;%1&quot;</source>
+        <translation>--pivot erwartet eine Länge in mm, nicht &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>wrote %1: spindle–chuck springs</source>
+        <translation>%1 geschrieben: Federn der Spindel–Futter-Einheit</translation>
     </message>
 </context>
 <context>
@@ -3557,6 +3679,38 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Machine stiffness not applied yet: %1.</source>
         <translation>Maschinensteifigkeit noch nicht übernommen: %1.</translation>
     </message>
+    <message>
+        <source>Measured Test Bar</source>
+        <translation>Gemessener Prüfstab</translation>
+    </message>
+    <message>
+        <source>Measurements (*.csv *.txt);;All files (*)</source>
+        <translation>Messungen (*.csv *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Enter Lc, the distance of the front spindle bearing behind the chuck face, before fitting the springs.</source>
+        <translation>Geben Sie vor der Anpassung der Federn Lc ein, den Abstand des vorderen Spindellagers hinter der Futterfläche.</translation>
+    </message>
+    <message>
+        <source>No springs fitted: %1</source>
+        <translation>Keine Federn angepasst: %1</translation>
+    </message>
+    <message>
+        <source>Test bar fit (Valiño et al. 2008 §III) of %1, %2: %3 points, RMS residual %4 µm, forces of the project&apos;s model</source>
+        <translation>Prüfstab-Anpassung (Valiño et al. 2008 §III) von %1, %2: %3 Punkte, RMS-Restfehler %4 µm, Kräfte aus dem Modell des Projekts</translation>
+    </message>
+    <message>
+        <source>Springs fitted to %1 points (RMS %2 µm)%3; the bar&apos;s own bending was %4 % of the deviation at its far end.</source>
+        <translation>Federn an %1 Punkte angepasst (RMS %2 µm)%3; die Biegung des Stabs selbst war %4 % der Abweichung an seinem freien Ende.</translation>
+    </message>
+    <message>
+        <source>, radial and tangential</source>
+        <translation>, radial und tangential</translation>
+    </message>
+    <message>
+        <source>, radial only</source>
+        <translation>, nur radial</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::StiffnessEditor</name>
@@ -3667,6 +3821,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>enter where the numbers come from (source)</source>
         <translation>geben Sie an, woher die Werte stammen (Quelle)</translation>
+    </message>
+    <message>
+        <source>Fit from Test Bar…</source>
+        <translation>Aus Prüfstab anpassen…</translation>
+    </message>
+    <message>
+        <source>Valiño et al. 2008 §III: the open project is a stiff bar turned in the chuck; a CSV of its measured deviation (z_mm, radial_um, optionally tangential_um) gives k1, k2, k3 for the Lc entered above.</source>
+        <translation>Valiño et al. 2008 §III: das offene Projekt ist ein steifer, im Futter gedrehter Stab; eine CSV-Datei seiner gemessenen Abweichung (z_mm, radial_um, wahlweise tangential_um) ergibt k1, k2, k3 für das oben eingegebene Lc.</translation>
     </message>
 </context>
 <context>

@@ -1887,6 +1887,49 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>SpindleCalibration</name>
+    <message>
+        <source>the %1 fit gives %2 = %3, which is not a spring (it must be above zero): the measured deviation does not grow from the chuck as a spindle–chuck held by springs would. Check the measurement, the forces, Lc and that the bar is held in the chuck only</source>
+        <translation>el ajuste %1 da %2 = %3, que no es un muelle (debe ser mayor que cero): la desviación medida no crece desde el plato como lo haría un conjunto husillo–plato sujeto por muelles. Revise la medición, las fuerzas, Lc y que la barra esté sujeta solo en el plato</translation>
+    </message>
+    <message>
+        <source>the test bar must be held in the chuck only (Valiño et al. 2008 §III); a centre would carry part of the load</source>
+        <translation>la barra de prueba debe sujetarse solo en el plato (Valiño et al. 2008 §III); un punto llevaría parte de la carga</translation>
+    </message>
+    <message>
+        <source>Lc, the distance of the spindle bearing behind the chuck face, must be above zero, but is %1 mm</source>
+        <translation>Lc, la distancia del rodamiento del husillo detrás de la cara del plato, debe ser mayor que cero, pero es %1 mm</translation>
+    </message>
+    <message>
+        <source>the fit of a z² + b z + c needs points at three or more positions z, but there are %1</source>
+        <translation>el ajuste de a z² + b z + c necesita puntos en tres o más posiciones z, pero hay %1</translation>
+    </message>
+    <message>
+        <source>z = %1 mm is not on the turned outer surface of the bar</source>
+        <translation>z = %1 mm no está en la superficie exterior torneada de la barra</translation>
+    </message>
+    <message>
+        <source>z = %1 mm lies on Ø%2 mm, but the first point on Ø%3 mm: the fit needs the bar&apos;s points on one diameter</source>
+        <translation>z = %1 mm está en Ø%2 mm, pero el primer punto en Ø%3 mm: el ajuste necesita los puntos de la barra en un solo diámetro</translation>
+    </message>
+    <message>
+        <source>the radial force must be above zero, but is %1 N</source>
+        <translation>la fuerza radial debe ser mayor que cero, pero es %1 N</translation>
+    </message>
+    <message>
+        <source>the bar&apos;s own bending and the toolpost make %1 % of the deviation measured at z = %2 mm: a stiffer (shorter, thicker) bar gives a surer fit</source>
+        <translation>la flexión propia de la barra y el portaherramientas suponen el %1 % de la desviación medida en z = %2 mm: una barra más rígida (más corta, más gruesa) da un ajuste más seguro</translation>
+    </message>
+    <message>
+        <source>radial</source>
+        <translation>radial</translation>
+    </message>
+    <message>
+        <source>tangential</source>
+        <translation>tangencial</translation>
+    </message>
+</context>
+<context>
     <name>StepExport</name>
     <message>
         <source>cannot write &apos;%1&apos;: the profile has errors, first %2</source>
@@ -2002,6 +2045,85 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>reading &apos;%1&apos; failed: %2</source>
         <translation>error al leer &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
+    <name>StiffnessCommand</name>
+    <message>
+        <source>  %1: k1 = %2 N/mm, k2 = %3 N·mm/rad, k3 = %4 N·mm/rad; RMS residual %5 µm over %6 points</source>
+        <translation>  %1: k1 = %2 N/mm, k2 = %3 N·mm/rad, k3 = %4 N·mm/rad; residuo RMS %5 µm en %6 puntos</translation>
+    </message>
+    <message>
+        <source>Spindle–chuck springs from the test bar (Valiño et al. 2008 §III): Lc = %1 mm, Ø%2 mm, F_r = %3 N, F_t = %4 N, F_a = %5 N</source>
+        <translation>Muelles husillo–plato a partir de la barra de prueba (Valiño et al. 2008 §III): Lc = %1 mm, Ø%2 mm, F_r = %3 N, F_t = %4 N, F_a = %5 N</translation>
+    </message>
+    <message>
+        <source>radial</source>
+        <translation>radial</translation>
+    </message>
+    <message>
+        <source>tangential</source>
+        <translation>tangencial</translation>
+    </message>
+    <message>
+        <source>  tangential: not measured (no tangential_um column)</source>
+        <translation>  tangencial: no medido (sin columna tangential_um)</translation>
+    </message>
+    <message>
+        <source>The bar&apos;s own bending and the toolpost, subtracted before the fit: %1 % of the deviation measured farthest from the chuck.</source>
+        <translation>Flexión propia de la barra y portaherramientas, restadas antes del ajuste: %1 % de la desviación medida más lejos del plato.</translation>
+    </message>
+    <message>
+        <source>Test bar fit (Valiño et al. 2008 §III), tolturn-cli calibrate-stiffness, %1, %2: %3 points, RMS residual %4 µm</source>
+        <translation>Ajuste de barra de prueba (Valiño et al. 2008 §III), tolturn-cli calibrate-stiffness, %1, %2: %3 puntos, residuo RMS %4 µm</translation>
+    </message>
+    <message>
+        <source>Fit the spindle–chuck springs k1, k2, k3 (radial, and tangential where measured) to the measured deviation of a test bar turned in the chuck (Valiño et al. 2008 §III); --write stores them in the test bar&apos;s project, --into in another project on the same machine.</source>
+        <translation>Ajustar los muelles husillo–plato k1, k2, k3 (radiales, y tangenciales donde se midieron) a la desviación medida de una barra de prueba torneada en el plato (Valiño et al. 2008 §III); --write los guarda en el proyecto de la barra, --into en otro proyecto de la misma máquina.</translation>
+    </message>
+    <message>
+        <source>Print the result as JSON.</source>
+        <translation>Imprimir el resultado como JSON.</translation>
+    </message>
+    <message>
+        <source>Lc: distance of the front spindle bearing behind the chuck face, in mm (default: the project&apos;s characterisation).</source>
+        <translation>Lc: distancia del rodamiento delantero del husillo detrás de la cara del plato, en mm (por defecto: la caracterización del proyecto).</translation>
+    </message>
+    <message>
+        <source>Measured forces of the test cut in newtons, radial,tangential,axial (default: the project&apos;s force model).</source>
+        <translation>Fuerzas medidas del corte de prueba en newtons, radial,tangencial,axial (por defecto: el modelo de fuerzas del proyecto).</translation>
+    </message>
+    <message>
+        <source>Store the springs in the test bar&apos;s project and save it.</source>
+        <translation>Guardar los muelles en el proyecto de la barra de prueba.</translation>
+    </message>
+    <message>
+        <source>Store the springs in this project instead and save it.</source>
+        <translation>Guardar los muelles en este otro proyecto.</translation>
+    </message>
+    <message>
+        <source>Project of the test bar as cut: chuck only, its part, tool, material and pass.</source>
+        <translation>Proyecto de la barra de prueba tal como se cortó: solo plato, su pieza, herramienta, material y pasada.</translation>
+    </message>
+    <message>
+        <source>CSV of the measured bar: z_mm,radial_um[,tangential_um].</source>
+        <translation>CSV de la barra medida: z_mm,radial_um[,tangential_um].</translation>
+    </message>
+    <message>
+        <source>give a test bar project and a measurements file, and --write or --into, not both</source>
+        <translation>indique un proyecto de barra de prueba y un archivo de mediciones, y --write o --into, no ambos</translation>
+    </message>
+    <message>
+        <source>--load takes three numbers in newtons, radial,tangential,axial, not &quot;%1&quot;</source>
+        <translation>--load admite tres números en newtons, radial,tangencial,axial, no &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>--pivot takes a length in mm, not &quot;%1&quot;</source>
+        <translation>--pivot admite una longitud en mm, no &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>wrote %1: spindle–chuck springs</source>
+        <translation>escrito %1: muelles husillo–plato</translation>
     </message>
 </context>
 <context>
@@ -3557,6 +3679,38 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Machine stiffness not applied yet: %1.</source>
         <translation>Rigidez de la máquina aún no aplicada: %1.</translation>
     </message>
+    <message>
+        <source>Measured Test Bar</source>
+        <translation>Barra de prueba medida</translation>
+    </message>
+    <message>
+        <source>Measurements (*.csv *.txt);;All files (*)</source>
+        <translation>Mediciones (*.csv *.txt);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Enter Lc, the distance of the front spindle bearing behind the chuck face, before fitting the springs.</source>
+        <translation>Introduzca Lc, la distancia del rodamiento delantero del husillo detrás de la cara del plato, antes de ajustar los muelles.</translation>
+    </message>
+    <message>
+        <source>No springs fitted: %1</source>
+        <translation>No se ajustaron muelles: %1</translation>
+    </message>
+    <message>
+        <source>Test bar fit (Valiño et al. 2008 §III) of %1, %2: %3 points, RMS residual %4 µm, forces of the project&apos;s model</source>
+        <translation>Ajuste de barra de prueba (Valiño et al. 2008 §III) de %1, %2: %3 puntos, residuo RMS %4 µm, fuerzas del modelo del proyecto</translation>
+    </message>
+    <message>
+        <source>Springs fitted to %1 points (RMS %2 µm)%3; the bar&apos;s own bending was %4 % of the deviation at its far end.</source>
+        <translation>Muelles ajustados a %1 puntos (RMS %2 µm)%3; la flexión propia de la barra fue el %4 % de la desviación en su extremo libre.</translation>
+    </message>
+    <message>
+        <source>, radial and tangential</source>
+        <translation>, radiales y tangenciales</translation>
+    </message>
+    <message>
+        <source>, radial only</source>
+        <translation>, solo radiales</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::StiffnessEditor</name>
@@ -3667,6 +3821,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>enter where the numbers come from (source)</source>
         <translation>indique la procedencia de los valores (fuente)</translation>
+    </message>
+    <message>
+        <source>Fit from Test Bar…</source>
+        <translation>Ajustar con barra de prueba…</translation>
+    </message>
+    <message>
+        <source>Valiño et al. 2008 §III: the open project is a stiff bar turned in the chuck; a CSV of its measured deviation (z_mm, radial_um, optionally tangential_um) gives k1, k2, k3 for the Lc entered above.</source>
+        <translation>Valiño et al. 2008 §III: el proyecto abierto es una barra rígida torneada en el plato; un CSV de su desviación medida (z_mm, radial_um, opcionalmente tangential_um) da k1, k2, k3 para el Lc introducido arriba.</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,8 @@
 #include <QCoreApplication>
 #include <QTextStream>
 
+#include <cmath>
+
 namespace tolturn {
 
 namespace {
@@ -44,6 +46,21 @@ QJsonObject diagnosticJson(const Diagnostic &d)
              d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning")},
             {QStringLiteral("field"), d.field},
             {QStringLiteral("message"), d.message}};
+}
+
+std::optional<CuttingForces> parseLoad(const QString &text)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    if (parts.size() != 3)
+        return std::nullopt;
+    double v[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        bool ok = false;
+        v[i] = parts.at(i).trimmed().toDouble(&ok);
+        if (!ok || !std::isfinite(v[i]))
+            return std::nullopt;
+    }
+    return CuttingForces{v[1], v[2], v[0]};
 }
 
 } // namespace tolturn

@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/import_command.h"
+#include "app/cli/stiffness_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -274,21 +275,6 @@ void printDeviationText(QTextStream &out, const DeviationResult &r)
                    .arg(f.featureId, formatNumber(f.z_mm), QString::number(f.tanTheta, 'g', 4),
                         QString::number(f.axialRunout_mm * kUmPerMm, 'f', 3))
             << '\n';
-}
-
-std::optional<CuttingForces> parseLoad(const QString &text)
-{
-    const QStringList parts = text.split(QLatin1Char(','));
-    if (parts.size() != 3)
-        return std::nullopt;
-    double v[3] = {0, 0, 0};
-    for (int i = 0; i < 3; ++i) {
-        bool ok = false;
-        v[i] = parts.at(i).trimmed().toDouble(&ok);
-        if (!ok || !std::isfinite(v[i]))
-            return std::nullopt;
-    }
-    return CuttingForces{v[1], v[2], v[0]};
 }
 
 int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
@@ -1013,6 +999,8 @@ const std::vector<Command> &commands()
              "Fit the Li & Du coefficients K_n and K_f to measured tangential and axial forces (eq. 17–18) for the "
              "project's tool; --write stores them in the project."),
          runCalibrateForces},
+        {QStringLiteral("calibrate-stiffness"), calibrateStiffnessSynopsis(), calibrateStiffnessSummary(),
+         runCalibrateStiffness},
         {QStringLiteral("iso286"), QStringLiteral("iso286 [--json] NOMINAL CLASS"),
          CommandLine::tr("ISO 286 limits of a tolerance class at a nominal size, e.g. 'iso286 50 H7'."), runIso286},
         {QStringLiteral("fit"), QStringLiteral("fit [--json] NOMINAL HOLE/SHAFT"),

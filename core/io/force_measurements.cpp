@@ -1,85 +1,49 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/force_measurements.h"
 
-#include <QCoreApplication>
-#include <QFile>
-#include <QRegularExpression>
-
-#include <array>
-#include <cmath>
+#include "core/io/measurement_table.h"
 
 namespace tolturn {
 
 namespace {
 
-struct MeasurementFiles {
-    Q_DECLARE_TR_FUNCTIONS(MeasurementFiles)
-};
+const std::vector<MeasurementColumn> &forceColumns()
+{
+    static const std::vector<MeasurementColumn> columns{{"feed_mm_rev", true, true},
+                                                        {"depth_of_cut_mm", true, true},
+                                                        {"tangential_N", true, false},
+                                                        {"axial_N", true, false}};
+    return columns;
+}
 
-constexpr std::array<const char *, 4> kColumns{"feed_mm_rev", "depth_of_cut_mm", "tangential_N", "axial_N"};
+MeasurementsReadResult forceMeasurements(const std::optional<std::vector<MeasurementRow>> &rows,
+                                         Diagnostics diagnostics)
+{
+    MeasurementsReadResult result;
+    result.diagnostics = std::move(diagnostics);
+    if (!rows)
+        return result;
+    std::vector<ForceMeasurement> cuts;
+    for (const MeasurementRow &r : *rows)
+        cuts.push_back({r[0].value_or(0.0), r[1].value_or(0.0), r[2].value_or(0.0), r[3].value_or(0.0)});
+    result.measurements = std::move(cuts);
+    return result;
+}
 
 } // namespace
 
 MeasurementsReadResult readForceMeasurements(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        MeasurementsReadResult r;
-        r.diagnostics.push_back(makeError(QStringLiteral("file"),
-                                          MeasurementFiles::tr("cannot open '%1': %2").arg(path, file.errorString())));
-        return r;
-    }
-    return parseForceMeasurements(QString::fromUtf8(file.readAll()), path);
+    Diagnostics diagnostics;
+    const auto rows = readMeasurementTable(path, forceColumns(), diagnostics);
+    return forceMeasurements(rows, std::move(diagnostics));
 }
 
 MeasurementsReadResult parseForceMeasurements(const QString &text, const QString &fileName)
 {
-    MeasurementsReadResult result;
-    static const QRegularExpression separator(QStringLiteral("[,;]"));
-    std::array<qsizetype, 4> columnOf{-1, -1, -1, -1};
-    std::vector<ForceMeasurement> rows;
-    const QStringList lines = text.split(QLatin1Char('\n'));
-    bool header = true;
-    for (qsizetype n = 0; n < lines.size(); ++n) {
-        const QString line = lines.at(n).trimmed();
-        if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
-            continue;
-        const QStringList cells = line.split(separator);
-        const QString where = QStringLiteral("%1:%2").arg(fileName).arg(n + 1);
-        if (header) {
-            for (std::size_t c = 0; c < kColumns.size(); ++c) {
-                columnOf[c] = cells.indexOf(QLatin1String(kColumns[c]));
-                if (columnOf[c] < 0)
-                    result.diagnostics.push_back(makeError(
-                        where, MeasurementFiles::tr("the header lacks the column \"%1\"; it needs %2")
-                                   .arg(QLatin1String(kColumns[c]), QStringLiteral("feed_mm_rev, depth_of_cut_mm, "
-                                                                                   "tangential_N, axial_N"))));
-            }
-            if (hasErrors(result.diagnostics))
-                return result;
-            header = false;
-            continue;
-        }
-        std::array<double, 4> v{};
-        for (std::size_t c = 0; c < kColumns.size(); ++c) {
-            bool ok = false;
-            const QString cell = cells.value(columnOf[c]).trimmed();
-            v[c] = cell.toDouble(&ok);
-            if (!ok || !std::isfinite(v[c]) || v[c] <= (c < 2 ? 0.0 : -1e300))
-                result.diagnostics.push_back(
-                    makeError(where, MeasurementFiles::tr("%1 must be a number%2, not \"%3\"")
-                                         .arg(QLatin1String(kColumns[c]),
-                                              c < 2 ? MeasurementFiles::tr(" above zero") : QString(), cell)));
-        }
-        rows.push_back({v[0], v[1], v[2], v[3]});
-    }
-    if (header)
-        result.diagnostics.push_back(makeError(fileName, MeasurementFiles::tr("the file has no header line")));
-    else if (rows.empty())
-        result.diagnostics.push_back(makeError(fileName, MeasurementFiles::tr("the file has no measurement")));
-    if (!hasErrors(result.diagnostics))
-        result.measurements = rows;
-    return result;
+    Diagnostics diagnostics;
+    const auto rows = parseMeasurementTable(text, fileName, forceColumns(), diagnostics);
+    return forceMeasurements(rows, std::move(diagnostics));
 }
 
 } // namespace tolturn

@@ -3,6 +3,7 @@
 #include "tests/cli/cli_runner.h"
 
 #include "core/cutting/cutting_forces.h"
+#include "core/io/project_file.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -16,6 +17,17 @@
 using tolturn::test::example;
 using tolturn::test::Run;
 using tolturn::test::runCli;
+
+namespace {
+
+void writeFile(const QString &path, const QByteArray &content)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(content);
+}
+
+} // namespace
 
 class TestCli : public QObject {
     Q_OBJECT
@@ -230,6 +242,91 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("cuts.csv:2: depth_of_cut_mm must be a number above zero, not \"one\"")),
                  qPrintable(r.err));
+    }
+
+    // calibrate-stiffness inverts deflect: the deviation the model predicts along the Ø50 mm
+    // feature of the example with known springs (Lc = 220 mm), given as a measured test bar, gives
+    // those springs back, and --into stores them in another project with their source. The
+    // independent check against hand-written closed forms is tst_deviation::spindleSpringsFromATestBar.
+    void calibrateStiffnessRoundTrip()
+    {
+        QTemporaryDir dir;
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        const QString target = dir.filePath(QStringLiteral("part.tolturn"));
+        writeFile(target, QJsonDocument(project).toJson());
+        auto springs = [](double k1, double k2, double k3) {
+            return QJsonObject{{QStringLiteral("k1_N_per_mm"), k1},
+                               {QStringLiteral("k2_Nmm_per_rad"), k2},
+                               {QStringLiteral("k3_Nmm_per_rad"), k3}};
+        };
+        project.insert(QStringLiteral("characterisation"),
+                       QJsonObject{{QStringLiteral("source"), QStringLiteral("test")},
+                                   {QStringLiteral("pivot_distance_mm"), 220.0},
+                                   {QStringLiteral("spindle_radial"), springs(1.5e5, 3e9, 1e9)},
+                                   {QStringLiteral("spindle_tangential"), springs(2.5e5, 6e9, 2e9)}});
+        const QString bar = dir.filePath(QStringLiteral("bar.tolturn"));
+        writeFile(bar, QJsonDocument(project).toJson());
+        const Run deflect = runCli({QStringLiteral("deflect"), QStringLiteral("--json"), QStringLiteral("--stations"),
+                                    QStringLiteral("9"), bar});
+        QCOMPARE(deflect.exitCode, 0);
+        QString csv = QStringLiteral("z_mm,radial_um,tangential_um\n");
+        for (const QJsonValue f :
+             QJsonDocument::fromJson(deflect.out.toUtf8()).object().value(QStringLiteral("features")).toArray()) {
+            if (f.toObject().value(QStringLiteral("id")).toString() != QLatin1String("O4"))
+                continue;
+            for (const QJsonValue st : f.toObject().value(QStringLiteral("stations")).toArray()) {
+                const QJsonObject o = st.toObject();
+                csv +=
+                    QStringLiteral("%1,%2,%3\n")
+                        .arg(o.value(QStringLiteral("z_mm")).toDouble(), 0, 'g', 15)
+                        .arg(o.value(QStringLiteral("radial_um")).toObject().value(QStringLiteral("total")).toDouble(),
+                             0, 'g', 15)
+                        .arg(o.value(QStringLiteral("tangential_um"))
+                                 .toObject()
+                                 .value(QStringLiteral("total"))
+                                 .toDouble(),
+                             0, 'g', 15);
+            }
+        }
+        const QString measured = dir.filePath(QStringLiteral("bar.csv"));
+        writeFile(measured, csv.toUtf8());
+        const Run r =
+            runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--json"), QStringLiteral("--pivot"),
+                    QStringLiteral("220"), QStringLiteral("--into"), target, bar, measured});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err + r.out));
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject radial = o.value(QStringLiteral("radial")).toObject();
+        const QJsonObject tangential = o.value(QStringLiteral("tangential")).toObject();
+        auto near = [](const QJsonObject &fit, const char *key, double reference) {
+            return std::abs(fit.value(QLatin1String(key)).toDouble() / reference - 1.0) < 1e-3;
+        };
+        QVERIFY2(near(radial, "k1_N_per_mm", 1.5e5) && near(radial, "k2_Nmm_per_rad", 3e9) &&
+                     near(radial, "k3_Nmm_per_rad", 1e9),
+                 qPrintable(r.out));
+        QVERIFY2(near(tangential, "k1_N_per_mm", 2.5e5) && near(tangential, "k2_Nmm_per_rad", 6e9) &&
+                     near(tangential, "k3_Nmm_per_rad", 2e9),
+                 qPrintable(r.out));
+        QCOMPARE(o.value(QStringLiteral("diameter_mm")).toDouble(), 50.0);
+        QVERIFY(r.err.contains(QStringLiteral("wrote")));
+        const tolturn::ProjectParseResult written = tolturn::readProjectFile(target);
+        QVERIFY(written.project);
+        if (!written.project)
+            return;
+        const tolturn::MachineCharacterisation &c = written.project->characterisation;
+        QCOMPARE(c.pivotDistance_mm.value_or(0.0), 220.0);
+        QVERIFY(c.spindleRadial && std::abs(c.spindleRadial->k2_Nmm_per_rad / 3e9 - 1.0) < 1e-3);
+        QVERIFY(c.source.contains(QStringLiteral("calibrate-stiffness, bar.csv")));
+
+        // Without Lc (the example has no characterisation) the command names the field.
+        const Run noPivot =
+            runCli({QStringLiteral("calibrate-stiffness"), example("stepped-shaft-chuck.tolturn"), measured});
+        QCOMPARE(noPivot.exitCode, 1);
+        QVERIFY2(noPivot.err.contains(QStringLiteral("pivot_distance_mm: Lc")), qPrintable(noPivot.err));
+        const Run badLoad = runCli(
+            {QStringLiteral("calibrate-stiffness"), QStringLiteral("--load"), QStringLiteral("1,2"), bar, measured});
+        QCOMPARE(badLoad.exitCode, 2);
     }
 
     // iso286 and fit against published values: 50 H7 = +25/0 µm, IT7 = 25 µm; 50 g6 = -9/-25 µm

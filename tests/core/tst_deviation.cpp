@@ -2,6 +2,7 @@
 // The deviation model from a project to per-station contributions, against closed forms, and its
 // named errors for bad input.
 #include "core/deviation/deviation_model.h"
+#include "core/deviation/stiffness_calibration.h"
 #include "core/io/project_file.h"
 
 #include <QTest>
@@ -157,6 +158,107 @@ private Q_SLOTS:
             // Toolpost, eq. 5: 40 mm of a 25 x 25 mm steel shank, E = 210000 MPa.
             QVERIFY(near(st.radial.toolpost_mm, Fr * 40.0 / (625.0 * 210000.0), 1e-12));
         }
+    }
+
+    // Valiño et al. (2008) §III backwards: a test bar's deviation written by hand from known springs
+    // (the spindle polynomial of docs/model.md §2, the Timoshenko cantilever over the in-process
+    // section Ø2(r + ap) from the chuck face, and the toolpost's eq. 5) gives those springs back.
+    void spindleSpringsFromATestBar()
+    {
+        const double r = 30.0, ap = 1.0, chuckFace = 30.0, Lc = 250.0;
+        Project p = barProject(r, 130.0, ClampingMethod::Chuck, chuckFace);
+        p.tool.overhang_mm = 40.0;
+        const double Ft = 800.0, Fa = 300.0, Fr = 400.0;
+        const SpindleSprings radial{2.0e5, 4.0e9, 1.5e9};
+        const SpindleSprings tangential{3.0e5, 5.0e9, 2.0e9};
+        const double rs = r + ap;
+        const double I = kPi * std::pow(rs, 4) / 4;
+        const double A = kPi * rs * rs;
+        auto spindle = [Lc](const SpindleSprings &k, double F, double M, double x) {
+            const double s = 1 / k.k2_Nmm_per_rad + 1 / k.k3_Nmm_per_rad;
+            return F * s * x * x + (2 * F * Lc / k.k2_Nmm_per_rad + M * s) * x + F / k.k1_N_per_mm +
+                   F * Lc * Lc / k.k2_Nmm_per_rad + M * Lc / k.k2_Nmm_per_rad;
+        };
+        std::vector<TestBarPoint> points;
+        for (int i = 0; i < 10; ++i) {
+            const double z = 35.0 + 10.0 * i;
+            const double x = z - chuckFace;
+            const double bend = x * x * x / (3 * kE * I) + x / (kKappaSolid * kG * A);
+            const double toolpost = Fr * 40.0 / (625.0 * 210000.0);
+            const double wr = spindle(radial, Fr, -Fa * r, x) + Fr * bend - Fa * r * x * x / (2 * kE * I) + toolpost;
+            const double wt = spindle(tangential, Ft, 0.0, x) + Ft * bend;
+            points.push_back({z, 1000.0 * wr, 1000.0 * wt});
+        }
+        const StiffnessCalibration cal =
+            calibrateSpindleChuck(p, DataLibrary::builtIn(), points, Lc, CuttingForces{Ft, Fa, Fr});
+        QVERIFY2(cal.radial && cal.tangential, qPrintable(dump(cal.diagnostics)));
+        QCOMPARE(cal.diameter_mm, 60.0);
+        const std::pair<const SpringFit &, const SpindleSprings &> fits[] = {{*cal.radial, radial},
+                                                                             {*cal.tangential, tangential}};
+        for (const auto &[fit, springs] : fits) {
+            QVERIFY2(near(fit.springs.k1_N_per_mm, springs.k1_N_per_mm, 1e-4),
+                     qPrintable(QString::number(fit.springs.k1_N_per_mm)));
+            QVERIFY2(near(fit.springs.k2_Nmm_per_rad, springs.k2_Nmm_per_rad, 1e-4),
+                     qPrintable(QString::number(fit.springs.k2_Nmm_per_rad)));
+            QVERIFY2(near(fit.springs.k3_Nmm_per_rad, springs.k3_Nmm_per_rad, 1e-4),
+                     qPrintable(QString::number(fit.springs.k3_Nmm_per_rad)));
+            QVERIFY(fit.rmsResidual_um < 1e-4);
+            QCOMPARE(fit.points, 10);
+        }
+    }
+
+    // Without a tangential column only the radial springs are fitted; a deviation that shrinks
+    // away from the chuck is no spring system, and the error names the spring and its value.
+    void testBarFitRefusesWhatIsNoSpring()
+    {
+        Project p = barProject(30.0, 130.0, ClampingMethod::Chuck, 30.0);
+        std::vector<TestBarPoint> points;
+        for (int i = 0; i < 5; ++i) {
+            const double z = 40.0 + 20.0 * i;
+            points.push_back({z, 20.0 - 0.1 * (z - 30.0), std::nullopt}); // 20 um at the chuck, falling
+        }
+        const StiffnessCalibration cal =
+            calibrateSpindleChuck(p, DataLibrary::builtIn(), points, 200.0, CuttingForces{800.0, 300.0, 400.0});
+        QVERIFY(!cal.radial && !cal.tangential);
+        QVERIFY2(dump(cal.diagnostics).contains(QStringLiteral("which is not a spring")),
+                 qPrintable(dump(cal.diagnostics)));
+        QVERIFY(dump(cal.diagnostics).contains(QStringLiteral("radial fit gives k")));
+
+        p.clamping.method = ClampingMethod::ChuckTailstock;
+        const StiffnessCalibration held = calibrateSpindleChuck(p, DataLibrary::builtIn(), points, 200.0);
+        QVERIFY(!held.radial);
+        QCOMPARE(held.diagnostics.front().field, QStringLiteral("clamping.method"));
+        p.clamping.method = ClampingMethod::Chuck;
+        const StiffnessCalibration twoPoints =
+            calibrateSpindleChuck(p, DataLibrary::builtIn(), {points[0], points[1]}, 200.0);
+        QVERIFY(dump(twoPoints.diagnostics).contains(QStringLiteral("three or more positions z, but there are 2")));
+        const StiffnessCalibration offBar =
+            calibrateSpindleChuck(p, DataLibrary::builtIn(), {points[0], points[1], {150.0, 1.0, {}}}, 200.0);
+        QVERIFY(dump(offBar.diagnostics).contains(QStringLiteral("z = 150 mm is not on the turned outer surface")));
+    }
+
+    void testBarMeasurementFile()
+    {
+        const TestBarReadResult reordered = parseTestBarMeasurements(
+            QStringLiteral("# bar 1\nradial_um;z_mm\n12.5;40\n13.5;50\n"), QStringLiteral("bar.csv"));
+        QVERIFY2(reordered.points, qPrintable(dump(reordered.diagnostics)));
+        QCOMPARE(reordered.points->at(1).z_mm, 50.0);
+        QCOMPARE(reordered.points->at(1).radial_um, 13.5);
+        const TestBarReadResult good = parseTestBarMeasurements(
+            QStringLiteral("z_mm,radial_um,tangential_um\n40,12.5,\n50,13.5,4\n"), QStringLiteral("bar.csv"));
+        QVERIFY2(good.points, qPrintable(dump(good.diagnostics)));
+        QCOMPARE(good.points->size(), std::size_t(2));
+        QCOMPARE(good.points->at(0).radial_um, 12.5);
+        QVERIFY(!good.points->at(0).tangential_um);
+        QCOMPARE(good.points->at(1).tangential_um.value_or(0.0), 4.0);
+        const TestBarReadResult bad =
+            parseTestBarMeasurements(QStringLiteral("z_mm,radial_um\n40,abc\n"), QStringLiteral("bar.csv"));
+        QVERIFY(!bad.points);
+        QCOMPARE(bad.diagnostics.front().field, QStringLiteral("bar.csv:2"));
+        QVERIFY(bad.diagnostics.front().message.contains(QStringLiteral("radial_um must be a number, not \"abc\"")));
+        const TestBarReadResult header =
+            parseTestBarMeasurements(QStringLiteral("z,radial_um\n"), QStringLiteral("b.csv"));
+        QVERIFY(header.diagnostics.front().message.contains(QStringLiteral("lacks the column \"z_mm\"")));
     }
 
     // Between sprung centres: simply supported beam plus the spring motion of the supports,

@@ -11,8 +11,10 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLineEdit>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
@@ -168,6 +170,62 @@ private Q_SLOTS:
         w.document()->undoStack()->undo();
         QVERIFY(!w.document()->project().characterisation.spindleRadial.has_value());
         QCOMPARE(e->box(0, 0)->value(), 0.0);
+    }
+
+    // Fit from Test Bar: the deviation the program shows for a bar with known springs, saved as a
+    // measurement, gives the springs back as one undoable edit (the closed-form check of the fit is
+    // tst_deviation::spindleSpringsFromATestBar).
+    void stiffnessFittedFromATestBar()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->newProject()); // a plain bar in the chuck
+        ProjectDocument &doc = *w.document();
+        MachineCharacterisation known;
+        known.source = QStringLiteral("test");
+        known.pivotDistance_mm = 200.0;
+        known.spindleRadial = SpindleSprings{2.0e5, 4.0e9, 1.5e9};
+        QVERIFY(doc.setCharacterisation(known).empty());
+        QString csv = QStringLiteral("z_mm,radial_um\n");
+        for (const FeatureDeviation &f : w.deflectionPanel()->result().features) {
+            if (f.side != ContourSide::Outer || f.kind != SegmentKind::Cylinder)
+                continue;
+            for (const Station &st : f.stations)
+                csv +=
+                    QStringLiteral("%1,%2\n").arg(st.z_mm, 0, 'g', 15).arg(1000.0 * st.radial.total_mm(), 0, 'g', 15);
+        }
+        doc.undoStack()->undo();
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bar.csv"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(csv.toUtf8());
+        file.close();
+
+        SetupPanel *panel = w.setupPanel();
+        QVERIFY(!panel->fitStiffnessFromTestBar(path)); // no Lc yet
+        QVERIFY(panel->message().contains(QStringLiteral("Enter Lc")));
+        panel->stiffnessEditor()->pivotBox()->setValue(200.0); // kept in the box, not yet applied
+        QVERIFY(panel->message().contains(QStringLiteral("source")));
+        const int edits = doc.undoStack()->index();
+        QVERIFY2(panel->fitStiffnessFromTestBar(path), qPrintable(panel->message()));
+        QCOMPARE(doc.undoStack()->index(), edits + 1);
+        const MachineCharacterisation &c = doc.project().characterisation;
+        QVERIFY(c.spindleRadial.has_value());
+        if (!c.spindleRadial)
+            return;
+        QVERIFY(std::abs(c.spindleRadial->k1_N_per_mm / 2.0e5 - 1.0) < 1e-3);
+        QVERIFY(std::abs(c.spindleRadial->k2_Nmm_per_rad / 4.0e9 - 1.0) < 1e-3);
+        QVERIFY(std::abs(c.spindleRadial->k3_Nmm_per_rad / 1.5e9 - 1.0) < 1e-3);
+        QVERIFY(c.source.contains(QStringLiteral("Test bar fit")));
+        QCOMPARE(panel->stiffnessEditor()->box(0, 1)->value(), std::round(c.spindleRadial->k2_Nmm_per_rad));
+
+        // A file that is not a measurement: nothing changes, the message names file and line.
+        file.open(QIODevice::WriteOnly);
+        file.write("z_mm,radial_um\n40,five\n");
+        file.close();
+        QVERIFY(!panel->fitStiffnessFromTestBar(path));
+        QVERIFY2(panel->message().contains(QStringLiteral("bar.csv:2: radial_um")), qPrintable(panel->message()));
+        QCOMPARE(doc.undoStack()->index(), edits + 1);
     }
 
     void cuttingConditionsAndMaterialAreEdits()

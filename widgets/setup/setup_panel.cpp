@@ -2,6 +2,7 @@
 #include "widgets/setup/setup_panel.h"
 
 #include "core/data/data_library.h"
+#include "core/deviation/stiffness_calibration.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 #include "widgets/common/length_spin_box.h"
@@ -9,7 +10,10 @@
 #include "widgets/setup/stiffness_editor.h"
 
 #include <QComboBox>
+#include <QDate>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -134,6 +138,12 @@ QWidget *SetupPanel::createPartGroup()
     connect(m_material, &QComboBox::activated, this, &SetupPanel::applyMaterial);
     connect(m_machine, &QComboBox::activated, this, &SetupPanel::applyMachine);
     connect(m_stiffness, &StiffnessEditor::edited, this, &SetupPanel::applyStiffness);
+    connect(m_stiffness, &StiffnessEditor::fitRequested, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Measured Test Bar"), QString(),
+                                                          tr("Measurements (*.csv *.txt);;All files (*)"));
+        if (!path.isEmpty())
+            (void)fitStiffnessFromTestBar(path);
+    });
     return group;
 }
 
@@ -360,6 +370,55 @@ void SetupPanel::applyStiffness()
         return;
     }
     showOutcome(m_document.setCharacterisation(m_stiffness->characterisation(m_document.project().characterisation)));
+}
+
+bool SetupPanel::fitStiffnessFromTestBar(const QString &csvPath)
+{
+    const TestBarReadResult bar = readTestBarMeasurements(csvPath);
+    const Project &project = m_document.project();
+    const double pivot = m_stiffness->pivotBox()->value() > 0.0
+                             ? m_stiffness->pivotBox()->value()
+                             : project.characterisation.pivotDistance_mm.value_or(0.0);
+    if (!(pivot > 0.0)) {
+        m_message->setText(tr("Enter Lc, the distance of the front spindle bearing behind the chuck face, before "
+                              "fitting the springs."));
+        return false;
+    }
+    StiffnessCalibration cal;
+    if (bar.points)
+        cal = calibrateSpindleChuck(project, DataLibrary::builtIn(), *bar.points, pivot);
+    QStringList errors;
+    for (const Diagnostics *list : std::initializer_list<const Diagnostics *>{&bar.diagnostics, &cal.diagnostics}) {
+        for (const Diagnostic &d : *list)
+            errors << d.toString();
+    }
+    if (!cal.radial) {
+        m_message->setText(tr("No springs fitted: %1").arg(errors.join(QLatin1Char('\n'))));
+        return false;
+    }
+    MachineCharacterisation c = project.characterisation;
+    c.pivotDistance_mm = pivot;
+    c.spindleRadial = cal.radial->springs;
+    if (cal.tangential)
+        c.spindleTangential = cal.tangential->springs;
+    c.source = tr("Test bar fit (Valiño et al. 2008 §III) of %1, %2: %3 points, RMS residual %4 µm, forces of the "
+                  "project's model")
+                   .arg(QFileInfo(csvPath).fileName(), QDate::currentDate().toString(Qt::ISODate))
+                   .arg(cal.radial->points)
+                   .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2));
+    const Diagnostics refused = m_document.setCharacterisation(c);
+    if (hasErrors(refused)) {
+        showOutcome(refused);
+        return false;
+    }
+    errors.prepend(tr("Springs fitted to %1 points (RMS %2 µm)%3; the bar's own bending was %4 % of the deviation "
+                      "at its far end.")
+                       .arg(cal.radial->points)
+                       .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2),
+                            cal.tangential ? tr(", radial and tangential") : tr(", radial only"),
+                            QString::number(100.0 * cal.barShareAtEnd, 'f', 0)));
+    m_message->setText(errors.join(QLatin1Char('\n')));
+    return true;
 }
 
 void SetupPanel::showOutcome(const Diagnostics &diagnostics)

@@ -51,6 +51,11 @@ public:
     // Cutting speed, feed and depth of cut of pass `index`.
     [[nodiscard]] QDoubleSpinBox *passBox(int index, int column) const;
 
+    // Fits the spindle–chuck springs to the measured test bar in `csvPath`, the open project being
+    // that bar as it was cut, with the Lc of the stiffness editor (or the project's); the springs
+    // are stored as one undoable edit and the result shown. False with the reason shown otherwise.
+    bool fitStiffnessFromTestBar(const QString &csvPath);
+
     // The reason the last change was refused; empty after an accepted one.
     [[nodiscard]] QString message() const;
 

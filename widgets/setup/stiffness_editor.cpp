@@ -6,6 +6,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 
 namespace tolturn {
 
@@ -83,6 +84,12 @@ StiffnessEditor::StiffnessEditor(QWidget *parent)
             });
         }
     }
+    m_fit = new QPushButton(tr("Fit from Test Bar…"));
+    m_fit->setToolTip(tr("Valiño et al. 2008 §III: the open project is a stiff bar turned in the chuck; a CSV of its "
+                         "measured deviation (z_mm, radial_um, optionally tangential_um) gives k1, k2, k3 for the "
+                         "Lc entered above."));
+    grid->addWidget(m_fit, 8, 1, 1, 3);
+    connect(m_fit, &QPushButton::clicked, this, &StiffnessEditor::fitRequested);
     connect(m_pivot, &QDoubleSpinBox::valueChanged, this, [this] {
         if (!m_updating)
             Q_EMIT edited();
@@ -133,6 +140,7 @@ QString StiffnessEditor::missing() const
         any = any || filled > 0;
         springs = springs || (r < 2 && filled > 0);
     }
+    any = any || m_pivot->value() > 0.0;
     if (springs && m_pivot->value() <= 0.0)
         return tr("enter the pivot distance Lc of the spindle springs");
     if (any && m_source->text().trimmed().isEmpty())

@@ -10,6 +10,7 @@
 
 class QDoubleSpinBox;
 class QLineEdit;
+class QPushButton;
 
 namespace tolturn {
 
@@ -35,15 +36,20 @@ public:
 
     [[nodiscard]] QDoubleSpinBox *pivotBox() const { return m_pivot; }
 
+    // "Fit from Test Bar…": asks for the springs from a measured test bar (Valiño et al. 2008 §III).
+    [[nodiscard]] QPushButton *fitButton() const { return m_fit; }
+
     // Row 0/1: spindle radial/tangential k1, k2, k3; row 2/3: tailstock/centres radial, tangential.
     [[nodiscard]] QDoubleSpinBox *box(int row, int column) const;
 
 Q_SIGNALS:
-    void edited(); // a field was changed by the user
+    void edited();       // a field was changed by the user
+    void fitRequested(); // the user asked to fit the springs to a measured test bar
 
 private:
     QLineEdit *m_source;
     QDoubleSpinBox *m_pivot = nullptr;
+    QPushButton *m_fit = nullptr;
     std::array<std::array<QDoubleSpinBox *, 3>, 4> m_boxes{};
     bool m_updating = false;
 };

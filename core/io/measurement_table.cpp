@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/io/measurement_table.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QRegularExpression>
+#include <QStringList>
+
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+struct MeasurementFiles {
+    Q_DECLARE_TR_FUNCTIONS(MeasurementFiles)
+};
+
+QString requiredNames(const std::vector<MeasurementColumn> &columns)
+{
+    QStringList names;
+    for (const MeasurementColumn &c : columns)
+        names << (c.required ? QLatin1String(c.name) : QStringLiteral("[%1]").arg(QLatin1String(c.name)));
+    return names.join(QStringLiteral(", "));
+}
+
+// Where each column is in the header; errors for the required ones it lacks.
+std::vector<qsizetype> headerColumns(const QStringList &cells, const QString &where,
+                                     const std::vector<MeasurementColumn> &columns, Diagnostics &out)
+{
+    std::vector<qsizetype> columnOf;
+    QStringList trimmed;
+    for (const QString &cell : cells)
+        trimmed << cell.trimmed();
+    for (const MeasurementColumn &c : columns) {
+        columnOf.push_back(trimmed.indexOf(QLatin1String(c.name)));
+        if (columnOf.back() < 0 && c.required)
+            out.push_back(makeError(where, MeasurementFiles::tr("the header lacks the column \"%1\"; it needs %2")
+                                               .arg(QLatin1String(c.name), requiredNames(columns))));
+    }
+    return columnOf;
+}
+
+MeasurementRow readRow(const QStringList &cells, const QString &where, const std::vector<MeasurementColumn> &columns,
+                       const std::vector<qsizetype> &columnOf, Diagnostics &out)
+{
+    MeasurementRow row;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+        const QString cell = columnOf[c] < 0 ? QString() : cells.value(columnOf[c]).trimmed();
+        if (cell.isEmpty() && !columns[c].required) {
+            row.emplace_back(std::nullopt);
+            continue;
+        }
+        bool ok = false;
+        const double v = cell.toDouble(&ok);
+        if (!ok || !std::isfinite(v) || (columns[c].positive && v <= 0.0))
+            out.push_back(makeError(
+                where, MeasurementFiles::tr("%1 must be a number%2, not \"%3\"")
+                           .arg(QLatin1String(columns[c].name),
+                                columns[c].positive ? MeasurementFiles::tr(" above zero") : QString(), cell)));
+        row.emplace_back(v);
+    }
+    return row;
+}
+
+} // namespace
+
+std::optional<std::vector<MeasurementRow>> parseMeasurementTable(const QString &text, const QString &fileName,
+                                                                 const std::vector<MeasurementColumn> &columns,
+                                                                 Diagnostics &out)
+{
+    static const QRegularExpression separator(QStringLiteral("[,;]"));
+    const int errorsBefore = countOf(out, Severity::Error);
+    std::vector<qsizetype> columnOf;
+    std::vector<MeasurementRow> rows;
+    const QStringList lines = text.split(QLatin1Char('\n'));
+    for (qsizetype n = 0; n < lines.size(); ++n) {
+        const QString line = lines.at(n).trimmed();
+        if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
+            continue;
+        const QStringList cells = line.split(separator);
+        const QString where = QStringLiteral("%1:%2").arg(fileName).arg(n + 1);
+        if (columnOf.empty()) {
+            columnOf = headerColumns(cells, where, columns, out);
+            if (countOf(out, Severity::Error) > errorsBefore)
+                return std::nullopt;
+            continue;
+        }
+        rows.push_back(readRow(cells, where, columns, columnOf, out));
+    }
+    if (columnOf.empty())
+        out.push_back(makeError(fileName, MeasurementFiles::tr("the file has no header line")));
+    else if (rows.empty())
+        out.push_back(makeError(fileName, MeasurementFiles::tr("the file has no measurement")));
+    if (countOf(out, Severity::Error) > errorsBefore)
+        return std::nullopt;
+    return rows;
+}
+
+std::optional<std::vector<MeasurementRow>>
+readMeasurementTable(const QString &path, const std::vector<MeasurementColumn> &columns, Diagnostics &out)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
+        out.push_back(makeError(QStringLiteral("file"),
+                                MeasurementFiles::tr("cannot open '%1': %2").arg(path, file.errorString())));
+        return std::nullopt;
+    }
+    return parseMeasurementTable(QString::fromUtf8(file.readAll()), path, columns, out);
+}
+
+} // namespace tolturn
