@@ -90,16 +90,13 @@ QString writeSprings(const QString &target, const StiffnessCalibration &cal, con
     ProjectParseResult read = readProjectFile(target);
     if (!read.project)
         return read.diagnostics.empty() ? target : read.diagnostics.front().toString();
-    MachineCharacterisation &c = read.project->characterisation;
-    c.pivotDistance_mm = cal.pivotDistance_mm;
-    c.spindleRadial = cal.radial->springs;
-    if (cal.tangential)
-        c.spindleTangential = cal.tangential->springs;
-    c.source = StiffnessCommand::tr("Test bar fit (Valiño et al. 2008 §III), tolturn-cli calibrate-stiffness, %1, %2: "
-                                    "%3 points, RMS residual %4 µm")
-                   .arg(QFileInfo(measurements).fileName(), QDate::currentDate().toString(Qt::ISODate))
-                   .arg(cal.radial->points)
-                   .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2));
+    const QString source =
+        StiffnessCommand::tr("Test bar fit (Valiño et al. 2008 §III), tolturn-cli calibrate-stiffness, %1, %2: "
+                             "%3 points, RMS residual %4 µm")
+            .arg(QFileInfo(measurements).fileName(), QDate::currentDate().toString(Qt::ISODate))
+            .arg(cal.radial->points)
+            .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2));
+    read.project->characterisation = withFittedSprings(read.project->characterisation, cal, source);
     const WriteResult w = writeProjectFile(target, *read.project);
     return w.ok ? QString() : w.error;
 }
@@ -184,16 +181,16 @@ int runCalibrateStiffness(const QStringList &args, QTextStream &out, QTextStream
         cal = calibrateSpindleChuck(*read.project, DataLibrary::builtIn(), *bar.points, lc, forces);
         problems.insert(problems.end(), cal.diagnostics.begin(), cal.diagnostics.end());
     }
-    if (parser.isSet(json))
+    if (parser.isSet(json)) {
         out << QJsonDocument(calibrationJson(cal)).toJson(QJsonDocument::Indented);
-    if (!parser.isSet(json)) {
+    } else {
         for (const Diagnostic &d : problems)
             err << d.toString() << '\n';
+        if (cal.radial)
+            printCalibration(out, cal);
     }
     if (!cal.radial)
         return kExitProblems;
-    if (!parser.isSet(json))
-        printCalibration(out, cal);
     if (parser.isSet(write) || parser.isSet(into)) {
         const QString target = parser.isSet(into) ? parser.value(into) : projectPath;
         const QString error = writeSprings(target, cal, csvPath);

@@ -117,6 +117,16 @@ std::optional<SpringFit> fitDirection(const std::vector<std::pair<double, double
     return SpringFit{*springs, p(0), p(1), p(2), 1000.0 * rms_mm, static_cast<int>(n)};
 }
 
+// How many different values of z (or x) the points have: the fit needs three.
+template <typename Range, typename Position>
+std::size_t distinctPositions(const Range &points, Position position)
+{
+    std::set<double> distinct;
+    for (const auto &p : points)
+        distinct.insert(position(p));
+    return distinct.size();
+}
+
 bool checkSetUp(const Project &bar, const std::vector<TestBarPoint> &points, double pivot_mm, Diagnostics &out)
 {
     if (bar.clamping.method != ClampingMethod::Chuck)
@@ -128,14 +138,12 @@ bool checkSetUp(const Project &bar, const std::vector<TestBarPoint> &points, dou
                                 SpindleCalibration::tr("Lc, the distance of the spindle bearing behind the chuck "
                                                        "face, must be above zero, but is %1 mm")
                                     .arg(number(pivot_mm))));
-    std::set<double> distinct;
-    for (const TestBarPoint &p : points)
-        distinct.insert(p.z_mm);
-    if (distinct.size() < 3)
+    const std::size_t positions = distinctPositions(points, [](const TestBarPoint &p) { return p.z_mm; });
+    if (positions < 3)
         out.push_back(makeError(QStringLiteral("measurements"),
                                 SpindleCalibration::tr("the fit of a z² + b z + c needs points at three or more "
                                                        "positions z, but there are %1")
-                                    .arg(distinct.size())));
+                                    .arg(positions)));
     return !hasErrors(out);
 }
 
@@ -244,13 +252,23 @@ StiffnessCalibration calibrateSpindleChuck(const Project &testBar, const DataLib
     const double moment = -0.5 * cal.forces.axial_N * cal.diameter_mm; // the feed force at the contact radius
     cal.radial =
         fitDirection(radial, cal.forces.radial_N, moment, pivotDistance_mm, SpindleCalibration::tr("radial"), out);
-    std::set<double> tangentialPositions;
-    for (const auto &[x, y] : tangential)
-        tangentialPositions.insert(x);
-    if (tangentialPositions.size() >= 3 && cal.forces.tangential_N > 0.0)
+    if (distinctPositions(tangential, [](const std::pair<double, double> &p) { return p.first; }) >= 3 &&
+        cal.forces.tangential_N > 0.0)
         cal.tangential = fitDirection(tangential, cal.forces.tangential_N, 0.0, pivotDistance_mm,
                                       SpindleCalibration::tr("tangential"), out);
     return cal;
+}
+
+MachineCharacterisation withFittedSprings(MachineCharacterisation characterisation, const StiffnessCalibration &cal,
+                                          const QString &source)
+{
+    characterisation.pivotDistance_mm = cal.pivotDistance_mm;
+    if (cal.radial)
+        characterisation.spindleRadial = cal.radial->springs;
+    if (cal.tangential)
+        characterisation.spindleTangential = cal.tangential->springs;
+    characterisation.source = source;
+    return characterisation;
 }
 
 } // namespace tolturn

@@ -67,4 +67,9 @@ struct StiffnessCalibration {
                                                          double pivotDistance_mm,
                                                          const std::optional<CuttingForces> &load = std::nullopt);
 
+// `characterisation` with the fitted springs and their Lc in place (tangential only where they
+// were fitted; everything else kept) and `source` as where the numbers come from.
+[[nodiscard]] MachineCharacterisation withFittedSprings(MachineCharacterisation characterisation,
+                                                        const StiffnessCalibration &cal, const QString &source);
+
 } // namespace tolturn

@@ -3,6 +3,7 @@
 // exit code. Shared by the command-line tests.
 #pragma once
 
+#include <QFile>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
@@ -28,6 +29,13 @@ inline Run runProgram(const QString &program, const QStringList &args)
 inline Run runCli(const QStringList &args)
 {
     return runProgram(QStringLiteral(TOLTURN_CLI_PATH), args);
+}
+
+// Writes `content` to `path`; false when the file cannot be written.
+[[nodiscard]] inline bool writeFile(const QString &path, const QByteArray &content)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
 }
 
 inline QString example(const char *name)

@@ -17,17 +17,7 @@
 using tolturn::test::example;
 using tolturn::test::Run;
 using tolturn::test::runCli;
-
-namespace {
-
-void writeFile(const QString &path, const QByteArray &content)
-{
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(content);
-}
-
-} // namespace
+using tolturn::test::writeFile;
 
 class TestCli : public QObject {
     Q_OBJECT
@@ -211,10 +201,7 @@ private Q_SLOTS:
         const QString project = dir.filePath(QStringLiteral("shaft.tolturn"));
         QVERIFY(QFile::copy(example("stepped-shaft-chuck.tolturn"), project));
         QFile::setPermissions(project, QFile::ReadOwner | QFile::WriteOwner);
-        QFile file(cuts);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write(csv.toUtf8());
-        file.close();
+        QVERIFY(writeFile(cuts, csv.toUtf8()));
 
         const Run r = runCli(
             {QStringLiteral("calibrate-forces"), QStringLiteral("--json"), QStringLiteral("--write"), project, cuts});
@@ -234,10 +221,7 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         const QString cuts = dir.filePath(QStringLiteral("cuts.csv"));
-        QFile file(cuts);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N\n0.2,one,500,200\n");
-        file.close();
+        QVERIFY(writeFile(cuts, "feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N\n0.2,one,500,200\n"));
         const Run r = runCli({QStringLiteral("calibrate-forces"), example("stepped-shaft-chuck.tolturn"), cuts});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("cuts.csv:2: depth_of_cut_mm must be a number above zero, not \"one\"")),
@@ -255,7 +239,7 @@ private Q_SLOTS:
         QVERIFY(source.open(QIODevice::ReadOnly));
         QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
         const QString target = dir.filePath(QStringLiteral("part.tolturn"));
-        writeFile(target, QJsonDocument(project).toJson());
+        QVERIFY(writeFile(target, QJsonDocument(project).toJson()));
         auto springs = [](double k1, double k2, double k3) {
             return QJsonObject{{QStringLiteral("k1_N_per_mm"), k1},
                                {QStringLiteral("k2_Nmm_per_rad"), k2},
@@ -267,7 +251,7 @@ private Q_SLOTS:
                                    {QStringLiteral("spindle_radial"), springs(1.5e5, 3e9, 1e9)},
                                    {QStringLiteral("spindle_tangential"), springs(2.5e5, 6e9, 2e9)}});
         const QString bar = dir.filePath(QStringLiteral("bar.tolturn"));
-        writeFile(bar, QJsonDocument(project).toJson());
+        QVERIFY(writeFile(bar, QJsonDocument(project).toJson()));
         const Run deflect = runCli({QStringLiteral("deflect"), QStringLiteral("--json"), QStringLiteral("--stations"),
                                     QStringLiteral("9"), bar});
         QCOMPARE(deflect.exitCode, 0);
@@ -291,7 +275,7 @@ private Q_SLOTS:
             }
         }
         const QString measured = dir.filePath(QStringLiteral("bar.csv"));
-        writeFile(measured, csv.toUtf8());
+        QVERIFY(writeFile(measured, csv.toUtf8()));
         const Run r =
             runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--json"), QStringLiteral("--pivot"),
                     QStringLiteral("220"), QStringLiteral("--into"), target, bar, measured});

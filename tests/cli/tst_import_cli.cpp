@@ -106,10 +106,7 @@ private Q_SLOTS:
     void importErrors()
     {
         const QString notStep = m_dir.filePath(QStringLiteral("notes.step"));
-        QFile file(notStep);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("not a model\n");
-        file.close();
+        QVERIFY(tolturn::test::writeFile(notStep, "not a model\n"));
         const QString project = m_dir.filePath(QStringLiteral("never.tolturn"));
         const Run bad = runCli({QStringLiteral("import"), QStringLiteral("-o"), project, notStep});
         QCOMPARE(bad.exitCode, 1);

@@ -83,10 +83,7 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         const QString project = dir.filePath(QStringLiteral("bad.tolturn"));
-        QFile file(project);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("{\"format\": \"tolturn-project\", \"version\": 1, \"part\": 7}");
-        file.close();
+        QVERIFY(tolturn::test::writeFile(project, "{\"format\": \"tolturn-project\", \"version\": 1, \"part\": 7}"));
         const QString pdf = dir.filePath(QStringLiteral("bad.pdf"));
         const Run r = runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, project});
         QCOMPARE(r.exitCode, 1);

@@ -22,6 +22,27 @@ namespace {
 
 const QString kPrefix = QStringLiteral("planning.");
 
+// The boxes and the settings they show, named as in the project file's "planning" block.
+const std::pair<const char *, double PlanningSettings::*> kRates[] = {
+    {"machine_rate_per_min", &PlanningSettings::machineRate_per_min},
+    {"tool_cost_per_edge", &PlanningSettings::toolCostPerEdge},
+    {"tool_change_time_min", &PlanningSettings::toolChangeTime_min},
+    {"handling_time_min", &PlanningSettings::handlingTime_min}};
+const std::pair<const char *, std::optional<double> PlanningSettings::*> kOptionals[] = {
+    {"tool_life.C_m_min", &PlanningSettings::taylorC_m_min},
+    {"tool_life.n", &PlanningSettings::taylorN},
+    {"tool_life.min_minutes", &PlanningSettings::minToolLife_min},
+    {"max_ra_um", &PlanningSettings::maxRa_um},
+    {"max_rz_um", &PlanningSettings::maxRz_um},
+    {"max_force_N", &PlanningSettings::maxForce_N},
+    {"max_power_kW", &PlanningSettings::maxPower_kW},
+    {"max_torque_Nm", &PlanningSettings::maxTorque_Nm},
+    {"max_spindle_speed_rpm", &PlanningSettings::maxSpindleSpeed_rpm}};
+const std::pair<const char *, std::optional<ValueRange> PlanningSettings::*> kRanges[] = {
+    {"ranges.cutting_speed_m_min", &PlanningSettings::cuttingSpeed_m_min},
+    {"ranges.feed_mm_rev", &PlanningSettings::feed_mm_rev},
+    {"ranges.depth_of_cut_mm", &PlanningSettings::depthOfCut_mm}};
+
 // The Taylor constants of a work material, when its data gives both.
 std::optional<std::pair<SourcedValue, SourcedValue>> materialTaylor(const DataLibrary &library,
                                                                     const QString &materialId)
@@ -111,8 +132,8 @@ QWidget *PlanningDataDialog::createRatesGroup()
     form->addRow(tr("&Handling time per part:"),
                  addBox(QStringLiteral("handling_time_min"), 2, 1e3, tr("min"),
                         tr("Loading, unloading and idle moves per part, t_handling (docs/planning.md §1).")));
-    for (const char *name : {"machine_rate_per_min", "tool_cost_per_edge", "tool_change_time_min", "handling_time_min"})
-        field(QLatin1String(name))->setSpecialValueText(QString()); // a rate or time of zero is a value
+    for (const auto &rate : kRates)
+        field(QLatin1String(rate.first))->setSpecialValueText(QString()); // a rate or time of zero is a value
     return group;
 }
 
@@ -212,28 +233,14 @@ QString PlanningDataDialog::message() const
 
 void PlanningDataDialog::showSettings(const PlanningSettings &s)
 {
-    const std::pair<const char *, std::optional<double>> values[] = {{"machine_rate_per_min", s.machineRate_per_min},
-                                                                     {"tool_cost_per_edge", s.toolCostPerEdge},
-                                                                     {"tool_change_time_min", s.toolChangeTime_min},
-                                                                     {"handling_time_min", s.handlingTime_min},
-                                                                     {"tool_life.C_m_min", s.taylorC_m_min},
-                                                                     {"tool_life.n", s.taylorN},
-                                                                     {"tool_life.min_minutes", s.minToolLife_min},
-                                                                     {"max_ra_um", s.maxRa_um},
-                                                                     {"max_rz_um", s.maxRz_um},
-                                                                     {"max_force_N", s.maxForce_N},
-                                                                     {"max_power_kW", s.maxPower_kW},
-                                                                     {"max_torque_Nm", s.maxTorque_Nm},
-                                                                     {"max_spindle_speed_rpm", s.maxSpindleSpeed_rpm}};
-    for (const auto &[name, value] : values)
-        field(QLatin1String(name))->setValue(value.value_or(0.0));
-    const std::pair<const char *, std::optional<ValueRange>> ranges[] = {
-        {"ranges.cutting_speed_m_min", s.cuttingSpeed_m_min},
-        {"ranges.feed_mm_rev", s.feed_mm_rev},
-        {"ranges.depth_of_cut_mm", s.depthOfCut_mm}};
-    for (const auto &[name, value] : ranges) {
-        field(QLatin1String(name) + QStringLiteral(".min"))->setValue(value ? value->min : 0.0);
-        field(QLatin1String(name) + QStringLiteral(".max"))->setValue(value ? value->max : 0.0);
+    for (const auto &[name, member] : kRates)
+        field(QLatin1String(name))->setValue(s.*member);
+    for (const auto &[name, member] : kOptionals)
+        field(QLatin1String(name))->setValue((s.*member).value_or(0.0));
+    for (const auto &[name, member] : kRanges) {
+        const std::optional<ValueRange> &r = s.*member;
+        field(QLatin1String(name) + QStringLiteral(".min"))->setValue(r ? r->min : 0.0);
+        field(QLatin1String(name) + QStringLiteral(".max"))->setValue(r ? r->max : 0.0);
     }
     m_toolLifeSource->setText(s.toolLifeSource);
     m_rangesSource->setText(s.rangesSource);
@@ -259,24 +266,14 @@ std::optional<ValueRange> PlanningDataDialog::range(const QString &name) const
 PlanningSettings PlanningDataDialog::settings() const
 {
     PlanningSettings s = m_settings;
-    s.machineRate_per_min = field(QStringLiteral("machine_rate_per_min"))->value();
-    s.toolCostPerEdge = field(QStringLiteral("tool_cost_per_edge"))->value();
-    s.toolChangeTime_min = field(QStringLiteral("tool_change_time_min"))->value();
-    s.handlingTime_min = field(QStringLiteral("handling_time_min"))->value();
-    s.taylorC_m_min = optionalValue(QStringLiteral("tool_life.C_m_min"));
-    s.taylorN = optionalValue(QStringLiteral("tool_life.n"));
-    s.minToolLife_min = optionalValue(QStringLiteral("tool_life.min_minutes"));
+    for (const auto &[name, member] : kRates)
+        s.*member = field(QLatin1String(name))->value();
+    for (const auto &[name, member] : kOptionals)
+        s.*member = optionalValue(QLatin1String(name));
+    for (const auto &[name, member] : kRanges)
+        s.*member = range(QLatin1String(name));
     s.toolLifeSource = m_toolLifeSource->text().trimmed();
-    s.cuttingSpeed_m_min = range(QStringLiteral("ranges.cutting_speed_m_min"));
-    s.feed_mm_rev = range(QStringLiteral("ranges.feed_mm_rev"));
-    s.depthOfCut_mm = range(QStringLiteral("ranges.depth_of_cut_mm"));
     s.rangesSource = m_rangesSource->text().trimmed();
-    s.maxRa_um = optionalValue(QStringLiteral("max_ra_um"));
-    s.maxRz_um = optionalValue(QStringLiteral("max_rz_um"));
-    s.maxForce_N = optionalValue(QStringLiteral("max_force_N"));
-    s.maxPower_kW = optionalValue(QStringLiteral("max_power_kW"));
-    s.maxTorque_Nm = optionalValue(QStringLiteral("max_torque_Nm"));
-    s.maxSpindleSpeed_rpm = optionalValue(QStringLiteral("max_spindle_speed_rpm"));
     return s;
 }
 

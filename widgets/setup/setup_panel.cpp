@@ -387,25 +387,22 @@ bool SetupPanel::fitStiffnessFromTestBar(const QString &csvPath)
     StiffnessCalibration cal;
     if (bar.points)
         cal = calibrateSpindleChuck(project, DataLibrary::builtIn(), *bar.points, pivot);
+    Diagnostics found = bar.diagnostics;
+    found.insert(found.end(), cal.diagnostics.begin(), cal.diagnostics.end());
     QStringList errors;
-    for (const Diagnostics *list : std::initializer_list<const Diagnostics *>{&bar.diagnostics, &cal.diagnostics}) {
-        for (const Diagnostic &d : *list)
-            errors << d.toString();
-    }
+    for (const Diagnostic &d : found)
+        errors << d.toString();
     if (!cal.radial) {
         m_message->setText(tr("No springs fitted: %1").arg(errors.join(QLatin1Char('\n'))));
         return false;
     }
-    MachineCharacterisation c = project.characterisation;
-    c.pivotDistance_mm = pivot;
-    c.spindleRadial = cal.radial->springs;
-    if (cal.tangential)
-        c.spindleTangential = cal.tangential->springs;
-    c.source = tr("Test bar fit (Valiño et al. 2008 §III) of %1, %2: %3 points, RMS residual %4 µm, forces of the "
-                  "project's model")
-                   .arg(QFileInfo(csvPath).fileName(), QDate::currentDate().toString(Qt::ISODate))
-                   .arg(cal.radial->points)
-                   .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2));
+    const QString source =
+        tr("Test bar fit (Valiño et al. 2008 §III) of %1, %2: %3 points, RMS residual %4 µm, forces of the "
+           "project's model")
+            .arg(QFileInfo(csvPath).fileName(), QDate::currentDate().toString(Qt::ISODate))
+            .arg(cal.radial->points)
+            .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2));
+    const MachineCharacterisation c = withFittedSprings(project.characterisation, cal, source);
     const Diagnostics refused = m_document.setCharacterisation(c);
     if (hasErrors(refused)) {
         showOutcome(refused);
