@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/compensation.h"
 
+#include "core/planning/target_contour.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -62,7 +64,9 @@ CompensationPlan planCompensation(const Project &project, const DeviationResult 
                                   const std::vector<ToleranceEvaluation> &verdicts)
 {
     CompensationPlan plan;
+    const Contour targets[] = {targetContour(project, ContourSide::Outer), targetContour(project, ContourSide::Inner)};
     for (const FeatureDeviation &f : deviation.features) {
+        const Contour &target = targets[f.side == ContourSide::Outer ? 0 : 1];
         FeatureCompensation c;
         c.featureId = f.featureId;
         c.side = f.side;
@@ -94,12 +98,14 @@ CompensationPlan planCompensation(const Project &project, const DeviationResult 
                 std::max(std::abs(lo * kUmPerMm + 0.5 * offset), std::abs(hi * kUmPerMm + 0.5 * offset));
         } else if (worst == 2) {
             c.action = CompensationAction::ProfileCorrection;
-            // Against the deviation: a bore's radius error is the negative of its material left.
+            // The target (the middle of the zone) against the deviation: the machined radius is the
+            // programmed one plus the radius error (a bore's is the negative of its material left).
             double residual = 0.0;
             for (const Station &st : f.stations) {
-                const double programmed = toResolution(st.nominalRadius_mm - st.radiusError_mm);
+                const double aim = targetRadius_mm(target, f.featureId, st.z_mm).value_or(st.nominalRadius_mm);
+                const double programmed = toResolution(aim - st.radiusError_mm);
                 c.correctedPath.push_back({st.z_mm, programmed});
-                residual = std::max(residual, std::abs(programmed + st.radiusError_mm - st.nominalRadius_mm));
+                residual = std::max(residual, std::abs(programmed + st.radiusError_mm - aim));
             }
             c.residualAfter_um = residual * kUmPerMm;
         }

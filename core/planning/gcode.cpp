@@ -2,6 +2,7 @@
 #include "core/planning/gcode.h"
 
 #include "core/common/library_info.h"
+#include "core/planning/target_contour.h"
 #include "core/project/keywords.h"
 
 #include <QTextStream>
@@ -49,7 +50,7 @@ struct Writer {
 QString compensationSummary(const CompensationPlan *plan)
 {
     if (plan == nullptr)
-        return QStringLiteral("NOMINAL PATH, NO COMPENSATION");
+        return QStringLiteral("NO COMPENSATION: TOLERANCED DIAMETERS AT THE MIDDLE OF THEIR ZONE");
     QStringList parts;
     for (const FeatureCompensation &f : plan->features) {
         if (f.side != ContourSide::Outer)
@@ -93,8 +94,10 @@ QString finishingProgram(const Project &project, const GCodeOptions &options)
     w.line(QStringLiteral("G96 S%1 M03").arg(std::lround(options.finishing.cuttingSpeed_m_min)));
     w.line(QStringLiteral("G00 X%1 Z2.000").arg(coordinate(2.0 * clearance)));
 
-    // The outer contour from its right end to the chuck face, in the order the tool meets it.
-    const std::vector<Segment> &segments = part.outer.segments;
+    // The outer contour as aimed at (toleranced diameters at the middle of their zone, as the
+    // verdicts assume), from its right end to the chuck face, in the order the tool meets it.
+    const Contour target = targetContour(project, ContourSide::Outer);
+    const std::vector<Segment> &segments = target.segments;
     bool first = true;
     for (std::size_t i = segments.size(); i-- > 0;) { // right to left; clang 14 cannot use views::reverse
         const Segment &s = segments[i];

@@ -20,9 +20,11 @@ struct GCodeOptions {
 // programming, G96 with a G92 speed limit, G95 feed per revolution, a tool call, comments naming
 // the part and the compensation. The tool feeds towards the chuck, from the right end face over
 // every outer feature to the chuck face. Z0 is the right end face of the part, Z negative towards
-// the chuck; X is the diameter; G02/G03 are as seen with Z to the right and X upwards. Features
-// with a profile correction are written as G01 moves through their corrected stations, features
-// with an offset with the offset applied, the others as drawn.
+// the chuck; X is the diameter; G02/G03 are as seen with Z to the right and X upwards. The path
+// is the target contour (targetContour(): every toleranced diameter at the middle of its zone,
+// which is what the verdicts assume, MODEL §3). Features with a profile correction are written as
+// G01 moves through their corrected stations, features with an offset with the offset applied on
+// top of the target, the others as aimed at.
 [[nodiscard]] QString finishingProgram(const Project &project, const GCodeOptions &options);
 
 } // namespace tolturn

@@ -197,10 +197,12 @@ void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, Toleranc
     say(e.condition, [&] { return QString(condition); });
 }
 
-// Profile of a surface (Fig. 4e, eq. 20–22): delta_TMd + delta_Tmd <= t / cos(alpha), with the
-// deviations measured radially and alpha the angle of the surface to the axis. Along a radius the
-// angle changes, so each station's deviation is taken normal to the surface, delta cos(alpha),
-// which is eq. 22 for a cone.
+// Profile of a line or surface (ISO 1101:2017 clause 18, definitions of the line and surface profile tolerances; Valiño
+// et al. 2008 Fig. 4e). The deviation is taken normal to the surface: the radial one times cos(alpha), alpha the angle
+// of the surface to the axis at the station. Without datums the zone floats: it may sit anywhere, so the spread of the
+// normal deviations must fit in t. With datums the zone is located on the theoretically exact profile, which the
+// program follows: every normal deviation lies within ±t/2. The paper's eq. 22, delta_TMd + delta_Tmd <= t /
+// cos(alpha), is only necessary for either and is not used (MODEL §3).
 void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const DeviationResult &r, ToleranceEvaluation &e)
 {
     const FeatureDeviation *f = stationsOf(r, t.featureId);
@@ -209,8 +211,6 @@ void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const Deviat
         return;
     }
     const Segment &s = *feature.segment;
-    double atMax = 0.0;
-    double atMin = 0.0;
     double largest = -1e300;
     double smallest = 1e300;
     for (const Station &st : f->stations) {
@@ -219,28 +219,36 @@ void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const Deviat
         const double z1 = std::min(s.to.z_mm, st.z_mm + h);
         const double slope = (radiusOnSegment(s, z1) - radiusOnSegment(s, z0)) / (z1 - z0);
         const double normal = st.radiusError_mm * kUmPerMm / std::sqrt(1.0 + slope * slope); // delta cos(alpha)
-        if (normal > largest) {
-            largest = normal;
-            atMax = normal;
-        }
-        if (normal < smallest) {
-            smallest = normal;
-            atMin = normal;
-        }
+        largest = std::max(largest, normal);
+        smallest = std::min(smallest, normal);
     }
     const double zone = t.zone_um.value_or(0.0);
-    const double value = std::abs(atMax) + std::abs(atMin);
-    setValue(e, value, zone);
-    if (value <= zone) {
+    const double spread = largest - smallest;
+    if (t.datums.isEmpty()) {
+        setValue(e, spread, zone);
+        e.verdict = spread <= zone ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+        say(e.condition, [&] {
+            return QString(ToleranceVerdicts::tr(
+                "ISO 1101 surface profile, no datum (the zone floats): max delta_n - min delta_n <= t"));
+        });
+        return;
+    }
+    // Located zone: the deciding value is twice the largest distance from the exact profile.
+    const double located = 2.0 * std::max(std::abs(largest), std::abs(smallest));
+    setValue(e, located, zone);
+    if (located <= zone) {
         e.verdict = Verdict::PassesAsProgrammed;
-        say(e.condition,
-            [&] { return QString(ToleranceVerdicts::tr("Fig. 4e, eq. 22: delta_TMd + delta_Tmd <= t / cos(alpha)")); });
-    } else if (largest - smallest <= zone) {
+        say(e.condition, [&] {
+            return QString(ToleranceVerdicts::tr(
+                "ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2"));
+        });
+    } else if (spread <= zone) {
         e.verdict = Verdict::PassesAfterOffset;
         e.offset_um = -0.5 * (largest + smallest);
         say(e.condition, [&] {
-            return QString(ToleranceVerdicts::tr(
-                "Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t"));
+            return QString(
+                ToleranceVerdicts::tr("ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as "
+                                      "programmed; their spread fits in t"));
         });
         say(e.reason, [&] {
             return QString(
@@ -250,7 +258,8 @@ void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const Deviat
     } else {
         e.verdict = Verdict::NeedsProfileCorrection;
         say(e.condition, [&] {
-            return QString(ToleranceVerdicts::tr("Fig. 4e, eq. 22: the spread of the normal deviation exceeds t"));
+            return QString(
+                ToleranceVerdicts::tr("ISO 1101 surface profile, with datums: the spread of delta_n exceeds t"));
         });
     }
 }

@@ -145,19 +145,30 @@ private Q_SLOTS:
         QVERIFY(near(*runout.value_um, 10.0));
     }
 
-    // Profile of the cone O3 (r 25 -> 20 over 10 mm: tan(alpha) = 0.5, cos(alpha) = 1/sqrt(1.25)), a
-    // constant radial deviation of 3 µm: normal deviation 3 cos(alpha) = 2.683282 µm at both extremes,
-    // eq. 22: 2.683282 + 2.683282 = 5.366563. With t = 5: fails as programmed; the spread 0 fits:
-    // offset -2.683282 µm. With t = 6 it passes.
+    // Profile of the cone O3 (r 25 -> 20 over 10 mm: tan(alpha) = 0.5, cos(alpha) = 1/sqrt(1.25) =
+    // 0.894427), ISO 1101: the radial error runs linearly from -1 µm to +4 µm, so the normal deviation
+    // from -0.894427 to +3.577709 µm (spread 4.472136 µm).
+    // Without a datum the zone floats: the spread must fit, 4.472 <= 5 passes, <= 4.4 does not.
+    // With datum A the zone is located on the programmed profile: every delta_n within ±t/2, i.e.
+    // 2 x 3.577709 = 7.155418 <= t. With t = 5 it fails as programmed but the spread fits: a normal
+    // offset of -(3.577709 - 0.894427)/2 = -1.341641 µm centres it. The paper's eq. 22 (|3.58| + |-0.89|
+    // = 4.47 <= 5) would have passed it as programmed: it is only a necessary condition.
     void profileOfACone()
     {
         DeviationResult r;
-        r.features = {curve("O3", SegmentKind::Cone, 100, 110, [](double) { return 3.0; })};
-        const ToleranceEvaluation tight = evaluate(geometric(ToleranceType::Profile, "O3", 5), r);
-        QCOMPARE(tight.verdict, Verdict::PassesAfterOffset);
-        QVERIFY(std::abs(*tight.value_um - 5.366563) < 1e-5);
-        QVERIFY(std::abs(*tight.offset_um + 2.683282) < 1e-5);
-        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 6), r).verdict, Verdict::PassesAsProgrammed);
+        r.features = {curve("O3", SegmentKind::Cone, 100, 110, [](double z) { return -1.0 + 0.5 * (z - 100.0); })};
+        const ToleranceEvaluation floating = evaluate(geometric(ToleranceType::Profile, "O3", 5), r);
+        QCOMPARE(floating.verdict, Verdict::PassesAsProgrammed);
+        QVERIFY(std::abs(*floating.value_um - 4.472136) < 1e-5);
+        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 4.4), r).verdict, Verdict::NeedsProfileCorrection);
+
+        const QStringList a{QStringLiteral("A")};
+        const ToleranceEvaluation located = evaluate(geometric(ToleranceType::Profile, "O3", 5, a), r);
+        QCOMPARE(located.verdict, Verdict::PassesAfterOffset);
+        QVERIFY(std::abs(*located.value_um - 7.155418) < 1e-5);
+        QVERIFY(std::abs(*located.offset_um + 1.341641) < 1e-5);
+        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 7.2, a), r).verdict, Verdict::PassesAsProgrammed);
+        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 4.4, a), r).verdict, Verdict::NeedsProfileCorrection);
     }
 
     // Length between faces O1 and O4 (eq. 11): e_i + e_j = 2 + 3 = 5 µm. ±2.5 (t = 5) passes, ±2 fails.

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/project/project.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+// The size a finishing program aims at for one diameter (MODEL §3: "whatever the verdicts assume
+// the program to be, the G-code must program exactly that"): the middle of its tolerance zone.
+struct DiameterTarget {
+    QString featureId;
+    double nominal_mm = 0.0;
+    double upper_um = 0.0; // the zone the target is the middle of: every diameter tolerance of
+    double lower_um = 0.0; // the feature intersected
+
+    [[nodiscard]] double target_mm() const { return nominal_mm + 0.5e-3 * (upper_um + lower_um); }
+};
+
+// The middle of the zone of every cylinder that carries a diameter tolerance (ISO 286 class or
+// explicit limit deviations). Sizes whose limits cannot be formed are left out (the verdicts say
+// why); untoleranced sizes are aimed at nominal.
+[[nodiscard]] std::vector<DiameterTarget> diameterTargets(const Project &project);
+
+// A contour of the part with every toleranced cylinder moved radially to the middle of its zone.
+// The chamfers, cones and edge rounds that join such a cylinder move with it (their shape is
+// kept), and the faces between take up the difference in their length, as a programmer shifts a
+// feature's chain when aiming at the middle of a zone. A vertex between two cylinders' chains
+// (a cone joining two toleranced diameters directly) follows the nearer cylinder.
+[[nodiscard]] Contour targetContour(const Project &project, ContourSide side);
+
+// The radius the finishing program aims at on a feature at z: the target contour's.
+[[nodiscard]] std::optional<double> targetRadius_mm(const Contour &target, const QString &featureId, double z_mm);
+
+} // namespace tolturn
