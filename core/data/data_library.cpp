@@ -144,9 +144,37 @@ void DataLibrary::readMaterials(const QString &path)
     }
 }
 
+namespace {
+
+std::optional<StiffnessRange> stiffnessRange(DataFileReader &r, const QJsonObject &parent, const QString &key)
+{
+    if (!parent.contains(key))
+        return std::nullopt;
+    const QJsonObject o = parent.value(key).toObject();
+    const QString path = QStringLiteral("uncharacterised_supports.") + key;
+    const auto compliant = r.value(o, QStringLiteral("compliant"), path, true);
+    const auto stiff = r.value(o, QStringLiteral("stiff"), path, true);
+    if (!compliant || !stiff)
+        return std::nullopt;
+    if (!(compliant->value > 0.0) || !(stiff->value >= compliant->value)) {
+        r.error(path, DataFiles::tr("a stiffness range needs 0 < compliant <= stiff, not %1 and %2")
+                          .arg(compliant->value)
+                          .arg(stiff->value));
+        return std::nullopt;
+    }
+    return StiffnessRange{*compliant, *stiff, o.value(QStringLiteral("valid_for")).toString()};
+}
+
+} // namespace
+
 void DataLibrary::readMachines(const QString &path)
 {
     DataFileReader r(path, "tolturn-machines", m_diagnostics, m_sources);
+    const QJsonObject supports = r.root().value(QStringLiteral("uncharacterised_supports")).toObject();
+    m_supports.chuckRadial = stiffnessRange(r, supports, QStringLiteral("chuck_radial_N_per_mm"));
+    m_supports.tailstockRadial = stiffnessRange(r, supports, QStringLiteral("tailstock_radial_N_per_mm"));
+    m_supports.centreRadial = stiffnessRange(r, supports, QStringLiteral("centre_radial_N_per_mm"));
+    m_supports.notes = supports.value(QStringLiteral("notes")).toString();
     const QJsonArray list = r.root().value(QStringLiteral("machines")).toArray();
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QJsonObject o = list.at(i).toObject();

@@ -36,9 +36,26 @@ struct MaterialData {
     std::optional<SourcedValue> taylorC_m_min, taylorN;
 };
 
+// A published range of a support's stiffness, for machines that were not measured
+// (machines.json "uncharacterised_supports"): its compliant and stiff ends and what it is valid for.
+struct StiffnessRange {
+    SourcedValue compliant_N_per_mm;
+    SourcedValue stiff_N_per_mm;
+    QString validFor;
+};
+
+// What the data give for the supports of a machine that was not measured: ranges where a source
+// gives one, nothing where none was found (docs/model.md §2).
+struct UncharacterisedSupports {
+    std::optional<StiffnessRange> chuckRadial; // static radial stiffness at the chuck face
+    std::optional<StiffnessRange> tailstockRadial;
+    std::optional<StiffnessRange> centreRadial;
+    QString notes;
+};
+
 // A lathe (resources/data/machines.json): documented limits, keyed by field name
-// ("power_kW", "max_speed_rpm", ...). Stiffness is a characterisation of one machine, kept in the
-// project (see Project::characterisation), not here.
+// ("power_kW", "max_speed_rpm", ...). A measured stiffness is a characterisation of one machine,
+// kept in the project (see Project::characterisation); the data give ranges for the rest.
 struct MachineData {
     QString id;
     QString name;
@@ -90,6 +107,9 @@ public:
 
     [[nodiscard]] std::optional<SourcedValue> defaultPassiveToCuttingRatio() const { return m_defaultPassiveRatio; }
 
+    // Support stiffness ranges for a machine without a measured characterisation.
+    [[nodiscard]] const UncharacterisedSupports &uncharacterisedSupports() const { return m_supports; }
+
     // Young's modulus of a steel tool shank.
     [[nodiscard]] std::optional<SourcedValue> shankModulus() const { return m_shankModulus; }
 
@@ -111,6 +131,7 @@ private:
     std::optional<SourcedValue> m_negativeSeatRake;
     std::optional<SourcedValue> m_negativeSeatInclination;
     std::optional<SourcedValue> m_shankModulus;
+    UncharacterisedSupports m_supports;
     std::optional<SourcedValue> m_defaultFeedRatio;
     std::optional<SourcedValue> m_defaultPassiveRatio;
 };

@@ -158,14 +158,97 @@ EndSupport chuckSupport(const MachineCharacterisation &c, const std::optional<Sp
         {springs->k1_N_per_mm, springs->k2_Nmm_per_rad, springs->k3_Nmm_per_rad, *c.pivotDistance_mm}));
 }
 
-EndSupport centreSupport(const std::optional<SupportStiffness> &s, bool radial)
+// The chuck of the one-parameter family (docs/model.md §2): a translational spring K at the chuck
+// face (k1 = K), the face held against tilt.
+EndSupport chuckFamilySupport(double k_N_per_mm)
 {
-    if (!s)
-        return EndSupport::pinned();
-    return EndSupport::translationSpring(radial ? s->radial_N_per_mm : s->tangential_N_per_mm);
+    EndSupport s = EndSupport::translationSpring(k_N_per_mm);
+    s.fixedRotation = true;
+    return s;
 }
 
-void resolveSupports(const Project &p, const DeviationOptions &options, TurningInputs &in)
+double rangeEnd(const StiffnessRange &r, StiffnessEnd end)
+{
+    return end == StiffnessEnd::Compliant ? r.compliant_N_per_mm.value : r.stiff_N_per_mm.value;
+}
+
+QString perMicrometre(double k_N_per_mm)
+{
+    return formatNumber(k_N_per_mm / 1000.0);
+}
+
+QString endName(StiffnessEnd end)
+{
+    return end == StiffnessEnd::Compliant ? DeviationModel::tr("compliant") : DeviationModel::tr("stiff");
+}
+
+// The chuck face: a value tried by the caller, the measured springs, the end of the published
+// range, or (no data at all) rigid.
+void resolveChuck(const Project &p, const DataLibrary &data, const DeviationOptions &options, TurningInputs &in)
+{
+    const MachineCharacterisation &c = p.characterisation;
+    const auto &range = data.uncharacterisedSupports().chuckRadial;
+    in.chuck.range = range;
+    in.spindleCharacterised = c.spindleRadial.has_value() && c.pivotDistance_mm.has_value();
+    if (options.chuckStiffness_N_per_mm) {
+        in.chuck.basis = SupportBasis::Given;
+        in.chuck.stiffness_N_per_mm = *options.chuckStiffness_N_per_mm;
+        in.radialLeft = in.tangentialLeft = chuckFamilySupport(in.chuck.stiffness_N_per_mm);
+    } else if (in.spindleCharacterised) {
+        in.chuck.basis = SupportBasis::Measured;
+        in.radialLeft = chuckSupport(c, c.spindleRadial);
+        in.tangentialLeft = chuckSupport(c, c.spindleTangential);
+    } else if (range) {
+        in.chuck.basis = SupportBasis::RangeEnd;
+        in.chuck.stiffness_N_per_mm = rangeEnd(*range, options.stiffnessEnd);
+        in.radialLeft = in.tangentialLeft = chuckFamilySupport(in.chuck.stiffness_N_per_mm);
+        in.notes << DeviationModel::tr(
+                        "Spindle–chuck not measured: a radial spring of %1 N/µm at the chuck face, the %2 end of "
+                        "the published range %3–%4 N/µm (%5); no tilt of the chuck. A test-bar fit (Valiño et al. "
+                        "2008 §III) replaces it.")
+                        .arg(perMicrometre(in.chuck.stiffness_N_per_mm), endName(options.stiffnessEnd),
+                             perMicrometre(range->compliant_N_per_mm.value), perMicrometre(range->stiff_N_per_mm.value),
+                             data.sourceText(range->compliant_N_per_mm.source).section(QLatin1Char(','), 0, 1));
+    } else {
+        in.chuck.basis = SupportBasis::RigidNoData;
+        in.radialLeft = in.tangentialLeft = EndSupport::clamped();
+        in.notes << DeviationModel::tr(
+            "Spindle–chuck neither measured nor in the data: taken as rigid, which is optimistic. Measure k1, k2, k3 "
+            "(Valiño et al. 2008 §III).");
+    }
+}
+
+// A centre or the tailstock: a value tried by the caller, the measured stiffness, the end of a
+// published range, or (none found, docs/model.md §2) a rigid pin, which the notes say.
+EndSupport resolveCentre(const std::optional<SupportStiffness> &measured, const std::optional<StiffnessRange> &range,
+                         const DeviationOptions &options, SupportStiffnessUsed &used, bool radial, const QString &name,
+                         QStringList &notes)
+{
+    used.range = range;
+    if (options.tailstockStiffness_N_per_mm) {
+        used.basis = SupportBasis::Given;
+        used.stiffness_N_per_mm = *options.tailstockStiffness_N_per_mm;
+        return EndSupport::translationSpring(used.stiffness_N_per_mm);
+    }
+    if (measured) {
+        used.basis = SupportBasis::Measured;
+        return EndSupport::translationSpring(radial ? measured->radial_N_per_mm : measured->tangential_N_per_mm);
+    }
+    if (range) {
+        used.basis = SupportBasis::RangeEnd;
+        used.stiffness_N_per_mm = rangeEnd(*range, options.stiffnessEnd);
+        return EndSupport::translationSpring(used.stiffness_N_per_mm);
+    }
+    used.basis = SupportBasis::RigidNoData;
+    if (radial)
+        notes << DeviationModel::tr(
+                     "%1 not measured and no published stiffness found: taken as a rigid pin, which is optimistic. "
+                     "The verdicts give the stiffness each tolerance needs of it.")
+                     .arg(name);
+    return EndSupport::pinned();
+}
+
+void resolveSupports(const Project &p, const DataLibrary &data, const DeviationOptions &options, TurningInputs &in)
 {
     const MachineCharacterisation &c = p.characterisation;
     const ClampingMethod method = p.clamping.method;
@@ -179,27 +262,26 @@ void resolveSupports(const Project &p, const DeviationOptions &options, TurningI
         in.notes << DeviationModel::tr("Workpiece only: machine supports rigid, no toolpost or thermal term.");
         return;
     }
+    const UncharacterisedSupports &ranges = data.uncharacterisedSupports();
     if (chuck) {
-        in.radialLeft = chuckSupport(c, c.spindleRadial);
-        in.tangentialLeft = chuckSupport(c, c.spindleTangential);
-        in.spindleCharacterised = c.spindleRadial.has_value() && c.pivotDistance_mm.has_value();
-        if (!in.spindleCharacterised)
-            in.notes << DeviationModel::tr(
-                "Spindle–chuck not characterised for this machine: the part is taken as rigidly clamped at "
-                "the chuck face. Measure k1, k2, k3 (Valiño et al. 2008 §III) for its contribution.");
+        resolveChuck(p, data, options, in);
     } else {
-        in.radialLeft = centreSupport(c.centres, true);
-        in.tangentialLeft = centreSupport(c.centres, false);
-        if (!c.centres)
-            in.notes << DeviationModel::tr("Headstock centre not characterised: taken as a rigid pin.");
+        // The headstock centre; what the verdicts report is the tailstock's basis (both centres
+        // take a value tried by the caller).
+        const QString name = DeviationModel::tr("Headstock centre");
+        SupportStiffnessUsed used;
+        in.radialLeft = resolveCentre(c.centres, ranges.centreRadial, options, used, true, name, in.notes);
+        in.tangentialLeft = resolveCentre(c.centres, ranges.centreRadial, options, used, false, name, in.notes);
     }
     if (method == ClampingMethod::Chuck) {
         in.radialRight = in.tangentialRight = EndSupport::free();
     } else {
-        in.radialRight = centreSupport(c.tailstock, true);
-        in.tangentialRight = centreSupport(c.tailstock, false);
-        if (!c.tailstock)
-            in.notes << DeviationModel::tr("Tailstock not characterised: taken as a rigid pin.");
+        const QString name = DeviationModel::tr("Tailstock");
+        SupportStiffnessUsed tangential;
+        in.radialRight =
+            resolveCentre(c.tailstock, ranges.tailstockRadial, options, in.tailstock, true, name, in.notes);
+        in.tangentialRight =
+            resolveCentre(c.tailstock, ranges.tailstockRadial, options, tangential, false, name, in.notes);
     }
 }
 
@@ -362,7 +444,7 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
     resolveForces(p, data, options, *material, in, out);
     if (hasErrors(out))
         return result;
-    resolveSupports(p, options, in);
+    resolveSupports(p, data, options, in);
     if (!supportsHoldBeam(in.radialLeft, in.radialRight, in.supportEnd_mm - in.supportStart_mm) ||
         !supportsHoldBeam(in.tangentialLeft, in.tangentialRight, in.supportEnd_mm - in.supportStart_mm)) {
         out.push_back(makeError(QStringLiteral("clamping"),

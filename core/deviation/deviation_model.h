@@ -16,12 +16,36 @@
 
 namespace tolturn {
 
+// Which end of a published stiffness range a machine that was not measured is computed at
+// (docs/model.md §2). Planning and the verdicts take the compliant end unless told otherwise.
+enum class StiffnessEnd { Compliant, Stiff };
+
 struct DeviationOptions {
     std::optional<CuttingForces> loadOverride; // forces given by the user instead of a force model
-    bool workpieceOnly = false;                // rigid machine supports, no toolpost or thermal term
-    bool inProcessSection = true;              // the pass's own stock still on, left of the tool
+    StiffnessEnd stiffnessEnd = StiffnessEnd::Compliant;
+    // A radial stiffness that replaces what the chuck face, or the tailstock (both centres between
+    // centres), would otherwise be: the search for the stiffness a tolerance needs [N/mm].
+    std::optional<double> chuckStiffness_N_per_mm;
+    std::optional<double> tailstockStiffness_N_per_mm;
+    bool workpieceOnly = false;   // rigid machine supports, no toolpost or thermal term
+    bool inProcessSection = true; // the pass's own stock still on, left of the tool
     int stationsPerFeature = 21;
     int passIndex = -1; // -1: the last finishing pass (or the last pass)
+};
+
+// What a support's stiffness rests on, for people and for the range verdicts.
+enum class SupportBasis {
+    NotUsed,     // the clamping has no such support
+    Measured,    // the project's characterisation
+    RangeEnd,    // one end of the data library's published range
+    Given,       // DeviationOptions: a value tried by the caller
+    RigidNoData, // neither measured nor published: rigid, which is optimistic
+};
+
+struct SupportStiffnessUsed {
+    SupportBasis basis = SupportBasis::NotUsed;
+    double stiffness_N_per_mm = 0.0;     // RangeEnd and Given; 0 otherwise
+    std::optional<StiffnessRange> range; // the published range, where there is one
 };
 
 // Everything the deviation model needs, resolved from a project and the data library.
@@ -39,6 +63,8 @@ struct TurningInputs {
     double supportEnd_mm = 0.0;   // right end of the part
     EndSupport radialLeft, radialRight, tangentialLeft, tangentialRight;
     bool spindleCharacterised = false;
+    SupportStiffnessUsed chuck;     // chuck face (chuck and chuck + tailstock)
+    SupportStiffnessUsed tailstock; // tailstock, or both centres between centres
     std::optional<ThermalDrift> thermal;
     double timeSinceStart_min = 0.0;
     double ambientTemperature_C = 20.0;

@@ -74,6 +74,7 @@ std::vector<DiameterTarget> diameterTargets(const Project &project)
         }
     }
     std::vector<DiameterTarget> out;
+    out.reserve(byFeature.size());
     for (auto &[id, target] : byFeature)
         out.push_back(target);
     return out;

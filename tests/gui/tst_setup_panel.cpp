@@ -40,11 +40,13 @@ void choose(QComboBox *box, const QVariant &data)
 
 // Radial workpiece deflection at the last tool position of the journal O9 (z = 149 mm, 1 mm
 // before the right end face of the stepped shaft).
+// Where the part is at the journal's end under the cutting load: the chuck face's motion carried
+// to it plus the bending of the part.
 double journalEndDeflection_mm(const DeviationResult &result)
 {
     for (const FeatureDeviation &f : result.features)
         if (f.featureId == QLatin1String("O9"))
-            return f.stations.back().radial.workpiece_mm;
+            return f.stations.back().radial.workpiece_mm + f.stations.back().radial.spindleChuck_mm;
     return std::nan("");
 }
 
@@ -82,10 +84,11 @@ private Q_SLOTS:
         choose(s->clampingBox(), static_cast<int>(ClampingMethod::ChuckTailstock));
         QCOMPARE(w.document()->project().clamping.method, ClampingMethod::ChuckTailstock);
         QCOMPARE(w.document()->project().clamping.clampedLength_mm, 35.0);
-        // A rigid centre at z = 150 mm holds the end: 1 mm from it the beam barely moves, while
-        // the cantilever deflects most at its free end.
+        // The centre at z = 150 mm holds the end (a rigid pin: no published tailstock stiffness):
+        // 1 mm from it the beam barely moves, while the cantilever deflects most at its free end.
         const double withTailstock = journalEndDeflection_mm(w.deflectionPanel()->result());
-        QVERIFY2(std::abs(withTailstock) < 0.05 * inChuck, qPrintable(QString::number(withTailstock)));
+        QVERIFY2(std::abs(withTailstock) < 0.1 * inChuck,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(withTailstock).arg(inChuck)));
 
         w.document()->undoStack()->undo();
         QCOMPARE(w.document()->project().clamping.method, ClampingMethod::Chuck);
