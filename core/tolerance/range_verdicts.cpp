@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/tolerance/range_verdicts.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+#include <functional>
+
+namespace tolturn {
+
+namespace {
+
+struct RangeVerdicts {
+    Q_DECLARE_TR_FUNCTIONS(RangeVerdicts)
+};
+
+// The search for a required stiffness: a grid of half decades from 1 N/µm to 10⁶ N/µm, then
+// bisection in log K inside the half decade where the verdict changes: 9 halvings of a factor
+// sqrt(10) leave a bracket of 0.23 %.
+constexpr double kSearchLow_N_per_mm = 1.0e3;
+constexpr int kGridPoints = 13;
+constexpr int kBisections = 9;
+
+double gridStiffness(int i)
+{
+    return kSearchLow_N_per_mm * std::pow(10.0, 0.5 * i);
+}
+
+bool passes(const ToleranceEvaluation &e)
+{
+    return e.verdict == Verdict::PassesAsProgrammed;
+}
+
+bool decided(const ToleranceEvaluation &e)
+{
+    return e.verdict != Verdict::NotPredicted && e.verdict != Verdict::CannotEvaluate;
+}
+
+using VerdictsAt = std::function<std::vector<ToleranceEvaluation>(double stiffness_N_per_mm)>;
+
+// The smallest stiffness with which each tolerance passes as programmed.
+std::vector<RequiredStiffness> searchRequired(const VerdictsAt &verdictsAt, std::size_t count)
+{
+    std::vector<int> firstPassing(count, -1);
+    for (int i = 0; i < kGridPoints; ++i) {
+        const std::vector<ToleranceEvaluation> v = verdictsAt(gridStiffness(i));
+        for (std::size_t t = 0; t < count && t < v.size(); ++t) {
+            if (firstPassing[t] < 0 && passes(v[t]))
+                firstPassing[t] = i;
+        }
+    }
+    std::vector<RequiredStiffness> out(count);
+    for (std::size_t t = 0; t < count; ++t) {
+        if (firstPassing[t] < 0) {
+            out[t].kind = RequiredStiffness::Kind::NotReachable;
+            continue;
+        }
+        if (firstPassing[t] == 0) {
+            out[t].kind = RequiredStiffness::Kind::AnyStiffness;
+            out[t].value_N_per_mm = kSearchLow_N_per_mm;
+            continue;
+        }
+        double failing = std::log(gridStiffness(firstPassing[t] - 1));
+        double passing = std::log(gridStiffness(firstPassing[t]));
+        for (int k = 0; k < kBisections; ++k) {
+            const double mid = 0.5 * (failing + passing);
+            const std::vector<ToleranceEvaluation> v = verdictsAt(std::exp(mid));
+            (t < v.size() && passes(v[t]) ? passing : failing) = mid;
+        }
+        out[t].kind = RequiredStiffness::Kind::Found;
+        out[t].value_N_per_mm = std::exp(passing);
+    }
+    return out;
+}
+
+std::vector<ToleranceEvaluation> verdictsWith(const Project &project, const DataLibrary &data,
+                                              const DeviationOptions &options)
+{
+    const DeviationResult d = computeDeviation(project, data, options);
+    if (!d.inputs)
+        return {};
+    return evaluateTolerances(project, d, EvaluationDetail::ValuesOnly);
+}
+
+bool hasRange(const SupportStiffnessUsed &s)
+{
+    return s.basis == SupportBasis::RangeEnd;
+}
+
+QString perMicrometre(double k_N_per_mm)
+{
+    return formatNumber(std::round(k_N_per_mm / 100.0) / 10.0);
+}
+
+QString sourceShort(const DataLibrary &data, const StiffnessRange &r)
+{
+    return data.sourceText(r.compliant_N_per_mm.source).section(QLatin1Char(','), 0, 1);
+}
+
+} // namespace
+
+RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLibrary &data,
+                                           const DeviationOptions &options)
+{
+    RangeEvaluation out;
+    DeviationOptions compliant = options;
+    compliant.stiffnessEnd = StiffnessEnd::Compliant;
+    compliant.chuckStiffness_N_per_mm.reset();
+    compliant.tailstockStiffness_N_per_mm.reset();
+    out.compliant = computeDeviation(project, data, compliant);
+    if (!out.compliant.inputs)
+        return out;
+    const TurningInputs &in = *out.compliant.inputs;
+    out.machineIsRange = hasRange(in.chuck) || hasRange(in.tailstock);
+    out.someSupportRigid =
+        in.chuck.basis == SupportBasis::RigidNoData || in.tailstock.basis == SupportBasis::RigidNoData;
+    const std::vector<ToleranceEvaluation> atCompliant = evaluateTolerances(project, out.compliant);
+    std::vector<ToleranceEvaluation> atStiff;
+    if (out.machineIsRange) {
+        DeviationOptions stiff = compliant;
+        stiff.stiffnessEnd = StiffnessEnd::Stiff;
+        out.stiff = computeDeviation(project, data, stiff);
+        atStiff = evaluateTolerances(project, *out.stiff);
+    }
+    const std::size_t n = atCompliant.size();
+    std::vector<RequiredStiffness> chuck;
+    std::vector<RequiredStiffness> tailstock;
+    if (project.clamping.method != ClampingMethod::BetweenCentres && !options.workpieceOnly)
+        chuck = searchRequired(
+            [&](double k) {
+                DeviationOptions o = compliant;
+                o.chuckStiffness_N_per_mm = k;
+                return verdictsWith(project, data, o);
+            },
+            n);
+    if (project.clamping.method != ClampingMethod::Chuck && !options.workpieceOnly)
+        tailstock = searchRequired(
+            [&](double k) {
+                DeviationOptions o = compliant;
+                o.tailstockStiffness_N_per_mm = k;
+                return verdictsWith(project, data, o);
+            },
+            n);
+    for (std::size_t i = 0; i < n; ++i) {
+        ToleranceRangeEvaluation e;
+        e.compliant = atCompliant[i];
+        if (i < atStiff.size())
+            e.stiff = atStiff[i];
+        if (i < chuck.size() && decided(e.compliant))
+            e.chuck = chuck[i];
+        if (i < tailstock.size() && decided(e.compliant))
+            e.tailstock = tailstock[i];
+        if (!decided(e.compliant))
+            e.range = RangeVerdict::NotDecided;
+        else if (!e.stiff)
+            e.range = RangeVerdict::NoRange;
+        else if (passes(e.compliant))
+            e.range = RangeVerdict::PassesOnAnyMachine;
+        else if (passes(*e.stiff))
+            e.range = RangeVerdict::PassesIfStiffer;
+        else
+            e.range = RangeVerdict::FailsEvenOnStiffest;
+        out.tolerances.push_back(e);
+    }
+    return out;
+}
+
+QString rangeVerdictKeyword(RangeVerdict verdict)
+{
+    switch (verdict) {
+    case RangeVerdict::PassesOnAnyMachine:
+        return QStringLiteral("passes_on_any_machine");
+    case RangeVerdict::PassesIfStiffer:
+        return QStringLiteral("passes_if_stiffer");
+    case RangeVerdict::FailsEvenOnStiffest:
+        return QStringLiteral("fails_even_on_stiffest");
+    case RangeVerdict::NoRange:
+        return QStringLiteral("no_range");
+    case RangeVerdict::NotDecided:
+        return QStringLiteral("not_decided");
+    }
+    return {};
+}
+
+QString requiredStiffnessText(const RequiredStiffness &r)
+{
+    switch (r.kind) {
+    case RequiredStiffness::Kind::Found:
+        return RangeVerdicts::tr("≥ %1 N/µm").arg(perMicrometre(r.value_N_per_mm));
+    case RequiredStiffness::Kind::AnyStiffness:
+        return RangeVerdicts::tr("any");
+    case RequiredStiffness::Kind::NotReachable:
+        return RangeVerdicts::tr("not reachable");
+    }
+    return {};
+}
+
+QString rangeVerdictText(const ToleranceRangeEvaluation &e)
+{
+    switch (e.range) {
+    case RangeVerdict::PassesOnAnyMachine:
+        return RangeVerdicts::tr("passes on any machine in the range");
+    case RangeVerdict::PassesIfStiffer: {
+        const std::optional<RequiredStiffness> &r =
+            e.chuck && e.chuck->kind == RequiredStiffness::Kind::Found ? e.chuck : e.tailstock;
+        if (r && r->kind == RequiredStiffness::Kind::Found)
+            return RangeVerdicts::tr("passes only if the machine is stiffer than %1 N/µm")
+                .arg(perMicrometre(r->value_N_per_mm));
+        return RangeVerdicts::tr("passes only on the stiffer machines of the range");
+    }
+    case RangeVerdict::FailsEvenOnStiffest:
+        return RangeVerdicts::tr("fails even on the stiffest machine of the range");
+    case RangeVerdict::NoRange:
+    case RangeVerdict::NotDecided:
+        return verdictName(e.compliant.verdict);
+    }
+    return {};
+}
+
+QString machineAssumptionText(const RangeEvaluation &r, const DataLibrary &data)
+{
+    if (!r.compliant.inputs)
+        return {};
+    const TurningInputs &in = *r.compliant.inputs;
+    QStringList parts;
+    if (in.chuck.basis == SupportBasis::RangeEnd && in.chuck.range)
+        parts << RangeVerdicts::tr("chuck not measured: radial stiffness %1–%2 N/µm at the chuck face (%3), results "
+                                   "at both ends, verdicts and plans at the compliant end")
+                     .arg(perMicrometre(in.chuck.range->compliant_N_per_mm.value),
+                          perMicrometre(in.chuck.range->stiff_N_per_mm.value), sourceShort(data, *in.chuck.range));
+    else if (in.chuck.basis == SupportBasis::Measured)
+        parts << RangeVerdicts::tr("spindle–chuck as measured");
+    else if (in.chuck.basis == SupportBasis::RigidNoData)
+        parts << RangeVerdicts::tr("chuck neither measured nor published: taken as rigid (optimistic)");
+    if (in.tailstock.basis == SupportBasis::RigidNoData)
+        parts << RangeVerdicts::tr("tailstock and centres not measured and no published stiffness: taken as rigid "
+                                   "(optimistic); see the stiffness each tolerance needs");
+    else if (in.tailstock.basis == SupportBasis::Measured)
+        parts << RangeVerdicts::tr("tailstock and centres as measured");
+    return parts.join(QStringLiteral("; "));
+}
+
+} // namespace tolturn

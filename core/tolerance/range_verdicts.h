@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/data/data_library.h"
+#include "core/deviation/deviation_model.h"
+#include "core/tolerance/evaluation.h"
+
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+// What a tolerance's verdict is worth on a machine whose stiffness is a published range rather
+// than a measurement (docs/tolerances.md, "Machines that were not measured"). "Passes" is the
+// verdict TolTurn's own program earns: passes as programmed.
+enum class RangeVerdict {
+    PassesOnAnyMachine,  // passes at the compliant end of the range, so on any machine in it
+    PassesIfStiffer,     // passes only on a machine stiffer than the required stiffness
+    FailsEvenOnStiffest, // fails at the stiff end of the range too
+    NoRange,             // the machine was measured (or the clamping uses no ranged support)
+    NotDecided,          // the characteristic is not predicted or cannot be evaluated
+};
+
+// The smallest radial stiffness of a support with which a tolerance passes as programmed, the
+// other supports as assumed (docs/model.md §2). Searched over 1 N/µm to 10⁶ N/µm, assuming that a
+// stiffer support never makes a deviation larger.
+struct RequiredStiffness {
+    enum class Kind {
+        Found,        // value_N_per_mm is the threshold (to 0.5 %)
+        AnyStiffness, // passes even at 1 N/µm: the support does not decide it
+        NotReachable, // fails even at 10⁶ N/µm: stiffness alone will not bring it in
+    };
+    Kind kind = Kind::AnyStiffness;
+    double value_N_per_mm = 0.0;
+};
+
+struct ToleranceRangeEvaluation {
+    ToleranceEvaluation compliant;            // at the compliant end (or as measured)
+    std::optional<ToleranceEvaluation> stiff; // at the stiff end, where a range applies
+    RangeVerdict range = RangeVerdict::NoRange;
+    std::optional<RequiredStiffness> chuck;     // chuck and chuck + tailstock
+    std::optional<RequiredStiffness> tailstock; // tailstock, or both centres between centres
+};
+
+struct RangeEvaluation {
+    DeviationResult compliant;
+    std::optional<DeviationResult> stiff; // where a range applies
+    std::vector<ToleranceRangeEvaluation> tolerances;
+    bool machineIsRange = false;   // some support is a published range
+    bool someSupportRigid = false; // some support is neither measured nor published: rigid
+};
+
+// The verdicts of `project` at both ends of the stiffness range of its machine's unmeasured
+// supports, and the stiffness each tolerance needs of the chuck and the tailstock. The options'
+// stiffness end and support overrides are set here; the rest (forces, pass) are the caller's.
+[[nodiscard]] RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLibrary &data,
+                                                         const DeviationOptions &options = {});
+
+[[nodiscard]] QString rangeVerdictKeyword(RangeVerdict verdict); // "passes_on_any_machine", ...
+// For people: "passes on any machine in the range", "passes if stiffer than 120 N/µm", ...
+[[nodiscard]] QString rangeVerdictText(const ToleranceRangeEvaluation &e);
+// "≥ 120 N/µm", "any", "not reachable".
+[[nodiscard]] QString requiredStiffnessText(const RequiredStiffness &r);
+// One line on what the supports rest on, for the banner above the verdicts and the report.
+[[nodiscard]] QString machineAssumptionText(const RangeEvaluation &r, const DataLibrary &data);
+
+} // namespace tolturn

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Verdicts on a machine whose chuck stiffness is a published range, and the stiffness a tolerance
+// needs, against the closed form of a bar in a chuck held by one root spring.
+#include "core/tolerance/range_verdicts.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace tolturn;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// C45E-N in resources/data/materials.json: E = 210000 MPa, nu = 0.3; shear factor of a solid
+// circle after Cowper (1966).
+constexpr double kE = 210000.0;
+constexpr double kNu = 0.3;
+constexpr double kG = kE / (2 * (1 + kNu));
+constexpr double kKappaSolid = 6 * (1 + kNu) / (7 + 6 * kNu);
+// machines.json "uncharacterised_supports": Ito (2008), 66 and 216 N/µm.
+constexpr double kCompliant = 66000.0;
+constexpr double kStiff = 216000.0;
+
+Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
+{
+    Segment s;
+    s.id = QString::fromLatin1(id);
+    s.kind = kind;
+    s.from = a;
+    s.to = b;
+    return s;
+}
+
+// A Ø30 bar of C45E-N, 140 mm long, 40 mm of it in the chuck jaws: 100 mm from the chuck face to
+// its free end. Its diameter O2 carries explicit limits ±t/2.
+Project chuckedBar(double zone_um)
+{
+    Project p;
+    p.part.name = QStringLiteral("bar");
+    p.part.stockDiameter_mm = 34.0;
+    p.part.outer.segments = {seg("O1", SegmentKind::Face, {0, 0}, {0, 15}),
+                             seg("O2", SegmentKind::Cylinder, {0, 15}, {140, 15}),
+                             seg("O3", SegmentKind::Face, {140, 15}, {140, 0})};
+    p.materialId = QStringLiteral("C45E-N");
+    p.machineId = QStringLiteral("haas-st-20");
+    p.tool.insertCode = QStringLiteral("CNMG 120408");
+    p.tool.holderCode = QStringLiteral("PCLNR 2525M12");
+    p.tool.overhang_mm = 40.0;
+    p.clamping = {ClampingMethod::Chuck, 40.0};
+    p.passes = {{PassKind::Finishing, 200.0, 0.1, 0.5}};
+    Tolerance t;
+    t.id = QStringLiteral("T1");
+    t.type = ToleranceType::Diameter;
+    t.featureId = QStringLiteral("O2");
+    t.upperDeviation_um = 0.5 * zone_um;
+    t.lowerDeviation_um = -0.5 * zone_um;
+    p.tolerances = {t};
+    return p;
+}
+
+DeviationOptions radialLoad(double force_N)
+{
+    DeviationOptions o;
+    o.loadOverride = CuttingForces{0.0, 0.0, force_N}; // tangential, axial, radial
+    o.inProcessSection = false;
+    return o;
+}
+
+// The closed form. With the tool at distance d from the chuck face the radius grows by
+//   F/K + F l/(A E) + F (d^3/(3 E I) + d/(kappa G A))
+// (root spring K, the holder's 40 mm of 25 x 25 mm² shank in compression, Valiño eq. 5, and the
+// Timoshenko cantilever). Programmed at the middle of the zone ±t/2, the diameter passes while
+// twice the largest of these, at d = 100 mm, is at most t/2; so the smallest K is
+//   K = F / (t/4 - F (l/(A E) + w(100))).
+double requiredK(double force_N, double zone_mm)
+{
+    const double r = 15.0;
+    const double I = kPi * std::pow(r, 4) / 4;
+    const double A = kPi * r * r;
+    const double d = 100.0;
+    const double bar = d * d * d / (3 * kE * I) + d / (kKappaSolid * kG * A);
+    const double toolpost = 40.0 / (625.0 * 210000.0);
+    return force_N / (zone_mm / 4 - force_N * (toolpost + bar));
+}
+
+} // namespace
+
+class TestRangeVerdicts : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    // t = 40 µm under 200 N: K = 200 / (0.010 - 0.008440) = 128.2 N/µm, inside 66–216 N/µm: the
+    // diameter passes only on a machine stiffer than that.
+    void requiredChuckStiffnessOfABar()
+    {
+        const double k = requiredK(200.0, 0.040);
+        QVERIFY2(k > kCompliant && k < kStiff, qPrintable(QString::number(k)));
+        const RangeEvaluation r = evaluateOverStiffnessRange(chuckedBar(40.0), DataLibrary::builtIn(), radialLoad(200));
+        QVERIFY(r.machineIsRange);
+        QCOMPARE(int(r.tolerances.size()), 1);
+        const ToleranceRangeEvaluation &e = r.tolerances.front();
+        QCOMPARE(e.range, RangeVerdict::PassesIfStiffer);
+        QVERIFY(e.chuck && e.chuck->kind == RequiredStiffness::Kind::Found);
+        QVERIFY2(std::abs(e.chuck->value_N_per_mm / k - 1.0) < 0.005,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(e.chuck->value_N_per_mm).arg(k)));
+        QVERIFY(!e.tailstock); // no tailstock in a chuck
+        QCOMPARE(e.compliant.verdict, Verdict::PassesAfterOffset);
+        QCOMPARE(e.stiff->verdict, Verdict::PassesAsProgrammed);
+    }
+
+    // The other two verdicts: with t = 60 µm the bar needs only 200 / (0.015 - 0.008440) = 30.5
+    // N/µm, below the range; with t = 36 µm, 200 / (0.009 - 0.008440) = 357 N/µm, above it.
+    void passesOnAnyAndFailsOnStiffest()
+    {
+        const RangeEvaluation loose =
+            evaluateOverStiffnessRange(chuckedBar(60.0), DataLibrary::builtIn(), radialLoad(200));
+        QCOMPARE(loose.tolerances.front().range, RangeVerdict::PassesOnAnyMachine);
+        QVERIFY(std::abs(loose.tolerances.front().chuck->value_N_per_mm / requiredK(200, 0.060) - 1.0) < 0.005);
+        const RangeEvaluation tight =
+            evaluateOverStiffnessRange(chuckedBar(36.0), DataLibrary::builtIn(), radialLoad(200));
+        QCOMPARE(tight.tolerances.front().range, RangeVerdict::FailsEvenOnStiffest);
+        QVERIFY(std::abs(tight.tolerances.front().chuck->value_N_per_mm / requiredK(200, 0.036) - 1.0) < 0.005);
+        QCOMPARE(rangeVerdictKeyword(tight.tolerances.front().range), QStringLiteral("fails_even_on_stiffest"));
+    }
+
+    // A measured spindle replaces the range: no stiff end, the ordinary verdict.
+    void measuredMachineHasNoRange()
+    {
+        Project p = chuckedBar(40.0);
+        p.characterisation.pivotDistance_mm = 200.0;
+        p.characterisation.spindleRadial = SpindleSprings{5.0e5, 5.0e11, 5.0e11};
+        p.characterisation.spindleTangential = p.characterisation.spindleRadial;
+        const RangeEvaluation r = evaluateOverStiffnessRange(p, DataLibrary::builtIn(), radialLoad(200));
+        QVERIFY(!r.machineIsRange);
+        QVERIFY(!r.stiff);
+        QCOMPARE(r.tolerances.front().range, RangeVerdict::NoRange);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRangeVerdicts)
+#include "tst_range_verdicts.moc"
