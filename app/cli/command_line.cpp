@@ -15,6 +15,7 @@
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/iso286.h"
+#include "core/tolerance/range_verdicts.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/report/report_writer.h"
 
@@ -582,6 +583,31 @@ QJsonObject evaluationJson(const ToleranceEvaluation &e)
     return o;
 }
 
+QJsonValue requiredJson(const std::optional<RequiredStiffness> &r)
+{
+    if (!r)
+        return QJsonValue::Null;
+    QJsonObject o{{QStringLiteral("kind"), r->kind == RequiredStiffness::Kind::Found ? QStringLiteral("found")
+                                           : r->kind == RequiredStiffness::Kind::AnyStiffness
+                                               ? QStringLiteral("any")
+                                               : QStringLiteral("not_reachable")}};
+    if (r->kind != RequiredStiffness::Kind::NotReachable)
+        o.insert(QStringLiteral("N_per_um"), r->value_N_per_mm / 1000.0);
+    return o;
+}
+
+QJsonObject rangeEvaluationJson(const ToleranceRangeEvaluation &e)
+{
+    QJsonObject o = evaluationJson(e.compliant);
+    o.insert(QStringLiteral("range_verdict"), rangeVerdictKeyword(e.range));
+    o.insert(QStringLiteral("range_verdict_text"), rangeVerdictText(e));
+    if (e.stiff)
+        o.insert(QStringLiteral("at_stiff_end"), evaluationJson(*e.stiff));
+    o.insert(QStringLiteral("required_chuck_stiffness"), requiredJson(e.chuck));
+    o.insert(QStringLiteral("required_tailstock_stiffness"), requiredJson(e.tailstock));
+    return o;
+}
+
 int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
@@ -597,25 +623,32 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
-    const DeviationResult deviation = computeDeviation(*project, DataLibrary::builtIn(), {});
+    const RangeEvaluation range = evaluateOverStiffnessRange(*project, DataLibrary::builtIn());
+    const DeviationResult &deviation = range.compliant;
     for (const Diagnostic &d : deviation.diagnostics)
         err << file << ": " << d.toString() << '\n';
     if (!deviation.inputs)
         return kExitProblems;
-    const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(*project, deviation);
+    const QString assumption = machineAssumptionText(range, DataLibrary::builtIn());
     if (parser.isSet(json)) {
         QJsonArray list;
-        for (const ToleranceEvaluation &e : verdicts)
-            list.append(evaluationJson(e));
+        for (const ToleranceRangeEvaluation &e : range.tolerances)
+            list.append(rangeEvaluationJson(e));
         out << QJsonDocument(QJsonObject{{QStringLiteral("file"), file},
+                                         {QStringLiteral("machine_assumption"), assumption},
+                                         {QStringLiteral("machine_is_range"), range.machineIsRange},
+                                         {QStringLiteral("rigid_support_assumed"), range.someSupportRigid},
                                          {QStringLiteral("notes"), QJsonArray::fromStringList(deviation.inputs->notes)},
                                          {QStringLiteral("tolerances"), list}})
                    .toJson(QJsonDocument::Indented);
         return kExitOk;
     }
+    if (!assumption.isEmpty())
+        out << CommandLine::tr("Machine: %1").arg(assumption) << '\n';
     out << CommandLine::tr("tolerance  type                    feature  value [µm]  limit [µm]  use [%]  verdict")
         << '\n';
-    for (const ToleranceEvaluation &e : verdicts) {
+    for (const ToleranceRangeEvaluation &r : range.tolerances) {
+        const ToleranceEvaluation &e = r.compliant;
         const auto number = [](const std::optional<double> &v, int width, int decimals) {
             return v ? QStringLiteral("%1").arg(*v, width, 'f', decimals)
                      : QStringLiteral("%1").arg(QStringLiteral("—"), width);
@@ -625,12 +658,20 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
                    .arg(keyword(e.type), -23)
                    .arg(e.featureId, -8)
                    .arg(number(e.value_um, 10, 3), number(e.limit_um, 11, 3), number(e.utilisation_pct, 8, 1),
-                        verdictName(e.verdict))
+                        rangeVerdictText(r))
             << '\n';
+        const QString indent = QStringLiteral("           ");
+        if (r.range != RangeVerdict::NoRange && r.range != RangeVerdict::NotDecided)
+            out << indent << CommandLine::tr("at the compliant end: %1").arg(verdictName(e.verdict)) << '\n';
+        if (r.chuck)
+            out << indent << CommandLine::tr("chuck stiffness needed: %1").arg(requiredStiffnessText(*r.chuck)) << '\n';
+        if (r.tailstock)
+            out << indent << CommandLine::tr("tailstock stiffness needed: %1").arg(requiredStiffnessText(*r.tailstock))
+                << '\n';
         if (!e.condition.isEmpty())
-            out << QStringLiteral("           ") << e.condition << '\n';
+            out << indent << e.condition << '\n';
         if (!e.reason.isEmpty())
-            out << QStringLiteral("           ") << e.reason << '\n';
+            out << indent << e.reason << '\n';
     }
     return kExitOk;
 }
