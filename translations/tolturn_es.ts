@@ -382,6 +382,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1: unknown command &apos;%2&apos;. Run &apos;%1 --help&apos; for the list of commands.</source>
         <translation>%1: comando desconocido &apos;%2&apos;. Ejecute &apos;%1 --help&apos; para ver la lista de comandos.</translation>
     </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at the compliant end: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chuck stiffness needed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tailstock stiffness needed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -463,6 +479,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>material &quot;%1&quot; lacks its id, modulus, density or Kienzle constants</source>
         <translation>al material &quot;%1&quot; le falta el id, el módulo, la densidad o las constantes de Kienzle</translation>
     </message>
+    <message>
+        <source>a stiffness range needs 0 &lt; compliant &lt;= stiff, not %1 and %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>DeviationModel</name>
@@ -485,18 +505,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Workpiece only: machine supports rigid, no toolpost or thermal term.</source>
         <translation>Solo la pieza: apoyos de la máquina rígidos, sin término de torreta ni térmico.</translation>
-    </message>
-    <message>
-        <source>Spindle–chuck not characterised for this machine: the part is taken as rigidly clamped at the chuck face. Measure k1, k2, k3 (Valiño et al. 2008 §III) for its contribution.</source>
-        <translation>Husillo–plato no caracterizado para esta máquina: la pieza se considera empotrada rígidamente en la cara del plato. Mida k1, k2, k3 (Valiño et al. 2008 §III) para obtener su contribución.</translation>
-    </message>
-    <message>
-        <source>Headstock centre not characterised: taken as a rigid pin.</source>
-        <translation>Punto del cabezal no caracterizado: se considera un apoyo articulado rígido.</translation>
-    </message>
-    <message>
-        <source>Tailstock not characterised: taken as a rigid pin.</source>
-        <translation>Contrapunto no caracterizado: se considera un apoyo articulado rígido.</translation>
     </message>
     <message>
         <source>unknown material &quot;%1&quot;; the data library has: %2</source>
@@ -541,6 +549,34 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the pass needs %1 kW of cutting power, more than the machine&apos;s %2 kW</source>
         <translation>la pasada requiere %1 kW de potencia de corte, más que los %2 kW de la máquina</translation>
+    </message>
+    <message>
+        <source>compliant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stiff</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spindle–chuck not measured: a radial spring of %1 N/µm at the chuck face, the %2 end of the published range %3–%4 N/µm (%5); no tilt of the chuck. A test-bar fit (Valiño et al. 2008 §III) replaces it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spindle–chuck neither measured nor in the data: taken as rigid, which is optimistic. Measure k1, k2, k3 (Valiño et al. 2008 §III).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 not measured and no published stiffness found: taken as a rigid pin, which is optimistic. The verdicts give the stiffness each tolerance needs of it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Headstock centre</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tailstock</source>
+        <translation type="unfinished">Contrapunto</translation>
     </message>
 </context>
 <context>
@@ -1573,6 +1609,57 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>RangeVerdicts</name>
+    <message>
+        <source>≥ %1 N/µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not reachable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>passes on any machine in the range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>passes only if the machine is stiffer than %1 N/µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>passes only on the stiffer machines of the range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fails even on the stiffest machine of the range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chuck not measured: radial stiffness %1–%2 N/µm at the chuck face (%3), results at both ends, verdicts and plans at the compliant end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>spindle–chuck as measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chuck neither measured nor published: taken as rigid (optimistic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tailstock and centres not measured and no published stiffness: taken as rigid (optimistic); see the stiffness each tolerance needs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tailstock and centres as measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Report</name>
     <message>
         <source>Tolerance report: %1</source>
@@ -2164,20 +2251,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</translation>
     </message>
     <message>
-        <source>Fig. 4e, eq. 22: delta_TMd + delta_Tmd &lt;= t / cos(alpha)</source>
-        <translation>Fig. 4e, eq. 22: delta_TMd + delta_Tmd &lt;= t / cos(alpha)</translation>
-    </message>
-    <message>
-        <source>Fig. 4e: eq. 22 fails as programmed; the spread of the normal deviation fits in t</source>
-        <translation>Fig. 4e: eq. 22 no se cumple tal como está programado; la dispersión de la desviación normal cabe en t</translation>
-    </message>
-    <message>
         <source>a constant offset of %1 µm normal to the surface centres it in the zone</source>
         <translation>una corrección constante de %1 µm normal a la superficie la centra en la zona</translation>
-    </message>
-    <message>
-        <source>Fig. 4e, eq. 22: the spread of the normal deviation exceeds t</source>
-        <translation>Fig. 4e, eq. 22: la dispersión de la desviación normal supera t</translation>
     </message>
     <message>
         <source>there is no feature &apos;%1&apos; in the profile</source>
@@ -2238,6 +2313,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>cannot be evaluated</source>
         <translation>no se puede evaluar</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, no datum (the zone floats): max delta_n - min delta_n &lt;= t</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as programmed; their spread fits in t</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with datums: the spread of delta_n exceeds t</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2426,6 +2517,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>axial run-out e [%1]</source>
         <translation>oscilación axial e [%1]</translation>
+    </message>
+    <message>
+        <source>%1, compliant end of the machine range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 over the machine&apos;s stiffness range</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3932,6 +4031,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Datum letter for feature %1 (ISO 5459):</source>
         <translation>Letra de referencia para el elemento %1 (ISO 5459):</translation>
     </message>
+    <message>
+        <source>&lt;b&gt;Machine:&lt;/b&gt; %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ToleranceVerdictModel</name>
@@ -3974,6 +4077,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Limit [%1]</source>
         <translation>Límite [%1]</translation>
+    </message>
+    <message>
+        <source>chuck %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tailstock %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The smallest radial stiffness of the chuck (at its face) and of the tailstock (or of both centres) with which this tolerance passes as programmed at the planned conditions, the other supports as assumed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On the machine range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stiffness needed</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

@@ -7,6 +7,7 @@
 #include "app/gui/settings_dialog.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
+#include "core/tolerance/range_verdicts.h"
 #include "resources/bundled.h"
 #include "widgets/common/diagnostics_panel.h"
 #include "widgets/dialogs/about_dialog.h"
@@ -336,9 +337,10 @@ void MainWindow::showProject()
     }
     const Project &project = m_document->project();
     m_profileView->setProfile(project.part, project.tolerances, project.datums);
-    DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
-    m_tolerances->showVerdicts(evaluateTolerances(project, deviation));
-    m_deflection->showResult(project, std::move(deviation));
+    RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
+    m_tolerances->showVerdicts(std::move(range.tolerances), machineAssumptionText(range, DataLibrary::builtIn()),
+                               range.someSupportRigid);
+    m_deflection->showResult(project, std::move(range.compliant), std::move(range.stiff));
     m_planning->projectChanged();
     updateSummary();
     updateTitle();

@@ -58,8 +58,10 @@ private Q_SLOTS:
         const QString text = pdfText(pdf);
         for (const char *section :
              {"1 Part", "2 Inputs", "3 Predicted deviation", "4 Tolerances", "5 Plan", "6 Assumptions and sources"}) {
-            const QString pattern = QStringLiteral("^%1$").arg(
-                QString::fromUtf8(section).replace(QLatin1Char(' '), QStringLiteral("\\s+")));
+            const QString pattern =
+                QStringLiteral("^\\f?%1$")
+                    .arg( // a heading may open a page
+                        QString::fromUtf8(section).replace(QLatin1Char(' '), QStringLiteral("\\s+")));
             QVERIFY2(text.contains(QRegularExpression(pattern, QRegularExpression::MultilineOption)), section);
         }
         QVERIFY(text.contains(QStringLiteral("page %1 of %1").arg(pages)));
@@ -67,14 +69,25 @@ private Q_SLOTS:
         QVERIFY(text.contains(QStringLiteral("Radial deviation of the outer contour")));
         QVERIFY(text.contains(QStringLiteral("Cutting window of the"))); // "fi" comes back as a ligature
 
-        // T1 is h6 on the Ø50 bearing seat: ISO 286-2 Table 1 gives IT6 = 16 µm for 30 < D ≤ 50.
-        const QStringList t1 = tableRow(text, QStringLiteral("T1"));
+        // Page 1: what the machine rests on, and the verdicts over its stiffness range.
+        const QString firstPage = text.section(QLatin1Char('\f'), 0, 0);
+        QVERIFY(firstPage.contains(QStringLiteral("Machine: chuck not measured")));
+        QVERIFY(firstPage.contains(QStringLiteral("66–216 N/µm")));
+        const QString firstT1 = tableRow(firstPage, QStringLiteral("T1")).join(QLatin1Char('|'));
+        QVERIFY2(firstT1.contains(QStringLiteral("passes as programmed")) &&
+                     firstT1.contains(QStringLiteral("chuck ≥")),
+                 qPrintable(firstT1));
+        QVERIFY(firstPage.contains(QStringLiteral("passes on any machine in the"))); // the cell wraps
+        // The tolerance section: T1 is h6 on the Ø50 bearing seat: ISO 286-2 Table 1 gives IT6 = 16 µm
+        // for 30 < D ≤ 50.
+        const QString tolerances = text.section(QStringLiteral("4 Tolerances"), 1);
+        const QStringList t1 = tableRow(tolerances, QStringLiteral("T1"));
         QVERIFY2(t1.size() >= 8, qPrintable(t1.join(QLatin1Char('|'))));
         QCOMPARE(t1.at(3), QStringLiteral("h6"));
         QCOMPARE(t1.at(5), QStringLiteral("16.000"));
         QVERIFY(t1.at(7).startsWith(QStringLiteral("passes")));
         // T5 perpendicularity 15 µm to datum A: the limit is the tolerance value itself.
-        const QStringList t5 = tableRow(text, QStringLiteral("T5"));
+        const QStringList t5 = tableRow(tolerances, QStringLiteral("T5"));
         QVERIFY2(t5.size() >= 6, qPrintable(t5.join(QLatin1Char('|'))));
         QCOMPARE(t5.at(5), QStringLiteral("15.000"));
     }

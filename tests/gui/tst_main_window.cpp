@@ -324,15 +324,20 @@ private Q_SLOTS:
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
         DeflectionPanel *panel = w.deflectionPanel();
         QVERIFY(panel->result().inputs.has_value());
-        QCOMPARE(panel->plot()->curveCount(), 5);
+        // Five contributions at the compliant end of the chuck's range, and the total over the
+        // range as a band (its two edges).
+        QCOMPARE(panel->plot()->curveCount(), 5 + 2);
         QCOMPARE(panel->plot()->curveName(0), QStringLiteral("total"));
+        QCOMPARE(panel->plot()->curveName(5), QStringLiteral("total, compliant end of the machine range"));
+        QCOMPARE(panel->plot()->curveName(6), QStringLiteral("total over the machine's stiffness range"));
+        QVERIFY(panel->stiffEnd().has_value());
         QVERIFY(panel->summaryText().contains(QStringLiteral("Forces (kienzle)")));
         const double shaftFc = panel->result().inputs->forces.tangential_N;
 
         panel->setQuantity(DeflectionPanel::Quantity::TangentialContributions);
-        QCOMPARE(panel->plot()->curveCount(), 3); // toolpost and thermal act radially only
+        QCOMPARE(panel->plot()->curveCount(), 3 + 2); // toolpost and thermal act radially only
         panel->setQuantity(DeflectionPanel::Quantity::DiameterError);
-        QCOMPARE(panel->plot()->curveCount(), 1);
+        QCOMPARE(panel->plot()->curveCount(), 1 + 2);
         // One stem per face of the outer contour, at the face's z, of height e (eq. 12).
         panel->setQuantity(DeflectionPanel::Quantity::FaceConicity);
         QCOMPARE(panel->plot()->curveCount(), 1);

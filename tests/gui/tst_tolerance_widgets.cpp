@@ -17,6 +17,7 @@
 #include <QClipboard>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableView>
@@ -69,10 +70,38 @@ private Q_SLOTS:
         const QStringList lines = QApplication::clipboard()->text().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 1 + 8); // the example's eight tolerances
         QCOMPARE(lines.constFirst(), QString::fromUtf8("ID,Characteristic,Feature,Specification,Predicted [µm],"
-                                                       "Limit [µm],Utilisation,Verdict"));
+                                                       "Limit [µm],Utilisation,Verdict,On the machine range,"
+                                                       "Stiffness needed"));
         QVERIFY(lines.at(1).startsWith(QStringLiteral("T1,diameter,O4,h6,")));
         QCOMPARE(csvField(QStringLiteral("8 µm | A")), QString::fromUtf8("8 µm | A"));
         QCOMPARE(csvField(QStringLiteral("a,\"b\"")), QStringLiteral("\"a,\"\"b\"\"\""));
+    }
+
+    // The stepped shaft's machine is not measured: a banner above the verdicts says so, and each
+    // row reads the verdict over the chuck's range with the stiffness it needs. The sleeve's
+    // tailstock has no published stiffness: the banner is the warning colour and names it.
+    void machineRangeIsShownWithTheVerdicts()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        TolerancePanel *panel = w.tolerancePanel();
+        QVERIFY(panel->banner()->isVisible());
+        QVERIFY(panel->banner()->text().contains(QStringLiteral("66–216 N/µm")));
+        const ToleranceVerdictModel *m = panel->model();
+        QCOMPARE(m->index(0, ToleranceVerdictModel::RangeColumn).data().toString(),
+                 QStringLiteral("passes on any machine in the range"));
+        QVERIFY(
+            m->index(0, ToleranceVerdictModel::RequiredColumn).data().toString().startsWith(QStringLiteral("chuck ")));
+        QCOMPARE(m->index(0, ToleranceVerdictModel::RangeColumn).data(ToleranceVerdictModel::RangeVerdictRole).toInt(),
+                 static_cast<int>(RangeVerdict::PassesOnAnyMachine));
+        QVERIFY(!panel->banner()->styleSheet().contains(QStringLiteral("#fde3c8")));
+
+        QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
+        QVERIFY(panel->banner()->text().contains(QStringLiteral("tailstock")));
+        QVERIFY(panel->banner()->styleSheet().contains(QStringLiteral("#fde3c8")));
+        QVERIFY(
+            m->index(0, ToleranceVerdictModel::RequiredColumn).data().toString().contains(QStringLiteral("tailstock")));
     }
 
     void verdictModelIsAProperModel()

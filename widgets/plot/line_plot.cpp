@@ -64,6 +64,24 @@ void LinePlot::addCurve(const QString &name, const QVector<double> &x, const QVe
     graph->setData(x, y, true);
 }
 
+void LinePlot::addBand(const QString &lowerName, const QString &upperName, const QVector<double> &x,
+                       const QVector<double> &lower, const QVector<double> &upper, const QColor &color)
+{
+    QCPGraph *low = m_plot->addGraph();
+    low->setName(lowerName);
+    low->setPen(QPen(color, 1.0, Qt::DotLine));
+    low->setData(x, lower, true);
+    QCPGraph *high = m_plot->addGraph();
+    high->setName(upperName);
+    high->setPen(QPen(color, 1.0, Qt::DotLine));
+    QColor fill = color;
+    fill.setAlpha(50);
+    high->setBrush(fill);
+    high->setChannelFillGraph(low);
+    high->setData(x, upper, true);
+    low->removeFromLegend();
+}
+
 void LinePlot::addStems(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color)
 {
     QCPGraph *graph = m_plot->addGraph();

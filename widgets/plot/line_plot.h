@@ -25,6 +25,10 @@ public:
     void clear();
     void addCurve(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color,
                   Qt::PenStyle style = Qt::SolidLine, double width = 1.5);
+    // A band between two curves over the same x (a result over a range of machines), its area
+    // filled translucent; each edge keeps its own name for the read-out and the CSV.
+    void addBand(const QString &lowerName, const QString &upperName, const QVector<double> &x,
+                 const QVector<double> &lower, const QVector<double> &upper, const QColor &color);
     // Values at separate positions (one per face, say): a stem from zero up to each, with a dot.
     void addStems(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color);
     // Fits the axes to the data (y always includes zero) and redraws.

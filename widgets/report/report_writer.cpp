@@ -5,6 +5,7 @@
 #include "core/planning/planning_report.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
+#include "core/tolerance/range_verdicts.h"
 #include "core/tooling/iso1832.h"
 #include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
@@ -104,15 +105,26 @@ public:
     }
 
     // Rows of cells; the first row is the header. `colours` gives optional backgrounds per row/column.
+    // A cell's text wraps within its column; the row is as tall as its tallest cell.
     void table(const std::vector<QStringList> &rows, const std::vector<double> &widths,
                const std::function<QColor(int row, int column)> &background = {})
     {
-        const double rowHeight = 14.0;
+        constexpr double kRowHeight = 14.0;
+        const int flags = Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap;
         for (std::size_t r = 0; r < rows.size(); ++r) {
-            ensure(rowHeight);
-            double x = kMargin;
+            const std::size_t columns = std::min(widths.size(), static_cast<std::size_t>(rows[r].size()));
             m_painter->setFont(font(8.2, r == 0));
-            for (std::size_t c = 0; c < widths.size() && c < static_cast<std::size_t>(rows[r].size()); ++c) {
+            double rowHeight = kRowHeight;
+            for (std::size_t c = 0; c < columns; ++c)
+                rowHeight = std::max(rowHeight, m_painter
+                                                        ->boundingRect(QRectF(0, 0, widths[c] - 6, 1000), flags,
+                                                                       rows[r].at(static_cast<qsizetype>(c)))
+                                                        .height() +
+                                                    4.0);
+            ensure(rowHeight);
+            m_painter->setFont(font(8.2, r == 0)); // a page break starts a new painter with default state
+            double x = kMargin;
+            for (std::size_t c = 0; c < columns; ++c) {
                 const QRectF box(x, m_y, widths[c], rowHeight);
                 const QColor fill =
                     r == 0 ? QColor(0xe8, 0xec, 0xf2)
@@ -122,14 +134,19 @@ public:
                 m_painter->setPen(QColor(0xbb, 0xbb, 0xbb));
                 m_painter->drawRect(box);
                 m_painter->setPen(Qt::black);
-                const QString text = m_painter->fontMetrics().elidedText(
-                    rows[r].at(static_cast<qsizetype>(c)), Qt::ElideRight, static_cast<int>(widths[c] - 6));
-                m_painter->drawText(box.adjusted(3, 0, -3, 0), Qt::AlignLeft | Qt::AlignVCenter, text);
+                m_painter->drawText(box.adjusted(3, 0, -3, 0), flags, rows[r].at(static_cast<qsizetype>(c)));
                 x += widths[c];
             }
             m_y += rowHeight;
         }
         m_y += 6;
+    }
+
+    // The height `text` takes wrapped in `width` points.
+    [[nodiscard]] double textHeight(const QString &text, const QFont &f, double width) const
+    {
+        m_painter->setFont(f);
+        return m_painter->boundingRect(QRectF(0, 0, width, 10000), Qt::TextWordWrap, text).height();
     }
 
     // A block of given height drawn by `draw` into the full-width rectangle.
@@ -174,6 +191,46 @@ void titleBlock(Layout &l, const Project &p, const QString &projectName)
             Report::tr("Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
                 .arg(projectName, QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")),
                      tolturnVersion(), dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm)));
+    });
+}
+
+// Page 1: what the supports rest on, boxed where the planner looks, and every tolerance's verdict
+// over the machine's stiffness range with the stiffness it needs.
+void summary(Layout &l, const Project &p, const RangeEvaluation &range)
+{
+    const QString assumption = machineAssumptionText(range, DataLibrary::builtIn());
+    if (!assumption.isEmpty()) {
+        const QColor fill = range.someSupportRigid ? QColor(0xfd, 0xe3, 0xc8) : QColor(0xe4, 0xec, 0xf7);
+        const QColor edge = range.someSupportRigid ? QColor(0xd0, 0x8a, 0x3c) : QColor(0x8a, 0xa2, 0xc8);
+        const QString text = Report::tr("Machine: %1.").arg(assumption);
+        l.block(l.textHeight(text, font(9, true), kWidth - 16) + 12, [&](QPainter &painter, const QRectF &r) {
+            painter.fillRect(r, fill);
+            painter.setPen(edge);
+            painter.drawRect(r);
+            painter.setPen(Qt::black);
+            painter.setFont(font(9, true));
+            painter.drawText(r.adjusted(8, 5, -8, -5), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, text);
+        });
+    }
+    if (range.tolerances.empty())
+        return;
+    l.caption(Report::tr("Verdicts"));
+    std::vector<QStringList> rows{{Report::tr("ID"), Report::tr("Characteristic"), Report::tr("Feature"),
+                                   Report::tr("Verdict"), Report::tr("On the machine range"),
+                                   Report::tr("Stiffness needed")}};
+    for (std::size_t i = 0; i < range.tolerances.size() && i < p.tolerances.size(); ++i) {
+        const ToleranceRangeEvaluation &e = range.tolerances[i];
+        rows.push_back({e.compliant.toleranceId, displayName(e.compliant.type), e.compliant.featureId,
+                        verdictName(e.compliant.verdict),
+                        e.range == RangeVerdict::NoRange || e.range == RangeVerdict::NotDecided ? QStringLiteral("—")
+                                                                                                : rangeVerdictText(e),
+                        ToleranceVerdictModel::requiredText(e)});
+    }
+    l.table(rows, {26, 84, 40, 100, 140, kWidth - 390}, [&](int row, int column) {
+        const ToleranceRangeEvaluation &e = range.tolerances[static_cast<std::size_t>(row - 1)];
+        if (column == 3)
+            return ToleranceVerdictModel::verdictColor(e.compliant.verdict);
+        return column == 4 ? ToleranceVerdictModel::rangeVerdictColor(e) : QColor();
     });
 }
 
@@ -235,7 +292,7 @@ void inputs(Layout &l, const Project &p, const DeviationResult &d)
     l.table(rows, {130, kWidth - 130});
 }
 
-void deviationPlots(Layout &l, const Project &p, const DeviationResult &d)
+void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const std::optional<DeviationResult> &stiff)
 {
     l.heading(Report::tr("3  Predicted deviation"));
     if (!d.inputs) {
@@ -253,6 +310,8 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d)
             continue;
         LinePlot plot;
         DeflectionPanel::addContributionCurves(plot, d, side, true);
+        if (stiff)
+            DeflectionPanel::addRangeBand(plot, d, *stiff, side, DeflectionPanel::totalRadial_mm, Report::tr("total"));
         plot.setAxisLabels(Report::tr("z from the part's left end [mm]"), Report::tr("deviation [µm]"));
         plot.rescaleAndReplot();
         l.caption(side == ContourSide::Outer ? Report::tr("Radial deviation of the outer contour (material left)")
@@ -417,18 +476,21 @@ ReportResult writeReport(const Project &project, const QString &projectName, con
 {
     ReportResult result;
     auto step = [&](double f) { return !progress || progress(f); };
-    const DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
-    const std::vector<ToleranceEvaluation> verdictList =
-        deviation.inputs ? evaluateTolerances(project, deviation) : std::vector<ToleranceEvaluation>{};
+    const RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
+    const DeviationResult &deviation = range.compliant;
+    std::vector<ToleranceEvaluation> verdictList;
+    for (const ToleranceRangeEvaluation &e : range.tolerances)
+        verdictList.push_back(e.compliant);
     const FinishingOutput finishing = finishingOutput(project, DataLibrary::builtIn());
 
     Layout layout;
     titleBlock(layout, project, projectName);
+    summary(layout, project, range);
     drawing(layout, project);
     inputs(layout, project, deviation);
     if (!step(0.2))
         return cancelledReport();
-    deviationPlots(layout, project, deviation);
+    deviationPlots(layout, project, deviation, range.stiff);
     verdicts(layout, project, verdictList);
     if (!step(0.4))
         return cancelledReport();

@@ -69,9 +69,11 @@ DeflectionPanel::DeflectionPanel(QWidget *parent)
     connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &DeflectionPanel::redraw);
 }
 
-void DeflectionPanel::showResult(const Project &project, DeviationResult result)
+void DeflectionPanel::showResult(const Project &project, DeviationResult result,
+                                 std::optional<DeviationResult> stiffEnd)
 {
     m_result = std::move(result);
+    m_stiffEnd = std::move(stiffEnd);
     m_sideBox->setEnabled(!project.part.inner.empty());
     if (project.part.inner.empty() && m_side == ContourSide::Inner)
         m_sideBox->setCurrentIndex(0);
@@ -82,6 +84,7 @@ void DeflectionPanel::showResult(const Project &project, DeviationResult result)
 void DeflectionPanel::clear()
 {
     m_result = {};
+    m_stiffEnd.reset();
     m_plot->clear();
     m_plot->rescaleAndReplot();
     m_summary->clear();
@@ -162,6 +165,11 @@ void DeflectionPanel::plotContributions(bool radial)
 {
     const DisplayUnits units = DisplaySettings::instance().units();
     addContributionCurves(*m_plot, m_result, m_side, radial, units);
+    if (m_stiffEnd)
+        addRangeBand(
+            *m_plot, m_result, *m_stiffEnd, m_side,
+            [radial](const Station &st) { return (radial ? st.radial : st.tangential).total_mm(); }, tr("total"),
+            units);
     m_plot->setTitle(radial ? tr("Radial deviation (material left on the surface)") : tr("Tangential deviation"));
     m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
                           tr("deviation [%1]").arg(units.deviationSymbol()));
@@ -183,9 +191,42 @@ void DeflectionPanel::plotDiameterError()
         y << kGap;
     }
     m_plot->addCurve(tr("diameter error"), x, y, QColor(0x6a, 0x3d, 0x9a), Qt::SolidLine, 2.2);
+    if (m_stiffEnd)
+        addRangeBand(
+            *m_plot, m_result, *m_stiffEnd, m_side, [](const Station &st) { return 2.0 * st.radiusError_mm; },
+            tr("diameter error"), units);
     m_plot->setTitle(tr("Diameter error: machined minus nominal"));
     m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
                           tr("diameter error [%1]").arg(units.deviationSymbol()));
+}
+
+// Where the machine is a stiffness range, the band of one quantity between the compliant end (the
+// curves drawn) and the stiff end.
+void DeflectionPanel::addRangeBand(LinePlot &plot, const DeviationResult &result, const DeviationResult &stiffEnd,
+                                   ContourSide side, const std::function<double(const Station &)> &value,
+                                   const QString &what, const DisplayUnits &units)
+{
+    if (stiffEnd.features.size() != result.features.size())
+        return;
+    QVector<double> x;
+    QVector<double> compliant;
+    QVector<double> stiff;
+    for (std::size_t i = 0; i < result.features.size(); ++i) {
+        const FeatureDeviation &f = result.features[i];
+        const FeatureDeviation &g = stiffEnd.features[i];
+        if (f.side != side || f.stations.size() != g.stations.size())
+            continue;
+        for (std::size_t j = 0; j < f.stations.size(); ++j) {
+            x << units.lengthFromMm(f.stations[j].z_mm);
+            compliant << units.deviationFromUm(value(f.stations[j]) * kUmPerMm);
+            stiff << units.deviationFromUm(value(g.stations[j]) * kUmPerMm);
+        }
+        x << units.lengthFromMm(f.stations.back().z_mm);
+        compliant << kGap;
+        stiff << kGap;
+    }
+    plot.addBand(tr("%1, compliant end of the machine range").arg(what),
+                 tr("%1 over the machine's stiffness range").arg(what), x, compliant, stiff, QColor(0x55, 0x55, 0x99));
 }
 
 // Each face of the chosen contour as a stem at its z: its axial run-out e (Valiño et al. 2008,

@@ -6,6 +6,9 @@
 
 #include <QWidget>
 
+#include <functional>
+#include <optional>
+
 class QComboBox;
 class QLabel;
 
@@ -23,18 +26,30 @@ public:
 
     explicit DeflectionPanel(QWidget *parent = nullptr);
 
-    // Shows the deviation computed for `project`.
-    void showResult(const Project &project, DeviationResult result);
+    // Shows the deviation computed for `project`; `stiffEnd`, where the machine is a published
+    // stiffness range, is the same at the stiff end, drawn as a band with the total.
+    void showResult(const Project &project, DeviationResult result, std::optional<DeviationResult> stiffEnd = {});
     // Adds the curves of the total and of each contribution along one contour, in µm, broken at
     // the ends of the features (also used by the PDF report).
     static void addContributionCurves(LinePlot &plot, const DeviationResult &result, ContourSide side, bool radial,
                                       const DisplayUnits &units = DisplayUnits());
+    // Where the machine is a stiffness range: the band of one quantity of a station (in mm) between
+    // the compliant end `result` and the stiff end, along one contour (also used by the report).
+    static void addRangeBand(LinePlot &plot, const DeviationResult &result, const DeviationResult &stiffEnd,
+                             ContourSide side, const std::function<double(const Station &)> &value, const QString &what,
+                             const DisplayUnits &units = DisplayUnits());
+
+    // The band of the total radial deviation.
+    static double totalRadial_mm(const Station &st) { return st.radial.total_mm(); }
+
     void clear();
 
     void setSide(ContourSide side);
     void setQuantity(Quantity quantity);
 
     [[nodiscard]] const DeviationResult &result() const { return m_result; }
+
+    [[nodiscard]] const std::optional<DeviationResult> &stiffEnd() const { return m_stiffEnd; }
 
     [[nodiscard]] LinePlot *plot() const { return m_plot; }
 
@@ -48,6 +63,7 @@ private:
     void updateTexts();
 
     DeviationResult m_result;
+    std::optional<DeviationResult> m_stiffEnd;
     ContourSide m_side = ContourSide::Outer;
     Quantity m_quantity = Quantity::RadialContributions;
     QComboBox *m_sideBox;

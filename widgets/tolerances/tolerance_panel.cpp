@@ -10,6 +10,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTableView>
@@ -22,6 +23,7 @@ TolerancePanel::TolerancePanel(ProjectDocument &document, QWidget *parent)
     , m_document(document)
     , m_model(new ToleranceVerdictModel(this))
     , m_table(new QTableView(this))
+    , m_banner(new QLabel(this))
     , m_add(new QPushButton(tr("Add…"), this))
     , m_edit(new QPushButton(tr("Edit…"), this))
     , m_remove(new QPushButton(tr("Remove"), this))
@@ -42,8 +44,13 @@ TolerancePanel::TolerancePanel(ProjectDocument &document, QWidget *parent)
     for (QPushButton *b : {m_add, m_edit, m_remove, m_datum})
         buttons->addWidget(b);
     buttons->addStretch();
+    m_banner->setObjectName(QStringLiteral("machineAssumptionBanner"));
+    m_banner->setWordWrap(true);
+    m_banner->setMargin(6);
+    m_banner->hide();
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(buttons);
+    layout->addWidget(m_banner);
     layout->addWidget(m_table);
     connect(m_add, &QPushButton::clicked, this, &TolerancePanel::addTolerance);
     connect(m_edit, &QPushButton::clicked, this, &TolerancePanel::editTolerance);
@@ -60,6 +67,23 @@ TolerancePanel::TolerancePanel(ProjectDocument &document, QWidget *parent)
 
 void TolerancePanel::showVerdicts(std::vector<ToleranceEvaluation> verdicts)
 {
+    m_banner->hide();
+    const int row = currentRow();
+    m_model->setVerdicts(m_document.project(), std::move(verdicts));
+    m_table->resizeColumnsToContents();
+    if (row >= 0 && row < m_model->rowCount())
+        m_table->selectRow(row);
+    updateButtons();
+}
+
+void TolerancePanel::showVerdicts(std::vector<ToleranceRangeEvaluation> verdicts, const QString &assumption,
+                                  bool optimistic)
+{
+    // A banner, not a grey note: what the verdicts rest on is part of the verdict.
+    m_banner->setVisible(!assumption.isEmpty());
+    m_banner->setText(tr("<b>Machine:</b> %1").arg(assumption.toHtmlEscaped()));
+    m_banner->setStyleSheet(optimistic ? QStringLiteral("background: #fde3c8; border: 1px solid #d08a3c;")
+                                       : QStringLiteral("background: #e4ecf7; border: 1px solid #8aa2c8;"));
     const int row = currentRow();
     m_model->setVerdicts(m_document.project(), std::move(verdicts));
     m_table->resizeColumnsToContents();

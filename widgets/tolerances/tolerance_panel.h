@@ -2,9 +2,11 @@
 #pragma once
 
 #include "core/tolerance/evaluation.h"
+#include "core/tolerance/range_verdicts.h"
 
 #include <QWidget>
 
+class QLabel;
 class QPushButton;
 class QTableView;
 
@@ -21,6 +23,12 @@ public:
     explicit TolerancePanel(ProjectDocument &document, QWidget *parent = nullptr);
 
     void showVerdicts(std::vector<ToleranceEvaluation> verdicts);
+    // The verdicts over the machine's stiffness range, with the banner saying what the supports
+    // rest on (`assumption`, empty for a measured machine).
+    void showVerdicts(std::vector<ToleranceRangeEvaluation> verdicts, const QString &assumption, bool optimistic);
+
+    [[nodiscard]] QLabel *banner() const { return m_banner; }
+
     void setSelectedFeature(const QString &featureId);
 
     [[nodiscard]] ToleranceVerdictModel *model() const { return m_model; }
@@ -42,6 +50,7 @@ private:
     ProjectDocument &m_document;
     ToleranceVerdictModel *m_model;
     QTableView *m_table;
+    QLabel *m_banner;
     QPushButton *m_add;
     QPushButton *m_edit;
     QPushButton *m_remove;

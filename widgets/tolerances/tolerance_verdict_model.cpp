@@ -37,11 +37,33 @@ ToleranceVerdictModel::ToleranceVerdictModel(QObject *parent) : QAbstractTableMo
 
 void ToleranceVerdictModel::setVerdicts(const Project &project, std::vector<ToleranceEvaluation> verdicts)
 {
+    std::vector<ToleranceRangeEvaluation> rows;
+    rows.reserve(verdicts.size());
+    for (ToleranceEvaluation &e : verdicts) {
+        ToleranceRangeEvaluation r;
+        r.compliant = std::move(e);
+        rows.push_back(std::move(r));
+    }
+    setVerdicts(project, std::move(rows));
+}
+
+void ToleranceVerdictModel::setVerdicts(const Project &project, std::vector<ToleranceRangeEvaluation> verdicts)
+{
     beginResetModel();
     m_tolerances = project.tolerances;
     m_verdicts = std::move(verdicts);
     m_verdicts.resize(m_tolerances.size());
     endResetModel();
+}
+
+QString ToleranceVerdictModel::requiredText(const ToleranceRangeEvaluation &e)
+{
+    QStringList parts;
+    if (e.chuck)
+        parts << tr("chuck %1").arg(requiredStiffnessText(*e.chuck));
+    if (e.tailstock)
+        parts << tr("tailstock %1").arg(requiredStiffnessText(*e.tailstock));
+    return parts.isEmpty() ? QStringLiteral("—") : parts.join(QStringLiteral(" · "));
 }
 
 int ToleranceVerdictModel::rowCount(const QModelIndex &parent) const
@@ -72,7 +94,8 @@ QString ToleranceVerdictModel::specification(const Tolerance &t)
 QVariant ToleranceVerdictModel::display(int row, int column) const
 {
     const Tolerance &t = m_tolerances[static_cast<std::size_t>(row)];
-    const ToleranceEvaluation &e = m_verdicts[static_cast<std::size_t>(row)];
+    const ToleranceRangeEvaluation &r = m_verdicts[static_cast<std::size_t>(row)];
+    const ToleranceEvaluation &e = r.compliant;
     switch (column) {
     case Id:
         return t.id;
@@ -90,6 +113,11 @@ QVariant ToleranceVerdictModel::display(int row, int column) const
         return e.utilisation_pct ? QStringLiteral("%1 %").arg(*e.utilisation_pct, 0, 'f', 1) : QStringLiteral("—");
     case VerdictColumn:
         return verdictName(e.verdict);
+    case RangeColumn:
+        return r.range == RangeVerdict::NoRange || r.range == RangeVerdict::NotDecided ? QStringLiteral("—")
+                                                                                       : rangeVerdictText(r);
+    case RequiredColumn:
+        return requiredText(r);
     default:
         return {};
     }
@@ -99,17 +127,26 @@ QVariant ToleranceVerdictModel::data(const QModelIndex &index, int role) const
 {
     if (!index.isValid() || index.row() >= rowCount() || index.column() >= ColumnCount)
         return {};
-    const ToleranceEvaluation &e = m_verdicts[static_cast<std::size_t>(index.row())];
+    const ToleranceRangeEvaluation &r = m_verdicts[static_cast<std::size_t>(index.row())];
+    const ToleranceEvaluation &e = r.compliant;
     switch (role) {
     case Qt::DisplayRole:
         return display(index.row(), index.column());
     case Qt::BackgroundRole:
-        return index.column() == VerdictColumn ? QVariant(verdictColor(e.verdict)) : QVariant();
+        if (index.column() == VerdictColumn)
+            return verdictColor(e.verdict);
+        if (index.column() == RangeColumn)
+            return rangeVerdictColor(r);
+        return {};
     case Qt::TextAlignmentRole:
         return index.column() >= Value && index.column() <= Utilisation
                    ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter))
                    : QVariant();
     case Qt::ToolTipRole: {
+        if (index.column() == RequiredColumn)
+            return tr("The smallest radial stiffness of the chuck (at its face) and of the tailstock (or of both "
+                      "centres) with which this tolerance passes as programmed at the planned conditions, the other "
+                      "supports as assumed.");
         QString tip = e.condition;
         if (!e.reason.isEmpty())
             tip += (tip.isEmpty() ? QString() : QStringLiteral("\n")) + e.reason;
@@ -121,6 +158,8 @@ QVariant ToleranceVerdictModel::data(const QModelIndex &index, int role) const
         return e.utilisation_pct ? QVariant(*e.utilisation_pct) : QVariant();
     case VerdictRole:
         return static_cast<int>(e.verdict);
+    case RangeVerdictRole:
+        return static_cast<int>(r.range);
     case FeatureIdRole:
         return e.featureId;
     default:
@@ -149,9 +188,29 @@ QVariant ToleranceVerdictModel::headerData(int section, Qt::Orientation orientat
         return tr("Utilisation");
     case VerdictColumn:
         return tr("Verdict");
+    case RangeColumn:
+        return tr("On the machine range");
+    case RequiredColumn:
+        return tr("Stiffness needed");
     default:
         return {};
     }
+}
+
+QColor ToleranceVerdictModel::rangeVerdictColor(const ToleranceRangeEvaluation &e)
+{
+    switch (e.range) {
+    case RangeVerdict::PassesOnAnyMachine:
+        return verdictColor(Verdict::PassesAsProgrammed);
+    case RangeVerdict::PassesIfStiffer:
+        return verdictColor(Verdict::PassesAfterOffset);
+    case RangeVerdict::FailsEvenOnStiffest:
+        return verdictColor(Verdict::NeedsProfileCorrection);
+    case RangeVerdict::NoRange:
+    case RangeVerdict::NotDecided:
+        return {};
+    }
+    return {};
 }
 
 QColor ToleranceVerdictModel::verdictColor(Verdict verdict)
