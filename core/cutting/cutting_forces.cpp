@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -35,7 +36,8 @@ void checkRange(Diagnostics &warnings, const QString &field, const QString &what
 {
     // The bounds themselves count as inside: the paper's ranges are its test ranges, and a 95°
     // holder sits exactly on gamma_L = -5°.
-    if (value >= lo && value <= hi)
+    constexpr double kRounding = 1e-9; // 95° holders reach -5° only up to rounding
+    if (value >= lo - kRounding && value <= hi + kRounding)
         return;
     warnings.push_back(
         makeWarning(field, CuttingModels::tr("%1 = %2 is outside the range %3 < %1 < %4 in which %5 is stated to hold")
@@ -61,17 +63,50 @@ LiDuFactors liDuFactors(const LiDuToolGeometry &tool, double effectiveLead_rad)
 
 } // namespace
 
+namespace {
+
+// Li & Du (2002) §3.3.3: "for relatively deep cuts in which the ratio of the depth of cut to the
+// tool nose radius is large (e.g. > 5), the effective lead angle is approximately equal to the
+// lead angle".
+constexpr double kNoseDominatedDepthRatio = 5.0;
+
+} // namespace
+
+double equivalentEnteringAngle_rad(double enteringAngle_rad, double noseRadius_mm, double feed_mm_rev,
+                                   double depthOfCut_mm, Diagnostics *warnings)
+{
+    if (!(noseRadius_mm > 0.0) || depthOfCut_mm >= kNoseDominatedDepthRatio * noseRadius_mm)
+        return enteringAngle_rad;
+    LiDuToolGeometry tool;
+    tool.leadAngle_rad = 0.5 * std::numbers::pi - enteringAngle_rad;
+    tool.noseRadius_mm = noseRadius_mm;
+    return 0.5 * std::numbers::pi - liDuEffectiveLeadAngle_rad(tool, feed_mm_rev, depthOfCut_mm, warnings);
+}
+
 ForceResult kienzleForces(const KienzleConstants &constants, double feed_mm_rev, double depthOfCut_mm,
-                          double enteringAngle_rad)
+                          double enteringAngle_rad, double noseRadius_mm)
 {
     const KienzleConstants &k = constants;
     ForceResult r;
-    const double sinK = std::sin(enteringAngle_rad);
+    const double kappa =
+        equivalentEnteringAngle_rad(enteringAngle_rad, noseRadius_mm, feed_mm_rev, depthOfCut_mm, &r.warnings);
+    const double sinK = std::sin(kappa);
     const double h = feed_mm_rev * sinK;
     const double b = depthOfCut_mm / sinK;
     r.forces.tangential_N = kienzle(k.cutting, b, h);
-    r.forces.axial_N = k.feed ? kienzle(*k.feed, b, h) : k.feedToCuttingRatio * r.forces.tangential_N;
-    r.forces.radial_N = k.passive ? kienzle(*k.passive, b, h) : k.passiveToCuttingRatio * r.forces.tangential_N;
+    double feed = k.feed ? kienzle(*k.feed, b, h) : k.feedToCuttingRatio * r.forces.tangential_N;
+    double passive = k.passive ? kienzle(*k.passive, b, h) : k.passiveToCuttingRatio * r.forces.tangential_N;
+    if (kappa != enteringAngle_rad) {
+        // The thrust turns towards the radial with the edge the chip leaves (kept between the feed
+        // and the radial direction).
+        const double thrust = std::hypot(feed, passive);
+        const double direction =
+            std::clamp(std::atan2(passive, feed) + (enteringAngle_rad - kappa), 0.0, 0.5 * std::numbers::pi);
+        feed = thrust * std::cos(direction);
+        passive = thrust * std::sin(direction);
+    }
+    r.forces.axial_N = feed;
+    r.forces.radial_N = passive;
     if (k.validChipThicknessMax_mm > 0.0 && (h < k.validChipThicknessMin_mm || h > k.validChipThicknessMax_mm))
         r.warnings.push_back(makeWarning(
             QStringLiteral("feed_mm_rev"),

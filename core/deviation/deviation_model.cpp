@@ -104,7 +104,7 @@ void resolveForces(const Project &p, const DataLibrary &data, const DeviationOpt
     }
     if (p.cuttingModel.forceModel == ForceModel::Kienzle) {
         const ForceResult r = kienzleForces(kienzleOf(material, p.cuttingModel, data, in.notes), in.pass.feed_mm_rev,
-                                            in.pass.depthOfCut_mm, radians(in.enteringAngle_deg));
+                                            in.pass.depthOfCut_mm, radians(in.enteringAngle_deg), in.noseRadius_mm);
         in.forces = r.forces;
         in.forceModel = QStringLiteral("kienzle");
         out.insert(out.end(), r.warnings.begin(), r.warnings.end());
@@ -382,8 +382,11 @@ std::optional<ForceFunction> projectForceModel(const Project &p, const DataLibra
         QStringList notes;
         const KienzleConstants k = kienzleOf(*material, p.cuttingModel, data, notes);
         const double kappa = radians(angle->value);
-        return ForceFunction(
-            [k, kappa](double feed, double depth) { return kienzleForces(k, feed, depth, kappa).forces; });
+        const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+        const double noseRadius = insert.insert ? insert.insert->noseRadius_mm : 0.0;
+        return ForceFunction([k, kappa, noseRadius](double feed, double depth) {
+            return kienzleForces(k, feed, depth, kappa, noseRadius).forces;
+        });
     }
     const auto tool = resolveLiDuToolGeometry(p, data, out);
     if (!tool)

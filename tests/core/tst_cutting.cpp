@@ -65,6 +65,37 @@ private Q_SLOTS:
         QVERIFY(r.warnings[0].message.contains(QStringLiteral("0.15–1 mm")));
     }
 
+    // A finishing cut on the nose (docs/model.md §3): f = 0.1, ap = 0.5, r_n = 0.8 mm, kappa_r = 95°
+    // (lead angle -5°), kc1.1 = 1500, mc = 0.22, ratios 0.5 and 0.25 at kappa_r.
+    // Li & Du eq. 20: tan(gamma_Le) = 0.5053 tan(-5°) + 1.0473 (0.1/0.8) + 0.4654 (0.8/0.5)
+    //   = -0.044208 + 0.130913 + 0.744640 = 0.831344, gamma_Le = 39.738°, kappa_eq = 50.262°.
+    // h = 0.1 sin(50.262°) = 0.076897, b = 0.5 / sin(50.262°) = 0.650218;
+    // Fc = 1500 * 0.650218 * 0.076897^0.78 = 131.87 N. Thrust (0.5, 0.25) Fc: 73.720 N at
+    // atan(0.5) = 26.565°, turned by 95° - 50.262° = 44.738° to 71.303°:
+    // Ff = 73.720 cos(71.303°) = 23.63 N, Fp = 73.720 sin(71.303°) = 69.83 N (Fp at kappa_r: 33.0 N).
+    void kienzleWithNoseRadius()
+    {
+        KienzleConstants k;
+        k.cutting = {1500.0, 0.22};
+        k.feedToCuttingRatio = 0.5;
+        k.passiveToCuttingRatio = 0.25;
+        QVERIFY(near(equivalentEnteringAngle_rad(deg(95.0), 0.8, 0.1, 0.5), deg(50.262), 2e-5));
+        const ForceResult r = kienzleForces(k, 0.1, 0.5, deg(95.0), 0.8);
+        QVERIFY2(near(r.forces.tangential_N, 131.87, 1e-4), qPrintable(QString::number(r.forces.tangential_N)));
+        QVERIFY2(near(r.forces.axial_N, 23.63, 3e-4), qPrintable(QString::number(r.forces.axial_N)));
+        QVERIFY2(near(r.forces.radial_N, 69.83, 2e-4), qPrintable(QString::number(r.forces.radial_N)));
+        QVERIFY(r.warnings.empty()); // inside every range eq. 20 states
+        // Deeper than 5 r_n the edge dominates (Li & Du §3.3.3): the holder's 95° as before,
+        // h = 0.1 sin95°, b = 5/sin95°: Fc = 1245.7 N, Ff = 622.9 N, Fp = 311.4 N.
+        const ForceResult deep = kienzleForces(k, 0.1, 5.0, deg(95.0), 0.8);
+        QVERIFY(near(deep.forces.tangential_N, 1245.7, 1e-4));
+        QVERIFY(near(deep.forces.radial_N, 311.4, 2e-4));
+        // ap = 0.25 mm is below the 0.5 mm eq. 20 was fitted over: computed, with a warning.
+        const ForceResult shallow = kienzleForces(k, 0.1, 0.25, deg(95.0), 0.8);
+        QVERIFY(!shallow.warnings.empty());
+        QVERIFY(shallow.warnings.front().message.contains(QStringLiteral("depth of cut")));
+    }
+
     // Li & Du eq. 16a: f = 0.2, d = 1, r_n = 0.8: sqrt(0.64 - 0.01) = 0.793725;
     // A_c = 0.2 - 0.2 (0.8 - 0.793725)/2 = 0.2 - 0.0006275 = 0.1993725 mm². Eq. 16b when r_n < f/2.
     void liDuChipArea()

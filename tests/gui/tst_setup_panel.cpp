@@ -236,6 +236,10 @@ private Q_SLOTS:
         MainWindow w;
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
         SetupPanel *s = w.setupPanel();
+        // A finishing depth of 4 mm = 5 r_n: the edge, not the nose, cuts (Li & Du §3.3.3), so the
+        // chip section is at the holder's entering angle.
+        s->passBox(1, 2)->setValue(4.0);
+        QCOMPARE(w.document()->project().passes[1].depthOfCut_mm, 4.0);
         const double fcBefore = w.deflectionPanel()->result().inputs->forces.tangential_N;
         s->passBox(1, 1)->setValue(0.2); // finishing feed doubled
         QCOMPARE(w.document()->project().passes[1].feed_mm_rev, 0.2);
@@ -247,7 +251,7 @@ private Q_SLOTS:
 
         choose(s->materialBox(), QStringLiteral("42CrMo4-QT"));
         QCOMPARE(w.document()->project().materialId, QStringLiteral("42CrMo4-QT"));
-        QCOMPARE(w.document()->undoStack()->count(), 2);
+        QCOMPARE(w.document()->undoStack()->count(), 3);
         w.document()->undoStack()->undo();
         QCOMPARE(s->materialBox()->currentData().toString(), QStringLiteral("C45E-N"));
     }
