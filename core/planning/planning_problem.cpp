@@ -118,6 +118,19 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     return result;
 }
 
+std::vector<CuttingPass> PlanningProblem::passesOf(const PlanCandidate &c) const
+{
+    std::vector<CuttingPass> passes;
+    passes.reserve(static_cast<std::size_t>(std::max(c.roughingPasses, 0)) + 1);
+    const double roughDepth =
+        c.roughingPasses > 0 ? (m_radialStock_mm - c.finishing.depthOfCut_mm) / c.roughingPasses : 0.0;
+    for (int i = 0; i < c.roughingPasses; ++i)
+        passes.push_back({PassKind::Roughing, c.roughing.cuttingSpeed_m_min, c.roughing.feed_mm_rev, roughDepth});
+    passes.push_back(
+        {PassKind::Finishing, c.finishing.cuttingSpeed_m_min, c.finishing.feed_mm_rev, c.finishing.depthOfCut_mm});
+    return passes;
+}
+
 bool PlanningProblem::isEnabled(const QString &constraint) const
 {
     return !m_project.planning.disabledConstraints.contains(constraint);

@@ -80,6 +80,10 @@ public:
     // The tolerance constraints of a finishing pass (the deviation it leaves against each tolerance).
     [[nodiscard]] std::vector<ConstraintValue> toleranceConstraints(const PassConditions &pass) const;
 
+    // The cutting passes of a plan, as a project holds them: the roughing passes, equal, taking
+    // the stock above the finishing allowance, then the finishing pass.
+    [[nodiscard]] std::vector<CuttingPass> passesOf(const PlanCandidate &candidate) const;
+
     [[nodiscard]] const Project &project() const { return m_project; }
 
     [[nodiscard]] const TurningInputs &inputs() const { return m_inputs; }

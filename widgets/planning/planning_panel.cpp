@@ -267,18 +267,7 @@ void PlanningPanel::applyPlan()
 {
     if (!m_report || !m_report->problem || !m_report->plan.feasible)
         return;
-    const PlanResult &r = m_report->plan;
-    std::vector<CuttingPass> passes;
-    passes.reserve(static_cast<std::size_t>(r.candidate.roughingPasses) + 1);
-    const double roughDepth =
-        r.candidate.roughingPasses > 0
-            ? (m_report->problem->radialStock_mm() - r.candidate.finishing.depthOfCut_mm) / r.candidate.roughingPasses
-            : 0.0;
-    for (int i = 0; i < r.candidate.roughingPasses; ++i)
-        passes.push_back({PassKind::Roughing, r.candidate.roughing.cuttingSpeed_m_min, r.candidate.roughing.feed_mm_rev,
-                          roughDepth});
-    passes.push_back({PassKind::Finishing, r.candidate.finishing.cuttingSpeed_m_min, r.candidate.finishing.feed_mm_rev,
-                      r.candidate.finishing.depthOfCut_mm});
+    const std::vector<CuttingPass> passes = m_report->problem->passesOf(m_report->plan.candidate);
     const Diagnostics problems = m_document.setPasses(passes, tr("Apply optimal passes"));
     if (!problems.empty())
         QMessageBox::warning(this, tr("Apply to Passes"), problems.front().toString());
