@@ -24,6 +24,28 @@ constexpr int kStations = 11; // tool positions per feature for tolerances and t
 
 } // namespace
 
+bool constraintHasLimit(const Project &project, const DataLibrary &data, const QString &constraint)
+{
+    const PlanningSettings &s = project.planning;
+    const MachineData *machine = data.machine(project.machineId);
+    const auto machineHas = [machine](const char *key) {
+        return machine != nullptr && machine->limits.count(QLatin1String(key)) > 0;
+    };
+    if (constraint == QLatin1String("roughness"))
+        return s.maxRa_um || s.maxRz_um;
+    if (constraint == QLatin1String("power"))
+        return s.maxPower_kW || machineHas("power_kW");
+    if (constraint == QLatin1String("torque"))
+        return s.maxTorque_Nm.has_value();
+    if (constraint == QLatin1String("force"))
+        return s.maxForce_N.has_value();
+    if (constraint == QLatin1String("spindle_speed"))
+        return s.maxSpindleSpeed_rpm || machineHas("max_speed_rpm");
+    if (constraint == QLatin1String("tool_life"))
+        return s.minToolLife_min && s.taylorC_m_min && s.taylorN;
+    return true; // tolerances and the roughing depth always have theirs
+}
+
 QString ConstraintValue::label() const
 {
     if (name == QLatin1String("tolerances"))
@@ -114,6 +136,12 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
             "objective, and there is no tool-life constraint.");
     if (!p.m_maxTorque_Nm)
         p.m_notes << Planning::tr("No spindle torque limit given (planning.max_torque_Nm): torque is not constrained.");
+    if (!p.m_maxPower_kW)
+        p.m_notes << Planning::tr("No spindle power limit known (machine data or planning.max_power_kW): power is not "
+                                  "constrained.");
+    if (!p.m_maxSpeed_rpm)
+        p.m_notes << Planning::tr("No spindle speed limit known (machine data or planning.max_spindle_speed_rpm): "
+                                  "spindle speed is not constrained.");
     result.problem = problem;
     return result;
 }

@@ -61,6 +61,10 @@ struct CandidateEvaluation {
     [[nodiscard]] double totalViolation() const;
 };
 
+// Whether a planning constraint has a limit to check against (planning data, or the machine's
+// published limits): a constraint without one is not checked, and the planner is told so.
+[[nodiscard]] bool constraintHasLimit(const Project &project, const DataLibrary &data, const QString &constraint);
+
 // Everything the optimiser, the cutting window and the clamping advisor need about one project,
 // prepared once: the resolved inputs, the influence table of the finishing pass, the turned
 // lengths and the stock to remove.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/planning/planning_panel.h"
 
+#include "core/planning/planning_problem.h"
 #include "core/project/keywords.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/document/project_document.h"
@@ -192,8 +193,20 @@ void PlanningPanel::projectChanged()
     const PlanningSettings &s = m_document.project().planning;
     m_updatingControls = true;
     m_objective->setCurrentIndex(m_objective->findData(static_cast<int>(s.objective)));
-    for (QCheckBox *box : m_constraints)
-        box->setChecked(!s.disabledConstraints.contains(box->property("constraint").toString()));
+    for (QCheckBox *box : m_constraints) {
+        // A constraint with no limit to check against is never shown as active (issue: no
+        // constraint silently dropped): unticked, greyed, and saying why.
+        const QString keyword = box->property("constraint").toString();
+        const QString label = QString(keyword).replace(QLatin1Char('_'), QLatin1Char(' '));
+        const bool known = constraintHasLimit(m_document.project(), DataLibrary::builtIn(), keyword);
+        box->setEnabled(known);
+        box->setChecked(known && !s.disabledConstraints.contains(keyword));
+        box->setText(known ? label : tr("%1: no limit known").arg(label));
+        box->setToolTip(known ? tr("Switch the %1 constraint on or off (docs/planning.md §2)").arg(keyword)
+                              : tr("No %1 limit is known for this machine and project: it is not checked. Enter one "
+                                   "in Planning Data….")
+                                    .arg(label));
+    }
     m_updatingControls = false;
     showFinishing();
 }
@@ -204,10 +217,13 @@ void PlanningPanel::settingsEdited()
         return;
     PlanningSettings s = m_document.project().planning;
     s.objective = static_cast<PlanningObjective>(m_objective->currentData().toInt());
+    const QStringList before = s.disabledConstraints;
     s.disabledConstraints.clear();
     for (QCheckBox *box : m_constraints) {
-        if (!box->isChecked())
-            s.disabledConstraints << box->property("constraint").toString();
+        // A greyed box (no limit known) keeps whatever the project said of it.
+        const QString keyword = box->property("constraint").toString();
+        if (box->isEnabled() ? !box->isChecked() : before.contains(keyword))
+            s.disabledConstraints << keyword;
     }
     (void)m_document.setPlanning(s);
 }
