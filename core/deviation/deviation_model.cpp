@@ -616,32 +616,83 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
 
 namespace {
 
-double thermalDrift_mm(const TurningInputs &in, double spindleSpeed_rpm)
+// Steady radial drift at a spindle speed (docs/model.md §5): a_n n/1000 + a_T (T - T_ref) [mm].
+double steadyDrift_mm(const ThermalDrift &t, const TurningInputs &in, double spindleSpeed_rpm)
 {
+    return 1e-3 * (t.drift_um_per_1000rpm * spindleSpeed_rpm / 1000.0 +
+                   t.drift_um_per_K * (in.ambientTemperature_C - t.referenceTemperature_C));
+}
+
+double spindleSpeedAt(const TurningInputs &in, double radius_mm)
+{
+    double n = spindleSpeed_rpm(in.pass.cuttingSpeed_m_min, 2.0 * radius_mm);
+    if (in.maxSpindleSpeed_rpm)
+        n = std::min(n, *in.maxSpindleSpeed_rpm);
+    return n;
+}
+
+// The thermal drift at every station of one contour's features, along the pass (docs/model.md §5):
+// the first-order warm-up d(delta)/dt = (delta_ss(n) - delta)/tau integrated as the tool travels
+// from the right end towards the chuck, dt = dz / (f n(z)) at constant cutting speed, each step
+// with the mean steady drift of its two ends. At the start of the pass the machine has warmed
+// for the time since start at the first station's speed: delta_0 = delta_ss (1 - exp(-t0/tau)).
+// Returns the drift per feature and station (0 where nothing is characterised).
+std::vector<std::vector<double>> thermalAlongPass(const InfluenceTable &table, const TurningInputs &in,
+                                                  ContourSide side)
+{
+    std::vector<std::vector<double>> drift(table.features.size());
+    for (std::size_t i = 0; i < table.features.size(); ++i)
+        drift[i].assign(table.features[i].z_mm.size(), 0.0);
     if (!in.thermal)
-        return 0.0;
+        return drift;
     const ThermalDrift &t = *in.thermal;
-    const double steady_um = t.drift_um_per_1000rpm * spindleSpeed_rpm / 1000.0 +
-                             t.drift_um_per_K * (in.ambientTemperature_C - t.referenceTemperature_C);
-    return 1e-3 * steady_um * (1.0 - std::exp(-in.timeSinceStart_min / t.timeConstant_min));
+
+    struct Point {
+        std::size_t feature, station;
+        double z, n;
+    };
+
+    std::vector<Point> points;
+    for (std::size_t i = 0; i < table.features.size(); ++i) {
+        const FeatureInfluence &f = table.features[i];
+        if (f.side != side)
+            continue;
+        for (std::size_t j = 0; j < f.z_mm.size(); ++j)
+            points.push_back({i, j, f.z_mm[j], spindleSpeedAt(in, f.nominalRadius_mm[j])});
+    }
+    std::stable_sort(points.begin(), points.end(), [](const Point &a, const Point &b) { return a.z > b.z; });
+    double delta = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const Point &p = points[k];
+        if (k == 0) {
+            const double warm =
+                t.timeConstant_min > 0.0 ? 1.0 - std::exp(-in.timeSinceStart_min / t.timeConstant_min) : 1.0;
+            delta = steadyDrift_mm(t, in, p.n) * warm;
+        } else {
+            const Point &q = points[k - 1];
+            const double dt_min = (q.z - p.z) / in.pass.feed_mm_rev * 0.5 * (1.0 / q.n + 1.0 / p.n);
+            const double steady = 0.5 * (steadyDrift_mm(t, in, q.n) + steadyDrift_mm(t, in, p.n));
+            const double decay = t.timeConstant_min > 0.0 ? std::exp(-dt_min / t.timeConstant_min) : 0.0;
+            delta = steady + (delta - steady) * decay;
+        }
+        drift[p.feature][p.station] = delta;
+    }
+    return drift;
 }
 
 Station evaluateStation(const StationInfluence &si, double z, double r0, bool outer, const TurningInputs &in,
-                        double toolpost)
+                        double toolpost, double drift)
 {
     const CuttingForces &f = in.forces;
     Station st;
     st.z_mm = z;
     st.nominalRadius_mm = r0;
-    st.spindleSpeed_rpm = spindleSpeed_rpm(in.pass.cuttingSpeed_m_min, 2.0 * r0);
-    if (in.maxSpindleSpeed_rpm)
-        st.spindleSpeed_rpm = std::min(st.spindleSpeed_rpm, *in.maxSpindleSpeed_rpm);
+    st.spindleSpeed_rpm = spindleSpeedAt(in, r0);
     st.radial.spindleChuck_mm = f.radial_N * si.spindlePerRadial_mm_per_N + f.axial_N * si.spindlePerAxial_mm_per_N;
     st.radial.workpiece_mm =
         f.radial_N * si.radialPerRadial_mm_per_N + f.axial_N * si.radialPerAxial_mm_per_N - st.radial.spindleChuck_mm;
     st.radial.toolpost_mm = f.radial_N * toolpost;
     // A drift of the tool away from the axis enlarges shafts and bores alike.
-    const double drift = thermalDrift_mm(in, st.spindleSpeed_rpm);
     st.radial.thermal_mm = outer ? drift : -drift;
     st.tangential.spindleChuck_mm = f.tangential_N * si.spindleTangential_mm_per_N;
     st.tangential.workpiece_mm = f.tangential_N * si.tangentialPerTangential_mm_per_N - st.tangential.spindleChuck_mm;
@@ -660,13 +711,17 @@ DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceT
 {
     DeviationResult result;
     result.features.reserve(table.features.size());
-    for (const FeatureInfluence &f : table.features) {
+    const std::vector<std::vector<double>> outerDrift = thermalAlongPass(table, in, ContourSide::Outer);
+    const std::vector<std::vector<double>> innerDrift = thermalAlongPass(table, in, ContourSide::Inner);
+    for (std::size_t k = 0; k < table.features.size(); ++k) {
+        const FeatureInfluence &f = table.features[k];
         FeatureDeviation fd{f.featureId, f.side, f.kind, {}};
         fd.stations.reserve(f.stations.size());
         const bool outer = f.side == ContourSide::Outer;
+        const std::vector<double> &drift = (outer ? outerDrift : innerDrift)[k];
         for (std::size_t i = 0; i < f.stations.size(); ++i) {
             const Station st = evaluateStation(f.stations[i], f.z_mm[i], f.nominalRadius_mm[i], outer, in,
-                                               table.toolpostCompliance_mm_per_N);
+                                               table.toolpostCompliance_mm_per_N, drift[i]);
             const double diameter = 2.0 * st.nominalRadius_mm;
             const double speed = std::numbers::pi * diameter * st.spindleSpeed_rpm / 1000.0;
             result.maxPower_kW = std::max(result.maxPower_kW, cuttingPower_kW(in.forces.tangential_N, speed));

@@ -308,9 +308,13 @@ private Q_SLOTS:
         QVERIFY(near(res.theoreticalRa_um, 1.5625, 1e-12));
     }
 
-    // First-order warm-up (docs/model.md §5): drift = (a_n n/1000 + a_T (T - T_ref)) (1 - exp(-t/tau)).
-    // Ø30 at 200 m/min: n = 1000*200/(pi*30) = 2122.07 rpm; a_n = 4 µm/1000 rpm, a_T = 0.5 µm/K,
-    // T = 24 °C, T_ref = 20 °C, t = tau = 30 min: (8.48826 + 2) (1 - 1/e) = 10.48826 * 0.632121 = 6.62985 µm.
+    // First-order warm-up along the pass (docs/model.md §5): drift = (a_n n/1000 + a_T (T - T_ref))
+    // (1 - exp(-t/tau)), t the time since start when the tool passes z. Ø30 at 200 m/min:
+    // n = 1000*200/(pi*30) = 2122.07 rpm; a_n = 4 µm/1000 rpm, a_T = 0.5 µm/K, T = 24 °C, T_ref = 20 °C,
+    // tau = 30 min. The pass starts at the right end (z = 200) at t = 30 min: (8.48826 + 2)(1 - 1/e)
+    // = 6.62985 µm; at f = 0.2 mm/rev the tool moves 0.2 x 2122.07 = 424.41 mm/min, so it reaches the
+    // chuck face (z = 40) 160/424.41 = 0.37699 min later: 10.48826 (1 - exp(-30.37699/30)) = 6.67803 µm.
+    // One diameter, one speed: the drift in between follows the same exponential.
     void thermalWarmUp()
     {
         Project p = barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0);
@@ -320,10 +324,16 @@ private Q_SLOTS:
         p.environment.ambientTemperature_C = 24.0;
         const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), {});
         QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
-        for (const Station &st : feature(res, "O2").stations) {
-            QVERIFY(near(st.spindleSpeed_rpm, 2122.0659, 1e-7));
-            QVERIFY2(near(st.radial.thermal_mm * 1000.0, 6.62985, 1e-5),
-                     qPrintable(QString::number(st.radial.thermal_mm)));
+        const std::vector<Station> &stations = feature(res, "O2").stations;
+        QVERIFY(near(stations.back().radial.thermal_mm * 1000.0, 6.62985, 1e-5));
+        QVERIFY2(near(stations.front().radial.thermal_mm * 1000.0, 6.67803, 1e-5),
+                 qPrintable(QString::number(stations.front().radial.thermal_mm)));
+        const double n = 2122.0659;
+        for (const Station &st : stations) {
+            QVERIFY(near(st.spindleSpeed_rpm, n, 1e-7));
+            const double t = 30.0 + (200.0 - st.z_mm) / (0.2 * n);
+            QVERIFY2(near(st.radial.thermal_mm * 1000.0, 10.48826 * (1.0 - std::exp(-t / 30.0)), 1e-5),
+                     qPrintable(QString::number(st.z_mm)));
         }
     }
 
