@@ -544,6 +544,7 @@ StationInfluence stationInfluence(const Sweeps &s, std::size_t node, double z, d
     si.spindleTangential_mm_per_N = supportMotion(t, 0, z, in, chuck);
     si.rotationPerRadial_rad_per_N = r.atLoad(1, 0);
     si.rotationPerAxial_rad_per_N = r.atLoad(1, 1) * momentPerAxial;
+    si.rotationPerMoment_rad_per_Nmm = r.atLoad(1, 1);
     return si;
 }
 
@@ -705,6 +706,50 @@ Station evaluateStation(const StationInfluence &si, double z, double r0, bool ou
     return st;
 }
 
+// A face cut by a facing pass (docs/model.md §4): the tool feeds radially, so the feed force Ff
+// loads the section radially and the passive force Fp axially, with a moment arm that is the
+// contact radius rho as the tool crosses the face. The section at the face turns by
+//   theta(rho) = Ff c_theta,F + Fp (-/+ rho) c_theta,M
+// and the face point cut at rho is left u(rho) = rho theta(rho) out of its plane; the axial
+// run-out e is the range of u over the face (Valiño et al. 2008 eq. 12, e = (D_M - D_m)/2
+// tan(theta), when theta does not change across it). tan(theta) reported is the mean tilt.
+FaceConicity faceUnderFacingCut(const Segment &s, const FeatureInfluence &f, const TurningInputs &in)
+{
+    const StationInfluence &si = f.stations.front();
+    const double sign = f.side == ContourSide::Outer ? -1.0 : 1.0; // as for the feed force in turning
+    const double rIn = std::min(s.from.r_mm, s.to.r_mm);
+    const double rOut = std::max(s.from.r_mm, s.to.r_mm);
+    const auto u = [&](double rho) {
+        return rho * (in.forces.axial_N * si.rotationPerRadial_rad_per_N +
+                      in.forces.radial_N * sign * rho * si.rotationPerMoment_rad_per_Nmm);
+    };
+    constexpr int kSamples = 41;
+    double lo = u(rIn);
+    double hi = lo;
+    for (int i = 1; i < kSamples; ++i) {
+        const double v = u(rIn + (rOut - rIn) * i / (kSamples - 1));
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+    }
+    // The extreme of the parabola u(rho) where it lies inside the face.
+    const double a = in.forces.axial_N * si.rotationPerRadial_rad_per_N;
+    const double b = in.forces.radial_N * sign * si.rotationPerMoment_rad_per_Nmm;
+    if (b != 0.0) {
+        const double vertex = -a / (2.0 * b);
+        if (vertex > rIn && vertex < rOut) {
+            lo = std::min(lo, u(vertex));
+            hi = std::max(hi, u(vertex));
+        }
+    }
+    FaceConicity fc;
+    fc.featureId = f.featureId;
+    fc.side = f.side;
+    fc.z_mm = f.z_mm.front();
+    fc.tanTheta = rOut > rIn ? (u(rOut) - u(rIn)) / (rOut - rIn) : 0.0;
+    fc.axialRunout_mm = hi - lo;
+    return fc;
+}
+
 } // namespace
 
 DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceTable &table, const TurningInputs &in)
@@ -730,19 +775,8 @@ DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceT
         }
         result.features.push_back(std::move(fd));
     }
-    for (const FeatureInfluence &f : table.faces) {
-        const auto feature = findFeature(part, f.featureId);
-        const Segment &s = *feature->segment;
-        const StationInfluence &si = f.stations.front();
-        FaceConicity fc;
-        fc.featureId = f.featureId;
-        fc.side = f.side;
-        fc.z_mm = f.z_mm.front();
-        fc.tanTheta =
-            in.forces.radial_N * si.rotationPerRadial_rad_per_N + in.forces.axial_N * si.rotationPerAxial_rad_per_N;
-        fc.axialRunout_mm = std::abs(s.to.r_mm - s.from.r_mm) * std::abs(fc.tanTheta); // eq. 12
-        result.faces.push_back(fc);
-    }
+    for (const FeatureInfluence &f : table.faces)
+        result.faces.push_back(faceUnderFacingCut(*findFeature(part, f.featureId)->segment, f, in));
     result.theoreticalRa_um = theoreticalRa_um(in.pass.feed_mm_rev, in.noseRadius_mm);
     result.theoreticalRz_um = theoreticalRz_um(in.pass.feed_mm_rev, in.noseRadius_mm);
     result.inputs = in;

@@ -122,8 +122,10 @@ struct FeatureDeviation {
     std::vector<Station> stations;
 };
 
-// Conicity of a faced surface (Valiño et al. 2008 eq. 1 and 12): tan(theta) is the rotation of
-// the section at the face under the cutting load there, e = (D_M - D_m)/2 tan(theta).
+// Conicity of a faced surface (Valiño et al. 2008 eq. 1 and 12) under the forces of a facing cut
+// at the finishing conditions (docs/model.md §4): e is the axial run-out left across the face,
+// tan(theta) its mean tilt; with a tilt that does not change across the face, e = (D_M - D_m)/2
+// tan(theta).
 struct FaceConicity {
     QString featureId;
     ContourSide side = ContourSide::Outer;
@@ -157,6 +159,7 @@ struct StationInfluence {
     double spindleTangential_mm_per_N = 0.0;
     double rotationPerRadial_rad_per_N = 0.0;
     double rotationPerAxial_rad_per_N = 0.0;
+    double rotationPerMoment_rad_per_Nmm = 0.0; // under a unit moment at the load (facing)
 };
 
 struct FeatureInfluence {

@@ -7,6 +7,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -306,6 +307,29 @@ private Q_SLOTS:
                     .contains(QStringLiteral("E. Isakov, 'Calculated forces when turning'")));
         // Ra = f^2/(32 r_eps) with r_eps = 0.8 mm from "CNMG 120408".
         QVERIFY(near(res.theoreticalRa_um, 1.5625, 1e-12));
+    }
+
+    // The free end face of a Ø30 bar, 160 mm out of a rigid chuck, cut by a facing pass (Euler–Bernoulli
+    // section rotation; shear does not turn the section): the feed force Ff = 100 N loads it
+    // radially, theta_F = Ff L²/(2EI) = 100 x 160²/(2 x 210000 x 39760.78) = 1.53297e-4; the passive
+    // force Fp = 300 N pushes it towards the chuck at the contact radius rho, on the tool's side,
+    // turning it back: theta_M = -Fp rho L/(EI) = -5.74868e-6 rho. The face point cut at rho is left
+    // u = rho (1.53297e-4 - 5.74867e-6 rho) out of plane: 0 at the centre, its largest 1.02198 µm at
+    // rho = 13.333 mm, 1.00602 µm at the rim. So e = 1.02198 µm, and the mean tilt 1.00602/15 = 6.7068e-5.
+    void facingCutLeavesAFaceOutOfPlane()
+    {
+        const Project p = barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0);
+        DeviationOptions o;
+        o.loadOverride = CuttingForces{500.0, 100.0, 300.0}; // Fc, Ff, Fp of the pass
+        o.workpieceOnly = true;
+        o.inProcessSection = false;
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), o);
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        const auto end = std::find_if(res.faces.begin(), res.faces.end(),
+                                      [](const FaceConicity &f) { return f.featureId == QLatin1String("O3"); });
+        QVERIFY(end != res.faces.end());
+        QVERIFY2(near(end->axialRunout_mm * 1000.0, 1.02198, 2e-5), qPrintable(QString::number(end->axialRunout_mm)));
+        QVERIFY2(near(std::abs(end->tanTheta), 6.7068e-5, 2e-5), qPrintable(QString::number(end->tanTheta)));
     }
 
     // First-order warm-up along the pass (docs/model.md §5): drift = (a_n n/1000 + a_T (T - T_ref))
