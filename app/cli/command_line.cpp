@@ -12,6 +12,7 @@
 #include "core/planning/cutting_window.h"
 #include "core/planning/gcode.h"
 #include "core/planning/optimiser.h"
+#include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/iso286.h"
@@ -138,8 +139,13 @@ int runCheck(const QStringList &args, QTextStream &out, QTextStream &err)
     bool anyErrors = false;
     QJsonArray reports;
     for (const QString &file : files) {
-        const ProjectParseResult result = readProjectFile(file);
-        const bool valid = result.project.has_value();
+        ProjectParseResult result = readProjectFile(file);
+        if (result.project) {
+            // What the project asks of the data library and the machine (docs/planning.md).
+            const Diagnostics plausibility = checkPlausibility(*result.project, DataLibrary::builtIn());
+            result.diagnostics.insert(result.diagnostics.end(), plausibility.begin(), plausibility.end());
+        }
+        const bool valid = result.project.has_value() && !hasErrors(result.diagnostics);
         anyErrors = anyErrors || !valid;
         if (parser.isSet(json)) {
             QJsonArray list;

@@ -70,7 +70,37 @@ private Q_SLOTS:
         QCOMPARE(r.out.count(QStringLiteral(": ok — ")), 3);
         QVERIFY(r.out.contains(QStringLiteral("part \"Hollow sleeve\", 400 mm long, 8 outer and 3 inner features, "
                                               "chuck_tailstock")));
-        QVERIFY(r.err.isEmpty());
+        // Plausibility: the examples' finishing feeds (0.1 and 0.08 mm/rev) lie below the 0.17 mm/rev
+        // the insert's catalogue range starts at (planning.ranges of each file): warnings, not errors.
+        QVERIFY2(r.err.contains(QStringLiteral("stepped-shaft-chuck.tolturn: warning: passes[1].feed_mm_rev: 0.1 "
+                                               "mm/rev is outside the insert's published range 0.17–0.399 mm/rev")),
+                 qPrintable(r.err));
+        QVERIFY(
+            r.err.contains(QStringLiteral("hollow-sleeve-tailstock.tolturn: warning: passes[1].feed_mm_rev: 0.08")));
+        QVERIFY(!r.err.contains(QStringLiteral("error")));
+    }
+
+    // Names that the data library does not know are errors of check, each naming what it has.
+    void checkUnknownLibraryEntries()
+    {
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QByteArray text = source.readAll();
+        text.replace("\"haas-st-20\"", "\"nope-lathe\"");
+        text.replace("\"C45E-N\"", "\"unobtainium\"");
+        text.replace("\"PCLNR 2525M12\"", "\"XXXXR 2525M12\"");
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("unknown.tolturn"));
+        QVERIFY(writeFile(path, text));
+        const Run r = runCli({QStringLiteral("check"), path});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.out.isEmpty());
+        QVERIFY2(r.err.contains(QStringLiteral("error: material: unknown material \"unobtainium\"; the data library "
+                                               "has: C45E-N")),
+                 qPrintable(r.err));
+        QVERIFY(r.err.contains(QStringLiteral("error: machine: unknown machine \"nope-lathe\"")));
+        QVERIFY(
+            r.err.contains(QStringLiteral("error: tool.holder: holder \"XXXXR 2525M12\" is not in the data library")));
     }
 
     void checkMissingFile()

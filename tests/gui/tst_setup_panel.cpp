@@ -231,6 +231,24 @@ private Q_SLOTS:
         QCOMPARE(doc.undoStack()->index(), edits + 1);
     }
 
+    // The stepped shaft's finishing feed 0.1 mm/rev lies below the 0.17 mm/rev its insert's catalogue
+    // range starts at (the example's planning.ranges): the box is marked and says why; a feed inside
+    // the range clears it.
+    void implausibleConditionsAreMarked()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        QDoubleSpinBox *feed = s->passBox(1, 1);
+        QVERIFY(feed->styleSheet().contains(QStringLiteral("#ffe8a3")));
+        QVERIFY2(feed->toolTip().contains(QStringLiteral("outside the insert's published range 0.17–0.399 mm/rev")),
+                 qPrintable(feed->toolTip()));
+        QVERIFY(s->passBox(1, 0)->styleSheet().isEmpty()); // 250 m/min is inside 201.2–353.6
+        feed->setValue(0.2);
+        QVERIFY(s->passBox(1, 1)->styleSheet().isEmpty());
+        QVERIFY(!s->passBox(1, 1)->toolTip().contains(QStringLiteral("outside")));
+    }
+
     void cuttingConditionsAndMaterialAreEdits()
     {
         MainWindow w;

@@ -3,6 +3,7 @@
 
 #include "core/common/library_info.h"
 #include "core/planning/planning_report.h"
+#include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/range_verdicts.h"
@@ -290,6 +291,11 @@ void inputs(Layout &l, const Project &p, const DeviationResult &d)
     rows.push_back({Report::tr("Machine characterisation"),
                     p.characterisation.source.isEmpty() ? Report::tr("not characterised") : p.characterisation.source});
     l.table(rows, {130, kWidth - 130});
+    // Conditions outside the insert's published ranges or the machine's limits (checkPlausibility).
+    for (const Diagnostic &x : checkPlausibility(p, data))
+        l.paragraph((x.severity == Severity::Error ? Report::tr("Error: ") : Report::tr("Warning: ")) + x.field +
+                        QStringLiteral(": ") + x.message,
+                    8.5);
 }
 
 void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const std::optional<DeviationResult> &stiff)

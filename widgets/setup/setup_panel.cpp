@@ -3,6 +3,7 @@
 
 #include "core/data/data_library.h"
 #include "core/deviation/stiffness_calibration.h"
+#include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 #include "widgets/common/length_spin_box.h"
@@ -22,6 +23,7 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
+#include <array>
 #include <cmath>
 
 namespace tolturn {
@@ -220,6 +222,8 @@ void SetupPanel::rebuildPassRows(int count)
             spinBox(0.001, 5.0, 3, QString(),
                     tr("Feed f: chip thickness h = f sin κr (Kienzle); Ra ≈ f² / (32 rε) (MODEL.md §2).")),
             spinBox(0.001, 50.0, 3, QString(), tr("Depth of cut ap: chip width b = ap / sin κr (Kienzle)."))};
+        for (QDoubleSpinBox *box : boxes)
+            box->setProperty("baseToolTip", box->toolTip());
         auto *label = new QLabel;
         m_passGrid->addWidget(label, row, 0);
         for (int c = 0; c < 3; ++c) {
@@ -275,9 +279,34 @@ void SetupPanel::showValues()
         m_passBoxes[i][kFeed]->setValue(pass.feed_mm_rev);
         m_passBoxes[i][kDepth]->setValue(pass.depthOfCut_mm);
     }
+    markImplausiblePasses();
     showMachineStiffness();
     m_stiffness->showCharacterisation(p.characterisation);
     m_updating = false;
+}
+
+// Cutting conditions outside the insert's published ranges or the machine's limits
+// (checkPlausibility) are marked on their box, with the reason in its tooltip.
+void SetupPanel::markImplausiblePasses()
+{
+    const Diagnostics findings = checkPlausibility(m_document.project(), DataLibrary::builtIn());
+    const std::array<QLatin1String, 3> keys{QLatin1String("cutting_speed_m_min"), QLatin1String("feed_mm_rev"),
+                                            QLatin1String("depth_of_cut_mm")};
+    for (std::size_t i = 0; i < m_passBoxes.size(); ++i) {
+        for (std::size_t c = 0; c < keys.size(); ++c) {
+            QDoubleSpinBox *box = m_passBoxes[i][c];
+            const QString field = QStringLiteral("passes[%1].%2").arg(i).arg(keys[c]);
+            QStringList reasons;
+            for (const Diagnostic &d : findings) {
+                if (d.field == field)
+                    reasons << d.message;
+            }
+            box->setStyleSheet(reasons.isEmpty() ? QString()
+                                                 : QStringLiteral("QDoubleSpinBox { background: #ffe8a3; }"));
+            box->setToolTip(box->property("baseToolTip").toString() +
+                            (reasons.isEmpty() ? QString() : QStringLiteral("\n\n") + reasons.join(QLatin1Char('\n'))));
+        }
+    }
 }
 
 void SetupPanel::showMachineStiffness()

@@ -60,6 +60,7 @@ public:
     [[nodiscard]] QString message() const;
 
 private:
+    void markImplausiblePasses();
     QWidget *createPartGroup();
     QWidget *createToolGroup();
     QWidget *createClampingGroup();

@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/plausibility.h"
+
+#include "core/cutting/cutting_quantities.h"
+#include "core/deviation/deviation_model.h"
+#include "core/project/keywords.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace tolturn {
+
+namespace {
+
+struct Plausibility {
+    Q_DECLARE_TR_FUNCTIONS(Plausibility)
+};
+
+QString num(double v)
+{
+    return formatNumber(v);
+}
+
+template <typename Entries>
+QString idsOf(const Entries &entries)
+{
+    QStringList ids;
+    for (const auto &e : entries)
+        ids << e.id;
+    return ids.join(QStringLiteral(", "));
+}
+
+void checkLibraryEntries(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    if (data.material(p.materialId) == nullptr)
+        out.push_back(
+            makeError(QStringLiteral("material"), Plausibility::tr("unknown material \"%1\"; the data library has: %2")
+                                                      .arg(p.materialId, idsOf(data.materials()))));
+    if (data.machine(p.machineId) == nullptr)
+        out.push_back(
+            makeError(QStringLiteral("machine"), Plausibility::tr("unknown machine \"%1\"; the data library has: %2")
+                                                     .arg(p.machineId, idsOf(data.machines()))));
+    if (data.holder(p.tool.holderCode) != nullptr)
+        return;
+    const QString code = p.tool.holderCode.trimmed().toUpper();
+    const bool styleKnown = code.size() >= 3 && data.styleEnteringAngle(code.at(2)).has_value();
+    if (!styleKnown)
+        out.push_back(makeError(QStringLiteral("tool.holder"),
+                                Plausibility::tr("holder \"%1\" is not in the data library and its ISO 5608 style "
+                                                 "letter (third character) gives no known entering angle")
+                                    .arg(p.tool.holderCode)));
+    else
+        out.push_back(makeWarning(QStringLiteral("tool.holder"),
+                                  Plausibility::tr("holder \"%1\" is not in the data library: its entering angle comes "
+                                                   "from its ISO 5608 style letter, and its shank is not in the "
+                                                   "toolpost term")
+                                      .arg(p.tool.holderCode)));
+}
+
+void checkRange(double value, const std::optional<ValueRange> &range, const QString &field, const QString &unit,
+                const QString &source, Diagnostics &out)
+{
+    if (!range || (value >= range->min && value <= range->max))
+        return;
+    out.push_back(makeWarning(field, Plausibility::tr("%1 %2 is outside the insert's published range %3–%4 %2 (%5)")
+                                         .arg(num(value), unit, num(range->min), num(range->max),
+                                              source.isEmpty() ? Plausibility::tr("no source given")
+                                                               : source.section(QLatin1Char(','), 0, 1))));
+}
+
+// The smallest and largest diameter a pass cuts: the outer contour's turned features outside the jaws.
+std::pair<double, double> cutDiameters(const Project &p)
+{
+    const double chuckFace = p.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : p.clamping.clampedLength_mm;
+    double smallest = 1e300;
+    double largest = 0.0;
+    for (const Segment &s : p.part.outer.segments) {
+        if (!s.isAxial() || s.to.z_mm <= chuckFace)
+            continue;
+        for (const double r : {s.from.r_mm, s.to.r_mm}) {
+            if (r > 0.0) {
+                smallest = std::min(smallest, 2.0 * r);
+                largest = std::max(largest, 2.0 * r);
+            }
+        }
+    }
+    return {smallest, largest};
+}
+
+std::optional<double> machineLimit(const MachineData *m, const char *key)
+{
+    if (m == nullptr)
+        return std::nullopt;
+    const auto it = m->limits.find(QLatin1String(key));
+    return it == m->limits.end() ? std::nullopt : std::optional<double>(it->second.value);
+}
+
+void checkPasses(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    const PlanningSettings &s = p.planning;
+    const MachineData *machine = data.machine(p.machineId);
+    const auto maxSpeed = s.maxSpindleSpeed_rpm ? s.maxSpindleSpeed_rpm : machineLimit(machine, "max_speed_rpm");
+    const auto maxPower = s.maxPower_kW ? s.maxPower_kW : machineLimit(machine, "power_kW");
+    const auto [smallest, largest] = cutDiameters(p);
+    Diagnostics ignored;
+    const auto forces = projectForceModel(p, data, ignored);
+    for (std::size_t i = 0; i < p.passes.size(); ++i) {
+        const CuttingPass &pass = p.passes[i];
+        const QString at = QStringLiteral("passes[%1].").arg(i);
+        checkRange(pass.cuttingSpeed_m_min, s.cuttingSpeed_m_min, at + QStringLiteral("cutting_speed_m_min"),
+                   QStringLiteral("m/min"), s.rangesSource, out);
+        checkRange(pass.feed_mm_rev, s.feed_mm_rev, at + QStringLiteral("feed_mm_rev"), QStringLiteral("mm/rev"),
+                   s.rangesSource, out);
+        checkRange(pass.depthOfCut_mm, s.depthOfCut_mm, at + QStringLiteral("depth_of_cut_mm"), QStringLiteral("mm"),
+                   s.rangesSource, out);
+        if (maxSpeed && smallest < 1e299) {
+            const double n = spindleSpeed_rpm(pass.cuttingSpeed_m_min, smallest);
+            if (n > *maxSpeed)
+                out.push_back(makeWarning(
+                    at + QStringLiteral("cutting_speed_m_min"),
+                    Plausibility::tr("%1 m/min on Ø%2 mm needs %3 rpm, more than the machine's %4 rpm: the spindle "
+                                     "speed limit lowers the cutting speed there")
+                        .arg(num(pass.cuttingSpeed_m_min), num(smallest), num(std::round(n)), num(*maxSpeed))));
+        }
+        if (maxPower && forces && largest > 0.0) {
+            const double power =
+                cuttingPower_kW((*forces)(pass.feed_mm_rev, pass.depthOfCut_mm).tangential_N, pass.cuttingSpeed_m_min);
+            if (power > *maxPower)
+                out.push_back(makeWarning(at + QStringLiteral("depth_of_cut_mm"),
+                                          Plausibility::tr("the pass needs %1 kW of cutting power, more than the "
+                                                           "machine's %2 kW")
+                                              .arg(num(power), num(*maxPower))));
+        }
+    }
+}
+
+} // namespace
+
+Diagnostics checkPlausibility(const Project &project, const DataLibrary &data)
+{
+    Diagnostics out;
+    checkLibraryEntries(project, data, out);
+    checkPasses(project, data, out);
+    return out;
+}
+
+} // namespace tolturn
