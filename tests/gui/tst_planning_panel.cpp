@@ -229,6 +229,9 @@ private Q_SLOTS:
         panel->cancel();
         QVERIFY(finished.count() == 1 || finished.wait(60000));
         QVERIFY(!panel->isRunning());
+        // Cancelled, not finished: no plan to apply (a cancel that did nothing shows the plan).
+        QCOMPARE(panel->planText(), QStringLiteral("Cancelled."));
+        QVERIFY(!panel->findChild<QPushButton *>(QStringLiteral("applyPlan"))->isEnabled());
     }
 
     void exportWritesThePreview()

@@ -161,14 +161,15 @@ private Q_SLOTS:
         Q_EMIT e->sourceEdit()->editingFinished();
         QVERIFY2(w.setupPanel()->message().isEmpty(), qPrintable(w.setupPanel()->message()));
         QCOMPARE(w.document()->undoStack()->count(), 1);
-        // With k2, k3 practically rigid the chuck only translates, by Fp / k1, at every station
-        // (Valiño et al. 2008 eq. 2 with the rotation terms gone: they add F (Lc + a)^2 / k2, at
-        // most 31 N x (215 mm)^2 / 1e12 = 1.4e-6 mm against 0.031 mm, below 1e-4 of it).
+        // With k2, k3 practically rigid the chuck only translates, by Fp / k1, away from the tool
+        // (material left, positive) at every station (Valiño et al. 2008 eq. 2 with the rotation
+        // terms gone: they add F (Lc + a)^2 / k2, at most 70 N x (215 mm)^2 / 1e12 = 3.2e-6 mm against
+        // 0.070 mm, below 1e-4 of it).
         const DeviationResult &r = w.deflectionPanel()->result();
         const double expected_mm = r.inputs->forces.radial_N / 1.0e3;
         for (const FeatureDeviation &f : r.features)
             for (const Station &st : f.stations)
-                QVERIFY2(std::abs(std::abs(st.radial.spindleChuck_mm) - expected_mm) < 1e-4 * expected_mm,
+                QVERIFY2(std::abs(st.radial.spindleChuck_mm - expected_mm) < 1e-4 * expected_mm,
                          qPrintable(QStringLiteral("%1 at z %2").arg(st.radial.spindleChuck_mm).arg(st.z_mm)));
         w.document()->undoStack()->undo();
         QVERIFY(!w.document()->project().characterisation.spindleRadial.has_value());

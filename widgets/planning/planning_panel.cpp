@@ -93,6 +93,7 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     , m_export(new QPushButton(tr("Export G-code…"), this))
 {
     setObjectName(QStringLiteral("planningPanel"));
+    m_apply->setObjectName(QStringLiteral("applyPlan"));
     buildControls();
     connect(&m_watcher, &QFutureWatcher<PlanningReport>::finished, this, [this] {
         m_report = std::make_unique<PlanningReport>(m_watcher.result());
