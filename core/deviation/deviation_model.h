@@ -2,8 +2,7 @@
 #pragma once
 
 #include "core/common/diagnostic.h"
-#include "core/cutting/cutting_forces.h"
-#include "core/data/data_library.h"
+#include "core/deviation/turning_inputs.h"
 #include "core/mechanics/moving_load.h"
 #include "core/project/project.h"
 
@@ -15,84 +14,6 @@
 #include <vector>
 
 namespace tolturn {
-
-// Which end of a published stiffness range a machine that was not measured is computed at
-// (docs/model.md §2). Planning and the verdicts take the compliant end unless told otherwise.
-enum class StiffnessEnd { Compliant, Stiff };
-
-struct DeviationOptions {
-    std::optional<CuttingForces> loadOverride; // forces given by the user instead of a force model
-    StiffnessEnd stiffnessEnd = StiffnessEnd::Compliant;
-    // A radial stiffness that replaces what the chuck face, or the tailstock (both centres between
-    // centres), would otherwise be: the search for the stiffness a tolerance needs [N/mm].
-    std::optional<double> chuckStiffness_N_per_mm;
-    std::optional<double> tailstockStiffness_N_per_mm;
-    bool workpieceOnly = false;   // rigid machine supports, no toolpost or thermal term
-    bool inProcessSection = true; // the pass's own stock still on, left of the tool
-    int stationsPerFeature = 21;
-    int passIndex = -1; // -1: the last finishing pass (or the last pass)
-};
-
-// What a support's stiffness rests on, for people and for the range verdicts.
-enum class SupportBasis {
-    NotUsed,     // the clamping has no such support
-    Measured,    // the project's characterisation
-    RangeEnd,    // one end of the data library's published range
-    Given,       // DeviationOptions: a value tried by the caller
-    RigidNoData, // neither measured nor published: rigid, which is optimistic
-};
-
-struct SupportStiffnessUsed {
-    SupportBasis basis = SupportBasis::NotUsed;
-    double stiffness_N_per_mm = 0.0;     // RangeEnd and Given; 0 otherwise
-    std::optional<StiffnessRange> range; // the published range, where there is one
-};
-
-// Everything the deviation model needs, resolved from a project and the data library.
-struct TurningInputs {
-    ElasticMaterial material;
-    QString materialName;
-    CuttingPass pass;
-    int passIndex = 0;
-    CuttingForces forces;
-    QString forceModel; // "kienzle", "li_du" or "given"
-    double noseRadius_mm = 0.0;
-    double enteringAngle_deg = 0.0;
-    double toolpostCompliance_mm_per_N = 0.0;
-    double supportStart_mm = 0.0; // chuck face or left centre
-    double supportEnd_mm = 0.0;   // right end of the part
-    EndSupport radialLeft, radialRight, tangentialLeft, tangentialRight;
-    bool spindleCharacterised = false;
-    SupportStiffnessUsed chuck;     // chuck face (chuck and chuck + tailstock)
-    SupportStiffnessUsed tailstock; // tailstock, or both centres between centres
-    std::optional<ThermalDrift> thermal;
-    double timeSinceStart_min = 0.0;
-    double ambientTemperature_C = 20.0;
-    std::optional<double> maxSpindleSpeed_rpm;
-    std::optional<double> maxPower_kW;
-    QStringList notes; // assumptions the result depends on, for people
-};
-
-struct InputsResult {
-    std::optional<TurningInputs> inputs;
-    Diagnostics diagnostics;
-};
-
-[[nodiscard]] InputsResult resolveTurningInputs(const Project &project, const DataLibrary &data,
-                                                const DeviationOptions &options);
-
-// The tool geometry of the Li & Du model for a project: rake and inclination from the project,
-// the holder data, or the seat of a holder for negative inserts; lead angle from the entering
-// angle; nose radius from the insert code. nullopt with an error naming the missing field.
-[[nodiscard]] std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &project, const DataLibrary &data,
-                                                                      Diagnostics &out);
-
-// The project's force model (Kienzle or Li & Du, as its cutting_model says) as a function of
-// feed and depth of cut, with material and tool resolved once; nullopt with errors when they
-// cannot be.
-using ForceFunction = std::function<CuttingForces(double feed_mm_rev, double depthOfCut_mm)>;
-[[nodiscard]] std::optional<ForceFunction> projectForceModel(const Project &project, const DataLibrary &data,
-                                                             Diagnostics &out);
 
 // Deviations at one tool position, in mm. Radial contributions are "material left": positive
 // where the surface stays proud of nominal (a shaft too large, a bore too small).

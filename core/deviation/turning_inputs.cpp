@@ -1,0 +1,467 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/deviation/turning_inputs.h"
+
+#include "core/mechanics/moving_load.h"
+#include "core/mechanics/spindle_chuck.h"
+#include "core/project/keywords.h"
+#include "core/tooling/iso1832.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+#include <numbers>
+
+namespace tolturn {
+
+namespace {
+
+struct DeviationModel {
+    Q_DECLARE_TR_FUNCTIONS(DeviationModel)
+};
+
+QString num(double v)
+{
+    return formatNumber(v);
+}
+
+double radians(double deg)
+{
+    return deg * std::numbers::pi / 180.0;
+}
+
+int choosePass(const Project &p, int requested)
+{
+    if (requested >= 0)
+        return requested;
+    for (int i = static_cast<int>(p.passes.size()) - 1; i >= 0; --i) {
+        if (p.passes[static_cast<std::size_t>(i)].kind == PassKind::Finishing)
+            return i;
+    }
+    return static_cast<int>(p.passes.size()) - 1;
+}
+
+// Entering angle from the holder: the library's holder, else its ISO 5608 style letter.
+std::optional<SourcedValue> enteringAngleOf(const QString &holderCode, const DataLibrary &data)
+{
+    if (const HolderData *h = data.holder(holderCode))
+        return h->enteringAngle_deg;
+    const QString code = holderCode.trimmed().toUpper();
+    if (code.size() >= 3 && code.at(0).isLetter() && code.at(1).isLetter() && code.at(2).isLetter())
+        return data.styleEnteringAngle(code.at(2));
+    return std::nullopt;
+}
+
+KienzleConstants kienzleOf(const MaterialData &m, const CuttingModel &model, const DataLibrary &data,
+                           QStringList &notes)
+{
+    KienzleConstants k;
+    k.cutting = {m.kc11_MPa.value, m.mc.value};
+    if (m.kf11_MPa && m.mf)
+        k.feed = KienzleLaw{m.kf11_MPa->value, m.mf->value};
+    if (m.kp11_MPa && m.mp)
+        k.passive = KienzleLaw{m.kp11_MPa->value, m.mp->value};
+    const bool projectRatios = model.feedToCuttingRatio || model.passiveToCuttingRatio;
+    const auto feedRatio = m.feedToCuttingRatio ? m.feedToCuttingRatio : data.defaultFeedToCuttingRatio();
+    const auto passiveRatio = m.passiveToCuttingRatio ? m.passiveToCuttingRatio : data.defaultPassiveToCuttingRatio();
+    k.feedToCuttingRatio = model.feedToCuttingRatio.value_or(feedRatio ? feedRatio->value : 0.0);
+    k.passiveToCuttingRatio = model.passiveToCuttingRatio.value_or(passiveRatio ? passiveRatio->value : 0.0);
+    if (projectRatios) {
+        k.feed.reset();
+        k.passive.reset();
+    } else if ((!k.feed && !m.feedToCuttingRatio) || (!k.passive && !m.passiveToCuttingRatio)) {
+        notes << DeviationModel::tr(
+                     "Feed and passive force from the rule of thumb Ff = %1 Fc, Fp = %2 Fc (%3): the material data "
+                     "give no feed or passive force constants. Calibrate the forces for accuracy.")
+                     .arg(num(k.feedToCuttingRatio), num(k.passiveToCuttingRatio),
+                          feedRatio ? data.sourceText(feedRatio->source).section(QLatin1Char(','), 0, 1)
+                                    : DeviationModel::tr("no source: zero"));
+    }
+    return k;
+}
+
+std::optional<double> seatAngle(const std::optional<double> &projectValue, const std::optional<SourcedValue> &holder,
+                                const std::optional<SourcedValue> &negativeSeat, bool negativeInsert)
+{
+    if (projectValue)
+        return projectValue;
+    if (holder)
+        return holder->value;
+    if (negativeInsert && negativeSeat)
+        return negativeSeat->value;
+    return std::nullopt;
+}
+
+void resolveForces(const Project &p, const DataLibrary &data, const DeviationOptions &options,
+                   const MaterialData &material, TurningInputs &in, Diagnostics &out)
+{
+    if (options.loadOverride) {
+        in.forces = *options.loadOverride;
+        in.forceModel = QStringLiteral("given");
+        return;
+    }
+    if (p.cuttingModel.forceModel == ForceModel::Kienzle) {
+        const ForceResult r = kienzleForces(kienzleOf(material, p.cuttingModel, data, in.notes), in.pass.feed_mm_rev,
+                                            in.pass.depthOfCut_mm, radians(in.enteringAngle_deg), in.noseRadius_mm);
+        in.forces = r.forces;
+        in.forceModel = QStringLiteral("kienzle");
+        out.insert(out.end(), r.warnings.begin(), r.warnings.end());
+        return;
+    }
+    const auto tool = resolveLiDuToolGeometry(p, data, out);
+    if (!tool)
+        return;
+    const LiDuCoefficients c{p.cuttingModel.normalPressure_MPa.value_or(0.0),
+                             p.cuttingModel.frictionRatio.value_or(0.0)};
+    const ForceResult r = liDuForces(c, *tool, in.pass.feed_mm_rev, in.pass.depthOfCut_mm);
+    in.forces = r.forces;
+    in.forceModel = QStringLiteral("li_du");
+    out.insert(out.end(), r.warnings.begin(), r.warnings.end());
+}
+
+double toolpostCompliance(const Project &p, const DataLibrary &data, QStringList &notes)
+{
+    const HolderData *h = data.holder(p.tool.holderCode);
+    const auto modulus = data.shankModulus();
+    if (h == nullptr || !modulus) {
+        notes << DeviationModel::tr("Toolpost shortening not included: holder \"%1\" is not in the data library.")
+                     .arg(p.tool.holderCode);
+        return 0.0;
+    }
+    double area = 0.0;
+    if (h->shankHeight_mm && h->shankWidth_mm)
+        area = h->shankHeight_mm->value * h->shankWidth_mm->value;
+    else if (h->barDiameter_mm)
+        area = 0.25 * std::numbers::pi * h->barDiameter_mm->value * h->barDiameter_mm->value;
+    double length = p.tool.overhang_mm.value_or(0.0);
+    if (!p.tool.overhang_mm && h->length_mm) {
+        length = h->length_mm->value;
+        notes << DeviationModel::tr(
+                     "Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give "
+                     "tool.overhang_mm for the length out of the turret.")
+                     .arg(num(length));
+    }
+    ToolpostCompliance tp;
+    tp.toolLength_mm = length;
+    tp.toolArea_mm2 = area;
+    tp.toolModulus_MPa = modulus->value;
+    return tp.compliance_mm_per_N();
+}
+
+EndSupport chuckSupport(const MachineCharacterisation &c, const std::optional<SpindleSprings> &springs)
+{
+    if (!springs || !c.pivotDistance_mm)
+        return EndSupport::clamped();
+    return EndSupport::springs(chuckFaceStiffness(
+        {springs->k1_N_per_mm, springs->k2_Nmm_per_rad, springs->k3_Nmm_per_rad, *c.pivotDistance_mm}));
+}
+
+// The chuck of the one-parameter family (docs/model.md §2): a translational spring K at the chuck
+// face (k1 = K), the face held against tilt.
+EndSupport chuckFamilySupport(double k_N_per_mm)
+{
+    EndSupport s = EndSupport::translationSpring(k_N_per_mm);
+    s.fixedRotation = true;
+    return s;
+}
+
+double rangeEnd(const StiffnessRange &r, StiffnessEnd end)
+{
+    return end == StiffnessEnd::Compliant ? r.compliant_N_per_mm.value : r.stiff_N_per_mm.value;
+}
+
+QString perMicrometre(double k_N_per_mm)
+{
+    return formatNumber(k_N_per_mm / 1000.0);
+}
+
+QString endName(StiffnessEnd end)
+{
+    return end == StiffnessEnd::Compliant ? DeviationModel::tr("compliant") : DeviationModel::tr("stiff");
+}
+
+// The chuck face: a value tried by the caller, the measured springs, the end of the published
+// range, or (no data at all) rigid.
+void resolveChuck(const Project &p, const DataLibrary &data, const DeviationOptions &options, TurningInputs &in)
+{
+    const MachineCharacterisation &c = p.characterisation;
+    const auto &range = data.uncharacterisedSupports().chuckRadial;
+    in.chuck.range = range;
+    in.spindleCharacterised = c.spindleRadial.has_value() && c.pivotDistance_mm.has_value();
+    if (options.chuckStiffness_N_per_mm) {
+        in.chuck.basis = SupportBasis::Given;
+        in.chuck.stiffness_N_per_mm = *options.chuckStiffness_N_per_mm;
+        in.radialLeft = in.tangentialLeft = chuckFamilySupport(in.chuck.stiffness_N_per_mm);
+    } else if (in.spindleCharacterised) {
+        in.chuck.basis = SupportBasis::Measured;
+        in.radialLeft = chuckSupport(c, c.spindleRadial);
+        in.tangentialLeft = chuckSupport(c, c.spindleTangential);
+    } else if (range) {
+        in.chuck.basis = SupportBasis::RangeEnd;
+        in.chuck.stiffness_N_per_mm = rangeEnd(*range, options.stiffnessEnd);
+        in.radialLeft = in.tangentialLeft = chuckFamilySupport(in.chuck.stiffness_N_per_mm);
+        in.notes << DeviationModel::tr(
+                        "Spindle–chuck not measured: a radial spring of %1 N/µm at the chuck face, the %2 end of "
+                        "the published range %3–%4 N/µm (%5); no tilt of the chuck. A test-bar fit (Valiño et al. "
+                        "2008 §III) replaces it.")
+                        .arg(perMicrometre(in.chuck.stiffness_N_per_mm), endName(options.stiffnessEnd),
+                             perMicrometre(range->compliant_N_per_mm.value), perMicrometre(range->stiff_N_per_mm.value),
+                             data.sourceText(range->compliant_N_per_mm.source).section(QLatin1Char(','), 0, 1));
+    } else {
+        in.chuck.basis = SupportBasis::RigidNoData;
+        in.radialLeft = in.tangentialLeft = EndSupport::clamped();
+        in.notes << DeviationModel::tr(
+            "Spindle–chuck neither measured nor in the data: taken as rigid, which is optimistic. Measure k1, k2, k3 "
+            "(Valiño et al. 2008 §III).");
+    }
+}
+
+// A centre or the tailstock: a value tried by the caller, the measured stiffness, the end of a
+// published range, or (none found, docs/model.md §2) a rigid pin, which the notes say.
+EndSupport resolveCentre(const std::optional<SupportStiffness> &measured, const std::optional<StiffnessRange> &range,
+                         const DeviationOptions &options, SupportStiffnessUsed &used, bool radial, const QString &name,
+                         QStringList &notes)
+{
+    used.range = range;
+    if (options.tailstockStiffness_N_per_mm) {
+        used.basis = SupportBasis::Given;
+        used.stiffness_N_per_mm = *options.tailstockStiffness_N_per_mm;
+        return EndSupport::translationSpring(used.stiffness_N_per_mm);
+    }
+    if (measured) {
+        used.basis = SupportBasis::Measured;
+        return EndSupport::translationSpring(radial ? measured->radial_N_per_mm : measured->tangential_N_per_mm);
+    }
+    if (range) {
+        used.basis = SupportBasis::RangeEnd;
+        used.stiffness_N_per_mm = rangeEnd(*range, options.stiffnessEnd);
+        return EndSupport::translationSpring(used.stiffness_N_per_mm);
+    }
+    used.basis = SupportBasis::RigidNoData;
+    if (radial)
+        notes << DeviationModel::tr(
+                     "%1 not measured and no published stiffness found: taken as a rigid pin, which is optimistic. "
+                     "The verdicts give the stiffness each tolerance needs of it.")
+                     .arg(name);
+    return EndSupport::pinned();
+}
+
+void resolveSupports(const Project &p, const DataLibrary &data, const DeviationOptions &options, TurningInputs &in)
+{
+    const MachineCharacterisation &c = p.characterisation;
+    const ClampingMethod method = p.clamping.method;
+    const bool chuck = method != ClampingMethod::BetweenCentres;
+    in.supportStart_mm = chuck ? p.clamping.clampedLength_mm : 0.0;
+    in.supportEnd_mm = p.part.length_mm();
+    if (options.workpieceOnly) {
+        in.radialLeft = in.tangentialLeft = chuck ? EndSupport::clamped() : EndSupport::pinned();
+        in.radialRight = in.tangentialRight =
+            method == ClampingMethod::Chuck ? EndSupport::free() : EndSupport::pinned();
+        in.notes << DeviationModel::tr("Workpiece only: machine supports rigid, no toolpost or thermal term.");
+        return;
+    }
+    const UncharacterisedSupports &ranges = data.uncharacterisedSupports();
+    if (chuck) {
+        resolveChuck(p, data, options, in);
+    } else {
+        // The headstock centre; what the verdicts report is the tailstock's basis (both centres
+        // take a value tried by the caller).
+        const QString name = DeviationModel::tr("Headstock centre");
+        SupportStiffnessUsed used;
+        in.radialLeft = resolveCentre(c.centres, ranges.centreRadial, options, used, true, name, in.notes);
+        in.tangentialLeft = resolveCentre(c.centres, ranges.centreRadial, options, used, false, name, in.notes);
+    }
+    if (method == ClampingMethod::Chuck) {
+        in.radialRight = in.tangentialRight = EndSupport::free();
+    } else {
+        const QString name = DeviationModel::tr("Tailstock");
+        SupportStiffnessUsed tangential;
+        in.radialRight =
+            resolveCentre(c.tailstock, ranges.tailstockRadial, options, in.tailstock, true, name, in.notes);
+        in.tangentialRight =
+            resolveCentre(c.tailstock, ranges.tailstockRadial, options, tangential, false, name, in.notes);
+    }
+}
+
+std::optional<double> machineLimit(const MachineData *m, const char *key)
+{
+    if (m == nullptr)
+        return std::nullopt;
+    const auto it = m->limits.find(QLatin1String(key));
+    if (it == m->limits.end())
+        return std::nullopt;
+    return it->second.value;
+}
+
+// The ids of a data library's entries, for the message naming an unknown one.
+template <typename Entries>
+QString libraryIds(const Entries &entries)
+{
+    QStringList ids;
+    for (const auto &entry : entries)
+        ids << entry.id;
+    return ids.join(QStringLiteral(", "));
+}
+
+bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &in, Diagnostics &out,
+                     const MaterialData *&material)
+{
+    material = data.material(p.materialId);
+    if (material == nullptr) {
+        out.push_back(makeError(QStringLiteral("material"),
+                                DeviationModel::tr("unknown material \"%1\"; the data library has: %2")
+                                    .arg(p.materialId, libraryIds(data.materials()))));
+        return false;
+    }
+    if (!material->poissonRatio) {
+        out.push_back(makeError(
+            QStringLiteral("material"),
+            DeviationModel::tr("material \"%1\" has no Poisson's ratio in the data, which the shear deflection "
+                               "needs")
+                .arg(material->id)));
+        return false;
+    }
+    in.material = {material->youngsModulus_MPa.value, material->poissonRatio->value, true};
+    in.materialName = material->name;
+    return true;
+}
+
+} // namespace
+
+std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+    if (!insert.insert) {
+        out.insert(out.end(), insert.diagnostics.begin(), insert.diagnostics.end());
+        return std::nullopt;
+    }
+    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    if (!angle) {
+        out.push_back(makeError(
+            QStringLiteral("tool.holder"),
+            DeviationModel::tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
+                               "character) gives no known entering angle")
+                .arg(p.tool.holderCode)));
+        return std::nullopt;
+    }
+    const HolderData *holder = data.holder(p.tool.holderCode);
+    const bool negative = insert.insert->clearanceAngle_deg == 0.0;
+    const auto rake =
+        seatAngle(p.tool.rake_deg, holder ? holder->rake_deg : std::nullopt, data.negativeSeatRake(), negative);
+    const auto inclination = seatAngle(p.tool.inclination_deg, holder ? holder->inclination_deg : std::nullopt,
+                                       data.negativeSeatInclination(), negative);
+    if (!rake || !inclination) {
+        out.push_back(makeError(
+            QStringLiteral("tool.rake_deg"),
+            DeviationModel::tr("the Li & Du model needs the rake and inclination angles of the tool; the data "
+                               "give none for holder \"%1\" with insert \"%2\": set tool.rake_deg and "
+                               "tool.inclination_deg")
+                .arg(p.tool.holderCode, p.tool.insertCode)));
+        return std::nullopt;
+    }
+    LiDuToolGeometry tool;
+    tool.normalRake_rad = radians(*rake);
+    tool.backRake_rad = radians(*inclination); // back rake taken as the ISO inclination angle
+    tool.leadAngle_rad = radians(90.0 - angle->value);
+    tool.noseRadius_mm = insert.insert->noseRadius_mm;
+    return tool;
+}
+
+std::optional<ForceFunction> projectForceModel(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    const MaterialData *material = data.material(p.materialId);
+    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    if (material == nullptr || !angle) {
+        out.push_back(makeError(material == nullptr ? QStringLiteral("material") : QStringLiteral("tool.holder"),
+                                DeviationModel::tr("the force model needs a known material and holder")));
+        return std::nullopt;
+    }
+    if (p.cuttingModel.forceModel == ForceModel::Kienzle) {
+        QStringList notes;
+        const KienzleConstants k = kienzleOf(*material, p.cuttingModel, data, notes);
+        const double kappa = radians(angle->value);
+        const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+        const double noseRadius = insert.insert ? insert.insert->noseRadius_mm : 0.0;
+        return ForceFunction([k, kappa, noseRadius](double feed, double depth) {
+            return kienzleForces(k, feed, depth, kappa, noseRadius).forces;
+        });
+    }
+    const auto tool = resolveLiDuToolGeometry(p, data, out);
+    if (!tool)
+        return std::nullopt;
+    const LiDuCoefficients c{p.cuttingModel.normalPressure_MPa.value_or(0.0),
+                             p.cuttingModel.frictionRatio.value_or(0.0)};
+    const LiDuToolGeometry g = *tool;
+    return ForceFunction([c, g](double feed, double depth) { return liDuForces(c, g, feed, depth).forces; });
+}
+
+InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
+{
+    InputsResult result;
+    Diagnostics &out = result.diagnostics;
+    TurningInputs in;
+    const MaterialData *material = nullptr;
+    if (!resolveMaterial(p, data, in, out, material))
+        return result;
+
+    in.passIndex = choosePass(p, options.passIndex);
+    if (in.passIndex < 0 || in.passIndex >= static_cast<int>(p.passes.size())) {
+        out.push_back(makeError(QStringLiteral("passes"),
+                                p.passes.empty()
+                                    ? DeviationModel::tr("there is no cutting pass; the deviation is that of the pass "
+                                                         "that finishes the features")
+                                    : DeviationModel::tr("there is no pass %1").arg(in.passIndex)));
+        return result;
+    }
+    in.pass = p.passes[static_cast<std::size_t>(in.passIndex)];
+
+    const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+    if (!insert.insert) {
+        out.insert(out.end(), insert.diagnostics.begin(), insert.diagnostics.end());
+        return result;
+    }
+    in.noseRadius_mm = insert.insert->noseRadius_mm;
+    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    if (!angle) {
+        out.push_back(makeError(
+            QStringLiteral("tool.holder"),
+            DeviationModel::tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
+                               "character) gives no known entering angle")
+                .arg(p.tool.holderCode)));
+        return result;
+    }
+    in.enteringAngle_deg = angle->value;
+
+    const MachineData *machine = data.machine(p.machineId);
+    if (machine == nullptr) {
+        out.push_back(
+            makeError(QStringLiteral("machine"), DeviationModel::tr("unknown machine \"%1\"; the data library has: %2")
+                                                     .arg(p.machineId, libraryIds(data.machines()))));
+        return result;
+    }
+    in.maxSpindleSpeed_rpm = machineLimit(machine, "max_speed_rpm");
+    in.maxPower_kW = machineLimit(machine, "power_kW");
+
+    resolveForces(p, data, options, *material, in, out);
+    if (hasErrors(out))
+        return result;
+    resolveSupports(p, data, options, in);
+    if (!supportsHoldBeam(in.radialLeft, in.radialRight, in.supportEnd_mm - in.supportStart_mm) ||
+        !supportsHoldBeam(in.tangentialLeft, in.tangentialRight, in.supportEnd_mm - in.supportStart_mm)) {
+        out.push_back(makeError(QStringLiteral("clamping"),
+                                DeviationModel::tr("the %1 clamping with these supports leaves the part free to move")
+                                    .arg(displayName(p.clamping.method))));
+        return result;
+    }
+    if (!options.workpieceOnly) {
+        in.toolpostCompliance_mm_per_N = toolpostCompliance(p, data, in.notes);
+        in.thermal = p.characterisation.thermal;
+        if (!in.thermal)
+            in.notes << DeviationModel::tr("Thermal drift not characterised for this machine: taken as zero.");
+    }
+    in.timeSinceStart_min = p.environment.timeSinceStart_min.value_or(0.0);
+    in.ambientTemperature_C = p.environment.ambientTemperature_C.value_or(20.0);
+    result.inputs = in;
+    return result;
+}
+
+} // namespace tolturn
