@@ -384,19 +384,19 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>Machine: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Maschine: %1</translation>
     </message>
     <message>
         <source>at the compliant end: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>am nachgiebigen Ende: %1</translation>
     </message>
     <message>
         <source>chuck stiffness needed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nötige Futtersteifigkeit: %1</translation>
     </message>
     <message>
         <source>tailstock stiffness needed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nötige Reitstocksteifigkeit: %1</translation>
     </message>
 </context>
 <context>
@@ -481,7 +481,7 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>a stiffness range needs 0 &lt; compliant &lt;= stiff, not %1 and %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Steifigkeitsbereich braucht 0 &lt; nachgiebig &lt;= steif, nicht %1 und %2</translation>
     </message>
 </context>
 <context>
@@ -552,31 +552,31 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>compliant</source>
-        <translation type="unfinished"></translation>
+        <translation>nachgiebige</translation>
     </message>
     <message>
         <source>stiff</source>
-        <translation type="unfinished"></translation>
+        <translation>steife</translation>
     </message>
     <message>
         <source>Spindle–chuck not measured: a radial spring of %1 N/µm at the chuck face, the %2 end of the published range %3–%4 N/µm (%5); no tilt of the chuck. A test-bar fit (Valiño et al. 2008 §III) replaces it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Spindel–Futter nicht gemessen: eine radiale Feder von %1 N/µm an der Futterstirn, das %2 Ende des veröffentlichten Bereichs %3–%4 N/µm (%5); ohne Kippen des Futters. Eine Anpassung an einen Prüfstab (Valiño et al. 2008 §III) ersetzt sie.</translation>
     </message>
     <message>
         <source>Spindle–chuck neither measured nor in the data: taken as rigid, which is optimistic. Measure k1, k2, k3 (Valiño et al. 2008 §III).</source>
-        <translation type="unfinished"></translation>
+        <translation>Spindel–Futter weder gemessen noch in den Daten: als starr angenommen, was optimistisch ist. Messen Sie k1, k2, k3 (Valiño et al. 2008 §III).</translation>
     </message>
     <message>
         <source>%1 not measured and no published stiffness found: taken as a rigid pin, which is optimistic. The verdicts give the stiffness each tolerance needs of it.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nicht gemessen und keine veröffentlichte Steifigkeit gefunden: als starres Lager angenommen, was optimistisch ist. Die Bewertungen nennen die Steifigkeit, die jede Toleranz von ihm braucht.</translation>
     </message>
     <message>
         <source>Headstock centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Spindelstockspitze</translation>
     </message>
     <message>
         <source>Tailstock</source>
-        <translation type="unfinished">Reitstock</translation>
+        <translation>Reitstock</translation>
     </message>
 </context>
 <context>
@@ -1030,6 +1030,49 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>No spindle torque limit given (planning.max_torque_Nm): torque is not constrained.</source>
         <translation>Keine Drehmomentgrenze der Spindel angegeben (planning.max_torque_Nm): das Drehmoment ist nicht begrenzt.</translation>
+    </message>
+    <message>
+        <source>No spindle power limit known (machine data or planning.max_power_kW): power is not constrained.</source>
+        <translation>Keine Grenze der Spindelleistung bekannt (Maschinendaten oder planning.max_power_kW): die Leistung ist nicht begrenzt.</translation>
+    </message>
+    <message>
+        <source>No spindle speed limit known (machine data or planning.max_spindle_speed_rpm): spindle speed is not constrained.</source>
+        <translation>Keine Drehzahlgrenze bekannt (Maschinendaten oder planning.max_spindle_speed_rpm): die Drehzahl ist nicht begrenzt.</translation>
+    </message>
+</context>
+<context>
+    <name>Plausibility</name>
+    <message>
+        <source>unknown material &quot;%1&quot;; the data library has: %2</source>
+        <translation>unbekannter Werkstoff „%1“; die Datenbibliothek enthält: %2</translation>
+    </message>
+    <message>
+        <source>unknown machine &quot;%1&quot;; the data library has: %2</source>
+        <translation>unbekannte Maschine „%1“; die Datenbibliothek enthält: %2</translation>
+    </message>
+    <message>
+        <source>holder &quot;%1&quot; is not in the data library and its ISO 5608 style letter (third character) gives no known entering angle</source>
+        <translation>Halter „%1“ ist nicht in der Datenbibliothek, und sein ISO-5608-Formbuchstabe (drittes Zeichen) ergibt keinen bekannten Einstellwinkel</translation>
+    </message>
+    <message>
+        <source>holder &quot;%1&quot; is not in the data library: its entering angle comes from its ISO 5608 style letter, and its shank is not in the toolpost term</source>
+        <translation>Halter „%1“ ist nicht in der Datenbibliothek: sein Einstellwinkel stammt aus dem ISO-5608-Formbuchstaben, und sein Schaft fehlt im Werkzeughalterterm</translation>
+    </message>
+    <message>
+        <source>%1 %2 is outside the insert&apos;s published range %3–%4 %2 (%5)</source>
+        <translation>%1 %2 liegt außerhalb des veröffentlichten Bereichs der Wendeschneidplatte %3–%4 %2 (%5)</translation>
+    </message>
+    <message>
+        <source>no source given</source>
+        <translation>keine Quelle angegeben</translation>
+    </message>
+    <message>
+        <source>%1 m/min on Ø%2 mm needs %3 rpm, more than the machine&apos;s %4 rpm: the spindle speed limit lowers the cutting speed there</source>
+        <translation>%1 m/min auf Ø%2 mm braucht %3 1/min, mehr als die %4 1/min der Maschine: die Drehzahlgrenze senkt dort die Schnittgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>the pass needs %1 kW of cutting power, more than the machine&apos;s %2 kW</source>
+        <translation>der Schnitt braucht %1 kW Schnittleistung, mehr als die %2 kW der Maschine</translation>
     </message>
 </context>
 <context>
@@ -1612,51 +1655,51 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <name>RangeVerdicts</name>
     <message>
         <source>≥ %1 N/µm</source>
-        <translation type="unfinished"></translation>
+        <translation>≥ %1 N/µm</translation>
     </message>
     <message>
         <source>any</source>
-        <translation type="unfinished"></translation>
+        <translation>beliebig</translation>
     </message>
     <message>
         <source>not reachable</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht erreichbar</translation>
     </message>
     <message>
         <source>passes on any machine in the range</source>
-        <translation type="unfinished"></translation>
+        <translation>erfüllt auf jeder Maschine des Bereichs</translation>
     </message>
     <message>
         <source>passes only if the machine is stiffer than %1 N/µm</source>
-        <translation type="unfinished"></translation>
+        <translation>erfüllt nur, wenn die Maschine steifer als %1 N/µm ist</translation>
     </message>
     <message>
         <source>passes only on the stiffer machines of the range</source>
-        <translation type="unfinished"></translation>
+        <translation>erfüllt nur auf den steiferen Maschinen des Bereichs</translation>
     </message>
     <message>
         <source>fails even on the stiffest machine of the range</source>
-        <translation type="unfinished"></translation>
+        <translation>verfehlt sogar auf der steifsten Maschine des Bereichs</translation>
     </message>
     <message>
         <source>chuck not measured: radial stiffness %1–%2 N/µm at the chuck face (%3), results at both ends, verdicts and plans at the compliant end</source>
-        <translation type="unfinished"></translation>
+        <translation>Futter nicht gemessen: radiale Steifigkeit %1–%2 N/µm an der Futterstirn (%3), Ergebnisse an beiden Enden, Bewertungen und Pläne am nachgiebigen Ende</translation>
     </message>
     <message>
         <source>spindle–chuck as measured</source>
-        <translation type="unfinished"></translation>
+        <translation>Spindel–Futter wie gemessen</translation>
     </message>
     <message>
         <source>chuck neither measured nor published: taken as rigid (optimistic)</source>
-        <translation type="unfinished"></translation>
+        <translation>Futter weder gemessen noch veröffentlicht: als starr angenommen (optimistisch)</translation>
     </message>
     <message>
         <source>tailstock and centres not measured and no published stiffness: taken as rigid (optimistic); see the stiffness each tolerance needs</source>
-        <translation type="unfinished"></translation>
+        <translation>Reitstock und Spitzen nicht gemessen und keine veröffentlichte Steifigkeit: als starr angenommen (optimistisch); siehe die Steifigkeit, die jede Toleranz braucht</translation>
     </message>
     <message>
         <source>tailstock and centres as measured</source>
-        <translation type="unfinished"></translation>
+        <translation>Reitstock und Spitzen wie gemessen</translation>
     </message>
 </context>
 <context>
@@ -1924,6 +1967,34 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
         <translation>„%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Machine: %1.</source>
+        <translation>Maschine: %1.</translation>
+    </message>
+    <message>
+        <source>Verdicts</source>
+        <translation>Bewertungen</translation>
+    </message>
+    <message>
+        <source>On the machine range</source>
+        <translation>Über den Maschinenbereich</translation>
+    </message>
+    <message>
+        <source>Stiffness needed</source>
+        <translation>Nötige Steifigkeit</translation>
+    </message>
+    <message>
+        <source>Error: </source>
+        <translation>Fehler: </translation>
+    </message>
+    <message>
+        <source>Warning: </source>
+        <translation>Warnung: </translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
     </message>
 </context>
 <context>
@@ -2316,19 +2387,19 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>ISO 1101 surface profile, no datum (the zone floats): max delta_n - min delta_n &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 Flächenform, ohne Bezug (die Zone schwimmt): max delta_n - min delta_n &lt;= t</translation>
     </message>
     <message>
         <source>ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 Flächenform, mit Bezügen (die Zone liegt fest): jedes delta_n innerhalb ±t/2</translation>
     </message>
     <message>
         <source>ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as programmed; their spread fits in t</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 Flächenform, mit Bezügen: ein delta_n liegt wie programmiert außerhalb ±t/2; ihre Streuung passt in t</translation>
     </message>
     <message>
         <source>ISO 1101 surface profile, with datums: the spread of delta_n exceeds t</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 Flächenform, mit Bezügen: die Streuung von delta_n überschreitet t</translation>
     </message>
 </context>
 <context>
@@ -2520,11 +2591,11 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>%1, compliant end of the machine range</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, nachgiebiges Ende des Maschinenbereichs</translation>
     </message>
     <message>
         <source>%1 over the machine&apos;s stiffness range</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 über den Steifigkeitsbereich der Maschine</translation>
     </message>
 </context>
 <context>
@@ -3538,6 +3609,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits the optimiser works with</source>
         <translation>Kostensätze, Standzeit, Schnittbereiche der Platte und Grenzwerte des Teils, mit denen die Optimierung rechnet</translation>
     </message>
+    <message>
+        <source>%1: no limit known</source>
+        <translation>%1: keine Grenze bekannt</translation>
+    </message>
+    <message>
+        <source>No %1 limit is known for this machine and project: it is not checked. Enter one in Planning Data….</source>
+        <translation>Für diese Maschine und dieses Projekt ist keine Grenze für %1 bekannt: sie wird nicht geprüft. Geben Sie eine unter Planungsdaten… ein.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -4033,7 +4112,7 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>&lt;b&gt;Machine:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Maschine:&lt;/b&gt; %1</translation>
     </message>
 </context>
 <context>
@@ -4080,23 +4159,23 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>chuck %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Futter %1</translation>
     </message>
     <message>
         <source>tailstock %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Reitstock %1</translation>
     </message>
     <message>
         <source>The smallest radial stiffness of the chuck (at its face) and of the tailstock (or of both centres) with which this tolerance passes as programmed at the planned conditions, the other supports as assumed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die kleinste radiale Steifigkeit des Futters (an seiner Stirn) und des Reitstocks (oder beider Spitzen), mit der diese Toleranz bei den geplanten Bedingungen wie programmiert erfüllt wird, die übrigen Lager wie angenommen.</translation>
     </message>
     <message>
         <source>On the machine range</source>
-        <translation type="unfinished"></translation>
+        <translation>Über den Maschinenbereich</translation>
     </message>
     <message>
         <source>Stiffness needed</source>
-        <translation type="unfinished"></translation>
+        <translation>Nötige Steifigkeit</translation>
     </message>
 </context>
 </TS>

@@ -384,19 +384,19 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>Machine: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Máquina: %1</translation>
     </message>
     <message>
         <source>at the compliant end: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>en el extremo flexible: %1</translation>
     </message>
     <message>
         <source>chuck stiffness needed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidez necesaria del plato: %1</translation>
     </message>
     <message>
         <source>tailstock stiffness needed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidez necesaria del contrapunto: %1</translation>
     </message>
 </context>
 <context>
@@ -481,7 +481,7 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>a stiffness range needs 0 &lt; compliant &lt;= stiff, not %1 and %2</source>
-        <translation type="unfinished"></translation>
+        <translation>un rango de rigidez necesita 0 &lt; flexible &lt;= rígido, no %1 y %2</translation>
     </message>
 </context>
 <context>
@@ -552,31 +552,31 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>compliant</source>
-        <translation type="unfinished"></translation>
+        <translation>flexible</translation>
     </message>
     <message>
         <source>stiff</source>
-        <translation type="unfinished"></translation>
+        <translation>rígido</translation>
     </message>
     <message>
         <source>Spindle–chuck not measured: a radial spring of %1 N/µm at the chuck face, the %2 end of the published range %3–%4 N/µm (%5); no tilt of the chuck. A test-bar fit (Valiño et al. 2008 §III) replaces it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Husillo–plato no medido: un muelle radial de %1 N/µm en la cara del plato, el extremo %2 del rango publicado %3–%4 N/µm (%5); sin giro del plato. Un ajuste a una barra de prueba (Valiño et al. 2008 §III) lo sustituye.</translation>
     </message>
     <message>
         <source>Spindle–chuck neither measured nor in the data: taken as rigid, which is optimistic. Measure k1, k2, k3 (Valiño et al. 2008 §III).</source>
-        <translation type="unfinished"></translation>
+        <translation>Husillo–plato ni medido ni en los datos: se toma como rígido, lo que es optimista. Mida k1, k2, k3 (Valiño et al. 2008 §III).</translation>
     </message>
     <message>
         <source>%1 not measured and no published stiffness found: taken as a rigid pin, which is optimistic. The verdicts give the stiffness each tolerance needs of it.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no medido y sin rigidez publicada: se toma como un apoyo rígido, lo que es optimista. Los veredictos dan la rigidez que cada tolerancia necesita de él.</translation>
     </message>
     <message>
         <source>Headstock centre</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto del cabezal</translation>
     </message>
     <message>
         <source>Tailstock</source>
-        <translation type="unfinished">Contrapunto</translation>
+        <translation>Contrapunto</translation>
     </message>
 </context>
 <context>
@@ -1030,6 +1030,49 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>No spindle torque limit given (planning.max_torque_Nm): torque is not constrained.</source>
         <translation>No se ha indicado ningún límite de par del husillo (planning.max_torque_Nm): el par no está restringido.</translation>
+    </message>
+    <message>
+        <source>No spindle power limit known (machine data or planning.max_power_kW): power is not constrained.</source>
+        <translation>No se conoce límite de potencia del husillo (datos de la máquina o planning.max_power_kW): la potencia no está restringida.</translation>
+    </message>
+    <message>
+        <source>No spindle speed limit known (machine data or planning.max_spindle_speed_rpm): spindle speed is not constrained.</source>
+        <translation>No se conoce límite de velocidad del husillo (datos de la máquina o planning.max_spindle_speed_rpm): la velocidad no está restringida.</translation>
+    </message>
+</context>
+<context>
+    <name>Plausibility</name>
+    <message>
+        <source>unknown material &quot;%1&quot;; the data library has: %2</source>
+        <translation>material desconocido «%1»; la biblioteca de datos tiene: %2</translation>
+    </message>
+    <message>
+        <source>unknown machine &quot;%1&quot;; the data library has: %2</source>
+        <translation>máquina desconocida «%1»; la biblioteca de datos tiene: %2</translation>
+    </message>
+    <message>
+        <source>holder &quot;%1&quot; is not in the data library and its ISO 5608 style letter (third character) gives no known entering angle</source>
+        <translation>el portaherramientas «%1» no está en la biblioteca de datos y su letra de forma ISO 5608 (tercer carácter) no da ningún ángulo de posición conocido</translation>
+    </message>
+    <message>
+        <source>holder &quot;%1&quot; is not in the data library: its entering angle comes from its ISO 5608 style letter, and its shank is not in the toolpost term</source>
+        <translation>el portaherramientas «%1» no está en la biblioteca de datos: su ángulo de posición sale de su letra de forma ISO 5608 y su mango no entra en el término de la torreta</translation>
+    </message>
+    <message>
+        <source>%1 %2 is outside the insert&apos;s published range %3–%4 %2 (%5)</source>
+        <translation>%1 %2 está fuera del rango publicado de la plaquita %3–%4 %2 (%5)</translation>
+    </message>
+    <message>
+        <source>no source given</source>
+        <translation>sin fuente</translation>
+    </message>
+    <message>
+        <source>%1 m/min on Ø%2 mm needs %3 rpm, more than the machine&apos;s %4 rpm: the spindle speed limit lowers the cutting speed there</source>
+        <translation>%1 m/min en Ø%2 mm necesita %3 rpm, más que las %4 rpm de la máquina: el límite de velocidad reduce allí la velocidad de corte</translation>
+    </message>
+    <message>
+        <source>the pass needs %1 kW of cutting power, more than the machine&apos;s %2 kW</source>
+        <translation>la pasada necesita %1 kW de potencia de corte, más que los %2 kW de la máquina</translation>
     </message>
 </context>
 <context>
@@ -1612,51 +1655,51 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <name>RangeVerdicts</name>
     <message>
         <source>≥ %1 N/µm</source>
-        <translation type="unfinished"></translation>
+        <translation>≥ %1 N/µm</translation>
     </message>
     <message>
         <source>any</source>
-        <translation type="unfinished"></translation>
+        <translation>cualquiera</translation>
     </message>
     <message>
         <source>not reachable</source>
-        <translation type="unfinished"></translation>
+        <translation>inalcanzable</translation>
     </message>
     <message>
         <source>passes on any machine in the range</source>
-        <translation type="unfinished"></translation>
+        <translation>cumple en cualquier máquina del rango</translation>
     </message>
     <message>
         <source>passes only if the machine is stiffer than %1 N/µm</source>
-        <translation type="unfinished"></translation>
+        <translation>cumple solo si la máquina es más rígida que %1 N/µm</translation>
     </message>
     <message>
         <source>passes only on the stiffer machines of the range</source>
-        <translation type="unfinished"></translation>
+        <translation>cumple solo en las máquinas más rígidas del rango</translation>
     </message>
     <message>
         <source>fails even on the stiffest machine of the range</source>
-        <translation type="unfinished"></translation>
+        <translation>no cumple ni en la máquina más rígida del rango</translation>
     </message>
     <message>
         <source>chuck not measured: radial stiffness %1–%2 N/µm at the chuck face (%3), results at both ends, verdicts and plans at the compliant end</source>
-        <translation type="unfinished"></translation>
+        <translation>plato no medido: rigidez radial %1–%2 N/µm en la cara del plato (%3), resultados en ambos extremos, veredictos y planes en el extremo flexible</translation>
     </message>
     <message>
         <source>spindle–chuck as measured</source>
-        <translation type="unfinished"></translation>
+        <translation>husillo–plato según lo medido</translation>
     </message>
     <message>
         <source>chuck neither measured nor published: taken as rigid (optimistic)</source>
-        <translation type="unfinished"></translation>
+        <translation>plato ni medido ni publicado: se toma como rígido (optimista)</translation>
     </message>
     <message>
         <source>tailstock and centres not measured and no published stiffness: taken as rigid (optimistic); see the stiffness each tolerance needs</source>
-        <translation type="unfinished"></translation>
+        <translation>contrapunto y puntos no medidos y sin rigidez publicada: se toman como rígidos (optimista); vea la rigidez que necesita cada tolerancia</translation>
     </message>
     <message>
         <source>tailstock and centres as measured</source>
-        <translation type="unfinished"></translation>
+        <translation>contrapunto y puntos según lo medido</translation>
     </message>
 </context>
 <context>
@@ -1924,6 +1967,34 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
         <translation>no se puede escribir &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>Machine: %1.</source>
+        <translation>Máquina: %1.</translation>
+    </message>
+    <message>
+        <source>Verdicts</source>
+        <translation>Veredictos</translation>
+    </message>
+    <message>
+        <source>On the machine range</source>
+        <translation>En el rango de máquinas</translation>
+    </message>
+    <message>
+        <source>Stiffness needed</source>
+        <translation>Rigidez necesaria</translation>
+    </message>
+    <message>
+        <source>Error: </source>
+        <translation>Error: </translation>
+    </message>
+    <message>
+        <source>Warning: </source>
+        <translation>Aviso: </translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>total</translation>
     </message>
 </context>
 <context>
@@ -2316,19 +2387,19 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>ISO 1101 surface profile, no datum (the zone floats): max delta_n - min delta_n &lt;= t</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 forma de superficie, sin referencia (la zona flota): max delta_n - min delta_n &lt;= t</translation>
     </message>
     <message>
         <source>ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 forma de superficie, con referencias (la zona está situada): cada delta_n dentro de ±t/2</translation>
     </message>
     <message>
         <source>ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as programmed; their spread fits in t</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 forma de superficie, con referencias: un delta_n queda fuera de ±t/2 tal como está programado; su dispersión cabe en t</translation>
     </message>
     <message>
         <source>ISO 1101 surface profile, with datums: the spread of delta_n exceeds t</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 1101 forma de superficie, con referencias: la dispersión de delta_n supera t</translation>
     </message>
 </context>
 <context>
@@ -2520,11 +2591,11 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>%1, compliant end of the machine range</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, extremo flexible del rango de máquinas</translation>
     </message>
     <message>
         <source>%1 over the machine&apos;s stiffness range</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 en el rango de rigidez de la máquina</translation>
     </message>
 </context>
 <context>
@@ -3538,6 +3609,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits the optimiser works with</source>
         <translation>Tarifas, vida de herramienta, rangos de corte de la plaquita y límites de la pieza con los que trabaja el optimizador</translation>
     </message>
+    <message>
+        <source>%1: no limit known</source>
+        <translation>%1: sin límite conocido</translation>
+    </message>
+    <message>
+        <source>No %1 limit is known for this machine and project: it is not checked. Enter one in Planning Data….</source>
+        <translation>No se conoce ningún límite de %1 para esta máquina y proyecto: no se comprueba. Introduzca uno en Datos de planificación….</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -4033,7 +4112,7 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>&lt;b&gt;Machine:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Máquina:&lt;/b&gt; %1</translation>
     </message>
 </context>
 <context>
@@ -4080,23 +4159,23 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>chuck %1</source>
-        <translation type="unfinished"></translation>
+        <translation>plato %1</translation>
     </message>
     <message>
         <source>tailstock %1</source>
-        <translation type="unfinished"></translation>
+        <translation>contrapunto %1</translation>
     </message>
     <message>
         <source>The smallest radial stiffness of the chuck (at its face) and of the tailstock (or of both centres) with which this tolerance passes as programmed at the planned conditions, the other supports as assumed.</source>
-        <translation type="unfinished"></translation>
+        <translation>La menor rigidez radial del plato (en su cara) y del contrapunto (o de ambos puntos) con la que esta tolerancia cumple tal como está programada en las condiciones planificadas, con los demás apoyos según lo supuesto.</translation>
     </message>
     <message>
         <source>On the machine range</source>
-        <translation type="unfinished"></translation>
+        <translation>En el rango de máquinas</translation>
     </message>
     <message>
         <source>Stiffness needed</source>
-        <translation type="unfinished"></translation>
+        <translation>Rigidez necesaria</translation>
     </message>
 </context>
 </TS>
