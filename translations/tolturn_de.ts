@@ -398,6 +398,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>tailstock stiffness needed: %1</source>
         <translation>nötige Reitstocksteifigkeit: %1</translation>
     </message>
+    <message>
+        <source>Plan for the compliant (default) or the stiff end of an unmeasured machine&apos;s stiffness range.</source>
+        <translation>Für das nachgiebige (Vorgabe) oder das steife Ende des Steifigkeitsbereichs einer nicht gemessenen Maschine planen.</translation>
+    </message>
+    <message>
+        <source>--machine-end is compliant or stiff, not &quot;%1&quot;</source>
+        <translation>--machine-end ist compliant oder stiff, nicht „%1“</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

@@ -398,6 +398,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>tailstock stiffness needed: %1</source>
         <translation>rigidez necesaria del contrapunto: %1</translation>
     </message>
+    <message>
+        <source>Plan for the compliant (default) or the stiff end of an unmeasured machine&apos;s stiffness range.</source>
+        <translation>Planificar para el extremo flexible (por defecto) o el rígido del rango de rigidez de una máquina no medida.</translation>
+    </message>
+    <message>
+        <source>--machine-end is compliant or stiff, not &quot;%1&quot;</source>
+        <translation>--machine-end es compliant o stiff, no «%1»</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

@@ -798,7 +798,12 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption write(
         QStringLiteral("write"),
         CommandLine::tr("Store the optimal passes in the project (replacing its passes) and save it."));
-    parser.addOptions({json, objective, write});
+    const QCommandLineOption machineEnd(
+        QStringLiteral("machine-end"),
+        CommandLine::tr(
+            "Plan for the compliant (default) or the stiff end of an unmeasured machine's stiffness range."),
+        QStringLiteral("END"));
+    parser.addOptions({json, objective, write, machineEnd});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("optimize")), args, out, err); stop >= 0)
@@ -818,7 +823,18 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         }
         project->planning.objective = *chosen;
     }
-    const PlanningProblem::BuildResult built = PlanningProblem::build(*project, DataLibrary::builtIn());
+    StiffnessEnd end = StiffnessEnd::Compliant;
+    if (parser.isSet(machineEnd)) {
+        const QString value = parser.value(machineEnd);
+        if (value != QLatin1String("compliant") && value != QLatin1String("stiff")) {
+            err << programName()
+                << " optimize: " << CommandLine::tr("--machine-end is compliant or stiff, not \"%1\"").arg(value)
+                << '\n';
+            return kExitUsage;
+        }
+        end = value == QLatin1String("stiff") ? StiffnessEnd::Stiff : StiffnessEnd::Compliant;
+    }
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*project, DataLibrary::builtIn(), end);
     for (const Diagnostic &d : built.diagnostics) {
         if (d.severity == Severity::Error)
             err << file << ": " << d.toString() << '\n';
@@ -1057,7 +1073,8 @@ const std::vector<Command> &commands()
              "Every tolerance of the project against the predicted deviation: value, limit, utilisation, the "
              "deciding condition of Valiño et al. Fig. 4, and the verdict."),
          runEvaluate},
-        {QStringLiteral("optimize"), QStringLiteral("optimize [--json] [--objective time|cost] [--write] PROJECT"),
+        {QStringLiteral("optimize"),
+         QStringLiteral("optimize [--json] [--objective time|cost] [--machine-end compliant|stiff] [--write] PROJECT"),
          CommandLine::tr(
              "Cutting conditions of the finishing and roughing passes at least time or cost per part under every "
              "constraint (tolerances, roughness, power, torque, force, spindle speed, tool life)."),

@@ -77,7 +77,7 @@ double CandidateEvaluation::totalViolation() const
     return sum;
 }
 
-PlanningProblem::BuildResult PlanningProblem::build(const Project &project, const DataLibrary &data)
+PlanningProblem::BuildResult PlanningProblem::build(const Project &project, const DataLibrary &data, StiffnessEnd end)
 {
     BuildResult result;
     Diagnostics &out = result.diagnostics;
@@ -91,6 +91,7 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     }
     DeviationOptions options;
     options.stationsPerFeature = kStations;
+    options.stiffnessEnd = end;
     Project withPass = project;
     if (withPass.passes.empty())
         withPass.passes.push_back(

@@ -75,7 +75,11 @@ public:
         Diagnostics diagnostics;
     };
 
-    static BuildResult build(const Project &project, const DataLibrary &data);
+    // On a machine that was not measured the tolerance constraints use the deflection at `end` of
+    // the chuck's published stiffness range: the compliant end, so that the plan holds on any
+    // machine in it, unless told otherwise.
+    static BuildResult build(const Project &project, const DataLibrary &data,
+                             StiffnessEnd end = StiffnessEnd::Compliant);
 
     // `tolerances`, when given, are the tolerance constraints of this finishing feed and depth,
     // computed before (they do not depend on the cutting speed): the window maps reuse them.

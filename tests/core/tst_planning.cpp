@@ -442,6 +442,28 @@ private Q_SLOTS:
         }
     }
 
+    // Planning is for the compliant end of the chuck's range unless told otherwise. On the sleeve in
+    // chuck + tailstock the chuck's translation tilts the part about the tailstock, so its
+    // cylindricity T2 is larger at the compliant end than at the stiff end; between the ends the
+    // difference is that of a rigid tilt, F/K (1 - z/L) over the span, so it shrinks with K.
+    void planningUsesTheCompliantEndUnlessToldOtherwise()
+    {
+        const Project p = example("hollow-sleeve-tailstock.tolturn");
+        const auto compliant = PlanningProblem::build(p, DataLibrary::builtIn()).problem;
+        const auto stiff = PlanningProblem::build(p, DataLibrary::builtIn(), StiffnessEnd::Stiff).problem;
+        QVERIFY(compliant && stiff);
+        const PassConditions pass{220.0, 0.17, 0.5};
+        const auto t2 = [&](const PlanningProblem &problem) {
+            for (const ConstraintValue &c : problem.toleranceConstraints(pass)) {
+                if (c.subject == QLatin1String("T2"))
+                    return c.value;
+            }
+            return -1.0;
+        };
+        QVERIFY2(t2(*compliant) > t2(*stiff) && t2(*stiff) > 0.0,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(t2(*compliant)).arg(t2(*stiff))));
+    }
+
     // The slender pin (Ø30 x 90 mm out of the chuck, cylindricity 4 µm) at the conditions a planner
     // would pick from the insert's catalogue (vc 250, f 0.25, ap 1.5): the pin bends away from the
     // tool by more at its free end than at the shoulder, so its cylindricity fails on any machine of
