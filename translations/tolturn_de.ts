@@ -1785,10 +1785,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Maschinencharakterisierung</translation>
     </message>
     <message>
-        <source>not characterised</source>
-        <translation>nicht charakterisiert</translation>
-    </message>
-    <message>
         <source>3  Predicted deviation</source>
         <translation>3  Vorhergesagte Abweichung</translation>
     </message>
@@ -2003,6 +1999,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>total</source>
         <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>not measured: see the machine assumption on page 1</source>
+        <translation>nicht gemessen: siehe die Maschinenannahme auf Seite 1</translation>
     </message>
 </context>
 <context>
@@ -3838,10 +3838,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>%1 %2</translation>
     </message>
     <message>
-        <source>not characterised: the supports are taken as rigid. Measure k1, k2, k3 (Valiño et al. 2008 §III) and enter them in the project.</source>
-        <translation>nicht charakterisiert: die Abstützungen werden als starr angenommen. Messen Sie k1, k2, k3 (Valiño et al. 2008 §III) und tragen Sie sie im Projekt ein.</translation>
-    </message>
-    <message>
         <source>spindle k1 %1 N/mm, k2 %2 N·mm/rad, k3 %3 N·mm/rad</source>
         <translation>Spindel k1 %1 N/mm, k2 %2 N·mm/rad, k3 %3 N·mm/rad</translation>
     </message>
@@ -3896,6 +3892,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>, radial only</source>
         <translation>, nur radial</translation>
+    </message>
+    <message>
+        <source>not measured: the chuck is the published range of chuck stiffness, results at both ends; tailstock and centres are rigid for want of data (see the banner above the verdicts). Measure k1, k2, k3 (Valiño et al. 2008 §III) below or fit them to a test bar.</source>
+        <translation>nicht gemessen: das Futter ist der veröffentlichte Bereich der Futtersteifigkeit, Ergebnisse an beiden Enden; Reitstock und Spitzen sind mangels Daten starr (siehe das Banner über den Bewertungen). Messen Sie k1, k2, k3 (Valiño et al. 2008 §III) unten oder passen Sie sie an einen Prüfstab an.</translation>
     </message>
 </context>
 <context>

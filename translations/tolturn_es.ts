@@ -1785,10 +1785,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Caracterización de la máquina</translation>
     </message>
     <message>
-        <source>not characterised</source>
-        <translation>no caracterizada</translation>
-    </message>
-    <message>
         <source>3  Predicted deviation</source>
         <translation>3  Desviación prevista</translation>
     </message>
@@ -2003,6 +1999,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>total</source>
         <translation>total</translation>
+    </message>
+    <message>
+        <source>not measured: see the machine assumption on page 1</source>
+        <translation>no medida: vea la hipótesis de máquina en la página 1</translation>
     </message>
 </context>
 <context>
@@ -3838,10 +3838,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>%1 %2</translation>
     </message>
     <message>
-        <source>not characterised: the supports are taken as rigid. Measure k1, k2, k3 (Valiño et al. 2008 §III) and enter them in the project.</source>
-        <translation>no caracterizada: los apoyos se consideran rígidos. Mida k1, k2, k3 (Valiño et al. 2008 §III) e introdúzcalos en el proyecto.</translation>
-    </message>
-    <message>
         <source>spindle k1 %1 N/mm, k2 %2 N·mm/rad, k3 %3 N·mm/rad</source>
         <translation>husillo k1 %1 N/mm, k2 %2 N·mm/rad, k3 %3 N·mm/rad</translation>
     </message>
@@ -3896,6 +3892,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>, radial only</source>
         <translation>, solo radiales</translation>
+    </message>
+    <message>
+        <source>not measured: the chuck is the published range of chuck stiffness, results at both ends; tailstock and centres are rigid for want of data (see the banner above the verdicts). Measure k1, k2, k3 (Valiño et al. 2008 §III) below or fit them to a test bar.</source>
+        <translation>no medida: el plato es el rango publicado de rigidez de platos, resultados en ambos extremos; contrapunto y puntos son rígidos a falta de datos (vea el aviso sobre los veredictos). Mida k1, k2, k3 (Valiño et al. 2008 §III) abajo o ajústelos a una barra de prueba.</translation>
     </message>
 </context>
 <context>

@@ -288,8 +288,10 @@ void inputs(Layout &l, const Project &p, const DeviationResult &d)
                                                     formatNumber(pass.feed_mm_rev), formatNumber(pass.depthOfCut_mm))});
     }
     rows.push_back({Report::tr("Force model"), keyword(p.cuttingModel.forceModel)});
-    rows.push_back({Report::tr("Machine characterisation"),
-                    p.characterisation.source.isEmpty() ? Report::tr("not characterised") : p.characterisation.source});
+    rows.push_back(
+        {Report::tr("Machine characterisation"), p.characterisation.source.isEmpty()
+                                                     ? Report::tr("not measured: see the machine assumption on page 1")
+                                                     : p.characterisation.source});
     l.table(rows, {130, kWidth - 130});
     // Conditions outside the insert's published ranges or the machine's limits (checkPlausibility).
     for (const Diagnostic &x : checkPlausibility(p, data))

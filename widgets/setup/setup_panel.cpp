@@ -313,8 +313,10 @@ void SetupPanel::showMachineStiffness()
 {
     const MachineCharacterisation &c = m_document.project().characterisation;
     if (!c.spindleRadial && !c.tailstock && !c.centres) {
-        m_machineStiffness->setText(tr("not characterised: the supports are taken as rigid. Measure k1, k2, k3 "
-                                       "(Valiño et al. 2008 §III) and enter them in the project."));
+        m_machineStiffness->setText(
+            tr("not measured: the chuck is the published range of chuck stiffness, results at both ends; "
+               "tailstock and centres are rigid for want of data (see the banner above the verdicts). Measure "
+               "k1, k2, k3 (Valiño et al. 2008 §III) below or fit them to a test bar."));
         return;
     }
     QStringList parts;
