@@ -345,6 +345,13 @@ DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceT
     return result;
 }
 
+DeviationResult deviationFor(const PartProfile &part, const TurningInputs &in, const DeviationOptions &options)
+{
+    const double allowance = options.inProcessSection ? in.pass.depthOfCut_mm : 0.0;
+    const InfluenceTable table = buildInfluenceTable(part, in, options.stationsPerFeature, allowance);
+    return evaluateInfluenceTable(part, table, in);
+}
+
 DeviationResult computeDeviation(const Project &project, const DataLibrary &data, const DeviationOptions &options)
 {
     InputsResult resolved = resolveTurningInputs(project, data, options);
@@ -354,9 +361,7 @@ DeviationResult computeDeviation(const Project &project, const DataLibrary &data
         return failed;
     }
     const TurningInputs &in = *resolved.inputs;
-    const double allowance = options.inProcessSection ? in.pass.depthOfCut_mm : 0.0;
-    const InfluenceTable table = buildInfluenceTable(project.part, in, options.stationsPerFeature, allowance);
-    DeviationResult result = evaluateInfluenceTable(project.part, table, in);
+    DeviationResult result = deviationFor(project.part, in, options);
     result.diagnostics = resolved.diagnostics;
     if (in.maxPower_kW && result.maxPower_kW > *in.maxPower_kW)
         result.diagnostics.push_back(

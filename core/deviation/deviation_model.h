@@ -68,6 +68,9 @@ struct DeviationResult {
 
 [[nodiscard]] DeviationResult computeDeviation(const Project &project, const DataLibrary &data,
                                                const DeviationOptions &options = {});
+// What computeDeviation() does once the project is resolved: for callers that vary the inputs.
+[[nodiscard]] DeviationResult deviationFor(const PartProfile &part, const TurningInputs &inputs,
+                                           const DeviationOptions &options = {});
 
 // The influence of unit loads along the turned features, for sweeping many cutting conditions:
 // deviation = F_r c_r + F_a c_a + F_r c_tp (radial), F_t c_t (tangential); linear in the forces.

@@ -394,6 +394,24 @@ std::optional<ForceFunction> projectForceModel(const Project &p, const DataLibra
     return ForceFunction([c, g](double feed, double depth) { return liDuForces(c, g, feed, depth).forces; });
 }
 
+TurningInputs withChuckStiffness(TurningInputs in, double k_N_per_mm)
+{
+    in.chuck.basis = SupportBasis::Given;
+    in.chuck.stiffness_N_per_mm = k_N_per_mm;
+    in.radialLeft = in.tangentialLeft = chuckFamilySupport(k_N_per_mm);
+    return in;
+}
+
+TurningInputs withTailstockStiffness(TurningInputs in, double k_N_per_mm, ClampingMethod method)
+{
+    in.tailstock.basis = SupportBasis::Given;
+    in.tailstock.stiffness_N_per_mm = k_N_per_mm;
+    in.radialRight = in.tangentialRight = EndSupport::translationSpring(k_N_per_mm);
+    if (method == ClampingMethod::BetweenCentres)
+        in.radialLeft = in.tangentialLeft = EndSupport::translationSpring(k_N_per_mm);
+    return in;
+}
+
 InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
 {
     InputsResult result;

@@ -82,6 +82,12 @@ struct InputsResult {
     Diagnostics diagnostics;
 };
 
+// The same inputs with the chuck face held by the family's radial spring K (docs/model.md §2), or
+// the tailstock (between centres: both centres) by a radial spring K: the search for the stiffness
+// a tolerance needs, without resolving the project again.
+[[nodiscard]] TurningInputs withChuckStiffness(TurningInputs inputs, double k_N_per_mm);
+[[nodiscard]] TurningInputs withTailstockStiffness(TurningInputs inputs, double k_N_per_mm, ClampingMethod method);
+
 [[nodiscard]] InputsResult resolveTurningInputs(const Project &project, const DataLibrary &data,
                                                 const DeviationOptions &options);
 

@@ -73,13 +73,10 @@ std::vector<RequiredStiffness> searchRequired(const VerdictsAt &verdictsAt, std:
     return out;
 }
 
-std::vector<ToleranceEvaluation> verdictsWith(const Project &project, const DataLibrary &data,
+std::vector<ToleranceEvaluation> verdictsWith(const Project &project, const TurningInputs &inputs,
                                               const DeviationOptions &options)
 {
-    const DeviationResult d = computeDeviation(project, data, options);
-    if (!d.inputs)
-        return {};
-    return evaluateTolerances(project, d, EvaluationDetail::ValuesOnly);
+    return evaluateTolerances(project, deviationFor(project.part, inputs, options), EvaluationDetail::ValuesOnly);
 }
 
 bool hasRange(const SupportStiffnessUsed &s)
@@ -125,22 +122,14 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
     const std::size_t n = atCompliant.size();
     std::vector<RequiredStiffness> chuck;
     std::vector<RequiredStiffness> tailstock;
-    if (project.clamping.method != ClampingMethod::BetweenCentres && !options.workpieceOnly)
-        chuck = searchRequired(
-            [&](double k) {
-                DeviationOptions o = compliant;
-                o.chuckStiffness_N_per_mm = k;
-                return verdictsWith(project, data, o);
-            },
-            n);
-    if (project.clamping.method != ClampingMethod::Chuck && !options.workpieceOnly)
+    // The project is resolved once; the searches vary only the support they are about.
+    const ClampingMethod method = project.clamping.method;
+    if (method != ClampingMethod::BetweenCentres && !options.workpieceOnly)
+        chuck =
+            searchRequired([&](double k) { return verdictsWith(project, withChuckStiffness(in, k), compliant); }, n);
+    if (method != ClampingMethod::Chuck && !options.workpieceOnly)
         tailstock = searchRequired(
-            [&](double k) {
-                DeviationOptions o = compliant;
-                o.tailstockStiffness_N_per_mm = k;
-                return verdictsWith(project, data, o);
-            },
-            n);
+            [&](double k) { return verdictsWith(project, withTailstockStiffness(in, k, method), compliant); }, n);
     for (std::size_t i = 0; i < n; ++i) {
         ToleranceRangeEvaluation e;
         e.compliant = atCompliant[i];
