@@ -72,6 +72,16 @@ struct HolderData {
     std::optional<SourcedValue> rake_deg, inclination_deg;
 };
 
+// The ids of a data library's entries (materials, machines), for a message naming an unknown one.
+template <typename Entries>
+[[nodiscard]] QString libraryIds(const Entries &entries)
+{
+    QStringList ids;
+    for (const auto &entry : entries)
+        ids << entry.id;
+    return ids.join(QStringLiteral(", "));
+}
+
 // The data shipped with TolTurn. Every number carries the key of its source; sourceText() gives
 // the citation.
 class DataLibrary {

@@ -51,6 +51,19 @@ std::optional<SourcedValue> enteringAngleOf(const QString &holderCode, const Dat
     return std::nullopt;
 }
 
+// The holder's entering angle, or an error naming the holder.
+std::optional<SourcedValue> holderEnteringAngle(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    if (!angle)
+        out.push_back(makeError(
+            QStringLiteral("tool.holder"),
+            DeviationModel::tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
+                               "character) gives no known entering angle")
+                .arg(p.tool.holderCode)));
+    return angle;
+}
+
 KienzleConstants kienzleOf(const MaterialData &m, const CuttingModel &model, const DataLibrary &data,
                            QStringList &notes)
 {
@@ -292,16 +305,6 @@ std::optional<double> machineLimit(const MachineData *m, const char *key)
     return it->second.value;
 }
 
-// The ids of a data library's entries, for the message naming an unknown one.
-template <typename Entries>
-QString libraryIds(const Entries &entries)
-{
-    QStringList ids;
-    for (const auto &entry : entries)
-        ids << entry.id;
-    return ids.join(QStringLiteral(", "));
-}
-
 bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &in, Diagnostics &out,
                      const MaterialData *&material)
 {
@@ -334,15 +337,9 @@ std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &p, const 
         out.insert(out.end(), insert.diagnostics.begin(), insert.diagnostics.end());
         return std::nullopt;
     }
-    const auto angle = enteringAngleOf(p.tool.holderCode, data);
-    if (!angle) {
-        out.push_back(makeError(
-            QStringLiteral("tool.holder"),
-            DeviationModel::tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
-                               "character) gives no known entering angle")
-                .arg(p.tool.holderCode)));
+    const auto angle = holderEnteringAngle(p, data, out);
+    if (!angle)
         return std::nullopt;
-    }
     const HolderData *holder = data.holder(p.tool.holderCode);
     const bool negative = insert.insert->clearanceAngle_deg == 0.0;
     const auto rake =
@@ -438,15 +435,9 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
         return result;
     }
     in.noseRadius_mm = insert.insert->noseRadius_mm;
-    const auto angle = enteringAngleOf(p.tool.holderCode, data);
-    if (!angle) {
-        out.push_back(makeError(
-            QStringLiteral("tool.holder"),
-            DeviationModel::tr("holder \"%1\" is not in the data library and its ISO 5608 style letter (third "
-                               "character) gives no known entering angle")
-                .arg(p.tool.holderCode)));
+    const auto angle = holderEnteringAngle(p, data, out);
+    if (!angle)
         return result;
-    }
     in.enteringAngle_deg = angle->value;
 
     const MachineData *machine = data.machine(p.machineId);

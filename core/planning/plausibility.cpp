@@ -22,25 +22,16 @@ QString num(double v)
     return formatNumber(v);
 }
 
-template <typename Entries>
-QString idsOf(const Entries &entries)
-{
-    QStringList ids;
-    for (const auto &e : entries)
-        ids << e.id;
-    return ids.join(QStringLiteral(", "));
-}
-
 void checkLibraryEntries(const Project &p, const DataLibrary &data, Diagnostics &out)
 {
     if (data.material(p.materialId) == nullptr)
         out.push_back(
             makeError(QStringLiteral("material"), Plausibility::tr("unknown material \"%1\"; the data library has: %2")
-                                                      .arg(p.materialId, idsOf(data.materials()))));
+                                                      .arg(p.materialId, libraryIds(data.materials()))));
     if (data.machine(p.machineId) == nullptr)
         out.push_back(
             makeError(QStringLiteral("machine"), Plausibility::tr("unknown machine \"%1\"; the data library has: %2")
-                                                     .arg(p.machineId, idsOf(data.machines()))));
+                                                     .arg(p.machineId, libraryIds(data.machines()))));
     if (data.holder(p.tool.holderCode) != nullptr)
         return;
     const QString code = p.tool.holderCode.trimmed().toUpper();

@@ -67,13 +67,14 @@ TolerancePanel::TolerancePanel(ProjectDocument &document, QWidget *parent)
 
 void TolerancePanel::showVerdicts(std::vector<ToleranceEvaluation> verdicts)
 {
-    m_banner->hide();
-    const int row = currentRow();
-    m_model->setVerdicts(m_document.project(), std::move(verdicts));
-    m_table->resizeColumnsToContents();
-    if (row >= 0 && row < m_model->rowCount())
-        m_table->selectRow(row);
-    updateButtons();
+    std::vector<ToleranceRangeEvaluation> rows;
+    rows.reserve(verdicts.size());
+    for (ToleranceEvaluation &e : verdicts) {
+        ToleranceRangeEvaluation r;
+        r.compliant = std::move(e);
+        rows.push_back(std::move(r));
+    }
+    showVerdicts(std::move(rows), QString(), false);
 }
 
 void TolerancePanel::showVerdicts(std::vector<ToleranceRangeEvaluation> verdicts, const QString &assumption,

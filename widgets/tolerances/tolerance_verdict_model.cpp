@@ -35,18 +35,6 @@ ToleranceVerdictModel::ToleranceVerdictModel(QObject *parent) : QAbstractTableMo
     });
 }
 
-void ToleranceVerdictModel::setVerdicts(const Project &project, std::vector<ToleranceEvaluation> verdicts)
-{
-    std::vector<ToleranceRangeEvaluation> rows;
-    rows.reserve(verdicts.size());
-    for (ToleranceEvaluation &e : verdicts) {
-        ToleranceRangeEvaluation r;
-        r.compliant = std::move(e);
-        rows.push_back(std::move(r));
-    }
-    setVerdicts(project, std::move(rows));
-}
-
 void ToleranceVerdictModel::setVerdicts(const Project &project, std::vector<ToleranceRangeEvaluation> verdicts)
 {
     beginResetModel();

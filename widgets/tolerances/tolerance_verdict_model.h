@@ -41,7 +41,6 @@ public:
 
     explicit ToleranceVerdictModel(QObject *parent = nullptr);
 
-    void setVerdicts(const Project &project, std::vector<ToleranceEvaluation> verdicts);
     void setVerdicts(const Project &project, std::vector<ToleranceRangeEvaluation> verdicts);
 
     [[nodiscard]] const ToleranceEvaluation &verdict(int row) const
