@@ -3410,6 +3410,30 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Max. sp&amp;indle speed:</source>
         <translation>Max. S&amp;pindeldrehzahl:</translation>
     </message>
+    <message>
+        <source>Derive C</source>
+        <translation>C ableiten</translation>
+    </message>
+    <message>
+        <source>The speed the insert&apos;s catalogue recommends and the tool life it states for it (often 15 min): C = v·Tⁿ, with n from tool makers&apos; speed–life factors.</source>
+        <translation>Die Schnittgeschwindigkeit, die der Katalog der Wendeschneidplatte empfiehlt, und die Standzeit, die er dafür angibt (oft 15 min): C = v·Tⁿ, mit n aus den Standzeitfaktoren der Werkzeughersteller.</translation>
+    </message>
+    <message>
+        <source>at</source>
+        <translation>bei</translation>
+    </message>
+    <message>
+        <source>Catalogue speed:</source>
+        <translation>Katalog-Schnittgeschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>Catalogue speed: give the recommended speed and the tool life the catalogue states for it.</source>
+        <translation>Katalog-Schnittgeschwindigkeit: geben Sie die empfohlene Schnittgeschwindigkeit und die Standzeit an, die der Katalog dafür nennt.</translation>
+    </message>
+    <message>
+        <source>C = %1 m/min x %2 min^%3 from the insert catalogue&apos;s recommended speed; n: %4</source>
+        <translation>C = %1 m/min x %2 min^%3 aus der empfohlenen Schnittgeschwindigkeit des Plattenkatalogs; n: %4</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningPanel</name>

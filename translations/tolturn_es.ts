@@ -3410,6 +3410,30 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Max. sp&amp;indle speed:</source>
         <translation>Velocidad de &amp;husillo máx.:</translation>
     </message>
+    <message>
+        <source>Derive C</source>
+        <translation>Derivar C</translation>
+    </message>
+    <message>
+        <source>The speed the insert&apos;s catalogue recommends and the tool life it states for it (often 15 min): C = v·Tⁿ, with n from tool makers&apos; speed–life factors.</source>
+        <translation>La velocidad que recomienda el catálogo de la plaquita y la vida de herramienta que indica para ella (a menudo 15 min): C = v·Tⁿ, con n de los factores velocidad–vida de los fabricantes de herramientas.</translation>
+    </message>
+    <message>
+        <source>at</source>
+        <translation>a</translation>
+    </message>
+    <message>
+        <source>Catalogue speed:</source>
+        <translation>Velocidad de catálogo:</translation>
+    </message>
+    <message>
+        <source>Catalogue speed: give the recommended speed and the tool life the catalogue states for it.</source>
+        <translation>Velocidad de catálogo: indique la velocidad recomendada y la vida de herramienta que el catálogo da para ella.</translation>
+    </message>
+    <message>
+        <source>C = %1 m/min x %2 min^%3 from the insert catalogue&apos;s recommended speed; n: %4</source>
+        <translation>C = %1 m/min x %2 min^%3 a partir de la velocidad recomendada del catálogo de la plaquita; n: %4</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningPanel</name>

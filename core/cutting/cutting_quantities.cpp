@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cutting/cutting_quantities.h"
 
+#include <cmath>
 #include <numbers>
 
 namespace tolturn {
@@ -28,6 +29,11 @@ double theoreticalRa_um(double feed_mm_rev, double noseRadius_mm)
 double theoreticalRz_um(double feed_mm_rev, double noseRadius_mm)
 {
     return 1000.0 * feed_mm_rev * feed_mm_rev / (8.0 * noseRadius_mm);
+}
+
+double taylorConstant_m_min(double cuttingSpeed_m_min, double toolLife_min, double exponent)
+{
+    return cuttingSpeed_m_min * std::pow(toolLife_min, exponent);
 }
 
 } // namespace tolturn

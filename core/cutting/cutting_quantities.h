@@ -17,4 +17,8 @@ namespace tolturn {
 [[nodiscard]] double theoreticalRa_um(double feed_mm_rev, double noseRadius_mm);
 [[nodiscard]] double theoreticalRz_um(double feed_mm_rev, double noseRadius_mm);
 
+// Taylor (1907), v T^n = C: the constant C [m/min] from a speed v [m/min] that gives a tool life
+// T [min], as an insert catalogue states its recommended speed at a reference life.
+[[nodiscard]] double taylorConstant_m_min(double cuttingSpeed_m_min, double toolLife_min, double exponent);
+
 } // namespace tolturn

@@ -117,6 +117,10 @@ public:
 
     [[nodiscard]] std::optional<SourcedValue> defaultPassiveToCuttingRatio() const { return m_defaultPassiveRatio; }
 
+    // The Taylor exponent n of carbide turning inserts, from tool makers' speed–life factors
+    // (materials.json "defaults"): a class value, with C still to come from the insert's catalogue.
+    [[nodiscard]] std::optional<SourcedValue> defaultTaylorExponent() const { return m_defaultTaylorN; }
+
     // Support stiffness ranges for a machine without a measured characterisation.
     [[nodiscard]] const UncharacterisedSupports &uncharacterisedSupports() const { return m_supports; }
 
@@ -144,6 +148,7 @@ private:
     UncharacterisedSupports m_supports;
     std::optional<SourcedValue> m_defaultFeedRatio;
     std::optional<SourcedValue> m_defaultPassiveRatio;
+    std::optional<SourcedValue> m_defaultTaylorN;
 };
 
 } // namespace tolturn

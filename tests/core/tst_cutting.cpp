@@ -96,6 +96,14 @@ private Q_SLOTS:
         QVERIFY(shallow.warnings.front().message.contains(QStringLiteral("depth of cut")));
     }
 
+    // Taylor: C = v T^n; 250 m/min at 15 min with n = 0.25: 15^0.25 = exp(0.25 ln 15) = exp(0.677013)
+    // = 1.967990, C = 491.998 m/min.
+    void taylorConstantFromACatalogueSpeed()
+    {
+        QVERIFY(near(taylorConstant_m_min(250.0, 15.0, 0.25), 491.998, 2e-6));
+        QCOMPARE(taylorConstant_m_min(300.0, 1.0, 0.3), 300.0); // T = 1 min: C is the speed itself
+    }
+
     // Li & Du eq. 16a: f = 0.2, d = 1, r_n = 0.8: sqrt(0.64 - 0.01) = 0.793725;
     // A_c = 0.2 - 0.2 (0.8 - 0.793725)/2 = 0.2 - 0.0006275 = 0.1993725 mm². Eq. 16b when r_n < f/2.
     void liDuChipArea()

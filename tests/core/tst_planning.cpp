@@ -2,6 +2,7 @@
 // Planning: the optimum against a dense grid search, every constraint made binding (with the
 // closed-form boundary where there is one), an infeasible case naming its conflict, the cutting
 // window against direct evaluation, the clamping ranking, and G-code read back.
+#include "core/cutting/cutting_quantities.h"
 #include "core/io/project_file.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
@@ -440,6 +441,37 @@ private Q_SLOTS:
                                     .arg(highest)
                                     .arg(verdictKeyword(verdict->verdict))));
         }
+    }
+
+    // With Taylor constants least time and least cost give different plans. C from a catalogue speed
+    // of 250 m/min at 15 min with the data library's n = 0.25: C = 250 x 15^0.25 = 491.998 m/min.
+    // Nothing else in the stepped shaft's problem depends on the cutting speed, so the speeds are
+    // the classic optima (Gilbert 1950; Kalpakjian & Schmid §21.12):
+    //   least cost: T = (1/n - 1)(t_change + C_edge/M) = 3 (0.5 + 3.5/1.2) = 10.25 min,
+    //               v = C / T^n = 491.998 / 10.25^0.25 = 274.99 m/min;
+    //   least time: T = (1/n - 1) t_change = 1.5 min, v = 444.6 m/min, above the insert's 353.6: 353.6.
+    void leastCostAndLeastTimeDiffer()
+    {
+        Project p = example("stepped-shaft-chuck.tolturn");
+        const auto n = DataLibrary::builtIn().defaultTaylorExponent();
+        QVERIFY(n.has_value());
+        QCOMPARE(n->value, 0.25);
+        p.planning.taylorN = n->value;
+        p.planning.taylorC_m_min = taylorConstant_m_min(250.0, 15.0, n->value);
+        QVERIFY(std::abs(*p.planning.taylorC_m_min - 491.998) < 1e-3);
+        p.planning.toolLifeSource = QStringLiteral("test");
+        p.planning.objective = PlanningObjective::Cost;
+        const PlanResult cost = optimisePlan(*problemFor(p));
+        p.planning.objective = PlanningObjective::Time;
+        const PlanResult time = optimisePlan(*problemFor(p));
+        QVERIFY(cost.feasible && time.feasible);
+        QVERIFY2(std::abs(cost.candidate.finishing.cuttingSpeed_m_min / 274.99 - 1.0) < 5e-3,
+                 qPrintable(QString::number(cost.candidate.finishing.cuttingSpeed_m_min)));
+        QVERIFY2(std::abs(cost.candidate.roughing.cuttingSpeed_m_min / 274.99 - 1.0) < 5e-3,
+                 qPrintable(QString::number(cost.candidate.roughing.cuttingSpeed_m_min)));
+        QVERIFY(std::abs(time.candidate.finishing.cuttingSpeed_m_min - 353.6) < 0.5);
+        QVERIFY(cost.evaluation.cost < time.evaluation.cost);
+        QVERIFY(time.evaluation.time_min < cost.evaluation.time_min);
     }
 
     // Planning is for the compliant end of the chuck's range unless told otherwise. On the sleeve in

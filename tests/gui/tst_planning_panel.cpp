@@ -160,6 +160,31 @@ private Q_SLOTS:
         saveScreenshot(dialog, "planning-data.png");
     }
 
+    // Tool life from the insert catalogue: its recommended 250 m/min at 15 min and the data
+    // library's n = 0.25 (tool makers' speed–life factors) give C = 250 x 15^0.25 = 492.0 m/min, with
+    // both sources named. Without a speed nothing is filled and the message says what is missing.
+    void taylorFromTheCatalogueSpeed()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        PlanningDataDialog dialog(w.document()->project().planning, DataLibrary::builtIn(),
+                                  w.document()->project().materialId,
+                                  [](const PlanningSettings &) { return Diagnostics{}; });
+        QVERIFY(dialog.catalogueToolLifeButton()->isEnabled());
+        dialog.catalogueToolLifeButton()->click();
+        QVERIFY(dialog.message().contains(QStringLiteral("recommended speed")));
+        QCOMPARE(dialog.field(QStringLiteral("tool_life.C_m_min"))->text(), QStringLiteral("—"));
+        dialog.catalogueSpeedBox()->setValue(250.0);
+        dialog.catalogueLifeBox()->setValue(15.0);
+        dialog.catalogueToolLifeButton()->click();
+        QVERIFY(dialog.message().isEmpty());
+        QCOMPARE(dialog.field(QStringLiteral("tool_life.C_m_min"))->value(), 492.0);
+        QCOMPARE(dialog.field(QStringLiteral("tool_life.n"))->value(), 0.25);
+        QVERIFY2(dialog.toolLifeSourceEdit()->text().contains(QStringLiteral("250 m/min x 15 min^0.25")) &&
+                     dialog.toolLifeSourceEdit()->text().contains(QStringLiteral("Dormer Pramet")),
+                 qPrintable(dialog.toolLifeSourceEdit()->text()));
+    }
+
     void planningDataDialogRefusesAndKeepsWhatWasTyped()
     {
         MainWindow w;

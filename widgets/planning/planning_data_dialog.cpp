@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/planning/planning_data_dialog.h"
 
+#include "core/cutting/cutting_quantities.h"
 #include "core/data/data_library.h"
 
 #include <QDialogButtonBox>
@@ -14,6 +15,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <initializer_list>
 #include <utility>
 
 namespace tolturn {
@@ -170,7 +172,56 @@ QWidget *PlanningDataDialog::createToolLifeGroup(const DataLibrary &library, con
         });
     }
     form->addRow(QString(), m_materialToolLife);
+    addCatalogueToolLife(*form, library);
     return group;
+}
+
+// C from the insert catalogue's recommended speed at its reference tool life, with the exponent of
+// tool makers' speed–life factors from the data library (docs/planning.md §1): C = v T^n.
+void PlanningDataDialog::addCatalogueToolLife(QFormLayout &form, const DataLibrary &library)
+{
+    m_catalogueSpeed = new QDoubleSpinBox;
+    m_catalogueSpeed->setObjectName(QStringLiteral("catalogue.cutting_speed_m_min"));
+    m_catalogueSpeed->setRange(0.0, 5000.0);
+    m_catalogueSpeed->setDecimals(1);
+    m_catalogueSpeed->setSuffix(QStringLiteral(" ") + tr("m/min"));
+    m_catalogueLife = new QDoubleSpinBox;
+    m_catalogueLife->setObjectName(QStringLiteral("catalogue.tool_life_min"));
+    m_catalogueLife->setRange(0.0, 1000.0);
+    m_catalogueLife->setDecimals(1);
+    m_catalogueLife->setSuffix(QStringLiteral(" ") + tr("min"));
+    m_catalogueToolLife = new QPushButton(tr("Derive C"));
+    const auto n = library.defaultTaylorExponent();
+    m_catalogueToolLife->setEnabled(n.has_value());
+    const QString why = tr("The speed the insert's catalogue recommends and the tool life it states for it (often "
+                           "15 min): C = v·Tⁿ, with n from tool makers' speed–life factors.");
+    for (QWidget *w : std::initializer_list<QWidget *>{m_catalogueSpeed, m_catalogueLife, m_catalogueToolLife})
+        w->setToolTip(why);
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_catalogueSpeed);
+    row->addWidget(new QLabel(tr("at")));
+    row->addWidget(m_catalogueLife);
+    row->addWidget(m_catalogueToolLife);
+    form.addRow(tr("Catalogue speed:"), row);
+    if (!n)
+        return;
+    const QString nSource = library.sourceText(n->source).section(QLatin1Char(','), 0, 2);
+    connect(m_catalogueToolLife, &QPushButton::clicked, this, [this, n = *n, nSource] {
+        const double v = m_catalogueSpeed->value();
+        const double t = m_catalogueLife->value();
+        if (v <= 0.0 || t <= 0.0) {
+            m_message->setText(tr("Catalogue speed: give the recommended speed and the tool life the catalogue "
+                                  "states for it."));
+            (v <= 0.0 ? m_catalogueSpeed : m_catalogueLife)->setFocus(Qt::OtherFocusReason);
+            return;
+        }
+        m_message->clear();
+        field(QStringLiteral("tool_life.C_m_min"))->setValue(taylorConstant_m_min(v, t, n.value));
+        field(QStringLiteral("tool_life.n"))->setValue(n.value);
+        m_toolLifeSource->setText(tr("C = %1 m/min x %2 min^%3 from the insert catalogue's recommended speed; n: %4")
+                                      .arg(formatNumber(v), formatNumber(t), formatNumber(n.value), nSource));
+        m_toolLifeSource->setCursorPosition(0);
+    });
 }
 
 QWidget *PlanningDataDialog::createRangesGroup()

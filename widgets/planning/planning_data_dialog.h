@@ -10,6 +10,7 @@
 #include <map>
 
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -45,6 +46,13 @@ public:
     // Fills Taylor C, n and their source from the work material's data (enabled when it has them).
     [[nodiscard]] QPushButton *materialToolLifeButton() const { return m_materialToolLife; }
 
+    // Fills C from the catalogue's recommended speed at its tool life and n from the data library.
+    [[nodiscard]] QPushButton *catalogueToolLifeButton() const { return m_catalogueToolLife; }
+
+    [[nodiscard]] QDoubleSpinBox *catalogueSpeedBox() const { return m_catalogueSpeed; }
+
+    [[nodiscard]] QDoubleSpinBox *catalogueLifeBox() const { return m_catalogueLife; }
+
     [[nodiscard]] QString message() const;
 
     void accept() override;
@@ -52,6 +60,7 @@ public:
 private:
     QWidget *createRatesGroup();
     QWidget *createToolLifeGroup(const DataLibrary &library, const QString &materialId);
+    void addCatalogueToolLife(QFormLayout &form, const DataLibrary &library);
     QWidget *createRangesGroup();
     QWidget *createLimitsGroup();
     QDoubleSpinBox *addBox(const QString &name, int decimals, double maximum, const QString &unit, const QString &tip);
@@ -65,6 +74,9 @@ private:
     QLineEdit *m_toolLifeSource;
     QLineEdit *m_rangesSource;
     QPushButton *m_materialToolLife = nullptr;
+    QPushButton *m_catalogueToolLife = nullptr;
+    QDoubleSpinBox *m_catalogueSpeed = nullptr;
+    QDoubleSpinBox *m_catalogueLife = nullptr;
     QLabel *m_message;
 };
 
