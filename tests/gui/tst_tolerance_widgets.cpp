@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Tolerances in the desktop program, offscreen: the verdict model, undoable edits that change the
 // verdicts, the tolerance dialog's live ISO 286 limits and its refusals, feature selection.
+#include "tests/gui/screenshot.h"
+
 #include "app/gui/main_window.h"
 #include "core/common/csv.h"
 #include "core/io/project_file.h"
@@ -69,9 +71,9 @@ private Q_SLOTS:
         copy->trigger();
         const QStringList lines = QApplication::clipboard()->text().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 1 + 8); // the example's eight tolerances
-        QCOMPARE(lines.constFirst(), QString::fromUtf8("ID,Characteristic,Feature,Specification,Predicted [µm],"
-                                                       "Limit [µm],Utilisation,Verdict,On the machine range,"
-                                                       "Stiffness needed"));
+        QCOMPARE(lines.constFirst(), QString::fromUtf8("ID,Characteristic,Feature,Specification,Verdict,On the "
+                                                       "machine range,Stiffness needed,Predicted [µm],Limit [µm],"
+                                                       "Utilisation"));
         QVERIFY(lines.at(1).startsWith(QStringLiteral("T1,diameter,O4,h6,")));
         QCOMPARE(csvField(QStringLiteral("8 µm | A")), QString::fromUtf8("8 µm | A"));
         QCOMPARE(csvField(QStringLiteral("a,\"b\"")), QStringLiteral("\"a,\"\"b\"\"\""));
@@ -102,6 +104,13 @@ private Q_SLOTS:
         QVERIFY(panel->banner()->styleSheet().contains(QStringLiteral("#fde3c8")));
         QVERIFY(
             m->index(0, ToleranceVerdictModel::RequiredColumn).data().toString().contains(QStringLiteral("tailstock")));
+
+        // The slender pin at a planner's catalogue conditions: its cylindricity fails on every machine.
+        QVERIFY(w.fileController()->openFile(example("slender-pin-chuck.tolturn")));
+        QCOMPARE(m->index(1, ToleranceVerdictModel::RangeColumn).data().toString(),
+                 QStringLiteral("fails even on the stiffest machine of the range"));
+        QTest::qWait(50);
+        tolturn::test::saveScreenshot(w, "verdicts-range.png");
     }
 
     void verdictModelIsAProperModel()

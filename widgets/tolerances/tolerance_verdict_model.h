@@ -18,17 +18,18 @@ namespace tolturn {
 class ToleranceVerdictModel : public QAbstractTableModel {
     Q_OBJECT
 public:
+    // The verdicts come before the numbers: in a narrow dock they are what shows without scrolling.
     enum Column {
         Id,
         Characteristic,
         Feature,
         Specification,
-        Value,
-        Limit,
-        Utilisation,
         VerdictColumn,
         RangeColumn,    // the verdict over the machine's stiffness range
         RequiredColumn, // the chuck and tailstock stiffness the tolerance needs
+        Value,
+        Limit,
+        Utilisation,
         ColumnCount
     };
 
