@@ -63,19 +63,10 @@ LiDuFactors liDuFactors(const LiDuToolGeometry &tool, double effectiveLead_rad)
 
 } // namespace
 
-namespace {
-
-// Li & Du (2002) §3.3.3: "for relatively deep cuts in which the ratio of the depth of cut to the
-// tool nose radius is large (e.g. > 5), the effective lead angle is approximately equal to the
-// lead angle".
-constexpr double kNoseDominatedDepthRatio = 5.0;
-
-} // namespace
-
 double equivalentEnteringAngle_rad(double enteringAngle_rad, double noseRadius_mm, double feed_mm_rev,
                                    double depthOfCut_mm, Diagnostics *warnings)
 {
-    if (!(noseRadius_mm > 0.0) || depthOfCut_mm >= kNoseDominatedDepthRatio * noseRadius_mm)
+    if (!(noseRadius_mm > 0.0))
         return enteringAngle_rad;
     LiDuToolGeometry tool;
     tool.leadAngle_rad = 0.5 * std::numbers::pi - enteringAngle_rad;

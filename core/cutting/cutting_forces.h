@@ -43,10 +43,10 @@ struct ForceResult {
     Diagnostics warnings; // conditions outside the model's stated validity
 };
 
-// With a nose radius r_n > 0 and a depth of cut below 5 r_n, the edge engaged is mostly the nose:
-// the chip section is taken at the equivalent entering angle kappa_eq = 90° - gamma_Le, gamma_Le
-// the effective lead angle of Li & Du (2002) eq. 20 (which their §3.3.3 says approaches the lead
-// angle above d/r_n = 5), so h = f sin(kappa_eq), b = a_p / sin(kappa_eq); and the thrust in the
+// With a nose radius r_n > 0 the chip section is taken at the equivalent entering angle
+// kappa_eq = 90° - gamma_Le, gamma_Le the effective lead angle of Li & Du (2002) eq. 20, at every
+// depth (their fit, continuous in the depth; a switch to kappa_r at a depth ratio would make the
+// forces jump), so h = f sin(kappa_eq), b = a_p / sin(kappa_eq); and the thrust in the
 // reference plane, (Ff, Fp) as the constants give them for the holder's entering angle kappa_r,
 // turns towards the radial by kappa_r - kappa_eq, as the friction force follows gamma_Le in their
 // eq. 18–19. Outside eq. 20's stated ranges the result carries a warning (docs/model.md §3).

@@ -224,6 +224,17 @@ std::vector<std::vector<double>> thermalAlongPass(const InfluenceTable &table, c
             points.push_back({i, j, f.z_mm[j], spindleSpeedAt(in, f.nominalRadius_mm[j])});
     }
     std::stable_sort(points.begin(), points.end(), [](const Point &a, const Point &b) { return a.z > b.z; });
+    // On the axis (a pointed cone, a dome) constant cutting speed asks for an infinite spindle speed
+    // unless the machine's maximum is known: such a station takes its neighbour's speed.
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (std::isfinite(points[k].n) && points[k].n > 0.0)
+            continue;
+        const auto finite =
+            std::find_if(points.begin(), points.end(), [](const Point &q) { return std::isfinite(q.n) && q.n > 0.0; });
+        points[k].n = k > 0 ? points[k - 1].n : (finite != points.end() ? finite->n : 0.0);
+    }
+    if (points.empty() || !(points.front().n > 0.0))
+        return drift;
     double delta = 0.0;
     for (std::size_t k = 0; k < points.size(); ++k) {
         const Point &p = points[k];

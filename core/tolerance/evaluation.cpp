@@ -333,6 +333,26 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
     return e;
 }
 
+// A deviation that is not finite (an overflow, a station on the axis with no speed limit) decides
+// nothing: never a pass.
+void refuseNonFinite(ToleranceEvaluation &e)
+{
+    const std::optional<double> numbers[] = {e.value_um, e.predictedMax_um, e.predictedMin_um, e.offset_um};
+    for (const auto &v : numbers) {
+        if (v && !std::isfinite(*v)) {
+            e.verdict = Verdict::CannotEvaluate;
+            e.value_um.reset();
+            e.utilisation_pct.reset();
+            say(e.reason, [&] {
+                return QString(ToleranceVerdicts::tr("the predicted deviation of feature %1 is not finite, so "
+                                                     "nothing can be said of it")
+                                   .arg(e.featureId));
+            });
+            return;
+        }
+    }
+}
+
 } // namespace
 
 std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, const DeviationResult &result,
@@ -348,8 +368,10 @@ std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, cons
 
     std::vector<ToleranceEvaluation> out;
     out.reserve(project.tolerances.size());
-    for (const Tolerance &t : project.tolerances)
+    for (const Tolerance &t : project.tolerances) {
         out.push_back(evaluateOne(project, t, result));
+        refuseNonFinite(out.back());
+    }
     return out;
 }
 
