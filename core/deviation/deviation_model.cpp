@@ -279,23 +279,30 @@ Station evaluateStation(const StationInfluence &si, double z, double r0, bool ou
     return st;
 }
 
-// A face cut by a facing pass (docs/model.md §4): the tool feeds radially, so the feed force Ff
-// loads the section radially and the passive force Fp axially, with a moment arm that is the
-// contact radius rho as the tool crosses the face. The section at the face turns by
-//   theta(rho) = Ff c_theta,F + Fp (-/+ rho) c_theta,M
+// A face cut by a facing pass (docs/model.md §4). The finishing program follows the contour from
+// the right end towards the chuck, so a face that faces the right end (material on its left) is
+// cut moving away from where the turned surface on its right ends: an outer face outwards, a bore
+// step inwards (a face facing the chuck the other way). The feed force Ff then loads the section
+// radially towards the tool (negative as material left), the passive force Fp pushes the part
+// away from the tool along the axis, with a moment arm that is the contact radius rho as the tool
+// crosses the face. The section at the face turns by
+//   theta(rho) = s_F Ff c_theta,F + s_M Fp rho c_theta,M
 // and the face point cut at rho is left u(rho) = rho theta(rho) out of its plane; the axial
 // run-out e is the range of u over the face (Valiño et al. 2008 eq. 12, e = (D_M - D_m)/2
 // tan(theta), when theta does not change across it). tan(theta) reported is the mean tilt.
 FaceConicity faceUnderFacingCut(const Segment &s, const FeatureInfluence &f, const TurningInputs &in)
 {
     const StationInfluence &si = f.stations.front();
-    const double sign = f.side == ContourSide::Outer ? -1.0 : 1.0; // as for the feed force in turning
+    const bool outer = f.side == ContourSide::Outer;
+    const bool facesRightEnd = outer ? s.to.r_mm < s.from.r_mm : s.to.r_mm > s.from.r_mm;
+    const double signF = facesRightEnd ? -1.0 : 1.0;
+    // As the feed force in turning (towards the chuck): -rho on an outer surface, +rho in a bore.
+    const double signM = (outer ? -1.0 : 1.0) * (facesRightEnd ? 1.0 : -1.0);
     const double rIn = std::min(s.from.r_mm, s.to.r_mm);
     const double rOut = std::max(s.from.r_mm, s.to.r_mm);
-    const auto u = [&](double rho) {
-        return rho * (in.forces.axial_N * si.rotationPerRadial_rad_per_N +
-                      in.forces.radial_N * sign * rho * si.rotationPerMoment_rad_per_Nmm);
-    };
+    const double a = signF * in.forces.axial_N * si.rotationPerRadial_rad_per_N;
+    const double b = signM * in.forces.radial_N * si.rotationPerMoment_rad_per_Nmm;
+    const auto u = [a, b](double rho) { return rho * (a + b * rho); };
     constexpr int kSamples = 41;
     double lo = u(rIn);
     double hi = lo;
@@ -305,8 +312,6 @@ FaceConicity faceUnderFacingCut(const Segment &s, const FeatureInfluence &f, con
         hi = std::max(hi, v);
     }
     // The extreme of the parabola u(rho) where it lies inside the face.
-    const double a = in.forces.axial_N * si.rotationPerRadial_rad_per_N;
-    const double b = in.forces.radial_N * sign * si.rotationPerMoment_rad_per_Nmm;
     if (b != 0.0) {
         const double vertex = -a / (2.0 * b);
         if (vertex > rIn && vertex < rOut) {

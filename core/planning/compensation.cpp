@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/compensation.h"
 
-#include "core/planning/target_contour.h"
+#include "core/tolerance/target_contour.h"
 
 #include <QCoreApplication>
 

@@ -2,7 +2,7 @@
 #include "core/planning/gcode.h"
 
 #include "core/common/library_info.h"
-#include "core/planning/target_contour.h"
+#include "core/tolerance/target_contour.h"
 #include "core/project/keywords.h"
 
 #include <QTextStream>

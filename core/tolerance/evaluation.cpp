@@ -4,6 +4,7 @@
 #include "core/part/profile_geometry.h"
 #include "core/project/keywords.h"
 #include "core/tolerance/iso286.h"
+#include "core/tolerance/target_contour.h"
 
 #include <QCoreApplication>
 
@@ -107,7 +108,8 @@ bool sizeLimits(const Tolerance &t, double nominal_mm, ToleranceEvaluation &e)
 // D'_Md - D'_md = 2|delta_TMd - delta_Tmd| (eq. 14) must fit in t (eq. 15). "As programmed" is the
 // finishing path programmed to the middle of the tolerance zone, as CNC programs are written; the
 // predicted size is that plus twice the radius error.
-void evaluateDiameter(const Tolerance &t, const FeatureRef &feature, const DeviationResult &r, ToleranceEvaluation &e)
+void evaluateDiameter(const Project &p, const Tolerance &t, const FeatureRef &feature, const DeviationResult &r,
+                      ToleranceEvaluation &e)
 {
     const FeatureDeviation *f = stationsOf(r, t.featureId);
     if (!f) {
@@ -117,7 +119,13 @@ void evaluateDiameter(const Tolerance &t, const FeatureRef &feature, const Devia
     if (!sizeLimits(t, 2.0 * feature.segment->from.r_mm, e))
         return;
     const auto [lo, hi] = radiusErrorRange_um(*f);
-    const double programmed = 0.5 * (*e.upper_um + *e.lower_um);
+    // What the program aims at (targetContour): the middle of the zone, or of the zone all the
+    // feature's diameter tolerances allow.
+    double programmed = 0.5 * (*e.upper_um + *e.lower_um);
+    for (const DiameterTarget &target : diameterTargets(p)) {
+        if (target.featureId == t.featureId)
+            programmed = 0.5 * (target.upper_um + target.lower_um);
+    }
     e.predictedMax_um = programmed + 2.0 * hi;
     e.predictedMin_um = programmed + 2.0 * lo;
     const double tolerance = *e.upper_um - *e.lower_um;
@@ -203,7 +211,8 @@ void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, Toleranc
 // normal deviations must fit in t. With datums the zone is located on the theoretically exact profile, which the
 // program follows: every normal deviation lies within ±t/2. The paper's eq. 22, delta_TMd + delta_Tmd <= t /
 // cos(alpha), is only necessary for either and is not used (MODEL §3).
-void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const DeviationResult &r, ToleranceEvaluation &e)
+void evaluateProfile(const Project &p, const Tolerance &t, const FeatureRef &feature, const DeviationResult &r,
+                     ToleranceEvaluation &e)
 {
     const FeatureDeviation *f = stationsOf(r, t.featureId);
     if (!f) {
@@ -211,6 +220,7 @@ void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const Deviat
         return;
     }
     const Segment &s = *feature.segment;
+    const Contour target = targetContour(p, feature.side);
     double largest = -1e300;
     double smallest = 1e300;
     for (const Station &st : f->stations) {
@@ -218,7 +228,12 @@ void evaluateProfile(const Tolerance &t, const FeatureRef &feature, const Deviat
         const double z0 = std::max(s.from.z_mm, st.z_mm - h);
         const double z1 = std::min(s.to.z_mm, st.z_mm + h);
         const double slope = (radiusOnSegment(s, z1) - radiusOnSegment(s, z0)) / (z1 - z0);
-        const double normal = st.radiusError_mm * kUmPerMm / std::sqrt(1.0 + slope * slope); // delta cos(alpha)
+        // The program aims at the target contour, which moves a cone or a round with its toleranced
+        // cylinder: that shift is part of the deviation from the exact profile.
+        const double nominal = radiusOnSegment(s, st.z_mm);
+        const double aimed = targetRadius_mm(target, t.featureId, st.z_mm).value_or(nominal);
+        const double deviation = st.radiusError_mm + aimed - nominal;
+        const double normal = deviation * kUmPerMm / std::sqrt(1.0 + slope * slope); // delta cos(alpha)
         largest = std::max(largest, normal);
         smallest = std::min(smallest, normal);
     }
@@ -284,7 +299,7 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
     }
     switch (t.type) {
     case ToleranceType::Diameter:
-        evaluateDiameter(t, *feature, r, e);
+        evaluateDiameter(p, t, *feature, r, e);
         break;
     case ToleranceType::Length:
         evaluateLength(p, t, r, e);
@@ -314,7 +329,7 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
         evaluateRadialSpread(t, r, e, ToleranceVerdicts::tr("Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| <= t"));
         break;
     case ToleranceType::Profile:
-        evaluateProfile(t, *feature, r, e);
+        evaluateProfile(p, t, *feature, r, e);
         break;
     case ToleranceType::Coaxiality:
         notPredicted(e, ToleranceVerdicts::tr(

@@ -309,13 +309,14 @@ private Q_SLOTS:
         QVERIFY(near(res.theoreticalRa_um, 1.5625, 1e-12));
     }
 
-    // The free end face of a Ø30 bar, 160 mm out of a rigid chuck, cut by a facing pass (Euler–Bernoulli
-    // section rotation; shear does not turn the section): the feed force Ff = 100 N loads it
-    // radially, theta_F = Ff L²/(2EI) = 100 x 160²/(2 x 210000 x 39760.78) = 1.53297e-4; the passive
-    // force Fp = 300 N pushes it towards the chuck at the contact radius rho, on the tool's side,
-    // turning it back: theta_M = -Fp rho L/(EI) = -5.74868e-6 rho. The face point cut at rho is left
-    // u = rho (1.53297e-4 - 5.74867e-6 rho) out of plane: 0 at the centre, its largest 1.02198 µm at
-    // rho = 13.333 mm, 1.00602 µm at the rim. So e = 1.02198 µm, and the mean tilt 1.00602/15 = 6.7068e-5.
+    // The free end face of a Ø30 bar, 160 mm out of a rigid chuck, cut by a facing pass the way the
+    // finishing program cuts it, outwards from the centre (Euler–Bernoulli section rotation; shear
+    // does not turn the section). The feed force Ff = 100 N loads it radially towards the tool,
+    // theta_F = -Ff L²/(2EI) = -100 x 160²/(2 x 210000 x 39760.78) = -1.53297e-4; the passive force
+    // Fp = 300 N pushes it towards the chuck at the contact radius rho on the tool's side, which turns
+    // it the same way: theta_M = -Fp rho L/(EI) = -5.74867e-6 rho. The face point cut at rho is left
+    // u = -rho (1.53297e-4 + 5.74867e-6 rho) out of plane: 0 at the centre, -3.59290 µm at the rim.
+    // So e = 3.59290 µm and the mean tilt 3.59290e-3/15 = 2.39527e-4.
     void facingCutLeavesAFaceOutOfPlane()
     {
         const Project p = barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0);
@@ -328,8 +329,8 @@ private Q_SLOTS:
         const auto end = std::find_if(res.faces.begin(), res.faces.end(),
                                       [](const FaceConicity &f) { return f.featureId == QLatin1String("O3"); });
         QVERIFY(end != res.faces.end());
-        QVERIFY2(near(end->axialRunout_mm * 1000.0, 1.02198, 2e-5), qPrintable(QString::number(end->axialRunout_mm)));
-        QVERIFY2(near(std::abs(end->tanTheta), 6.7068e-5, 2e-5), qPrintable(QString::number(end->tanTheta)));
+        QVERIFY2(near(end->axialRunout_mm * 1000.0, 3.59290, 2e-5), qPrintable(QString::number(end->axialRunout_mm)));
+        QVERIFY2(near(std::abs(end->tanTheta), 2.39527e-4, 2e-5), qPrintable(QString::number(end->tanTheta)));
     }
 
     // First-order warm-up along the pass (docs/model.md §5): drift = (a_n n/1000 + a_T (T - T_ref))

@@ -171,6 +171,49 @@ private Q_SLOTS:
         QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 4.4, a), r).verdict, Verdict::NeedsProfileCorrection);
     }
 
+    // The program aims at the target contour: with Ø50 h6 on O2 (middle of the zone -8 µm on the
+    // diameter) the cone O3 moves with its cylinder by -4 µm on the radius at both ends (its right end
+    // meets only the face O4). With no deflection its normal deviation is -4 cos(alpha) = -3.577709 µm
+    // everywhere: a floating zone takes it (spread 0), a located one of 5 µm does not (2 x 3.5777 =
+    // 7.155418 µm), but a constant normal offset of +3.577709 µm centres it.
+    void profileFollowsTheProgrammedContour()
+    {
+        Project p = part();
+        Tolerance h6 = diameter("h6");
+        Tolerance located = geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("A")});
+        located.id = QStringLiteral("P");
+        p.tolerances = {h6, located};
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double) { return 0.0; }),
+                      curve("O3", SegmentKind::Cone, 100, 110, [](double) { return 0.0; })};
+        const ToleranceEvaluation e = evaluateTolerances(p, r).at(1);
+        QCOMPARE(e.verdict, Verdict::PassesAfterOffset);
+        QVERIFY(std::abs(*e.value_um - 7.155418) < 1e-5);
+        QVERIFY(std::abs(*e.offset_um - 3.577709) < 1e-5);
+        p.tolerances.back().datums.clear();
+        QCOMPARE(evaluateTolerances(p, r).at(1).verdict, Verdict::PassesAsProgrammed);
+    }
+
+    // Two size tolerances on one diameter: the program aims at the middle of the zone both allow.
+    // h6 (0/-16 µm) and 0/-8 µm: the target is -4 µm. A constant radius error of +3 µm cuts -4 + 6 =
+    // +2 µm on the diameter: above both upper limits, so neither passes as programmed (aiming at the
+    // h6 zone's own middle, -8 µm, would have predicted -2 µm and passed).
+    void twoSizeTolerancesShareOneTarget()
+    {
+        Project p = part();
+        Tolerance explicitLimits = diameter("");
+        explicitLimits.id = QStringLiteral("E");
+        explicitLimits.upperDeviation_um = 0.0;
+        explicitLimits.lowerDeviation_um = -8.0;
+        p.tolerances = {diameter("h6"), explicitLimits};
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double) { return 3.0; })};
+        const std::vector<ToleranceEvaluation> v = evaluateTolerances(p, r);
+        QVERIFY(std::abs(*v.at(0).predictedMax_um - 2.0) < 1e-9);
+        QCOMPARE(v.at(0).verdict, Verdict::PassesAfterOffset);
+        QCOMPARE(v.at(1).verdict, Verdict::PassesAfterOffset);
+    }
+
     // Length between faces O1 and O4 (eq. 11): e_i + e_j = 2 + 3 = 5 µm. ±2.5 (t = 5) passes, ±2 fails.
     void lengthBetweenFaces()
     {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/planning/target_contour.h"
+#include "core/tolerance/target_contour.h"
 
 #include "core/part/profile_geometry.h"
 #include "core/tolerance/iso286.h"
