@@ -1706,8 +1706,20 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Reitstock und Spitzen nicht gemessen und keine veröffentlichte Steifigkeit: als starr angenommen (optimistisch); siehe die Steifigkeit, die jede Toleranz braucht</translation>
     </message>
     <message>
-        <source>tailstock and centres as measured</source>
-        <translation>Reitstock und Spitzen wie gemessen</translation>
+        <source>%1–%2 N/µm only</source>
+        <translation>nur %1–%2 N/µm</translation>
+    </message>
+    <message>
+        <source>passes on the compliant machines of the range, not on the stiffest</source>
+        <translation>erfüllt auf den nachgiebigen Maschinen des Bereichs, nicht auf der steifsten</translation>
+    </message>
+    <message>
+        <source>tailstock as measured</source>
+        <translation>Reitstock wie gemessen</translation>
+    </message>
+    <message>
+        <source>headstock centre not measured and no published stiffness: taken as rigid (optimistic)</source>
+        <translation>Spindelstockspitze nicht gemessen und keine veröffentlichte Steifigkeit: als starr angenommen (optimistisch)</translation>
     </message>
 </context>
 <context>
@@ -2394,10 +2406,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>nicht auswertbar</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, no datum (the zone floats): max delta_n - min delta_n &lt;= t</source>
-        <translation>ISO 1101 Flächenform, ohne Bezug (die Zone schwimmt): max delta_n - min delta_n &lt;= t</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2</source>
         <translation>ISO 1101 Flächenform, mit Bezügen (die Zone liegt fest): jedes delta_n innerhalb ±t/2</translation>
     </message>
@@ -2408,6 +2416,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>ISO 1101 surface profile, with datums: the spread of delta_n exceeds t</source>
         <translation>ISO 1101 Flächenform, mit Bezügen: die Streuung von delta_n überschreitet t</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
+        <translation>ISO 1101 Flächenform, ohne Bezug (die Zone schwimmt längs der Achse): 2 min über dz von max |delta_n - dz n_z| &lt;= t</translation>
+    </message>
+    <message>
+        <source>the predicted deviation of feature %1 is not finite, so nothing can be said of it</source>
+        <translation>die vorhergesagte Abweichung von Element %1 ist nicht endlich, daher lässt sich nichts darüber sagen</translation>
     </message>
 </context>
 <context>

@@ -1706,8 +1706,20 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>contrapunto y puntos no medidos y sin rigidez publicada: se toman como rígidos (optimista); vea la rigidez que necesita cada tolerancia</translation>
     </message>
     <message>
-        <source>tailstock and centres as measured</source>
-        <translation>contrapunto y puntos según lo medido</translation>
+        <source>%1–%2 N/µm only</source>
+        <translation>solo %1–%2 N/µm</translation>
+    </message>
+    <message>
+        <source>passes on the compliant machines of the range, not on the stiffest</source>
+        <translation>cumple en las máquinas flexibles del rango, no en la más rígida</translation>
+    </message>
+    <message>
+        <source>tailstock as measured</source>
+        <translation>contrapunto según lo medido</translation>
+    </message>
+    <message>
+        <source>headstock centre not measured and no published stiffness: taken as rigid (optimistic)</source>
+        <translation>punto del cabezal no medido y sin rigidez publicada: se toma como rígido (optimista)</translation>
     </message>
 </context>
 <context>
@@ -2394,10 +2406,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no se puede evaluar</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, no datum (the zone floats): max delta_n - min delta_n &lt;= t</source>
-        <translation>ISO 1101 forma de superficie, sin referencia (la zona flota): max delta_n - min delta_n &lt;= t</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2</source>
         <translation>ISO 1101 forma de superficie, con referencias (la zona está situada): cada delta_n dentro de ±t/2</translation>
     </message>
@@ -2408,6 +2416,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>ISO 1101 surface profile, with datums: the spread of delta_n exceeds t</source>
         <translation>ISO 1101 forma de superficie, con referencias: la dispersión de delta_n supera t</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
+        <translation>ISO 1101 forma de superficie, sin referencia (la zona flota a lo largo del eje): 2 min sobre dz de max |delta_n - dz n_z| &lt;= t</translation>
+    </message>
+    <message>
+        <source>the predicted deviation of feature %1 is not finite, so nothing can be said of it</source>
+        <translation>la desviación prevista del elemento %1 no es finita, así que no se puede decir nada de ella</translation>
     </message>
 </context>
 <context>

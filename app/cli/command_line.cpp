@@ -589,16 +589,30 @@ QJsonObject evaluationJson(const ToleranceEvaluation &e)
     return o;
 }
 
+QString requiredKindKeyword(RequiredStiffness::Kind kind)
+{
+    switch (kind) {
+    case RequiredStiffness::Kind::Found:
+        return QStringLiteral("found");
+    case RequiredStiffness::Kind::Window:
+        return QStringLiteral("window");
+    case RequiredStiffness::Kind::AnyStiffness:
+        return QStringLiteral("any");
+    case RequiredStiffness::Kind::NotReachable:
+        return QStringLiteral("not_reachable");
+    }
+    return {};
+}
+
 QJsonValue requiredJson(const std::optional<RequiredStiffness> &r)
 {
     if (!r)
         return QJsonValue::Null;
-    QJsonObject o{{QStringLiteral("kind"), r->kind == RequiredStiffness::Kind::Found ? QStringLiteral("found")
-                                           : r->kind == RequiredStiffness::Kind::AnyStiffness
-                                               ? QStringLiteral("any")
-                                               : QStringLiteral("not_reachable")}};
+    QJsonObject o{{QStringLiteral("kind"), requiredKindKeyword(r->kind)}};
     if (r->kind != RequiredStiffness::Kind::NotReachable)
         o.insert(QStringLiteral("N_per_um"), r->value_N_per_mm / 1000.0);
+    if (r->kind == RequiredStiffness::Kind::Window)
+        o.insert(QStringLiteral("fails_again_at_N_per_um"), r->upper_N_per_mm / 1000.0);
     return o;
 }
 

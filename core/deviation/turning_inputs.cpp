@@ -279,9 +279,10 @@ void resolveSupports(const Project &p, const DataLibrary &data, const DeviationO
         // The headstock centre; what the verdicts report is the tailstock's basis (both centres
         // take a value tried by the caller).
         const QString name = DeviationModel::tr("Headstock centre");
-        SupportStiffnessUsed used;
-        in.radialLeft = resolveCentre(c.centres, ranges.centreRadial, options, used, true, name, in.notes);
-        in.tangentialLeft = resolveCentre(c.centres, ranges.centreRadial, options, used, false, name, in.notes);
+        SupportStiffnessUsed tangential;
+        in.radialLeft =
+            resolveCentre(c.centres, ranges.centreRadial, options, in.headstockCentre, true, name, in.notes);
+        in.tangentialLeft = resolveCentre(c.centres, ranges.centreRadial, options, tangential, false, name, in.notes);
     }
     if (method == ClampingMethod::Chuck) {
         in.radialRight = in.tangentialRight = EndSupport::free();

@@ -67,8 +67,9 @@ struct TurningInputs {
     double supportEnd_mm = 0.0;   // right end of the part
     EndSupport radialLeft, radialRight, tangentialLeft, tangentialRight;
     bool spindleCharacterised = false;
-    SupportStiffnessUsed chuck;     // chuck face (chuck and chuck + tailstock)
-    SupportStiffnessUsed tailstock; // tailstock, or both centres between centres
+    SupportStiffnessUsed chuck;           // chuck face (chuck and chuck + tailstock)
+    SupportStiffnessUsed tailstock;       // tailstock, or both centres between centres
+    SupportStiffnessUsed headstockCentre; // between centres: the left centre on its own
     std::optional<ThermalDrift> thermal;
     double timeSinceStart_min = 0.0;
     double ambientTemperature_C = 20.0;

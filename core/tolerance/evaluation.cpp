@@ -205,6 +205,43 @@ void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, Toleranc
     say(e.condition, [&] { return QString(condition); });
 }
 
+// The width of the narrowest zone of the exact profile that holds every normal deviation when the
+// zone may slide along the axis (the only way a surface of revolution's exact profile can move
+// without a datum and keep its size; ISO 1101 scales it only with the OZ modifier): a slide dz
+// changes the normal distance by dz n_z, so the width is 2 min over dz of max |delta_n - dz n_z|.
+// For a cone n_z is constant and this is the spread of delta_n; for a round it is not. Convex in dz:
+// golden-section search over the slides that can matter.
+double floatingZoneWidth_um(const std::vector<std::pair<double, double>> &normals)
+{
+    double largestDeviation = 0.0;
+    double largestAxial = 0.0;
+    for (const auto &[deviation, axial] : normals) {
+        largestDeviation = std::max(largestDeviation, std::abs(deviation));
+        largestAxial = std::max(largestAxial, std::abs(axial));
+    }
+    const auto worst = [&normals](double dz) {
+        double w = 0.0;
+        for (const auto &[deviation, axial] : normals)
+            w = std::max(w, std::abs(deviation - dz * axial));
+        return w;
+    };
+    if (largestAxial < 1e-12)
+        return 2.0 * largestDeviation;
+    // At the best slide no deviation exceeds largestDeviation, so |dz| n_z,max <= 2 largestDeviation.
+    double lo = -2.0 * largestDeviation / largestAxial;
+    double hi = -lo;
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int i = 0; i < 200 && hi - lo > 1e-12 * (1.0 + std::abs(hi)); ++i) {
+        const double a = hi - ratio * (hi - lo);
+        const double b = lo + ratio * (hi - lo);
+        if (worst(a) <= worst(b))
+            hi = b; // the minimum lies in [lo, b]
+        else
+            lo = a;
+    }
+    return 2.0 * worst(0.5 * (lo + hi));
+}
+
 // Profile of a line or surface (ISO 1101:2017 clause 18, definitions of the line and surface profile tolerances; Valiño
 // et al. 2008 Fig. 4e). The deviation is taken normal to the surface: the radial one times cos(alpha), alpha the angle
 // of the surface to the axis at the station. Without datums the zone floats: it may sit anywhere, so the spread of the
@@ -223,6 +260,7 @@ void evaluateProfile(const Project &p, const Tolerance &t, const FeatureRef &fea
     const Contour target = targetContour(p, feature.side);
     double largest = -1e300;
     double smallest = 1e300;
+    std::vector<std::pair<double, double>> normals; // (delta_n [µm], axial part of the surface normal)
     for (const Station &st : f->stations) {
         const double h = 1e-4 * std::max(1.0, std::abs(s.to.z_mm - s.from.z_mm));
         const double z0 = std::max(s.from.z_mm, st.z_mm - h);
@@ -236,15 +274,18 @@ void evaluateProfile(const Project &p, const Tolerance &t, const FeatureRef &fea
         const double normal = deviation * kUmPerMm / std::sqrt(1.0 + slope * slope); // delta cos(alpha)
         largest = std::max(largest, normal);
         smallest = std::min(smallest, normal);
+        normals.emplace_back(normal, slope / std::sqrt(1.0 + slope * slope));
     }
     const double zone = t.zone_um.value_or(0.0);
     const double spread = largest - smallest;
     if (t.datums.isEmpty()) {
-        setValue(e, spread, zone);
-        e.verdict = spread <= zone ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+        const double floating = floatingZoneWidth_um(normals);
+        setValue(e, floating, zone);
+        e.verdict = floating <= zone ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
         say(e.condition, [&] {
             return QString(ToleranceVerdicts::tr(
-                "ISO 1101 surface profile, no datum (the zone floats): max delta_n - min delta_n <= t"));
+                "ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max "
+                "|delta_n - dz n_z| <= t"));
         });
         return;
     }

@@ -38,15 +38,19 @@ bool decided(const ToleranceEvaluation &e)
 
 using VerdictsAt = std::function<std::vector<ToleranceEvaluation>(double stiffness_N_per_mm)>;
 
-// The smallest stiffness with which each tolerance passes as programmed.
+// The smallest stiffness with which each tolerance passes as programmed, and the first stiffer grid
+// point where it fails again, if any.
 std::vector<RequiredStiffness> searchRequired(const VerdictsAt &verdictsAt, std::size_t count)
 {
     std::vector<int> firstPassing(count, -1);
+    std::vector<int> failsAgain(count, -1);
     for (int i = 0; i < kGridPoints; ++i) {
         const std::vector<ToleranceEvaluation> v = verdictsAt(gridStiffness(i));
         for (std::size_t t = 0; t < count && t < v.size(); ++t) {
             if (firstPassing[t] < 0 && passes(v[t]))
                 firstPassing[t] = i;
+            else if (firstPassing[t] >= 0 && failsAgain[t] < 0 && !passes(v[t]))
+                failsAgain[t] = i;
         }
     }
     std::vector<RequiredStiffness> out(count);
@@ -55,9 +59,15 @@ std::vector<RequiredStiffness> searchRequired(const VerdictsAt &verdictsAt, std:
             out[t].kind = RequiredStiffness::Kind::NotReachable;
             continue;
         }
-        if (firstPassing[t] == 0) {
+        if (firstPassing[t] == 0 && failsAgain[t] < 0) {
             out[t].kind = RequiredStiffness::Kind::AnyStiffness;
             out[t].value_N_per_mm = kSearchLow_N_per_mm;
+            continue;
+        }
+        if (firstPassing[t] == 0) { // passes at the bottom of the search, fails higher up
+            out[t].kind = RequiredStiffness::Kind::Window;
+            out[t].value_N_per_mm = kSearchLow_N_per_mm;
+            out[t].upper_N_per_mm = gridStiffness(failsAgain[t]);
             continue;
         }
         double failing = std::log(gridStiffness(firstPassing[t] - 1));
@@ -67,8 +77,10 @@ std::vector<RequiredStiffness> searchRequired(const VerdictsAt &verdictsAt, std:
             const std::vector<ToleranceEvaluation> v = verdictsAt(std::exp(mid));
             (t < v.size() && passes(v[t]) ? passing : failing) = mid;
         }
-        out[t].kind = RequiredStiffness::Kind::Found;
+        out[t].kind = failsAgain[t] < 0 ? RequiredStiffness::Kind::Found : RequiredStiffness::Kind::Window;
         out[t].value_N_per_mm = std::exp(passing);
+        if (failsAgain[t] >= 0)
+            out[t].upper_N_per_mm = gridStiffness(failsAgain[t]);
     }
     return out;
 }
@@ -109,8 +121,9 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
         return out;
     const TurningInputs &in = *out.compliant.inputs;
     out.machineIsRange = hasRange(in.chuck) || hasRange(in.tailstock);
-    out.someSupportRigid =
-        in.chuck.basis == SupportBasis::RigidNoData || in.tailstock.basis == SupportBasis::RigidNoData;
+    out.someSupportRigid = in.chuck.basis == SupportBasis::RigidNoData ||
+                           in.tailstock.basis == SupportBasis::RigidNoData ||
+                           in.headstockCentre.basis == SupportBasis::RigidNoData;
     const std::vector<ToleranceEvaluation> atCompliant = evaluateTolerances(project, out.compliant);
     std::vector<ToleranceEvaluation> atStiff;
     if (out.machineIsRange) {
@@ -143,8 +156,10 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
             e.range = RangeVerdict::NotDecided;
         else if (!e.stiff)
             e.range = RangeVerdict::NoRange;
-        else if (passes(e.compliant))
+        else if (passes(e.compliant) && passes(*e.stiff))
             e.range = RangeVerdict::PassesOnAnyMachine;
+        else if (passes(e.compliant))
+            e.range = RangeVerdict::PassesOnPartOfRange;
         else if (passes(*e.stiff))
             e.range = RangeVerdict::PassesIfStiffer;
         else
@@ -161,6 +176,8 @@ QString rangeVerdictKeyword(RangeVerdict verdict)
         return QStringLiteral("passes_on_any_machine");
     case RangeVerdict::PassesIfStiffer:
         return QStringLiteral("passes_if_stiffer");
+    case RangeVerdict::PassesOnPartOfRange:
+        return QStringLiteral("passes_on_part_of_range");
     case RangeVerdict::FailsEvenOnStiffest:
         return QStringLiteral("fails_even_on_stiffest");
     case RangeVerdict::NoRange:
@@ -176,6 +193,9 @@ QString requiredStiffnessText(const RequiredStiffness &r)
     switch (r.kind) {
     case RequiredStiffness::Kind::Found:
         return RangeVerdicts::tr("≥ %1 N/µm").arg(perMicrometre(r.value_N_per_mm));
+    case RequiredStiffness::Kind::Window:
+        return RangeVerdicts::tr("%1–%2 N/µm only")
+            .arg(perMicrometre(r.value_N_per_mm), perMicrometre(r.upper_N_per_mm));
     case RequiredStiffness::Kind::AnyStiffness:
         return RangeVerdicts::tr("any");
     case RequiredStiffness::Kind::NotReachable:
@@ -197,6 +217,8 @@ QString rangeVerdictText(const ToleranceRangeEvaluation &e)
                 .arg(perMicrometre(r->value_N_per_mm));
         return RangeVerdicts::tr("passes only on the stiffer machines of the range");
     }
+    case RangeVerdict::PassesOnPartOfRange:
+        return RangeVerdicts::tr("passes on the compliant machines of the range, not on the stiffest");
     case RangeVerdict::FailsEvenOnStiffest:
         return RangeVerdicts::tr("fails even on the stiffest machine of the range");
     case RangeVerdict::NoRange:
@@ -225,7 +247,10 @@ QString machineAssumptionText(const RangeEvaluation &r, const DataLibrary &data)
         parts << RangeVerdicts::tr("tailstock and centres not measured and no published stiffness: taken as rigid "
                                    "(optimistic); see the stiffness each tolerance needs");
     else if (in.tailstock.basis == SupportBasis::Measured)
-        parts << RangeVerdicts::tr("tailstock and centres as measured");
+        parts << RangeVerdicts::tr("tailstock as measured");
+    if (in.headstockCentre.basis == SupportBasis::RigidNoData && in.tailstock.basis != SupportBasis::RigidNoData)
+        parts << RangeVerdicts::tr("headstock centre not measured and no published stiffness: taken as rigid "
+                                   "(optimistic)");
     return parts.join(QStringLiteral("; "));
 }
 

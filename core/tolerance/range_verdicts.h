@@ -16,22 +16,27 @@ namespace tolturn {
 enum class RangeVerdict {
     PassesOnAnyMachine,  // passes at the compliant end of the range, so on any machine in it
     PassesIfStiffer,     // passes only on a machine stiffer than the required stiffness
+    PassesOnPartOfRange, // passes at the compliant end but not at the stiff end (a form error that a
+                         // stiffer support makes worse, e.g. a part between a chuck and a tailstock)
     FailsEvenOnStiffest, // fails at the stiff end of the range too
     NoRange,             // the machine was measured (or the clamping uses no ranged support)
     NotDecided,          // the characteristic is not predicted or cannot be evaluated
 };
 
 // The smallest radial stiffness of a support with which a tolerance passes as programmed, the
-// other supports as assumed (docs/model.md §2). Searched over 1 N/µm to 10⁶ N/µm, assuming that a
-// stiffer support never makes a deviation larger.
+// other supports as assumed (docs/model.md §2). Searched over 1 N/µm to 10⁶ N/µm. A stiffer support
+// does not always make a form error smaller (with a tailstock a stiffer chuck can tilt the part
+// more): where a stiffer grid point fails again the result is a window.
 struct RequiredStiffness {
     enum class Kind {
-        Found,        // value_N_per_mm is the threshold (to 0.5 %)
+        Found,        // value_N_per_mm is the threshold (to 0.5 %); every stiffer grid point passes
+        Window,       // passes from value_N_per_mm, but fails again at upper_N_per_mm (grid point)
         AnyStiffness, // passes even at 1 N/µm: the support does not decide it
-        NotReachable, // fails even at 10⁶ N/µm: stiffness alone will not bring it in
+        NotReachable, // fails at every stiffness searched: stiffness alone will not bring it in
     };
     Kind kind = Kind::AnyStiffness;
     double value_N_per_mm = 0.0;
+    double upper_N_per_mm = 0.0; // Window
 };
 
 struct ToleranceRangeEvaluation {

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Verdicts on a machine whose chuck stiffness is a published range, and the stiffness a tolerance
 // needs, against the closed form of a bar in a chuck held by one root spring.
+#include "core/io/project_file.h"
 #include "core/tolerance/range_verdicts.h"
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -125,6 +127,40 @@ private Q_SLOTS:
         QCOMPARE(rangeVerdictKeyword(tight.tolerances.front().range), QStringLiteral("fails_even_on_stiffest"));
     }
 
+    // A stiffer chuck does not always help: with a tailstock pin at the far end, the chuck's give lets
+    // the sleeve pivot, and the cylindricity of a heavy finishing cut (a_p 2 mm, f 0.3 mm) is least at
+    // a middling stiffness. The search reports the window in which 2 µm holds, and each of its
+    // edges is where the verdict changes when the chuck stiffness is set directly.
+    void stifferIsNotAlwaysBetter()
+    {
+        const ProjectParseResult read =
+            readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/hollow-sleeve-tailstock.tolturn"));
+        QVERIFY(read.project);
+        Project p = *read.project;
+        p.passes.back().depthOfCut_mm = 2.0;
+        p.passes.back().feed_mm_rev = 0.3;
+        for (Tolerance &t : p.tolerances) {
+            if (t.id == QLatin1String("T2"))
+                t.zone_um = 2.0;
+        }
+        const RangeEvaluation r = evaluateOverStiffnessRange(p, DataLibrary::builtIn());
+        const auto t2 = std::find_if(r.tolerances.begin(), r.tolerances.end(), [](const ToleranceRangeEvaluation &e) {
+            return e.compliant.toleranceId == QLatin1String("T2");
+        });
+        QVERIFY(t2 != r.tolerances.end() && t2->chuck);
+        QCOMPARE(t2->chuck->kind, RequiredStiffness::Kind::Window);
+        QVERIFY(t2->chuck->value_N_per_mm < t2->chuck->upper_N_per_mm);
+        const auto verdictAt = [&](double k) {
+            DeviationOptions o;
+            o.chuckStiffness_N_per_mm = k;
+            const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), o);
+            return evaluateTolerances(p, d).at(static_cast<std::size_t>(t2 - r.tolerances.begin())).verdict;
+        };
+        QVERIFY(verdictAt(0.99 * t2->chuck->value_N_per_mm) != Verdict::PassesAsProgrammed);
+        QCOMPARE(verdictAt(1.01 * t2->chuck->value_N_per_mm), Verdict::PassesAsProgrammed);
+        QVERIFY(verdictAt(t2->chuck->upper_N_per_mm) != Verdict::PassesAsProgrammed);
+    }
+
     // A measured spindle replaces the range: no stiff end, the ordinary verdict.
     void measuredMachineHasNoRange()
     {
@@ -136,6 +172,21 @@ private Q_SLOTS:
         QVERIFY(!r.machineIsRange);
         QVERIFY(!r.stiff);
         QCOMPARE(r.tolerances.front().range, RangeVerdict::NoRange);
+    }
+
+    // Between centres with only the tailstock measured: the headstock centre is still a rigid pin
+    // for want of data, and the result says so rather than "as measured".
+    void unmeasuredHeadstockCentreIsNamed()
+    {
+        Project p = chuckedBar(40.0);
+        p.clamping = {ClampingMethod::BetweenCentres, 0.0};
+        p.part.outer.segments.front().from.r_mm = 0.0;
+        p.characterisation.tailstock = SupportStiffness{2.0e5, 2.0e5};
+        p.characterisation.source = QStringLiteral("test");
+        const RangeEvaluation r = evaluateOverStiffnessRange(p, DataLibrary::builtIn(), radialLoad(200));
+        QVERIFY(r.compliant.inputs);
+        QVERIFY(r.someSupportRigid);
+        QVERIFY(machineAssumptionText(r, DataLibrary::builtIn()).contains(QStringLiteral("headstock centre")));
     }
 };
 

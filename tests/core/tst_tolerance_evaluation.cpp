@@ -171,6 +171,38 @@ private Q_SLOTS:
         QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 4.4, a), r).verdict, Verdict::NeedsProfileCorrection);
     }
 
+    // A floating zone may slide along the axis but not grow: on a round that is not the same as a
+    // constant normal offset. The R5 edge round O3 (from Ø50 at z 100, horizontal there, down to Ø40 at
+    // z 105, vertical there) with a constant radial deviation of 3 µm has delta_n = 3 µm at z 100 (the
+    // normal is radial, n_z = 0: no slide changes it) and about 0 at z 105 (the normal is axial). The
+    // narrowest sliding zone is 2 x 3 = 6 µm wide, though the spread is only 3 µm: t = 5 fails, 6.1
+    // passes. On the cone O3 of part() a constant radial deviation is a pure slide: spread 0, it passes.
+    void floatingProfileOfARoundMaySlideButNotGrow()
+    {
+        Project p = part();
+        Segment &round = p.part.outer.segments.at(2);
+        round.kind = SegmentKind::Radius;
+        round.to = {105, 20};
+        round.arcRadius_mm = 5.0;
+        round.arcDirection = ArcDirection::Clockwise;
+        p.part.outer.segments.at(3).from = {105, 20};
+        p.part.outer.segments.at(3).to = {105, 0};
+        p.tolerances = {geometric(ToleranceType::Profile, "O3", 5)};
+        DeviationResult r;
+        r.features = {curve("O3", SegmentKind::Radius, 100, 105, [](double) { return 3.0; })};
+        const ToleranceEvaluation tight = evaluateTolerances(p, r).front();
+        QVERIFY2(std::abs(*tight.value_um - 6.0) < 1e-3, qPrintable(QString::number(*tight.value_um)));
+        QCOMPARE(tight.verdict, Verdict::NeedsProfileCorrection);
+        p.tolerances.front().zone_um = 6.1;
+        QCOMPARE(evaluateTolerances(p, r).front().verdict, Verdict::PassesAsProgrammed);
+
+        DeviationResult cone;
+        cone.features = {curve("O3", SegmentKind::Cone, 100, 110, [](double) { return 3.0; })};
+        const ToleranceEvaluation slid = evaluate(geometric(ToleranceType::Profile, "O3", 0.5), cone);
+        QVERIFY(std::abs(*slid.value_um) < 1e-6);
+        QCOMPARE(slid.verdict, Verdict::PassesAsProgrammed);
+    }
+
     // The program aims at the target contour: with Ø50 h6 on O2 (middle of the zone -8 µm on the
     // diameter) the cone O3 moves with its cylinder by -4 µm on the radius at both ends (its right end
     // meets only the face O4). With no deflection its normal deviation is -4 cos(alpha) = -3.577709 µm

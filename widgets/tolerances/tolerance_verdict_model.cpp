@@ -191,6 +191,7 @@ QColor ToleranceVerdictModel::rangeVerdictColor(const ToleranceRangeEvaluation &
     case RangeVerdict::PassesOnAnyMachine:
         return verdictColor(Verdict::PassesAsProgrammed);
     case RangeVerdict::PassesIfStiffer:
+    case RangeVerdict::PassesOnPartOfRange:
         return verdictColor(Verdict::PassesAfterOffset);
     case RangeVerdict::FailsEvenOnStiffest:
         return verdictColor(Verdict::NeedsProfileCorrection);
