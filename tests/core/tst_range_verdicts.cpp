@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Verdicts on a machine whose chuck stiffness is a published range, and the stiffness a tolerance
 // needs, against the closed form of a bar in a chuck held by one root spring.
+#include "tests/core/test_support.h"
+
 #include "core/io/project_file.h"
 #include "core/tolerance/range_verdicts.h"
 
@@ -14,26 +16,15 @@ using namespace tolturn;
 
 namespace {
 
+using test::seg;
+
 constexpr double kPi = std::numbers::pi;
-// C45E-N in resources/data/materials.json: E = 210000 MPa, nu = 0.3; shear factor of a solid
-// circle after Cowper (1966).
-constexpr double kE = 210000.0;
-constexpr double kNu = 0.3;
-constexpr double kG = kE / (2 * (1 + kNu));
-constexpr double kKappaSolid = 6 * (1 + kNu) / (7 + 6 * kNu);
+constexpr double kE = test::kSteelE_MPa;
+constexpr double kG = test::kSteelG_MPa;
+constexpr double kKappaSolid = test::kKappaSolidCircle;
 // machines.json "uncharacterised_supports": Ito (2008), 66 and 216 N/µm.
 constexpr double kCompliant = 66000.0;
 constexpr double kStiff = 216000.0;
-
-Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
-{
-    Segment s;
-    s.id = QString::fromLatin1(id);
-    s.kind = kind;
-    s.from = a;
-    s.to = b;
-    return s;
-}
 
 // A Ø30 bar of C45E-N, 140 mm long, 40 mm of it in the chuck jaws: 100 mm from the chuck face to
 // its free end. Its diameter O2 carries explicit limits ±t/2.

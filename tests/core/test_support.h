@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Helpers shared by the core tests: profile segments written as on a drawing, and the elastic
+// constants of the steel the tests' bars are made of.
+#pragma once
+
+#include "core/part/profile.h"
+
+#include <QString>
+
+namespace tolturn::test {
+
+// C45E-N in resources/data/materials.json: E = 210000 MPa, nu = 0.3 (EN 1993-1-1); the shear
+// factor of a solid circle after Cowper (1966).
+inline constexpr double kSteelE_MPa = 210000.0;
+inline constexpr double kSteelNu = 0.3;
+inline constexpr double kSteelG_MPa = kSteelE_MPa / (2 * (1 + kSteelNu));
+inline constexpr double kKappaSolidCircle = 6 * (1 + kSteelNu) / (7 + 6 * kSteelNu);
+
+inline Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
+{
+    Segment s;
+    s.id = QString::fromLatin1(id);
+    s.kind = kind;
+    s.from = a;
+    s.to = b;
+    return s;
+}
+
+} // namespace tolturn::test
