@@ -203,11 +203,12 @@ double spindleSpeedAt(const TurningInputs &in, double radius_mm)
 std::vector<std::vector<double>> thermalAlongPass(const InfluenceTable &table, const TurningInputs &in,
                                                   ContourSide side)
 {
-    std::vector<std::vector<double>> drift(table.features.size());
+    std::vector<std::vector<double>> drift;
+    if (!in.thermal)
+        return drift; // no drift: nothing to allocate on the optimiser's path
+    drift.resize(table.features.size());
     for (std::size_t i = 0; i < table.features.size(); ++i)
         drift[i].assign(table.features[i].z_mm.size(), 0.0);
-    if (!in.thermal)
-        return drift;
     const ThermalDrift &t = *in.thermal;
 
     struct Point {
@@ -270,11 +271,7 @@ Station evaluateStation(const StationInfluence &si, double z, double r0, bool ou
     st.radial.thermal_mm = outer ? drift : -drift;
     st.tangential.spindleChuck_mm = f.tangential_N * si.spindleTangential_mm_per_N;
     st.tangential.workpiece_mm = f.tangential_N * si.tangentialPerTangential_mm_per_N - st.tangential.spindleChuck_mm;
-    // Exact combination (MODEL §1): the tool tip sits at (r0 + d_r, d_t) from the deflected axis.
-    const double dr = st.radial.total_mm();
-    const double dt = st.tangential.total_mm();
-    const double rr = outer ? r0 + dr : r0 - dr;
-    st.radiusError_mm = std::sqrt(rr * rr + dt * dt) - r0;
+    st.radiusError_mm = radiusError_mm(r0, st.radial.total_mm(), st.tangential.total_mm(), outer);
     st.sectionRotation_rad = f.radial_N * si.rotationPerRadial_rad_per_N + f.axial_N * si.rotationPerAxial_rad_per_N;
     return st;
 }
@@ -341,10 +338,10 @@ DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceT
         FeatureDeviation fd{f.featureId, f.side, f.kind, {}};
         fd.stations.reserve(f.stations.size());
         const bool outer = f.side == ContourSide::Outer;
-        const std::vector<double> &drift = (outer ? outerDrift : innerDrift)[k];
+        const std::vector<std::vector<double>> &drifts = outer ? outerDrift : innerDrift;
         for (std::size_t i = 0; i < f.stations.size(); ++i) {
             const Station st = evaluateStation(f.stations[i], f.z_mm[i], f.nominalRadius_mm[i], outer, in,
-                                               table.toolpostCompliance_mm_per_N, drift[i]);
+                                               table.toolpostCompliance_mm_per_N, drifts.empty() ? 0.0 : drifts[k][i]);
             const double diameter = 2.0 * st.nominalRadius_mm;
             const double speed = std::numbers::pi * diameter * st.spindleSpeed_rpm / 1000.0;
             result.maxPower_kW = std::max(result.maxPower_kW, cuttingPower_kW(in.forces.tangential_N, speed));
@@ -359,6 +356,12 @@ DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceT
     result.theoreticalRz_um = theoreticalRz_um(in.pass.feed_mm_rev, in.noseRadius_mm);
     result.inputs = in;
     return result;
+}
+
+double radiusError_mm(double r0, double radial_mm, double tangential_mm, bool outer)
+{
+    const double rr = outer ? r0 + radial_mm : r0 - radial_mm;
+    return std::sqrt(rr * rr + tangential_mm * tangential_mm) - r0;
 }
 
 DeviationResult deviationFor(const PartProfile &part, const TurningInputs &in, const DeviationOptions &options)

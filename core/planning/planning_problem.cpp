@@ -114,6 +114,7 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     // The finishing pass's deflection with the thinnest stock it may leave on the uncut side
     // (the smallest depth): the least stiff section, so the tolerance constraints err on the safe side.
     p.m_table = buildInfluenceTable(project.part, p.m_inputs, kStations, p.m_depth.min);
+    p.m_targets = programTargets(withPass);
     p.m_maxPower_kW = s.maxPower_kW ? s.maxPower_kW : p.m_inputs.maxPower_kW;
     p.m_maxTorque_Nm = s.maxTorque_Nm;
     p.m_maxSpeed_rpm = s.maxSpindleSpeed_rpm ? s.maxSpindleSpeed_rpm : p.m_inputs.maxSpindleSpeed_rpm;
@@ -262,7 +263,8 @@ std::vector<ConstraintValue> PlanningProblem::toleranceConstraints(const PassCon
     in.pass.feed_mm_rev = pass.feed_mm_rev;
     in.pass.depthOfCut_mm = pass.depthOfCut_mm;
     const DeviationResult deviation = evaluateInfluenceTable(m_project.part, m_table, in);
-    for (const ToleranceEvaluation &e : evaluateTolerances(m_project, deviation, EvaluationDetail::ValuesOnly)) {
+    for (const ToleranceEvaluation &e :
+         evaluateTolerances(m_project, deviation, EvaluationDetail::ValuesOnly, &m_targets)) {
         if (e.value_um && e.limit_um && *e.limit_um > 0.0)
             out.push_back(
                 {QStringLiteral("tolerances"), e.toleranceId, *e.value_um, *e.limit_um, QStringLiteral("µm")});

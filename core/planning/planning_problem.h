@@ -5,6 +5,7 @@
 #include "core/data/data_library.h"
 #include "core/deviation/deviation_model.h"
 #include "core/project/project.h"
+#include "core/tolerance/target_contour.h"
 
 #include <QString>
 
@@ -125,6 +126,7 @@ private:
     Project m_project;
     TurningInputs m_inputs;
     InfluenceTable m_table;
+    ProgramTargets m_targets; // what the finishing program aims at, for the tolerance constraints
     std::function<CuttingForces(double, double)> m_forceModel;
     ValueRange m_speed, m_feed, m_depth;
     double m_radialStock_mm = 0.0;

@@ -108,8 +108,8 @@ bool sizeLimits(const Tolerance &t, double nominal_mm, ToleranceEvaluation &e)
 // D'_Md - D'_md = 2|delta_TMd - delta_Tmd| (eq. 14) must fit in t (eq. 15). "As programmed" is the
 // finishing path programmed to the middle of the tolerance zone, as CNC programs are written; the
 // predicted size is that plus twice the radius error.
-void evaluateDiameter(const Project &p, const Tolerance &t, const FeatureRef &feature, const DeviationResult &r,
-                      ToleranceEvaluation &e)
+void evaluateDiameter(const ProgramTargets &targets, const Tolerance &t, const FeatureRef &feature,
+                      const DeviationResult &r, ToleranceEvaluation &e)
 {
     const FeatureDeviation *f = stationsOf(r, t.featureId);
     if (!f) {
@@ -122,7 +122,7 @@ void evaluateDiameter(const Project &p, const Tolerance &t, const FeatureRef &fe
     // What the program aims at (targetContour): the middle of the zone, or of the zone all the
     // feature's diameter tolerances allow.
     double programmed = 0.5 * (*e.upper_um + *e.lower_um);
-    for (const DiameterTarget &target : diameterTargets(p)) {
+    for (const DiameterTarget &target : targets.diameters) {
         if (target.featureId == t.featureId)
             programmed = 0.5 * (target.upper_um + target.lower_um);
     }
@@ -215,10 +215,22 @@ double floatingZoneWidth_um(const std::vector<std::pair<double, double>> &normal
 {
     double largestDeviation = 0.0;
     double largestAxial = 0.0;
+    double lowest = 1e300;
+    double highest = -1e300;
+    double axialLow = 1e300;
+    double axialHigh = -1e300;
     for (const auto &[deviation, axial] : normals) {
         largestDeviation = std::max(largestDeviation, std::abs(deviation));
         largestAxial = std::max(largestAxial, std::abs(axial));
+        lowest = std::min(lowest, deviation);
+        highest = std::max(highest, deviation);
+        axialLow = std::min(axialLow, axial);
+        axialHigh = std::max(axialHigh, axial);
     }
+    if (normals.empty())
+        return 0.0;
+    if (axialHigh - axialLow < 1e-12 && largestAxial >= 1e-12)
+        return highest - lowest; // a cone or a chamfer: the slide is a constant normal offset
     const auto worst = [&normals](double dz) {
         double w = 0.0;
         for (const auto &[deviation, axial] : normals)
@@ -231,7 +243,7 @@ double floatingZoneWidth_um(const std::vector<std::pair<double, double>> &normal
     double lo = -2.0 * largestDeviation / largestAxial;
     double hi = -lo;
     const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    for (int i = 0; i < 200 && hi - lo > 1e-12 * (1.0 + std::abs(hi)); ++i) {
+    for (int i = 0; i < 80 && hi - lo > 1e-12 * (1.0 + std::abs(hi)); ++i) {
         const double a = hi - ratio * (hi - lo);
         const double b = lo + ratio * (hi - lo);
         if (worst(a) <= worst(b))
@@ -248,8 +260,8 @@ double floatingZoneWidth_um(const std::vector<std::pair<double, double>> &normal
 // normal deviations must fit in t. With datums the zone is located on the theoretically exact profile, which the
 // program follows: every normal deviation lies within ±t/2. The paper's eq. 22, delta_TMd + delta_Tmd <= t /
 // cos(alpha), is only necessary for either and is not used (MODEL §3).
-void evaluateProfile(const Project &p, const Tolerance &t, const FeatureRef &feature, const DeviationResult &r,
-                     ToleranceEvaluation &e)
+void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const FeatureRef &feature,
+                     const DeviationResult &r, ToleranceEvaluation &e)
 {
     const FeatureDeviation *f = stationsOf(r, t.featureId);
     if (!f) {
@@ -257,7 +269,7 @@ void evaluateProfile(const Project &p, const Tolerance &t, const FeatureRef &fea
         return;
     }
     const Segment &s = *feature.segment;
-    const Contour target = targetContour(p, feature.side);
+    const Contour &target = feature.side == ContourSide::Outer ? targets.outer : targets.inner;
     double largest = -1e300;
     double smallest = 1e300;
     std::vector<std::pair<double, double>> normals; // (delta_n [µm], axial part of the surface normal)
@@ -326,7 +338,8 @@ void notPredicted(ToleranceEvaluation &e, const QString &reason)
     say(e.reason, [&] { return QString(reason); });
 }
 
-ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const DeviationResult &r)
+ToleranceEvaluation evaluateOne(const Project &p, const ProgramTargets &targets, const Tolerance &t,
+                                const DeviationResult &r)
 {
     ToleranceEvaluation e;
     e.toleranceId = t.id;
@@ -340,7 +353,7 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
     }
     switch (t.type) {
     case ToleranceType::Diameter:
-        evaluateDiameter(p, t, *feature, r, e);
+        evaluateDiameter(targets, t, *feature, r, e);
         break;
     case ToleranceType::Length:
         evaluateLength(p, t, r, e);
@@ -370,7 +383,7 @@ ToleranceEvaluation evaluateOne(const Project &p, const Tolerance &t, const Devi
         evaluateRadialSpread(t, r, e, ToleranceVerdicts::tr("Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| <= t"));
         break;
     case ToleranceType::Profile:
-        evaluateProfile(p, t, *feature, r, e);
+        evaluateProfile(targets, t, *feature, r, e);
         break;
     case ToleranceType::Coaxiality:
         notPredicted(e, ToleranceVerdicts::tr(
@@ -412,7 +425,7 @@ void refuseNonFinite(ToleranceEvaluation &e)
 } // namespace
 
 std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, const DeviationResult &result,
-                                                    EvaluationDetail detail)
+                                                    EvaluationDetail detail, const ProgramTargets *targets)
 {
     struct TextMode {
         bool previous = t_withText;
@@ -424,8 +437,9 @@ std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, cons
 
     std::vector<ToleranceEvaluation> out;
     out.reserve(project.tolerances.size());
+    const ProgramTargets own = targets ? ProgramTargets{} : programTargets(project);
     for (const Tolerance &t : project.tolerances) {
-        out.push_back(evaluateOne(project, t, result));
+        out.push_back(evaluateOne(project, targets ? *targets : own, t, result));
         refuseNonFinite(out.back());
     }
     return out;

@@ -4,6 +4,7 @@
 #include "core/common/diagnostic.h"
 #include "core/deviation/deviation_model.h"
 #include "core/project/project.h"
+#include "core/tolerance/target_contour.h"
 
 #include <QString>
 
@@ -50,8 +51,11 @@ enum class EvaluationDetail {
 // Evaluates every tolerance of `project` against the predicted deviation `result` (computeDeviation,
 // or any curves with the same structure), with the acceptance conditions of Valiño et al. (2008),
 // Fig. 4 and eq. 9–24.
+// `targets`, when given, are programTargets(project) formed before: the optimiser evaluates one
+// project thousands of times.
 [[nodiscard]] std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, const DeviationResult &result,
-                                                                  EvaluationDetail detail = EvaluationDetail::WithText);
+                                                                  EvaluationDetail detail = EvaluationDetail::WithText,
+                                                                  const ProgramTargets *targets = nullptr);
 
 [[nodiscard]] QString verdictKeyword(Verdict verdict); // "passes", "passes_after_offset", ...
 [[nodiscard]] QString verdictName(Verdict verdict);    // for people, translated

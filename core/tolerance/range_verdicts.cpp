@@ -86,9 +86,28 @@ std::vector<RequiredStiffness> searchRequired(const VerdictsAt &verdictsAt, std:
 }
 
 std::vector<ToleranceEvaluation> verdictsWith(const Project &project, const TurningInputs &inputs,
-                                              const DeviationOptions &options)
+                                              const DeviationOptions &options, const ProgramTargets &targets)
 {
-    return evaluateTolerances(project, deviationFor(project.part, inputs, options), EvaluationDetail::ValuesOnly);
+    return evaluateTolerances(project, deviationFor(project.part, inputs, options), EvaluationDetail::ValuesOnly,
+                              &targets);
+}
+
+// A part held by the chuck alone is statically determinate: the family's spring K at the chuck
+// face (held against tilt) moves it as a rigid body by F/K, radially F_r/K and tangentially F_t/K,
+// whatever else deflects; faces do not turn with it. So the deviation at any K follows from one
+// evaluation exactly, without solving the beam again.
+DeviationResult withChuckTranslation(DeviationResult d, double k_N_per_mm)
+{
+    const CuttingForces &f = d.inputs->forces;
+    for (FeatureDeviation &feature : d.features) {
+        for (Station &st : feature.stations) {
+            st.radial.spindleChuck_mm = f.radial_N / k_N_per_mm;
+            st.tangential.spindleChuck_mm = f.tangential_N / k_N_per_mm;
+            st.radiusError_mm = radiusError_mm(st.nominalRadius_mm, st.radial.total_mm(), st.tangential.total_mm(),
+                                               feature.side == ContourSide::Outer);
+        }
+    }
+    return d;
 }
 
 bool hasRange(const SupportStiffnessUsed &s)
@@ -137,12 +156,23 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
     std::vector<RequiredStiffness> tailstock;
     // The project is resolved once; the searches vary only the support they are about.
     const ClampingMethod method = project.clamping.method;
-    if (method != ClampingMethod::BetweenCentres && !options.workpieceOnly)
-        chuck =
-            searchRequired([&](double k) { return verdictsWith(project, withChuckStiffness(in, k), compliant); }, n);
+    const ProgramTargets targets = programTargets(project);
+    if (method == ClampingMethod::Chuck && !options.workpieceOnly) {
+        const DeviationResult base = deviationFor(project.part, withChuckStiffness(in, gridStiffness(0)), compliant);
+        chuck = searchRequired(
+            [&](double k) {
+                return evaluateTolerances(project, withChuckTranslation(base, k), EvaluationDetail::ValuesOnly,
+                                          &targets);
+            },
+            n);
+    } else if (method == ClampingMethod::ChuckTailstock && !options.workpieceOnly) {
+        chuck = searchRequired(
+            [&](double k) { return verdictsWith(project, withChuckStiffness(in, k), compliant, targets); }, n);
+    }
     if (method != ClampingMethod::Chuck && !options.workpieceOnly)
         tailstock = searchRequired(
-            [&](double k) { return verdictsWith(project, withTailstockStiffness(in, k, method), compliant); }, n);
+            [&](double k) { return verdictsWith(project, withTailstockStiffness(in, k, method), compliant, targets); },
+            n);
     for (std::size_t i = 0; i < n; ++i) {
         ToleranceRangeEvaluation e;
         e.compliant = atCompliant[i];

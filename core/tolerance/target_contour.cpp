@@ -113,6 +113,12 @@ Contour targetContour(const Project &project, ContourSide side)
     return contour;
 }
 
+ProgramTargets programTargets(const Project &project)
+{
+    return {diameterTargets(project), targetContour(project, ContourSide::Outer),
+            targetContour(project, ContourSide::Inner)};
+}
+
 std::optional<double> targetRadius_mm(const Contour &target, const QString &featureId, double z_mm)
 {
     for (const Segment &s : target.segments) {

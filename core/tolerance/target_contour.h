@@ -33,6 +33,15 @@ struct DiameterTarget {
 // (a cone joining two toleranced diameters directly) follows the nearer cylinder.
 [[nodiscard]] Contour targetContour(const Project &project, ContourSide side);
 
+// Everything the program aims at, formed once: for callers that evaluate one project many times.
+struct ProgramTargets {
+    std::vector<DiameterTarget> diameters;
+    Contour outer;
+    Contour inner;
+};
+
+[[nodiscard]] ProgramTargets programTargets(const Project &project);
+
 // The radius the finishing program aims at on a feature at z: the target contour's.
 [[nodiscard]] std::optional<double> targetRadius_mm(const Contour &target, const QString &featureId, double z_mm);
 
