@@ -106,8 +106,7 @@ void DataLibrary::readMaterials(const QString &path)
     m_defaultFeedRatio = r.value(defaults, QStringLiteral("feed_to_cutting_ratio"), QStringLiteral("defaults"), true);
     m_defaultPassiveRatio =
         r.value(defaults, QStringLiteral("passive_to_cutting_ratio"), QStringLiteral("defaults"), true);
-    m_defaultTaylorN =
-        r.value(defaults, QStringLiteral("taylor_n_carbide_turning"), QStringLiteral("defaults"), false);
+    m_defaultTaylorN = r.value(defaults, QStringLiteral("taylor_n_carbide_turning"), QStringLiteral("defaults"), false);
     const QJsonArray list = r.root().value(QStringLiteral("materials")).toArray();
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QJsonObject o = list.at(i).toObject();

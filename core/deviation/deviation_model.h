@@ -28,7 +28,7 @@ struct Contributions {
 
 // The machined radius less nominal from the radial and tangential deviation at a station (MODEL §1):
 // the tool tip sits at (r0 ± d_r, d_t) from the deflected axis, + on an outer surface.
-[[nodiscard]] double radiusError_mm(double nominalRadius_mm, double radial_mm, double tangential_mm, bool outer);
+[[nodiscard]] double radiusError_mm(double r0, double radial_mm, double tangential_mm, bool outer);
 
 struct Station {
     double z_mm = 0.0;

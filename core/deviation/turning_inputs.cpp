@@ -54,7 +54,7 @@ std::optional<SourcedValue> enteringAngleOf(const QString &holderCode, const Dat
 // The holder's entering angle, or an error naming the holder.
 std::optional<SourcedValue> holderEnteringAngle(const Project &p, const DataLibrary &data, Diagnostics &out)
 {
-    const auto angle = enteringAngleOf(p.tool.holderCode, data);
+    auto angle = enteringAngleOf(p.tool.holderCode, data);
     if (!angle)
         out.push_back(makeError(
             QStringLiteral("tool.holder"),

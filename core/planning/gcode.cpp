@@ -2,8 +2,8 @@
 #include "core/planning/gcode.h"
 
 #include "core/common/library_info.h"
-#include "core/tolerance/target_contour.h"
 #include "core/project/keywords.h"
+#include "core/tolerance/target_contour.h"
 
 #include <QTextStream>
 
