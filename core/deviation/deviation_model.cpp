@@ -22,11 +22,6 @@ struct DeviationModel {
     Q_DECLARE_TR_FUNCTIONS(DeviationModel)
 };
 
-QString num(double v)
-{
-    return formatNumber(v);
-}
-
 } // namespace
 
 namespace {
@@ -387,7 +382,7 @@ DeviationResult computeDeviation(const Project &project, const DataLibrary &data
             makeWarning(QStringLiteral("passes"),
                         DeviationModel::tr("the pass needs %1 kW of cutting power, more than the machine's "
                                            "%2 kW")
-                            .arg(num(result.maxPower_kW), num(*in.maxPower_kW))));
+                            .arg(formatNumber(result.maxPower_kW), formatNumber(*in.maxPower_kW))));
     return result;
 }
 

@@ -2,6 +2,8 @@
 // The workpiece beam model against closed forms of textbook beams, the papers' eq. 6 for
 // stepped hollow bars, mesh convergence on a cone, Maxwell–Betti reciprocity, the moving-load
 // sweep against a direct solve, and the spindle–chuck springs against the printed eq. 3 terms.
+#include "tests/core/test_support.h"
+
 #include "core/mechanics/moving_load.h"
 #include "core/mechanics/spindle_chuck.h"
 
@@ -15,18 +17,10 @@ using namespace tolturn;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kE = 210000.0; // MPa
-constexpr double kNu = 0.3;
+constexpr double kE = test::kSteelE_MPa;
+constexpr double kNu = test::kSteelNu;
 
-Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
-{
-    Segment s;
-    s.id = QString::fromLatin1(id);
-    s.kind = kind;
-    s.from = a;
-    s.to = b;
-    return s;
-}
+using test::seg;
 
 // A bar of length L, outer radius ro, bore ri (0: solid), as a part profile.
 PartProfile uniformBar(double length, double ro, double ri)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The deviation model from a project to per-station contributions, against closed forms, and its
 // named errors for bad input.
+#include "tests/core/test_support.h"
+
 #include "core/deviation/deviation_model.h"
 #include "core/deviation/stiffness_calibration.h"
 #include "core/io/project_file.h"
@@ -16,21 +18,12 @@ using namespace tolturn;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// C45E-N in resources/data/materials.json: E = 210000 MPa, nu = 0.3 (EN 1993-1-1).
-constexpr double kE = 210000.0;
-constexpr double kNu = 0.3;
-constexpr double kG = kE / (2 * (1 + kNu));
-constexpr double kKappaSolid = 6 * (1 + kNu) / (7 + 6 * kNu); // Cowper (1966), solid circle
+constexpr double kE = test::kSteelE_MPa;
+constexpr double kNu = test::kSteelNu;
+constexpr double kG = test::kSteelG_MPa;
+constexpr double kKappaSolid = test::kKappaSolidCircle;
 
-Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
-{
-    Segment s;
-    s.id = QString::fromLatin1(id);
-    s.kind = kind;
-    s.from = a;
-    s.to = b;
-    return s;
-}
+using test::seg;
 
 // A plain bar Ø2r x L of C45E-N, one finishing pass, a CNMG insert in a PCLNR holder.
 Project barProject(double r, double length, ClampingMethod method, double clamped)
