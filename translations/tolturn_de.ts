@@ -1721,6 +1721,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>headstock centre not measured and no published stiffness: taken as rigid (optimistic)</source>
         <translation>Spindelstockspitze nicht gemessen und keine veröffentlichte Steifigkeit: als starr angenommen (optimistisch)</translation>
     </message>
+    <message>
+        <source>thermal drift not measured: taken as zero (optimistic)</source>
+        <translation>Wärmedrift nicht gemessen: als null angenommen (optimistisch)</translation>
+    </message>
 </context>
 <context>
     <name>Report</name>

@@ -1721,6 +1721,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>headstock centre not measured and no published stiffness: taken as rigid (optimistic)</source>
         <translation>punto del cabezal no medido y sin rigidez publicada: se toma como rígido (optimista)</translation>
     </message>
+    <message>
+        <source>thermal drift not measured: taken as zero (optimistic)</source>
+        <translation>deriva térmica no medida: se toma como cero (optimista)</translation>
+    </message>
 </context>
 <context>
     <name>Report</name>

@@ -140,6 +140,7 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
         return out;
     const TurningInputs &in = *out.compliant.inputs;
     out.machineIsRange = hasRange(in.chuck) || hasRange(in.tailstock);
+    out.thermalTakenAsZero = !options.workpieceOnly && !in.thermal;
     out.someSupportRigid = in.chuck.basis == SupportBasis::RigidNoData ||
                            in.tailstock.basis == SupportBasis::RigidNoData ||
                            in.headstockCentre.basis == SupportBasis::RigidNoData;
@@ -281,6 +282,9 @@ QString machineAssumptionText(const RangeEvaluation &r, const DataLibrary &data)
     if (in.headstockCentre.basis == SupportBasis::RigidNoData && in.tailstock.basis != SupportBasis::RigidNoData)
         parts << RangeVerdicts::tr("headstock centre not measured and no published stiffness: taken as rigid "
                                    "(optimistic)");
+    // Zero drift is an ideal too: said here, where the verdicts are read, not only in the notes.
+    if (r.thermalTakenAsZero)
+        parts << RangeVerdicts::tr("thermal drift not measured: taken as zero (optimistic)");
     return parts.join(QStringLiteral("; "));
 }
 

@@ -51,8 +51,9 @@ struct RangeEvaluation {
     DeviationResult compliant;
     std::optional<DeviationResult> stiff; // where a range applies
     std::vector<ToleranceRangeEvaluation> tolerances;
-    bool machineIsRange = false;   // some support is a published range
-    bool someSupportRigid = false; // some support is neither measured nor published: rigid
+    bool machineIsRange = false;     // some support is a published range
+    bool someSupportRigid = false;   // some support is neither measured nor published: rigid
+    bool thermalTakenAsZero = false; // no thermal characterisation: no drift
 };
 
 // The verdicts of `project` at both ends of the stiffness range of its machine's unmeasured
