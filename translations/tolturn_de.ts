@@ -303,24 +303,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Rangfolge als JSON ausgeben.</translation>
     </message>
     <message>
-        <source>File to write.</source>
-        <translation>Zu schreibende Datei.</translation>
-    </message>
-    <message>
-        <source>Correct the path where a tolerance needs it (offset or profile).</source>
-        <translation>Die Bahn korrigieren, wo eine Toleranz es erfordert (konstante Korrektur oder Konturkorrektur).</translation>
-    </message>
-    <message>
-        <source>give one project file and -o FILE</source>
-        <translation>geben Sie eine Projektdatei und -o DATEI an</translation>
-    </message>
-    <message>
         <source>cannot write &apos;%1&apos;: %2</source>
         <translation>„%1“ kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <source>%1: %2, residual %3 -&gt; %4 µm %5</source>
-        <translation>%1: %2, Restabweichung %3 -&gt; %4 µm %5</translation>
     </message>
     <message>
         <source>PDF file to write.</source>
@@ -369,10 +353,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason.</source>
         <translation>Der optimale Plan für Futter, zwischen Spitzen sowie Futter + Reitstock, nach Rang geordnet, mit Begründung.</translation>
-    </message>
-    <message>
-        <source>The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a tolerance needs it.</source>
-        <translation>Die Schlichtbahn der Außenkontur als G-Code nach ISO 6983, nominal oder nur dort kompensiert, wo eine Toleranz es erfordert.</translation>
     </message>
     <message>
         <source>The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, clamping ranking, compensation, assumptions and sources.</source>
@@ -585,6 +565,128 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Tailstock</source>
         <translation>Reitstock</translation>
+    </message>
+</context>
+<context>
+    <name>GCode</name>
+    <message>
+        <source>No compensation: toleranced diameters at the middle of their zone</source>
+        <translation>Keine Kompensation: tolerierte Durchmesser in der Mitte ihrer Toleranzzone</translation>
+    </message>
+    <message>
+        <source>%1 offset %2 um on diameter</source>
+        <translation>%1 Korrektur %2 um auf den Durchmesser</translation>
+    </message>
+    <message>
+        <source>%1 profile corrected by the predicted deviation</source>
+        <translation>%1 Kontur um die vorhergesagte Abweichung korrigiert</translation>
+    </message>
+    <message>
+        <source>Compensated path: no feature needs a correction</source>
+        <translation>Kompensierte Bahn: kein Formelement braucht eine Korrektur</translation>
+    </message>
+    <message>
+        <source>Compensated: %1</source>
+        <translation>Kompensiert: %1</translation>
+    </message>
+    <message>
+        <source>vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
+        <translation>vc %1 m/min, f %2 mm/U, ap %3 mm</translation>
+    </message>
+    <message>
+        <source>pass %1</source>
+        <translation>Schnitt %1</translation>
+    </message>
+    <message>
+        <source>passes %1-%2</source>
+        <translation>Schnitte %1-%2</translation>
+    </message>
+    <message>
+        <source>%1 roughing %2</source>
+        <translation>%1 Schruppen %2</translation>
+    </message>
+    <message>
+        <source>pass %1 finishing %2</source>
+        <translation>Schnitt %1 Schlichten %2</translation>
+    </message>
+    <message>
+        <source>%1, as chosen</source>
+        <translation>%1, wie gewählt</translation>
+    </message>
+    <message>
+        <source>%1, the control of machine %2</source>
+        <translation>%1, die Steuerung der Maschine %2</translation>
+    </message>
+    <message>
+        <source>%1: machine %2 has no CNC control in the data; choose the dialect of yours</source>
+        <translation>%1: Maschine %2 hat in den Daten keine CNC-Steuerung; wählen Sie den Dialekt Ihrer Steuerung</translation>
+    </message>
+    <message>
+        <source>TolTurn %1: %2</source>
+        <translation>TolTurn %1: %2</translation>
+    </message>
+    <message>
+        <source>Material %1, insert %2, holder %3, clamping %4</source>
+        <translation>Werkstoff %1, Wendeschneidplatte %2, Halter %3, Aufspannung %4</translation>
+    </message>
+    <message>
+        <source>Dialect: %1</source>
+        <translation>Dialekt: %1</translation>
+    </message>
+    <message>
+        <source>Conditions: %1</source>
+        <translation>Schnittwerte: %1</translation>
+    </message>
+</context>
+<context>
+    <name>GCodeCommand</name>
+    <message>
+        <source>%1: %2, residual %3 -&gt; %4 µm %5</source>
+        <translation>%1: %2, Restabweichung %3 -&gt; %4 µm %5</translation>
+    </message>
+    <message>
+        <source>The turning program: the planned roughing passes and the finishing pass of the outer contour, nominal or compensated only where a tolerance needs it, for the machine&apos;s control (Fanuc/Haas, Sinumerik or LinuxCNC).</source>
+        <translation>Das Drehprogramm: die geplanten Schruppschnitte und der Schlichtschnitt der Außenkontur, nominal oder nur dort kompensiert, wo eine Toleranz es verlangt, für die Steuerung der Maschine (Fanuc/Haas, Sinumerik oder LinuxCNC).</translation>
+    </message>
+    <message>
+        <source>File to write; - for standard output.</source>
+        <translation>Zu schreibende Datei; - für die Standardausgabe.</translation>
+    </message>
+    <message>
+        <source>Correct the path where a tolerance needs it (offset or profile).</source>
+        <translation>Die Bahn dort korrigieren, wo eine Toleranz es verlangt (Korrektur oder Kontur).</translation>
+    </message>
+    <message>
+        <source>Control dialect: fanuc (also Haas), sinumerik or linuxcnc. Default: the machine&apos;s control.</source>
+        <translation>Steuerungsdialekt: fanuc (auch Haas), sinumerik oder linuxcnc. Standard: die Steuerung der Maschine.</translation>
+    </message>
+    <message>
+        <source>Nose radius: &apos;control&apos; programs the contour with G42 (the control compensates), &apos;tip-path&apos; the path of the imaginary tool tip computed by TolTurn. Default: control.</source>
+        <translation>Eckenradius: &apos;control&apos; programmiert die Kontur mit G42 (die Steuerung kompensiert), &apos;tip-path&apos; die von TolTurn berechnete Bahn der theoretischen Schneidenspitze. Standard: control.</translation>
+    </message>
+    <message>
+        <source>Project file.</source>
+        <translation>Projektdatei.</translation>
+    </message>
+    <message>
+        <source>give one project file and -o FILE</source>
+        <translation>geben Sie eine Projektdatei und -o DATEI an</translation>
+    </message>
+    <message>
+        <source>--dialect: &apos;%1&apos; is not fanuc, sinumerik or linuxcnc</source>
+        <translation>--dialect: &apos;%1&apos; ist weder fanuc noch sinumerik noch linuxcnc</translation>
+    </message>
+    <message>
+        <source>--nose: &apos;%1&apos; is not control or tip-path</source>
+        <translation>--nose: &apos;%1&apos; ist weder control noch tip-path</translation>
+    </message>
+    <message>
+        <source>dialect %1</source>
+        <translation>Dialekt %1</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
     </message>
 </context>
 <context>
@@ -1108,6 +1210,73 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Export Plot</source>
         <translation>Diagramm exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>PostProcessor</name>
+    <message>
+        <source>Path of the imaginary tool tip for nose radius %1 mm, computed by TolTurn: no G41/G42; set the nose radius to 0 in the tool offsets</source>
+        <translation>Bahn der theoretischen Schneidenspitze für den Eckenradius %1 mm, von TolTurn berechnet: kein G41/G42; Eckenradius in den Werkzeugkorrekturen auf 0 setzen</translation>
+    </message>
+    <message>
+        <source>G42 nose radius compensation: tool edge D1 with radius %1 mm, cutting edge position 3</source>
+        <translation>G42 Schneidenradiuskorrektur: Schneide D1 mit Radius %1 mm, Schneidenlage 3</translation>
+    </message>
+    <message>
+        <source>G42 nose radius compensation: tool table diameter D%1, orientation Q2</source>
+        <translation>G42 Schneidenradiuskorrektur: Werkzeugtabelle Durchmesser D%1, Orientierung Q2</translation>
+    </message>
+    <message>
+        <source>G42 nose radius compensation: radius %1 mm and tip 3 in the tool geometry offset</source>
+        <translation>G42 Schneidenradiuskorrektur: Radius %1 mm und Schneidenlage 3 in der Werkzeuggeometrie</translation>
+    </message>
+    <message>
+        <source>Pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</source>
+        <translation>Schnitt %1, %2: vc %3 m/min, f %4 mm/U, ap %5 mm</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>Schlichten</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>Schruppen</translation>
+    </message>
+    <message>
+        <source>Siemens Sinumerik</source>
+        <translation>Siemens Sinumerik</translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation>LinuxCNC</translation>
+    </message>
+    <message>
+        <source>Fanuc / Haas</source>
+        <translation>Fanuc / Haas</translation>
+    </message>
+    <message>
+        <source>Highest speed the plan needs: vc %1 m/min on D%2 mm</source>
+        <translation>Höchste Drehzahl, die der Plan braucht: vc %1 m/min auf D%2 mm</translation>
+    </message>
+    <message>
+        <source>Machine limit %1 rpm; the plan would need %2 rpm on D%3 mm</source>
+        <translation>Maschinengrenze %1 1/min; der Plan bräuchte %2 1/min auf D%3 mm</translation>
+    </message>
+    <message>
+        <source>; machine limit %1 rpm</source>
+        <translation>; Maschinengrenze %1 1/min</translation>
+    </message>
+    <message>
+        <source>; the machine&apos;s limit is not known</source>
+        <translation>; die Grenze der Maschine ist nicht bekannt</translation>
+    </message>
+    <message>
+        <source>Z0 at the right end face, X on diameter, G02/G03 seen with Z to the right and X up</source>
+        <translation>Z0 an der rechten Stirnfläche, X im Durchmesser, G02/G03 gesehen mit Z nach rechts und X nach oben</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
     </message>
 </context>
 <context>
@@ -2431,6 +2600,73 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>Toolpath</name>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the chuck with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
+        <translation>%1 fällt in Vorschubrichtung mit %2° ab, steiler als die Nebenschneide der Platte (%3°): mit diesem Werkzeug lässt es sich zum Futter hin nicht drehen, ohne es zu beschädigen; drehen Sie es von der anderen Seite oder mit einem neutralen Werkzeug.</translation>
+    </message>
+    <message>
+        <source>left centre</source>
+        <translation>linke Spitze</translation>
+    </message>
+    <message>
+        <source>chuck face</source>
+        <translation>Futterplanfläche</translation>
+    </message>
+    <message>
+        <source>%1 reaches within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): it is not turned there.</source>
+        <translation>%1 reicht bis auf %2 mm an die %3 heran, wohin das Werkzeug nicht fährt (es hält %4 mm Abstand): dort wird es nicht gedreht.</translation>
+    </message>
+    <message>
+        <source>%1 reach within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): they are not turned there.</source>
+        <translation>%1 reichen bis auf %2 mm an die %3 heran, wohin das Werkzeug nicht fährt (es hält %4 mm Abstand): dort werden sie nicht gedreht.</translation>
+    </message>
+    <message>
+        <source>Turn that end with the part turned end for end.</source>
+        <translation>Drehen Sie dieses Ende mit umgedrehtem Teil.</translation>
+    </message>
+    <message>
+        <source>Grip the part shorter, or turn that end in another set-up.</source>
+        <translation>Spannen Sie das Teil kürzer oder drehen Sie dieses Ende in einer weiteren Aufspannung.</translation>
+    </message>
+    <message>
+        <source>%1 is narrower or tighter than the nose radius %2 mm: the nose cannot follow it and leaves it rounded.</source>
+        <translation>%1 ist enger als der Eckenradius %2 mm: die Schneidenecke kann nicht folgen und lässt es verrundet.</translation>
+    </message>
+    <message>
+        <source>The planned roughing leaves up to %1 mm more than the finishing allowance of %2 mm: the finishing pass would cut it.</source>
+        <translation>Das geplante Schruppen lässt bis zu %1 mm mehr stehen als das Schlichtaufmaß von %2 mm: der Schlichtschnitt müsste es abnehmen.</translation>
+    </message>
+    <message>
+        <source>The trailing edge angle of the tool is not known (holder entering angle and insert shape): falling contours are not checked.</source>
+        <translation>Der Nebeneinstellwinkel des Werkzeugs ist nicht bekannt (Einstellwinkel des Halters und Plattenform): abfallende Konturen werden nicht geprüft.</translation>
+    </message>
+    <message>
+        <source>The right end face is held by a centre and is not faced: it is faced and centred before the part is set up.</source>
+        <translation>Die rechte Stirnfläche sitzt auf einer Spitze und wird nicht plangedreht: sie wird vor dem Aufspannen plangedreht und zentriert.</translation>
+    </message>
+    <message>
+        <source>The tool stops %1 mm short of the %2; the stock there is not turned.</source>
+        <translation>Das Werkzeug hält %1 mm vor %2 an; das Rohmaterial dort wird nicht gedreht.</translation>
+    </message>
+    <message>
+        <source>left centre and driver</source>
+        <translation>der linken Spitze und dem Mitnehmer</translation>
+    </message>
+    <message>
+        <source>chuck jaws</source>
+        <translation>den Spannbacken</translation>
+    </message>
+    <message>
+        <source>The bore is not in this program (outer contour only).</source>
+        <translation>Die Bohrung ist nicht in diesem Programm (nur Außenkontur).</translation>
+    </message>
+    <message>
+        <source>No roughing pass is planned: the finishing pass would cut up to %1 mm more than its depth of cut.</source>
+        <translation>Kein Schruppschnitt geplant: der Schlichtschnitt müsste bis zu %1 mm mehr als seine Schnitttiefe abnehmen.</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Tolerance-aware planning of CNC turning.</source>
@@ -3403,10 +3639,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>1/min</translation>
     </message>
     <message>
-        <source>Highest spindle speed (G92).</source>
-        <translation>Höchste Spindeldrehzahl (G92).</translation>
-    </message>
-    <message>
         <source>Tool change &amp;time:</source>
         <translation>Werkzeug&amp;wechselzeit:</translation>
     </message>
@@ -3453,6 +3685,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>C = %1 m/min x %2 min^%3 from the insert catalogue&apos;s recommended speed; n: %4</source>
         <translation>C = %1 m/min x %2 min^%3 aus der empfohlenen Schnittgeschwindigkeit des Plattenkatalogs; n: %4</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed: the program clamps constant surface speed at it.</source>
+        <translation>Höchste Spindeldrehzahl: das Programm begrenzt die konstante Schnittgeschwindigkeit darauf.</translation>
     </message>
 </context>
 <context>
@@ -3668,6 +3904,30 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>No %1 limit is known for this machine and project: it is not checked. Enter one in Planning Data….</source>
         <translation>Für diese Maschine und dieses Projekt ist keine Grenze für %1 bekannt: sie wird nicht geprüft. Geben Sie eine unter Planungsdaten… ein.</translation>
+    </message>
+    <message>
+        <source>Machine&apos;s control</source>
+        <translation>Steuerung der Maschine</translation>
+    </message>
+    <message>
+        <source>The control the program is written for</source>
+        <translation>Die Steuerung, für die das Programm geschrieben wird</translation>
+    </message>
+    <message>
+        <source>Nose radius: G42 by the control</source>
+        <translation>Eckenradius: G42 durch die Steuerung</translation>
+    </message>
+    <message>
+        <source>Nose radius: tip path by TolTurn</source>
+        <translation>Eckenradius: Spitzenbahn von TolTurn</translation>
+    </message>
+    <message>
+        <source>G42: the program is the contour and the control offsets it by the nose radius in its tool data. Tip path: TolTurn offsets it, for controls without compensation.</source>
+        <translation>G42: das Programm ist die Kontur, und die Steuerung versetzt sie um den Eckenradius aus ihren Werkzeugdaten. Spitzenbahn: TolTurn versetzt sie, für Steuerungen ohne Korrektur.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s passes: %1. Dialect: %2.</source>
+        <translation>Die Schnitte des Projekts: %1. Dialekt: %2.</translation>
     </message>
 </context>
 <context>

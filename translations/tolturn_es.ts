@@ -303,24 +303,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Escribir la clasificación en formato JSON.</translation>
     </message>
     <message>
-        <source>File to write.</source>
-        <translation>Archivo de salida.</translation>
-    </message>
-    <message>
-        <source>Correct the path where a tolerance needs it (offset or profile).</source>
-        <translation>Corregir la trayectoria donde lo requiera una tolerancia (corrección constante o de perfil).</translation>
-    </message>
-    <message>
-        <source>give one project file and -o FILE</source>
-        <translation>indique un archivo de proyecto y -o ARCHIVO</translation>
-    </message>
-    <message>
         <source>cannot write &apos;%1&apos;: %2</source>
         <translation>no se puede escribir &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>%1: %2, residual %3 -&gt; %4 µm %5</source>
-        <translation>%1: %2, residuo %3 -&gt; %4 µm %5</translation>
     </message>
     <message>
         <source>PDF file to write.</source>
@@ -369,10 +353,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason.</source>
         <translation>El plan óptimo para plato, entre puntos y plato + contrapunto, clasificados y con el motivo.</translation>
-    </message>
-    <message>
-        <source>The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a tolerance needs it.</source>
-        <translation>La trayectoria de acabado del contorno exterior como código G ISO 6983, nominal o compensada solo donde lo requiera una tolerancia.</translation>
     </message>
     <message>
         <source>The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, clamping ranking, compensation, assumptions and sources.</source>
@@ -585,6 +565,128 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Tailstock</source>
         <translation>Contrapunto</translation>
+    </message>
+</context>
+<context>
+    <name>GCode</name>
+    <message>
+        <source>No compensation: toleranced diameters at the middle of their zone</source>
+        <translation>Sin compensación: diámetros tolerados en el centro de su zona</translation>
+    </message>
+    <message>
+        <source>%1 offset %2 um on diameter</source>
+        <translation>%1 corrección de %2 um en el diámetro</translation>
+    </message>
+    <message>
+        <source>%1 profile corrected by the predicted deviation</source>
+        <translation>%1 perfil corregido con la desviación prevista</translation>
+    </message>
+    <message>
+        <source>Compensated path: no feature needs a correction</source>
+        <translation>Trayectoria compensada: ningún elemento necesita corrección</translation>
+    </message>
+    <message>
+        <source>Compensated: %1</source>
+        <translation>Compensada: %1</translation>
+    </message>
+    <message>
+        <source>vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
+        <translation>vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
+    </message>
+    <message>
+        <source>pass %1</source>
+        <translation>pasada %1</translation>
+    </message>
+    <message>
+        <source>passes %1-%2</source>
+        <translation>pasadas %1-%2</translation>
+    </message>
+    <message>
+        <source>%1 roughing %2</source>
+        <translation>%1 desbaste %2</translation>
+    </message>
+    <message>
+        <source>pass %1 finishing %2</source>
+        <translation>pasada %1 acabado %2</translation>
+    </message>
+    <message>
+        <source>%1, as chosen</source>
+        <translation>%1, según la elección</translation>
+    </message>
+    <message>
+        <source>%1, the control of machine %2</source>
+        <translation>%1, el control de la máquina %2</translation>
+    </message>
+    <message>
+        <source>%1: machine %2 has no CNC control in the data; choose the dialect of yours</source>
+        <translation>%1: la máquina %2 no tiene control CNC en los datos; elija el dialecto del suyo</translation>
+    </message>
+    <message>
+        <source>TolTurn %1: %2</source>
+        <translation>TolTurn %1: %2</translation>
+    </message>
+    <message>
+        <source>Material %1, insert %2, holder %3, clamping %4</source>
+        <translation>Material %1, plaquita %2, portaherramientas %3, sujeción %4</translation>
+    </message>
+    <message>
+        <source>Dialect: %1</source>
+        <translation>Dialecto: %1</translation>
+    </message>
+    <message>
+        <source>Conditions: %1</source>
+        <translation>Condiciones: %1</translation>
+    </message>
+</context>
+<context>
+    <name>GCodeCommand</name>
+    <message>
+        <source>%1: %2, residual %3 -&gt; %4 µm %5</source>
+        <translation>%1: %2, residuo %3 -&gt; %4 µm %5</translation>
+    </message>
+    <message>
+        <source>The turning program: the planned roughing passes and the finishing pass of the outer contour, nominal or compensated only where a tolerance needs it, for the machine&apos;s control (Fanuc/Haas, Sinumerik or LinuxCNC).</source>
+        <translation>El programa de torneado: las pasadas de desbaste planificadas y la pasada de acabado del contorno exterior, nominal o compensado solo donde una tolerancia lo requiere, para el control de la máquina (Fanuc/Haas, Sinumerik o LinuxCNC).</translation>
+    </message>
+    <message>
+        <source>File to write; - for standard output.</source>
+        <translation>Archivo a escribir; - para la salida estándar.</translation>
+    </message>
+    <message>
+        <source>Correct the path where a tolerance needs it (offset or profile).</source>
+        <translation>Corregir la trayectoria donde una tolerancia lo requiere (corrección o perfil).</translation>
+    </message>
+    <message>
+        <source>Control dialect: fanuc (also Haas), sinumerik or linuxcnc. Default: the machine&apos;s control.</source>
+        <translation>Dialecto del control: fanuc (también Haas), sinumerik o linuxcnc. Por defecto: el control de la máquina.</translation>
+    </message>
+    <message>
+        <source>Nose radius: &apos;control&apos; programs the contour with G42 (the control compensates), &apos;tip-path&apos; the path of the imaginary tool tip computed by TolTurn. Default: control.</source>
+        <translation>Radio de punta: &apos;control&apos; programa el contorno con G42 (compensa el control), &apos;tip-path&apos; la trayectoria de la punta teórica calculada por TolTurn. Por defecto: control.</translation>
+    </message>
+    <message>
+        <source>Project file.</source>
+        <translation>Archivo de proyecto.</translation>
+    </message>
+    <message>
+        <source>give one project file and -o FILE</source>
+        <translation>indique un archivo de proyecto y -o ARCHIVO</translation>
+    </message>
+    <message>
+        <source>--dialect: &apos;%1&apos; is not fanuc, sinumerik or linuxcnc</source>
+        <translation>--dialect: &apos;%1&apos; no es fanuc, sinumerik ni linuxcnc</translation>
+    </message>
+    <message>
+        <source>--nose: &apos;%1&apos; is not control or tip-path</source>
+        <translation>--nose: &apos;%1&apos; no es control ni tip-path</translation>
+    </message>
+    <message>
+        <source>dialect %1</source>
+        <translation>dialecto %1</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>aviso: %1</translation>
     </message>
 </context>
 <context>
@@ -1108,6 +1210,73 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Export Plot</source>
         <translation>Exportar gráfico</translation>
+    </message>
+</context>
+<context>
+    <name>PostProcessor</name>
+    <message>
+        <source>Path of the imaginary tool tip for nose radius %1 mm, computed by TolTurn: no G41/G42; set the nose radius to 0 in the tool offsets</source>
+        <translation>Trayectoria de la punta teórica para un radio de punta de %1 mm, calculada por TolTurn: sin G41/G42; ponga el radio de punta a 0 en las correcciones de herramienta</translation>
+    </message>
+    <message>
+        <source>G42 nose radius compensation: tool edge D1 with radius %1 mm, cutting edge position 3</source>
+        <translation>G42 compensación del radio de punta: filo D1 con radio %1 mm, posición de filo 3</translation>
+    </message>
+    <message>
+        <source>G42 nose radius compensation: tool table diameter D%1, orientation Q2</source>
+        <translation>G42 compensación del radio de punta: tabla de herramientas diámetro D%1, orientación Q2</translation>
+    </message>
+    <message>
+        <source>G42 nose radius compensation: radius %1 mm and tip 3 in the tool geometry offset</source>
+        <translation>G42 compensación del radio de punta: radio %1 mm y punta 3 en la corrección de geometría</translation>
+    </message>
+    <message>
+        <source>Pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</source>
+        <translation>Pasada %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>acabado</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>desbaste</translation>
+    </message>
+    <message>
+        <source>Siemens Sinumerik</source>
+        <translation>Siemens Sinumerik</translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation>LinuxCNC</translation>
+    </message>
+    <message>
+        <source>Fanuc / Haas</source>
+        <translation>Fanuc / Haas</translation>
+    </message>
+    <message>
+        <source>Highest speed the plan needs: vc %1 m/min on D%2 mm</source>
+        <translation>Velocidad máxima que necesita el plan: vc %1 m/min en D%2 mm</translation>
+    </message>
+    <message>
+        <source>Machine limit %1 rpm; the plan would need %2 rpm on D%3 mm</source>
+        <translation>Límite de la máquina %1 rpm; el plan necesitaría %2 rpm en D%3 mm</translation>
+    </message>
+    <message>
+        <source>; machine limit %1 rpm</source>
+        <translation>; límite de la máquina %1 rpm</translation>
+    </message>
+    <message>
+        <source>; the machine&apos;s limit is not known</source>
+        <translation>; no se conoce el límite de la máquina</translation>
+    </message>
+    <message>
+        <source>Z0 at the right end face, X on diameter, G02/G03 seen with Z to the right and X up</source>
+        <translation>Z0 en la cara frontal derecha, X en diámetro, G02/G03 vistos con Z a la derecha y X hacia arriba</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Aviso: %1</translation>
     </message>
 </context>
 <context>
@@ -2431,6 +2600,73 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>Toolpath</name>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the chuck with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
+        <translation>%1 desciende %2° en la dirección de avance, más que el filo secundario de la plaquita (%3°): no se puede tornear hacia el plato con esta herramienta sin dañarlo; tornéelo desde el otro lado o con una herramienta neutra.</translation>
+    </message>
+    <message>
+        <source>left centre</source>
+        <translation>punto izquierdo</translation>
+    </message>
+    <message>
+        <source>chuck face</source>
+        <translation>plano del plato</translation>
+    </message>
+    <message>
+        <source>%1 reaches within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): it is not turned there.</source>
+        <translation>%1 llega a %2 mm del %3, donde la herramienta no entra (se mantiene a %4 mm): allí no se tornea.</translation>
+    </message>
+    <message>
+        <source>%1 reach within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): they are not turned there.</source>
+        <translation>%1 llegan a %2 mm del %3, donde la herramienta no entra (se mantiene a %4 mm): allí no se tornean.</translation>
+    </message>
+    <message>
+        <source>Turn that end with the part turned end for end.</source>
+        <translation>Tornee ese extremo con la pieza invertida.</translation>
+    </message>
+    <message>
+        <source>Grip the part shorter, or turn that end in another set-up.</source>
+        <translation>Sujete la pieza más corta o tornee ese extremo en otra sujeción.</translation>
+    </message>
+    <message>
+        <source>%1 is narrower or tighter than the nose radius %2 mm: the nose cannot follow it and leaves it rounded.</source>
+        <translation>%1 es más estrecho que el radio de punta de %2 mm: la punta no puede seguirlo y lo deja redondeado.</translation>
+    </message>
+    <message>
+        <source>The planned roughing leaves up to %1 mm more than the finishing allowance of %2 mm: the finishing pass would cut it.</source>
+        <translation>El desbaste planificado deja hasta %1 mm más que la creces de acabado de %2 mm: la pasada de acabado tendría que cortarlo.</translation>
+    </message>
+    <message>
+        <source>The trailing edge angle of the tool is not known (holder entering angle and insert shape): falling contours are not checked.</source>
+        <translation>No se conoce el ángulo del filo secundario de la herramienta (ángulo de posición del portaherramientas y forma de la plaquita): no se comprueban los contornos descendentes.</translation>
+    </message>
+    <message>
+        <source>The right end face is held by a centre and is not faced: it is faced and centred before the part is set up.</source>
+        <translation>La cara frontal derecha se apoya en un punto y no se refrenta: se refrenta y se hace el punto antes de sujetar la pieza.</translation>
+    </message>
+    <message>
+        <source>The tool stops %1 mm short of the %2; the stock there is not turned.</source>
+        <translation>La herramienta se detiene a %1 mm de %2; el material allí no se tornea.</translation>
+    </message>
+    <message>
+        <source>left centre and driver</source>
+        <translation>el punto izquierdo y el arrastrador</translation>
+    </message>
+    <message>
+        <source>chuck jaws</source>
+        <translation>las garras del plato</translation>
+    </message>
+    <message>
+        <source>The bore is not in this program (outer contour only).</source>
+        <translation>El taladro no está en este programa (solo contorno exterior).</translation>
+    </message>
+    <message>
+        <source>No roughing pass is planned: the finishing pass would cut up to %1 mm more than its depth of cut.</source>
+        <translation>No hay pasada de desbaste planificada: la pasada de acabado cortaría hasta %1 mm más que su profundidad de corte.</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Tolerance-aware planning of CNC turning.</source>
@@ -3403,10 +3639,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>rpm</translation>
     </message>
     <message>
-        <source>Highest spindle speed (G92).</source>
-        <translation>Velocidad de husillo más alta (G92).</translation>
-    </message>
-    <message>
         <source>Tool change &amp;time:</source>
         <translation>&amp;Tiempo de cambio de herramienta:</translation>
     </message>
@@ -3453,6 +3685,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>C = %1 m/min x %2 min^%3 from the insert catalogue&apos;s recommended speed; n: %4</source>
         <translation>C = %1 m/min x %2 min^%3 a partir de la velocidad recomendada del catálogo de la plaquita; n: %4</translation>
+    </message>
+    <message>
+        <source>Highest spindle speed: the program clamps constant surface speed at it.</source>
+        <translation>Velocidad máxima del husillo: el programa limita a ella la velocidad de corte constante.</translation>
     </message>
 </context>
 <context>
@@ -3668,6 +3904,30 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>No %1 limit is known for this machine and project: it is not checked. Enter one in Planning Data….</source>
         <translation>No se conoce ningún límite de %1 para esta máquina y proyecto: no se comprueba. Introduzca uno en Datos de planificación….</translation>
+    </message>
+    <message>
+        <source>Machine&apos;s control</source>
+        <translation>Control de la máquina</translation>
+    </message>
+    <message>
+        <source>The control the program is written for</source>
+        <translation>El control para el que se escribe el programa</translation>
+    </message>
+    <message>
+        <source>Nose radius: G42 by the control</source>
+        <translation>Radio de punta: G42 por el control</translation>
+    </message>
+    <message>
+        <source>Nose radius: tip path by TolTurn</source>
+        <translation>Radio de punta: trayectoria de la punta por TolTurn</translation>
+    </message>
+    <message>
+        <source>G42: the program is the contour and the control offsets it by the nose radius in its tool data. Tip path: TolTurn offsets it, for controls without compensation.</source>
+        <translation>G42: el programa es el contorno y el control lo desplaza con el radio de punta de sus datos de herramienta. Trayectoria de la punta: la desplaza TolTurn, para controles sin compensación.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s passes: %1. Dialect: %2.</source>
+        <translation>Las pasadas del proyecto: %1. Dialecto: %2.</translation>
     </message>
 </context>
 <context>

@@ -2,9 +2,11 @@
 #include "app/cli/cli_common.h"
 
 #include "app/cli/command_line.h"
+#include "core/io/project_file.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QSaveFile>
 #include <QTextStream>
 
 #include <cmath>
@@ -38,6 +40,27 @@ int parseCommand(QCommandLineParser &parser, const QString &name, const QString 
         return kExitOk;
     }
     return -1;
+}
+
+std::optional<Project> readProject(const QString &file, QTextStream &err)
+{
+    const ProjectParseResult read = readProjectFile(file);
+    for (const Diagnostic &d : read.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    return read.project;
+}
+
+QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out)
+{
+    if (path == QLatin1String("-")) {
+        out << QString::fromUtf8(data);
+        out.flush();
+        return {};
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(data) < 0 || !file.commit())
+        return CommandLine::tr("cannot write '%1': %2").arg(path, file.errorString());
+    return {};
 }
 
 QJsonObject diagnosticJson(const Diagnostic &d)

@@ -3,6 +3,7 @@
 
 #include "core/common/diagnostic.h"
 #include "core/cutting/cutting_forces.h"
+#include "core/project/project.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -25,6 +26,13 @@ namespace tolturn {
 
 // The forces of --load: "Fr,Ft,Fa" in newtons (radial, tangential, axial); nullopt if malformed.
 [[nodiscard]] std::optional<CuttingForces> parseLoad(const QString &text);
+
+// Reads a project for a command, printing its problems as "FILE: severity: field: message".
+[[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err);
+
+// Writes a command's text output to a file atomically, or to standard output for "-". Returns an
+// error message, empty on success.
+[[nodiscard]] QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out);
 
 // A finding as JSON: {"severity": "error" | "warning", "field": …, "message": …}.
 [[nodiscard]] QJsonObject diagnosticJson(const Diagnostic &d);

@@ -2,6 +2,7 @@
 #include "app/cli/command_line.h"
 
 #include "app/cli/cli_common.h"
+#include "app/cli/gcode_command.h"
 #include "app/cli/import_command.h"
 #include "app/cli/stiffness_command.h"
 #include "core/common/library_info.h"
@@ -10,7 +11,6 @@
 #include "core/io/project_file.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
-#include "core/planning/gcode.h"
 #include "core/planning/optimiser.h"
 #include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
@@ -98,15 +98,6 @@ QString oneProjectFile(const QCommandLineParser &parser, const QString &command,
         return parser.positionalArguments().constFirst();
     err << programName() << ' ' << command << ": " << CommandLine::tr("give exactly one project file") << '\n';
     return {};
-}
-
-// Reads a project for a command, printing its problems as "FILE: severity: field: message".
-std::optional<Project> readProject(const QString &file, QTextStream &err)
-{
-    const ProjectParseResult read = readProjectFile(file);
-    for (const Diagnostic &d : read.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    return read.project;
 }
 
 QString projectSummary(const Project &p)
@@ -983,54 +974,6 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
     return kExitOk;
 }
 
-int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
-{
-    QCommandLineParser parser;
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")}, CommandLine::tr("File to write."),
-                                    QStringLiteral("FILE"));
-    const QCommandLineOption compensated(
-        QStringLiteral("compensated"),
-        CommandLine::tr("Correct the path where a tolerance needs it (offset or profile)."));
-    parser.addOptions({output, compensated});
-    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
-                                 QStringLiteral("PROJECT"));
-    if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("gcode")), args, out, err); stop >= 0)
-        return stop;
-    if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
-        err << programName() << " gcode: " << CommandLine::tr("give one project file and -o FILE") << '\n';
-        return kExitUsage;
-    }
-    const QString file = parser.positionalArguments().constFirst();
-    const std::optional<Project> project = readProject(file, err);
-    if (!project)
-        return kExitProblems;
-    const DeviationResult deviation = computeDeviation(*project, DataLibrary::builtIn(), {});
-    for (const Diagnostic &d : deviation.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!deviation.inputs)
-        return kExitProblems;
-    const CompensationPlan plan = planCompensation(*project, deviation, evaluateTolerances(*project, deviation));
-    GCodeOptions options;
-    options.finishing = deviation.inputs->pass;
-    options.maxSpindleSpeed_rpm = project->planning.maxSpindleSpeed_rpm ? project->planning.maxSpindleSpeed_rpm
-                                                                        : deviation.inputs->maxSpindleSpeed_rpm;
-    options.compensation = parser.isSet(compensated) ? &plan : nullptr;
-    const QString program = finishingProgram(*project, options);
-    QSaveFile target(parser.value(output));
-    if (!target.open(QIODevice::WriteOnly) || target.write(program.toUtf8()) < 0 || !target.commit()) {
-        err << CommandLine::tr("cannot write '%1': %2").arg(parser.value(output), target.errorString()) << '\n';
-        return kExitProblems;
-    }
-    for (const FeatureCompensation &f : plan.features) {
-        if (f.action != CompensationAction::None || !f.note.isEmpty())
-            err << CommandLine::tr("%1: %2, residual %3 -> %4 µm %5")
-                       .arg(f.featureId, compensationKeyword(f.action), QString::number(f.residualBefore_um, 'f', 3),
-                            QString::number(f.residualAfter_um, 'f', 3), f.note)
-                << '\n';
-    }
-    return kExitOk;
-}
-
 int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
@@ -1101,11 +1044,7 @@ const std::vector<Command> &commands()
         {QStringLiteral("advise-clamping"), QStringLiteral("advise-clamping [--json] PROJECT"),
          CommandLine::tr("The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason."),
          runAdviseClamping},
-        {QStringLiteral("gcode"), QStringLiteral("gcode [--compensated] -o FILE PROJECT"),
-         CommandLine::tr(
-             "The finishing path of the outer contour as ISO 6983 G-code, nominal or compensated only where a "
-             "tolerance needs it."),
-         runGCode},
+        {QStringLiteral("gcode"), gcodeSynopsis(), gcodeSummary(), runGCode},
         {QStringLiteral("report"), QStringLiteral("report -o FILE.pdf PROJECT"),
          CommandLine::tr(
              "The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, "

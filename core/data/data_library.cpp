@@ -184,6 +184,7 @@ void DataLibrary::readMachines(const QString &path)
         m.id = o.value(QStringLiteral("id")).toString();
         m.name = o.value(QStringLiteral("name")).toString();
         m.notes = o.value(QStringLiteral("notes")).toString();
+        m.control = o.value(QStringLiteral("control")).toString();
         const QJsonObject limits = o.value(QStringLiteral("limits")).toObject();
         for (auto it = limits.begin(); it != limits.end(); ++it) {
             if (const auto v = r.value(limits, it.key(), p + QStringLiteral(".limits"), true))

@@ -60,6 +60,7 @@ struct MachineData {
     QString id;
     QString name;
     QString notes;
+    QString control; // dialect of its CNC control ("fanuc", "sinumerik", "linuxcnc"); empty: none known
     std::map<QString, SourcedValue> limits;
 };
 

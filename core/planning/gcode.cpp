@@ -3,142 +3,145 @@
 
 #include "core/common/library_info.h"
 #include "core/project/keywords.h"
-#include "core/tolerance/target_contour.h"
+#include "core/tooling/iso1832.h"
 
-#include <QTextStream>
-
-#include <algorithm>
-#include <cmath>
+#include <QCoreApplication>
 
 namespace tolturn {
 
 namespace {
 
-QString coordinate(double value_mm)
-{
-    const double rounded = std::round(value_mm * 1000.0) / 1000.0;
-    return QString::number(rounded == 0.0 ? 0.0 : rounded, 'f', 3); // no "-0.000"
-}
-
-// Comments may not contain parentheses.
-QString comment(const QString &text)
-{
-    QString t = text;
-    t.replace(QLatin1Char('('), QLatin1Char('['));
-    t.replace(QLatin1Char(')'), QLatin1Char(']'));
-    return QStringLiteral("(") + t + QStringLiteral(")");
-}
-
-struct Writer {
-    QTextStream &out;
-    double length_mm;
-    int n = 10;
-
-    void line(const QString &text)
-    {
-        out << 'N' << n << ' ' << text << '\n';
-        n += 10;
-    }
-
-    // Machine coordinates of a profile point: X diameter, Z from the right end face.
-    [[nodiscard]] QString xz(double z_mm, double r_mm) const
-    {
-        return QStringLiteral("X%1 Z%2").arg(coordinate(2.0 * r_mm), coordinate(z_mm - length_mm));
-    }
+struct Programs {
+    Q_DECLARE_TR_FUNCTIONS(GCode)
 };
 
 QString compensationSummary(const CompensationPlan *plan)
 {
     if (plan == nullptr)
-        return QStringLiteral("NO COMPENSATION: TOLERANCED DIAMETERS AT THE MIDDLE OF THEIR ZONE");
+        return Programs::tr("No compensation: toleranced diameters at the middle of their zone");
     QStringList parts;
     for (const FeatureCompensation &f : plan->features) {
         if (f.side != ContourSide::Outer)
             continue;
         if (f.action == CompensationAction::ConstantOffset)
-            parts
-                << QStringLiteral("%1 OFFSET %2 UM ON DIAMETER").arg(f.featureId, QString::number(f.offset_um, 'f', 1));
+            parts << Programs::tr("%1 offset %2 um on diameter").arg(f.featureId, QString::number(f.offset_um, 'f', 1));
         else if (f.action == CompensationAction::ProfileCorrection)
-            parts << QStringLiteral("%1 PROFILE CORRECTED BY THE PREDICTED DEVIATION").arg(f.featureId);
+            parts << Programs::tr("%1 profile corrected by the predicted deviation").arg(f.featureId);
     }
-    return parts.isEmpty() ? QStringLiteral("COMPENSATED PATH: NO FEATURE NEEDS A CORRECTION")
-                           : QStringLiteral("COMPENSATED: ") + parts.join(QStringLiteral("; "));
+    return parts.isEmpty() ? Programs::tr("Compensated path: no feature needs a correction")
+                           : Programs::tr("Compensated: %1").arg(parts.join(QStringLiteral("; ")));
+}
+
+// kappa' = 180° - kappa_r - epsilon_r: the minor (trailing) cutting edge angle from the tool
+// cutting edge angle of the holder and the corner angle of the insert (ISO 3002-1 tool angles).
+std::optional<double> trailingEdgeAngle_deg(const Project &project, const TurningInputs &inputs)
+{
+    const InsertParseResult insert = parseInsertCode(project.tool.insertCode);
+    if (!insert.insert || insert.insert->includedAngle_deg <= 0.0 || inputs.enteringAngle_deg <= 0.0)
+        return std::nullopt;
+    return 180.0 - inputs.enteringAngle_deg - insert.insert->includedAngle_deg;
+}
+
+std::vector<CuttingPass> roughingPasses(const Project &project)
+{
+    std::vector<CuttingPass> out;
+    for (const CuttingPass &p : project.passes)
+        if (p.kind == PassKind::Roughing)
+            out.push_back(p);
+    return out;
+}
+
+QString passConditions(const CuttingPass &p)
+{
+    return Programs::tr("vc %1 m/min, f %2 mm/rev, ap %3 mm")
+        .arg(QString::number(p.cuttingSpeed_m_min, 'f', 0), QString::number(p.feed_mm_rev, 'f', 3),
+             QString::number(p.depthOfCut_mm, 'f', 3));
+}
+
+// The passes in words, equal roughing passes together: "passes 1-8 roughing vc …; pass 9 finishing …".
+QString conditionsText(const Toolpath &path)
+{
+    QStringList parts;
+    for (std::size_t i = 0; i < path.roughing.size();) {
+        std::size_t j = i;
+        while (j + 1 < path.roughing.size() && path.roughing[j + 1].conditions == path.roughing[i].conditions)
+            ++j;
+        const QString numbers =
+            i == j ? Programs::tr("pass %1").arg(path.roughing[i].number)
+                   : Programs::tr("passes %1-%2").arg(path.roughing[i].number).arg(path.roughing[j].number);
+        parts << Programs::tr("%1 roughing %2").arg(numbers, passConditions(path.roughing[i].conditions));
+        i = j + 1;
+    }
+    parts << Programs::tr("pass %1 finishing %2")
+                 .arg(path.finishing.number)
+                 .arg(passConditions(path.finishing.conditions));
+    return parts.join(QStringLiteral("; "));
 }
 
 } // namespace
 
-QString finishingProgram(const Project &project, const GCodeOptions &options)
+std::optional<ControlDialect> machineDialect(const DataLibrary &data, const QString &machineId)
 {
-    QString text;
-    QTextStream out(&text);
-    const PartProfile &part = project.part;
-    Writer w{out, part.length_mm()};
-    const double chuckFace =
-        project.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : project.clamping.clampedLength_mm;
-    const double clearance = 0.5 * part.stockDiameter_mm + 2.0;
-    out << "%\n";
-    out << 'O' << options.programNumber << ' '
-        << comment(QStringLiteral("TOLTURN %1 FINISHING PASS OF %2").arg(tolturnVersion(), part.name.toUpper()))
-        << '\n';
-    w.line(comment(QStringLiteral("MATERIAL %1, INSERT %2, HOLDER %3, CLAMPING %4")
-                       .arg(project.materialId, project.tool.insertCode, project.tool.holderCode,
-                            keyword(project.clamping.method).toUpper())));
-    w.line(comment(compensationSummary(options.compensation)));
-    w.line(comment(QStringLiteral("Z0 AT THE RIGHT END FACE, X ON DIAMETER, G02/G03 SEEN WITH Z RIGHT AND X UP")));
-    w.line(QStringLiteral("G18 G21 G90 G95"));
-    w.line(QStringLiteral("T%1%1 %2").arg(options.tool, 2, 10, QLatin1Char('0')).arg(comment(project.tool.insertCode)));
-    if (options.maxSpindleSpeed_rpm)
-        w.line(QStringLiteral("G92 S%1 %2")
-                   .arg(std::lround(*options.maxSpindleSpeed_rpm))
-                   .arg(comment(QStringLiteral("SPINDLE SPEED LIMIT"))));
-    w.line(QStringLiteral("G96 S%1 M03").arg(std::lround(options.finishing.cuttingSpeed_m_min)));
-    w.line(QStringLiteral("G00 X%1 Z2.000").arg(coordinate(2.0 * clearance)));
+    const MachineData *m = data.machine(machineId);
+    return m ? controlDialectFromKeyword(m->control) : std::nullopt;
+}
 
-    // The outer contour as aimed at (toleranced diameters at the middle of their zone, as the
-    // verdicts assume), from its right end to the chuck face, in the order the tool meets it.
-    const Contour target = targetContour(project, ContourSide::Outer);
-    const std::vector<Segment> &segments = target.segments;
-    bool first = true;
-    for (std::size_t i = segments.size(); i-- > 0;) { // right to left; clang 14 cannot use views::reverse
-        const Segment &s = segments[i];
-        if (s.to.z_mm <= chuckFace + 1e-9 && s.from.z_mm <= chuckFace + 1e-9)
-            break; // inside the jaws
-        const FeatureCompensation *c = options.compensation ? options.compensation->find(s.id) : nullptr;
-        if (first) {
-            w.line(QStringLiteral("G00 ") + w.xz(s.to.z_mm + 2.0, s.to.r_mm));
-            w.line(QStringLiteral("G01 Z%1 F%2")
-                       .arg(coordinate(0.0), QString::number(options.finishing.feed_mm_rev, 'f', 3)));
-            first = false;
-        }
-        if (c && c->action == CompensationAction::ProfileCorrection && !c->correctedPath.empty()) {
-            w.line(comment(QStringLiteral("%1 CORRECTED").arg(s.id)));
-            for (std::size_t j = c->correctedPath.size(); j-- > 0;)
-                w.line(QStringLiteral("G01 ") + w.xz(c->correctedPath[j].z_mm, c->correctedPath[j].r_mm));
-            continue;
-        }
-        const double shift_mm = c && c->action == CompensationAction::ConstantOffset ? 0.5e-3 * c->offset_um : 0.0;
-        if (s.kind == SegmentKind::Radius) {
-            // Travelled backwards, the arc turns the other way.
-            const bool clockwise = s.arcDirection == ArcDirection::CounterClockwise;
-            w.line(QStringLiteral("%1 %2 R%3")
-                       .arg(clockwise ? QStringLiteral("G02") : QStringLiteral("G03"),
-                            w.xz(s.from.z_mm, s.from.r_mm + shift_mm), coordinate(s.arcRadius_mm)));
-        } else {
-            if (shift_mm != 0.0) // step onto the offset radius where the feature begins
-                w.line(QStringLiteral("G01 ") + w.xz(s.to.z_mm, s.to.r_mm + shift_mm));
-            const double z = std::max(s.from.z_mm, chuckFace);
-            w.line(
-                QStringLiteral("G01 ") + w.xz(z, s.from.r_mm + shift_mm) +
-                (shift_mm != 0.0 ? QStringLiteral(" ") + comment(QStringLiteral("%1 OFFSET").arg(s.id)) : QString()));
-        }
+TurningProgram turningProgram(const Project &project, const DataLibrary &data, const TurningInputs &inputs,
+                              const GCodeOptions &options)
+{
+    TurningProgram program;
+    if (options.dialect) {
+        program.dialect = *options.dialect;
+        program.dialectReason = Programs::tr("%1, as chosen").arg(displayName(program.dialect));
+    } else if (const auto fromMachine = machineDialect(data, project.machineId)) {
+        program.dialect = *fromMachine;
+        program.dialectReason =
+            Programs::tr("%1, the control of machine %2").arg(displayName(program.dialect), project.machineId);
+    } else {
+        program.dialect = ControlDialect::FanucHaas;
+        program.dialectReason = Programs::tr("%1: machine %2 has no CNC control in the data; choose the dialect of "
+                                             "yours")
+                                    .arg(displayName(program.dialect), project.machineId);
     }
-    w.line(QStringLiteral("G01 X%1").arg(coordinate(2.0 * clearance)));
-    w.line(QStringLiteral("G00 Z2.000"));
-    w.line(QStringLiteral("M05"));
-    w.line(QStringLiteral("M30"));
-    out << "%\n";
-    out.flush();
-    return text;
+    ToolpathOptions pathOptions;
+    pathOptions.nose = options.nose;
+    pathOptions.compensation = options.compensation;
+    pathOptions.clearance_mm = options.clearance_mm;
+    program.path = turningToolpath(project, inputs.pass, roughingPasses(project), inputs.noseRadius_mm,
+                                   trailingEdgeAngle_deg(project, inputs), pathOptions);
+    const std::optional<double> machineLimit =
+        project.planning.maxSpindleSpeed_rpm ? project.planning.maxSpindleSpeed_rpm : inputs.maxSpindleSpeed_rpm;
+    program.spindle = spindleLimit(program.path, machineLimit);
+    program.conditions = conditionsText(program.path);
+
+    PostOptions post;
+    post.dialect = program.dialect;
+    post.programNumber = options.programNumber;
+    post.tool = options.tool;
+    post.spindle = program.spindle;
+    post.header << Programs::tr("TolTurn %1: %2").arg(tolturnVersion(), project.part.name)
+                << Programs::tr("Material %1, insert %2, holder %3, clamping %4")
+                       .arg(project.materialId, project.tool.insertCode, project.tool.holderCode,
+                            keyword(project.clamping.method))
+                << Programs::tr("Dialect: %1").arg(program.dialectReason) << compensationSummary(options.compensation)
+                << Programs::tr("Conditions: %1").arg(program.conditions);
+    program.text = postProcess(program.path, project.part.length_mm(), post);
+    return program;
+}
+
+QString keyword(NoseHandling nose)
+{
+    return nose == NoseHandling::TipPath ? QStringLiteral("tip-path") : QStringLiteral("control");
+}
+
+std::optional<NoseHandling> noseHandlingFromKeyword(const QString &text)
+{
+    const QString t = text.trimmed().toLower();
+    if (t == QLatin1String("control"))
+        return NoseHandling::ControlCompensation;
+    if (t == QLatin1String("tip-path") || t == QLatin1String("tip"))
+        return NoseHandling::TipPath;
+    return std::nullopt;
 }
 
 } // namespace tolturn

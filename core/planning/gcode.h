@@ -1,30 +1,50 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/data/data_library.h"
+#include "core/deviation/turning_inputs.h"
 #include "core/planning/compensation.h"
+#include "core/planning/post_processor.h"
+#include "core/planning/toolpath.h"
 #include "core/project/project.h"
 
 #include <QString>
+#include <QStringList>
+
+#include <optional>
 
 namespace tolturn {
 
 struct GCodeOptions {
-    CuttingPass finishing;                          // speed and feed of the finishing pass
-    const CompensationPlan *compensation = nullptr; // nullptr: the nominal path
-    std::optional<double> maxSpindleSpeed_rpm;      // G92 limit for G96
+    std::optional<ControlDialect> dialect; // unset: the machine's control, else Fanuc/Haas (said in the header)
+    NoseHandling nose = NoseHandling::ControlCompensation;
+    const CompensationPlan *compensation = nullptr; // nullptr: the target contour as it is
     int tool = 1;
     int programNumber = 1000;
+    double clearance_mm = 2.0;
 };
 
-// The finishing path of the outer contour as an ISO 6983-style program: G18 G21 G90, diameter
-// programming, G96 with a G92 speed limit, G95 feed per revolution, a tool call, comments naming
-// the part and the compensation. The tool feeds towards the chuck, from the right end face over
-// every outer feature to the chuck face. Z0 is the right end face of the part, Z negative towards
-// the chuck; X is the diameter; G02/G03 are as seen with Z to the right and X upwards. The path
-// is the target contour (targetContour(): every toleranced diameter at the middle of its zone,
-// which is what the verdicts assume, MODEL §3). Features with a profile correction are written as
-// G01 moves through their corrected stations, features with an offset with the offset applied on
-// top of the target, the others as aimed at.
-[[nodiscard]] QString finishingProgram(const Project &project, const GCodeOptions &options);
+struct TurningProgram {
+    QString text;
+    ControlDialect dialect = ControlDialect::FanucHaas;
+    QString dialectReason; // the machine's control, the caller's choice, or the default
+    Toolpath path;
+    SpindleLimit spindle;
+    QString conditions; // the passes the program cuts, in words (for the G-code tab and the report)
+};
+
+// The program that turns a project's part on its machine: the roughing passes the project plans
+// (project.passes, kind roughing) and the finishing pass, along the contour the verdicts assume
+// (targetContour(): every toleranced diameter at the middle of its zone, MODEL §3), corrected
+// where the compensation plan says, in the dialect of the machine's control. `inputs` are the
+// project resolved against the data (nose radius, entering angle, finishing pass, spindle limit).
+[[nodiscard]] TurningProgram turningProgram(const Project &project, const DataLibrary &data,
+                                            const TurningInputs &inputs, const GCodeOptions &options);
+
+// The control dialect of a machine in the data library, if it has a CNC control.
+[[nodiscard]] std::optional<ControlDialect> machineDialect(const DataLibrary &data, const QString &machineId);
+
+[[nodiscard]] QString keyword(NoseHandling nose); // "control", "tip-path"
+[[nodiscard]] std::optional<NoseHandling> noseHandlingFromKeyword(const QString &text);
 
 } // namespace tolturn

@@ -180,7 +180,7 @@ std::optional<double> PlanningProblem::toolLife_min(double cuttingSpeed_m_min) c
 }
 
 // Time of the finishing pass along every turned feature: dt = dz / (f n(z)), with n = 1000 v/(pi D)
-// at constant cutting speed (G96) and capped at the machine's maximum (G92); trapezoidal rule.
+// at constant cutting speed (G96) and capped at the machine's maximum (the program's spindle limit); trapezoidal rule.
 double PlanningProblem::finishingTime_min(const PassConditions &pass) const
 {
     double time = 0.0;

@@ -44,20 +44,18 @@ PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, c
     return report;
 }
 
-FinishingOutput finishingOutput(const Project &project, const DataLibrary &data)
+FinishingOutput finishingOutput(const Project &project, const DataLibrary &data, const GCodeOptions &options)
 {
     FinishingOutput out;
     out.deviation = computeDeviation(project, data, {});
     if (!out.deviation.inputs)
         return out;
     out.compensation = planCompensation(project, out.deviation, evaluateTolerances(project, out.deviation));
-    GCodeOptions g;
-    g.finishing = out.deviation.inputs->pass;
-    g.maxSpindleSpeed_rpm = project.planning.maxSpindleSpeed_rpm ? project.planning.maxSpindleSpeed_rpm
-                                                                 : out.deviation.inputs->maxSpindleSpeed_rpm;
-    out.nominalProgram = finishingProgram(project, g);
+    GCodeOptions g = options;
+    g.compensation = nullptr;
+    out.nominal = turningProgram(project, data, *out.deviation.inputs, g);
     g.compensation = &out.compensation;
-    out.compensatedProgram = finishingProgram(project, g);
+    out.compensated = turningProgram(project, data, *out.deviation.inputs, g);
     return out;
 }
 

@@ -4,6 +4,7 @@
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/compensation.h"
 #include "core/planning/cutting_window.h"
+#include "core/planning/gcode.h"
 
 #include <functional>
 
@@ -32,13 +33,16 @@ struct PlanningJobOptions {
 
 // The compensation of the project's own finishing pass and its finishing program, nominal or
 // compensated (cheap: the deviation of one pass).
+// The finishing verdicts' compensation plan and the programs with and without it, in the dialect
+// and nose handling of `options` (its compensation pointer is ignored).
 struct FinishingOutput {
     DeviationResult deviation;
     CompensationPlan compensation;
-    QString nominalProgram;
-    QString compensatedProgram;
+    TurningProgram nominal;
+    TurningProgram compensated;
 };
 
-[[nodiscard]] FinishingOutput finishingOutput(const Project &project, const DataLibrary &data);
+[[nodiscard]] FinishingOutput finishingOutput(const Project &project, const DataLibrary &data,
+                                              const GCodeOptions &options = {});
 
 } // namespace tolturn

@@ -72,11 +72,11 @@ private Q_SLOTS:
                                               "chuck_tailstock")));
         // Plausibility: the examples' finishing feeds (0.1 and 0.08 mm/rev) lie below the 0.17 mm/rev
         // the insert's catalogue range starts at (planning.ranges of each file): warnings, not errors.
-        QVERIFY2(r.err.contains(QStringLiteral("stepped-shaft-chuck.tolturn: warning: passes[1].feed_mm_rev: 0.1 "
+        QVERIFY2(r.err.contains(QStringLiteral("stepped-shaft-chuck.tolturn: warning: passes[8].feed_mm_rev: 0.1 "
                                                "mm/rev is outside the insert's published range 0.17–0.399 mm/rev")),
                  qPrintable(r.err));
         QVERIFY(
-            r.err.contains(QStringLiteral("hollow-sleeve-tailstock.tolturn: warning: passes[1].feed_mm_rev: 0.08")));
+            r.err.contains(QStringLiteral("hollow-sleeve-tailstock.tolturn: warning: passes[5].feed_mm_rev: 0.08")));
         QVERIFY(!r.err.contains(QStringLiteral("error")));
     }
 
@@ -494,12 +494,33 @@ private Q_SLOTS:
         QFile file(nc);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QString program = QString::fromUtf8(file.readAll());
-        QVERIFY(program.startsWith(QStringLiteral("%\nO1000 (TOLTURN")));
+        // The Haas ST-20 of the example has a Fanuc-style control: G50 spindle limit, G99 feed per
+        // revolution, G42 nose radius compensation; eight roughing passes at 200 m/min, then the
+        // finishing pass at 250 m/min.
+        QVERIFY(program.startsWith(QStringLiteral("%\nO01000\n(TOLTURN")));
         QVERIFY(program.contains(QStringLiteral("COMPENSATED")));
-        QVERIFY(program.contains(QStringLiteral("G96 S250 M03")));
+        QVERIFY(program.contains(QStringLiteral("G18 G21 G40 G99")));
+        QVERIFY(program.contains(QStringLiteral("G50 S")));
+        QVERIFY(program.contains(QStringLiteral("G96 S200 M03")));
+        QVERIFY(program.contains(QStringLiteral("G96 S250\n")));
+        QVERIFY(program.contains(QStringLiteral("G42 G01")));
+        QVERIFY(program.contains(QStringLiteral("G40 G01")));
+        QVERIFY(program.contains(QStringLiteral("(PASS 9, FINISHING")));
         QVERIFY(program.contains(QStringLiteral("M30")));
+        QVERIFY(r.err.contains(QStringLiteral("the control of machine haas-st-20")));
         const Run usage = runCli({QStringLiteral("gcode"), example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(usage.exitCode, 2); // -o is required
+        // "-o -" writes to standard output; another dialect on request; an unknown one is refused.
+        const Run sinumerik =
+            runCli({QStringLiteral("gcode"), QStringLiteral("--dialect"), QStringLiteral("sinumerik"),
+                    QStringLiteral("-o"), QStringLiteral("-"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(sinumerik.exitCode, 0);
+        QVERIFY(sinumerik.out.contains(QStringLiteral("LIMS=")));
+        QVERIFY(sinumerik.out.contains(QStringLiteral("G18 G71 G90 DIAMON G95 G40")));
+        const Run unknown = runCli({QStringLiteral("gcode"), QStringLiteral("--dialect"), QStringLiteral("heidenhain"),
+                                    QStringLiteral("-o"), QStringLiteral("-"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY(unknown.err.contains(QStringLiteral("'heidenhain'")));
     }
 
     void checkWithoutFileIsUsageError()

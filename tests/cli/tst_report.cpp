@@ -67,7 +67,7 @@ private Q_SLOTS:
         QVERIFY(text.contains(QStringLiteral("page %1 of %1").arg(pages)));
         QVERIFY(text.contains(QStringLiteral("C45E-N")));
         // The finishing feed below the insert's published range is said in the inputs.
-        QVERIFY(text.contains(QStringLiteral("Warning: passes[1].feed_mm_rev: 0.1 mm/rev is outside the insert's")));
+        QVERIFY(text.contains(QStringLiteral("Warning: passes[8].feed_mm_rev: 0.1 mm/rev is outside the insert's")));
         QVERIFY(text.contains(QStringLiteral("Radial deviation of the outer contour")));
         QVERIFY(text.contains(QStringLiteral("Cutting window of the"))); // "fi" comes back as a ligature
 

@@ -108,6 +108,30 @@ std::vector<Move> readMoves(const QString &program)
     return moves;
 }
 
+// The program of a project (its machine's dialect) and the moves of its finishing pass.
+QString programFor(const Project &p, const CompensationPlan *plan,
+                   NoseHandling nose = NoseHandling::ControlCompensation)
+{
+    const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+    GCodeOptions o;
+    o.compensation = plan;
+    o.nose = nose;
+    return turningProgram(p, DataLibrary::builtIn(), *d.inputs, o).text;
+}
+
+// The finishing pass stops where the nose (0.8 mm) is 2 mm clear of the chuck face (or the left
+// centre): stations nearer are not turned, which the program says in a warning.
+bool reachedByTheTool(const Project &p, double z_mm)
+{
+    const double support = p.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : p.clamping.clampedLength_mm;
+    return z_mm >= support + 2.0 + 0.8 - 1e-9;
+}
+
+std::vector<Move> finishingMoves(const QString &program)
+{
+    return readMoves(program.mid(program.indexOf(QStringLiteral(", FINISHING:"))));
+}
+
 constexpr double kPi = std::numbers::pi;
 
 } // namespace
@@ -289,17 +313,15 @@ private Q_SLOTS:
     void gcodeAimsAtTheMiddleOfEachZone()
     {
         const Project p = example("stepped-shaft-chuck.tolturn");
-        GCodeOptions o;
-        o.finishing = p.passes.back();
-        const QString program = finishingProgram(p, o);
-        QVERIFY(program.contains(QStringLiteral("G18 G21 G90 G95")));
-        QVERIFY(program.contains(QStringLiteral("G96 S250 M03")));
-        QVERIFY(program.contains(QStringLiteral("T0101")));
-        const std::vector<Move> moves = readMoves(program);
-        const std::vector<std::pair<double, double>> expected{{0, 0},        {28, 0},       {30, -1},
+        const QString program = programFor(p, nullptr);
+        const std::vector<Move> moves = finishingMoves(program);
+        // The face is programmed from X -1.6 (past the axis by the nose radius 0.8 mm, so that the nose
+        // centre reaches it under G42), and the pass ends where the nose is 2 mm clear of the jaws:
+        // z = 35 + 2 + 0.8 = 37.8, Z = 37.8 - 150 = -112.2.
+        const std::vector<std::pair<double, double>> expected{{-1.6, 0},     {28, 0},       {30, -1},
                                                               {30, -30},     {35.983, -30}, {39.983, -32},
-                                                              {39.983, -60}, {49.992, -70}, {49.992, -115}};
-        // The contour starts after the approach (G00 to the clearance, G00 to X0 Z2, G01 Z0).
+                                                              {39.983, -60}, {49.992, -70}, {49.992, -112.2}};
+        // The contour starts with the entry move under G42 (after the rapid approach).
         auto start = std::find_if(moves.begin(), moves.end(), [](const Move &m) { return m.g == 1; });
         QVERIFY(start != moves.end());
         for (std::size_t i = 0; i < expected.size(); ++i, ++start) {
@@ -340,10 +362,7 @@ private Q_SLOTS:
             if (allPass)
                 QCOMPARE(c.action, CompensationAction::None);
         }
-        GCodeOptions o;
-        o.finishing = p.passes.back();
-        o.compensation = &plan;
-        const std::vector<Move> moves = readMoves(finishingProgram(p, o));
+        const std::vector<Move> moves = finishingMoves(programFor(p, &plan));
         const FeatureDeviation *f = nullptr;
         for (const FeatureDeviation &x : d.features)
             f = x.featureId == QLatin1String("O9") ? &x : f;
@@ -412,16 +431,14 @@ private Q_SLOTS:
             f = x.featureId == feature ? &x : f;
         QVERIFY(f);
         const CompensationPlan plan = planCompensation(p, d, verdicts);
-        GCodeOptions o;
-        o.finishing = p.passes.back();
         const bool compensated = verdict->verdict != Verdict::PassesAsProgrammed;
         QVERIFY2(verdict->verdict != Verdict::CannotEvaluate, qPrintable(verdict->reason));
-        if (compensated)
-            o.compensation = &plan;
-        const std::vector<Move> moves = readMoves(finishingProgram(p, o));
+        const std::vector<Move> moves = finishingMoves(programFor(p, compensated ? &plan : nullptr));
         const double length = p.part.length_mm();
         const double nominal = 2.0 * findFeature(p.part, feature)->segment->from.r_mm;
         for (const Station &st : f->stations) {
+            if (!reachedByTheTool(p, st.z_mm))
+                continue; // the program warns that the tool keeps off the jaws there
             // The programmed diameter at the station: the last move on the feature that ends at or
             // beyond it (travelling towards the chuck), close to its nominal size.
             std::optional<double> programmed;
@@ -544,16 +561,15 @@ private Q_SLOTS:
         QCOMPARE(verdicts.at(1).verdict, Verdict::NeedsProfileCorrection);
         const CompensationPlan compensation = planCompensation(p, d, verdicts);
         QCOMPARE(compensation.find(QStringLiteral("O4"))->action, CompensationAction::ProfileCorrection);
-        GCodeOptions o;
-        o.finishing = p.passes.back();
-        o.compensation = &compensation;
-        const std::vector<Move> moves = readMoves(finishingProgram(p, o));
+        const std::vector<Move> moves = finishingMoves(programFor(p, &compensation));
         double lowest = 1e9;
         double highest = -1e9;
         for (const FeatureDeviation &f : d.features) {
             if (f.featureId != QLatin1String("O4"))
                 continue;
             for (const Station &st : f.stations) {
+                if (!reachedByTheTool(p, st.z_mm))
+                    continue;
                 const double z = st.z_mm - p.part.length_mm();
                 const auto m = std::find_if(moves.rbegin(), moves.rend(), [z](const Move &mv) {
                     return std::abs(mv.z - z) < 1e-6 && std::abs(mv.x - 20.0) < 0.2;

@@ -14,9 +14,11 @@
 #include <QAbstractItemModelTester>
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -90,7 +92,20 @@ private Q_SLOTS:
         QCOMPARE(panel->clampingTable()->rowCount(), 3);
         QCOMPARE(panel->clampingTable()->item(0, 1)->text(), QStringLiteral("chuck + tailstock"));
         QVERIFY(panel->compensationTable()->rowCount() >= 5);
-        QVERIFY(panel->gcodeText().contains(QStringLiteral("G96 S230 M03")));
+        // The program cuts the project's passes (four roughing levels, then the finishing pass at
+        // 230 m/min), in the dialect of the machine's control, which the tab names; another dialect
+        // is one choice away.
+        QVERIFY(panel->gcodeText().contains(QStringLiteral("G96 S180 M03")));
+        QVERIFY(panel->gcodeText().contains(QStringLiteral("G96 S230")));
+        QVERIFY(panel->gcodeText().contains(QStringLiteral("G50 S")));
+        auto *conditions = panel->findChild<QLabel *>(QStringLiteral("gcodeConditions"));
+        QVERIFY(conditions->text().contains(QStringLiteral("passes 1-4 roughing vc 180 m/min")));
+        QVERIFY(conditions->text().contains(QStringLiteral("the control of machine haas-st-20")));
+        auto *dialect = panel->findChild<QComboBox *>(QStringLiteral("gcodeDialect"));
+        dialect->setCurrentIndex(dialect->findData(static_cast<int>(ControlDialect::Sinumerik)));
+        QVERIFY(panel->gcodeText().contains(QStringLiteral("LIMS=")));
+        QVERIFY(conditions->text().contains(QStringLiteral("Siemens Sinumerik, as chosen")));
+        dialect->setCurrentIndex(0);
 
         // Show the window map for the screenshot.
         panel->findChild<QTabWidget *>()->setCurrentIndex(1);

@@ -68,7 +68,7 @@ private Q_SLOTS:
         QCOMPARE(s->insertEdit()->text(), QStringLiteral("CNMG 120408"));
         QCOMPARE(s->holderBox()->currentData().toString(), QStringLiteral("PCLNR 2525M12"));
         QCOMPARE(s->clampedLengthBox()->value(), 35.0);
-        QCOMPARE(s->passBox(1, 1)->value(), 0.1); // finishing feed
+        QCOMPARE(s->passBox(8, 1)->value(), 0.1); // finishing feed
         QVERIFY(w.fileController()->close());
         QVERIFY(!s->isEnabled());
     }
@@ -240,14 +240,14 @@ private Q_SLOTS:
         MainWindow w;
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
         SetupPanel *s = w.setupPanel();
-        QDoubleSpinBox *feed = s->passBox(1, 1);
+        QDoubleSpinBox *feed = s->passBox(8, 1);
         QVERIFY(feed->styleSheet().contains(QStringLiteral("#ffe8a3")));
         QVERIFY2(feed->toolTip().contains(QStringLiteral("outside the insert's published range 0.17–0.399 mm/rev")),
                  qPrintable(feed->toolTip()));
-        QVERIFY(s->passBox(1, 0)->styleSheet().isEmpty()); // 250 m/min is inside 201.2–353.6
+        QVERIFY(s->passBox(8, 0)->styleSheet().isEmpty()); // 250 m/min is inside 201.2–353.6
         feed->setValue(0.2);
-        QVERIFY(s->passBox(1, 1)->styleSheet().isEmpty());
-        QVERIFY(!s->passBox(1, 1)->toolTip().contains(QStringLiteral("outside")));
+        QVERIFY(s->passBox(8, 1)->styleSheet().isEmpty());
+        QVERIFY(!s->passBox(8, 1)->toolTip().contains(QStringLiteral("outside")));
     }
 
     void cuttingConditionsAndMaterialAreEdits()
@@ -260,12 +260,12 @@ private Q_SLOTS:
         // angle (eq. 20): f 0.1: tan(gamma_Le) = -0.044208 + 0.130913 + 0.093080 = 0.179785,
         // kappa_eq = 79.808°, h = 0.098422, b = 4.064131, Fc = 999.24 N; f 0.2: tan = 0.310697,
         // kappa_eq = 72.740°, h = 0.190994, b = 4.188618, Fc = 1727.26 N; ratio 1.72857.
-        s->passBox(1, 2)->setValue(4.0);
-        QCOMPARE(w.document()->project().passes[1].depthOfCut_mm, 4.0);
+        s->passBox(8, 2)->setValue(4.0);
+        QCOMPARE(w.document()->project().passes[8].depthOfCut_mm, 4.0);
         const double fcBefore = w.deflectionPanel()->result().inputs->forces.tangential_N;
         QVERIFY2(std::abs(fcBefore / 999.24 - 1.0) < 1e-5, qPrintable(QString::number(fcBefore)));
-        s->passBox(1, 1)->setValue(0.2); // finishing feed doubled
-        QCOMPARE(w.document()->project().passes[1].feed_mm_rev, 0.2);
+        s->passBox(8, 1)->setValue(0.2); // finishing feed doubled
+        QCOMPARE(w.document()->project().passes[8].feed_mm_rev, 0.2);
         const double fcAfter = w.deflectionPanel()->result().inputs->forces.tangential_N;
         QVERIFY2(std::abs(fcAfter / fcBefore - 1.72857) < 1e-5, qPrintable(QString::number(fcAfter / fcBefore)));
 

@@ -89,6 +89,9 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     , m_clamping(new QTableWidget(this))
     , m_compensation(new QTableWidget(this))
     , m_compensated(new QCheckBox(tr("Compensated"), this))
+    , m_dialect(new QComboBox(this))
+    , m_nose(new QComboBox(this))
+    , m_gcodeConditions(new QLabel(this))
     , m_gcode(new QPlainTextEdit(this))
     , m_export(new QPushButton(tr("Export G-code…"), this))
 {
@@ -153,10 +156,25 @@ void PlanningPanel::buildControls()
     auto *gcodeTab = new QWidget(this);
     auto *gcodeLayout = new QVBoxLayout(gcodeTab);
     auto *gcodeTop = new QHBoxLayout;
+    m_dialect->setObjectName(QStringLiteral("gcodeDialect"));
+    m_dialect->addItem(tr("Machine's control"));
+    for (const ControlDialect d : {ControlDialect::FanucHaas, ControlDialect::Sinumerik, ControlDialect::LinuxCnc})
+        m_dialect->addItem(displayName(d), static_cast<int>(d));
+    m_dialect->setToolTip(tr("The control the program is written for"));
+    m_nose->setObjectName(QStringLiteral("gcodeNose"));
+    m_nose->addItem(tr("Nose radius: G42 by the control"), static_cast<int>(NoseHandling::ControlCompensation));
+    m_nose->addItem(tr("Nose radius: tip path by TolTurn"), static_cast<int>(NoseHandling::TipPath));
+    m_nose->setToolTip(tr("G42: the program is the contour and the control offsets it by the nose radius in its "
+                          "tool data. Tip path: TolTurn offsets it, for controls without compensation."));
     gcodeTop->addWidget(m_compensated);
+    gcodeTop->addWidget(m_dialect);
+    gcodeTop->addWidget(m_nose);
     gcodeTop->addStretch();
     gcodeTop->addWidget(m_export);
+    m_gcodeConditions->setObjectName(QStringLiteral("gcodeConditions"));
+    m_gcodeConditions->setWordWrap(true);
     gcodeLayout->addLayout(gcodeTop);
+    gcodeLayout->addWidget(m_gcodeConditions);
     gcodeLayout->addWidget(m_gcode);
     m_tabs->addTab(m_plan, tr("Plan"));
     m_tabs->addTab(windowTab, tr("Cutting Window"));
@@ -176,6 +194,8 @@ void PlanningPanel::buildControls()
     connect(m_data, &QPushButton::clicked, this, &PlanningPanel::editPlanningData);
     connect(m_objective, &QComboBox::currentIndexChanged, this, &PlanningPanel::settingsEdited);
     connect(m_compensated, &QCheckBox::toggled, this, &PlanningPanel::showFinishing);
+    connect(m_dialect, &QComboBox::currentIndexChanged, this, &PlanningPanel::showFinishing);
+    connect(m_nose, &QComboBox::currentIndexChanged, this, &PlanningPanel::showFinishing);
     connect(m_export, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export G-code"), QString(),
                                                           tr("G-code (*.nc *.ngc *.tap);;All files (*)"));
@@ -417,7 +437,11 @@ void PlanningPanel::showFinishing()
 {
     if (!m_document.hasProject())
         return;
-    m_finishing = finishingOutput(m_document.project(), DataLibrary::builtIn());
+    GCodeOptions options;
+    if (m_dialect->currentData().isValid())
+        options.dialect = static_cast<ControlDialect>(m_dialect->currentData().toInt());
+    options.nose = static_cast<NoseHandling>(m_nose->currentData().toInt());
+    m_finishing = finishingOutput(m_document.project(), DataLibrary::builtIn(), options);
     const auto &features = m_finishing.compensation.features;
     m_compensation->setRowCount(static_cast<int>(features.size()));
     for (int i = 0; i < m_compensation->rowCount(); ++i) {
@@ -435,7 +459,13 @@ void PlanningPanel::showFinishing()
         m_compensation->setItem(i, 6, cell(f.note));
     }
     m_compensation->resizeColumnsToContents();
-    m_gcode->setPlainText(m_compensated->isChecked() ? m_finishing.compensatedProgram : m_finishing.nominalProgram);
+    const TurningProgram &program = m_compensated->isChecked() ? m_finishing.compensated : m_finishing.nominal;
+    QString about = tr("The project's passes: %1. Dialect: %2.").arg(program.conditions, program.dialectReason);
+    if (!program.path.warnings.isEmpty())
+        about += QStringLiteral("<br><span style='color:#a50f15'>") +
+                 program.path.warnings.join(QStringLiteral("<br>")).toHtmlEscaped() + QStringLiteral("</span>");
+    m_gcodeConditions->setText(about);
+    m_gcode->setPlainText(program.text);
 }
 
 QString PlanningPanel::gcodeText() const

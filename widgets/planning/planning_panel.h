@@ -86,6 +86,9 @@ private:
     QTableWidget *m_clamping;
     QTableWidget *m_compensation;
     QCheckBox *m_compensated;
+    QComboBox *m_dialect;
+    QComboBox *m_nose;
+    QLabel *m_gcodeConditions;
     QPlainTextEdit *m_gcode;
     QPushButton *m_export;
     QFutureWatcher<PlanningReport> m_watcher;

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/gcode_command.h"
+
+#include "app/cli/cli_common.h"
+#include "app/cli/command_line.h"
+#include "core/deviation/deviation_model.h"
+#include "core/planning/gcode.h"
+#include "core/planning/planning_report.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QTextStream>
+
+namespace tolturn {
+
+namespace {
+
+struct GCodeCommand {
+    Q_DECLARE_TR_FUNCTIONS(GCodeCommand)
+};
+
+void printCompensation(const CompensationPlan &plan, QTextStream &err)
+{
+    for (const FeatureCompensation &f : plan.features) {
+        if (f.action != CompensationAction::None || !f.note.isEmpty())
+            err << GCodeCommand::tr("%1: %2, residual %3 -> %4 µm %5")
+                       .arg(f.featureId, compensationKeyword(f.action), QString::number(f.residualBefore_um, 'f', 3),
+                            QString::number(f.residualAfter_um, 'f', 3), f.note)
+                << '\n';
+    }
+}
+
+} // namespace
+
+QString gcodeSynopsis()
+{
+    return QStringLiteral("gcode [--compensated] [--dialect fanuc|sinumerik|linuxcnc] [--nose control|tip-path] "
+                          "-o FILE|- PROJECT");
+}
+
+QString gcodeSummary()
+{
+    return GCodeCommand::tr("The turning program: the planned roughing passes and the finishing pass of the outer "
+                            "contour, nominal or compensated only where a tolerance needs it, for the machine's "
+                            "control (Fanuc/Haas, Sinumerik or LinuxCNC).");
+}
+
+int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    GCodeCommand::tr("File to write; - for standard output."), QStringLiteral("FILE"));
+    const QCommandLineOption compensated(
+        QStringLiteral("compensated"),
+        GCodeCommand::tr("Correct the path where a tolerance needs it (offset or profile)."));
+    const QCommandLineOption dialect(
+        QStringLiteral("dialect"),
+        GCodeCommand::tr("Control dialect: fanuc (also Haas), sinumerik or linuxcnc. Default: the machine's control."),
+        QStringLiteral("DIALECT"));
+    const QCommandLineOption nose(QStringLiteral("nose"),
+                                  GCodeCommand::tr("Nose radius: 'control' programs the contour with G42 (the control "
+                                                   "compensates), 'tip-path' the path of the imaginary tool tip "
+                                                   "computed by TolTurn. Default: control."),
+                                  QStringLiteral("HANDLING"), QStringLiteral("control"));
+    parser.addOptions({output, compensated, dialect, nose});
+    parser.addPositionalArgument(QStringLiteral("project"), GCodeCommand::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parseCommand(parser, QStringLiteral("gcode"), gcodeSynopsis(), gcodeSummary(), args, out, err);
+        stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
+        err << programName() << " gcode: " << GCodeCommand::tr("give one project file and -o FILE") << '\n';
+        return kExitUsage;
+    }
+    GCodeOptions options;
+    if (parser.isSet(dialect)) {
+        options.dialect = controlDialectFromKeyword(parser.value(dialect));
+        if (!options.dialect) {
+            err << programName() << " gcode: "
+                << GCodeCommand::tr("--dialect: '%1' is not fanuc, sinumerik or linuxcnc").arg(parser.value(dialect))
+                << '\n';
+            return kExitUsage;
+        }
+    }
+    const auto handling = noseHandlingFromKeyword(parser.value(nose));
+    if (!handling) {
+        err << programName()
+            << " gcode: " << GCodeCommand::tr("--nose: '%1' is not control or tip-path").arg(parser.value(nose))
+            << '\n';
+        return kExitUsage;
+    }
+    options.nose = *handling;
+    const QString file = parser.positionalArguments().constFirst();
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
+        return kExitProblems;
+    const FinishingOutput finishing = finishingOutput(*project, DataLibrary::builtIn(), options);
+    for (const Diagnostic &d : finishing.deviation.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!finishing.deviation.inputs)
+        return kExitProblems;
+    const TurningProgram &program = parser.isSet(compensated) ? finishing.compensated : finishing.nominal;
+    if (const QString problem = writeOutput(parser.value(output), program.text.toUtf8(), out); !problem.isEmpty()) {
+        err << problem << '\n';
+        return kExitProblems;
+    }
+    err << file << ": " << GCodeCommand::tr("dialect %1").arg(program.dialectReason) << '\n';
+    for (const QString &w : program.path.warnings)
+        err << file << ": " << GCodeCommand::tr("warning: %1").arg(w) << '\n';
+    if (parser.isSet(compensated))
+        printCompensation(finishing.compensation, err);
+    return kExitOk;
+}
+
+} // namespace tolturn

@@ -1,0 +1,361 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/path_geometry.h"
+
+#include "core/part/profile_geometry.h"
+
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+namespace tolturn {
+
+namespace {
+
+constexpr double kTiny = 1e-9;
+
+ProfilePoint operator+(ProfilePoint a, ProfilePoint b)
+{
+    return {a.z_mm + b.z_mm, a.r_mm + b.r_mm};
+}
+
+ProfilePoint operator-(ProfilePoint a, ProfilePoint b)
+{
+    return {a.z_mm - b.z_mm, a.r_mm - b.r_mm};
+}
+
+ProfilePoint operator*(double k, ProfilePoint a)
+{
+    return {k * a.z_mm, k * a.r_mm};
+}
+
+double dot(ProfilePoint a, ProfilePoint b)
+{
+    return a.z_mm * b.z_mm + a.r_mm * b.r_mm;
+}
+
+double cross(ProfilePoint a, ProfilePoint b)
+{
+    return a.z_mm * b.r_mm - a.r_mm * b.z_mm;
+}
+
+double norm(ProfilePoint a)
+{
+    return std::hypot(a.z_mm, a.r_mm);
+}
+
+ProfilePoint unit(ProfilePoint a)
+{
+    const double n = norm(a);
+    return n > kTiny ? (1.0 / n) * a : ProfilePoint{};
+}
+
+ProfilePoint rightNormal(ProfilePoint direction)
+{
+    return {direction.r_mm, -direction.z_mm};
+}
+
+ProfilePoint tangentAt(const PathElement &e, ProfilePoint p)
+{
+    if (!e.arc)
+        return unit(e.to - e.from);
+    const ProfilePoint radial = unit(p - e.centre);
+    const ProfilePoint ccw{-radial.r_mm, radial.z_mm};
+    return e.counterClockwise ? ccw : -1.0 * ccw;
+}
+
+PathElement offsetElement(const PathElement &e, double d)
+{
+    PathElement o = e;
+    if (!e.arc) {
+        const ProfilePoint n = d * rightNormal(unit(e.to - e.from));
+        o.from = e.from + n;
+        o.to = e.to + n;
+        return o;
+    }
+    o.radius_mm = e.radius_mm + (e.counterClockwise ? d : -d); // the right side is outside a CCW arc
+    const double k = o.radius_mm / e.radius_mm;
+    o.from = e.centre + k * (e.from - e.centre);
+    o.to = e.centre + k * (e.to - e.centre);
+    return o;
+}
+
+// Intersections of the lines/circles carrying two elements.
+std::vector<ProfilePoint> intersections(const PathElement &a, const PathElement &b)
+{
+    auto lineCircle = [](const PathElement &line, const PathElement &circle) {
+        const ProfilePoint d = unit(line.to - line.from);
+        const ProfilePoint f = line.from - circle.centre;
+        const double bq = dot(f, d);
+        const double cq = dot(f, f) - circle.radius_mm * circle.radius_mm;
+        const double disc = bq * bq - cq;
+        std::vector<ProfilePoint> out;
+        if (disc < -kTiny)
+            return out;
+        const double s = std::sqrt(std::max(disc, 0.0));
+        out.push_back(line.from + (-bq - s) * d);
+        out.push_back(line.from + (-bq + s) * d);
+        return out;
+    };
+    if (!a.arc && !b.arc) {
+        const ProfilePoint da = a.to - a.from;
+        const ProfilePoint db = b.to - b.from;
+        const double den = cross(da, db);
+        if (std::abs(den) < kTiny)
+            return {};
+        const double t = cross(b.from - a.from, db) / den;
+        return {a.from + t * da};
+    }
+    if (!a.arc)
+        return lineCircle(a, b);
+    if (!b.arc)
+        return lineCircle(b, a);
+    const ProfilePoint d = b.centre - a.centre;
+    const double dist = norm(d);
+    if (dist < kTiny || dist > a.radius_mm + b.radius_mm + kTiny || dist < std::abs(a.radius_mm - b.radius_mm) - kTiny)
+        return {};
+    const double x = (dist * dist + a.radius_mm * a.radius_mm - b.radius_mm * b.radius_mm) / (2.0 * dist);
+    const double h = std::sqrt(std::max(a.radius_mm * a.radius_mm - x * x, 0.0));
+    const ProfilePoint u = unit(d);
+    const ProfilePoint base = a.centre + x * u;
+    const ProfilePoint perp{-u.r_mm, u.z_mm};
+    return {base + h * perp, base - h * perp};
+}
+
+std::optional<ProfilePoint> nearestIntersection(const PathElement &a, const PathElement &b, ProfilePoint near)
+{
+    std::optional<ProfilePoint> best;
+    for (const ProfilePoint &p : intersections(a, b))
+        if (!best || norm(p - near) < norm(*best - near))
+            best = p;
+    return best;
+}
+
+// Whether an offset element, trimmed to new ends, still runs the way its original did.
+bool keepsItsSense(const PathElement &original, const PathElement &offset)
+{
+    if (!offset.arc)
+        return dot(offset.to - offset.from, original.to - original.from) > kTiny;
+    if (offset.radius_mm <= kTiny)
+        return false;
+    const double a0 = std::atan2(original.from.r_mm - original.centre.r_mm, original.from.z_mm - original.centre.z_mm);
+    const double a1 = std::atan2(original.to.r_mm - original.centre.r_mm, original.to.z_mm - original.centre.z_mm);
+    const double b0 = std::atan2(offset.from.r_mm - offset.centre.r_mm, offset.from.z_mm - offset.centre.z_mm);
+    const double b1 = std::atan2(offset.to.r_mm - offset.centre.r_mm, offset.to.z_mm - offset.centre.z_mm);
+    auto sweep = [&](double s, double e) {
+        double w = e - s;
+        const double turn = 2.0 * std::numbers::pi;
+        if (original.counterClockwise)
+            while (w < 0.0)
+                w += turn;
+        else
+            while (w > 0.0)
+                w -= turn;
+        return w;
+    };
+    const double originalSweep = sweep(a0, a1);
+    const double offsetSweep = sweep(b0, b1);
+    return std::abs(offsetSweep) <= std::abs(originalSweep) + 1e-6 && std::abs(offsetSweep) > 1e-9;
+}
+
+} // namespace
+
+std::vector<PathElement> reversedElements(const std::vector<Segment> &segments)
+{
+    std::vector<PathElement> out;
+    out.reserve(segments.size());
+    for (std::size_t i = segments.size(); i-- > 0;) { // clang 14 cannot use views::reverse
+        const Segment *it = &segments[i];
+        PathElement e;
+        e.from = it->to;
+        e.to = it->from;
+        e.featureId = it->id;
+        if (it->kind == SegmentKind::Radius) {
+            if (const auto arc = arcGeometry(*it)) {
+                e.arc = true;
+                e.centre = arc->centre;
+                e.radius_mm = arc->radius_mm;
+                e.counterClockwise = it->arcDirection == ArcDirection::Clockwise; // travelled backwards
+            }
+        }
+        if (norm(e.to - e.from) > kTiny)
+            out.push_back(e);
+    }
+    return out;
+}
+
+ProfilePoint startTangent(const PathElement &e)
+{
+    return tangentAt(e, e.from);
+}
+
+ProfilePoint endTangent(const PathElement &e)
+{
+    return tangentAt(e, e.to);
+}
+
+std::vector<PathElement> offsetToTheRight(const std::vector<PathElement> &chain, double distance_mm,
+                                          QStringList *dropped)
+{
+    std::vector<PathElement> source;
+    for (const PathElement &e : chain) {
+        if (e.arc && !e.counterClockwise && e.radius_mm <= distance_mm + kTiny) {
+            if (dropped)
+                *dropped << e.featureId; // a concave arc tighter than the offset: a corner for it
+            PathElement corner;
+            corner.from = e.from;
+            corner.to = e.to;
+            corner.featureId = e.featureId;
+            source.push_back(corner);
+            continue;
+        }
+        source.push_back(e);
+    }
+    std::vector<PathElement> out;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        PathElement next = offsetElement(source[i], distance_mm);
+        if (out.empty()) {
+            out.push_back(next);
+            continue;
+        }
+        const PathElement &previous = source[i - 1];
+        const ProfilePoint t1 = endTangent(previous);
+        const ProfilePoint t2 = startTangent(source[i]);
+        const double turn = cross(t1, t2);
+        const ProfilePoint corner = source[i].from;
+        const bool tangent = std::abs(turn) < 1e-9 && dot(t1, t2) > 0.0;
+        const std::optional<ProfilePoint> meet =
+            !tangent && turn < 0.0 ? nearestIntersection(out.back(), next, corner) : std::nullopt;
+        if (!tangent && turn > 0.0) {
+            PathElement round; // convex: roll round the corner
+            round.from = out.back().to;
+            round.to = next.from;
+            round.arc = true;
+            round.centre = corner;
+            round.radius_mm = distance_mm;
+            round.counterClockwise = true;
+            round.featureId = source[i].featureId;
+            out.push_back(round);
+        } else if (meet) { // concave: trim both at their intersection
+            const PathElement before = out.back();
+            out.back().to = *meet;
+            next.from = *meet;
+            if (!keepsItsSense(before, out.back())) {
+                if (dropped)
+                    *dropped << out.back().featureId;
+                out.pop_back();
+                if (!out.empty()) { // re-join the one before with this one
+                    if (const auto q = nearestIntersection(out.back(), next, *meet)) {
+                        out.back().to = *q;
+                        next.from = *q;
+                    }
+                }
+            }
+        } else {
+            next.from = out.back().to; // tangent, or the parallel offsets of a reversal: they meet
+        }
+        out.push_back(next);
+    }
+    return out;
+}
+
+std::vector<PathElement> translated(std::vector<PathElement> chain, double dz_mm, double dr_mm)
+{
+    const ProfilePoint d{dz_mm, dr_mm};
+    for (PathElement &e : chain) {
+        e.from = e.from + d;
+        e.to = e.to + d;
+        e.centre = e.centre + d;
+    }
+    return chain;
+}
+
+std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm)
+{
+    std::vector<ProfilePoint> out;
+    if (!e.arc) {
+        const int n = std::max(1, static_cast<int>(std::ceil(norm(e.to - e.from) / step_mm)));
+        for (int i = 0; i <= n; ++i)
+            out.push_back(e.from + (static_cast<double>(i) / n) * (e.to - e.from));
+        return out;
+    }
+    const double a0 = std::atan2(e.from.r_mm - e.centre.r_mm, e.from.z_mm - e.centre.z_mm);
+    double a1 = std::atan2(e.to.r_mm - e.centre.r_mm, e.to.z_mm - e.centre.z_mm);
+    const double turn = 2.0 * std::numbers::pi;
+    if (e.counterClockwise)
+        while (a1 < a0)
+            a1 += turn;
+    else
+        while (a1 > a0)
+            a1 -= turn;
+    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(a1 - a0) * e.radius_mm / step_mm)));
+    for (int i = 0; i <= n; ++i) {
+        const double a = a0 + (a1 - a0) * static_cast<double>(i) / n;
+        out.push_back({e.centre.z_mm + e.radius_mm * std::cos(a), e.centre.r_mm + e.radius_mm * std::sin(a)});
+    }
+    out.back() = e.to;
+    return out;
+}
+
+Envelope widenedEnvelope(const std::vector<Segment> &contour, double distance_mm, double zFrom_mm, double zTo_mm,
+                         double step_mm)
+{
+    Envelope env;
+    env.z0_mm = zFrom_mm;
+    const auto count = static_cast<std::size_t>(std::max(1.0, std::ceil((zTo_mm - zFrom_mm) / step_mm))) + 1;
+    step_mm = (zTo_mm - zFrom_mm) / static_cast<double>(count - 1); // the grid ends on zTo exactly
+    env.step_mm = step_mm;
+    env.r_mm.assign(count, -std::numeric_limits<double>::infinity());
+    for (const PathElement &e : reversedElements(contour)) {
+        for (const ProfilePoint &p : sampled(e, 0.5 * step_mm)) {
+            const double lo = std::max(0.0, std::ceil((p.z_mm - distance_mm - zFrom_mm) / step_mm));
+            const double hi = std::floor((p.z_mm + distance_mm - zFrom_mm) / step_mm);
+            for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < count; ++i) {
+                const double dz = env.z(i) - p.z_mm;
+                const double r = p.r_mm + std::sqrt(std::max(distance_mm * distance_mm - dz * dz, 0.0));
+                env.r_mm[i] = std::max(env.r_mm[i], r);
+            }
+        }
+    }
+    return env;
+}
+
+std::vector<ProfilePoint> simplified(const std::vector<ProfilePoint> &points, double tolerance_mm)
+{
+    if (points.size() < 3)
+        return points;
+    std::vector<bool> keep(points.size(), false);
+    keep.front() = keep.back() = true;
+    std::vector<std::pair<std::size_t, std::size_t>> stack{{0, points.size() - 1}};
+    while (!stack.empty()) {
+        const auto [first, last] = stack.back();
+        stack.pop_back();
+        const ProfilePoint chord = points[last] - points[first];
+        const double length = norm(chord);
+        double worst = 0.0;
+        std::size_t at = first;
+        for (std::size_t i = first + 1; i < last; ++i) {
+            const ProfilePoint v = points[i] - points[first];
+            const double d = length > kTiny ? std::abs(cross(chord, v)) / length : norm(v);
+            if (d > worst) {
+                worst = d;
+                at = i;
+            }
+        }
+        if (worst > tolerance_mm) {
+            keep[at] = true;
+            stack.emplace_back(first, at);
+            stack.emplace_back(at, last);
+        }
+    }
+    std::vector<ProfilePoint> out;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (keep[i])
+            out.push_back(points[i]);
+    return out;
+}
+
+} // namespace tolturn

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// Programs for a lathe control from a tool path (ISO 6983-1 word address format), one dialect per
+// family of controls:
+//  - Fanuc/Haas (lathe G-code system A, as on Haas lathes): G50 S spindle limit, G96 constant
+//    surface speed, G99 feed per revolution, G41/G42 nose radius compensation with the tip
+//    direction in the geometry offset, G02/G03 with R.
+//  - Siemens Sinumerik (840D/828D ISO-free dialect): LIMS= spindle limit, G96 S, G95 feed per
+//    revolution, DIAMON diameter programming, G41/G42, G2/G3 with CR=, ';' comments.
+//  - LinuxCNC (rs274ngc, lathe mode): G96 D (maximum spindle speed) S, G95, G7 diameter mode,
+//    G41/G42 with the tool table's diameter D and orientation Q, G2/G3 with R.
+// The meanings of these words are those of the makers' programming manuals (Haas lathe operator's
+// manual, G-code chapter; Siemens SINUMERIK Programming Manual Fundamentals, "Spindle speed
+// limitation LIMS", "Constant cutting rate G96", "Feedrate G95"; LinuxCNC G-code reference, G96/G97,
+// G7, G41/G42 lathe tool orientation). The LinuxCNC output is read back by LinuxCNC's own
+// interpreter in the tests.
+
+#include "core/planning/toolpath.h"
+#include "core/project/project.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace tolturn {
+
+enum class ControlDialect { FanucHaas, Sinumerik, LinuxCnc };
+
+[[nodiscard]] QString keyword(ControlDialect dialect); // "fanuc", "sinumerik", "linuxcnc"
+[[nodiscard]] std::optional<ControlDialect> controlDialectFromKeyword(const QString &text);
+[[nodiscard]] QString displayName(ControlDialect dialect);
+
+// The spindle speed the program clamps G96 at: the highest speed any pass needs on a diameter it
+// turns (a face run to the axis does not count; G96 is clamped there), no more than the machine's
+// limit where one is known.
+struct SpindleLimit {
+    double speed_rpm = 0.0;
+    QString reason; // how it was formed, for the program header and people
+};
+
+[[nodiscard]] SpindleLimit spindleLimit(const Toolpath &path, std::optional<double> machineLimit_rpm);
+
+struct PostOptions {
+    ControlDialect dialect = ControlDialect::FanucHaas;
+    int programNumber = 1000;
+    int tool = 1;
+    SpindleLimit spindle;
+    QStringList header; // lines for the comment block at the top (part, material, tool, compensation, conditions)
+};
+
+[[nodiscard]] QString postProcess(const Toolpath &path, double partLength_mm, const PostOptions &options);
+
+} // namespace tolturn

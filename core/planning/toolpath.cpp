@@ -1,0 +1,444 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/toolpath.h"
+
+#include "core/planning/path_geometry.h"
+#include "core/tolerance/target_contour.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <set>
+
+namespace tolturn {
+
+namespace {
+
+struct Toolpaths {
+    Q_DECLARE_TR_FUNCTIONS(Toolpath)
+};
+
+constexpr double kTiny = 1e-9;
+constexpr double kEnvelopeStep_mm = 0.02; // grid of the roughing envelope; roughing needs no finer
+
+QString mm(double value)
+{
+    return QString::number(value, 'f', 3);
+}
+
+double radiansToDegrees(double a)
+{
+    return a * 180.0 / std::numbers::pi;
+}
+
+// The left end of the region the tool may cut: the chuck face or the left centre, plus the
+// clearance the nose keeps from the jaws or the driver.
+double leftSupport_mm(const Project &project)
+{
+    return project.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : project.clamping.clampedLength_mm;
+}
+
+bool rightEndOnCentre(const Project &project)
+{
+    return project.clamping.method != ClampingMethod::Chuck;
+}
+
+PathElement line(ProfilePoint from, ProfilePoint to, const QString &featureId)
+{
+    PathElement e;
+    e.from = from;
+    e.to = to;
+    e.featureId = featureId;
+    return e;
+}
+
+bool isFace(const PathElement &e)
+{
+    return !e.arc && std::abs(e.from.z_mm - e.to.z_mm) < kTiny;
+}
+
+// A feature moved by a compensation meets its neighbour: a face next to it takes up the radial step
+// (it stays a face), else a radial step is programmed.
+void joinMovedFeature(std::vector<PathElement> &out, PathElement &next)
+{
+    const bool radialStep = std::abs(out.back().to.z_mm - next.from.z_mm) < kTiny;
+    if (radialStep && isFace(next))
+        next.from = out.back().to;
+    else if (radialStep && isFace(out.back()))
+        out.back().to = next.from;
+    else
+        out.push_back(line(out.back().to, next.from, next.featureId));
+}
+
+// The target contour from its right end to its left end with the compensation plan applied: a
+// constant offset moves a feature radially, a profile correction replaces it by its corrected
+// stations; a radial step joins a moved feature to its neighbours.
+std::vector<PathElement> finishingContour(const Project &project, const CompensationPlan *plan)
+{
+    const Contour target = targetContour(project, ContourSide::Outer);
+    std::vector<PathElement> out;
+    for (PathElement e : reversedElements(target.segments)) {
+        const FeatureCompensation *c = plan ? plan->find(e.featureId) : nullptr;
+        std::vector<PathElement> pieces;
+        if (c && c->action == CompensationAction::ProfileCorrection && c->correctedPath.size() >= 2) {
+            for (std::size_t j = c->correctedPath.size() - 1; j > 0; --j)
+                pieces.push_back(line(c->correctedPath[j], c->correctedPath[j - 1], e.featureId));
+        } else {
+            if (c && c->action == CompensationAction::ConstantOffset) {
+                const double shift = 0.5e-3 * c->offset_um;
+                e.from.r_mm += shift;
+                e.to.r_mm += shift;
+                e.centre.r_mm += shift;
+            }
+            pieces.push_back(e);
+        }
+        for (PathElement p : pieces) {
+            if (!out.empty() && std::hypot(out.back().to.z_mm - p.from.z_mm, out.back().to.r_mm - p.from.r_mm) > kTiny)
+                joinMovedFeature(out, p);
+            out.push_back(p);
+        }
+    }
+    return out;
+}
+
+// The point of an element where z = zCut (the element crosses it).
+ProfilePoint pointAtZ(const PathElement &e, double zCut)
+{
+    if (!e.arc) {
+        const double t = (zCut - e.from.z_mm) / (e.to.z_mm - e.from.z_mm);
+        return {zCut, e.from.r_mm + t * (e.to.r_mm - e.from.r_mm)};
+    }
+    const double dz = zCut - e.centre.z_mm;
+    const double h = std::sqrt(std::max(e.radius_mm * e.radius_mm - dz * dz, 0.0));
+    const double lo = std::min(e.from.r_mm, e.to.r_mm) - kTiny;
+    const double hi = std::max(e.from.r_mm, e.to.r_mm) + kTiny;
+    const double up = e.centre.r_mm + h;
+    return {zCut, (up >= lo && up <= hi) ? up : e.centre.r_mm - h};
+}
+
+// The chain up to where it first passes z = zMin going left.
+std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin)
+{
+    std::vector<PathElement> out;
+    for (PathElement e : chain) {
+        if (e.from.z_mm <= zMin + kTiny)
+            break;
+        if (e.to.z_mm < zMin) {
+            e.to = pointAtZ(e, zMin);
+            out.push_back(e);
+            break;
+        }
+        out.push_back(e);
+    }
+    return out;
+}
+
+// A tool whose trailing (minor) edge makes kappa' = 180° - kappa_r - epsilon_r with the axis
+// (ISO 3002-1, tool cutting edge angle and minor cutting edge angle; the corner angle of the insert
+// between them) can follow a contour that falls, in its feed direction, no steeper than kappa'.
+void warnWhereTheTrailingEdgeCannotFollow(const std::vector<PathElement> &chain, double trailing_deg,
+                                          QStringList &warnings)
+{
+    std::set<QString> named;
+    for (const PathElement &e : chain) {
+        for (const ProfilePoint d : {startTangent(e), endTangent(e)}) {
+            if (d.r_mm >= -1e-9)
+                continue;
+            const double fall_deg = radiansToDegrees(std::atan2(-d.r_mm, -d.z_mm));
+            if (fall_deg > trailing_deg + 1e-6 && named.insert(e.featureId).second)
+                warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing "
+                                          "edge (%3°): it cannot be turned towards the chuck with this tool without "
+                                          "damaging it; turn it from the other side or with a neutral tool.")
+                                .arg(e.featureId, QString::number(fall_deg, 'f', 1),
+                                     QString::number(trailing_deg, 'f', 1));
+        }
+    }
+}
+
+// Features outside the jaws (or the driver) that reach closer to them than the tool goes.
+void warnWhereTheJawsKeepTheToolOff(const Project &project, double zReached_mm, double clearance_mm,
+                                    QStringList &warnings)
+{
+    const double support = leftSupport_mm(project);
+    QStringList features;
+    for (const Segment &s : project.part.outer.segments) {
+        const double zMin = std::min(s.from.z_mm, s.to.z_mm);
+        const double zMax = std::max(s.from.z_mm, s.to.z_mm);
+        if (zMax > support + kTiny && zMin < zReached_mm - 1e-6)
+            features << s.id;
+    }
+    if (features.isEmpty())
+        return;
+    const bool centres = project.clamping.method == ClampingMethod::BetweenCentres;
+    const QString where = centres ? Toolpaths::tr("left centre") : Toolpaths::tr("chuck face");
+    const QString text =
+        features.size() == 1
+            ? Toolpaths::tr("%1 reaches within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): "
+                            "it is not turned there.")
+            : Toolpaths::tr("%1 reach within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): "
+                            "they are not turned there.");
+    const QString advice = centres ? Toolpaths::tr("Turn that end with the part turned end for end.")
+                                   : Toolpaths::tr("Grip the part shorter, or turn that end in another set-up.");
+    warnings << text.arg(features.join(QStringLiteral(", ")), mm(zReached_mm - support), where, mm(clearance_mm)) +
+                    QLatin1Char(' ') + advice;
+}
+
+ToolMove move(MoveKind kind, ProfilePoint to, const QString &featureId = {})
+{
+    ToolMove m;
+    m.kind = kind;
+    m.to = to;
+    m.featureId = featureId;
+    return m;
+}
+
+ToolMove moveAlong(const PathElement &e)
+{
+    ToolMove m = move(MoveKind::Feed, e.to, e.featureId);
+    if (e.arc) {
+        m.kind = e.counterClockwise ? MoveKind::ArcCounterClockwise : MoveKind::ArcClockwise;
+        m.centre = e.centre;
+        m.radius_mm = e.radius_mm;
+    }
+    return m;
+}
+
+double smallestAxialRadius(const std::vector<PathElement> &chain)
+{
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const PathElement &e : chain)
+        if (std::abs(e.from.z_mm - e.to.z_mm) > kTiny) // a face does not count: G96 is clamped there
+            smallest = std::min({smallest, e.from.r_mm, e.to.r_mm});
+    return std::isfinite(smallest) ? smallest : 0.0;
+}
+
+struct FinishingGeometry {
+    std::vector<PathElement> contour; // what is programmed (control) or offset (tip path)
+    bool faced = false;
+};
+
+FinishingGeometry finishingGeometry(const Project &project, const ToolpathOptions &options, double noseRadius_mm)
+{
+    FinishingGeometry g;
+    std::vector<PathElement> chain = finishingContour(project, options.compensation);
+    const double length = project.part.length_mm();
+    // The right end face: the leading elements at z = length that run up from the axis or the bore.
+    std::size_t face = 0;
+    while (face < chain.size() && std::abs(chain[face].from.z_mm - length) < kTiny &&
+           std::abs(chain[face].to.z_mm - length) < kTiny)
+        ++face;
+    if (face > 0 && rightEndOnCentre(project)) {
+        chain.erase(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(face));
+    } else if (face > 0) {
+        g.faced = true;
+        // Programmed past the axis or the bore edge by r_e, so that the nose centre reaches it and
+        // no pip is left (with the control's compensation the nose centre follows the line r_e off
+        // the programmed face, from the programmed start).
+        if (options.nose == NoseHandling::ControlCompensation)
+            chain.front().from.r_mm -= noseRadius_mm;
+    }
+    g.contour = clippedAtLeft(chain, leftSupport_mm(project) + options.clearance_mm + noseRadius_mm);
+    return g;
+}
+
+PassPath finishingPass(const Project &project, const CuttingPass &conditions, const ToolpathOptions &options,
+                       double noseRadius_mm, double safeRadius, Toolpath &path)
+{
+    PassPath pass;
+    pass.conditions = conditions;
+    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm);
+    path.endFaceFaced = g.faced;
+    if (g.contour.empty())
+        return pass;
+    pass.smallestDiameter_mm = 2.0 * smallestAxialRadius(g.contour);
+    std::vector<PathElement> programmed = g.contour;
+    if (options.nose == NoseHandling::TipPath) {
+        QStringList dropped;
+        programmed = translated(offsetToTheRight(g.contour, noseRadius_mm, &dropped), -noseRadius_mm, -noseRadius_mm);
+        for (const QString &id : dropped)
+            path.warnings << Toolpaths::tr("%1 is narrower or tighter than the nose radius %2 mm: the nose cannot "
+                                           "follow it and leaves it rounded.")
+                                 .arg(id, mm(noseRadius_mm));
+    }
+    // The entry move, longer than r_e (a compensation needs that): along -z onto a face that is faced,
+    // else along the first element's own line, so that a control's G42 starts with the nose square to
+    // it and the element is turned from its first point.
+    const double entryLength = options.clearance_mm + 2.0 * noseRadius_mm;
+    const double zApproach = project.part.length_mm() + entryLength;
+    const ProfilePoint start = programmed.front().from;
+    ProfilePoint entryFrom{zApproach, start.r_mm};
+    if (options.nose == NoseHandling::ControlCompensation && !g.faced) {
+        const ProfilePoint t = startTangent(programmed.front());
+        entryFrom = {start.z_mm - entryLength * t.z_mm, start.r_mm - entryLength * t.r_mm};
+    }
+    pass.moves.push_back(move(MoveKind::Rapid, {entryFrom.z_mm, safeRadius}));
+    pass.moves.push_back(move(MoveKind::Rapid, entryFrom));
+    ToolMove entry = move(MoveKind::Feed, start);
+    entry.startsNoseCompensation = options.nose == NoseHandling::ControlCompensation;
+    pass.moves.push_back(entry);
+    for (const PathElement &e : programmed)
+        pass.moves.push_back(moveAlong(e));
+    ToolMove exit = move(MoveKind::Feed, {programmed.back().to.z_mm, safeRadius});
+    exit.endsNoseCompensation = options.nose == NoseHandling::ControlCompensation;
+    pass.moves.push_back(exit);
+    pass.moves.push_back(move(MoveKind::Rapid, {std::max(zApproach, entryFrom.z_mm), safeRadius}));
+    return pass;
+}
+
+// The envelope from index i in direction `step` until it first reaches `level`: the points passed
+// (nose-centre coordinates; -infinity where no contour is near), ending on the level. Between two
+// samples the path runs straight where the envelope is gentle (its chord then stays within the
+// sagitta of the nose circle, far below a micrometre on this grid) and, where it rises or falls
+// by more than a grid step, goes round the step at the higher of the two samples, so that it
+// never cuts into the allowance. At the end of the region the tool climbs straight up to the level.
+std::vector<ProfilePoint> flank(const Envelope &env, std::ptrdiff_t i, std::ptrdiff_t step, double level)
+{
+    std::vector<ProfilePoint> points;
+    const auto n = static_cast<std::ptrdiff_t>(env.r_mm.size());
+    for (; i >= 0 && i < n; i += step) {
+        const double z = env.z(static_cast<std::size_t>(i));
+        const double r = env.r_mm[static_cast<std::size_t>(i)];
+        const bool steep = points.empty() || !std::isfinite(points.back().r_mm) || !std::isfinite(r) ||
+                           std::abs(r - points.back().r_mm) > env.step_mm;
+        if (r >= level) {
+            if (steep) {
+                if (!points.empty())
+                    points.push_back({points.back().z_mm, level});
+                else
+                    points.push_back({z, level});
+            } else {
+                const ProfilePoint previous = points.back();
+                const double t = (level - previous.r_mm) / (r - previous.r_mm);
+                points.push_back({previous.z_mm + t * (z - previous.z_mm), level});
+            }
+            return points;
+        }
+        if (steep && !points.empty() && std::isfinite(r) && std::isfinite(points.back().r_mm)) {
+            const ProfilePoint previous = points.back();
+            points.push_back(r > previous.r_mm ? ProfilePoint{previous.z_mm, r} : ProfilePoint{z, previous.r_mm});
+        }
+        points.push_back({z, r});
+    }
+    if (!points.empty())
+        points.push_back({points.back().z_mm, level});
+    return points;
+}
+
+void addFeeds(PassPath &pass, const std::vector<ProfilePoint> &points, double noseRadius_mm)
+{
+    for (const ProfilePoint &p : simplified(points, 0.001))
+        pass.moves.push_back(move(MoveKind::Feed, {p.z_mm - noseRadius_mm, p.r_mm - noseRadius_mm}));
+}
+
+// One roughing level (nose-centre coordinates): every stretch where the allowance lies below the
+// level, entered from the right (in the air or down the right flank from the level above) and left
+// up the left flank to the level above. Rapid moves are at the safe radius (tool tip).
+void roughLevel(PassPath &pass, const Envelope &env, double level, double levelAbove, double safeRadius,
+                double noseRadius_mm, double clearance_mm)
+{
+    auto raised = [level](ProfilePoint p) { return ProfilePoint{p.z_mm, std::max(p.r_mm, level)}; };
+    std::ptrdiff_t i = static_cast<std::ptrdiff_t>(env.r_mm.size()) - 1;
+    while (i >= 0) {
+        if (env.r_mm[static_cast<std::size_t>(i)] >= level) {
+            --i;
+            continue;
+        }
+        const std::ptrdiff_t right = i;
+        while (i >= 0 && env.r_mm[static_cast<std::size_t>(i)] < level)
+            --i;
+        const std::ptrdiff_t left = i + 1;
+        std::vector<ProfilePoint> cut;
+        const std::vector<ProfilePoint> down = flank(env, right, +1, levelAbove);
+        for (std::size_t k = down.size(); k-- > 0;) // clang 14 cannot use views::reverse
+            cut.push_back(raised(down[k]));
+        cut.push_back({env.z(static_cast<std::size_t>(left)), level});
+        for (const ProfilePoint &p : flank(env, left, -1, levelAbove))
+            cut.push_back(raised(p));
+        const double zEntry = cut.front().z_mm - noseRadius_mm;
+        pass.moves.push_back(move(MoveKind::Rapid, {zEntry, safeRadius}));
+        pass.moves.push_back(move(MoveKind::Rapid, {zEntry, levelAbove - noseRadius_mm + clearance_mm}));
+        addFeeds(pass, cut, noseRadius_mm);
+        pass.moves.push_back(move(MoveKind::Rapid, {pass.moves.back().to.z_mm, safeRadius}));
+    }
+}
+
+std::vector<PassPath> roughingPasses(const Project &project, const std::vector<CuttingPass> &roughing,
+                                     double allowance_mm, double noseRadius_mm, double safeRadius,
+                                     const ToolpathOptions &options, QStringList &warnings)
+{
+    const double length = project.part.length_mm();
+    const double zLeft = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm; // nose centre
+    const double zRight = length + options.clearance_mm + noseRadius_mm;
+    const Contour target = targetContour(project, ContourSide::Outer);
+    const Envelope env =
+        widenedEnvelope(target.segments, allowance_mm + noseRadius_mm, zLeft, zRight, kEnvelopeStep_mm);
+    const double stockRadius = 0.5 * project.part.stockDiameter_mm;
+    std::vector<PassPath> passes;
+    double levelAbove = stockRadius + noseRadius_mm;
+    for (const CuttingPass &conditions : roughing) {
+        PassPath pass;
+        pass.conditions = conditions;
+        const double level = levelAbove - conditions.depthOfCut_mm;
+        roughLevel(pass, env, level, levelAbove, safeRadius, noseRadius_mm, options.clearance_mm);
+        pass.smallestDiameter_mm = 2.0 * (level - noseRadius_mm);
+        passes.push_back(std::move(pass));
+        levelAbove = level;
+    }
+    double left = 0.0; // stock above the allowance that no level reaches (on the part, not beyond it)
+    for (std::size_t i = 0; i < env.r_mm.size(); ++i)
+        if (env.z(i) <= length && std::isfinite(env.r_mm[i]) && env.r_mm[i] < levelAbove)
+            left = std::max(left, levelAbove - env.r_mm[i]);
+    if (left > std::max(0.01, 0.1 * allowance_mm)) // within 10 % of the allowance the finishing pass takes it
+        warnings << Toolpaths::tr("The planned roughing leaves up to %1 mm more than the finishing allowance of "
+                                  "%2 mm: the finishing pass would cut it.")
+                        .arg(mm(left), mm(allowance_mm));
+    return passes;
+}
+
+} // namespace
+
+Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, const std::vector<CuttingPass> &roughing,
+                         double noseRadius_mm, std::optional<double> trailingEdgeAngle_deg,
+                         const ToolpathOptions &options)
+{
+    Toolpath path;
+    path.nose = options.nose;
+    path.noseRadius_mm = noseRadius_mm;
+    path.safeDiameter_mm = project.part.stockDiameter_mm + 2.0 * options.clearance_mm;
+    const double safeRadius = 0.5 * path.safeDiameter_mm;
+    path.roughing =
+        roughingPasses(project, roughing, finishing.depthOfCut_mm, noseRadius_mm, safeRadius, options, path.warnings);
+    path.finishing = finishingPass(project, finishing, options, noseRadius_mm, safeRadius, path);
+    int number = 1;
+    for (PassPath &p : path.roughing)
+        p.number = number++;
+    path.finishing.number = number;
+    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm);
+    if (trailingEdgeAngle_deg)
+        warnWhereTheTrailingEdgeCannotFollow(g.contour, *trailingEdgeAngle_deg, path.warnings);
+    else
+        path.warnings << Toolpaths::tr("The trailing edge angle of the tool is not known (holder entering angle and "
+                                       "insert shape): falling contours are not checked.");
+    warnWhereTheJawsKeepTheToolOff(project, leftSupport_mm(project) + options.clearance_mm + noseRadius_mm,
+                                   options.clearance_mm, path.warnings);
+    if (rightEndOnCentre(project))
+        path.notes << Toolpaths::tr("The right end face is held by a centre and is not faced: it is faced and "
+                                    "centred before the part is set up.");
+    path.notes << Toolpaths::tr("The tool stops %1 mm short of the %2; the stock there is not turned.")
+                      .arg(mm(options.clearance_mm), project.clamping.method == ClampingMethod::BetweenCentres
+                                                         ? Toolpaths::tr("left centre and driver")
+                                                         : Toolpaths::tr("chuck jaws"));
+    if (!project.part.inner.empty())
+        path.notes << Toolpaths::tr("The bore is not in this program (outer contour only).");
+    const double radialStock = 0.5 * project.part.stockDiameter_mm -
+                               0.5 * std::max(path.finishing.smallestDiameter_mm, 0.0) - finishing.depthOfCut_mm;
+    if (roughing.empty() && radialStock > 1e-3)
+        path.warnings << Toolpaths::tr("No roughing pass is planned: the finishing pass would cut up to %1 mm more "
+                                       "than its depth of cut.")
+                             .arg(mm(radialStock));
+    return path;
+}
+
+} // namespace tolturn

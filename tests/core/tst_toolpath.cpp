@@ -1,0 +1,405 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Tool paths and programs: the nose-radius offset against hand calculations, the roughing levels
+// against the allowance, and every example's LinuxCNC program read back by LinuxCNC's own
+// interpreter (rs274, package linuxcnc-uspace), whose canonical moves must reproduce the profile
+// with the nose radius to 1 µm. The Fanuc/Haas and Sinumerik programs must carry the same path.
+
+#include "core/data/data_library.h"
+#include "core/deviation/deviation_model.h"
+#include "core/io/project_file.h"
+#include "core/part/profile_geometry.h"
+#include "core/planning/gcode.h"
+#include "core/planning/path_geometry.h"
+#include "core/tolerance/target_contour.h"
+
+#include <QDir>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+using namespace tolturn;
+
+namespace {
+
+Project example(const QString &name)
+{
+    const ProjectParseResult r = readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + name);
+    if (!r.project)
+        qFatal("cannot read example %s", qPrintable(name));
+    return *r.project;
+}
+
+PathElement lineElement(double z0, double r0, double z1, double r1)
+{
+    PathElement e;
+    e.from = {z0, r0};
+    e.to = {z1, r1};
+    return e;
+}
+
+double distance(ProfilePoint a, ProfilePoint b)
+{
+    return std::hypot(a.z_mm - b.z_mm, a.r_mm - b.r_mm);
+}
+
+// Distance from a point to a line segment or to an arc (centre, radius, from, to, sense).
+double distanceTo(const PathElement &e, ProfilePoint p)
+{
+    if (!e.arc) {
+        const double dz = e.to.z_mm - e.from.z_mm;
+        const double dr = e.to.r_mm - e.from.r_mm;
+        const double l2 = dz * dz + dr * dr;
+        const double t =
+            l2 > 0 ? std::clamp(((p.z_mm - e.from.z_mm) * dz + (p.r_mm - e.from.r_mm) * dr) / l2, 0.0, 1.0) : 0.0;
+        return distance(p, {e.from.z_mm + t * dz, e.from.r_mm + t * dr});
+    }
+    const auto angle = [&](ProfilePoint q) { return std::atan2(q.r_mm - e.centre.r_mm, q.z_mm - e.centre.z_mm); };
+    const double turn = 2.0 * std::numbers::pi;
+    auto sweepTo = [&](double a) {
+        double w = a - angle(e.from);
+        if (e.counterClockwise)
+            while (w < 0)
+                w += turn;
+        else
+            while (w > 0)
+                w -= turn;
+        return w;
+    };
+    const double sweep = sweepTo(angle(e.to));
+    const double at = sweepTo(angle(p));
+    const bool within = e.counterClockwise ? at <= sweep : at >= sweep;
+    if (within)
+        return std::abs(distance(p, e.centre) - e.radius_mm);
+    return std::min(distance(p, e.from), distance(p, e.to));
+}
+
+double distanceTo(const std::vector<PathElement> &chain, ProfilePoint p)
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (const PathElement &e : chain)
+        best = std::min(best, distanceTo(e, p));
+    return best;
+}
+
+// The canonical feed moves LinuxCNC's interpreter prints, as path elements of the tool tip in the
+// half-section (z from the part's left end, r), with the pass each belongs to (the comments).
+struct CanonicalPass {
+    bool finishing = false;
+    std::vector<PathElement> moves;
+};
+
+std::vector<CanonicalPass> readCanonical(const QString &text, double length_mm)
+{
+    static const QRegularExpression number(QStringLiteral("-?\\d+\\.\\d+|-?\\d+"));
+    std::vector<CanonicalPass> passes(1);
+    ProfilePoint at;
+    for (const QString &line : text.split(QLatin1Char('\n'))) {
+        auto values = [&](const QString &call) {
+            std::vector<double> v;
+            const QString args = line.section(call + QLatin1Char('('), 1).section(QLatin1Char(')'), 0, 0);
+            for (const QString &a : args.split(QLatin1Char(',')))
+                v.push_back(a.trimmed().toDouble());
+            return v;
+        };
+        if (line.contains(QStringLiteral("COMMENT(\"PASS "))) {
+            passes.push_back({line.contains(QStringLiteral("FINISHING")), {}});
+        } else if (line.contains(QStringLiteral("STRAIGHT_TRAVERSE("))) {
+            const auto v = values(QStringLiteral("STRAIGHT_TRAVERSE"));
+            at = {v[2] + length_mm, v[0]};
+        } else if (line.contains(QStringLiteral("STRAIGHT_FEED("))) {
+            const auto v = values(QStringLiteral("STRAIGHT_FEED"));
+            const ProfilePoint to{v[2] + length_mm, v[0]};
+            passes.back().moves.push_back(lineElement(at.z_mm, at.r_mm, to.z_mm, to.r_mm));
+            at = to;
+        } else if (line.contains(QStringLiteral("ARC_FEED("))) {
+            const auto v = values(QStringLiteral("ARC_FEED")); // Z end, X end, Z centre, X centre, turn
+            PathElement e;
+            e.arc = true;
+            e.from = at;
+            e.to = {v[0] + length_mm, v[1]};
+            e.centre = {v[2] + length_mm, v[3]};
+            e.radius_mm = distance(e.to, e.centre);
+            e.counterClockwise = v[4] > 0;
+            passes.back().moves.push_back(e);
+            at = e.to;
+        }
+    }
+    return passes;
+}
+
+struct Lathe {
+    QTemporaryDir dir;
+    QString ini, tools;
+};
+
+// A LinuxCNC lathe for the standalone interpreter: X and Z, millimetres, tool 1 with the nose
+// radius and orientation 2 (the tip r_e below and r_e left of the nose centre with Z to the right
+// and X up). The standalone interpreter reads the tool table in inches.
+void setUpLathe(Lathe &lathe, double noseRadius_mm)
+{
+    lathe.ini = lathe.dir.filePath(QStringLiteral("lathe.ini"));
+    lathe.tools = lathe.dir.filePath(QStringLiteral("tools.tbl"));
+    QFile ini(lathe.ini);
+    QVERIFY(ini.open(QIODevice::WriteOnly));
+    ini.write("[RS274NGC]\nPARAMETER_FILE = rs274.var\n[TRAJ]\nCOORDINATES = X Z\nLINEAR_UNITS = mm\n"
+              "ANGULAR_UNITS = degree\n[EMCIO]\nTOOL_TABLE = tools.tbl\n");
+    QFile tools(lathe.tools);
+    QVERIFY(tools.open(QIODevice::WriteOnly));
+    tools.write(QStringLiteral("T1 P1 D%1 Q2 ;nose\n").arg(2.0 * noseRadius_mm / 25.4, 0, 'f', 10).toUtf8());
+    QFile var(lathe.dir.filePath(QStringLiteral("rs274.var")));
+    QVERIFY(var.open(QIODevice::WriteOnly));
+}
+
+QString runInterpreter(const Lathe &lathe, const QString &program)
+{
+    const QString rs274 = QStandardPaths::findExecutable(QStringLiteral("rs274"));
+    if (rs274.isEmpty())
+        return QStringLiteral("ERROR: rs274 not found (package linuxcnc-uspace; tools/bootstrap.sh installs it)");
+    const QString in = lathe.dir.filePath(QStringLiteral("in.ngc"));
+    const QString out = lathe.dir.filePath(QStringLiteral("out.txt"));
+    QFile f(in);
+    if (!f.open(QIODevice::WriteOnly))
+        return QStringLiteral("ERROR: cannot write the program");
+    f.write(program.toUtf8());
+    f.close();
+    QProcess p;
+    p.setWorkingDirectory(lathe.dir.path());
+    p.start(rs274, {QStringLiteral("-t"), lathe.tools, QStringLiteral("-i"), lathe.ini, QStringLiteral("-g"), in, out});
+    p.closeWriteChannel();
+    if (!p.waitForFinished(60000) || p.exitCode() != 0)
+        return QStringLiteral("ERROR: rs274 failed: ") + QString::fromUtf8(p.readAllStandardError()) +
+               QString::fromUtf8(p.readAllStandardOutput());
+    QFile result(out);
+    if (!result.open(QIODevice::ReadOnly))
+        return QStringLiteral("ERROR: no output");
+    return QString::fromUtf8(result.readAll());
+}
+
+// (kind, X, Z, R) of the motion blocks of a program in any of the three dialects.
+QStringList programmedMoves(const QString &program)
+{
+    static const QRegularExpression comment(QStringLiteral("\\([^)]*\\)|;.*$"));
+    static const QRegularExpression motion(QStringLiteral("\\bG0?([0-3])\\b"));
+    static const QRegularExpression word(QStringLiteral("\\b(X|Z|R|CR=)(-?\\d+\\.\\d+)"));
+    QStringList moves;
+    int g = 0;
+    for (QString line : program.split(QLatin1Char('\n'))) {
+        line.remove(comment);
+        if (const auto m = motion.match(line); m.hasMatch())
+            g = m.captured(1).toInt();
+        QStringList words{QString::number(g)};
+        auto it = word.globalMatch(line);
+        while (it.hasNext()) {
+            const auto w = it.next();
+            words << (w.captured(1) == QLatin1String("CR=") ? QStringLiteral("R") : w.captured(1)) + w.captured(2);
+        }
+        if (words.size() > 1)
+            moves << words.join(QLatin1Char(' '));
+    }
+    return moves;
+}
+
+} // namespace
+
+class TestToolpath : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+
+    // Offset by r = 0.8 to the right of the travel. Up the end face (z 100, r 0 -> 20), then left along
+    // the Ø40 cylinder: a convex corner, closed by an arc of 0.8 about (100, 20) from (100.8, 20) to
+    // (100, 20.8). Then left along the cylinder to z 60 and up a shoulder to r 25 (its face looks to
+    // +z, where the tool is): a concave corner, where the offsets r = 20.8 and z = 60.8 meet.
+    void offsetClosesConvexCornersWithArcsAndTrimsConcaveOnes()
+    {
+        const std::vector<PathElement> chain{lineElement(100, 0, 100, 20), lineElement(100, 20, 60, 20),
+                                             lineElement(60, 20, 60, 25)};
+        const std::vector<PathElement> o = offsetToTheRight(chain, 0.8);
+        QCOMPARE(o.size(), std::size_t{4});
+        QCOMPARE(o[0].from.z_mm, 100.8);
+        QCOMPARE(o[0].to.r_mm, 20.0);
+        QVERIFY(o[1].arc && o[1].counterClockwise);
+        QCOMPARE(o[1].centre.z_mm, 100.0);
+        QCOMPARE(o[1].centre.r_mm, 20.0);
+        QCOMPARE(o[1].to.z_mm, 100.0);
+        QCOMPARE(o[1].to.r_mm, 20.8);
+        QVERIFY(std::abs(o[2].to.z_mm - 60.8) < 1e-12 && std::abs(o[2].to.r_mm - 20.8) < 1e-12);
+        QVERIFY(std::abs(o[3].from.z_mm - 60.8) < 1e-12 && std::abs(o[3].to.r_mm - 25.0) < 1e-12);
+    }
+
+    // The tip path of a 45° chamfer: the nose centre runs r_e off the chamfer, the imaginary tip r_e
+    // below and left of the centre. By hand: offset (+r_e/sqrt 2, +r_e/sqrt 2), tip shift (-r_e, -r_e),
+    // together -r_e (1 - 1/sqrt 2) in z and in r, so the line z + r = c moves by
+    // -r_e (2 - sqrt 2) = -0.58579 r_e; for r_e = 0.8 mm, -0.46863 mm.
+    void tipPathOfAChamferIsShiftedByTheClassicCompensation()
+    {
+        const std::vector<PathElement> chamfer{lineElement(100, 18, 98, 20)};
+        const std::vector<PathElement> tip = translated(offsetToTheRight(chamfer, 0.8), -0.8, -0.8);
+        QCOMPARE(tip.size(), std::size_t{1});
+        const double shift = (tip[0].from.z_mm + tip[0].from.r_mm) - (100.0 + 18.0);
+        QVERIFY2(std::abs(shift - (-0.46863)) < 1e-5, qPrintable(QString::number(shift, 'f', 6)));
+    }
+
+    // A concave edge round smaller than the nose cannot be followed: it is named and left as a corner.
+    void concaveRoundTighterThanTheNoseIsNamed()
+    {
+        PathElement round;
+        round.arc = true;
+        round.from = {60.5, 20.0};
+        round.to = {60.0, 20.5};
+        round.centre = {60.5, 20.5};
+        round.radius_mm = 0.5;
+        round.counterClockwise = false;
+        round.featureId = QStringLiteral("R1");
+        QStringList dropped;
+        const std::vector<PathElement> o =
+            offsetToTheRight({lineElement(100, 20, 60.5, 20), round, lineElement(60, 20.5, 60, 25)}, 0.8, &dropped);
+        QCOMPARE(dropped, QStringList{QStringLiteral("R1")});
+        for (const PathElement &e : o)
+            QVERIFY(!e.arc);
+    }
+
+    // Roughing of the stepped shaft: eight levels of 1.9375 mm from the Ø60 stock (the plan takes
+    // 15.5 mm = 30 - 14 - 0.5 down to the Ø28 end less the finishing allowance). No nose centre comes
+    // closer to the contour than the allowance plus the nose radius (0.5 + 0.8 mm, less the 2 µm of
+    // the path's simplification), and no tool point goes left of the chuck face + 2 mm (z 37).
+    void roughingKeepsTheAllowanceAndStaysClearOfTheJaws()
+    {
+        const Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(d.inputs);
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, {});
+        QCOMPARE(program.path.roughing.size(), std::size_t{8});
+        // O4 runs to the chuck face: the nose keeps 2 mm off the jaws, so 2 + 0.8 mm of O4 is not turned.
+        QCOMPARE(program.path.warnings.size(), 1);
+        QVERIFY(program.path.warnings.constFirst().startsWith(QStringLiteral("O4 reaches within 2.800 mm")));
+        const std::vector<PathElement> contour = reversedElements(targetContour(p, ContourSide::Outer).segments);
+        double closest = 1e9;
+        for (const PassPath &pass : program.path.roughing) {
+            const ToolMove *previous = nullptr;
+            for (const ToolMove &m : pass.moves) {
+                QVERIFY(m.to.z_mm >= 37.0 - 1e-9);
+                if (m.kind == MoveKind::Feed && previous) {
+                    const PathElement e =
+                        lineElement(previous->to.z_mm + 0.8, previous->to.r_mm + 0.8, m.to.z_mm + 0.8, m.to.r_mm + 0.8);
+                    for (const ProfilePoint &c : sampled(e, 0.01))
+                        closest = std::min(closest, distanceTo(contour, c));
+                }
+                previous = &m;
+            }
+        }
+        QVERIFY2(closest >= 1.3 - 0.002 && closest <= 1.3 + 0.01, qPrintable(QString::number(closest, 'f', 5)));
+        const double lowest = 30.0 - 8 * 1.9375;
+        QCOMPARE(program.path.roughing.back().smallestDiameter_mm, 2.0 * lowest);
+    }
+
+    // The step of the long shaft at z 380 falls in the feed direction (vertical); a PCLNR holder
+    // (kappa_r 95°) with a CNMG insert (epsilon_r 80°) trails at 180 - 95 - 80 = 5°.
+    void fallingStepBeyondTheTrailingEdgeIsAWarning()
+    {
+        const Project p = example(QStringLiteral("long-shaft-centres.tolturn"));
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, {});
+        QCOMPARE(program.path.warnings.size(), 2); // and the chamfer O2 and O3 near the left centre
+        QVERIFY(program.path.warnings.constFirst().startsWith(QStringLiteral("O4 falls at 90.0°")));
+        QVERIFY(program.path.warnings.constFirst().contains(QStringLiteral("(5.0°)")));
+        QVERIFY(program.path.warnings.constLast().startsWith(QStringLiteral("O2, O3 reach within 2.800 mm")));
+        QVERIFY(!program.path.endFaceFaced); // between centres: the end face is not faced
+    }
+
+    void linuxCncReproducesTheProfile_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("nose");
+        for (const QString &f : QDir(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples"))
+                                    .entryList({QStringLiteral("*.tolturn")}, QDir::Files)) {
+            QTest::addRow("%s G42", qPrintable(f)) << f << static_cast<int>(NoseHandling::ControlCompensation);
+            QTest::addRow("%s tip path", qPrintable(f)) << f << static_cast<int>(NoseHandling::TipPath);
+        }
+    }
+
+    // The program run through LinuxCNC's interpreter: the nose centre (canonical tip + r_e, r_e) of
+    // every finishing move keeps at least r_e - 1 µm from the whole contour (no gouge), and every
+    // point of the contour the pass turns is within r_e + 1 µm of the nose-centre path (the profile
+    // is reproduced). No roughing or finishing point goes into the jaws; the other dialects carry
+    // the same moves.
+    void linuxCncReproducesTheProfile()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, nose);
+        const Project p = example(file);
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(d.inputs);
+        const double re = d.inputs->noseRadius_mm;
+        GCodeOptions o;
+        o.nose = static_cast<NoseHandling>(nose);
+        o.dialect = ControlDialect::LinuxCnc;
+        const TurningProgram linuxcnc = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+        QVERIFY(linuxcnc.text.contains(QStringLiteral("G96 D")) && linuxcnc.text.contains(QStringLiteral("G95")) &&
+                linuxcnc.text.contains(QStringLiteral("G7")));
+        Lathe lathe;
+        setUpLathe(lathe, re);
+        const QString canonical = runInterpreter(lathe, linuxcnc.text);
+        QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
+        const double length = p.part.length_mm();
+        const std::vector<CanonicalPass> passes = readCanonical(canonical, length);
+        const double support = p.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : p.clamping.clampedLength_mm;
+        std::vector<PathElement> centre;
+        for (const CanonicalPass &pass : passes) {
+            for (const PathElement &m : pass.moves) {
+                for (const ProfilePoint &tip : sampled(m, 0.05))
+                    QVERIFY2(tip.z_mm >= support + 2.0 - 1e-6, qPrintable(QString::number(tip.z_mm)));
+                if (pass.finishing)
+                    centre.push_back(translated({m}, re, re).front());
+            }
+        }
+        QVERIFY(!centre.empty());
+        const Contour target = targetContour(p, ContourSide::Outer);
+        const std::vector<PathElement> contour = reversedElements(target.segments);
+        double closest = 1e9;
+        for (const PathElement &e : centre)
+            for (const ProfilePoint &c : sampled(e, 0.01))
+                closest = std::min(closest, distanceTo(contour, c));
+        QVERIFY2(closest >= re - 0.001, qPrintable(QStringLiteral("gouge: %1").arg(closest, 0, 'f', 5)));
+        const double zFrom = support + 2.0 + re;
+        const bool faced = p.clamping.method == ClampingMethod::Chuck;
+        // A sharp inner corner keeps the nose radius: contour points within r_e of one are not reached.
+        std::vector<ProfilePoint> innerCorners;
+        for (std::size_t i = 1; i < contour.size(); ++i) {
+            const ProfilePoint a = endTangent(contour[i - 1]);
+            const ProfilePoint b = startTangent(contour[i]);
+            if (a.z_mm * b.r_mm - a.r_mm * b.z_mm < -1e-9)
+                innerCorners.push_back(contour[i].from);
+        }
+        double farthest = 0.0;
+        for (const PathElement &e : contour) {
+            for (const ProfilePoint &q : sampled(e, 0.05)) {
+                const bool nearInnerCorner = std::any_of(innerCorners.begin(), innerCorners.end(),
+                                                         [&](ProfilePoint c) { return distance(c, q) < re + 1e-6; });
+                if (q.z_mm < zFrom - 1e-9 || (!faced && std::abs(q.z_mm - length) < 1e-9) ||
+                    (e.from.z_mm < zFrom && e.to.z_mm < zFrom) || nearInnerCorner)
+                    continue;
+                farthest = std::max(farthest, distanceTo(centre, q));
+            }
+        }
+        QVERIFY2(farthest <= re + 0.001, qPrintable(QStringLiteral("not reached: %1").arg(farthest, 0, 'f', 5)));
+
+        o.dialect = ControlDialect::FanucHaas;
+        const QString fanuc = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o).text;
+        o.dialect = ControlDialect::Sinumerik;
+        const QString sinumerik = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o).text;
+        QVERIFY(fanuc.contains(QStringLiteral("G50 S")) && fanuc.contains(QStringLiteral("G99")));
+        QVERIFY(sinumerik.contains(QStringLiteral("LIMS=")) && sinumerik.contains(QStringLiteral("DIAMON")) &&
+                sinumerik.contains(QStringLiteral("G95")));
+        QCOMPARE(programmedMoves(fanuc), programmedMoves(linuxcnc.text));
+        QCOMPARE(programmedMoves(sinumerik), programmedMoves(linuxcnc.text));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestToolpath)
+#include "tst_toolpath.moc"
