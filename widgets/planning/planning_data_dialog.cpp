@@ -266,8 +266,9 @@ QWidget *PlanningDataDialog::createLimitsGroup()
                                             tr("Spindle power F_c·v available.") + machine));
     form->addRow(tr("Max. tor&que:"), addBox(QStringLiteral("max_torque_Nm"), 1, 1e6, tr("N·m"),
                                              tr("Spindle torque F_c·D/2 available.") + machine));
-    form->addRow(tr("Max. sp&indle speed:"), addBox(QStringLiteral("max_spindle_speed_rpm"), 0, 1e6, tr("rpm"),
-                                                    tr("Highest spindle speed: the program clamps constant surface speed at it.") + machine));
+    form->addRow(tr("Max. sp&indle speed:"),
+                 addBox(QStringLiteral("max_spindle_speed_rpm"), 0, 1e6, tr("rpm"),
+                        tr("Highest spindle speed: the program clamps constant surface speed at it.") + machine));
     return group;
 }
 
