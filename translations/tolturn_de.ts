@@ -359,10 +359,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Der PDF-Bericht: Teil, Eingaben, vorhergesagte Abweichung, Toleranzbewertungen, Plan mit Schnittwertfenster, Rangfolge der Aufspannungen, Kompensation, Annahmen und Quellen.</translation>
     </message>
     <message>
-        <source>%1: unknown command &apos;%2&apos;. Run &apos;%1 --help&apos; for the list of commands.</source>
-        <translation>%1: unbekannter Befehl &apos;%2&apos;. &apos;%1 --help&apos; zeigt die Liste der Befehle.</translation>
-    </message>
-    <message>
         <source>Machine: %1</source>
         <translation>Maschine: %1</translation>
     </message>
@@ -385,6 +381,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--machine-end is compliant or stiff, not &quot;%1&quot;</source>
         <translation>--machine-end ist compliant oder stiff, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>%1: unknown command &apos;%2&apos;.</source>
+        <translation>%1: unbekannter Befehl &apos;%2&apos;.</translation>
+    </message>
+    <message>
+        <source>Did you mean &apos;%1&apos;?</source>
+        <translation>Meinten Sie &apos;%1&apos;?</translation>
+    </message>
+    <message>
+        <source>Run &apos;%1 --help&apos; for the list of commands.</source>
+        <translation>&apos;%1 --help&apos; listet die Befehle.</translation>
     </message>
 </context>
 <context>
@@ -565,6 +573,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Tailstock</source>
         <translation>Reitstock</translation>
+    </message>
+    <message>
+        <source>given forces</source>
+        <translation>vorgegebene Kräfte</translation>
     </message>
 </context>
 <context>
@@ -2861,6 +2873,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 over the machine&apos;s stiffness range</source>
         <translation>%1 über den Steifigkeitsbereich der Maschine</translation>
     </message>
+    <message>
+        <source>The predicted deviation of every feature appears here once a part is open.</source>
+        <translation>Die vorhergesagte Abweichung jedes Formelements erscheint hier, sobald ein Teil geöffnet ist.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::DiagnosticsPanel</name>
@@ -3929,6 +3945,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The project&apos;s passes: %1. Dialect: %2.</source>
         <translation>Die Schnitte des Projekts: %1. Dialekt: %2.</translation>
     </message>
+    <message>
+        <source>Not optimised yet. Press F5 (or Optimise) to find the cutting conditions that hold every tolerance at least time or cost; the cutting window, the clamping ranking and the compensation follow. Planning Data… holds the rates, tool life and the insert&apos;s ranges the optimiser works with.</source>
+        <translation>Noch nicht optimiert. Drücken Sie F5 (oder Optimieren), um die Schnittwerte zu finden, die jede Toleranz bei minimaler Zeit oder minimalen Kosten einhalten; Schnittwertfenster, Rangfolge der Aufspannungen und Kompensation folgen. Planungsdaten… enthält die Kostensätze, die Standzeit und die Bereiche der Wendeschneidplatte, mit denen die Optimierung rechnet.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -3939,6 +3959,20 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>z %1 %3, Ø %2 %3</source>
         <translation>z %1 %3, Ø %2 %3</translation>
+    </message>
+    <message>
+        <source>No part is open.
+
+Open an example part: File &gt; Open Example
+Import a turned part from STEP or IGES: File &gt; Import STEP/IGES… (Ctrl+I)
+Draw a new part: File &gt; New (Ctrl+N), then edit its features
+Open a project: File &gt; Open… (Ctrl+O)</source>
+        <translation>Kein Teil geöffnet.
+
+Ein Beispielteil öffnen: Datei &gt; Beispiel öffnen
+Ein Drehteil aus STEP oder IGES einlesen: Datei &gt; STEP/IGES importieren… (Strg+I)
+Ein neues Teil zeichnen: Datei &gt; Neu (Strg+N), dann seine Formelemente bearbeiten
+Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     </message>
 </context>
 <context>

@@ -359,10 +359,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>El informe PDF: pieza, datos de entrada, desviación prevista, veredictos de las tolerancias, plan con la ventana de corte, clasificación de sujeciones, compensación, hipótesis y fuentes.</translation>
     </message>
     <message>
-        <source>%1: unknown command &apos;%2&apos;. Run &apos;%1 --help&apos; for the list of commands.</source>
-        <translation>%1: comando desconocido &apos;%2&apos;. Ejecute &apos;%1 --help&apos; para ver la lista de comandos.</translation>
-    </message>
-    <message>
         <source>Machine: %1</source>
         <translation>Máquina: %1</translation>
     </message>
@@ -385,6 +381,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--machine-end is compliant or stiff, not &quot;%1&quot;</source>
         <translation>--machine-end es compliant o stiff, no «%1»</translation>
+    </message>
+    <message>
+        <source>%1: unknown command &apos;%2&apos;.</source>
+        <translation>%1: orden desconocida &apos;%2&apos;.</translation>
+    </message>
+    <message>
+        <source>Did you mean &apos;%1&apos;?</source>
+        <translation>¿Quería decir &apos;%1&apos;?</translation>
+    </message>
+    <message>
+        <source>Run &apos;%1 --help&apos; for the list of commands.</source>
+        <translation>Ejecute &apos;%1 --help&apos; para ver la lista de órdenes.</translation>
     </message>
 </context>
 <context>
@@ -565,6 +573,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Tailstock</source>
         <translation>Contrapunto</translation>
+    </message>
+    <message>
+        <source>given forces</source>
+        <translation>fuerzas dadas</translation>
     </message>
 </context>
 <context>
@@ -2861,6 +2873,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 over the machine&apos;s stiffness range</source>
         <translation>%1 en el rango de rigidez de la máquina</translation>
     </message>
+    <message>
+        <source>The predicted deviation of every feature appears here once a part is open.</source>
+        <translation>La desviación prevista de cada elemento aparece aquí en cuanto se abre una pieza.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::DiagnosticsPanel</name>
@@ -3929,6 +3945,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The project&apos;s passes: %1. Dialect: %2.</source>
         <translation>Las pasadas del proyecto: %1. Dialecto: %2.</translation>
     </message>
+    <message>
+        <source>Not optimised yet. Press F5 (or Optimise) to find the cutting conditions that hold every tolerance at least time or cost; the cutting window, the clamping ranking and the compensation follow. Planning Data… holds the rates, tool life and the insert&apos;s ranges the optimiser works with.</source>
+        <translation>Aún sin optimizar. Pulse F5 (u Optimizar) para hallar las condiciones de corte que cumplen todas las tolerancias con el mínimo tiempo o coste; siguen la ventana de corte, la clasificación de sujeciones y la compensación. Datos de planificación… contiene las tarifas, la vida de la herramienta y los rangos de la plaquita con los que trabaja el optimizador.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -3939,6 +3959,20 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>z %1 %3, Ø %2 %3</source>
         <translation>z %1 %3, Ø %2 %3</translation>
+    </message>
+    <message>
+        <source>No part is open.
+
+Open an example part: File &gt; Open Example
+Import a turned part from STEP or IGES: File &gt; Import STEP/IGES… (Ctrl+I)
+Draw a new part: File &gt; New (Ctrl+N), then edit its features
+Open a project: File &gt; Open… (Ctrl+O)</source>
+        <translation>No hay ninguna pieza abierta.
+
+Abrir una pieza de ejemplo: Archivo &gt; Abrir ejemplo
+Importar una pieza torneada de STEP o IGES: Archivo &gt; Importar STEP/IGES… (Ctrl+I)
+Dibujar una pieza nueva: Archivo &gt; Nuevo (Ctrl+N) y editar sus elementos
+Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     </message>
 </context>
 <context>

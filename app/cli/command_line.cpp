@@ -234,11 +234,11 @@ void printDeviationText(QTextStream &out, const DeviationResult &r)
 {
     const TurningInputs &in = *r.inputs;
     out << CommandLine::tr("Forces (%1): Fc = %2 N tangential, Ff = %3 N axial, Fp = %4 N radial")
-               .arg(in.forceModel, QString::number(in.forces.tangential_N, 'f', 1),
+               .arg(forceModelName(in.forceModel), QString::number(in.forces.tangential_N, 'f', 1),
                     QString::number(in.forces.axial_N, 'f', 1), QString::number(in.forces.radial_N, 'f', 1))
         << '\n';
     out << CommandLine::tr("Pass %1 (%2): vc %3 m/min, f %4 mm/rev, ap %5 mm; Ra %6 µm, Rz %7 µm; max %8 kW, %9 N·m")
-               .arg(in.passIndex)
+               .arg(in.passIndex + 1)
                .arg(keyword(in.pass.kind), formatNumber(in.pass.cuttingSpeed_m_min), formatNumber(in.pass.feed_mm_rev),
                     formatNumber(in.pass.depthOfCut_mm), QString::number(r.theoreticalRa_um, 'f', 2),
                     QString::number(r.theoreticalRz_um, 'f', 2), QString::number(r.maxPower_kW, 'f', 2),
@@ -666,7 +666,7 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
         };
         out << QStringLiteral("%1 %2 %3 %4 %5 %6  %7")
                    .arg(e.toleranceId, -10)
-                   .arg(keyword(e.type), -23)
+                   .arg(displayName(e.type), -23)
                    .arg(e.featureId, -8)
                    .arg(number(e.value_um, 10, 3), number(e.limit_um, 11, 3), number(e.utilisation_pct, 8, 1),
                         rangeVerdictText(r))
@@ -1056,6 +1056,42 @@ const std::vector<Command> &commands()
     return list;
 }
 
+// Levenshtein distance, for suggesting a command to a mistyped one.
+int editDistance(const QString &a, const QString &b)
+{
+    std::vector<int> row(static_cast<std::size_t>(b.size()) + 1);
+    for (std::size_t j = 0; j < row.size(); ++j)
+        row[j] = static_cast<int>(j);
+    for (qsizetype i = 1; i <= a.size(); ++i) {
+        int diagonal = row[0];
+        row[0] = static_cast<int>(i);
+        for (qsizetype j = 1; j <= b.size(); ++j) {
+            const int above = row[static_cast<std::size_t>(j)];
+            const int substitution = diagonal + (a.at(i - 1) == b.at(j - 1) ? 0 : 1);
+            row[static_cast<std::size_t>(j)] =
+                std::min({above + 1, row[static_cast<std::size_t>(j - 1)] + 1, substitution});
+            diagonal = above;
+        }
+    }
+    return row.back();
+}
+
+// The command a mistyped name most likely meant: within two edits, or the one it starts.
+QString nearestCommand(const QString &typed)
+{
+    QString best;
+    int bestDistance = 3;
+    for (const Command &c : commands()) {
+        const int d =
+            c.name.startsWith(typed.toLower()) && typed.size() >= 3 ? 0 : editDistance(typed.toLower(), c.name);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = c.name;
+        }
+    }
+    return best;
+}
+
 } // namespace
 
 int runCommandLine(const QStringList &arguments, QTextStream &out, QTextStream &err)
@@ -1074,13 +1110,16 @@ int runCommandLine(const QStringList &arguments, QTextStream &out, QTextStream &
         out << versionText();
         return kExitOk;
     }
+    // British spelling as well: the desktop program says "Optimise".
+    const QString name = first == QLatin1String("optimise") ? QStringLiteral("optimize") : first;
     for (const Command &c : commands()) {
-        if (c.name == first)
+        if (c.name == name)
             return c.run(QStringList{programName() + QLatin1Char(' ') + c.name} + args.mid(1), out, err);
     }
-    err << CommandLine::tr("%1: unknown command '%2'. Run '%1 --help' for the list of commands.")
-               .arg(programName(), first)
-        << '\n';
+    err << CommandLine::tr("%1: unknown command '%2'.").arg(programName(), first);
+    if (const QString close = nearestCommand(first); !close.isEmpty())
+        err << ' ' << CommandLine::tr("Did you mean '%1'?").arg(close);
+    err << ' ' << CommandLine::tr("Run '%1 --help' for the list of commands.").arg(programName()) << '\n';
     return kExitUsage;
 }
 

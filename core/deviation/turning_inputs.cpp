@@ -410,6 +410,17 @@ TurningInputs withTailstockStiffness(TurningInputs in, double k_N_per_mm, Clampi
     return in;
 }
 
+QString forceModelName(const QString &keyword)
+{
+    if (keyword == QLatin1String("kienzle"))
+        return QStringLiteral("Kienzle");
+    if (keyword == QLatin1String("li_du"))
+        return QStringLiteral("Li & Du");
+    if (keyword == QLatin1String("given"))
+        return DeviationModel::tr("given forces");
+    return keyword;
+}
+
 InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
 {
     InputsResult result;

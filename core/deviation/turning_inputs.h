@@ -78,6 +78,10 @@ struct TurningInputs {
     QStringList notes; // assumptions the result depends on, for people
 };
 
+// A force model's keyword ("kienzle", "li_du", "given") as people read it: "Kienzle", "Li & Du",
+// "given forces".
+[[nodiscard]] QString forceModelName(const QString &keyword);
+
 struct InputsResult {
     std::optional<TurningInputs> inputs;
     Diagnostics diagnostics;

@@ -60,6 +60,16 @@ private Q_SLOTS:
         const Run r = runCli({QStringLiteral("frobnicate")});
         QCOMPARE(r.exitCode, 2);
         QVERIFY(r.err.contains(QStringLiteral("unknown command 'frobnicate'")));
+        QVERIFY(!r.err.contains(QStringLiteral("Did you mean")));
+        // One letter off (evalute: a missing letter) or a prefix: the command is suggested.
+        const Run typo = runCli({QStringLiteral("evalute")});
+        QCOMPARE(typo.exitCode, 2);
+        QVERIFY2(typo.err.contains(QStringLiteral("Did you mean 'evaluate'?")), qPrintable(typo.err));
+        QVERIFY(runCli({QStringLiteral("adv")}).err.contains(QStringLiteral("Did you mean 'advise-clamping'?")));
+        // The desktop program's spelling runs the same command.
+        const Run optimise = runCli({QStringLiteral("optimise"), QStringLiteral("--help")});
+        QCOMPARE(optimise.exitCode, 0);
+        QVERIFY(optimise.out.contains(QStringLiteral("optimize")));
     }
 
     void checkValidExamples()
@@ -179,7 +189,7 @@ private Q_SLOTS:
     {
         const Run r = runCli({QStringLiteral("deflect"), example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.startsWith(QStringLiteral("Forces (kienzle)")));
+        QVERIFY(r.out.startsWith(QStringLiteral("Forces (Kienzle)")));
         QVERIFY(r.out.contains(QStringLiteral("note: Spindle–chuck not measured: a radial spring of 66 N/µm")));
         QVERIFY(r.out.contains(QStringLiteral("face O11")));
     }
@@ -382,6 +392,15 @@ private Q_SLOTS:
         const Run notANumber = runCli({QStringLiteral("iso286"), QStringLiteral("fifty"), QStringLiteral("H7")});
         QCOMPARE(notANumber.exitCode, 2);
         QVERIFY(notANumber.err.contains(QStringLiteral("\"fifty\"")));
+    }
+
+    // The text table names the characteristics in the desktop program's words, not the file's keys.
+    void evaluateTextUsesTheCharacteristicsNames()
+    {
+        const Run r = runCli({QStringLiteral("evaluate"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains(QStringLiteral("T6         total radial run-out")), qPrintable(r.out));
+        QVERIFY(!r.out.contains(QStringLiteral("total_radial_runout")));
     }
 
     // evaluate: every tolerance of the example with a verdict; coaxiality is "not predicted" with

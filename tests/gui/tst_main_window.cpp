@@ -2,6 +2,7 @@
 // The desktop program's main window, offscreen: open an example, see its drawing, survive bad
 // files with a dialog and the document untouched, save, recent files, About.
 #include "tests/gui/modal.h"
+#include "tests/gui/screenshot.h"
 
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
@@ -10,6 +11,7 @@
 #include "resources/bundled.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/document/project_document.h"
+#include "widgets/planning/planning_panel.h"
 #include "widgets/plot/line_plot.h"
 #include "widgets/profile/dimension_item.h"
 #include "widgets/profile/profile_scene.h"
@@ -125,6 +127,48 @@ private Q_SLOTS:
         QCoreApplication::setOrganizationName(QStringLiteral("TolTurnTest"));
         QCoreApplication::setApplicationName(QStringLiteral("tst_main_window"));
         QSettings().clear();
+    }
+
+    // A laptop screen (1366 x 768, less a panel) holds the whole window with every dock: its
+    // minimum size fits, and the screenshots of docs/images show it at both sizes.
+    void windowFitsALaptopScreen()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        w.show();
+        const QSize minimum = w.minimumSizeHint().expandedTo(w.minimumSize());
+        QVERIFY2(minimum.width() <= 1366 && minimum.height() <= 740,
+                 qPrintable(QStringLiteral("minimum %1 x %2").arg(minimum.width()).arg(minimum.height())));
+        w.resize(1366, 740);
+        QTest::qWait(50);
+        test::saveScreenshot(w, "window-1366x768.png");
+        w.resize(1600, 1000);
+        QTest::qWait(50);
+        test::saveScreenshot(w, "window-1600x1000.png");
+    }
+
+    // The first start says what to do: the empty drawing area lists the ways to a part, and the Plan
+    // tab says how to run the optimisation.
+    void firstStartSaysWhatToDo()
+    {
+        MainWindow w;
+        w.resize(1366, 740);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto *view = w.findChild<ProfileView *>(QStringLiteral("profileView"));
+        QVERIFY(view);
+        const QImage empty = view->viewport()->grab().toImage();
+        const QRgb background = empty.pixel(2, 2);
+        int drawn = 0;
+        for (int y = 0; y < empty.height(); ++y)
+            for (int x = 0; x < empty.width(); ++x)
+                drawn += empty.pixel(x, y) != background ? 1 : 0;
+        QVERIFY2(drawn > 500, qPrintable(QString::number(drawn))); // the text is there
+        test::saveScreenshot(w, "empty-state.png");
+        QVERIFY(ProfileView::emptyStateText().contains(QStringLiteral("File > Open Example")));
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        QCOMPARE(w.findChild<PlanningPanel *>()->planText(), PlanningPanel::notRunText());
+        QVERIFY(PlanningPanel::notRunText().contains(QStringLiteral("F5")));
     }
 
     void opensExampleAndDrawsProfile()
@@ -331,7 +375,7 @@ private Q_SLOTS:
         QCOMPARE(panel->plot()->curveName(5), QStringLiteral("total, compliant end of the machine range"));
         QCOMPARE(panel->plot()->curveName(6), QStringLiteral("total over the machine's stiffness range"));
         QVERIFY(panel->stiffEnd().has_value());
-        QVERIFY(panel->summaryText().contains(QStringLiteral("Forces (kienzle)")));
+        QVERIFY(panel->summaryText().contains(QStringLiteral("Forces (Kienzle)")));
         const double shaftFc = panel->result().inputs->forces.tangential_N;
 
         panel->setQuantity(DeflectionPanel::Quantity::TangentialContributions);

@@ -229,7 +229,16 @@ void PlanningPanel::projectChanged()
                                     .arg(label));
     }
     m_updatingControls = false;
+    if (!m_report && !isRunning())
+        m_plan->setText(notRunText());
     showFinishing();
+}
+
+QString PlanningPanel::notRunText()
+{
+    return tr("Not optimised yet. Press F5 (or Optimise) to find the cutting conditions that hold every tolerance "
+              "at least time or cost; the cutting window, the clamping ranking and the compensation follow. "
+              "Planning Data… holds the rates, tool life and the insert's ranges the optimiser works with.");
 }
 
 void PlanningPanel::settingsEdited()

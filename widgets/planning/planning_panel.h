@@ -59,6 +59,9 @@ public:
     // Refreshes what follows the project directly (settings, compensation, G-code).
     void projectChanged();
 
+    // The Plan tab's text before the first run.
+    [[nodiscard]] static QString notRunText();
+
 Q_SIGNALS:
     void finished(); // a run ended, completed or cancelled
 

@@ -9,6 +9,7 @@
 #include <QGraphicsScene>
 #include <QLineF>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QToolTip>
 #include <QWheelEvent>
 
@@ -216,6 +217,31 @@ void ProfileView::mousePressEvent(QMouseEvent *event)
     QGraphicsView::mousePressEvent(event);
 }
 
+QString ProfileView::emptyStateText()
+{
+    return tr("No part is open.\n\n"
+              "Open an example part: File > Open Example\n"
+              "Import a turned part from STEP or IGES: File > Import STEP/IGES… (Ctrl+I)\n"
+              "Draw a new part: File > New (Ctrl+N), then edit its features\n"
+              "Open a project: File > Open… (Ctrl+O)");
+}
+
+void ProfileView::drawForeground(QPainter *painter, const QRectF &rect)
+{
+    QGraphicsView::drawForeground(painter, rect);
+    if (!m_profile.outer.empty())
+        return;
+    painter->save();
+    painter->resetTransform();
+    painter->setPen(palette().color(QPalette::PlaceholderText));
+    QFont font = painter->font();
+    font.setPointSizeF(font.pointSizeF() * 1.1);
+    painter->setFont(font);
+    painter->drawText(viewport()->rect().adjusted(24, 24, -24, -24), Qt::AlignCenter | Qt::TextWordWrap,
+                      emptyStateText());
+    painter->restore();
+}
+
 void ProfileView::clearProfile()
 {
     m_dragged = nullptr;
@@ -223,6 +249,7 @@ void ProfileView::clearProfile()
     m_tolerances.clear();
     m_datums.clear();
     m_scene->clear();
+    viewport()->update();
 }
 
 void ProfileView::fitPart()

@@ -34,6 +34,9 @@ public:
     // The feature drawn nearest to a point of the view, within `pixels`; empty if none.
     [[nodiscard]] QString featureAt(const QPoint &viewPoint, double pixels = 8.0) const;
 
+    // The text shown while no part is open.
+    [[nodiscard]] static QString emptyStateText();
+
 Q_SIGNALS:
     void featureSelected(const QString &featureId);
     // A corner of the selected feature was dragged to `to` (snapped); one edit per drag.
@@ -41,6 +44,8 @@ Q_SIGNALS:
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
+    // With no part open: what to do to get one (the empty state of the main window).
+    void drawForeground(QPainter *painter, const QRectF &rect) override;
     void wheelEvent(QWheelEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;

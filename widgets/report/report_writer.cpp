@@ -287,7 +287,7 @@ void inputs(Layout &l, const Project &p, const DeviationResult &d)
                                                .arg(keyword(pass.kind), formatNumber(pass.cuttingSpeed_m_min),
                                                     formatNumber(pass.feed_mm_rev), formatNumber(pass.depthOfCut_mm))});
     }
-    rows.push_back({Report::tr("Force model"), keyword(p.cuttingModel.forceModel)});
+    rows.push_back({Report::tr("Force model"), forceModelName(keyword(p.cuttingModel.forceModel))});
     rows.push_back(
         {Report::tr("Machine characterisation"), p.characterisation.source.isEmpty()
                                                      ? Report::tr("not measured: see the machine assumption on page 1")
@@ -310,8 +310,8 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const
     }
     const TurningInputs &in = *d.inputs;
     l.paragraph(Report::tr("Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.")
-                    .arg(in.passIndex)
-                    .arg(in.forceModel, num(in.forces.tangential_N, 1), num(in.forces.axial_N, 1),
+                    .arg(in.passIndex + 1)
+                    .arg(forceModelName(in.forceModel), num(in.forces.tangential_N, 1), num(in.forces.axial_N, 1),
                          num(in.forces.radial_N, 1), num(d.theoreticalRa_um, 2), num(d.theoreticalRz_um, 2)));
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
         if (side == ContourSide::Inner && p.part.inner.empty())

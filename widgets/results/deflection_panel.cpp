@@ -67,6 +67,7 @@ DeflectionPanel::DeflectionPanel(QWidget *parent)
     connect(m_quantityBox, &QComboBox::currentIndexChanged, this,
             [this](int index) { setQuantity(static_cast<Quantity>(index)); });
     connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &DeflectionPanel::redraw);
+    clear();
 }
 
 void DeflectionPanel::showResult(const Project &project, DeviationResult result,
@@ -74,6 +75,7 @@ void DeflectionPanel::showResult(const Project &project, DeviationResult result,
 {
     m_result = std::move(result);
     m_stiffEnd = std::move(stiffEnd);
+    m_plot->setVisible(true);
     m_sideBox->setEnabled(!project.part.inner.empty());
     if (project.part.inner.empty() && m_side == ContourSide::Inner)
         m_sideBox->setCurrentIndex(0);
@@ -87,7 +89,8 @@ void DeflectionPanel::clear()
     m_stiffEnd.reset();
     m_plot->clear();
     m_plot->rescaleAndReplot();
-    m_summary->clear();
+    m_plot->setVisible(false); // empty axes would say nothing
+    m_summary->setText(tr("The predicted deviation of every feature appears here once a part is open."));
     m_notes->clear();
 }
 
@@ -254,10 +257,11 @@ QString DeflectionPanel::summaryText() const
         return {};
     const TurningInputs &in = *m_result.inputs;
     return tr("Forces (%1): Fc %2 N, Ff %3 N, Fp %4 N · pass %5: vc %6 m/min, f %7 mm/rev, ap %8 mm · Ra %9 µm")
-        .arg(in.forceModel, QString::number(in.forces.tangential_N, 'f', 0), QString::number(in.forces.axial_N, 'f', 0),
-             QString::number(in.forces.radial_N, 'f', 0), QString::number(in.passIndex),
-             formatNumber(in.pass.cuttingSpeed_m_min), formatNumber(in.pass.feed_mm_rev),
-             formatNumber(in.pass.depthOfCut_mm), QString::number(m_result.theoreticalRa_um, 'f', 2));
+        .arg(forceModelName(in.forceModel), QString::number(in.forces.tangential_N, 'f', 0),
+             QString::number(in.forces.axial_N, 'f', 0), QString::number(in.forces.radial_N, 'f', 0),
+             QString::number(in.passIndex + 1), formatNumber(in.pass.cuttingSpeed_m_min),
+             formatNumber(in.pass.feed_mm_rev), formatNumber(in.pass.depthOfCut_mm),
+             QString::number(m_result.theoreticalRa_um, 'f', 2));
 }
 
 void DeflectionPanel::updateTexts()
