@@ -394,6 +394,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Run &apos;%1 --help&apos; for the list of commands.</source>
         <translation>&apos;%1 --help&apos; listet die Befehle.</translation>
     </message>
+    <message>
+        <source>The planner&apos;s name for the title block.</source>
+        <translation>Der Name des Planers für das Schriftfeld.</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -699,6 +703,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <source>program O%1, checksum %2 (SHA-256, first 16 digits)</source>
+        <translation>Programm O%1, Prüfsumme %2 (SHA-256, erste 16 Stellen)</translation>
     </message>
 </context>
 <context>
@@ -1914,16 +1922,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Toleranzbericht: %1</translation>
     </message>
     <message>
-        <source>Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm</source>
-        <translation>Projekt %1 · %2 · TolTurn %3 · Länge %4 mm, Rohteil Ø%5 mm</translation>
-    </message>
-    <message>
         <source>1  Part</source>
         <translation>1  Teil</translation>
-    </message>
-    <message>
-        <source>2  Inputs</source>
-        <translation>2  Eingaben</translation>
     </message>
     <message>
         <source>Input</source>
@@ -1964,14 +1964,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1, clamped length %2 mm</source>
         <translation>%1, Einspannlänge %2 mm</translation>
-    </message>
-    <message>
-        <source>Pass %1</source>
-        <translation>Schnitt %1</translation>
-    </message>
-    <message>
-        <source>%1: vc %2 m/min, f %3 mm/rev, ap %4 mm</source>
-        <translation>%1: vc %2 m/min, f %3 mm/rev, ap %4 mm</translation>
     </message>
     <message>
         <source>Force model</source>
@@ -2186,20 +2178,44 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Nötige Steifigkeit</translation>
     </message>
     <message>
-        <source>Error: </source>
-        <translation>Fehler: </translation>
-    </message>
-    <message>
-        <source>Warning: </source>
-        <translation>Warnung: </translation>
-    </message>
-    <message>
         <source>total</source>
         <translation>gesamt</translation>
     </message>
     <message>
         <source>not measured: see the machine assumption on page 1</source>
         <translation>nicht gemessen: siehe die Maschinenannahme auf Seite 1</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Teil</translation>
+    </message>
+    <message>
+        <source>Drawing no.</source>
+        <translation>Zeichnungsnr.</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>Planner</source>
+        <translation>Planer</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Approved (name, date)</source>
+        <translation>Freigegeben (Name, Datum)</translation>
+    </message>
+    <message>
+        <source>Project %1 · written %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm</source>
+        <translation>Projekt %1 · erstellt %2 · TolTurn %3 · Länge %4 mm, Rohteil Ø%5 mm</translation>
+    </message>
+    <message>
+        <source>2  Set-up sheet and inputs</source>
+        <translation>2  Einrichteblatt und Eingaben</translation>
     </message>
 </context>
 <context>
@@ -2247,6 +2263,121 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>a part of a turned surface that does not go round (the end wall of a keyway or a slot)</source>
         <translation>ein Abschnitt einer gedrehten Fläche, der nicht ganz umläuft (die Stirnwand einer Passfedernut oder einer Nut)</translation>
+    </message>
+</context>
+<context>
+    <name>SetupSheet</name>
+    <message>
+        <source>cutting speed</source>
+        <translation>Schnittgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>feed</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <source>depth of cut</source>
+        <translation>Schnitttiefe</translation>
+    </message>
+    <message>
+        <source>tool overhang</source>
+        <translation>Werkzeugauskragung</translation>
+    </message>
+    <message>
+        <source>clamped length</source>
+        <translation>Spannlänge</translation>
+    </message>
+    <message>
+        <source>stock diameter</source>
+        <translation>Rohteildurchmesser</translation>
+    </message>
+    <message>
+        <source>chuck: %1 mm in the jaws</source>
+        <translation>Futter: %1 mm in den Backen</translation>
+    </message>
+    <message>
+        <source>centre and driver</source>
+        <translation>Spitze und Mitnehmer</translation>
+    </message>
+    <message>
+        <source>tailstock centre</source>
+        <translation>Reitstockspitze</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>Spitze</translation>
+    </message>
+    <message>
+        <source>Pass</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>n [rpm]</source>
+        <translation>n [1/min]</translation>
+    </message>
+    <message>
+        <source>vc [m/min]</source>
+        <translation>vc [m/min]</translation>
+    </message>
+    <message>
+        <source>f [mm/rev]</source>
+        <translation>f [mm/U]</translation>
+    </message>
+    <message>
+        <source>ap [mm]</source>
+        <translation>ap [mm]</translation>
+    </message>
+    <message>
+        <source>Power [kW]</source>
+        <translation>Leistung [kW]</translation>
+    </message>
+    <message>
+        <source>Time [min]</source>
+        <translation>Zeit [min]</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>Schruppen</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>Schlichten</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>total cutting</source>
+        <translation>Schnittzeit gesamt</translation>
+    </message>
+    <message>
+        <source>Program O%1 for %2, %3 passes; spindle limit %4 rpm (%5). Checksum (SHA-256, first 16 digits) of the nominal program %6, of the compensated program %7: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
+        <translation>Programm O%1 für %2, %3 Schnitte; Drehzahlbegrenzung %4 1/min (%5). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %6, des kompensierten Programms %7: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</translation>
+    </message>
+    <message>
+        <source>Program warning: %1</source>
+        <translation>Programmwarnung: %1</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>pass %1</source>
+        <translation>Schnitt %1</translation>
+    </message>
+    <message>
+        <source>passes %1</source>
+        <translation>Schnitte %1</translation>
     </message>
 </context>
 <context>
@@ -3942,12 +4073,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>G42: das Programm ist die Kontur, und die Steuerung versetzt sie um den Eckenradius aus ihren Werkzeugdaten. Spitzenbahn: TolTurn versetzt sie, für Steuerungen ohne Korrektur.</translation>
     </message>
     <message>
-        <source>The project&apos;s passes: %1. Dialect: %2.</source>
-        <translation>Die Schnitte des Projekts: %1. Dialekt: %2.</translation>
-    </message>
-    <message>
         <source>Not optimised yet. Press F5 (or Optimise) to find the cutting conditions that hold every tolerance at least time or cost; the cutting window, the clamping ranking and the compensation follow. Planning Data… holds the rates, tool life and the insert&apos;s ranges the optimiser works with.</source>
         <translation>Noch nicht optimiert. Drücken Sie F5 (oder Optimieren), um die Schnittwerte zu finden, die jede Toleranz bei minimaler Zeit oder minimalen Kosten einhalten; Schnittwertfenster, Rangfolge der Aufspannungen und Kompensation folgen. Planungsdaten… enthält die Kostensätze, die Standzeit und die Bereiche der Wendeschneidplatte, mit denen die Optimierung rechnet.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s passes: %1. Dialect: %2. Program O%3, checksum %4.</source>
+        <translation>Die Schnitte des Projekts: %1. Dialekt: %2. Programm O%3, Prüfsumme %4.</translation>
     </message>
 </context>
 <context>
@@ -4059,6 +4190,14 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>&amp;Units:</source>
         <translation>&amp;Einheiten:</translation>
+    </message>
+    <message>
+        <source>name in the report&apos;s title block</source>
+        <translation>Name im Schriftfeld des Berichts</translation>
+    </message>
+    <message>
+        <source>&amp;Planner:</source>
+        <translation>&amp;Planer:</translation>
     </message>
 </context>
 <context>
@@ -4234,6 +4373,30 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>not measured: the chuck is the published range of chuck stiffness, results at both ends; tailstock and centres are rigid for want of data (see the banner above the verdicts). Measure k1, k2, k3 (Valiño et al. 2008 §III) below or fit them to a test bar.</source>
         <translation>nicht gemessen: das Futter ist der veröffentlichte Bereich der Futtersteifigkeit, Ergebnisse an beiden Enden; Reitstock und Spitzen sind mangels Daten starr (siehe das Banner über den Bewertungen). Messen Sie k1, k2, k3 (Valiño et al. 2008 §III) unten oder passen Sie sie an einen Prüfstab an.</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Teil</translation>
+    </message>
+    <message>
+        <source>The number of the part drawing the tolerances come from (report title block)</source>
+        <translation>Die Nummer der Teilezeichnung, aus der die Toleranzen stammen (Schriftfeld des Berichts)</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Drawing no.:</source>
+        <translation>&amp;Zeichnungsnr.:</translation>
+    </message>
+    <message>
+        <source>&amp;Revision:</source>
+        <translation>&amp;Revision:</translation>
+    </message>
+    <message>
+        <source>Change part name and drawing</source>
+        <translation>Teilename und Zeichnung ändern</translation>
     </message>
 </context>
 <context>

@@ -394,6 +394,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Run &apos;%1 --help&apos; for the list of commands.</source>
         <translation>Ejecute &apos;%1 --help&apos; para ver la lista de órdenes.</translation>
     </message>
+    <message>
+        <source>The planner&apos;s name for the title block.</source>
+        <translation>El nombre del planificador para el cajetín.</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -699,6 +703,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>warning: %1</source>
         <translation>aviso: %1</translation>
+    </message>
+    <message>
+        <source>program O%1, checksum %2 (SHA-256, first 16 digits)</source>
+        <translation>programa O%1, suma de control %2 (SHA-256, primeros 16 dígitos)</translation>
     </message>
 </context>
 <context>
@@ -1914,16 +1922,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Informe de tolerancias: %1</translation>
     </message>
     <message>
-        <source>Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm</source>
-        <translation>Proyecto %1 · %2 · TolTurn %3 · longitud %4 mm, bruto Ø%5 mm</translation>
-    </message>
-    <message>
         <source>1  Part</source>
         <translation>1  Pieza</translation>
-    </message>
-    <message>
-        <source>2  Inputs</source>
-        <translation>2  Datos de entrada</translation>
     </message>
     <message>
         <source>Input</source>
@@ -1964,14 +1964,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1, clamped length %2 mm</source>
         <translation>%1, longitud de amarre %2 mm</translation>
-    </message>
-    <message>
-        <source>Pass %1</source>
-        <translation>Pasada %1</translation>
-    </message>
-    <message>
-        <source>%1: vc %2 m/min, f %3 mm/rev, ap %4 mm</source>
-        <translation>%1: vc %2 m/min, f %3 mm/rev, ap %4 mm</translation>
     </message>
     <message>
         <source>Force model</source>
@@ -2186,20 +2178,44 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Rigidez necesaria</translation>
     </message>
     <message>
-        <source>Error: </source>
-        <translation>Error: </translation>
-    </message>
-    <message>
-        <source>Warning: </source>
-        <translation>Aviso: </translation>
-    </message>
-    <message>
         <source>total</source>
         <translation>total</translation>
     </message>
     <message>
         <source>not measured: see the machine assumption on page 1</source>
         <translation>no medida: vea la hipótesis de máquina en la página 1</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Pieza</translation>
+    </message>
+    <message>
+        <source>Drawing no.</source>
+        <translation>N.º de plano</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revisión</translation>
+    </message>
+    <message>
+        <source>Planner</source>
+        <translation>Planificador</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Fecha</translation>
+    </message>
+    <message>
+        <source>Approved (name, date)</source>
+        <translation>Aprobado (nombre, fecha)</translation>
+    </message>
+    <message>
+        <source>Project %1 · written %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm</source>
+        <translation>Proyecto %1 · escrito %2 · TolTurn %3 · longitud %4 mm, material en bruto Ø%5 mm</translation>
+    </message>
+    <message>
+        <source>2  Set-up sheet and inputs</source>
+        <translation>2  Hoja de preparación y datos</translation>
     </message>
 </context>
 <context>
@@ -2247,6 +2263,121 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>a part of a turned surface that does not go round (the end wall of a keyway or a slot)</source>
         <translation>una parte de una superficie torneada que no da la vuelta completa (la pared final de un chavetero o de una ranura)</translation>
+    </message>
+</context>
+<context>
+    <name>SetupSheet</name>
+    <message>
+        <source>cutting speed</source>
+        <translation>velocidad de corte</translation>
+    </message>
+    <message>
+        <source>feed</source>
+        <translation>avance</translation>
+    </message>
+    <message>
+        <source>depth of cut</source>
+        <translation>profundidad de corte</translation>
+    </message>
+    <message>
+        <source>tool overhang</source>
+        <translation>voladizo de la herramienta</translation>
+    </message>
+    <message>
+        <source>clamped length</source>
+        <translation>longitud sujeta</translation>
+    </message>
+    <message>
+        <source>stock diameter</source>
+        <translation>diámetro del material en bruto</translation>
+    </message>
+    <message>
+        <source>chuck: %1 mm in the jaws</source>
+        <translation>plato: %1 mm en las garras</translation>
+    </message>
+    <message>
+        <source>centre and driver</source>
+        <translation>punto y arrastrador</translation>
+    </message>
+    <message>
+        <source>tailstock centre</source>
+        <translation>punto del contrapunto</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>punto</translation>
+    </message>
+    <message>
+        <source>Pass</source>
+        <translation>Pasada</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>n [rpm]</source>
+        <translation>n [rpm]</translation>
+    </message>
+    <message>
+        <source>vc [m/min]</source>
+        <translation>vc [m/min]</translation>
+    </message>
+    <message>
+        <source>f [mm/rev]</source>
+        <translation>f [mm/rev]</translation>
+    </message>
+    <message>
+        <source>ap [mm]</source>
+        <translation>ap [mm]</translation>
+    </message>
+    <message>
+        <source>Power [kW]</source>
+        <translation>Potencia [kW]</translation>
+    </message>
+    <message>
+        <source>Time [min]</source>
+        <translation>Tiempo [min]</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>desbaste</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>acabado</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>total cutting</source>
+        <translation>corte total</translation>
+    </message>
+    <message>
+        <source>Program O%1 for %2, %3 passes; spindle limit %4 rpm (%5). Checksum (SHA-256, first 16 digits) of the nominal program %6, of the compensated program %7: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
+        <translation>Programa O%1 para %2, %3 pasadas; límite del husillo %4 rpm (%5). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %6, del programa compensado %7: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</translation>
+    </message>
+    <message>
+        <source>Program warning: %1</source>
+        <translation>Aviso del programa: %1</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Aviso</translation>
+    </message>
+    <message>
+        <source>pass %1</source>
+        <translation>pasada %1</translation>
+    </message>
+    <message>
+        <source>passes %1</source>
+        <translation>pasadas %1</translation>
     </message>
 </context>
 <context>
@@ -3942,12 +4073,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>G42: el programa es el contorno y el control lo desplaza con el radio de punta de sus datos de herramienta. Trayectoria de la punta: la desplaza TolTurn, para controles sin compensación.</translation>
     </message>
     <message>
-        <source>The project&apos;s passes: %1. Dialect: %2.</source>
-        <translation>Las pasadas del proyecto: %1. Dialecto: %2.</translation>
-    </message>
-    <message>
         <source>Not optimised yet. Press F5 (or Optimise) to find the cutting conditions that hold every tolerance at least time or cost; the cutting window, the clamping ranking and the compensation follow. Planning Data… holds the rates, tool life and the insert&apos;s ranges the optimiser works with.</source>
         <translation>Aún sin optimizar. Pulse F5 (u Optimizar) para hallar las condiciones de corte que cumplen todas las tolerancias con el mínimo tiempo o coste; siguen la ventana de corte, la clasificación de sujeciones y la compensación. Datos de planificación… contiene las tarifas, la vida de la herramienta y los rangos de la plaquita con los que trabaja el optimizador.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s passes: %1. Dialect: %2. Program O%3, checksum %4.</source>
+        <translation>Las pasadas del proyecto: %1. Dialecto: %2. Programa O%3, suma de control %4.</translation>
     </message>
 </context>
 <context>
@@ -4059,6 +4190,14 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>&amp;Units:</source>
         <translation>&amp;Unidades:</translation>
+    </message>
+    <message>
+        <source>name in the report&apos;s title block</source>
+        <translation>nombre en el cajetín del informe</translation>
+    </message>
+    <message>
+        <source>&amp;Planner:</source>
+        <translation>&amp;Planificador:</translation>
     </message>
 </context>
 <context>
@@ -4234,6 +4373,30 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>not measured: the chuck is the published range of chuck stiffness, results at both ends; tailstock and centres are rigid for want of data (see the banner above the verdicts). Measure k1, k2, k3 (Valiño et al. 2008 §III) below or fit them to a test bar.</source>
         <translation>no medida: el plato es el rango publicado de rigidez de platos, resultados en ambos extremos; contrapunto y puntos son rígidos a falta de datos (vea el aviso sobre los veredictos). Mida k1, k2, k3 (Valiño et al. 2008 §III) abajo o ajústelos a una barra de prueba.</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Pieza</translation>
+    </message>
+    <message>
+        <source>The number of the part drawing the tolerances come from (report title block)</source>
+        <translation>El número del plano de la pieza del que proceden las tolerancias (cajetín del informe)</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>&amp;Drawing no.:</source>
+        <translation>N.º de &amp;plano:</translation>
+    </message>
+    <message>
+        <source>&amp;Revision:</source>
+        <translation>&amp;Revisión:</translation>
+    </message>
+    <message>
+        <source>Change part name and drawing</source>
+        <translation>Cambiar nombre y plano de la pieza</translation>
     </message>
 </context>
 <context>

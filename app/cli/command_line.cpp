@@ -979,7 +979,9 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
     QCommandLineParser parser;
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
                                     CommandLine::tr("PDF file to write."), QStringLiteral("FILE"));
-    parser.addOption(output);
+    const QCommandLineOption planner(
+        QStringLiteral("planner"), CommandLine::tr("The planner's name for the title block."), QStringLiteral("NAME"));
+    parser.addOptions({output, planner});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, commandNamed(QStringLiteral("report")), args, out, err); stop >= 0)
@@ -992,7 +994,8 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
-    const ReportResult written = writeReport(*project, QFileInfo(file).fileName(), parser.value(output));
+    const ReportResult written =
+        writeReport(*project, {QFileInfo(file).fileName(), parser.value(planner)}, parser.value(output));
     if (!written.ok) {
         err << programName() << " report: " << written.error << '\n';
         return kExitProblems;
@@ -1045,7 +1048,7 @@ const std::vector<Command> &commands()
          CommandLine::tr("The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason."),
          runAdviseClamping},
         {QStringLiteral("gcode"), gcodeSynopsis(), gcodeSummary(), runGCode},
-        {QStringLiteral("report"), QStringLiteral("report -o FILE.pdf PROJECT"),
+        {QStringLiteral("report"), QStringLiteral("report [--planner NAME] -o FILE.pdf PROJECT"),
          CommandLine::tr(
              "The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, "
              "clamping ranking, compensation, assumptions and sources."),

@@ -2,6 +2,7 @@
 #include "app/gui/file_controller.h"
 
 #include "app/gui/autosave.h"
+#include "app/gui/preferences.h"
 #include "app/gui/recent_files.h"
 #include "core/io/project_file.h"
 #include "core/project/project_defaults.h"
@@ -211,8 +212,9 @@ bool FileController::exportReportTo(const QString &pdfPath)
     // so the report is drawn on this thread, with a progress dialog that can cancel it.
     QGuiApplication::setOverrideCursor(QCursor(Qt::WaitCursor));
     const std::unique_ptr<TaskProgress> progress = m_prompts.startProgress(tr("Writing the report…"));
-    const ReportResult result = writeReport(m_document.project(), m_document.displayName(), pdfPath,
-                                            [&progress](double f) { return !progress || progress->update(f); });
+    const ReportResult result =
+        writeReport(m_document.project(), {m_document.displayName(), loadPreferences().planner}, pdfPath,
+                    [&progress](double f) { return !progress || progress->update(f); });
     QGuiApplication::restoreOverrideCursor();
     if (result.cancelled) {
         Q_EMIT statusMessage(tr("Report cancelled; nothing was written."));

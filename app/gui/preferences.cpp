@@ -9,6 +9,7 @@ namespace tolturn {
 namespace {
 const QString kLanguageKey = QStringLiteral("interface/language");
 const QString kLengthUnitKey = QStringLiteral("interface/lengthUnit");
+const QString kPlannerKey = QStringLiteral("report/planner");
 } // namespace
 
 QStringList availableLanguages()
@@ -24,6 +25,7 @@ Preferences loadPreferences()
     if (!availableLanguages().contains(p.language))
         p.language.clear(); // a language since removed, or a hand-edited value: the system's
     p.lengthUnit = lengthUnitFromKeyword(settings.value(kLengthUnitKey).toString());
+    p.planner = settings.value(kPlannerKey).toString().trimmed();
     return p;
 }
 
@@ -32,6 +34,7 @@ void savePreferences(const Preferences &preferences)
     QSettings settings;
     settings.setValue(kLanguageKey, preferences.language);
     settings.setValue(kLengthUnitKey, keyword(preferences.lengthUnit));
+    settings.setValue(kPlannerKey, preferences.planner.trimmed());
 }
 
 QLocale translationLocale(const Preferences &preferences)

@@ -12,6 +12,7 @@ namespace tolturn {
 struct Preferences {
     QString language;                               // "en", "de", "es"; empty: the system's language
     LengthUnit lengthUnit = LengthUnit::Millimetre; // of lengths (mm | in) and deviations (µm | µin)
+    QString planner;                                // the name the report's title block gives
 
     friend bool operator==(const Preferences &, const Preferences &) = default;
 };

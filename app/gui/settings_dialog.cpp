@@ -5,6 +5,7 @@
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QVBoxLayout>
 
@@ -14,6 +15,7 @@ SettingsDialog::SettingsDialog(const Preferences &current, QWidget *parent)
     : QDialog(parent)
     , m_language(new QComboBox)
     , m_unit(new QComboBox)
+    , m_planner(new QLineEdit)
 {
     setObjectName(QStringLiteral("settingsDialog"));
     setWindowTitle(tr("Preferences"));
@@ -37,6 +39,9 @@ SettingsDialog::SettingsDialog(const Preferences &current, QWidget *parent)
     form->addRow(tr("&Language:"), m_language);
     form->addRow(QString(), note);
     form->addRow(tr("&Units:"), m_unit);
+    m_planner->setText(current.planner);
+    m_planner->setPlaceholderText(tr("name in the report's title block"));
+    form->addRow(tr("&Planner:"), m_planner);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -50,6 +55,7 @@ Preferences SettingsDialog::preferences() const
     Preferences p;
     p.language = m_language->currentData().toString();
     p.lengthUnit = static_cast<LengthUnit>(m_unit->currentData().toInt());
+    p.planner = m_planner->text().trimmed();
     return p;
 }
 

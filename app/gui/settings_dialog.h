@@ -6,6 +6,7 @@
 #include <QDialog>
 
 class QComboBox;
+class QLineEdit;
 
 namespace tolturn {
 
@@ -22,9 +23,12 @@ public:
 
     [[nodiscard]] QComboBox *unitBox() const { return m_unit; }
 
+    [[nodiscard]] QLineEdit *plannerEdit() const { return m_planner; }
+
 private:
     QComboBox *m_language;
     QComboBox *m_unit;
+    QLineEdit *m_planner;
 };
 
 } // namespace tolturn

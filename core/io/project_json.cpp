@@ -77,6 +77,8 @@ PartProfile readPart(const QJsonObject &json, Diagnostics &out)
     JsonObjectReader r(json, QStringLiteral("part"), out);
     PartProfile part;
     part.name = r.text(QStringLiteral("name"), Presence::Optional).value_or(QString());
+    part.drawingNumber = r.text(QStringLiteral("drawing_number"), Presence::Optional).value_or(QString());
+    part.revision = r.text(QStringLiteral("revision"), Presence::Optional).value_or(QString());
     part.stockDiameter_mm = r.number(QStringLiteral("stock_diameter_mm"), Presence::Required).value_or(0.0);
     if (const auto outer = r.array(QStringLiteral("outer"), Presence::Required))
         part.outer = readContour(*outer, QStringLiteral("part.outer"), out);
@@ -561,6 +563,10 @@ QByteArray serializeProjectJson(const Project &p)
                      {QStringLiteral("outer"), contourJson(p.part.outer)}};
     if (!p.part.name.isEmpty())
         part.insert(QStringLiteral("name"), p.part.name);
+    if (!p.part.drawingNumber.isEmpty())
+        part.insert(QStringLiteral("drawing_number"), p.part.drawingNumber);
+    if (!p.part.revision.isEmpty())
+        part.insert(QStringLiteral("revision"), p.part.revision);
     if (!p.part.inner.empty())
         part.insert(QStringLiteral("inner"), contourJson(p.part.inner));
 

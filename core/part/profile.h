@@ -59,6 +59,8 @@ struct Contour {
 // open at one or both ends.
 struct PartProfile {
     QString name;
+    QString drawingNumber; // of the part drawing the tolerances come from, for the report's title block
+    QString revision;
     double stockDiameter_mm = 0.0;
     Contour outer;
     Contour inner;

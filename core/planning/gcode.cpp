@@ -2,10 +2,16 @@
 #include "core/planning/gcode.h"
 
 #include "core/common/library_info.h"
+#include "core/planning/path_geometry.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 
 #include <QCoreApplication>
+#include <QCryptographicHash>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace tolturn {
 
@@ -78,7 +84,67 @@ QString conditionsText(const Toolpath &path)
     return parts.join(QStringLiteral("; "));
 }
 
+// Spindle speed on radius r under G96 with the limit [rpm].
+double spindleSpeed_rpm(double cuttingSpeed_m_min, double r_mm, double limit_rpm)
+{
+    if (r_mm <= 1e-9)
+        return limit_rpm;
+    return std::min(limit_rpm, 1000.0 * cuttingSpeed_m_min / (2.0 * std::numbers::pi * r_mm));
+}
+
+PassSummary summarise(const PassPath &pass, double limit_rpm)
+{
+    PassSummary s;
+    s.number = pass.number;
+    s.kind = pass.conditions.kind;
+    s.conditions = pass.conditions;
+    s.lowestSpeed_rpm = limit_rpm;
+    s.highestSpeed_rpm = 0.0;
+    std::optional<ProfilePoint> at;
+    for (const ToolMove &m : pass.moves) {
+        if (m.kind != MoveKind::Rapid && at) {
+            PathElement e;
+            e.from = *at;
+            e.to = m.to;
+            e.arc = m.kind != MoveKind::Feed;
+            e.centre = m.centre;
+            e.radius_mm = m.radius_mm;
+            e.counterClockwise = m.kind == MoveKind::ArcCounterClockwise;
+            const std::vector<ProfilePoint> points = sampled(e, 0.05);
+            for (std::size_t i = 1; i < points.size(); ++i) {
+                const double length =
+                    std::hypot(points[i].z_mm - points[i - 1].z_mm, points[i].r_mm - points[i - 1].r_mm);
+                const double r = 0.5 * (points[i].r_mm + points[i - 1].r_mm);
+                const double n = spindleSpeed_rpm(pass.conditions.cuttingSpeed_m_min, r, limit_rpm);
+                s.time_min += length / (pass.conditions.feed_mm_rev * n);
+            }
+            for (const ProfilePoint &q : points) {
+                const double n = spindleSpeed_rpm(pass.conditions.cuttingSpeed_m_min, q.r_mm, limit_rpm);
+                s.lowestSpeed_rpm = std::min(s.lowestSpeed_rpm, n);
+                s.highestSpeed_rpm = std::max(s.highestSpeed_rpm, n);
+            }
+        }
+        at = m.to;
+    }
+    return s;
+}
+
 } // namespace
+
+std::vector<PassSummary> passSummaries(const Toolpath &path, const SpindleLimit &limit,
+                                       const std::optional<ForceFunction> &forces)
+{
+    std::vector<PassSummary> out;
+    for (const PassPath &p : path.roughing)
+        out.push_back(summarise(p, limit.speed_rpm));
+    out.push_back(summarise(path.finishing, limit.speed_rpm));
+    if (forces) {
+        for (PassSummary &s : out) // P = F_c v_c / 60 000 [kW] (F_c in N, v_c in m/min)
+            s.power_kW = (*forces)(s.conditions.feed_mm_rev, s.conditions.depthOfCut_mm).tangential_N *
+                         s.conditions.cuttingSpeed_m_min / 60000.0;
+    }
+    return out;
+}
 
 std::optional<ControlDialect> machineDialect(const DataLibrary &data, const QString &machineId)
 {
@@ -125,7 +191,12 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
                             keyword(project.clamping.method))
                 << Programs::tr("Dialect: %1").arg(program.dialectReason) << compensationSummary(options.compensation)
                 << Programs::tr("Conditions: %1").arg(program.conditions);
+    program.programNumber = options.programNumber;
     program.text = postProcess(program.path, project.part.length_mm(), post);
+    program.checksum = QString::fromLatin1(
+        QCryptographicHash::hash(program.text.toUtf8(), QCryptographicHash::Sha256).toHex().left(16));
+    Diagnostics ignored; // the deviation model has reported them already
+    program.passes = passSummaries(program.path, program.spindle, projectForceModel(project, data, ignored));
     return program;
 }
 

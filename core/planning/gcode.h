@@ -24,13 +24,31 @@ struct GCodeOptions {
     double clearance_mm = 2.0;
 };
 
+// What a machinist's set-up sheet gives for a pass of the program: the spindle speed range it
+// runs at under G96 and the spindle limit, the cutting power at its conditions, and its time.
+struct PassSummary {
+    int number = 0;
+    PassKind kind = PassKind::Finishing;
+    CuttingPass conditions;
+    double lowestSpeed_rpm = 0.0;
+    double highestSpeed_rpm = 0.0;
+    std::optional<double> power_kW; // F_c v_c / 60 000; unset when the forces cannot be formed
+    double time_min = 0.0;          // every feed move: length / (f n(r)), n = min(1000 v_c / (2 pi r), limit)
+};
+
+[[nodiscard]] std::vector<PassSummary> passSummaries(const Toolpath &path, const SpindleLimit &limit,
+                                                     const std::optional<ForceFunction> &forces);
+
 struct TurningProgram {
     QString text;
+    int programNumber = 1000;
+    QString checksum; // the first 16 hex digits of the SHA-256 of the program's UTF-8 text
     ControlDialect dialect = ControlDialect::FanucHaas;
     QString dialectReason; // the machine's control, the caller's choice, or the default
     Toolpath path;
     SpindleLimit spindle;
     QString conditions; // the passes the program cuts, in words (for the G-code tab and the report)
+    std::vector<PassSummary> passes;
 };
 
 // The program that turns a project's part on its machine: the roughing passes the project plans

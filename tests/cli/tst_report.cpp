@@ -4,6 +4,7 @@
 // published ISO 286-2 tables.
 #include "tests/cli/cli_runner.h"
 
+#include <QDate>
 #include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -43,8 +44,8 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         const QString pdf = dir.filePath(QStringLiteral("shaft.pdf"));
-        const Run r =
-            runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, example("stepped-shaft-chuck.tolturn")});
+        const Run r = runCli({QStringLiteral("report"), QStringLiteral("--planner"), QStringLiteral("A. Planner"),
+                              QStringLiteral("-o"), pdf, example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(r.exitCode, 0);
 
         const Run info = runProgram(QStringLiteral("pdfinfo"), {pdf});
@@ -56,8 +57,8 @@ private Q_SLOTS:
         QVERIFY(r.out.contains(QStringLiteral("%1 pages").arg(pages)));
 
         const QString text = pdfText(pdf);
-        for (const char *section :
-             {"1 Part", "2 Inputs", "3 Predicted deviation", "4 Tolerances", "5 Plan", "6 Assumptions and sources"}) {
+        for (const char *section : {"1 Part", "2 Set-up sheet and inputs", "3 Predicted deviation", "4 Tolerances",
+                                    "5 Plan", "6 Assumptions and sources"}) {
             const QString pattern =
                 QStringLiteral("^\\f?%1$")
                     .arg( // a heading may open a page
@@ -66,8 +67,34 @@ private Q_SLOTS:
         }
         QVERIFY(text.contains(QStringLiteral("page %1 of %1").arg(pages)));
         QVERIFY(text.contains(QStringLiteral("C45E-N")));
-        // The finishing feed below the insert's published range is said in the inputs.
-        QVERIFY(text.contains(QStringLiteral("Warning: passes[8].feed_mm_rev: 0.1 mm/rev is outside the insert's")));
+        // The finishing feed below the insert's published range is said in the inputs, in words, and the
+        // eight roughing passes below its speed range once.
+        QVERIFY2(text.contains(QStringLiteral("Warning (pass 9): feed 0.1 mm/rev is outside the insert's")),
+                 qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("Warning (passes 1–8): cutting speed 200 m/min is outside")));
+        QVERIFY(!text.contains(QStringLiteral("passes[")));
+
+        // The title block: part, drawing number and revision from the project, material, the planner,
+        // the date and an approval field.
+        const QString titleBlock = text.section(QLatin1Char('\f'), 0, 0).section(QStringLiteral("Verdicts"), 0, 0);
+        for (const QString &field :
+             {QStringLiteral("Drawing no."), QStringLiteral("TT-EX-001"), QStringLiteral("Revision"),
+              QStringLiteral("Planner"), QStringLiteral("A. Planner"), QStringLiteral("Approved (name, date)"),
+              QStringLiteral("C45E-N"), QDate::currentDate().toString(Qt::ISODate)})
+            QVERIFY2(titleBlock.contains(field), qPrintable(field + QStringLiteral(" in ") + titleBlock));
+
+        // The set-up sheet: every pass numbered from 1 with its speeds, power and time, and the programs'
+        // checksums, which `gcode` prints too.
+        QVERIFY(text.contains(QStringLiteral("n [rpm]")) && text.contains(QStringLiteral("Power [kW]")));
+        QVERIFY(text.contains(QRegularExpression(QStringLiteral("^9\\s+\\S+nishing") /* "fi" may be a ligature */,
+                                                 QRegularExpression::MultilineOption)));
+        QTemporaryDir gdir;
+        const Run gcode = runCli({QStringLiteral("gcode"), QStringLiteral("-o"), gdir.filePath(QStringLiteral("p.nc")),
+                                  example("stepped-shaft-chuck.tolturn")});
+        const QString checksum =
+            QRegularExpression(QStringLiteral("checksum ([0-9a-f]{16})")).match(gcode.err).captured(1);
+        QCOMPARE(checksum.size(), 16);
+        QVERIFY2(text.contains(QStringLiteral("nominal program ") + checksum), qPrintable(checksum));
         QVERIFY(text.contains(QStringLiteral("Radial deviation of the outer contour")));
         QVERIFY(text.contains(QStringLiteral("Cutting window of the"))); // "fi" comes back as a ligature
 

@@ -298,6 +298,28 @@ private Q_SLOTS:
         QCOMPARE(program.path.roughing.back().smallestDiameter_mm, 2.0 * lowest);
     }
 
+    // The set-up sheet's time of the stepped shaft's first roughing pass, by hand: feed from X64 to X60
+    // and on to X56.125 at Z2, 115 mm along X56.125, up to X60 at Z-113; under G96 (200 m/min, below
+    // the spindle limit) n = 1000 v/(2 pi r), so a radial move from r1 to r2 takes
+    // pi (r2^2 - r1^2)/(1000 v f) and an axial one L 2 pi r/(1000 v f), with 1000 v f = 60 000 mm^2/min:
+    // pi (32^2 - 28.0625^2)/60000 + 115 x 2 pi 28.0625/60000 + pi (30^2 - 28.0625^2)/60000
+    // = 0.0123828 + 0.3379504 + 0.0058902 = 0.3562234 min. Speeds 994.72 (r 32) to 1134.29 rpm (r 28.0625).
+    void setUpSheetTimesAndSpeedsFollowThePath()
+    {
+        const Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, {});
+        QCOMPARE(program.passes.size(), std::size_t{9});
+        const PassSummary &first = program.passes.front();
+        QCOMPARE(first.number, 1);
+        QVERIFY2(std::abs(first.time_min - 0.3562234) < 2e-6, qPrintable(QString::number(first.time_min, 'f', 7)));
+        QVERIFY(std::abs(first.lowestSpeed_rpm - 994.72) < 0.01);
+        QVERIFY(std::abs(first.highestSpeed_rpm - 1134.29) < 0.01);
+        QVERIFY(first.power_kW && *first.power_kW > 0.0);
+        QCOMPARE(program.passes.back().kind, PassKind::Finishing);
+        QCOMPARE(program.checksum.size(), 16);
+    }
+
     // The step of the long shaft at z 380 falls in the feed direction (vertical); a PCLNR holder
     // (kappa_r 95°) with a CNMG insert (epsilon_r 80°) trails at 180 - 95 - 80 = 5°.
     void fallingStepBeyondTheTrailingEdgeIsAWarning()

@@ -250,6 +250,24 @@ private Q_SLOTS:
         QVERIFY(!s->passBox(8, 1)->toolTip().contains(QStringLiteral("outside")));
     }
 
+    // The drawing number and revision go to the project (and the report's title block) as one
+    // undoable edit.
+    void drawingNumberIsAnEdit()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        auto *number = w.setupPanel()->findChild<QLineEdit *>(QStringLiteral("drawingNumber"));
+        auto *revision = w.setupPanel()->findChild<QLineEdit *>(QStringLiteral("drawingRevision"));
+        QCOMPARE(number->text(), QStringLiteral("TT-EX-001"));
+        QCOMPARE(revision->text(), QStringLiteral("B"));
+        number->setText(QStringLiteral(" 4711-02 "));
+        Q_EMIT number->editingFinished();
+        QCOMPARE(w.document()->project().part.drawingNumber, QStringLiteral("4711-02"));
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->project().part.drawingNumber, QStringLiteral("TT-EX-001"));
+        QCOMPARE(number->text(), QStringLiteral("TT-EX-001"));
+    }
+
     void cuttingConditionsAndMaterialAreEdits()
     {
         MainWindow w;

@@ -469,7 +469,10 @@ void PlanningPanel::showFinishing()
     }
     m_compensation->resizeColumnsToContents();
     const TurningProgram &program = m_compensated->isChecked() ? m_finishing.compensated : m_finishing.nominal;
-    QString about = tr("The project's passes: %1. Dialect: %2.").arg(program.conditions, program.dialectReason);
+    QString about = tr("The project's passes: %1. Dialect: %2. Program O%3, checksum %4.")
+                        .arg(program.conditions, program.dialectReason)
+                        .arg(program.programNumber)
+                        .arg(program.checksum);
     if (!program.path.warnings.isEmpty())
         about += QStringLiteral("<br><span style='color:#a50f15'>") +
                  program.path.warnings.join(QStringLiteral("<br>")).toHtmlEscaped() + QStringLiteral("</span>");

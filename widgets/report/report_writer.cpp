@@ -11,6 +11,8 @@
 #include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
 #include "widgets/profile/profile_scene.h"
+#include "widgets/report/report_layout.h"
+#include "widgets/report/setup_sheet.h"
 #include "widgets/results/deflection_panel.h"
 #include "widgets/tolerances/tolerance_verdict_model.h"
 
@@ -33,142 +35,15 @@ namespace tolturn {
 
 namespace {
 
+using report::font;
+using report::kMargin;
+using report::kPageHeight;
+using report::kPlotTextScale;
+using report::kWidth;
+using report::Layout;
+
 struct Report {
     Q_DECLARE_TR_FUNCTIONS(Report)
-};
-
-// A4 in points; everything is laid out in points and replayed on the PDF at its resolution.
-constexpr double kPageWidth = 595.0;
-constexpr double kPageHeight = 842.0;
-constexpr double kMargin = 48.0;
-constexpr double kBottom = kPageHeight - kMargin - 18.0; // room for the footer
-constexpr double kWidth = kPageWidth - 2 * kMargin;
-// Plots are laid out at this multiple of their box and scaled down: screen fonts become ~8 pt.
-constexpr double kPlotTextScale = 1.5;
-
-QFont font(double pixels, bool bold = false)
-{
-    QFont f(QStringLiteral("DejaVu Sans"));
-    f.setPixelSize(static_cast<int>(std::lround(pixels))); // pixels = points here: no DPI surprises on replay
-    f.setBold(bold);
-    return f;
-}
-
-// Records the report page by page as pictures (vectors), flowing content down and breaking pages.
-class Layout {
-public:
-    Layout() { newPage(); }
-
-    void newPage()
-    {
-        if (m_painter)
-            m_painter->end();
-        m_pages.push_back(std::make_unique<QPicture>());
-        m_painter = std::make_unique<QPainter>(m_pages.back().get());
-        m_painter->setRenderHint(QPainter::Antialiasing);
-        m_y = kMargin;
-    }
-
-    void ensure(double height)
-    {
-        if (m_y + height > kBottom)
-            newPage();
-    }
-
-    void heading(const QString &text)
-    {
-        ensure(60);
-        m_y += 8;
-        m_painter->setFont(font(14, true));
-        m_painter->setPen(QColor(0x1f, 0x4e, 0x9a));
-        m_painter->drawText(QRectF(kMargin, m_y, kWidth, 20), Qt::AlignLeft | Qt::AlignVCenter, text);
-        m_y += 24;
-        m_painter->setPen(Qt::black);
-    }
-
-    void paragraph(const QString &text, double size = 9.5)
-    {
-        m_painter->setFont(font(size));
-        const QRectF bounds = m_painter->boundingRect(QRectF(kMargin, 0, kWidth, 10000), Qt::TextWordWrap, text);
-        ensure(bounds.height() + 4);
-        m_painter->setFont(font(size)); // a page break starts a new painter with default state
-        m_painter->drawText(QRectF(kMargin, m_y, kWidth, bounds.height()), Qt::TextWordWrap, text);
-        m_y += bounds.height() + 4;
-    }
-
-    // A bold line naming the figure that follows; kept on the figure's page.
-    void caption(const QString &text)
-    {
-        ensure(200);
-        m_painter->setFont(font(10, true));
-        m_painter->drawText(QRectF(kMargin, m_y, kWidth, 14), Qt::AlignLeft | Qt::AlignVCenter, text);
-        m_y += 16;
-    }
-
-    // Rows of cells; the first row is the header. `colours` gives optional backgrounds per row/column.
-    // A cell's text wraps within its column; the row is as tall as its tallest cell.
-    void table(const std::vector<QStringList> &rows, const std::vector<double> &widths,
-               const std::function<QColor(int row, int column)> &background = {})
-    {
-        constexpr double kRowHeight = 14.0;
-        const int flags = Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap;
-        for (std::size_t r = 0; r < rows.size(); ++r) {
-            const std::size_t columns = std::min(widths.size(), static_cast<std::size_t>(rows[r].size()));
-            m_painter->setFont(font(8.2, r == 0));
-            double rowHeight = kRowHeight;
-            for (std::size_t c = 0; c < columns; ++c)
-                rowHeight = std::max(rowHeight, m_painter
-                                                        ->boundingRect(QRectF(0, 0, widths[c] - 6, 1000), flags,
-                                                                       rows[r].at(static_cast<qsizetype>(c)))
-                                                        .height() +
-                                                    4.0);
-            ensure(rowHeight);
-            m_painter->setFont(font(8.2, r == 0)); // a page break starts a new painter with default state
-            double x = kMargin;
-            for (std::size_t c = 0; c < columns; ++c) {
-                const QRectF box(x, m_y, widths[c], rowHeight);
-                const QColor fill =
-                    r == 0 ? QColor(0xe8, 0xec, 0xf2)
-                           : (background ? background(static_cast<int>(r), static_cast<int>(c)) : QColor());
-                if (fill.isValid())
-                    m_painter->fillRect(box, fill);
-                m_painter->setPen(QColor(0xbb, 0xbb, 0xbb));
-                m_painter->drawRect(box);
-                m_painter->setPen(Qt::black);
-                m_painter->drawText(box.adjusted(3, 0, -3, 0), flags, rows[r].at(static_cast<qsizetype>(c)));
-                x += widths[c];
-            }
-            m_y += rowHeight;
-        }
-        m_y += 6;
-    }
-
-    // The height `text` takes wrapped in `width` points.
-    [[nodiscard]] double textHeight(const QString &text, const QFont &f, double width) const
-    {
-        m_painter->setFont(f);
-        return m_painter->boundingRect(QRectF(0, 0, width, 10000), Qt::TextWordWrap, text).height();
-    }
-
-    // A block of given height drawn by `draw` into the full-width rectangle.
-    void block(double height, const std::function<void(QPainter &, const QRectF &)> &draw)
-    {
-        ensure(height);
-        draw(*m_painter, QRectF(kMargin, m_y, kWidth, height));
-        m_y += height + 6;
-    }
-
-    std::vector<std::unique_ptr<QPicture>> finish()
-    {
-        m_painter->end();
-        m_painter.reset();
-        return std::move(m_pages);
-    }
-
-private:
-    std::vector<std::unique_ptr<QPicture>> m_pages;
-    std::unique_ptr<QPainter> m_painter;
-    double m_y = kMargin;
 };
 
 QString num(double v, int decimals)
@@ -176,21 +51,49 @@ QString num(double v, int decimals)
     return QString::number(v, 'f', decimals);
 }
 
-void titleBlock(Layout &l, const Project &p, const QString &projectName)
+// The title block: the part as the drawing names it, who planned it and when, and a field for the
+// approval, above the project file and the program version.
+void titleBlock(Layout &l, const Project &p, const ReportHeader &header)
 {
-    l.block(70, [&](QPainter &painter, const QRectF &r) {
+    const QString dash = QStringLiteral("—");
+    const MaterialData *material = DataLibrary::builtIn().material(p.materialId);
+    const std::vector<std::pair<QString, QString>> fields{
+        {Report::tr("Part"), p.part.name.isEmpty() ? header.projectName : p.part.name},
+        {Report::tr("Drawing no."), p.part.drawingNumber.isEmpty() ? dash : p.part.drawingNumber},
+        {Report::tr("Revision"), p.part.revision.isEmpty() ? dash : p.part.revision},
+        {Report::tr("Material"), material ? material->id : p.materialId},
+        {Report::tr("Planner"), header.planner.isEmpty() ? dash : header.planner},
+        {Report::tr("Date"), QDate::currentDate().toString(Qt::ISODate)},
+        {Report::tr("Approved (name, date)"), QString()},
+    };
+    l.block(92, [&](QPainter &painter, const QRectF &r) {
         painter.fillRect(r, QColor(0xf2, 0xf5, 0xf9));
         painter.setPen(QColor(0x1f, 0x4e, 0x9a));
         painter.drawRect(r);
-        painter.setFont(font(18, true));
-        painter.drawText(r.adjusted(10, 6, -10, -30), Qt::AlignLeft | Qt::AlignTop,
-                         Report::tr("Tolerance report: %1").arg(p.part.name.isEmpty() ? projectName : p.part.name));
-        painter.setPen(Qt::black);
-        painter.setFont(font(9));
+        painter.setFont(font(16, true));
+        painter.drawText(r.adjusted(10, 6, -10, -60), Qt::AlignLeft | Qt::AlignTop,
+                         Report::tr("Tolerance report: %1").arg(fields.front().second));
+        const double widths[] = {0.17, 0.14, 0.08, 0.12, 0.15, 0.14, 0.20};
+        double x = r.left();
+        const double top = r.top() + 30;
+        for (std::size_t i = 0; i < fields.size(); ++i) {
+            const QRectF cell(x, top, widths[i] * r.width(), 40);
+            painter.setPen(QColor(0xbb, 0xbb, 0xbb));
+            painter.drawRect(cell);
+            painter.setPen(QColor(0x55, 0x55, 0x55));
+            painter.setFont(font(7));
+            painter.drawText(cell.adjusted(3, 2, -3, -2), Qt::AlignLeft | Qt::AlignTop, fields[i].first);
+            painter.setPen(Qt::black);
+            painter.setFont(font(9, true));
+            painter.drawText(cell.adjusted(3, 12, -3, -2), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+                             fields[i].second);
+            x += cell.width();
+        }
+        painter.setFont(font(8));
         painter.drawText(
-            r.adjusted(10, 36, -10, -4), Qt::AlignLeft | Qt::AlignTop,
-            Report::tr("Project %1 · %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
-                .arg(projectName, QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")),
+            r.adjusted(10, 72, -10, -2), Qt::AlignLeft | Qt::AlignTop,
+            Report::tr("Project %1 · written %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
+                .arg(header.projectName, QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")),
                      tolturnVersion(), dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm)));
     });
 }
@@ -255,9 +158,9 @@ void drawing(Layout &l, const Project &p)
             [&](QPainter &painter, const QRectF &r) { scene.render(&painter, r, source, Qt::KeepAspectRatio); });
 }
 
-void inputs(Layout &l, const Project &p, const DeviationResult &d)
+void inputs(Layout &l, const Project &p, const DeviationResult &d, const FinishingOutput &finishing)
 {
-    l.heading(Report::tr("2  Inputs"));
+    l.heading(Report::tr("2  Set-up sheet and inputs"));
     const DataLibrary &data = DataLibrary::builtIn();
     const MaterialData *m = data.material(p.materialId);
     const MachineData *machine = data.machine(p.machineId);
@@ -280,24 +183,16 @@ void inputs(Layout &l, const Project &p, const DeviationResult &d)
     rows.push_back(
         {Report::tr("Clamping"), Report::tr("%1, clamped length %2 mm")
                                      .arg(displayName(p.clamping.method), dimensionText(p.clamping.clampedLength_mm))});
-    for (std::size_t i = 0; i < p.passes.size(); ++i) {
-        const CuttingPass &pass = p.passes[i];
-        rows.push_back(
-            {Report::tr("Pass %1").arg(i), Report::tr("%1: vc %2 m/min, f %3 mm/rev, ap %4 mm")
-                                               .arg(keyword(pass.kind), formatNumber(pass.cuttingSpeed_m_min),
-                                                    formatNumber(pass.feed_mm_rev), formatNumber(pass.depthOfCut_mm))});
-    }
     rows.push_back({Report::tr("Force model"), forceModelName(keyword(p.cuttingModel.forceModel))});
     rows.push_back(
         {Report::tr("Machine characterisation"), p.characterisation.source.isEmpty()
                                                      ? Report::tr("not measured: see the machine assumption on page 1")
                                                      : p.characterisation.source});
     l.table(rows, {130, kWidth - 130});
+    report::setupSheet(l, p, finishing);
     // Conditions outside the insert's published ranges or the machine's limits (checkPlausibility).
-    for (const Diagnostic &x : checkPlausibility(p, data))
-        l.paragraph((x.severity == Severity::Error ? Report::tr("Error: ") : Report::tr("Warning: ")) + x.field +
-                        QStringLiteral(": ") + x.message,
-                    8.5);
+    for (const QString &finding : report::findingsInWords(checkPlausibility(p, data)))
+        l.paragraph(finding, 8.5);
 }
 
 void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const std::optional<DeviationResult> &stiff)
@@ -479,7 +374,7 @@ ReportResult cancelledReport()
 
 } // namespace
 
-ReportResult writeReport(const Project &project, const QString &projectName, const QString &pdfPath,
+ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
                          const std::function<bool(double)> &progress)
 {
     ReportResult result;
@@ -492,10 +387,10 @@ ReportResult writeReport(const Project &project, const QString &projectName, con
     const FinishingOutput finishing = finishingOutput(project, DataLibrary::builtIn());
 
     Layout layout;
-    titleBlock(layout, project, projectName);
+    titleBlock(layout, project, header);
     summary(layout, project, range);
     drawing(layout, project);
-    inputs(layout, project, deviation);
+    inputs(layout, project, deviation, finishing);
     if (!step(0.2))
         return cancelledReport();
     deviationPlots(layout, project, deviation, range.stiff);

@@ -16,13 +16,20 @@ struct ReportResult {
     bool cancelled = false; // stopped through `progress`; no file was written
 };
 
+// Who and what the report's title block names besides the project's own data (part name, drawing
+// number, revision, material): the project file's name and the planner (from the preferences).
+struct ReportHeader {
+    QString projectName;
+    QString planner;
+};
+
 // Writes the PDF report of a project (File > Export Report, `tolturn-cli report`): title block,
 // the part drawing, the inputs (material, machine, tool, clamping, passes), the deviation plots
 // per contribution, the tolerance verdicts, the plan with the cutting window, the clamping
 // ranking and the compensation, the assumptions and the sources of the model and the data, with
 // page numbers. Drawing and plots are vectors. Needs a QApplication (offscreen is enough). The
 // file is written atomically. `progress` (0…1) returning false cancels.
-[[nodiscard]] ReportResult writeReport(const Project &project, const QString &projectName, const QString &pdfPath,
+[[nodiscard]] ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
                                        const std::function<bool(double)> &progress = {});
 
 } // namespace tolturn

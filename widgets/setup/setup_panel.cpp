@@ -106,6 +106,7 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     m_message->setObjectName(QStringLiteral("setupMessage"));
     auto *content = new QWidget;
     auto *column = new QVBoxLayout(content);
+    column->addWidget(createDrawingGroup());
     column->addWidget(createPartGroup());
     column->addWidget(m_stiffness);
     column->addWidget(createToolGroup());
@@ -147,6 +148,39 @@ QWidget *SetupPanel::createPartGroup()
             (void)fitStiffnessFromTestBar(path);
     });
     return group;
+}
+
+// The part as its drawing names it, for the report's title block.
+QWidget *SetupPanel::createDrawingGroup()
+{
+    auto *group = new QGroupBox(tr("Part"));
+    auto *form = new QFormLayout(group);
+    m_partName = new QLineEdit;
+    m_drawingNumber = new QLineEdit;
+    m_revision = new QLineEdit;
+    m_partName->setObjectName(QStringLiteral("partName"));
+    m_drawingNumber->setObjectName(QStringLiteral("drawingNumber"));
+    m_revision->setObjectName(QStringLiteral("drawingRevision"));
+    m_drawingNumber->setToolTip(tr("The number of the part drawing the tolerances come from (report title block)"));
+    form->addRow(tr("&Name:"), m_partName);
+    form->addRow(tr("&Drawing no.:"), m_drawingNumber);
+    form->addRow(tr("&Revision:"), m_revision);
+    for (QLineEdit *edit : {m_partName, m_drawingNumber, m_revision})
+        connect(edit, &QLineEdit::editingFinished, this, &SetupPanel::applyDrawing);
+    return group;
+}
+
+void SetupPanel::applyDrawing()
+{
+    if (m_updating)
+        return;
+    PartProfile part = m_document.project().part;
+    part.name = m_partName->text().trimmed();
+    part.drawingNumber = m_drawingNumber->text().trimmed();
+    part.revision = m_revision->text().trimmed();
+    if (part == m_document.project().part)
+        return;
+    showOutcome(m_document.setPart(part, tr("Change part name and drawing")));
 }
 
 QWidget *SetupPanel::createToolGroup()
@@ -256,6 +290,9 @@ void SetupPanel::showValues()
 {
     m_updating = true;
     const Project &p = m_document.project();
+    m_partName->setText(p.part.name);
+    m_drawingNumber->setText(p.part.drawingNumber);
+    m_revision->setText(p.part.revision);
     selectData(m_material, p.materialId);
     selectData(m_machine, p.machineId);
     selectData(m_holder, p.tool.holderCode);

@@ -62,6 +62,8 @@ public:
 private:
     void markImplausiblePasses();
     QWidget *createPartGroup();
+    QWidget *createDrawingGroup();
+    void applyDrawing();
     QWidget *createToolGroup();
     QWidget *createClampingGroup();
     QWidget *createPassesGroup();
@@ -86,6 +88,9 @@ private:
     QComboBox *m_machine;
     QLabel *m_machineStiffness;
     StiffnessEditor *m_stiffness;
+    QLineEdit *m_partName = nullptr;
+    QLineEdit *m_drawingNumber = nullptr;
+    QLineEdit *m_revision = nullptr;
     QLineEdit *m_insert;
     QLabel *m_insertDecoded;
     QComboBox *m_holder;

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/report/setup_sheet.h"
+
+#include "core/data/data_library.h"
+#include "core/project/keywords.h"
+#include "core/tooling/iso1832.h"
+
+#include <QCoreApplication>
+#include <QPainterPath>
+#include <QRegularExpression>
+
+#include <algorithm>
+#include <functional>
+#include <map>
+
+namespace tolturn::report {
+
+namespace {
+
+struct SetupSheet {
+    Q_DECLARE_TR_FUNCTIONS(SetupSheet)
+};
+
+QString num(double v, int decimals)
+{
+    return QString::number(v, 'f', decimals);
+}
+
+// A field key of a project file in words: "cutting_speed_m_min" -> "cutting speed".
+QString fieldWords(const QString &key)
+{
+    static const std::map<QString, const char *> names{
+        {QStringLiteral("cutting_speed_m_min"), QT_TRANSLATE_NOOP("SetupSheet", "cutting speed")},
+        {QStringLiteral("feed_mm_rev"), QT_TRANSLATE_NOOP("SetupSheet", "feed")},
+        {QStringLiteral("depth_of_cut_mm"), QT_TRANSLATE_NOOP("SetupSheet", "depth of cut")},
+        {QStringLiteral("overhang_mm"), QT_TRANSLATE_NOOP("SetupSheet", "tool overhang")},
+        {QStringLiteral("clamped_length_mm"), QT_TRANSLATE_NOOP("SetupSheet", "clamped length")},
+        {QStringLiteral("stock_diameter_mm"), QT_TRANSLATE_NOOP("SetupSheet", "stock diameter")},
+    };
+    const QString last = key.section(QLatin1Char('.'), -1);
+    if (const auto it = names.find(last); it != names.end())
+        return SetupSheet::tr(it->second);
+    QString words = last;
+    static const QRegularExpression unit(QStringLiteral("_(mm|rpm|kW|Nm|N|um|min|m_min|mm_rev|deg)$"));
+    words.remove(unit);
+    return words.replace(QLatin1Char('_'), QLatin1Char(' '));
+}
+
+// "1-8", "1, 3", "2".
+QString passNumbers(const std::vector<int> &numbers)
+{
+    const bool consecutive = numbers.back() - numbers.front() + 1 == static_cast<int>(numbers.size());
+    if (numbers.size() > 2 && consecutive)
+        return QStringLiteral("%1–%2").arg(numbers.front()).arg(numbers.back());
+    QStringList list;
+    for (int n : numbers)
+        list << QString::number(n);
+    return list.join(QStringLiteral(", "));
+}
+
+QPainterPath silhouette(const Project &project, const std::function<QPointF(double, double)> &at)
+{
+    QPainterPath path;
+    const std::vector<Segment> &outer = project.part.outer.segments;
+    if (outer.empty())
+        return path;
+    path.moveTo(at(outer.front().from.z_mm, outer.front().from.r_mm));
+    for (const Segment &s : outer)
+        path.lineTo(at(s.to.z_mm, s.to.r_mm));
+    for (std::size_t i = outer.size(); i-- > 0;) // clang 14 cannot use views::reverse
+        path.lineTo(at(outer[i].from.z_mm, -outer[i].from.r_mm));
+    path.closeSubpath();
+    return path;
+}
+
+void drawCentre(QPainter &painter, QPointF tip, double size, bool pointingRight)
+{
+    const double d = pointingRight ? -size : size;
+    QPolygonF cone;
+    cone << tip << QPointF(tip.x() + d, tip.y() - 0.6 * size) << QPointF(tip.x() + d, tip.y() + 0.6 * size);
+    painter.drawPolygon(cone);
+    painter.drawRect(QRectF(QPointF(tip.x() + d, tip.y() - 0.45 * size), QSizeF(d, 0.9 * size)).normalized());
+}
+
+} // namespace
+
+void drawClamping(QPainter &painter, const QRectF &rect, const Project &project)
+{
+    const double length = project.part.length_mm();
+    const double radius = 0.5 * project.part.stockDiameter_mm;
+    if (length <= 0.0 || radius <= 0.0)
+        return;
+    const double margin = 0.14 * length;
+    const double scale = std::min(rect.width() / (length + 2.0 * margin), rect.height() / (3.2 * radius));
+    const QPointF origin(rect.center().x() - 0.5 * length * scale, rect.center().y());
+    auto at = [&](double z, double r) { return QPointF(origin.x() + z * scale, origin.y() - r * scale); };
+    painter.save();
+    painter.setPen(QPen(QColor(0x1f, 0x4e, 0x9a), 1.0));
+    painter.setBrush(QColor(0xdd, 0xe6, 0xf2));
+    painter.drawPath(silhouette(project, at));
+    painter.setPen(QPen(QColor(0xcc, 0x33, 0x33), 0.6, Qt::DashDotLine));
+    painter.drawLine(at(-0.5 * margin, 0.0), at(length + 0.5 * margin, 0.0)); // axis
+    painter.setPen(QPen(Qt::black, 0.8));
+    painter.setBrush(QColor(0x99, 0x99, 0x99));
+    painter.setFont(font(7.5));
+    const ClampingMethod method = project.clamping.method;
+    const double grip = project.clamping.clampedLength_mm;
+    if (method != ClampingMethod::BetweenCentres) {
+        const double jaw = 0.45 * radius;
+        double gripRadius = 0.0; // the largest radius of the part in the jaws
+        for (const Segment &s : project.part.outer.segments)
+            if (std::min(s.from.z_mm, s.to.z_mm) < grip)
+                gripRadius = std::max({gripRadius, s.from.r_mm, s.to.r_mm});
+        for (const double side : {1.0, -1.0})
+            painter.drawRect(QRectF(at(0.0, side * (gripRadius + jaw)), at(grip, side * gripRadius)).normalized());
+        painter.setBrush(QColor(0xbb, 0xbb, 0xbb));
+        painter.drawRect(QRectF(at(-margin * 0.6, 1.5 * radius), at(0.0, -1.5 * radius)).normalized()); // chuck body
+        painter.drawText(QRectF(at(-margin, -1.55 * radius), QSizeF(rect.width() / 2.0, 12)),
+                         Qt::AlignLeft | Qt::AlignTop, SetupSheet::tr("chuck: %1 mm in the jaws").arg(num(grip, 1)));
+    } else {
+        drawCentre(painter, at(0.0, 0.0), 0.35 * margin * scale, true);
+        painter.drawText(QRectF(at(-margin, -1.1 * radius), QSizeF(scale * 2.0 * margin, 12)), Qt::AlignLeft,
+                         SetupSheet::tr("centre and driver"));
+    }
+    if (method != ClampingMethod::Chuck) {
+        drawCentre(painter, at(length, 0.0), 0.35 * margin * scale, false);
+        painter.drawText(
+            QRectF(at(length - 0.5 * margin, -1.1 * radius), QSizeF(scale * 1.5 * margin, 12)), Qt::AlignRight,
+            method == ClampingMethod::ChuckTailstock ? SetupSheet::tr("tailstock centre") : SetupSheet::tr("centre"));
+    }
+    painter.restore();
+}
+
+void setupSheet(Layout &l, const Project &p, const FinishingOutput &finishing)
+{
+    l.block(120, [&](QPainter &painter, const QRectF &rect) { drawClamping(painter, rect, p); });
+    const TurningProgram &program = finishing.nominal;
+    std::vector<QStringList> rows{{SetupSheet::tr("Pass"), SetupSheet::tr("Kind"), SetupSheet::tr("n [rpm]"),
+                                   SetupSheet::tr("vc [m/min]"), SetupSheet::tr("f [mm/rev]"),
+                                   SetupSheet::tr("ap [mm]"), SetupSheet::tr("Power [kW]"),
+                                   SetupSheet::tr("Time [min]")}};
+    double total = 0.0;
+    for (const PassSummary &s : program.passes) {
+        rows.push_back({QString::number(s.number),
+                        s.kind == PassKind::Roughing ? SetupSheet::tr("roughing") : SetupSheet::tr("finishing"),
+                        QStringLiteral("%1–%2").arg(num(s.lowestSpeed_rpm, 0), num(s.highestSpeed_rpm, 0)),
+                        num(s.conditions.cuttingSpeed_m_min, 0), num(s.conditions.feed_mm_rev, 3),
+                        num(s.conditions.depthOfCut_mm, 3), s.power_kW ? num(*s.power_kW, 2) : SetupSheet::tr("—"),
+                        num(s.time_min, 2)});
+        total += s.time_min;
+    }
+    rows.push_back({QString(), SetupSheet::tr("total cutting"), QString(), QString(), QString(), QString(), QString(),
+                    num(total, 2)});
+    l.table(rows, {34, 70, 72, 60, 60, 54, 70, kWidth - 420});
+    l.paragraph(SetupSheet::tr("Program O%1 for %2, %3 passes; spindle limit %4 rpm (%5). Checksum (SHA-256, "
+                               "first 16 digits) of the nominal program %6, of the compensated program %7: compare "
+                               "them with `tolturn-cli gcode` or the G-code tab before running.")
+                    .arg(program.programNumber)
+                    .arg(program.dialectReason)
+                    .arg(program.passes.size())
+                    .arg(num(program.spindle.speed_rpm, 0), program.spindle.reason, program.checksum,
+                         finishing.compensated.checksum),
+                8.5);
+    for (const QString &w : program.path.warnings)
+        l.paragraph(SetupSheet::tr("Program warning: %1").arg(w), 8.5);
+}
+
+QStringList findingsInWords(const Diagnostics &findings)
+{
+    static const QRegularExpression passField(QStringLiteral("^passes\\[(\\d+)\\]\\.(\\w+)$"));
+    std::vector<std::pair<QString, std::vector<int>>> grouped; // (severity, what, message) -> pass numbers
+    QStringList out;
+    for (const Diagnostic &d : findings) {
+        const QString severity = d.severity == Severity::Error ? SetupSheet::tr("Error") : SetupSheet::tr("Warning");
+        const auto m = passField.match(d.field);
+        if (!m.hasMatch()) {
+            out << QStringLiteral("%1: %2 %3").arg(severity, fieldWords(d.field), d.message);
+            continue;
+        }
+        const QString key = severity + QLatin1Char('\n') + fieldWords(m.captured(2)) + QLatin1Char('\n') + d.message;
+        auto it = std::find_if(grouped.begin(), grouped.end(), [&](const auto &g) { return g.first == key; });
+        if (it == grouped.end())
+            grouped.push_back({key, {}});
+        it = std::find_if(grouped.begin(), grouped.end(), [&](const auto &g) { return g.first == key; });
+        it->second.push_back(m.captured(1).toInt() + 1);
+    }
+    for (const auto &[key, numbers] : grouped) {
+        const QStringList parts = key.split(QLatin1Char('\n'));
+        const QString passes = numbers.size() == 1 ? SetupSheet::tr("pass %1").arg(numbers.front())
+                                                   : SetupSheet::tr("passes %1").arg(passNumbers(numbers));
+        out << QStringLiteral("%1 (%2): %3 %4").arg(parts.at(0), passes, parts.at(1), parts.at(2));
+    }
+    return out;
+}
+
+} // namespace tolturn::report
