@@ -31,6 +31,10 @@
         <source>cannot be planned</source>
         <translation>nicht planbar</translation>
     </message>
+    <message>
+        <source>; deciding: %1, %2 of %3 %4 (%5 % used)</source>
+        <translation>; entscheidend: %1, %2 von %3 %4 (%5 % genutzt)</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -2217,6 +2221,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>2  Set-up sheet and inputs</source>
         <translation>2  Einrichteblatt und Eingaben</translation>
     </message>
+    <message>
+        <source>programmed</source>
+        <translation>programmiert</translation>
+    </message>
+    <message>
+        <source>The programmed finishing pass (f %1 mm/rev, vc %2 m/min) lies outside this window.</source>
+        <translation>Der programmierte Schlichtschnitt (f %1 mm/U, vc %2 m/min) liegt außerhalb dieses Fensters.</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>
@@ -4079,6 +4091,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The project&apos;s passes: %1. Dialect: %2. Program O%3, checksum %4.</source>
         <translation>Die Schnitte des Projekts: %1. Dialekt: %2. Programm O%3, Prüfsumme %4.</translation>
+    </message>
+    <message>
+        <source>programmed</source>
+        <translation>programmiert</translation>
+    </message>
+    <message>
+        <source>programmed (f %1 mm/rev, %2 %3) lies outside this window</source>
+        <translation>programmiert (f %1 mm/U, %2 %3) liegt außerhalb dieses Fensters</translation>
+    </message>
+    <message>
+        <source>vc</source>
+        <translation>vc</translation>
+    </message>
+    <message>
+        <source>ap</source>
+        <translation>ap</translation>
     </message>
 </context>
 <context>

@@ -31,6 +31,10 @@
         <source>cannot be planned</source>
         <translation>no se puede planificar</translation>
     </message>
+    <message>
+        <source>; deciding: %1, %2 of %3 %4 (%5 % used)</source>
+        <translation>; decisiva: %1, %2 de %3 %4 (%5 % utilizado)</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -2217,6 +2221,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>2  Set-up sheet and inputs</source>
         <translation>2  Hoja de preparación y datos</translation>
     </message>
+    <message>
+        <source>programmed</source>
+        <translation>programado</translation>
+    </message>
+    <message>
+        <source>The programmed finishing pass (f %1 mm/rev, vc %2 m/min) lies outside this window.</source>
+        <translation>La pasada de acabado programada (f %1 mm/rev, vc %2 m/min) queda fuera de esta ventana.</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>
@@ -4079,6 +4091,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The project&apos;s passes: %1. Dialect: %2. Program O%3, checksum %4.</source>
         <translation>Las pasadas del proyecto: %1. Dialecto: %2. Programa O%3, suma de control %4.</translation>
+    </message>
+    <message>
+        <source>programmed</source>
+        <translation>programado</translation>
+    </message>
+    <message>
+        <source>programmed (f %1 mm/rev, %2 %3) lies outside this window</source>
+        <translation>programado (f %1 mm/rev, %2 %3) queda fuera de esta ventana</translation>
+    </message>
+    <message>
+        <source>vc</source>
+        <translation>vc</translation>
+    </message>
+    <message>
+        <source>ap</source>
+        <translation>ap</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace tolturn {
 
@@ -31,16 +32,39 @@ std::optional<double> gripLength(const Project &p)
     return std::nullopt;
 }
 
+// The tolerance nearest its limit at the plan (value / limit), which tells equal plans apart.
+std::optional<ConstraintValue> tightestTolerance(const CandidateEvaluation &e)
+{
+    std::optional<ConstraintValue> tightest;
+    for (const ConstraintValue &c : e.constraints)
+        if (c.name == QLatin1String("tolerances") && c.limit > 0.0 &&
+            (!tightest || c.value / c.limit > tightest->value / tightest->limit))
+            tightest = c;
+    return tightest;
+}
+
+double tightestUtilisation(const CandidateEvaluation &e)
+{
+    const auto t = tightestTolerance(e);
+    return t ? t->value / t->limit : 0.0;
+}
+
 QString describe(const ClampingOption &o, const Project &p)
 {
     if (!o.possible)
         return o.reason;
     const CandidateEvaluation &e = o.plan.evaluation;
-    if (o.plan.feasible)
-        return ClampingAdvice::tr("meets every constraint: %1 %2 per part")
-            .arg(QString::number(e.objective, 'f', 3), p.planning.objective == PlanningObjective::Time
-                                                           ? ClampingAdvice::tr("min")
-                                                           : ClampingAdvice::tr("cost"));
+    if (o.plan.feasible) {
+        QString text = ClampingAdvice::tr("meets every constraint: %1 %2 per part")
+                           .arg(QString::number(e.objective, 'f', 3), p.planning.objective == PlanningObjective::Time
+                                                                          ? ClampingAdvice::tr("min")
+                                                                          : ClampingAdvice::tr("cost"));
+        if (const auto t = tightestTolerance(e))
+            text += ClampingAdvice::tr("; deciding: %1, %2 of %3 %4 (%5 % used)")
+                        .arg(t->label(), QString::number(t->value, 'f', 1), QString::number(t->limit, 'f', 1), t->unit,
+                             QString::number(100.0 * t->value / t->limit, 'f', 0));
+        return text;
+    }
     QStringList violated;
     for (const ConstraintValue &c : o.plan.conflicts)
         violated << ClampingAdvice::tr("%1 by %2 %").arg(c.label(), QString::number(100.0 * c.violation(), 'f', 0));
@@ -81,14 +105,17 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         out.push_back(o);
     }
     std::stable_sort(out.begin(), out.end(), [](const ClampingOption &a, const ClampingOption &b) {
-        auto key = [](const ClampingOption &o) {
-            if (!o.possible)
-                return std::pair{2, 0.0};
-            if (!o.plan.feasible)
-                return std::pair{1, o.plan.evaluation.totalViolation()};
-            return std::pair{0, o.plan.evaluation.objective};
-        };
-        return key(a) < key(b);
+        auto group = [](const ClampingOption &o) { return !o.possible ? 2 : (!o.plan.feasible ? 1 : 0); };
+        if (group(a) != group(b))
+            return group(a) < group(b);
+        if (group(a) == 1)
+            return a.plan.evaluation.totalViolation() < b.plan.evaluation.totalViolation();
+        const double ea = a.plan.evaluation.objective;
+        const double eb = b.plan.evaluation.objective;
+        if (group(a) == 0 && std::abs(ea - eb) > 1e-6 * std::max({1.0, std::abs(ea), std::abs(eb)}))
+            return ea < eb;
+        // Equal times or costs: the plan with more margin on its tightest tolerance first.
+        return group(a) == 0 && tightestUtilisation(a.plan.evaluation) < tightestUtilisation(b.plan.evaluation);
     });
     return out;
 }

@@ -304,6 +304,27 @@ private Q_SLOTS:
         QVERIFY(ranking[2].reason.contains(QStringLiteral("tolerance")));
     }
 
+    // Equal times (the stepped shaft in a chuck, with or without the tailstock, both 1.173 min: the
+    // finishing pass is the same) are told apart by the tightest tolerance's margin, which the
+    // reason states: value, limit and the share used, value/limit.
+    void clampingTiesAreBrokenByTheDecidingTolerance()
+    {
+        const std::vector<ClampingOption> ranking =
+            adviseClamping(example("stepped-shaft-chuck.tolturn"), DataLibrary::builtIn());
+        QCOMPARE(int(ranking.size()), 3);
+        const auto used = [](const ClampingOption &o) {
+            const QRegularExpression re(
+                QStringLiteral("deciding: tolerance \\S+, ([\\d.]+) of ([\\d.]+) µm \\((\\d+) % used\\)"));
+            const auto m = re.match(o.reason);
+            return m.hasMatch() ? m.captured(1).toDouble() / m.captured(2).toDouble() : -1.0;
+        };
+        for (const ClampingOption &o : ranking)
+            QVERIFY2(used(o) > 0.0, qPrintable(o.reason));
+        QVERIFY(std::abs(ranking[0].plan.evaluation.objective - ranking[1].plan.evaluation.objective) < 1e-6);
+        QVERIFY2(used(ranking[0]) <= used(ranking[1]) + 0.01,
+                 qPrintable(ranking[0].reason + QLatin1Char('|') + ranking[1].reason));
+    }
+
     // The program of the stepped shaft follows its outer contour from the right end face to the chuck
     // face (drawing: Ø28 end face, 1 x 45° chamfer to Ø30, Ø30 to z 120, face to Ø36, R2 to Ø40, Ø40
     // to z 90, cone to Ø50 at z 80, Ø50 to the chuck face at z 35; Z0 at z = 150), with every

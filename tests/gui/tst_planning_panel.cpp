@@ -89,6 +89,13 @@ private Q_SLOTS:
         QVERIFY(panel->report()->plan.feasible);
         QVERIFY(panel->planText().contains(QStringLiteral("Binding: tolerance T4")));
         QVERIFY(panel->windowPlot()->labelCount() >= 1);
+        // The window marks the optimum and the project's own finishing pass (f 0.1 mm/rev, 230 m/min),
+        // or says that the latter lies outside it.
+        QVERIFY(panel->windowPlot()->markers().contains(QStringLiteral("optimum")));
+        const auto *windowLegend = panel->findChild<QLabel *>(QStringLiteral("windowLegend"));
+        QVERIFY2(panel->windowPlot()->markers().contains(QStringLiteral("programmed")) ||
+                     windowLegend->text().contains(QStringLiteral("programmed (f 0.1 mm/rev, vc 230) lies outside")),
+                 qPrintable(panel->windowPlot()->markers().join(QLatin1Char(','))));
         QCOMPARE(panel->clampingTable()->rowCount(), 3);
         QCOMPARE(panel->clampingTable()->item(0, 1)->text(), QStringLiteral("chuck + tailstock"));
         QVERIFY(panel->compensationTable()->rowCount() >= 5);

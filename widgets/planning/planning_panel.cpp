@@ -144,6 +144,7 @@ void PlanningPanel::buildControls()
     m_plan->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_plan->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     m_legend->setWordWrap(true);
+    m_legend->setObjectName(QStringLiteral("windowLegend"));
     auto *windowTab = new QWidget(this);
     auto *windowLayout = new QVBoxLayout(windowTab);
     windowLayout->addWidget(m_map, 1);
@@ -418,6 +419,15 @@ void PlanningPanel::showWindow()
     if (m_report->plan.feasible)
         m_map->addMarker(w.base.finishing.feed_mm_rev,
                          speed ? w.base.finishing.cuttingSpeed_m_min : w.base.finishing.depthOfCut_mm, tr("optimum"));
+    // The project's own finishing pass, so that the planner sees where the program stands.
+    const std::vector<CuttingPass> &passes = m_document.project().passes;
+    if (!passes.empty()) {
+        const CuttingPass &programmed = passes.back();
+        const double y = speed ? programmed.cuttingSpeed_m_min : programmed.depthOfCut_mm;
+        if (!m_map->addMarker(programmed.feed_mm_rev, y, tr("programmed"), MapPlot::Marker::Programmed))
+            legend << tr("programmed (f %1 mm/rev, %2 %3) lies outside this window")
+                          .arg(formatNumber(programmed.feed_mm_rev), speed ? tr("vc") : tr("ap"), formatNumber(y));
+    }
     m_map->setTitle(speed ? tr("Cutting window of the finishing pass: feed – cutting speed")
                           : tr("Cutting window of the finishing pass: feed – depth of cut"));
     m_map->setAxisLabels(tr("feed f [mm/rev]"), speed ? tr("cutting speed vc [m/min]") : tr("depth of cut ap [mm]"));

@@ -40,6 +40,7 @@ void MapPlot::clear()
     m_plot->clearItems();
     m_plot->clearGraphs();
     m_labels = 0;
+    m_markers.clear();
 }
 
 void MapPlot::setImage(const QImage &image, double xMin, double xMax, double yMin, double yMax)
@@ -68,21 +69,28 @@ void MapPlot::addLabel(double x, double y, const QString &text, const QColor &co
     ++m_labels;
 }
 
-void MapPlot::addMarker(double x, double y, const QString &text)
+bool MapPlot::addMarker(double x, double y, const QString &text, Marker kind)
 {
+    const QCPRange xr = m_plot->xAxis->range();
+    const QCPRange yr = m_plot->yAxis->range();
+    if (!xr.contains(x) || !yr.contains(y))
+        return false;
     QCPGraph *point = m_plot->addGraph();
     point->setLineStyle(QCPGraph::lsNone);
-    point->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 2.0), Qt::white, 14));
+    point->setScatterStyle(
+        kind == Marker::Optimum
+            ? QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 2.0), Qt::white, 14)
+            : QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(0x80, 0x00, 0x26), 2.5), Qt::NoBrush, 12));
     point->setData({x}, {y});
     auto *label = new QCPItemText(m_plot);
     label->position->setCoords(x, y);
     // Beside the point, on the side towards the middle of the map so that it is not clipped.
-    const QCPRange xr = m_plot->xAxis->range();
-    const QCPRange yr = m_plot->yAxis->range();
     label->setPositionAlignment((x > xr.center() ? Qt::AlignRight : Qt::AlignLeft) |
                                 (y > yr.center() ? Qt::AlignTop : Qt::AlignBottom));
     label->setText(QStringLiteral("  ") + text + QStringLiteral("  "));
     label->setFont(QFont(font().family(), font().pointSize(), QFont::Bold));
+    m_markers << text;
+    return true;
 }
 
 void MapPlot::replot()

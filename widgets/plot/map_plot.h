@@ -23,11 +23,16 @@ public:
     // The image's column 0 is at xMin, its last column at xMax; row 0 at yMin (drawn at the bottom).
     void setImage(const QImage &image, double xMin, double xMax, double yMin, double yMax);
     void addLabel(double x, double y, const QString &text, const QColor &color = Qt::black);
-    void addMarker(double x, double y, const QString &text);
+    // The optimum is a star; the programmed point (the project's own conditions) a ring. Returns
+    // false, drawing nothing, when the point lies outside the map.
+    enum class Marker { Optimum, Programmed };
+    bool addMarker(double x, double y, const QString &text, Marker kind = Marker::Optimum);
     void clear();
     void replot();
 
     [[nodiscard]] int labelCount() const { return m_labels; }
+
+    [[nodiscard]] QStringList markers() const { return m_markers; } // the texts of the markers drawn
 
     [[nodiscard]] QString title() const { return m_title; }
 
@@ -41,6 +46,7 @@ private:
     QCustomPlot *m_plot;
     QString m_title;
     int m_labels = 0;
+    QStringList m_markers;
 };
 
 } // namespace tolturn

@@ -261,7 +261,7 @@ void verdicts(Layout &l, const Project &p, const std::vector<ToleranceEvaluation
 }
 
 // The cutting window as a map: feasible points green, others coloured by their binding constraint.
-void windowMap(Layout &l, const PlanningReport &r)
+void windowMap(Layout &l, const Project &project, const PlanningReport &r)
 {
     const PlanResult &pl = r.plan;
     const CuttingWindow &w = r.window;
@@ -287,10 +287,19 @@ void windowMap(Layout &l, const PlanningReport &r)
     if (pl.feasible)
         map.addMarker(pl.candidate.finishing.feed_mm_rev, pl.candidate.finishing.cuttingSpeed_m_min,
                       Report::tr("optimum"));
+    bool programmedShown = true;
+    if (!project.passes.empty())
+        programmedShown = map.addMarker(project.passes.back().feed_mm_rev, project.passes.back().cuttingSpeed_m_min,
+                                        Report::tr("programmed"), MapPlot::Marker::Programmed);
     map.setAxisLabels(Report::tr("feed f [mm/rev]"), Report::tr("cutting speed vc [m/min]"));
     map.replot();
     l.caption(Report::tr("Cutting window of the finishing pass (green: feasible)"));
     l.block(200, [&](QPainter &painter, const QRectF &rect) { map.render(&painter, rect, kPlotTextScale); });
+    if (!programmedShown)
+        l.paragraph(Report::tr("The programmed finishing pass (f %1 mm/rev, vc %2 m/min) lies outside this window.")
+                        .arg(formatNumber(project.passes.back().feed_mm_rev),
+                             formatNumber(project.passes.back().cuttingSpeed_m_min)),
+                    8.5);
 }
 
 void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
@@ -323,7 +332,7 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
                 binding << Report::tr("%1 violated by %2 %").arg(c.label(), num(100.0 * c.violation(), 1));
             if (!binding.isEmpty())
                 l.paragraph(Report::tr("Binding: %1.").arg(binding.join(QStringLiteral(", "))));
-            windowMap(l, r);
+            windowMap(l, p, r);
             std::vector<QStringList> rows{{Report::tr("Rank"), Report::tr("Clamping"), Report::tr("Result")}};
             for (std::size_t i = 0; i < r.clamping.size(); ++i)
                 rows.push_back({QString::number(i + 1), displayName(r.clamping[i].method), r.clamping[i].reason});
