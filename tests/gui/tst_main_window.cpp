@@ -141,6 +141,17 @@ private Q_SLOTS:
                  qPrintable(QStringLiteral("minimum %1 x %2").arg(minimum.width()).arg(minimum.height())));
         w.resize(1366, 740);
         QTest::qWait(50);
+        // No two dimension texts of the drawing overlap at this size (ISO 129-1 legibility).
+        auto *view = w.findChild<ProfileView *>(QStringLiteral("profileView"));
+        std::vector<QRectF> labels;
+        for (QGraphicsItem *item : view->scene()->items())
+            if (const auto *d = dynamic_cast<DimensionItem *>(item))
+                labels.push_back(d->labelRect(view->viewportTransform()));
+        QVERIFY(labels.size() >= 10);
+        for (std::size_t i = 0; i < labels.size(); ++i)
+            for (std::size_t j = i + 1; j < labels.size(); ++j)
+                QVERIFY2(!labels[i].intersects(labels[j]),
+                         qPrintable(QStringLiteral("labels %1 and %2").arg(i).arg(j)));
         test::saveScreenshot(w, "window-1366x768.png");
         w.resize(1600, 1000);
         QTest::qWait(50);

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/profile/dimension_item.h"
 
+#include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 #include <QLineF>
 #include <QPainter>
 #include <QPolygonF>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace tolturn {
 
@@ -30,14 +33,79 @@ DimensionItem::DimensionItem(QPointF from, QPointF to, double offset, const QStr
     const QPointF n = normal();
     m_label->setPos(m_from + (m_to - m_from) * labelAt + n * m_offset);
     const QLineF line(m_from, m_to);
-    double angle = -line.angle(); // QLineF::angle is counter-clockwise in y-up terms
-    if (angle < -90.0 || angle > 90.0)
-        angle += 180.0;
+    m_angle = -line.angle(); // QLineF::angle is counter-clockwise in y-up terms
+    if (m_angle < -90.0 || m_angle > 90.0)
+        m_angle += 180.0;
+    shiftLabel(0.0, 0.0);
+}
+
+void DimensionItem::shiftLabel(double along, double lift)
+{
     const QRectF box = m_label->boundingRect();
     QTransform t;
-    t.rotate(angle);
-    t.translate(-box.width() / 2.0, -box.height() - 1.0);
+    t.rotate(m_angle);
+    t.translate(-box.width() / 2.0 + along, -box.height() - 1.0 - lift);
     m_label->setTransform(t);
+}
+
+QRectF DimensionItem::labelRect(const QTransform &sceneToDevice) const
+{
+    // The label ignores the scene's scale: its anchor maps, its box does not scale.
+    const QPointF anchor = sceneToDevice.map(m_label->scenePos());
+    return m_label->transform().mapRect(m_label->boundingRect()).translated(anchor);
+}
+
+bool DimensionItem::isAcross() const
+{
+    return std::abs(m_to.x() - m_from.x()) < std::abs(m_to.y() - m_from.y());
+}
+
+QSizeF DimensionItem::labelSize() const
+{
+    return m_label->boundingRect().size();
+}
+
+int declutterDimensionLabels(QGraphicsScene &scene, const QTransform &sceneToDevice)
+{
+    std::vector<DimensionItem *> dimensions;
+    for (QGraphicsItem *item : scene.items())
+        if (auto *d = dynamic_cast<DimensionItem *>(item))
+            dimensions.push_back(d);
+    // Diameters (drawn across the part) stay where they are and are obstacles; lengths are placed
+    // longest first: an overall length keeps its place, the short spans of a chain give way.
+    const auto across = [](const DimensionItem *d) { return d->isAcross(); };
+    std::stable_partition(dimensions.begin(), dimensions.end(), across);
+    const auto lengths = std::find_if_not(dimensions.begin(), dimensions.end(), across);
+    std::stable_sort(lengths, dimensions.end(), [](const DimensionItem *a, const DimensionItem *b) {
+        return a->boundingRect().width() > b->boundingRect().width();
+    });
+    std::vector<QRectF> placed;
+    int overlapping = 0;
+    for (DimensionItem *d : dimensions) {
+        if (d->isAcross()) {
+            placed.push_back(d->labelRect(sceneToDevice));
+            continue;
+        }
+        const QSizeF size = d->labelSize();
+        const double beside = 0.5 * size.width() + 10.0;
+        const double step = size.height() + 2.0;
+        const std::pair<double, double> candidates[] = {{0.0, 0.0},           {0.0, -step - 2.0}, {beside * 2.0, 0.0},
+                                                        {-beside * 2.0, 0.0}, {0.0, step},        {0.0, 2.0 * step}};
+        bool free = false;
+        for (const auto &[along, lift] : candidates) {
+            d->shiftLabel(along, lift);
+            const QRectF r = d->labelRect(sceneToDevice).adjusted(-1.0, -1.0, 1.0, 1.0);
+            free = std::none_of(placed.begin(), placed.end(), [&r](const QRectF &p) { return p.intersects(r); });
+            if (free)
+                break;
+        }
+        if (!free) {
+            d->shiftLabel(0.0, 0.0);
+            ++overlapping;
+        }
+        placed.push_back(d->labelRect(sceneToDevice));
+    }
+    return overlapping;
 }
 
 QPointF DimensionItem::normal() const

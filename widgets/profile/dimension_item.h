@@ -8,6 +8,8 @@
 
 class QGraphicsSimpleTextItem;
 
+class QGraphicsScene;
+
 namespace tolturn {
 
 // A linear dimension as drawn on an engineering drawing (ISO 129-1): extension lines from the
@@ -27,16 +29,32 @@ public:
 
     void setPen(const QPen &pen);
 
+    // Moves the label (which keeps its size on screen) `along` pixels along the dimension line and
+    // `lift` pixels further off it; (0, 0) is its place centred above the line.
+    void shiftLabel(double along, double lift);
+    // The label's bounding box in device coordinates under `sceneToDevice`.
+    [[nodiscard]] QRectF labelRect(const QTransform &sceneToDevice) const;
+    [[nodiscard]] QSizeF labelSize() const;
+    // A dimension drawn across the part (a diameter), rather than along it.
+    [[nodiscard]] bool isAcross() const;
+
 private:
     [[nodiscard]] QPointF normal() const;
 
     QPointF m_from;
     QPointF m_to;
     double m_offset;
+    double m_angle = 0.0; // of the label, degrees
     QString m_text;
     double m_arrowLength;
     QPen m_pen;
     QGraphicsSimpleTextItem *m_label;
 };
+
+// Lays the labels of every dimension in `scene` out so that none overlaps another, as drawn under
+// `sceneToDevice` (a view's viewport transform, or the scale of a report drawing): a label that
+// collides moves off its line, then beside its arrows, then further off (ISO 129-1 allows a value
+// outside short dimensions). Returns the number of labels that still overlap.
+int declutterDimensionLabels(QGraphicsScene &scene, const QTransform &sceneToDevice);
 
 } // namespace tolturn

@@ -208,10 +208,11 @@ std::vector<double> chainStations(const PartProfile &profile, double minSpan)
 
 // A chain of lengths between the stations of the outer contour, below the outside view, and
 // the overall length below that.
-void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, double arrow, const DisplayUnits &units)
+void addLengthDimensions(QGraphicsScene &scene, const PartProfile &profile, double arrow, const DisplayUnits &units,
+                         double rowPitch)
 {
     const double rMax = profile.maxOuterRadius_mm();
-    const double gap = std::max(0.12 * rMax, 4.0 * arrow);
+    const double gap = std::max({0.12 * rMax, 4.0 * arrow, rowPitch});
     // Dimension lines run right to left so that the positive offset (left normal) points down.
     const std::vector<double> z = chainStations(profile, 0.04 * profile.length_mm());
     for (std::size_t i = 1; i < z.size() && z.size() > 2; ++i) {
@@ -243,10 +244,10 @@ QString limitsText(const Tolerance &t, const DisplayUnits &units)
 
 // Each toleranced length between two faces as its own dimension below the overall length.
 void addToleratedLengths(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
-                         double arrow, const DisplayUnits &units)
+                         double arrow, const DisplayUnits &units, double rowPitch)
 {
     const double rMax = profile.maxOuterRadius_mm();
-    const double gap = std::max(0.12 * rMax, 4.0 * arrow);
+    const double gap = std::max({0.12 * rMax, 4.0 * arrow, rowPitch});
     double offset = 3.0 * gap;
     for (const Tolerance &t : tolerances) {
         const std::optional<FeatureRef> a = findFeature(profile, t.featureId);
@@ -331,7 +332,7 @@ QString dimensionText(double value_mm)
 }
 
 void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
-                       const std::vector<Datum> &datums, const DisplayUnits &units)
+                       const std::vector<Datum> &datums, const DisplayUnits &units, double rowPitch_mm)
 {
     scene.clear();
     if (profile.outer.empty())
@@ -349,8 +350,8 @@ void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const 
     addAxis(scene, length);
     addDiameterDimensions(scene, profile.outer, 0.5, arrow, tolerances, units);
     addDiameterDimensions(scene, profile.inner, 0.3, arrow, tolerances, units);
-    addLengthDimensions(scene, profile, arrow, units);
-    addToleratedLengths(scene, profile, tolerances, arrow, units);
+    addLengthDimensions(scene, profile, arrow, units, rowPitch_mm);
+    addToleratedLengths(scene, profile, tolerances, arrow, units, rowPitch_mm);
     addToleranceFrames(scene, profile, tolerances, units);
     addDatums(scene, profile, datums);
 }

@@ -40,9 +40,18 @@ inline const QString kDatum = QStringLiteral("datum");
 // With `tolerances` and `datums`, size tolerances are written after their diameters ("Ø50 h6"),
 // geometric tolerances drawn as feature control frames and datums as datum indicators
 // (ISO 1101, ISO 5459), each on its feature.
-// Dimension texts are in `units` (millimetres unless the settings say inches).
+// Dimension texts are in `units` (millimetres unless the settings say inches). `rowPitch_mm` is the
+// least distance between rows of length dimensions: their labels keep their size on screen, so a
+// view or a report gives the label height at its scale (0: by the part's size alone).
 void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances = {},
-                       const std::vector<Datum> &datums = {}, const DisplayUnits &units = DisplayUnits());
+                       const std::vector<Datum> &datums = {}, const DisplayUnits &units = DisplayUnits(),
+                       double rowPitch_mm = 0.0);
+
+// The row pitch that fits labels of `labelHeight` device units at `scale` device units per mm.
+[[nodiscard]] inline double dimensionRowPitch_mm(double labelHeight, double scale)
+{
+    return scale > 0.0 ? (labelHeight + 6.0) / scale : 0.0;
+}
 
 // Text of a dimension value in mm: at most three decimals, no trailing zeros.
 [[nodiscard]] QString dimensionText(double value_mm);

@@ -2,8 +2,10 @@
 #include "widgets/profile/profile_view.h"
 
 #include "widgets/common/display_units.h"
+#include "widgets/profile/dimension_item.h"
 #include "widgets/profile/profile_scene.h"
 
+#include <QFontMetricsF>
 #include <QGraphicsPathItem>
 #include <QGraphicsRectItem>
 #include <QGraphicsScene>
@@ -57,7 +59,7 @@ void ProfileView::setProfile(const PartProfile &profile, const std::vector<Toler
 // caller selects again.
 void ProfileView::redraw()
 {
-    buildProfileScene(*m_scene, m_profile, m_tolerances, m_datums, DisplaySettings::instance().units());
+    buildProfileScene(*m_scene, m_profile, m_tolerances, m_datums, DisplaySettings::instance().units(), m_rowPitch_mm);
     m_dragged = nullptr;
 }
 
@@ -260,6 +262,33 @@ void ProfileView::fitPart()
     const double margin = 0.06 * std::max(bounds.width(), bounds.height());
     m_scene->setSceneRect(bounds.adjusted(-margin, -margin, margin, margin));
     fitInView(m_scene->sceneRect(), Qt::KeepAspectRatio);
+    spaceDimensionRows();
+}
+
+// Rows of length dimensions far enough apart for their labels at this zoom: the drawing is built
+// again with the pitch the labels need (at most twice: the pitch changes the fit a little), then
+// labels that still collide are moved (declutterDimensionLabels).
+void ProfileView::spaceDimensionRows()
+{
+    const double labelHeight = QFontMetricsF(font()).height();
+    for (int pass = 0; pass < 2; ++pass) {
+        const double needed = dimensionRowPitch_mm(labelHeight, transform().m11());
+        if (std::abs(needed - m_rowPitch_mm) <= 0.1 * needed)
+            break;
+        m_rowPitch_mm = needed;
+        const QString selected = m_selected;
+        redraw();
+        m_selected.clear();
+        if (!selected.isEmpty())
+            selectFeature(selected);
+        if (!m_autoFit)
+            continue; // the user's zoom stays
+        const QRectF bounds = m_scene->itemsBoundingRect();
+        const double margin = 0.06 * std::max(bounds.width(), bounds.height());
+        m_scene->setSceneRect(bounds.adjusted(-margin, -margin, margin, margin));
+        fitInView(m_scene->sceneRect(), Qt::KeepAspectRatio);
+    }
+    declutterDimensionLabels(*m_scene, viewportTransform());
 }
 
 void ProfileView::resizeEvent(QResizeEvent *event)
@@ -279,6 +308,7 @@ void ProfileView::wheelEvent(QWheelEvent *event)
     m_autoFit = false;
     const double factor = std::pow(1.2, steps);
     scale(factor, factor);
+    spaceDimensionRows();
     event->accept();
 }
 

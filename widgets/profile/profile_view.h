@@ -54,6 +54,7 @@ protected:
 
 private:
     void showVertexHandles();
+    void spaceDimensionRows();
     [[nodiscard]] QGraphicsItem *handleAt(const QPoint &viewPoint) const;
     [[nodiscard]] ProfilePoint snappedPoint(const QPoint &viewPoint, Qt::KeyboardModifiers modifiers) const;
 
@@ -67,6 +68,7 @@ private:
     QGraphicsItem *m_dragged = nullptr; // the vertex handle being dragged
     ProfilePoint m_dragTo;
     bool m_autoFit = true;
+    double m_rowPitch_mm = 0.0; // between rows of length dimensions, for their labels at this zoom
     QString m_selected;
 };
 

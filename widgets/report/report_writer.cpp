@@ -10,6 +10,7 @@
 #include "core/tooling/iso1832.h"
 #include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
+#include "widgets/profile/dimension_item.h"
 #include "widgets/profile/profile_scene.h"
 #include "widgets/report/report_layout.h"
 #include "widgets/report/setup_sheet.h"
@@ -20,6 +21,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFileInfo>
+#include <QFontMetricsF>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QPainter>
@@ -142,18 +144,26 @@ void drawing(Layout &l, const Project &p)
 {
     l.heading(Report::tr("1  Part"));
     QGraphicsScene scene;
-    buildProfileScene(scene, p.part, p.tolerances, p.datums);
     // Frames and datum boxes keep their size in points (they ignore the drawing's scale), so the
-    // drawing is fitted on the part and its dimensions, with room above for the frames.
+    // drawing is fitted on the part and its dimensions, with room above for the frames; the rows of
+    // length dimensions are spaced for their labels at that scale (built twice: the pitch changes
+    // the fit a little).
+    double scale = 1.0;
     QRectF part;
-    for (const QGraphicsItem *item : scene.items()) {
-        const QString kind = item->data(kItemKindData).toString();
-        if (kind != profile_item::kToleranceFrame && kind != profile_item::kDatum)
-            part |= item->sceneBoundingRect();
+    for (const double pitch : {0.0, 1.0}) {
+        buildProfileScene(scene, p.part, p.tolerances, p.datums, DisplayUnits(),
+                          pitch > 0.0 ? dimensionRowPitch_mm(QFontMetricsF(QFont()).height(), scale) : 0.0);
+        part = QRectF();
+        for (const QGraphicsItem *item : scene.items()) {
+            const QString kind = item->data(kItemKindData).toString();
+            if (kind != profile_item::kToleranceFrame && kind != profile_item::kDatum)
+                part |= item->sceneBoundingRect();
+        }
+        scale = std::min(kWidth / part.width(), 170.0 / part.height()); // points per mm
     }
-    const double scale = std::min(kWidth / part.width(), 170.0 / part.height()); // points per mm
-    const double frames = 110.0 / scale;                                         // 110 pt of frames
+    const double frames = 110.0 / scale; // 110 pt of frames
     const QRectF source = part.adjusted(-4, -frames, 4, 4);
+    declutterDimensionLabels(scene, QTransform::fromScale(scale, scale));
     l.block(source.height() * scale,
             [&](QPainter &painter, const QRectF &r) { scene.render(&painter, r, source, Qt::KeepAspectRatio); });
 }
