@@ -3318,6 +3318,21 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>tolturn::HelpBrowser</name>
+    <message>
+        <source>TolTurn User Guide</source>
+        <translation>TolTurn-Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>&amp;Contents</source>
+        <translation>&amp;Inhalt</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Zurück</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::ImportDialog</name>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;: a turned part %2 mm long, Ø max %3 mm, with %4 outer and %5 inner features; %6 warning(s), listed after the import.</source>
@@ -3601,6 +3616,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits for the optimiser</source>
         <translation>Kostensätze, Standzeit, Schnittbereiche der Wendeschneidplatte und Grenzwerte des Teils für die Optimierung</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>The user guide, at the page of the dock you are in (F1)</source>
+        <translation>Das Benutzerhandbuch, auf der Seite des Fensterbereichs, in dem Sie arbeiten (F1)</translation>
     </message>
 </context>
 <context>

@@ -3318,6 +3318,21 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>tolturn::HelpBrowser</name>
+    <message>
+        <source>TolTurn User Guide</source>
+        <translation>Guía del usuario de TolTurn</translation>
+    </message>
+    <message>
+        <source>&amp;Contents</source>
+        <translation>&amp;Contenido</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Atrás</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::ImportDialog</name>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;: a turned part %2 mm long, Ø max %3 mm, with %4 outer and %5 inner features; %6 warning(s), listed after the import.</source>
@@ -3601,6 +3616,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Rates, tool life, the insert&apos;s cutting ranges and the part&apos;s limits for the optimiser</source>
         <translation>Tarifas, vida de herramienta, rangos de corte de la plaquita y límites de la pieza para el optimizador</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Guía del usuario</translation>
+    </message>
+    <message>
+        <source>The user guide, at the page of the dock you are in (F1)</source>
+        <translation>La guía del usuario, en la página del panel en el que está (F1)</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,7 @@
 #include "resources/bundled.h"
 #include "widgets/common/diagnostics_panel.h"
 #include "widgets/dialogs/about_dialog.h"
+#include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/profile/feature_panel.h"
@@ -283,9 +284,32 @@ void MainWindow::createFileMenu()
     connect(quit, &QAction::triggered, this, &QWidget::close);
 }
 
+// The guide's page for where the focus is: the dock that holds it, or the drawing.
+void MainWindow::showUserGuide()
+{
+    QString place;
+    for (QWidget *w = QApplication::focusWidget(); w != nullptr; w = w->parentWidget()) {
+        if (qobject_cast<QDockWidget *>(w) != nullptr || w == m_profileView) {
+            place = w->objectName();
+            break;
+        }
+    }
+    if (m_help == nullptr)
+        m_help = new HelpBrowser(this);
+    m_help->showPage(HelpBrowser::pageForDock(place));
+    m_help->show();
+    m_help->raise();
+}
+
 void MainWindow::createHelpMenu()
 {
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *guide = help->addAction(tr("&User Guide"));
+    guide->setObjectName(QStringLiteral("userGuideAction"));
+    guide->setShortcut(QKeySequence::HelpContents);
+    guide->setToolTip(tr("The user guide, at the page of the dock you are in (F1)"));
+    connect(guide, &QAction::triggered, this, [this] { showUserGuide(); });
+    help->addSeparator();
     QAction *about = help->addAction(tr("&About TolTurn"));
     about->setMenuRole(QAction::AboutRole);
     connect(about, &QAction::triggered, this, [this] {

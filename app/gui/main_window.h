@@ -19,6 +19,7 @@ class DeflectionPanel;
 class DiagnosticsPanel;
 class Autosave;
 class FeaturePanel;
+class HelpBrowser;
 class PlanningPanel;
 class SetupPanel;
 class TolerancePanel;
@@ -87,6 +88,7 @@ private:
     void createFileMenu();
     void createEditMenu();
     void createHelpMenu();
+    void showUserGuide();
     void createDocks();
     void createImportDock();
     void showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics);
@@ -111,6 +113,7 @@ private:
     QMenu *m_recentMenu = nullptr;
     QToolBar *m_toolBar = nullptr;
     QLabel *m_summary;
+    HelpBrowser *m_help = nullptr;
     QAction *m_saveAction = nullptr;
     QAction *m_exportReportAction = nullptr;
     QAction *m_saveAsAction = nullptr;

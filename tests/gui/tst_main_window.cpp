@@ -10,6 +10,7 @@
 #include "core/project/project_validation.h"
 #include "resources/bundled.h"
 #include "widgets/dialogs/about_dialog.h"
+#include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/plot/line_plot.h"
@@ -21,6 +22,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
 #include <QGraphicsItem>
@@ -180,6 +182,39 @@ private Q_SLOTS:
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
         QCOMPARE(w.findChild<PlanningPanel *>()->planText(), PlanningPanel::notRunText());
         QVERIFY(PlanningPanel::notRunText().contains(QStringLiteral("F5")));
+    }
+
+    // F1 opens the user guide shipped in the program at the page of the dock with the focus; every
+    // dock has its page, and every link of the guide leads to a page of it.
+    void userGuideOpensAtTheDockInUse()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        auto *planning = w.findChild<QDockWidget *>(QStringLiteral("planningDock"));
+        planning->raise();
+        planning->widget()->findChild<QPushButton *>()->setFocus();
+        QApplication::setActiveWindow(&w);
+        w.findChild<QAction *>(QStringLiteral("userGuideAction"))->trigger();
+        auto *guide = w.findChild<HelpBrowser *>(QStringLiteral("helpBrowser"));
+        QVERIFY(guide && guide->isVisible());
+        QCOMPARE(guide->currentPage(), QStringLiteral("planning.html"));
+        QVERIFY(guide->pageText().contains(QStringLiteral("Cutting Window")));
+        for (QDockWidget *dock : w.findChildren<QDockWidget *>())
+            QVERIFY2(HelpBrowser::pageForDock(dock->objectName()) != QStringLiteral("index.html"),
+                     qPrintable(dock->objectName()));
+        static const QRegularExpression link(QStringLiteral("href=\"([^\"#]+)\""));
+        for (const QString &page : HelpBrowser::pages()) {
+            QFile file(QStringLiteral(":/help/") + page);
+            QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(page));
+            const QString html = QString::fromUtf8(file.readAll());
+            auto it = link.globalMatch(html);
+            while (it.hasNext()) {
+                const QString target = it.next().captured(1);
+                QVERIFY2(QFile::exists(QStringLiteral(":/help/") + target),
+                         qPrintable(page + QStringLiteral(" -> ") + target));
+            }
+        }
     }
 
     void opensExampleAndDrawsProfile()

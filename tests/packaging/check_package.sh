@@ -18,7 +18,9 @@ for path in ./usr/bin/tolturn ./usr/bin/tolturn-cli \
     ./usr/share/icons/hicolor/scalable/apps/org.tolturn.TolTurn.svg \
     ./usr/share/metainfo/org.tolturn.TolTurn.metainfo.xml \
     ./usr/share/mime/packages/tolturn.xml \
-    ./usr/share/tolturn/examples/stepped-shaft-chuck.tolturn; do
+    ./usr/share/tolturn/examples/stepped-shaft-chuck.tolturn \
+    ./usr/share/doc/tolturn/user-guide/index.html \
+    ./usr/share/doc/tolturn/user-guide/planning.html; do
     if ! grep -q " $path\$" "$out/contents"; then
         echo "missing from package: $path"
         status=1
