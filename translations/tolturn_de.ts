@@ -2229,6 +2229,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The programmed finishing pass (f %1 mm/rev, vc %2 m/min) lies outside this window.</source>
         <translation>Der programmierte Schlichtschnitt (f %1 mm/U, vc %2 m/min) liegt außerhalb dieses Fensters.</translation>
     </message>
+    <message>
+        <source> (Valiño et al. 2008, %1)</source>
+        <translation> (Valiño et al. 2008, %1)</translation>
+    </message>
+    <message>
+        <source>size within %1–%2 mm</source>
+        <translation>Maß zwischen %1 und %2 mm</translation>
+    </message>
+    <message>
+        <source>; predicted %1–%2 mm</source>
+        <translation>; vorhergesagt %1–%2 mm</translation>
+    </message>
+    <message>
+        <source>%1 of %2 µm predicted against a zone of %3 µm</source>
+        <translation>%1 von %2 µm vorhergesagt, bei einer Toleranzzone von %3 µm</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>

@@ -2229,6 +2229,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The programmed finishing pass (f %1 mm/rev, vc %2 m/min) lies outside this window.</source>
         <translation>La pasada de acabado programada (f %1 mm/rev, vc %2 m/min) queda fuera de esta ventana.</translation>
     </message>
+    <message>
+        <source> (Valiño et al. 2008, %1)</source>
+        <translation> (Valiño et al. 2008, %1)</translation>
+    </message>
+    <message>
+        <source>size within %1–%2 mm</source>
+        <translation>medida entre %1 y %2 mm</translation>
+    </message>
+    <message>
+        <source>; predicted %1–%2 mm</source>
+        <translation>; prevista %1–%2 mm</translation>
+    </message>
+    <message>
+        <source>%1 of %2 µm predicted against a zone of %3 µm</source>
+        <translation>%1 de %2 µm prevista frente a una zona de %3 µm</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>

@@ -113,12 +113,15 @@ private Q_SLOTS:
         const QStringList t1 = tableRow(tolerances, QStringLiteral("T1"));
         QVERIFY2(t1.size() >= 8, qPrintable(t1.join(QLatin1Char('|'))));
         QCOMPARE(t1.at(3), QStringLiteral("h6"));
-        QCOMPARE(t1.at(5), QStringLiteral("16.000"));
+        QCOMPARE(t1.at(5), QStringLiteral("16.0")); // micrometres to 0.1 µm
+        // Below the table, the condition in words: h6 on Ø50 is 49.984–50.000 mm (es = 0, ei = -16 µm).
+        QVERIFY(tolerances.contains(QStringLiteral("T1: size within 49.984–50.000 mm")));
+        QVERIFY(!tolerances.contains(QStringLiteral("D'_Md")));
         QVERIFY(t1.at(7).startsWith(QStringLiteral("passes")));
         // T5 perpendicularity 15 µm to datum A: the limit is the tolerance value itself.
         const QStringList t5 = tableRow(tolerances, QStringLiteral("T5"));
         QVERIFY2(t5.size() >= 6, qPrintable(t5.join(QLatin1Char('|'))));
-        QCOMPARE(t5.at(5), QStringLiteral("15.000"));
+        QCOMPARE(t5.at(5), QStringLiteral("15.0"));
     }
 
     void badProjectWritesNothing()

@@ -133,6 +133,12 @@ private Q_SLOTS:
         QVERIFY(
             model->index(0, ToleranceVerdictModel::Utilisation).data(ToleranceVerdictModel::UtilisationRole).isValid());
         QVERIFY(w.fileController()->openFile(example("long-shaft-centres.tolturn"))); // model reset under the tester
+        // Centres with no published range: the range column has no colour of its own (an invalid
+        // colour would be painted black, hiding the text).
+        for (int row = 0; row < model->rowCount(); ++row) {
+            const QVariant background = model->index(row, ToleranceVerdictModel::RangeColumn).data(Qt::BackgroundRole);
+            QVERIFY(!background.isValid() || background.value<QColor>().isValid());
+        }
         QCOMPARE(model->rowCount(), 6);
     }
 

@@ -241,6 +241,32 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const
     }
 }
 
+// What a tolerance's verdict checked, in a machinist's words ("size within 41.975–42.000 mm"),
+// with the condition of Valiño et al. (2008) it comes from in brackets.
+QString conditionInWords(const ToleranceEvaluation &e)
+{
+    const QString source = e.condition.section(QLatin1Char(':'), 0, 0).trimmed();
+    const QString from = source.isEmpty() ? QString()
+                         : source.startsWith(QLatin1String("Fig."))
+                             ? Report::tr(" (Valiño et al. 2008, %1)").arg(source)
+                             : QStringLiteral(" (%1)").arg(source);
+    const auto mm = [](double v) { return QString::number(v, 'f', 3); };
+    if (e.nominal_mm && e.upper_um && e.lower_um) {
+        QString text = Report::tr("size within %1–%2 mm")
+                           .arg(mm(*e.nominal_mm + 1e-3 * *e.lower_um), mm(*e.nominal_mm + 1e-3 * *e.upper_um));
+        if (e.predictedMin_um && e.predictedMax_um)
+            text +=
+                Report::tr("; predicted %1–%2 mm")
+                    .arg(mm(*e.nominal_mm + 1e-3 * *e.predictedMin_um), mm(*e.nominal_mm + 1e-3 * *e.predictedMax_um));
+        return text + from;
+    }
+    if (e.value_um && e.limit_um)
+        return Report::tr("%1 of %2 µm predicted against a zone of %3 µm")
+                   .arg(displayName(e.type), num(*e.value_um, 1), num(*e.limit_um, 1)) +
+               from;
+    return {};
+}
+
 void verdicts(Layout &l, const Project &p, const std::vector<ToleranceEvaluation> &v)
 {
     l.heading(Report::tr("4  Tolerances"));
@@ -255,8 +281,8 @@ void verdicts(Layout &l, const Project &p, const std::vector<ToleranceEvaluation
         const ToleranceEvaluation &e = v[i];
         rows.push_back({e.toleranceId, displayName(e.type), e.featureId,
                         ToleranceVerdictModel::specification(p.tolerances[i]),
-                        e.value_um ? num(*e.value_um, 3) : QStringLiteral("—"),
-                        e.limit_um ? num(*e.limit_um, 3) : QStringLiteral("—"),
+                        e.value_um ? num(*e.value_um, 1) : QStringLiteral("—"),
+                        e.limit_um ? num(*e.limit_um, 1) : QStringLiteral("—"),
                         e.utilisation_pct ? num(*e.utilisation_pct, 1) + QStringLiteral(" %") : QStringLiteral("—"),
                         verdictName(e.verdict)});
     }
@@ -265,8 +291,9 @@ void verdicts(Layout &l, const Project &p, const std::vector<ToleranceEvaluation
                            : QColor();
     });
     for (const ToleranceEvaluation &e : v) {
-        if (!e.condition.isEmpty() || !e.reason.isEmpty())
-            l.paragraph(QStringLiteral("%1: %2 %3").arg(e.toleranceId, e.condition, e.reason), 8.0);
+        const QString words = conditionInWords(e);
+        if (!words.isEmpty() || !e.reason.isEmpty())
+            l.paragraph(QStringLiteral("%1: %2 %3").arg(e.toleranceId, words, e.reason).trimmed(), 8.0);
     }
 }
 

@@ -123,8 +123,10 @@ QVariant ToleranceVerdictModel::data(const QModelIndex &index, int role) const
     case Qt::BackgroundRole:
         if (index.column() == VerdictColumn)
             return verdictColor(e.verdict);
-        if (index.column() == RangeColumn)
-            return rangeVerdictColor(r);
+        if (index.column() == RangeColumn) {
+            const QColor c = rangeVerdictColor(r);
+            return c.isValid() ? QVariant(c) : QVariant(); // an invalid colour would paint the cell black
+        }
         return {};
     case Qt::TextAlignmentRole:
         return index.column() >= Value && index.column() <= Utilisation
