@@ -75,14 +75,16 @@ bool MapPlot::addMarker(double x, double y, const QString &text, Marker kind)
     const QCPRange yr = m_plot->yAxis->range();
     if (!xr.contains(x) || !yr.contains(y))
         return false;
-    QCPGraph *point = m_plot->addGraph();
-    point->setLineStyle(QCPGraph::lsNone);
-    point->setScatterStyle(
-        kind == Marker::Optimum
-            ? QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 2.0), Qt::white, 14)
-            : QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(0x80, 0x00, 0x26), 2.5), Qt::NoBrush, 12));
-    point->setData({x}, {y});
+    // The symbol is an item, not a graph, so that a point on the window's edge is drawn whole.
+    auto *symbol = new QCPItemText(m_plot);
+    symbol->position->setCoords(x, y);
+    symbol->setPositionAlignment(Qt::AlignCenter);
+    symbol->setClipToAxisRect(false);
+    symbol->setText(kind == Marker::Optimum ? QStringLiteral("\u2605") : QStringLiteral("\u25ef"));
+    symbol->setColor(kind == Marker::Optimum ? QColor(Qt::black) : QColor(0x80, 0x00, 0x26));
+    symbol->setFont(QFont(font().family(), font().pointSize() + 5, QFont::Bold));
     auto *label = new QCPItemText(m_plot);
+    label->setClipToAxisRect(false);
     label->position->setCoords(x, y);
     // Beside the point, on the side towards the middle of the map so that it is not clipped.
     label->setPositionAlignment((x > xr.center() ? Qt::AlignRight : Qt::AlignLeft) |
