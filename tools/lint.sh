@@ -1,15 +1,14 @@
-#!/ bin / sh
-#SPDX - License - Identifier : GPL - 3.0 - or -later
-#tools / lint.sh format check that every C++ file follows.clang - format
-#tools / lint.sh fix reformat every C++ file with.clang - format
-#tools / lint.sh tidy BUILD_DIR run.clang - tidy over every C++ source, with BUILD_DIR's
-#compile_commands.json(two files at a time)
-
-set - eu cd "$(dirname " $0 ")/.." sources()
-{
-    find core widgets app resources translations tests benchmarks - name '*.cpp' "$@" | sort
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# tools/lint.sh format          check that every C++ file follows .clang-format
+# tools/lint.sh fix             reformat every C++ file with .clang-format
+# tools/lint.sh tidy BUILD_DIR  run .clang-tidy over every C++ source, with BUILD_DIR's
+#                               compile_commands.json (two files at a time)
+set -eu
+cd "$(dirname "$0")/.."
+sources() {
+    find core widgets app resources translations tests benchmarks -name '*.cpp' "$@" | sort
 }
-
 case "${1:-}" in
 format)
     sources -o -name '*.h' | xargs clang-format --dry-run -Werror
@@ -20,17 +19,14 @@ fix)
     echo "fix: every file reformatted"
     ;;
 tidy)
-    build_dir=${2:
-? usage : tools / lint.sh tidy BUILD_DIR
-}
-#Compiler warnings are the compiler's business (CI builds with -Werror); only the
-#clang - tidy checks are judged here.
-sources | xargs - P2 - n4 clang - tidy - p "$build_dir" --quiet-- extra - arg =
-    -Wno - everything echo "tidy: no findings";
-;
+    build_dir=${2:?usage: tools/lint.sh tidy BUILD_DIR}
+    # Compiler warnings are the compiler's business (CI builds with -Werror); only the
+    # clang-tidy checks are judged here.
+    sources | xargs -P2 -n4 clang-tidy -p "$build_dir" --quiet --extra-arg=-Wno-everything
+    echo "tidy: no findings"
+    ;;
 *)
     echo "usage: tools/lint.sh format | fix | tidy BUILD_DIR" >&2
     exit 2
-    ;
-;
+    ;;
 esac
