@@ -63,6 +63,21 @@ QString writeOutput(const QString &path, const QByteArray &data, QTextStream &ou
     return {};
 }
 
+int parseNamedCommand(QCommandLineParser &parser, const QString &name, const QStringList &args, QTextStream &out,
+                      QTextStream &err)
+{
+    const CommandHelp help = commandHelp(name);
+    return parseCommand(parser, name, help.synopsis, help.summary, args, out, err);
+}
+
+QString oneProjectFile(const QCommandLineParser &parser, const QString &command, QTextStream &err)
+{
+    if (parser.positionalArguments().size() == 1)
+        return parser.positionalArguments().constFirst();
+    err << programName() << ' ' << command << ": " << CommandLine::tr("give exactly one project file") << '\n';
+    return {};
+}
+
 QJsonObject diagnosticJson(const Diagnostic &d)
 {
     return {{QStringLiteral("severity"),

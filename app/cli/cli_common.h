@@ -24,6 +24,13 @@ namespace tolturn {
 [[nodiscard]] int parseCommand(QCommandLineParser &parser, const QString &name, const QString &synopsis,
                                const QString &summary, const QStringList &args, QTextStream &out, QTextStream &err);
 
+// parseCommand for a command of tolturn-cli's table, with its synopsis and summary.
+[[nodiscard]] int parseNamedCommand(QCommandLineParser &parser, const QString &name, const QStringList &args,
+                                    QTextStream &out, QTextStream &err);
+
+// The project file of a command that takes exactly one; empty after printing the usage error.
+[[nodiscard]] QString oneProjectFile(const QCommandLineParser &parser, const QString &command, QTextStream &err);
+
 // The forces of --load: "Fr,Ft,Fa" in newtons (radial, tangential, axial); nullopt if malformed.
 [[nodiscard]] std::optional<CuttingForces> parseLoad(const QString &text);
 

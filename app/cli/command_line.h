@@ -14,6 +14,14 @@ enum CliExit : int {
     kExitUsage = 2,    // the command line itself is wrong
 };
 
+// The synopsis and one-line summary of a command of the table (for its --help).
+struct CommandHelp {
+    QString synopsis;
+    QString summary;
+};
+
+[[nodiscard]] CommandHelp commandHelp(const QString &name);
+
 // Runs tolturn-cli with `arguments` (arguments[0] is the program name). Results go to `out`,
 // messages and problems to `err`. Needs a QCoreApplication.
 int runCommandLine(const QStringList &arguments, QTextStream &out, QTextStream &err);

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/check_command.h"
+
+#include "app/cli/cli_common.h"
+#include "app/cli/command_line.h"
+#include "core/common/library_info.h"
+#include "core/deviation/deviation_model.h"
+#include "core/io/force_measurements.h"
+#include "core/io/project_file.h"
+#include "core/planning/clamping_advisor.h"
+#include "core/planning/cutting_window.h"
+#include "core/planning/optimiser.h"
+#include "core/planning/plausibility.h"
+#include "core/project/keywords.h"
+#include "core/tolerance/evaluation.h"
+#include "core/tolerance/iso286.h"
+#include "core/tolerance/range_verdicts.h"
+#include "widgets/dialogs/about_dialog.h"
+#include "widgets/report/report_writer.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+namespace {
+
+struct CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
+
+QString projectSummary(const Project &p)
+{
+    return CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances")
+        .arg(p.part.name)
+        .arg(p.part.length_mm())
+        .arg(p.part.outer.segments.size())
+        .arg(p.part.inner.segments.size())
+        .arg(keyword(p.clamping.method))
+        .arg(p.passes.size())
+        .arg(p.tolerances.size());
+}
+
+} // namespace
+
+int runCheck(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"),
+                                  CommandLine::tr("Print the findings as JSON on standard output."));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project files to check."),
+                                 QStringLiteral("PROJECT..."));
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("check"), args, out, err); stop >= 0)
+        return stop;
+    const QStringList files = parser.positionalArguments();
+    if (files.isEmpty()) {
+        err << programName() << " check: " << CommandLine::tr("no project file given") << '\n';
+        return kExitUsage;
+    }
+    bool anyErrors = false;
+    QJsonArray reports;
+    for (const QString &file : files) {
+        ProjectParseResult result = readProjectFile(file);
+        if (result.project) {
+            // What the project asks of the data library and the machine (docs/planning.md).
+            const Diagnostics plausibility = checkPlausibility(*result.project, DataLibrary::builtIn());
+            result.diagnostics.insert(result.diagnostics.end(), plausibility.begin(), plausibility.end());
+        }
+        const bool valid = result.project.has_value() && !hasErrors(result.diagnostics);
+        anyErrors = anyErrors || !valid;
+        if (parser.isSet(json)) {
+            QJsonArray list;
+            for (const Diagnostic &d : result.diagnostics)
+                list.append(diagnosticJson(d));
+            reports.append(QJsonObject{{QStringLiteral("file"), file},
+                                       {QStringLiteral("valid"), valid},
+                                       {QStringLiteral("diagnostics"), list}});
+            continue;
+        }
+        for (const Diagnostic &d : result.diagnostics)
+            err << file << ": " << d.toString() << '\n';
+        if (valid)
+            out << file << ": " << CommandLine::tr("ok") << " — " << projectSummary(*result.project) << '\n';
+    }
+    if (parser.isSet(json))
+        out << QJsonDocument(reports).toJson(QJsonDocument::Indented);
+    return anyErrors ? kExitProblems : kExitOk;
+}
+
+} // namespace tolturn

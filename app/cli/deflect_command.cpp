@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/deflect_command.h"
+
+#include "app/cli/cli_common.h"
+#include "app/cli/command_line.h"
+#include "core/common/library_info.h"
+#include "core/deviation/deviation_model.h"
+#include "core/io/force_measurements.h"
+#include "core/io/project_file.h"
+#include "core/planning/clamping_advisor.h"
+#include "core/planning/cutting_window.h"
+#include "core/planning/optimiser.h"
+#include "core/planning/plausibility.h"
+#include "core/project/keywords.h"
+#include "core/tolerance/evaluation.h"
+#include "core/tolerance/iso286.h"
+#include "core/tolerance/range_verdicts.h"
+#include "widgets/dialogs/about_dialog.h"
+#include "widgets/report/report_writer.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+namespace {
+
+struct CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
+
+constexpr double kUmPerMm = 1000.0;
+
+QJsonObject contributionsJson(const Contributions &c, bool radial)
+{
+    QJsonObject o{{QStringLiteral("total"), c.total_mm() * kUmPerMm},
+                  {QStringLiteral("spindle_chuck"), c.spindleChuck_mm * kUmPerMm},
+                  {QStringLiteral("workpiece"), c.workpiece_mm * kUmPerMm}};
+    if (radial) {
+        o.insert(QStringLiteral("toolpost"), c.toolpost_mm * kUmPerMm);
+        o.insert(QStringLiteral("thermal"), c.thermal_mm * kUmPerMm);
+    }
+    return o;
+}
+
+QJsonObject stationJson(const Station &st)
+{
+    return {{QStringLiteral("z_mm"), st.z_mm},
+            {QStringLiteral("nominal_diameter_mm"), 2.0 * st.nominalRadius_mm},
+            {QStringLiteral("spindle_speed_rpm"), st.spindleSpeed_rpm},
+            {QStringLiteral("radial_um"), contributionsJson(st.radial, true)},
+            {QStringLiteral("tangential_um"), contributionsJson(st.tangential, false)},
+            {QStringLiteral("radius_error_um"), st.radiusError_mm * kUmPerMm},
+            {QStringLiteral("diameter_error_um"), 2.0 * st.radiusError_mm * kUmPerMm},
+            {QStringLiteral("section_rotation_urad"), st.sectionRotation_rad * 1e6}};
+}
+
+QJsonObject deviationJson(const QString &file, const Project &project, const DeviationResult &r)
+{
+    const TurningInputs &in = *r.inputs;
+    QJsonArray features;
+    for (const FeatureDeviation &f : r.features) {
+        QJsonArray stations;
+        for (const Station &st : f.stations)
+            stations.append(stationJson(st));
+        features.append(QJsonObject{{QStringLiteral("id"), f.featureId},
+                                    {QStringLiteral("side"), contourName(f.side)},
+                                    {QStringLiteral("type"), keyword(f.kind)},
+                                    {QStringLiteral("stations"), stations}});
+    }
+    QJsonArray faces;
+    for (const FaceConicity &f : r.faces)
+        faces.append(QJsonObject{{QStringLiteral("id"), f.featureId},
+                                 {QStringLiteral("side"), contourName(f.side)},
+                                 {QStringLiteral("z_mm"), f.z_mm},
+                                 {QStringLiteral("tan_theta"), f.tanTheta},
+                                 {QStringLiteral("axial_runout_um"), f.axialRunout_mm * kUmPerMm}});
+    QJsonArray warnings;
+    for (const Diagnostic &d : r.diagnostics)
+        warnings.append(diagnosticJson(d));
+    return {{QStringLiteral("file"), file},
+            {QStringLiteral("material"), project.materialId},
+            {QStringLiteral("clamping"), keyword(project.clamping.method)},
+            {QStringLiteral("force_model"), in.forceModel},
+            {QStringLiteral("pass"), QJsonObject{{QStringLiteral("index"), in.passIndex},
+                                                 {QStringLiteral("kind"), keyword(in.pass.kind)},
+                                                 {QStringLiteral("cutting_speed_m_min"), in.pass.cuttingSpeed_m_min},
+                                                 {QStringLiteral("feed_mm_rev"), in.pass.feed_mm_rev},
+                                                 {QStringLiteral("depth_of_cut_mm"), in.pass.depthOfCut_mm}}},
+            {QStringLiteral("forces_N"), QJsonObject{{QStringLiteral("tangential"), in.forces.tangential_N},
+                                                     {QStringLiteral("axial"), in.forces.axial_N},
+                                                     {QStringLiteral("radial"), in.forces.radial_N}}},
+            {QStringLiteral("max_power_kW"), r.maxPower_kW},
+            {QStringLiteral("max_torque_Nm"), r.maxTorque_Nm},
+            {QStringLiteral("theoretical_Ra_um"), r.theoreticalRa_um},
+            {QStringLiteral("theoretical_Rz_um"), r.theoreticalRz_um},
+            {QStringLiteral("notes"), QJsonArray::fromStringList(in.notes)},
+            {QStringLiteral("warnings"), warnings},
+            {QStringLiteral("features"), features},
+            {QStringLiteral("faces"), faces}};
+}
+
+void printDeviationText(QTextStream &out, const DeviationResult &r)
+{
+    const TurningInputs &in = *r.inputs;
+    out << CommandLine::tr("Forces (%1): Fc = %2 N tangential, Ff = %3 N axial, Fp = %4 N radial")
+               .arg(forceModelName(in.forceModel), QString::number(in.forces.tangential_N, 'f', 1),
+                    QString::number(in.forces.axial_N, 'f', 1), QString::number(in.forces.radial_N, 'f', 1))
+        << '\n';
+    out << CommandLine::tr("Pass %1 (%2): vc %3 m/min, f %4 mm/rev, ap %5 mm; Ra %6 µm, Rz %7 µm; max %8 kW, %9 N·m")
+               .arg(in.passIndex + 1)
+               .arg(keyword(in.pass.kind), formatNumber(in.pass.cuttingSpeed_m_min), formatNumber(in.pass.feed_mm_rev),
+                    formatNumber(in.pass.depthOfCut_mm), QString::number(r.theoreticalRa_um, 'f', 2),
+                    QString::number(r.theoreticalRz_um, 'f', 2), QString::number(r.maxPower_kW, 'f', 2),
+                    QString::number(r.maxTorque_Nm, 'f', 1))
+        << '\n';
+    for (const QString &note : in.notes)
+        out << CommandLine::tr("note: ") << note << '\n';
+    out << CommandLine::tr(
+               "feature  side   z from–to [mm]    radial deviation [µm] min … max   diameter error [µm] min … max")
+        << '\n';
+    for (const FeatureDeviation &f : r.features) {
+        double rMin = 1e300, rMax = -1e300, dMin = 1e300, dMax = -1e300;
+        for (const Station &st : f.stations) {
+            rMin = std::min(rMin, st.radial.total_mm());
+            rMax = std::max(rMax, st.radial.total_mm());
+            dMin = std::min(dMin, 2.0 * st.radiusError_mm);
+            dMax = std::max(dMax, 2.0 * st.radiusError_mm);
+        }
+        out << QStringLiteral("%1 %2 %3–%4   %5 … %6   %7 … %8")
+                   .arg(f.featureId, -8)
+                   .arg(contourName(f.side), -6)
+                   .arg(f.stations.front().z_mm, 7, 'f', 1)
+                   .arg(f.stations.back().z_mm, -7, 'f', 1)
+                   .arg(rMin * kUmPerMm, 10, 'f', 2)
+                   .arg(rMax * kUmPerMm, -10, 'f', 2)
+                   .arg(dMin * kUmPerMm, 10, 'f', 2)
+                   .arg(dMax * kUmPerMm, -10, 'f', 2)
+            << '\n';
+    }
+    for (const FaceConicity &f : r.faces)
+        out << CommandLine::tr("face %1 at z = %2 mm: tan(theta) = %3, axial run-out e = %4 µm")
+                   .arg(f.featureId, formatNumber(f.z_mm), QString::number(f.tanTheta, 'g', 4),
+                        QString::number(f.axialRunout_mm * kUmPerMm, 'f', 3))
+            << '\n';
+}
+
+} // namespace
+
+int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the result as JSON."));
+    const QCommandLineOption load(
+        QStringLiteral("load"),
+        CommandLine::tr("Use these forces [N] instead of the force model: radial, tangential, axial."),
+        QStringLiteral("Fr,Ft,Fa"));
+    const QCommandLineOption workpieceOnly(
+        QStringLiteral("workpiece-only"),
+        CommandLine::tr("Rigid machine supports, no toolpost or thermal term: the beam alone."));
+    const QCommandLineOption stations(QStringLiteral("stations"),
+                                      CommandLine::tr("Tool positions per turned feature (default 21)."),
+                                      QStringLiteral("N"), QStringLiteral("21"));
+    const QCommandLineOption pass(QStringLiteral("pass"),
+                                  CommandLine::tr("Index of the pass (default: the last finishing pass)."),
+                                  QStringLiteral("N"));
+    const QCommandLineOption noInProcess(QStringLiteral("no-in-process"),
+                                         CommandLine::tr("Ignore the stock still on the uncut side of the tool."));
+    parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess});
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("deflect"), args, out, err); stop >= 0)
+        return stop;
+    const QString file = oneProjectFile(parser, QStringLiteral("deflect"), err);
+    if (file.isEmpty())
+        return kExitUsage;
+    DeviationOptions options;
+    options.workpieceOnly = parser.isSet(workpieceOnly);
+    options.inProcessSection = !parser.isSet(noInProcess);
+    bool ok = true;
+    options.stationsPerFeature = parser.value(stations).toInt(&ok);
+    if (!ok || options.stationsPerFeature < 2 || options.stationsPerFeature > 100000) {
+        err << programName() << " deflect: "
+            << CommandLine::tr("--stations must be a whole number from 2 to 100000, not \"%1\"")
+                   .arg(parser.value(stations))
+            << '\n';
+        return kExitUsage;
+    }
+    if (parser.isSet(pass)) {
+        options.passIndex = parser.value(pass).toInt(&ok);
+        if (!ok || options.passIndex < 0) {
+            err << programName() << " deflect: "
+                << CommandLine::tr("--pass must be a pass index (0, 1, …), not \"%1\"").arg(parser.value(pass)) << '\n';
+            return kExitUsage;
+        }
+    }
+    if (parser.isSet(load)) {
+        options.loadOverride = parseLoad(parser.value(load));
+        if (!options.loadOverride) {
+            err << programName() << " deflect: "
+                << CommandLine::tr(
+                       "--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), not \"%1\"")
+                       .arg(parser.value(load))
+                << '\n';
+            return kExitUsage;
+        }
+    }
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
+        return kExitProblems;
+    const DeviationResult result = computeDeviation(*project, DataLibrary::builtIn(), options);
+    for (const Diagnostic &d : result.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!result.inputs)
+        return kExitProblems;
+    if (parser.isSet(json))
+        out << QJsonDocument(deviationJson(file, *project, result)).toJson(QJsonDocument::Indented);
+    else
+        printDeviationText(out, result);
+    return kExitOk;
+}
+
+} // namespace tolturn

@@ -1,0 +1,330 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/planning_commands.h"
+
+#include "app/cli/cli_common.h"
+#include "app/cli/command_line.h"
+#include "core/common/library_info.h"
+#include "core/deviation/deviation_model.h"
+#include "core/io/force_measurements.h"
+#include "core/io/project_file.h"
+#include "core/planning/clamping_advisor.h"
+#include "core/planning/cutting_window.h"
+#include "core/planning/optimiser.h"
+#include "core/planning/plausibility.h"
+#include "core/project/keywords.h"
+#include "core/tolerance/evaluation.h"
+#include "core/tolerance/iso286.h"
+#include "core/tolerance/range_verdicts.h"
+#include "widgets/dialogs/about_dialog.h"
+#include "widgets/report/report_writer.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+namespace {
+
+struct CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
+
+QJsonObject passJson(const PassConditions &p)
+{
+    return {{QStringLiteral("cutting_speed_m_min"), p.cuttingSpeed_m_min},
+            {QStringLiteral("feed_mm_rev"), p.feed_mm_rev},
+            {QStringLiteral("depth_of_cut_mm"), p.depthOfCut_mm}};
+}
+
+QJsonArray constraintsJson(const std::vector<ConstraintValue> &list)
+{
+    QJsonArray out;
+    for (const ConstraintValue &c : list)
+        out.append(QJsonObject{{QStringLiteral("name"), c.name},
+                               {QStringLiteral("subject"), c.subject},
+                               {QStringLiteral("value"), c.value},
+                               {QStringLiteral("limit"), c.limit},
+                               {QStringLiteral("unit"), c.unit},
+                               {QStringLiteral("violation_pct"), 100.0 * c.violation()}});
+    return out;
+}
+
+QString constraintText(const ConstraintValue &c)
+{
+    return QStringLiteral("%1: %2 of %3 %4 (%5 %)")
+        .arg(c.label(), QString::number(c.value, 'g', 4), QString::number(c.limit, 'g', 4), c.unit,
+             QString::number(100.0 * (c.value / c.limit), 'f', 1));
+}
+
+PassConditions roughingOf(const PlanResult &r, const PlanningProblem &problem)
+{
+    PassConditions p = r.candidate.roughing;
+    if (r.candidate.roughingPasses > 0)
+        p.depthOfCut_mm = (problem.radialStock_mm() - r.candidate.finishing.depthOfCut_mm) / r.candidate.roughingPasses;
+    return p;
+}
+
+QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
+{
+    const CandidateEvaluation &e = r.evaluation;
+    return {{QStringLiteral("feasible"), r.feasible},
+            {QStringLiteral("objective"), keyword(problem.project().planning.objective)},
+            {QStringLiteral("objective_value"), e.objective},
+            {QStringLiteral("time_min"), e.time_min},
+            {QStringLiteral("cost"), e.cost},
+            {QStringLiteral("finishing_time_min"), e.finishingTime_min},
+            {QStringLiteral("roughing_time_min"), e.roughingTime_min},
+            {QStringLiteral("tool_edges_per_part"), e.toolEdgesPerPart},
+            {QStringLiteral("finishing"), passJson(r.candidate.finishing)},
+            {QStringLiteral("roughing"), QJsonObject{{QStringLiteral("passes"), r.candidate.roughingPasses},
+                                                     {QStringLiteral("pass"), passJson(roughingOf(r, problem))}}},
+            {QStringLiteral("constraints"), constraintsJson(e.constraints)},
+            {QStringLiteral("binding"), constraintsJson(r.binding)},
+            {QStringLiteral("conflicts"), constraintsJson(r.conflicts)},
+            {QStringLiteral("evaluations"), r.evaluations},
+            {QStringLiteral("notes"), QJsonArray::fromStringList(r.notes)}};
+}
+
+void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &problem)
+{
+    const CandidateEvaluation &e = r.evaluation;
+    const PassConditions rough = roughingOf(r, problem);
+    out << (r.feasible ? CommandLine::tr("Optimum (%1)").arg(keyword(problem.project().planning.objective))
+                       : CommandLine::tr("No plan meets every constraint; the one that violates them least"))
+        << '\n';
+    out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part")
+               .arg(QString::number(e.time_min, 'f', 3), QString::number(e.finishingTime_min, 'f', 3),
+                    QString::number(e.roughingTime_min, 'f', 3), QString::number(e.cost, 'f', 2),
+                    QString::number(e.toolEdgesPerPart, 'f', 3))
+        << '\n';
+    out << CommandLine::tr("  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
+               .arg(QString::number(r.candidate.finishing.cuttingSpeed_m_min, 'f', 1),
+                    QString::number(r.candidate.finishing.feed_mm_rev, 'f', 3),
+                    QString::number(r.candidate.finishing.depthOfCut_mm, 'f', 3))
+        << '\n';
+    if (r.candidate.roughingPasses > 0)
+        out << CommandLine::tr("  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev")
+                   .arg(r.candidate.roughingPasses)
+                   .arg(QString::number(rough.depthOfCut_mm, 'f', 3), QString::number(rough.cuttingSpeed_m_min, 'f', 1),
+                        QString::number(rough.feed_mm_rev, 'f', 3))
+            << '\n';
+    for (const ConstraintValue &c : r.binding)
+        out << CommandLine::tr("  binding: ") << constraintText(c) << '\n';
+    for (const ConstraintValue &c : r.conflicts)
+        out << CommandLine::tr("  violated: ") << constraintText(c) << '\n';
+    for (const QString &note : r.notes)
+        out << CommandLine::tr("note: ") << note << '\n';
+}
+
+// Loads a project and builds its planning problem; prints problems and returns null on failure.
+std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, QTextStream &err,
+                                                           std::optional<Project> *project = nullptr)
+{
+    const std::optional<Project> read = readProject(file, err);
+    if (!read)
+        return nullptr;
+    if (project != nullptr)
+        *project = read;
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*read, DataLibrary::builtIn());
+    for (const Diagnostic &d : built.diagnostics) {
+        if (d.severity == Severity::Error)
+            err << file << ": " << d.toString() << '\n';
+    }
+    return built.problem;
+}
+
+} // namespace
+
+int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the plan as JSON."));
+    const QCommandLineOption objective(QStringLiteral("objective"),
+                                       CommandLine::tr("time or cost (default: the project's)."),
+                                       QStringLiteral("OBJECTIVE"));
+    const QCommandLineOption write(
+        QStringLiteral("write"),
+        CommandLine::tr("Store the optimal passes in the project (replacing its passes) and save it."));
+    const QCommandLineOption machineEnd(
+        QStringLiteral("machine-end"),
+        CommandLine::tr(
+            "Plan for the compliant (default) or the stiff end of an unmeasured machine's stiffness range."),
+        QStringLiteral("END"));
+    parser.addOptions({json, objective, write, machineEnd});
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("optimize"), args, out, err); stop >= 0)
+        return stop;
+    const QString file = oneProjectFile(parser, QStringLiteral("optimize"), err);
+    if (file.isEmpty())
+        return kExitUsage;
+    std::optional<Project> project = readProject(file, err);
+    if (!project)
+        return kExitProblems;
+    if (parser.isSet(objective)) {
+        const auto chosen = fromKeyword<PlanningObjective>(parser.value(objective));
+        if (!chosen) {
+            err << programName() << " optimize: "
+                << CommandLine::tr("--objective is time or cost, not \"%1\"").arg(parser.value(objective)) << '\n';
+            return kExitUsage;
+        }
+        project->planning.objective = *chosen;
+    }
+    StiffnessEnd end = StiffnessEnd::Compliant;
+    if (parser.isSet(machineEnd)) {
+        const QString value = parser.value(machineEnd);
+        if (value != QLatin1String("compliant") && value != QLatin1String("stiff")) {
+            err << programName()
+                << " optimize: " << CommandLine::tr("--machine-end is compliant or stiff, not \"%1\"").arg(value)
+                << '\n';
+            return kExitUsage;
+        }
+        end = value == QLatin1String("stiff") ? StiffnessEnd::Stiff : StiffnessEnd::Compliant;
+    }
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*project, DataLibrary::builtIn(), end);
+    for (const Diagnostic &d : built.diagnostics) {
+        if (d.severity == Severity::Error)
+            err << file << ": " << d.toString() << '\n';
+    }
+    if (!built.problem)
+        return kExitProblems;
+    const PlanResult plan = optimisePlan(*built.problem);
+    if (parser.isSet(json))
+        out << QJsonDocument(planJson(plan, *built.problem)).toJson(QJsonDocument::Indented);
+    else
+        printPlan(out, plan, *built.problem);
+    if (!plan.feasible)
+        return kExitProblems;
+    if (parser.isSet(write)) {
+        const PassConditions rough = roughingOf(plan, *built.problem);
+        project->passes.clear();
+        for (int i = 0; i < plan.candidate.roughingPasses; ++i)
+            project->passes.push_back(
+                {PassKind::Roughing, rough.cuttingSpeed_m_min, rough.feed_mm_rev, rough.depthOfCut_mm});
+        const PassConditions &f = plan.candidate.finishing;
+        project->passes.push_back({PassKind::Finishing, f.cuttingSpeed_m_min, f.feed_mm_rev, f.depthOfCut_mm});
+        const WriteResult w = writeProjectFile(file, *project);
+        if (!w.ok) {
+            err << w.error << '\n';
+            return kExitProblems;
+        }
+        err << CommandLine::tr("wrote %1: %2 passes").arg(file).arg(project->passes.size()) << '\n';
+    }
+    return kExitOk;
+}
+
+int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption plane(QStringLiteral("plane"), CommandLine::tr("feed-speed (default) or feed-depth."),
+                                   QStringLiteral("PLANE"), QStringLiteral("feed-speed"));
+    const QCommandLineOption csv(QStringLiteral("csv"), CommandLine::tr("Print every grid point as CSV."));
+    const QCommandLineOption size(QStringLiteral("size"), CommandLine::tr("Points along each axis (default 256)."),
+                                  QStringLiteral("N"), QStringLiteral("256"));
+    parser.addOptions({plane, csv, size});
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("window"), args, out, err); stop >= 0)
+        return stop;
+    bool ok = false;
+    const int n = parser.value(size).toInt(&ok);
+    const QString planeName = parser.value(plane);
+    if (parser.positionalArguments().size() != 1 || !ok || n < 2 || n > 4096 ||
+        (planeName != QLatin1String("feed-speed") && planeName != QLatin1String("feed-depth"))) {
+        err << programName() << " window: "
+            << CommandLine::tr("give one project file, --plane feed-speed or feed-depth, --size from 2 to 4096")
+            << '\n';
+        return kExitUsage;
+    }
+    const auto problem = loadPlanningProblem(parser.positionalArguments().constFirst(), err);
+    if (!problem)
+        return kExitProblems;
+    const PlanResult plan = optimisePlan(*problem);
+    WindowOptions options;
+    options.columns = options.rows = n;
+    const WindowPlane which =
+        planeName == QLatin1String("feed-speed") ? WindowPlane::FeedSpeed : WindowPlane::FeedDepth;
+    const CuttingWindow w =
+        cuttingWindow(*problem, which, plan.candidate, options); // the optimum, or the least-violating plan
+    const QString yName =
+        which == WindowPlane::FeedSpeed ? QStringLiteral("cutting_speed_m_min") : QStringLiteral("depth_of_cut_mm");
+    if (parser.isSet(csv)) {
+        out << "feed_mm_rev," << yName << ",objective,feasible,binding\n";
+        for (const WindowCell &c : w.cells)
+            out << QString::number(c.x, 'g', 8) << ',' << QString::number(c.y, 'g', 8) << ','
+                << QString::number(c.objective, 'g', 8) << ',' << (c.feasible ? 1 : 0) << ','
+                << (c.feasible ? QString() : QLatin1Char('"') + c.bindingLabel + QLatin1Char('"')) << '\n';
+        return kExitOk;
+    }
+    int feasible = 0;
+    for (const WindowCell &c : w.cells)
+        feasible += c.feasible ? 1 : 0;
+    out << CommandLine::tr("%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6")
+               .arg(w.columns)
+               .arg(w.rows)
+               .arg(QString::number(100.0 * feasible / static_cast<double>(w.cells.size()), 'f', 1),
+                    QString::number(w.base.finishing.feed_mm_rev, 'f', 3), yName,
+                    QString::number(which == WindowPlane::FeedSpeed ? w.base.finishing.cuttingSpeed_m_min
+                                                                    : w.base.finishing.depthOfCut_mm,
+                                    'f', 3))
+        << '\n';
+    for (const auto &[label, cells] : w.boundaries())
+        out << CommandLine::tr("  bounded by %1 (%2 points beyond it)").arg(label).arg(cells) << '\n';
+    return kExitOk;
+}
+
+int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the ranking as JSON."));
+    parser.addOption(json);
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("advise-clamping"), args, out, err); stop >= 0)
+        return stop;
+    const QString file = oneProjectFile(parser, QStringLiteral("advise-clamping"), err);
+    if (file.isEmpty())
+        return kExitUsage;
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
+        return kExitProblems;
+    const std::vector<ClampingOption> options = adviseClamping(*project, DataLibrary::builtIn());
+    if (parser.isSet(json)) {
+        QJsonArray list;
+        int rank = 1;
+        for (const ClampingOption &o : options) {
+            QJsonObject entry{{QStringLiteral("rank"), rank++},
+                              {QStringLiteral("method"), keyword(o.method)},
+                              {QStringLiteral("clamped_length_mm"), o.clampedLength_mm},
+                              {QStringLiteral("possible"), o.possible},
+                              {QStringLiteral("feasible"), o.plan.feasible},
+                              {QStringLiteral("reason"), o.reason}};
+            if (o.possible)
+                entry.insert(QStringLiteral("objective_value"), o.plan.evaluation.objective);
+            list.append(entry);
+        }
+        out << QJsonDocument(QJsonObject{{QStringLiteral("file"), file},
+                                         {QStringLiteral("objective"), keyword(project->planning.objective)},
+                                         {QStringLiteral("ranking"), list}})
+                   .toJson(QJsonDocument::Indented);
+        return kExitOk;
+    }
+    int rank = 1;
+    for (const ClampingOption &o : options)
+        out << QStringLiteral("%1. %2: %3").arg(rank++).arg(displayName(o.method), o.reason) << '\n';
+    return kExitOk;
+}
+
+} // namespace tolturn

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/report_command.h"
+
+#include "app/cli/cli_common.h"
+#include "app/cli/command_line.h"
+#include "core/common/library_info.h"
+#include "core/deviation/deviation_model.h"
+#include "core/io/force_measurements.h"
+#include "core/io/project_file.h"
+#include "core/planning/clamping_advisor.h"
+#include "core/planning/cutting_window.h"
+#include "core/planning/optimiser.h"
+#include "core/planning/plausibility.h"
+#include "core/project/keywords.h"
+#include "core/tolerance/evaluation.h"
+#include "core/tolerance/iso286.h"
+#include "core/tolerance/range_verdicts.h"
+#include "widgets/dialogs/about_dialog.h"
+#include "widgets/report/report_writer.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+namespace {
+
+struct CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
+
+} // namespace
+
+int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    CommandLine::tr("PDF file to write."), QStringLiteral("FILE"));
+    const QCommandLineOption planner(
+        QStringLiteral("planner"), CommandLine::tr("The planner's name for the title block."), QStringLiteral("NAME"));
+    parser.addOptions({output, planner});
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("report"), args, out, err); stop >= 0)
+        return stop;
+    if (parser.positionalArguments().size() != 1 || !parser.isSet(output)) {
+        err << programName() << " report: " << CommandLine::tr("give one project file and -o FILE.pdf") << '\n';
+        return kExitUsage;
+    }
+    const QString file = parser.positionalArguments().constFirst();
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
+        return kExitProblems;
+    const ReportResult written =
+        writeReport(*project, {QFileInfo(file).fileName(), parser.value(planner)}, parser.value(output));
+    if (!written.ok) {
+        err << programName() << " report: " << written.error << '\n';
+        return kExitProblems;
+    }
+    out << CommandLine::tr("%1: %2 pages").arg(parser.value(output)).arg(written.pages) << '\n';
+    return kExitOk;
+}
+
+} // namespace tolturn
