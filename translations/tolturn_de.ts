@@ -4147,6 +4147,58 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>ap</source>
         <translation>ap</translation>
     </message>
+    <message>
+        <source>Pass</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>n [rpm]</source>
+        <translation>n [1/min]</translation>
+    </message>
+    <message>
+        <source>vc [m/min]</source>
+        <translation>vc [m/min]</translation>
+    </message>
+    <message>
+        <source>f [mm/rev]</source>
+        <translation>f [mm/U]</translation>
+    </message>
+    <message>
+        <source>ap [mm]</source>
+        <translation>ap [mm]</translation>
+    </message>
+    <message>
+        <source>Power [kW]</source>
+        <translation>Leistung [kW]</translation>
+    </message>
+    <message>
+        <source>Time [min]</source>
+        <translation>Zeit [min]</translation>
+    </message>
+    <message>
+        <source>The optimal passes as the program would cut them: the spindle speed range under G96 and the spindle limit, the cutting power Fc·vc and the time along the tool path</source>
+        <translation>Die optimalen Schnitte, wie das Programm sie ausführen würde: der Drehzahlbereich unter G96 und der Drehzahlbegrenzung, die Schnittleistung Fc·vc und die Zeit entlang der Werkzeugbahn</translation>
+    </message>
+    <message>
+        <source>%1 (no currency set in Preferences)</source>
+        <translation>%1 (keine Währung in den Einstellungen)</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>Schruppen</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>Schlichten</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -4265,6 +4317,14 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>&amp;Planner:</source>
         <translation>&amp;Planer:</translation>
+    </message>
+    <message>
+        <source>e.g. EUR, of the machine rate and tool costs</source>
+        <translation>z. B. EUR, der Maschinen- und Werkzeugkosten</translation>
+    </message>
+    <message>
+        <source>&amp;Currency:</source>
+        <translation>&amp;Währung:</translation>
     </message>
 </context>
 <context>

@@ -4147,6 +4147,58 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>ap</source>
         <translation>ap</translation>
     </message>
+    <message>
+        <source>Pass</source>
+        <translation>Pasada</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>n [rpm]</source>
+        <translation>n [rpm]</translation>
+    </message>
+    <message>
+        <source>vc [m/min]</source>
+        <translation>vc [m/min]</translation>
+    </message>
+    <message>
+        <source>f [mm/rev]</source>
+        <translation>f [mm/rev]</translation>
+    </message>
+    <message>
+        <source>ap [mm]</source>
+        <translation>ap [mm]</translation>
+    </message>
+    <message>
+        <source>Power [kW]</source>
+        <translation>Potencia [kW]</translation>
+    </message>
+    <message>
+        <source>Time [min]</source>
+        <translation>Tiempo [min]</translation>
+    </message>
+    <message>
+        <source>The optimal passes as the program would cut them: the spindle speed range under G96 and the spindle limit, the cutting power Fc·vc and the time along the tool path</source>
+        <translation>Las pasadas óptimas tal como las cortaría el programa: el rango de velocidad del husillo con G96 y su límite, la potencia de corte Fc·vc y el tiempo a lo largo de la trayectoria</translation>
+    </message>
+    <message>
+        <source>%1 (no currency set in Preferences)</source>
+        <translation>%1 (sin moneda en las preferencias)</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>desbaste</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>acabado</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -4265,6 +4317,14 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>&amp;Planner:</source>
         <translation>&amp;Planificador:</translation>
+    </message>
+    <message>
+        <source>e.g. EUR, of the machine rate and tool costs</source>
+        <translation>p. ej. EUR, de la tarifa de máquina y los costes de herramienta</translation>
+    </message>
+    <message>
+        <source>&amp;Currency:</source>
+        <translation>&amp;Moneda:</translation>
     </message>
 </context>
 <context>

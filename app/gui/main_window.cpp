@@ -77,6 +77,7 @@ MainWindow::MainWindow(QWidget *parent)
     statusBar()->showMessage(tr("Open a project (File > Open) or an example part (File > Open Example)."));
 
     createActions();
+    m_planning->setCurrency(loadPreferences().currency);
     connect(m_files, &FileController::statusMessage, this,
             [this](const QString &message) { statusBar()->showMessage(message, 5000); });
     connect(m_cad, &CadFileController::statusMessage, this,
@@ -158,6 +159,7 @@ void MainWindow::applyPreferences(const Preferences &preferences)
     const Preferences before = loadPreferences();
     savePreferences(preferences);
     DisplaySettings::instance().setUnits(DisplayUnits(preferences.lengthUnit));
+    m_planning->setCurrency(preferences.currency);
     if (preferences.language != before.language)
         statusBar()->showMessage(tr("The new language is used when TolTurn is next started."), 8000);
 }

@@ -10,6 +10,7 @@ namespace {
 const QString kLanguageKey = QStringLiteral("interface/language");
 const QString kLengthUnitKey = QStringLiteral("interface/lengthUnit");
 const QString kPlannerKey = QStringLiteral("report/planner");
+const QString kCurrencyKey = QStringLiteral("planning/currency");
 } // namespace
 
 QStringList availableLanguages()
@@ -26,6 +27,7 @@ Preferences loadPreferences()
         p.language.clear(); // a language since removed, or a hand-edited value: the system's
     p.lengthUnit = lengthUnitFromKeyword(settings.value(kLengthUnitKey).toString());
     p.planner = settings.value(kPlannerKey).toString().trimmed();
+    p.currency = settings.value(kCurrencyKey).toString().trimmed();
     return p;
 }
 
@@ -35,6 +37,7 @@ void savePreferences(const Preferences &preferences)
     settings.setValue(kLanguageKey, preferences.language);
     settings.setValue(kLengthUnitKey, keyword(preferences.lengthUnit));
     settings.setValue(kPlannerKey, preferences.planner.trimmed());
+    settings.setValue(kCurrencyKey, preferences.currency.trimmed());
 }
 
 QLocale translationLocale(const Preferences &preferences)

@@ -13,6 +13,7 @@ struct Preferences {
     QString language;                               // "en", "de", "es"; empty: the system's language
     LengthUnit lengthUnit = LengthUnit::Millimetre; // of lengths (mm | in) and deviations (µm | µin)
     QString planner;                                // the name the report's title block gives
+    QString currency;                               // of costs (machine rate, tool edge), e.g. "EUR"
 
     friend bool operator==(const Preferences &, const Preferences &) = default;
 };

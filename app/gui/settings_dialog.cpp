@@ -16,6 +16,7 @@ SettingsDialog::SettingsDialog(const Preferences &current, QWidget *parent)
     , m_language(new QComboBox)
     , m_unit(new QComboBox)
     , m_planner(new QLineEdit)
+    , m_currency(new QLineEdit)
 {
     setObjectName(QStringLiteral("settingsDialog"));
     setWindowTitle(tr("Preferences"));
@@ -42,6 +43,9 @@ SettingsDialog::SettingsDialog(const Preferences &current, QWidget *parent)
     m_planner->setText(current.planner);
     m_planner->setPlaceholderText(tr("name in the report's title block"));
     form->addRow(tr("&Planner:"), m_planner);
+    m_currency->setText(current.currency);
+    m_currency->setPlaceholderText(tr("e.g. EUR, of the machine rate and tool costs"));
+    form->addRow(tr("&Currency:"), m_currency);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -56,6 +60,7 @@ Preferences SettingsDialog::preferences() const
     p.language = m_language->currentData().toString();
     p.lengthUnit = static_cast<LengthUnit>(m_unit->currentData().toInt());
     p.planner = m_planner->text().trimmed();
+    p.currency = m_currency->text().trimmed();
     return p;
 }
 

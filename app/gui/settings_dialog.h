@@ -25,10 +25,13 @@ public:
 
     [[nodiscard]] QLineEdit *plannerEdit() const { return m_planner; }
 
+    [[nodiscard]] QLineEdit *currencyEdit() const { return m_currency; }
+
 private:
     QComboBox *m_language;
     QComboBox *m_unit;
     QLineEdit *m_planner;
+    QLineEdit *m_currency;
 };
 
 } // namespace tolturn

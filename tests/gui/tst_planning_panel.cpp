@@ -21,6 +21,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTabWidget>
@@ -88,6 +89,19 @@ private Q_SLOTS:
         QVERIFY(panel->report() != nullptr);
         QVERIFY(panel->report()->plan.feasible);
         QVERIFY(panel->planText().contains(QStringLiteral("Binding: tolerance T4")));
+        // The plan per pass: as many rows as passes, the finishing pass last at the optimal speed; the
+        // cost in the currency of the preferences.
+        const PlanResult &plan = panel->report()->plan;
+        QTableWidget *passes = panel->planPassesTable();
+        QCOMPARE(passes->rowCount(), plan.candidate.roughingPasses + 1);
+        QCOMPARE(passes->item(passes->rowCount() - 1, 0)->text(), QString::number(plan.candidate.roughingPasses + 1));
+        QCOMPARE(passes->item(passes->rowCount() - 1, 3)->text(),
+                 QString::number(plan.candidate.finishing.cuttingSpeed_m_min, 'f', 0));
+        QVERIFY(passes->item(0, 7)->text().toDouble() > 0.0);
+        QVERIFY(panel->planText().contains(QStringLiteral("no currency set")));
+        panel->setCurrency(QStringLiteral("EUR"));
+        QVERIFY2(panel->planText().contains(QRegularExpression(QStringLiteral("cost [\\d.]+ EUR"))),
+                 qPrintable(panel->planText()));
         QVERIFY(panel->windowPlot()->labelCount() >= 1);
         // The window marks the optimum and the project's own finishing pass (f 0.1 mm/rev, 230 m/min),
         // or says that the latter lies outside it.

@@ -114,6 +114,8 @@ private Q_SLOTS:
         Preferences p;
         p.language = QStringLiteral("es");
         p.lengthUnit = LengthUnit::Inch;
+        p.planner = QStringLiteral("A. Planner");
+        p.currency = QStringLiteral("EUR");
         savePreferences(p);
         QCOMPARE(loadPreferences(), p);
         QCOMPARE(translationLocale(p).language(), QLocale::Spanish);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/planning/planning_panel.h"
 
+#include "core/deviation/deviation_model.h"
+#include "core/planning/gcode.h"
 #include "core/planning/planning_problem.h"
 #include "core/project/keywords.h"
 #include "widgets/common/table_copy.h"
@@ -177,7 +179,17 @@ void PlanningPanel::buildControls()
     gcodeLayout->addLayout(gcodeTop);
     gcodeLayout->addWidget(m_gcodeConditions);
     gcodeLayout->addWidget(m_gcode);
-    m_tabs->addTab(m_plan, tr("Plan"));
+    m_planPasses = new QTableWidget(this);
+    m_planPasses->setObjectName(QStringLiteral("planPasses"));
+    setupTable(m_planPasses, {tr("Pass"), tr("Kind"), tr("n [rpm]"), tr("vc [m/min]"), tr("f [mm/rev]"), tr("ap [mm]"),
+                              tr("Power [kW]"), tr("Time [min]")});
+    m_planPasses->setToolTip(tr("The optimal passes as the program would cut them: the spindle speed range under "
+                                "G96 and the spindle limit, the cutting power Fc·vc and the time along the tool path"));
+    auto *planTab = new QWidget(this);
+    auto *planLayout = new QVBoxLayout(planTab);
+    planLayout->addWidget(m_plan);
+    planLayout->addWidget(m_planPasses, 1);
+    m_tabs->addTab(planTab, tr("Plan"));
     m_tabs->addTab(windowTab, tr("Cutting Window"));
     m_tabs->addTab(m_clamping, tr("Clamping"));
     m_tabs->addTab(m_compensation, tr("Compensation"));
@@ -342,9 +354,11 @@ void PlanningPanel::showReport()
     const PlanResult &r = m_report->plan;
     const CandidateEvaluation &e = r.evaluation;
     lines << (r.feasible ? tr("Optimal plan") : tr("No plan meets every constraint; the least-violating one:"));
+    const QString cost = m_currency.isEmpty() ? tr("%1 (no currency set in Preferences)").arg(number(e.cost, 2))
+                                              : QStringLiteral("%1 %2").arg(number(e.cost, 2), m_currency);
     lines << tr("Time per part %1 min (finishing %2 min, roughing %3 min); cost %4; tool edges %5")
-                 .arg(number(e.time_min, 3), number(e.finishingTime_min, 3), number(e.roughingTime_min, 3),
-                      number(e.cost, 2), number(e.toolEdgesPerPart, 3));
+                 .arg(number(e.time_min, 3), number(e.finishingTime_min, 3), number(e.roughingTime_min, 3), cost,
+                      number(e.toolEdgesPerPart, 3));
     lines << tr("Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
                  .arg(number(r.candidate.finishing.cuttingSpeed_m_min, 1), number(r.candidate.finishing.feed_mm_rev, 3),
                       number(r.candidate.finishing.depthOfCut_mm, 3));
@@ -361,8 +375,47 @@ void PlanningPanel::showReport()
     for (const QString &n : r.notes)
         lines << tr("Note: ") + n;
     m_plan->setText(lines.join(QLatin1Char('\n')));
+    showPlanPasses();
     showWindow();
     showClamping();
+}
+
+void PlanningPanel::setCurrency(const QString &currency)
+{
+    m_currency = currency.trimmed();
+    if (m_report && m_report->problem && !m_report->cancelled)
+        showReport();
+}
+
+// The optimal plan as the program would cut it: the project with the plan's passes, its tool path,
+// and per pass the spindle speeds, power and time (passSummaries).
+void PlanningPanel::showPlanPasses()
+{
+    m_planPasses->setRowCount(0);
+    if (!m_report || !m_report->problem || m_report->cancelled)
+        return;
+    Project planned = m_document.project();
+    planned.passes = m_report->problem->passesOf(m_report->plan.candidate);
+    const DeviationResult deviation = computeDeviation(planned, DataLibrary::builtIn(), {});
+    if (!deviation.inputs)
+        return;
+    const TurningProgram program = turningProgram(planned, DataLibrary::builtIn(), *deviation.inputs, {});
+    m_planPasses->setRowCount(static_cast<int>(program.passes.size()));
+    for (int i = 0; i < m_planPasses->rowCount(); ++i) {
+        const PassSummary &p = program.passes[static_cast<std::size_t>(i)];
+        const QStringList cells{
+            QString::number(p.number),
+            p.kind == PassKind::Roughing ? tr("roughing") : tr("finishing"),
+            QStringLiteral("%1–%2").arg(number(p.lowestSpeed_rpm, 0), number(p.highestSpeed_rpm, 0)),
+            number(p.conditions.cuttingSpeed_m_min, 0),
+            number(p.conditions.feed_mm_rev, 3),
+            number(p.conditions.depthOfCut_mm, 3),
+            p.power_kW ? number(*p.power_kW, 2) : tr("—"),
+            number(p.time_min, 2)};
+        for (int c = 0; c < static_cast<int>(cells.size()); ++c)
+            m_planPasses->setItem(i, c, cell(cells.at(c)));
+    }
+    m_planPasses->resizeColumnsToContents();
 }
 
 void PlanningPanel::showWindow()

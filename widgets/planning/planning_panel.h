@@ -59,6 +59,11 @@ public:
     // Refreshes what follows the project directly (settings, compensation, G-code).
     void projectChanged();
 
+    // The currency costs are given in (the preferences); empty: not stated.
+    void setCurrency(const QString &currency);
+
+    [[nodiscard]] QTableWidget *planPassesTable() const { return m_planPasses; }
+
     // The Plan tab's text before the first run.
     [[nodiscard]] static QString notRunText();
 
@@ -72,6 +77,7 @@ private:
     void showWindow();
     void showClamping();
     void showFinishing();
+    void showPlanPasses();
 
     ProjectDocument &m_document;
     QComboBox *m_objective;
@@ -84,6 +90,8 @@ private:
     QProgressBar *m_progress;
     QTabWidget *m_tabs;
     QLabel *m_plan;
+    QTableWidget *m_planPasses = nullptr; // the optimal plan per pass, along its tool path
+    QString m_currency;
     MapPlot *m_map;
     QLabel *m_legend;
     QTableWidget *m_clamping;
