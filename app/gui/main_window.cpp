@@ -362,6 +362,7 @@ void MainWindow::showProject()
         return;
     }
     const Project &project = m_document->project();
+    m_profileView->setClamping(project.clamping);
     m_profileView->setProfile(project.part, project.tolerances, project.datums);
     RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
     m_tolerances->showVerdicts(std::move(range.tolerances), machineAssumptionText(range, DataLibrary::builtIn()),

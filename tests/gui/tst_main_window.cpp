@@ -26,6 +26,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QGraphicsItem>
+#include <QGraphicsRectItem>
 #include <QGraphicsScene>
 #include <QMessageBox>
 #include <QPushButton>
@@ -215,6 +216,28 @@ private Q_SLOTS:
                          qPrintable(page + QStringLiteral(" -> ") + target));
             }
         }
+    }
+
+    // The drawing shows how the part is held: the jaws over the clamped length, the centres, the
+    // tailstock centre.
+    void drawingShowsTheClamping()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        const QList<QGraphicsItem *> jaws = itemsOfKind(w, profile_item::kClamping);
+        QCOMPARE(jaws.size(), 1);
+        // Over z 0–35 (the clamped length), above the Ø56 collar (r 28): scene x = z, y = -r.
+        const auto *jawItem = qgraphicsitem_cast<QGraphicsRectItem *>(jaws.constFirst());
+        QVERIFY(jawItem);
+        const QRectF jaw = jawItem->rect();
+        QVERIFY2(std::abs(jaw.left() - 0.0) < 0.5 && std::abs(jaw.right() - 35.0) < 0.5 &&
+                     std::abs(jaw.bottom() + 28.0) < 0.5,
+                 qPrintable(QStringLiteral("%1 %2 %3").arg(jaw.left()).arg(jaw.right()).arg(jaw.bottom())));
+        QVERIFY(w.fileController()->openFile(example("long-shaft-centres.tolturn")));
+        QCOMPARE(itemsOfKind(w, profile_item::kClamping).size(), 2); // two centres
+        QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
+        QCOMPARE(itemsOfKind(w, profile_item::kClamping).size(), 2); // jaws and the tailstock centre
     }
 
     void opensExampleAndDrawsProfile()

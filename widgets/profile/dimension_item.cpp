@@ -89,8 +89,8 @@ int declutterDimensionLabels(QGraphicsScene &scene, const QTransform &sceneToDev
         const QSizeF size = d->labelSize();
         const double beside = 0.5 * size.width() + 10.0;
         const double step = size.height() + 2.0;
-        const std::pair<double, double> candidates[] = {{0.0, 0.0},           {0.0, -step - 2.0}, {beside * 2.0, 0.0},
-                                                        {-beside * 2.0, 0.0}, {0.0, step},        {0.0, 2.0 * step}};
+        const std::pair<double, double> candidates[] = {{0.0, 0.0},  {beside * 2.0, 0.0}, {-beside * 2.0, 0.0},
+                                                        {0.0, step}, {0.0, -step - 2.0},  {0.0, 2.0 * step}};
         bool free = false;
         for (const auto &[along, lift] : candidates) {
             d->shiftLabel(along, lift);

@@ -331,6 +331,39 @@ QString dimensionText(double value_mm)
     return DisplayUnits().lengthText(value_mm);
 }
 
+void addClamping(QGraphicsScene &scene, const PartProfile &profile, const Clamping &clamping)
+{
+    if (profile.outer.empty())
+        return;
+    const double length = profile.length_mm();
+    const double rMax = profile.maxOuterRadius_mm();
+    const QPen pen = cosmeticPen(QColor(0x55, 0x55, 0x55), 1.0);
+    const QBrush brush(QColor(0x80, 0x80, 0x80, 110));
+    auto tag = [](QGraphicsItem *item) {
+        tagItem(item, profile_item::kClamping);
+        item->setZValue(0.5);
+    };
+    if (clamping.method != ClampingMethod::BetweenCentres && clamping.clampedLength_mm > 0.0) {
+        double grip = 0.0; // the largest radius of the part in the jaws
+        for (const Segment &s : profile.outer.segments)
+            if (std::min(s.from.z_mm, s.to.z_mm) < clamping.clampedLength_mm)
+                grip = std::max({grip, s.from.r_mm, s.to.r_mm});
+        const QRectF jaw(scenePoint({0.0, grip + 0.3 * rMax}), scenePoint({clamping.clampedLength_mm, grip}));
+        tag(scene.addRect(jaw.normalized(), pen, brush));
+    }
+    auto centre = [&](double z, double direction) { // a 60° centre with its tip at the axis
+        const double size = 0.35 * rMax;
+        QPolygonF cone;
+        cone << scenePoint({z, 0.0}) << scenePoint({z - direction * size, 0.5 * size})
+             << scenePoint({z - direction * size, -0.5 * size});
+        tag(scene.addPolygon(cone, pen, brush));
+    };
+    if (clamping.method == ClampingMethod::BetweenCentres)
+        centre(0.0, 1.0); // its body left of the part
+    if (clamping.method != ClampingMethod::Chuck)
+        centre(length, -1.0); // right of it
+}
+
 void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances,
                        const std::vector<Datum> &datums, const DisplayUnits &units, double rowPitch_mm)
 {

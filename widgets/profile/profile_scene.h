@@ -31,6 +31,7 @@ inline const QString kDimension = QStringLiteral("dimension");
 inline const QString kVertexHandle = QStringLiteral("vertex-handle");
 inline const QString kToleranceFrame = QStringLiteral("tolerance-frame");
 inline const QString kDatum = QStringLiteral("datum");
+inline const QString kClamping = QStringLiteral("clamping");
 } // namespace profile_item
 
 // Draws a part as a half-section drawing: above the axis the section (hatched material,
@@ -46,6 +47,10 @@ inline const QString kDatum = QStringLiteral("datum");
 void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const std::vector<Tolerance> &tolerances = {},
                        const std::vector<Datum> &datums = {}, const DisplayUnits &units = DisplayUnits(),
                        double rowPitch_mm = 0.0);
+
+// How the part is held, drawn over the section: the chuck jaws over the clamped length (above the
+// axis, where they do not meet the dimensions below), the centres at the axis, the tailstock centre.
+void addClamping(QGraphicsScene &scene, const PartProfile &profile, const Clamping &clamping);
 
 // The row pitch that fits labels of `labelHeight` device units at `scale` device units per mm.
 [[nodiscard]] inline double dimensionRowPitch_mm(double labelHeight, double scale)

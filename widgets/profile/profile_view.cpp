@@ -60,6 +60,8 @@ void ProfileView::setProfile(const PartProfile &profile, const std::vector<Toler
 void ProfileView::redraw()
 {
     buildProfileScene(*m_scene, m_profile, m_tolerances, m_datums, DisplaySettings::instance().units(), m_rowPitch_mm);
+    if (m_clamping)
+        addClamping(*m_scene, m_profile, *m_clamping);
     m_dragged = nullptr;
 }
 
@@ -242,6 +244,18 @@ void ProfileView::drawForeground(QPainter *painter, const QRectF &rect)
     painter->drawText(viewport()->rect().adjusted(24, 24, -24, -24), Qt::AlignCenter | Qt::TextWordWrap,
                       emptyStateText());
     painter->restore();
+}
+
+void ProfileView::setClamping(const std::optional<Clamping> &clamping)
+{
+    if (clamping == m_clamping)
+        return;
+    m_clamping = clamping;
+    const QString selected = m_selected;
+    redraw();
+    m_selected.clear();
+    if (!selected.isEmpty())
+        selectFeature(selected);
 }
 
 void ProfileView::clearProfile()

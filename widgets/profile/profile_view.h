@@ -5,6 +5,8 @@
 
 #include <QGraphicsView>
 
+#include <optional>
+
 namespace tolturn {
 
 // The half-section drawing of the part. Fits the part to the window until the user zooms
@@ -18,6 +20,8 @@ public:
     void setProfile(const PartProfile &profile, const std::vector<Tolerance> &tolerances = {},
                     const std::vector<Datum> &datums = {});
     void clearProfile();
+    // How the part is held, drawn with it (jaws, centres, tailstock); unset: not drawn.
+    void setClamping(const std::optional<Clamping> &clamping);
     void fitPart();
 
     // The selected feature (segment id), or empty. Selecting draws it highlighted in both halves.
@@ -68,6 +72,7 @@ private:
     QGraphicsItem *m_dragged = nullptr; // the vertex handle being dragged
     ProfilePoint m_dragTo;
     bool m_autoFit = true;
+    std::optional<Clamping> m_clamping;
     double m_rowPitch_mm = 0.0; // between rows of length dimensions, for their labels at this zoom
     QString m_selected;
 };

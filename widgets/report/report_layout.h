@@ -48,6 +48,9 @@ public:
         m_y = kMargin;
     }
 
+    // The height left on the page.
+    [[nodiscard]] double remaining() const { return kBottom - m_y; }
+
     void ensure(double height)
     {
         if (m_y + height > kBottom)

@@ -142,29 +142,41 @@ void summary(Layout &l, const Project &p, const RangeEvaluation &range)
 
 void drawing(Layout &l, const Project &p)
 {
-    l.heading(Report::tr("1  Part"));
+    // Frames, datum boxes and dimension texts keep their size in points (they ignore the drawing's
+    // scale): the drawing is fitted on the part and its dimensions, with room above and to the right
+    // for the frames, and the rows of length dimensions are spaced for their labels at the scale the
+    // drawing is finally shown at (found in a few passes: the pitch changes the fit a little). Page 1
+    // carries the drawing: it is drawn smaller to fit there when at least 150 pt are left, and its
+    // heading stays with it.
+    constexpr double kHeading = 40.0;
+    constexpr double kFramesAbove = 110.0; // pt
+    constexpr double kFramesRight = 90.0;  // pt
+    const double labelHeight = QFontMetricsF(QFont()).height();
     QGraphicsScene scene;
-    // Frames and datum boxes keep their size in points (they ignore the drawing's scale), so the
-    // drawing is fitted on the part and its dimensions, with room above for the frames; the rows of
-    // length dimensions are spaced for their labels at that scale (built twice: the pitch changes
-    // the fit a little).
-    double scale = 1.0;
-    QRectF part;
-    for (const double pitch : {0.0, 1.0}) {
+    QRectF source;
+    double height = 0.0;
+    double shown = 0.0; // points per mm as drawn
+    for (int pass = 0; pass < 3; ++pass) {
         buildProfileScene(scene, p.part, p.tolerances, p.datums, DisplayUnits(),
-                          pitch > 0.0 ? dimensionRowPitch_mm(QFontMetricsF(QFont()).height(), scale) : 0.0);
-        part = QRectF();
+                          shown > 0.0 ? dimensionRowPitch_mm(1.3 * labelHeight, shown) : 0.0);
+        addClamping(scene, p.part, p.clamping); // page 1 shows how the part is held
+        QRectF part;
         for (const QGraphicsItem *item : scene.items()) {
             const QString kind = item->data(kItemKindData).toString();
             if (kind != profile_item::kToleranceFrame && kind != profile_item::kDatum)
                 part |= item->sceneBoundingRect();
         }
-        scale = std::min(kWidth / part.width(), 170.0 / part.height()); // points per mm
+        const double scale = std::min(kWidth / part.width(), 170.0 / part.height()); // points per mm
+        source = part.adjusted(-4, -kFramesAbove / scale, 4 + kFramesRight / scale, 4);
+        height = source.height() * scale;
+        if (l.remaining() - kHeading >= 150.0)
+            height = std::min(height, l.remaining() - kHeading);
+        shown = std::min(kWidth / source.width(), height / source.height());
     }
-    const double frames = 110.0 / scale; // 110 pt of frames
-    const QRectF source = part.adjusted(-4, -frames, 4, 4);
-    declutterDimensionLabels(scene, QTransform::fromScale(scale, scale));
-    l.block(source.height() * scale,
+    l.ensure(height + kHeading);
+    l.heading(Report::tr("1  Part"));
+    declutterDimensionLabels(scene, QTransform::fromScale(shown, shown));
+    l.block(height,
             [&](QPainter &painter, const QRectF &r) { scene.render(&painter, r, source, Qt::KeepAspectRatio); });
 }
 
