@@ -155,6 +155,17 @@ private Q_SLOTS:
             for (std::size_t j = i + 1; j < labels.size(); ++j)
                 QVERIFY2(!labels[i].intersects(labels[j]),
                          qPrintable(QStringLiteral("labels %1 and %2").arg(i).arg(j)));
+        // The deflection plot's legend lies inside the plot widget with room for every entry.
+        LinePlot *plot = w.findChild<DeflectionPanel *>()->plot();
+        QVERIFY2(plot->rect().contains(plot->legendRect()), qPrintable(QStringLiteral("legend %1,%2 %3x%4 in %5x%6")
+                                                                           .arg(plot->legendRect().x())
+                                                                           .arg(plot->legendRect().y())
+                                                                           .arg(plot->legendRect().width())
+                                                                           .arg(plot->legendRect().height())
+                                                                           .arg(plot->width())
+                                                                           .arg(plot->height())));
+        QVERIFY(plot->legendRect().width() >= plot->legendNeeds().width());
+        QVERIFY(plot->legendRect().height() >= plot->legendNeeds().height());
         test::saveScreenshot(w, "window-1366x768.png");
         w.resize(1600, 1000);
         QTest::qWait(50);

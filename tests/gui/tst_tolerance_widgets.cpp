@@ -115,6 +115,33 @@ private Q_SLOTS:
         tolturn::test::saveScreenshot(w, "verdicts-range.png");
     }
 
+    // At the default window size no verdict text is elided: every cell of the verdict, range and
+    // stiffness columns is as wide as its text, for every example.
+    void verdictTextsAreNeverElided()
+    {
+        MainWindow w;
+        w.resize(1600, 1000);
+        w.show();
+        QTableView *table = w.tolerancePanel()->table();
+        for (const char *file : {"stepped-shaft-chuck.tolturn", "hollow-sleeve-tailstock.tolturn",
+                                 "long-shaft-centres.tolturn", "slender-pin-chuck.tolturn"}) {
+            QVERIFY(w.fileController()->openFile(example(file)));
+            const QFontMetrics metrics(table->font());
+            for (const int column : {int(ToleranceVerdictModel::VerdictColumn), int(ToleranceVerdictModel::RangeColumn),
+                                     int(ToleranceVerdictModel::RequiredColumn)}) {
+                for (int row = 0; row < table->model()->rowCount(); ++row) {
+                    const QString text = table->model()->index(row, column).data().toString();
+                    QVERIFY2(table->columnWidth(column) >= metrics.horizontalAdvance(text),
+                             qPrintable(QStringLiteral("%1 row %2: '%3' in %4 px")
+                                            .arg(QString::fromLatin1(file))
+                                            .arg(row)
+                                            .arg(text)
+                                            .arg(table->columnWidth(column))));
+                }
+            }
+        }
+    }
+
     void verdictModelIsAProperModel()
     {
         MainWindow w;

@@ -161,6 +161,16 @@ QString LinePlot::csvText() const
     return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
+QRect LinePlot::legendRect() const
+{
+    return m_plot->legend->outerRect().translated(m_plot->pos());
+}
+
+QSize LinePlot::legendNeeds() const
+{
+    return m_plot->legend->minimumOuterSizeHint();
+}
+
 QString LinePlot::readoutAt(double x) const
 {
     QStringList lines;

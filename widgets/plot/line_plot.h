@@ -39,6 +39,11 @@ public:
 
     [[nodiscard]] QString title() const { return m_title; }
 
+    // Where the legend is drawn, and the space it needs, in the widget's pixels (for tests: the
+    // legend is never clipped).
+    [[nodiscard]] QRect legendRect() const;
+    [[nodiscard]] QSize legendNeeds() const;
+
     // The curves as CSV: one column per curve when they share their x values, else one row per
     // point (curve, x, y). The header carries the axis labels with their units; gaps are empty.
     [[nodiscard]] QString csvText() const;
