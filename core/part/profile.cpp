@@ -7,6 +7,15 @@
 
 namespace tolturn {
 
+double PartProfile::gripRadius_mm(double clampedLength_mm) const
+{
+    double grip = 0.0;
+    for (const Segment &s : outer.segments)
+        if (std::min(s.from.z_mm, s.to.z_mm) < clampedLength_mm)
+            grip = std::max({grip, s.from.r_mm, s.to.r_mm});
+    return grip;
+}
+
 double PartProfile::maxOuterRadius_mm() const
 {
     double rMax = 0.0;

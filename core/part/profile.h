@@ -70,6 +70,9 @@ struct PartProfile {
     [[nodiscard]] double length_mm() const { return outer.empty() ? 0.0 : outer.back().z_mm; }
 
     [[nodiscard]] double maxOuterRadius_mm() const;
+
+    // The largest radius of the outer contour left of z: where chuck jaws gripping that length hold it.
+    [[nodiscard]] double gripRadius_mm(double clampedLength_mm) const;
 };
 
 struct FeatureRef {

@@ -344,10 +344,7 @@ void addClamping(QGraphicsScene &scene, const PartProfile &profile, const Clampi
         item->setZValue(0.5);
     };
     if (clamping.method != ClampingMethod::BetweenCentres && clamping.clampedLength_mm > 0.0) {
-        double grip = 0.0; // the largest radius of the part in the jaws
-        for (const Segment &s : profile.outer.segments)
-            if (std::min(s.from.z_mm, s.to.z_mm) < clamping.clampedLength_mm)
-                grip = std::max({grip, s.from.r_mm, s.to.r_mm});
+        const double grip = profile.gripRadius_mm(clamping.clampedLength_mm);
         const QRectF jaw(scenePoint({0.0, grip + 0.3 * rMax}), scenePoint({clamping.clampedLength_mm, grip}));
         tag(scene.addRect(jaw.normalized(), pen, brush));
     }

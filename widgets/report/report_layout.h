@@ -25,6 +25,12 @@ constexpr double kWidth = kPageWidth - 2 * kMargin;
 // Plots are laid out at this multiple of their box and scaled down: screen fonts become ~8 pt.
 constexpr double kPlotTextScale = 1.5;
 
+// A number with a fixed count of decimals, as the report's tables print it.
+inline QString num(double v, int decimals)
+{
+    return QString::number(v, 'f', decimals);
+}
+
 inline QFont font(double pixels, bool bold = false)
 {
     QFont f(QStringLiteral("DejaVu Sans"));

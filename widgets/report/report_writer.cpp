@@ -43,15 +43,11 @@ using report::kPageHeight;
 using report::kPlotTextScale;
 using report::kWidth;
 using report::Layout;
+using report::num;
 
 struct Report {
     Q_DECLARE_TR_FUNCTIONS(Report)
 };
-
-QString num(double v, int decimals)
-{
-    return QString::number(v, 'f', decimals);
-}
 
 // The title block: the part as the drawing names it, who planned it and when, and a field for the
 // approval, above the project file and the program version.

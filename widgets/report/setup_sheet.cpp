@@ -21,11 +21,6 @@ struct SetupSheet {
     Q_DECLARE_TR_FUNCTIONS(SetupSheet)
 };
 
-QString num(double v, int decimals)
-{
-    return QString::number(v, 'f', decimals);
-}
-
 // A field key of a project file in words: "cutting_speed_m_min" -> "cutting speed".
 QString fieldWords(const QString &key)
 {
@@ -107,10 +102,7 @@ void drawClamping(QPainter &painter, const QRectF &rect, const Project &project)
     const double grip = project.clamping.clampedLength_mm;
     if (method != ClampingMethod::BetweenCentres) {
         const double jaw = 0.45 * radius;
-        double gripRadius = 0.0; // the largest radius of the part in the jaws
-        for (const Segment &s : project.part.outer.segments)
-            if (std::min(s.from.z_mm, s.to.z_mm) < grip)
-                gripRadius = std::max({gripRadius, s.from.r_mm, s.to.r_mm});
+        const double gripRadius = project.part.gripRadius_mm(grip);
         for (const double side : {1.0, -1.0})
             painter.drawRect(QRectF(at(0.0, side * (gripRadius + jaw)), at(grip, side * gripRadius)).normalized());
         painter.setBrush(QColor(0xbb, 0xbb, 0xbb));
