@@ -3332,6 +3332,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Report cancelled; nothing was written.</source>
         <translation>Bericht abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
+    <message numerus="yes">
+        <source>Opened %1 with %n problem(s) to repair before it can be computed</source>
+        <translation>
+            <numerusform>%1 mit %n Problem geöffnet, das vor der Berechnung zu beheben ist</numerusform>
+            <numerusform>%1 mit %n Problemen geöffnet, die vor der Berechnung zu beheben sind</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>tolturn::HelpBrowser</name>
@@ -3640,6 +3647,17 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The user guide, at the page of the dock you are in (F1)</source>
         <translation>Das Benutzerhandbuch, auf der Seite des Fensterbereichs, in dem Sie arbeiten (F1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
+        <translation>
+            <numerusform>Nicht berechnet: Das Projekt hat %n Problem, aufgeführt unter Probleme. Doppelklicken Sie darauf, um zu seinem Wert zu gelangen.</numerusform>
+            <numerusform>Nicht berechnet: Das Projekt hat %n Probleme, aufgeführt unter Probleme. Doppelklicken Sie auf eines, um zu seinem Wert zu gelangen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Probleme</translation>
     </message>
 </context>
 <context>
@@ -4199,6 +4217,24 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>—</source>
         <translation>—</translation>
     </message>
+    <message>
+        <source>The project has problems (listed under Problems): nothing is planned or programmed until they are repaired.</source>
+        <translation>Das Projekt hat Probleme (aufgeführt unter Probleme): Bis sie behoben sind, wird nichts geplant oder programmiert.</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::ProblemNavigator</name>
+    <message>
+        <source>No problems: every value of the project can be computed with.</source>
+        <translation>Keine Probleme: Mit jedem Wert des Projekts kann gerechnet werden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s) stop the computation. Double-click one to go to its value; the results return once all are repaired.</source>
+        <translation>
+            <numerusform>%n Problem verhindert die Berechnung. Doppelklicken Sie darauf, um zu seinem Wert zu gelangen; die Ergebnisse erscheinen wieder, sobald es behoben ist.</numerusform>
+            <numerusform>%n Probleme verhindern die Berechnung. Doppelklicken Sie auf eines, um zu seinem Wert zu gelangen; die Ergebnisse erscheinen wieder, sobald alle behoben sind.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -4522,8 +4558,24 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
         <translation>&amp;Revision:</translation>
     </message>
     <message>
-        <source>Change part name and drawing</source>
-        <translation>Teilename und Zeichnung ändern</translation>
+        <source>Diameter of the bar the part is turned from: the roughing passes remove the stock between it and the profile.</source>
+        <translation>Durchmesser der Stange, aus der das Teil gedreht wird: Die Schruppschnitte tragen das Material zwischen ihr und der Kontur ab.</translation>
+    </message>
+    <message>
+        <source>&amp;Stock Ø:</source>
+        <translation>&amp;Rohteil-Ø:</translation>
+    </message>
+    <message>
+        <source>Change part name, drawing or stock</source>
+        <translation>Teilename, Zeichnung oder Rohteil ändern</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>Schruppen</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>Schlichten</translation>
     </message>
 </context>
 <context>

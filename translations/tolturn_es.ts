@@ -3332,6 +3332,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Report cancelled; nothing was written.</source>
         <translation>Informe cancelado; no se ha escrito nada.</translation>
     </message>
+    <message numerus="yes">
+        <source>Opened %1 with %n problem(s) to repair before it can be computed</source>
+        <translation>
+            <numerusform>%1 abierto con %n problema que reparar antes de poder calcular</numerusform>
+            <numerusform>%1 abierto con %n problemas que reparar antes de poder calcular</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>tolturn::HelpBrowser</name>
@@ -3640,6 +3647,17 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The user guide, at the page of the dock you are in (F1)</source>
         <translation>La guía del usuario, en la página del panel en el que está (F1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
+        <translation>
+            <numerusform>Sin calcular: el proyecto tiene %n problema, listado en Problemas. Haga doble clic en él para ir a su valor.</numerusform>
+            <numerusform>Sin calcular: el proyecto tiene %n problemas, listados en Problemas. Haga doble clic en uno para ir a su valor.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Problemas</translation>
     </message>
 </context>
 <context>
@@ -4199,6 +4217,24 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>—</source>
         <translation>—</translation>
     </message>
+    <message>
+        <source>The project has problems (listed under Problems): nothing is planned or programmed until they are repaired.</source>
+        <translation>El proyecto tiene problemas (listados en Problemas): no se planifica ni se programa nada hasta repararlos.</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::ProblemNavigator</name>
+    <message>
+        <source>No problems: every value of the project can be computed with.</source>
+        <translation>Sin problemas: todos los valores del proyecto se pueden calcular.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s) stop the computation. Double-click one to go to its value; the results return once all are repaired.</source>
+        <translation>
+            <numerusform>%n problema impide el cálculo. Haga doble clic en él para ir a su valor; los resultados vuelven cuando esté reparado.</numerusform>
+            <numerusform>%n problemas impiden el cálculo. Haga doble clic en uno para ir a su valor; los resultados vuelven cuando todos estén reparados.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ProfileView</name>
@@ -4522,8 +4558,24 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
         <translation>&amp;Revisión:</translation>
     </message>
     <message>
-        <source>Change part name and drawing</source>
-        <translation>Cambiar nombre y plano de la pieza</translation>
+        <source>Diameter of the bar the part is turned from: the roughing passes remove the stock between it and the profile.</source>
+        <translation>Diámetro de la barra de la que se tornea la pieza: las pasadas de desbaste quitan el material entre ella y el perfil.</translation>
+    </message>
+    <message>
+        <source>&amp;Stock Ø:</source>
+        <translation>Ø de &amp;bruto:</translation>
+    </message>
+    <message>
+        <source>Change part name, drawing or stock</source>
+        <translation>Cambiar nombre de la pieza, plano o bruto</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>desbaste</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>acabado</translation>
     </message>
 </context>
 <context>

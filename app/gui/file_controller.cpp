@@ -122,16 +122,24 @@ bool FileController::openExample(const QString &resourcePath)
 bool FileController::loadFrom(const QString &readPath, const QString &documentPath)
 {
     ProjectParseResult result = readProjectFile(readPath);
-    if (!result.project) {
+    if (!result.project && !result.repairable) {
         m_prompts.showError(tr("Cannot open %1").arg(QFileInfo(readPath).fileName()),
                             tr("The file was not opened; the current project is unchanged.\n\n%1")
                                 .arg(joinDiagnostics(result.diagnostics)));
         return false;
     }
-    if (!maybeSave()) // only once the new file is known to be good
+    if (!maybeSave()) // only once the new file is known to be a TolTurn project
         return false;
-    m_document.load(std::move(*result.project), documentPath);
-    Q_EMIT statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(readPath)));
+    if (result.project) {
+        m_document.load(std::move(*result.project), documentPath);
+        Q_EMIT statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(readPath)));
+        return true;
+    }
+    m_document.load(std::move(*result.repairable), documentPath, result.diagnostics);
+    Q_EMIT statusMessage(tr("Opened %1 with %n problem(s) to repair before it can be computed", nullptr,
+                            static_cast<int>(m_document.problems().size()))
+                             .arg(QDir::toNativeSeparators(readPath)));
+    Q_EMIT openedWithProblems();
     return true;
 }
 
@@ -164,8 +172,8 @@ bool FileController::offerRecovery(const QString &autosaveFolder)
             Autosave::remove(copy);
             continue;
         }
-        const ProjectParseResult read = readProjectFile(copy.autosavePath);
-        if (!read.project) {
+        ProjectParseResult read = readProjectFile(copy.autosavePath);
+        if (!read.project && !read.repairable) {
             QStringList problems;
             for (const Diagnostic &d : read.diagnostics)
                 problems << d.toString();
@@ -174,7 +182,10 @@ bool FileController::offerRecovery(const QString &autosaveFolder)
                                                                             problems.join(QLatin1Char('\n'))));
             continue;
         }
-        m_document.load(*read.project, copy.originalPath);
+        if (read.project)
+            m_document.load(std::move(*read.project), copy.originalPath);
+        else
+            m_document.load(std::move(*read.repairable), copy.originalPath, read.diagnostics);
         m_document.markRecovered();
         Autosave::remove(copy);
         Q_EMIT statusMessage(tr("Recovered %1 as it was at %2; save it to keep it.")

@@ -96,6 +96,8 @@ public:
 
 Q_SIGNALS:
     void statusMessage(const QString &message);
+    // A TolTurn project with wrong values was opened to be repaired (ProjectDocument::problems()).
+    void openedWithProblems();
 
 private:
     bool loadFrom(const QString &readPath, const QString &documentPath);

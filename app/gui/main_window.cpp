@@ -3,6 +3,7 @@
 
 #include "app/gui/autosave.h"
 #include "app/gui/import_dialog.h"
+#include "app/gui/problem_navigator.h"
 #include "app/gui/recent_files.h"
 #include "app/gui/settings_dialog.h"
 #include "core/project/keywords.h"
@@ -10,6 +11,7 @@
 #include "core/tolerance/range_verdicts.h"
 #include "resources/bundled.h"
 #include "widgets/common/diagnostics_panel.h"
+#include "widgets/common/project_fields.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
@@ -67,6 +69,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_setup(new SetupPanel(*m_document, this))
     , m_feature(new FeaturePanel(*m_document, this))
     , m_autosave(new Autosave(*m_document, autosaveFolder(), this))
+    , m_problems(new ProblemNavigator(*m_document, {this, m_profileView, m_feature, m_tolerances}, this))
     , m_summary(new QLabel(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
@@ -83,6 +86,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_cad, &CadFileController::statusMessage, this,
             [this](const QString &message) { statusBar()->showMessage(message, 8000); });
     connect(m_cad, &CadFileController::importFinished, this, &MainWindow::showImportMessages);
+    connect(m_files, &FileController::openedWithProblems, m_problems, &ProblemNavigator::showFirst);
     connect(m_document, &ProjectDocument::projectChanged, this, &MainWindow::showProject);
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
@@ -197,6 +201,8 @@ void MainWindow::createDocks()
     dock->raise();
     createImportDock();
     tabifyDockWidget(planning, m_importDock);
+    createProblemsDock();
+    tabifyDockWidget(m_importDock, m_problemsDock);
     dock->raise();
     resizeDocks({setup, tolerances}, {440, 660}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
@@ -234,6 +240,7 @@ void MainWindow::createDocks()
     view->addAction(tolerances->toggleViewAction());
     view->addAction(planning->toggleViewAction());
     view->addAction(m_importDock->toggleViewAction());
+    view->addAction(m_problemsDock->toggleViewAction());
 }
 
 void MainWindow::createFileMenu()
@@ -343,10 +350,11 @@ void MainWindow::rebuildRecentMenu()
 void MainWindow::updateTitle()
 {
     const bool has = m_document->hasProject();
+    const bool computable = has && !m_document->hasProblems();
     m_saveAction->setEnabled(has);
     m_saveAsAction->setEnabled(has);
-    m_exportReportAction->setEnabled(has);
-    m_exportStepAction->setEnabled(has);
+    m_exportReportAction->setEnabled(computable);
+    m_exportStepAction->setEnabled(computable);
     setWindowModified(m_document->isModified());
     setWindowTitle(has ? tr("%1[*] — TolTurn").arg(m_document->displayName()) : QStringLiteral("TolTurn"));
 }
@@ -361,6 +369,11 @@ void MainWindow::showProject()
         updateTitle();
         return;
     }
+    m_problems->update();
+    if (m_document->hasProblems()) {
+        showProjectWithProblems();
+        return;
+    }
     const Project &project = m_document->project();
     m_profileView->setClamping(project.clamping);
     m_profileView->setProfile(project.part, project.tolerances, project.datums);
@@ -368,6 +381,41 @@ void MainWindow::showProject()
     m_tolerances->showVerdicts(std::move(range.tolerances), machineAssumptionText(range, DataLibrary::builtIn()),
                                range.someSupportRigid);
     m_deflection->showResult(project, std::move(range.compliant), std::move(range.stiff));
+    m_planning->projectChanged();
+    updateSummary();
+    updateTitle();
+}
+
+void MainWindow::showProjectWithProblems()
+{
+    const Project &project = m_document->project();
+    const Diagnostics problems = m_document->problems();
+    auto under = [&problems](const QString &field) {
+        return std::any_of(problems.begin(), problems.end(),
+                           [&field](const Diagnostic &d) { return fieldCovers(field, d.field) || d.field.isEmpty(); });
+    };
+    const QString why = tr("Not computed: the project has %n problem(s), listed under Problems. Double-click one to "
+                           "go to its value.",
+                           nullptr, static_cast<int>(problems.size()));
+    // The drawing only of a sound profile; the annotations only where they are sound too.
+    if (under(QStringLiteral("part"))) {
+        m_profileView->clearProfile(why);
+    } else {
+        const bool annotations = !under(QStringLiteral("tolerances")) && !under(QStringLiteral("datums"));
+        m_profileView->setClamping(under(QStringLiteral("clamping")) ? std::nullopt
+                                                                     : std::optional<Clamping>(project.clamping));
+        m_profileView->setProfile(project.part, annotations ? project.tolerances : std::vector<Tolerance>{},
+                                  annotations ? project.datums : std::vector<Datum>{});
+    }
+    std::vector<ToleranceRangeEvaluation> rows(project.tolerances.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        rows[i].compliant.toleranceId = project.tolerances[i].id;
+        rows[i].compliant.type = project.tolerances[i].type;
+        rows[i].compliant.featureId = project.tolerances[i].featureId;
+        rows[i].compliant.reason = why;
+    }
+    m_tolerances->showVerdicts(std::move(rows), QString(), false);
+    m_deflection->clear(why);
     m_planning->projectChanged();
     updateSummary();
     updateTitle();
@@ -406,6 +454,15 @@ QString MainWindow::chooseReportFile(const QString &suggestedPath)
 QString MainWindow::autosaveFolder()
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
+}
+
+void MainWindow::createProblemsDock()
+{
+    m_problemsDock = new QDockWidget(tr("Problems"), this);
+    m_problemsDock->setObjectName(QStringLiteral("problemsDock"));
+    m_problemsDock->setWidget(m_problems->panel());
+    addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
+    m_problems->setDock(m_problemsDock);
 }
 
 void MainWindow::createImportDock()

@@ -17,6 +17,7 @@ struct Preferences;
 
 class DeflectionPanel;
 class DiagnosticsPanel;
+class ProblemNavigator;
 class Autosave;
 class FeaturePanel;
 class HelpBrowser;
@@ -45,6 +46,8 @@ public:
     [[nodiscard]] CadFileController *cadFiles() const { return m_cad; }
 
     [[nodiscard]] DiagnosticsPanel *importMessages() const { return m_importMessages; }
+
+    [[nodiscard]] ProblemNavigator *problems() const { return m_problems; }
 
     [[nodiscard]] ProfileView *profileView() const { return m_profileView; }
 
@@ -91,6 +94,9 @@ private:
     void showUserGuide();
     void createDocks();
     void createImportDock();
+    void createProblemsDock();
+    // A project with problems: what can be shown without computing, and why the rest is not.
+    void showProjectWithProblems();
     void showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics);
     void rebuildRecentMenu();
     void updateTitle();
@@ -110,6 +116,7 @@ private:
     SetupPanel *m_setup;
     FeaturePanel *m_feature;
     Autosave *m_autosave;
+    ProblemNavigator *m_problems;
     QMenu *m_recentMenu = nullptr;
     QToolBar *m_toolBar = nullptr;
     QLabel *m_summary;
@@ -119,6 +126,7 @@ private:
     QAction *m_saveAsAction = nullptr;
     QAction *m_exportStepAction = nullptr;
     QDockWidget *m_importDock = nullptr;
+    QDockWidget *m_problemsDock = nullptr;
 };
 
 } // namespace tolturn

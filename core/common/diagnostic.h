@@ -18,6 +18,8 @@ struct Diagnostic {
 
     // "field: message", the form printed by the CLI and shown in dialogs.
     [[nodiscard]] QString toString() const;
+
+    friend bool operator==(const Diagnostic &, const Diagnostic &) = default;
 };
 
 using Diagnostics = std::vector<Diagnostic>;

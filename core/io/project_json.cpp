@@ -6,7 +6,9 @@
 #include "core/project/project_validation.h"
 
 #include <QCoreApplication>
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <QRegularExpression>
 
 namespace tolturn {
 
@@ -548,16 +550,40 @@ ProjectParseResult parseProjectJson(const QByteArray &json)
         return result;
     }
     auto project = readProject(doc.object(), result.diagnostics);
-    if (!project || hasErrors(result.diagnostics))
+    if (!project)
         return result;
-    const Diagnostics semantic = validateProject(*project);
-    result.diagnostics.insert(result.diagnostics.end(), semantic.begin(), semantic.end());
-    if (!hasErrors(result.diagnostics))
+    if (!hasErrors(result.diagnostics)) {
+        const Diagnostics semantic = validateProject(*project);
+        result.diagnostics.insert(result.diagnostics.end(), semantic.begin(), semantic.end());
+    }
+    if (hasErrors(result.diagnostics))
+        result.repairable = std::move(project);
+    else
         result.project = std::move(project);
     return result;
 }
 
-QByteArray serializeProjectJson(const Project &p)
+QByteArray serializeProjectJson(const Project &project)
+{
+    return QJsonDocument(projectJsonObject(project)).toJson(QJsonDocument::Indented);
+}
+
+QJsonValue projectValueAt(const Project &project, const QString &field)
+{
+    // "part.outer[2].to.r_mm": keys separated by dots, list indices in brackets.
+    static const QRegularExpression step(QStringLiteral("([^.\\[\\]]+)|\\[(\\d+)\\]"));
+    QJsonValue value = projectJsonObject(project);
+    for (auto it = step.globalMatch(field); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        value =
+            m.captured(1).isEmpty() ? value.toArray().at(m.captured(2).toInt()) : value.toObject().value(m.captured(1));
+        if (value.isUndefined())
+            break;
+    }
+    return value;
+}
+
+QJsonObject projectJsonObject(const Project &p)
 {
     QJsonObject part{{QStringLiteral("stock_diameter_mm"), p.part.stockDiameter_mm},
                      {QStringLiteral("outer"), contourJson(p.part.outer)}};
@@ -615,7 +641,7 @@ QByteArray serializeProjectJson(const Project &p)
         insertOptional(environment, "time_since_start_min", p.environment.timeSinceStart_min);
         root.insert(QStringLiteral("environment"), environment);
     }
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+    return root;
 }
 
 } // namespace tolturn

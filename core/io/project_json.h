@@ -5,6 +5,8 @@
 #include "core/project/project.h"
 
 #include <QByteArray>
+#include <QJsonObject>
+#include <QJsonValue>
 
 #include <optional>
 
@@ -16,6 +18,11 @@ inline constexpr char kProjectFormatName[] = "tolturn-project";
 
 struct ProjectParseResult {
     std::optional<Project> project; // set only when there are no errors
+    // A TolTurn project with errors in its values, as far as it could be read (a value that could
+    // not be read is left at its default): for a program that lets the user repair it, never to
+    // compute with. Unset for a file that is not a TolTurn project (bad JSON, another format or
+    // version) and when `project` is set.
+    std::optional<Project> repairable;
     Diagnostics diagnostics;
 };
 
@@ -26,5 +33,10 @@ struct ProjectParseResult {
 
 // The document for a project, indented, with keys in a stable order.
 [[nodiscard]] QByteArray serializeProjectJson(const Project &project);
+[[nodiscard]] QJsonObject projectJsonObject(const Project &project);
+
+// The value a project would write at `field` (a finding's path, "part.outer[2].to.r_mm");
+// undefined where it writes none (an unset optional value, an index past the list).
+[[nodiscard]] QJsonValue projectValueAt(const Project &project, const QString &field);
 
 } // namespace tolturn

@@ -265,6 +265,7 @@ private Q_SLOTS:
     {
         const ProjectParseResult r = parseProjectJson("{\n  \"format\": \"tolturn-project\",\n  \"version\": 1,,\n}");
         QVERIFY(!r.project);
+        QVERIFY(!r.repairable);
         QCOMPARE(int(r.diagnostics.size()), 1);
         QVERIFY2(r.diagnostics[0].message.startsWith(QStringLiteral("invalid JSON at line 3, column ")),
                  qPrintable(r.diagnostics[0].message));
@@ -274,8 +275,51 @@ private Q_SLOTS:
     {
         const ProjectParseResult r = parseProjectJson("[1, 2]");
         QVERIFY(!r.project);
+        QVERIFY(!r.repairable);
         QCOMPARE(int(r.diagnostics.size()), 1);
         QVERIFY(r.diagnostics[0].message.contains(QStringLiteral("one JSON object")));
+    }
+
+    // Only a file that is not a TolTurn project is beyond repair: another format or version.
+    void otherFormatsAreNotRepairable()
+    {
+        for (const QByteArray &json :
+             {QByteArray(R"({"format": "other-app", "version": 1})"),
+              QByteArray(R"({"format": "tolturn-project", "version": 7})"), QByteArray(R"({"version": 1})")}) {
+            const ProjectParseResult r = parseProjectJson(json);
+            QVERIFY2(!r.project && !r.repairable, json.constData());
+        }
+        // A value of the wrong type is left at its default and the project offered for repair.
+        const ProjectParseResult typo =
+            parseProjectJson(edited(exampleJson(QStringLiteral("stepped-shaft-chuck.tolturn")),
+                                    {QStringLiteral("part.stock_diameter_mm=\"sixty\"")}));
+        QVERIFY(!typo.project);
+        QVERIFY(typo.repairable);
+        QCOMPARE(typo.repairable->part.stockDiameter_mm, 0.0);
+        QCOMPARE(typo.repairable->part.outer.segments.size(), std::size_t{11}); // the rest as in the file
+    }
+
+    // The value at a finding's path, as the file would hold it: the example's own numbers.
+    void valueAtAFindingsPath()
+    {
+        const ProjectParseResult r = readProjectFile(examplePath(QStringLiteral("stepped-shaft-chuck.tolturn")));
+        QVERIFY(r.project);
+        const QJsonObject json = exampleJson(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        const QJsonValue r3 = json.value(QStringLiteral("part"))
+                                  .toObject()
+                                  .value(QStringLiteral("outer"))
+                                  .toArray()
+                                  .at(2)
+                                  .toObject()
+                                  .value(QStringLiteral("to"))
+                                  .toObject()
+                                  .value(QStringLiteral("r_mm"));
+        QCOMPARE(projectValueAt(*r.project, QStringLiteral("part.outer[2].to.r_mm")), r3);
+        QCOMPARE(projectValueAt(*r.project, QStringLiteral("passes[1].feed_mm_rev")).toDouble(), 0.3);
+        QCOMPARE(projectValueAt(*r.project, QStringLiteral("material")).toString(),
+                 json.value(QStringLiteral("material")).toString());
+        QVERIFY(projectValueAt(*r.project, QStringLiteral("passes[99].feed_mm_rev")).isUndefined());
+        QVERIFY(projectValueAt(*r.project, QStringLiteral("part.no_such_field")).isUndefined());
     }
 
     void unknownFieldIsOnlyAWarning()
@@ -373,6 +417,9 @@ private Q_SLOTS:
         QFETCH(QString, fragment);
         const ProjectParseResult r = parseProjectJson(edited(exampleJson(example), edits));
         QVERIFY(!r.project);
+        // A TolTurn project with a wrong value is offered for repair (issue 13), never to compute
+        // with; a file of another format or version is not.
+        QCOMPARE(r.repairable.has_value(), field != QLatin1String("format") && field != QLatin1String("version"));
         const Diagnostics errors = errorsOf(r.diagnostics);
         QVERIFY2(errors.size() == 1, qPrintable(dump(r.diagnostics)));
         QCOMPARE(errors[0].field, field);

@@ -25,6 +25,10 @@ DiagnosticsPanel::DiagnosticsPanel(QWidget *parent) : QWidget(parent), m_heading
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_heading);
     layout->addWidget(m_table, 1);
+    connect(m_table, &QTableWidget::itemActivated, this, [this](const QTableWidgetItem *item) {
+        if (const QTableWidgetItem *where = m_table->item(item->row(), 1); where && !where->text().isEmpty())
+            Q_EMIT fieldActivated(where->text());
+    });
 }
 
 void DiagnosticsPanel::showDiagnostics(const QString &heading, const Diagnostics &diagnostics)

@@ -11,7 +11,8 @@ class QTableWidget;
 namespace tolturn {
 
 // A list of findings (errors and warnings, each with its field and message) under a heading,
-// e.g. what a STEP import left out of the profile. Copies as CSV.
+// e.g. what a STEP import left out of the profile. Copies as CSV; activating a row (double click,
+// Enter) names its field.
 class DiagnosticsPanel : public QWidget {
     Q_OBJECT
 public:
@@ -22,6 +23,9 @@ public:
     [[nodiscard]] QTableWidget *table() const { return m_table; }
 
     [[nodiscard]] QString heading() const;
+
+Q_SIGNALS:
+    void fieldActivated(const QString &field);
 
 private:
     QLabel *m_heading;

@@ -62,6 +62,7 @@ QString HelpBrowser::pageForDock(const QString &dockObjectName)
         {QStringLiteral("deflectionDock"), QStringLiteral("deflection.html")},
         {QStringLiteral("planningDock"), QStringLiteral("planning.html")},
         {QStringLiteral("importDock"), QStringLiteral("import-messages.html")},
+        {QStringLiteral("problemsDock"), QStringLiteral("problems.html")},
         {QStringLiteral("profileView"), QStringLiteral("drawing.html")},
     };
     const auto it = pagesByDock.find(dockObjectName);
@@ -70,9 +71,9 @@ QString HelpBrowser::pageForDock(const QString &dockObjectName)
 
 QStringList HelpBrowser::pages()
 {
-    return {QStringLiteral("index.html"),    QStringLiteral("drawing.html"),        QStringLiteral("setup.html"),
-            QStringLiteral("feature.html"),  QStringLiteral("tolerances.html"),     QStringLiteral("deflection.html"),
-            QStringLiteral("planning.html"), QStringLiteral("import-messages.html")};
+    return {QStringLiteral("index.html"),    QStringLiteral("drawing.html"),         QStringLiteral("setup.html"),
+            QStringLiteral("feature.html"),  QStringLiteral("tolerances.html"),      QStringLiteral("deflection.html"),
+            QStringLiteral("planning.html"), QStringLiteral("import-messages.html"), QStringLiteral("problems.html")};
 }
 
 } // namespace tolturn

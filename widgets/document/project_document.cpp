@@ -1,15 +1,32 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/document/project_document.h"
 
+#include "core/io/project_json.h"
 #include "core/project/project_validation.h"
 
 #include <QFileInfo>
+#include <QStringList>
 #include <QUndoCommand>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <utility>
 
 namespace tolturn {
+
+namespace {
+
+Diagnostics errorsOf(const Project &project)
+{
+    Diagnostics errors;
+    for (Diagnostic &d : validateProject(project)) {
+        if (d.severity == Severity::Error)
+            errors.push_back(std::move(d));
+    }
+    return errors;
+}
+
+} // namespace
 
 // One change of the tolerance list: the list before and after (tolerances are a handful of small
 // records; the rest of the project is not kept).
@@ -105,9 +122,15 @@ QString ProjectDocument::displayName() const
     return tr("Untitled");
 }
 
-void ProjectDocument::load(Project project, const QString &filePath)
+void ProjectDocument::load(Project project, const QString &filePath, const Diagnostics &readProblems)
 {
     m_project = std::move(project);
+    const Diagnostics seenNow = errorsOf(m_project);
+    m_readProblems.clear();
+    for (const Diagnostic &d : readProblems) {
+        if (d.severity == Severity::Error && std::find(seenNow.begin(), seenNow.end(), d) == seenNow.end())
+            m_readProblems.push_back({d, projectValueAt(m_project, d.field)});
+    }
     m_hasProject = true;
     const bool pathChanged = m_filePath != filePath;
     m_filePath = filePath;
@@ -121,6 +144,7 @@ void ProjectDocument::load(Project project, const QString &filePath)
 void ProjectDocument::clear()
 {
     m_project = Project{};
+    m_readProblems.clear();
     m_hasProject = false;
     m_filePath.clear();
     m_undoStack->clear();
@@ -141,16 +165,40 @@ void ProjectDocument::markSaved(const QString &filePath)
     m_undoStack->setClean();
     if (pathChanged)
         Q_EMIT filePathChanged(m_filePath);
+    if (!m_readProblems.empty()) { // the file now holds the values shown, not the unreadable ones
+        m_readProblems.clear();
+        Q_EMIT projectChanged();
+    }
+}
+
+Diagnostics ProjectDocument::problems() const
+{
+    if (!m_hasProject)
+        return {};
+    Diagnostics all;
+    for (const ReadProblem &r : m_readProblems) {
+        // A value that could not be read stays a problem until the user gives the field a value.
+        if (projectValueAt(m_project, r.diagnostic.field) == r.valueAsRead)
+            all.push_back(r.diagnostic);
+    }
+    const Diagnostics now = errorsOf(m_project);
+    all.insert(all.end(), now.begin(), now.end());
+    return all;
 }
 
 Diagnostics ProjectDocument::check(const Project &candidate) const
 {
-    Diagnostics errors;
-    for (const Diagnostic &d : validateProject(candidate)) {
-        if (d.severity == Severity::Error)
-            errors.push_back(d);
+    // Problems are matched by their text, not their field: an edit that renumbers features or
+    // tolerances moves a problem the project already had to another index without adding one.
+    QStringList before;
+    for (const Diagnostic &d : errorsOf(m_project))
+        before << d.message;
+    Diagnostics added;
+    for (Diagnostic &d : errorsOf(candidate)) {
+        if (!before.removeOne(d.message))
+            added.push_back(std::move(d));
     }
-    return errors;
+    return added;
 }
 
 Diagnostics ProjectDocument::addTolerance(const Tolerance &tolerance)

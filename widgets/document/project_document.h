@@ -4,6 +4,7 @@
 #include "core/common/diagnostic.h"
 #include "core/project/project.h"
 
+#include <QJsonValue>
 #include <QObject>
 #include <QString>
 
@@ -33,8 +34,11 @@ public:
 
     [[nodiscard]] QUndoStack *undoStack() const { return m_undoStack; }
 
-    // Replaces the whole document, e.g. after a successful open. Not an edit: clears the history.
-    void load(Project project, const QString &filePath);
+    // Replaces the whole document, e.g. after an open. Not an edit: clears the history.
+    // `readProblems` are the errors of a file opened to be repaired (ProjectParseResult::repairable):
+    // those validateProject() cannot see again, such as a value that could not be read and was left
+    // at its default, stay in problems() until the field is given a value or the document is saved.
+    void load(Project project, const QString &filePath, const Diagnostics &readProblems = {});
     // Empties the document (File > Close).
     void clear();
     // Marks a document restored from an autosave copy as modified: it differs from its file.
@@ -42,8 +46,16 @@ public:
     // Records that the document now lives in (was just saved to) `filePath`.
     void markSaved(const QString &filePath);
 
-    // Edits. Each checks the project that would result (validateProject) and, when it has errors,
-    // changes nothing and returns them; otherwise it is pushed on the undo stack.
+    // What stops the project from being computed: the errors found when it was read and those of
+    // validateProject() now. Empty for a sound project; a file with problems is opened to be
+    // repaired one value at a time, and nothing is computed until this is empty.
+    [[nodiscard]] Diagnostics problems() const;
+
+    [[nodiscard]] bool hasProblems() const { return !problems().empty(); }
+
+    // Edits. Each checks the project that would result (validateProject) and, when that has errors
+    // the project did not have before, changes nothing and returns them; otherwise it is pushed on
+    // the undo stack. A project opened with problems can so be repaired in any order.
     Diagnostics addTolerance(const Tolerance &tolerance);
     Diagnostics replaceTolerance(int index, const Tolerance &tolerance);
     Diagnostics removeTolerance(int index);
@@ -80,6 +92,13 @@ private:
     Diagnostics editField(T Project::*field, const T &value, const QString &description);
 
     Project m_project;
+
+    struct ReadProblem {
+        Diagnostic diagnostic;
+        QJsonValue valueAsRead; // the field's value as the document holds it after the read
+    };
+
+    std::vector<ReadProblem> m_readProblems;
     bool m_hasProject = false;
     QString m_filePath;
     QUndoStack *m_undoStack;

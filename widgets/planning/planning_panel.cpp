@@ -102,7 +102,7 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     buildControls();
     connect(&m_watcher, &QFutureWatcher<PlanningReport>::finished, this, [this] {
         m_report = std::make_unique<PlanningReport>(m_watcher.result());
-        m_run->setEnabled(true);
+        m_run->setEnabled(!m_document.hasProblems());
         m_cancel->setEnabled(false);
         m_progress->setValue(m_report->cancelled ? 0 : 100);
         showReport();
@@ -224,6 +224,18 @@ void PlanningPanel::projectChanged()
 {
     if (!m_document.hasProject())
         return;
+    const bool computable = !m_document.hasProblems();
+    m_run->setEnabled(computable && !isRunning());
+    m_export->setEnabled(computable);
+    if (!computable) {
+        m_report.reset(); // a plan of the project as it was before the problem
+        m_apply->setEnabled(false);
+        m_plan->setText(problemsText());
+        m_compensation->setRowCount(0);
+        m_gcodeConditions->setText(problemsText());
+        m_gcode->clear();
+        return;
+    }
     const PlanningSettings &s = m_document.project().planning;
     m_updatingControls = true;
     m_objective->setCurrentIndex(m_objective->findData(static_cast<int>(s.objective)));
@@ -245,6 +257,12 @@ void PlanningPanel::projectChanged()
     if (!m_report && !isRunning())
         m_plan->setText(notRunText());
     showFinishing();
+}
+
+QString PlanningPanel::problemsText()
+{
+    return tr("The project has problems (listed under Problems): nothing is planned or programmed until they are "
+              "repaired.");
 }
 
 QString PlanningPanel::notRunText()
@@ -289,7 +307,7 @@ bool PlanningPanel::isRunning() const
 
 void PlanningPanel::optimise()
 {
-    if (isRunning() || !m_document.hasProject())
+    if (isRunning() || !m_document.hasProject() || m_document.hasProblems())
         return;
     m_fraction = std::make_shared<std::atomic<double>>(0.0);
     m_stop = std::make_shared<std::atomic<bool>>(false);
@@ -507,7 +525,7 @@ void PlanningPanel::showClamping()
 
 void PlanningPanel::showFinishing()
 {
-    if (!m_document.hasProject())
+    if (!m_document.hasProject() || m_document.hasProblems())
         return;
     GCodeOptions options;
     if (m_dialect->currentData().isValid())

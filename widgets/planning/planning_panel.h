@@ -66,6 +66,8 @@ public:
 
     // The Plan tab's text before the first run.
     [[nodiscard]] static QString notRunText();
+    // Shown instead of the plan and the program while the project has problems to repair.
+    [[nodiscard]] static QString problemsText();
 
 Q_SIGNALS:
     void finished(); // a run ended, completed or cancelled

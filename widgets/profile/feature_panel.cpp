@@ -4,6 +4,7 @@
 #include "core/common/diagnostic.h"
 #include "core/project/keywords.h"
 #include "widgets/common/length_spin_box.h"
+#include "widgets/common/project_fields.h"
 #include "widgets/document/project_document.h"
 
 #include <QFormLayout>
@@ -154,10 +155,20 @@ void FeaturePanel::showFeature()
     setEnabled(ref.has_value());
     if (!ref) {
         m_title->setText(tr("Click a feature of the drawing to edit it."));
+        setProjectField(*this, QString());
         return;
     }
     const Segment &s = *ref->segment;
     m_updating = true;
+    const QString field = QStringLiteral("part.%1[%2]")
+                              .arg(ref->side == ContourSide::Outer ? QStringLiteral("outer") : QStringLiteral("inner"))
+                              .arg(ref->index);
+    setProjectField(*this, field);
+    setProjectField(*m_startZ, field + QStringLiteral(".from.z_mm"));
+    setProjectField(*m_startD, field + QStringLiteral(".from.r_mm"));
+    setProjectField(*m_endZ, field + QStringLiteral(".to.z_mm"));
+    setProjectField(*m_endD, field + QStringLiteral(".to.r_mm"));
+    markFindings(*this, m_document.problems());
     m_title->setText(
         tr("<b>%1</b> %2 — %3, %4 contour").arg(s.id, s.name, displayName(s.kind), contourName(ref->side)));
     m_startZ->setMillimetres(s.from.z_mm);

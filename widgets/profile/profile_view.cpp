@@ -242,7 +242,7 @@ void ProfileView::drawForeground(QPainter *painter, const QRectF &rect)
     font.setPointSizeF(font.pointSizeF() * 1.1);
     painter->setFont(font);
     painter->drawText(viewport()->rect().adjusted(24, 24, -24, -24), Qt::AlignCenter | Qt::TextWordWrap,
-                      emptyStateText());
+                      m_placeholder.isEmpty() ? emptyStateText() : m_placeholder);
     painter->restore();
 }
 
@@ -258,8 +258,9 @@ void ProfileView::setClamping(const std::optional<Clamping> &clamping)
         selectFeature(selected);
 }
 
-void ProfileView::clearProfile()
+void ProfileView::clearProfile(const QString &placeholder)
 {
+    m_placeholder = placeholder;
     m_dragged = nullptr;
     m_profile = PartProfile{};
     m_tolerances.clear();

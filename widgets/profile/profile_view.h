@@ -19,7 +19,8 @@ public:
     // Draws the part, with its tolerances and datums annotated when given.
     void setProfile(const PartProfile &profile, const std::vector<Tolerance> &tolerances = {},
                     const std::vector<Datum> &datums = {});
-    void clearProfile();
+    // No part drawn; `placeholder` is said instead (by default emptyStateText()).
+    void clearProfile(const QString &placeholder = QString());
     // How the part is held, drawn with it (jaws, centres, tailstock); unset: not drawn.
     void setClamping(const std::optional<Clamping> &clamping);
     void fitPart();
@@ -75,6 +76,7 @@ private:
     std::optional<Clamping> m_clamping;
     double m_rowPitch_mm = 0.0; // between rows of length dimensions, for their labels at this zoom
     QString m_selected;
+    QString m_placeholder;
 };
 
 } // namespace tolturn

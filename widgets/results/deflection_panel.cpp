@@ -54,6 +54,7 @@ DeflectionPanel::DeflectionPanel(QWidget *parent)
     controls->addWidget(m_quantityBox);
     controls->addStretch();
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_summary->setObjectName(QStringLiteral("deflectionSummary"));
     m_notes->setWordWrap(true);
     m_notes->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_notes->setStyleSheet(QStringLiteral("color: #555;"));
@@ -83,14 +84,15 @@ void DeflectionPanel::showResult(const Project &project, DeviationResult result,
     redraw();
 }
 
-void DeflectionPanel::clear()
+void DeflectionPanel::clear(const QString &why)
 {
     m_result = {};
     m_stiffEnd.reset();
     m_plot->clear();
     m_plot->rescaleAndReplot();
     m_plot->setVisible(false); // empty axes would say nothing
-    m_summary->setText(tr("The predicted deviation of every feature appears here once a part is open."));
+    m_summary->setText(why.isEmpty() ? tr("The predicted deviation of every feature appears here once a part is open.")
+                                     : why);
     m_notes->clear();
 }
 

@@ -42,7 +42,8 @@ public:
     // The band of the total radial deviation.
     static double totalRadial_mm(const Station &st) { return st.radial.total_mm(); }
 
-    void clear();
+    // No result: the plot hidden and `why` said (by default, that no part is open).
+    void clear(const QString &why = QString());
 
     void setSide(ContourSide side);
     void setQuantity(Quantity quantity);

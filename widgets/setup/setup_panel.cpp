@@ -7,6 +7,7 @@
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 #include "widgets/common/length_spin_box.h"
+#include "widgets/common/project_fields.h"
 #include "widgets/document/project_document.h"
 #include "widgets/setup/stiffness_editor.h"
 
@@ -31,6 +32,9 @@ namespace tolturn {
 namespace {
 
 enum PassColumn { kSpeed = 0, kFeed = 1, kDepth = 2 };
+
+// The project file's keys of the pass columns, the fields findings name.
+constexpr std::array<const char *, 3> kPassKeys{"cutting_speed_m_min", "feed_mm_rev", "depth_of_cut_mm"};
 
 QString sourced(const DataLibrary &data, const QString &what, const SourcedValue &v)
 {
@@ -126,6 +130,14 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
         box->setMinimumContentsLength(14);
     }
     fillChoices();
+    setProjectField(*m_material, QStringLiteral("material"));
+    setProjectField(*m_machine, QStringLiteral("machine"));
+    setProjectField(*m_stiffness, QStringLiteral("characterisation"));
+    setProjectField(*m_insert, QStringLiteral("tool.insert"));
+    setProjectField(*m_holder, QStringLiteral("tool.holder"));
+    setProjectField(*m_overhang, QStringLiteral("tool.overhang_mm"));
+    setProjectField(*m_clamping, QStringLiteral("clamping.method"));
+    setProjectField(*m_clampedLength, QStringLiteral("clamping.clamped_length_mm"));
     connect(&m_document, &ProjectDocument::projectChanged, this, &SetupPanel::projectChanged);
     projectChanged();
 }
@@ -161,12 +173,22 @@ QWidget *SetupPanel::createDrawingGroup()
     m_partName->setObjectName(QStringLiteral("partName"));
     m_drawingNumber->setObjectName(QStringLiteral("drawingNumber"));
     m_revision->setObjectName(QStringLiteral("drawingRevision"));
+    m_stockDiameter = new LengthSpinBox(
+        10000.0, tr("Diameter of the bar the part is turned from: the roughing passes remove the stock between it and "
+                    "the profile."));
+    m_stockDiameter->setObjectName(QStringLiteral("stockDiameter"));
     m_drawingNumber->setToolTip(tr("The number of the part drawing the tolerances come from (report title block)"));
     form->addRow(tr("&Name:"), m_partName);
     form->addRow(tr("&Drawing no.:"), m_drawingNumber);
     form->addRow(tr("&Revision:"), m_revision);
+    form->addRow(tr("&Stock Ø:"), m_stockDiameter);
     for (QLineEdit *edit : {m_partName, m_drawingNumber, m_revision})
         connect(edit, &QLineEdit::editingFinished, this, &SetupPanel::applyDrawing);
+    connect(m_stockDiameter, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyDrawing);
+    setProjectField(*m_partName, QStringLiteral("part.name"));
+    setProjectField(*m_drawingNumber, QStringLiteral("part.drawing_number"));
+    setProjectField(*m_revision, QStringLiteral("part.revision"));
+    setProjectField(*m_stockDiameter, QStringLiteral("part.stock_diameter_mm"));
     return group;
 }
 
@@ -178,9 +200,10 @@ void SetupPanel::applyDrawing()
     part.name = m_partName->text().trimmed();
     part.drawingNumber = m_drawingNumber->text().trimmed();
     part.revision = m_revision->text().trimmed();
+    part.stockDiameter_mm = m_stockDiameter->millimetres();
     if (part == m_document.project().part)
         return;
-    showOutcome(m_document.setPart(part, tr("Change part name and drawing")));
+    showOutcome(m_document.setPart(part, tr("Change part name, drawing or stock")));
 }
 
 QWidget *SetupPanel::createToolGroup()
@@ -256,13 +279,16 @@ void SetupPanel::rebuildPassRows(int count)
             spinBox(0.001, 5.0, 3, QString(),
                     tr("Feed f: chip thickness h = f sin κr (Kienzle); Ra ≈ f² / (32 rε) (MODEL.md §2).")),
             spinBox(0.001, 50.0, 3, QString(), tr("Depth of cut ap: chip width b = ap / sin κr (Kienzle)."))};
-        for (QDoubleSpinBox *box : boxes)
-            box->setProperty("baseToolTip", box->toolTip());
         auto *label = new QLabel;
         m_passGrid->addWidget(label, row, 0);
         for (int c = 0; c < 3; ++c) {
             m_passGrid->addWidget(boxes[static_cast<std::size_t>(c)], row, 1 + c);
-            connect(boxes[static_cast<std::size_t>(c)], &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyPasses);
+            QDoubleSpinBox *box = boxes[static_cast<std::size_t>(c)];
+            setProjectField(*box, QStringLiteral("passes[%1].%2")
+                                      .arg(row - 1)
+                                      .arg(QLatin1String(kPassKeys[static_cast<std::size_t>(c)])));
+            connect(box, &QDoubleSpinBox::valueChanged, this,
+                    [this, pass = static_cast<std::size_t>(row - 1), c] { applyPassValue(pass, c); });
         }
         m_passBoxes.push_back(std::move(boxes));
         m_passLabels.push_back(label);
@@ -293,6 +319,7 @@ void SetupPanel::showValues()
     m_partName->setText(p.part.name);
     m_drawingNumber->setText(p.part.drawingNumber);
     m_revision->setText(p.part.revision);
+    m_stockDiameter->setMillimetres(p.part.stockDiameter_mm);
     selectData(m_material, p.materialId);
     selectData(m_machine, p.machineId);
     selectData(m_holder, p.tool.holderCode);
@@ -311,39 +338,26 @@ void SetupPanel::showValues()
     rebuildPassRows(static_cast<int>(p.passes.size()));
     for (std::size_t i = 0; i < p.passes.size(); ++i) {
         const CuttingPass &pass = p.passes[i];
-        m_passLabels[i]->setText(tr("%1 %2").arg(i).arg(keyword(pass.kind)));
+        m_passLabels[i]->setText(
+            tr("%1 %2").arg(i + 1).arg(pass.kind == PassKind::Roughing ? tr("roughing") : tr("finishing")));
         m_passBoxes[i][kSpeed]->setValue(pass.cuttingSpeed_m_min);
         m_passBoxes[i][kFeed]->setValue(pass.feed_mm_rev);
         m_passBoxes[i][kDepth]->setValue(pass.depthOfCut_mm);
     }
-    markImplausiblePasses();
+    markFindings();
     showMachineStiffness();
     m_stiffness->showCharacterisation(p.characterisation);
     m_updating = false;
 }
 
-// Cutting conditions outside the insert's published ranges or the machine's limits
-// (checkPlausibility) are marked on their box, with the reason in its tooltip.
-void SetupPanel::markImplausiblePasses()
+void SetupPanel::markFindings()
 {
-    const Diagnostics findings = checkPlausibility(m_document.project(), DataLibrary::builtIn());
-    const std::array<QLatin1String, 3> keys{QLatin1String("cutting_speed_m_min"), QLatin1String("feed_mm_rev"),
-                                            QLatin1String("depth_of_cut_mm")};
-    for (std::size_t i = 0; i < m_passBoxes.size(); ++i) {
-        for (std::size_t c = 0; c < keys.size(); ++c) {
-            QDoubleSpinBox *box = m_passBoxes[i][c];
-            const QString field = QStringLiteral("passes[%1].%2").arg(i).arg(keys[c]);
-            QStringList reasons;
-            for (const Diagnostic &d : findings) {
-                if (d.field == field)
-                    reasons << d.message;
-            }
-            box->setStyleSheet(reasons.isEmpty() ? QString()
-                                                 : QStringLiteral("QDoubleSpinBox { background: #ffe8a3; }"));
-            box->setToolTip(box->property("baseToolTip").toString() +
-                            (reasons.isEmpty() ? QString() : QStringLiteral("\n\n") + reasons.join(QLatin1Char('\n'))));
-        }
+    Diagnostics findings = m_document.problems();
+    if (findings.empty()) {
+        const Diagnostics plausibility = checkPlausibility(m_document.project(), DataLibrary::builtIn());
+        findings.insert(findings.end(), plausibility.begin(), plausibility.end());
     }
+    tolturn::markFindings(*this, findings);
 }
 
 void SetupPanel::showMachineStiffness()
@@ -393,7 +407,9 @@ void SetupPanel::applyTool()
     Tool tool = m_document.project().tool;
     tool.insertCode = insert.insert->code;
     tool.holderCode = m_holder->currentData().toString();
-    tool.overhang_mm = m_overhang->value() > 0.0 ? std::optional<double>(m_overhang->millimetres()) : std::nullopt;
+    // millimetres() keeps a value the box cannot show (a negative one from a file to be repaired).
+    const double overhang_mm = m_overhang->millimetres();
+    tool.overhang_mm = overhang_mm != 0.0 ? std::optional<double>(overhang_mm) : std::nullopt;
     showOutcome(m_document.setTool(tool));
 }
 
@@ -415,16 +431,16 @@ void SetupPanel::applyClamping()
     showOutcome(m_document.setClamping(clamping));
 }
 
-void SetupPanel::applyPasses()
+// Only the value the user changed: another pass's box may show a value the project holds
+// outside the box's range (a file opened to be repaired), which must not be written back.
+void SetupPanel::applyPassValue(std::size_t pass, int column)
 {
-    if (m_updating)
+    if (m_updating || pass >= m_document.project().passes.size())
         return;
     std::vector<CuttingPass> passes = m_document.project().passes;
-    for (std::size_t i = 0; i < passes.size() && i < m_passBoxes.size(); ++i) {
-        passes[i].cuttingSpeed_m_min = m_passBoxes[i][kSpeed]->value();
-        passes[i].feed_mm_rev = m_passBoxes[i][kFeed]->value();
-        passes[i].depthOfCut_mm = m_passBoxes[i][kDepth]->value();
-    }
+    const double value = m_passBoxes[pass][static_cast<std::size_t>(column)]->value();
+    CuttingPass &p = passes[pass];
+    (column == kSpeed ? p.cuttingSpeed_m_min : column == kFeed ? p.feed_mm_rev : p.depthOfCut_mm) = value;
     showOutcome(m_document.setPasses(passes, tr("Change cutting conditions")));
 }
 

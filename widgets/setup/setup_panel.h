@@ -5,6 +5,7 @@
 
 #include <QWidget>
 
+#include <cstddef>
 #include <vector>
 
 class QComboBox;
@@ -60,7 +61,9 @@ public:
     [[nodiscard]] QString message() const;
 
 private:
-    void markImplausiblePasses();
+    // Marks the boxes of values with problems (red) or outside the insert's published ranges or
+    // the machine's limits (amber, checkPlausibility), with the reason in the tooltip.
+    void markFindings();
     QWidget *createPartGroup();
     QWidget *createDrawingGroup();
     void applyDrawing();
@@ -76,7 +79,7 @@ private:
     void applyMachine();
     void applyTool();
     void applyClamping();
-    void applyPasses();
+    void applyPassValue(std::size_t pass, int column);
     void applyStiffness();
     // Shows the outcome of an edit: the errors of a refused one (and the document's values again).
     void showOutcome(const Diagnostics &diagnostics);
@@ -91,6 +94,7 @@ private:
     QLineEdit *m_partName = nullptr;
     QLineEdit *m_drawingNumber = nullptr;
     QLineEdit *m_revision = nullptr;
+    LengthSpinBox *m_stockDiameter = nullptr;
     QLineEdit *m_insert;
     QLabel *m_insertDecoded;
     QComboBox *m_holder;

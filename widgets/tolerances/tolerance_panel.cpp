@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/tolerances/tolerance_panel.h"
 
+#include "widgets/common/project_fields.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/document/project_document.h"
 #include "widgets/tolerances/tolerance_dialog.h"
@@ -62,6 +63,8 @@ TolerancePanel::TolerancePanel(ProjectDocument &document, QWidget *parent)
         if (index.isValid())
             Q_EMIT featureActivated(index.data(ToleranceVerdictModel::FeatureIdRole).toString());
     });
+    setProjectField(*m_table, QStringLiteral("tolerances"));
+    setProjectField(*m_datum, QStringLiteral("datums"));
     updateButtons();
 }
 
@@ -91,6 +94,12 @@ void TolerancePanel::showVerdicts(std::vector<ToleranceRangeEvaluation> verdicts
     if (row >= 0 && row < m_model->rowCount())
         m_table->selectRow(row);
     updateButtons();
+}
+
+void TolerancePanel::selectTolerance(int index)
+{
+    if (index >= 0 && index < m_model->rowCount())
+        m_table->selectRow(index);
 }
 
 void TolerancePanel::setSelectedFeature(const QString &featureId)

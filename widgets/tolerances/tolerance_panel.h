@@ -30,6 +30,8 @@ public:
     [[nodiscard]] QLabel *banner() const { return m_banner; }
 
     void setSelectedFeature(const QString &featureId);
+    // Selects the row of the project's tolerance `index` (the order of the file and the table).
+    void selectTolerance(int index);
 
     [[nodiscard]] ToleranceVerdictModel *model() const { return m_model; }
 
