@@ -1844,6 +1844,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>give both Taylor constants C and n, or neither</source>
         <translation>beide Taylor-Konstanten C und n angeben oder keine</translation>
     </message>
+    <message>
+        <source>must be above absolute zero (-273.15 °C), but is %1 °C</source>
+        <translation>muss über dem absoluten Nullpunkt (-273,15 °C) liegen, ist aber %1 °C</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -3341,6 +3345,105 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>tolturn::ForceModelEditor</name>
+    <message>
+        <source>Force model and shop conditions</source>
+        <translation>Kraftmodell und Werkstattbedingungen</translation>
+    </message>
+    <message>
+        <source>Kienzle</source>
+        <translation>Kienzle</translation>
+    </message>
+    <message>
+        <source>Li &amp; Du</source>
+        <translation>Li &amp; Du</translation>
+    </message>
+    <message>
+        <source>material&apos;s</source>
+        <translation>des Werkstoffs</translation>
+    </message>
+    <message>
+        <source>not fitted</source>
+        <translation>nicht angepasst</translation>
+    </message>
+    <message>
+        <source>not given: 20 °C</source>
+        <translation>nicht angegeben: 20 °C</translation>
+    </message>
+    <message>
+        <source>not given: 0 (cold start)</source>
+        <translation>nicht angegeben: 0 (Kaltstart)</translation>
+    </message>
+    <message>
+        <source> MPa</source>
+        <translation> MPa</translation>
+    </message>
+    <message>
+        <source> °C</source>
+        <translation> °C</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>F_f/F_c for the Kienzle model, replacing the material data&apos;s ratio</source>
+        <translation>F_f/F_c für das Kienzle-Modell, ersetzt das Verhältnis der Werkstoffdaten</translation>
+    </message>
+    <message>
+        <source>F_p/F_c for the Kienzle model, replacing the material data&apos;s ratio</source>
+        <translation>F_p/F_c für das Kienzle-Modell, ersetzt das Verhältnis der Werkstoffdaten</translation>
+    </message>
+    <message>
+        <source>Ambient temperature of the shop, for the thermal drift (not given: the ISO 1 reference temperature, 20 °C)</source>
+        <translation>Umgebungstemperatur der Werkstatt, für die thermische Drift (nicht angegeben: die Bezugstemperatur nach ISO 1, 20 °C)</translation>
+    </message>
+    <message>
+        <source>Time since the machine was started, for the thermal warm-up (not given: a cold machine, 0 min)</source>
+        <translation>Zeit seit dem Einschalten der Maschine, für die Erwärmung (nicht angegeben: kalte Maschine, 0 min)</translation>
+    </message>
+    <message>
+        <source>&amp;Model:</source>
+        <translation>&amp;Modell:</translation>
+    </message>
+    <message>
+        <source>F_f/F_c:</source>
+        <translation>F_f/F_c:</translation>
+    </message>
+    <message>
+        <source>F_p/F_c:</source>
+        <translation>F_p/F_c:</translation>
+    </message>
+    <message>
+        <source>K_n:</source>
+        <translation>K_n:</translation>
+    </message>
+    <message>
+        <source>K_f:</source>
+        <translation>K_f:</translation>
+    </message>
+    <message>
+        <source>Ambient:</source>
+        <translation>Umgebung:</translation>
+    </message>
+    <message>
+        <source>Since start:</source>
+        <translation>Seit Start:</translation>
+    </message>
+    <message>
+        <source>Kienzle: F_c from kc1.1 and mc of the material, F_f and F_p as ratios of it. Li &amp; Du (2002, eq. 15–20): normal pressure K_n and friction ratio K_f fitted to measured forces (tolturn-cli calibrate-forces).</source>
+        <translation>Kienzle: F_c aus kc1.1 und mc des Werkstoffs, F_f und F_p als Verhältnisse dazu. Li &amp; Du (2002, Gl. 15–20): Normaldruck K_n und Reibungsverhältnis K_f, an gemessene Kräfte angepasst (tolturn-cli calibrate-forces).</translation>
+    </message>
+    <message>
+        <source>K_n of Li &amp; Du (2002): normal pressure on the rake face</source>
+        <translation>K_n nach Li &amp; Du (2002): Normaldruck auf der Spanfläche</translation>
+    </message>
+    <message>
+        <source>K_f of Li &amp; Du (2002): friction force over normal force</source>
+        <translation>K_f nach Li &amp; Du (2002): Reibkraft durch Normalkraft</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::HelpBrowser</name>
     <message>
         <source>TolTurn User Guide</source>
@@ -4310,6 +4413,14 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Change machine stiffness</source>
         <translation>Maschinensteifigkeit ändern</translation>
+    </message>
+    <message>
+        <source>Change force model</source>
+        <translation>Kraftmodell ändern</translation>
+    </message>
+    <message>
+        <source>Change shop conditions</source>
+        <translation>Werkstattbedingungen ändern</translation>
     </message>
 </context>
 <context>

@@ -1844,6 +1844,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>give both Taylor constants C and n, or neither</source>
         <translation>indique las dos constantes de Taylor C y n, o ninguna</translation>
     </message>
+    <message>
+        <source>must be above absolute zero (-273.15 °C), but is %1 °C</source>
+        <translation>debe estar por encima del cero absoluto (-273,15 °C), pero es %1 °C</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -3341,6 +3345,105 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>tolturn::ForceModelEditor</name>
+    <message>
+        <source>Force model and shop conditions</source>
+        <translation>Modelo de fuerzas y condiciones del taller</translation>
+    </message>
+    <message>
+        <source>Kienzle</source>
+        <translation>Kienzle</translation>
+    </message>
+    <message>
+        <source>Li &amp; Du</source>
+        <translation>Li &amp; Du</translation>
+    </message>
+    <message>
+        <source>material&apos;s</source>
+        <translation>del material</translation>
+    </message>
+    <message>
+        <source>not fitted</source>
+        <translation>sin ajustar</translation>
+    </message>
+    <message>
+        <source>not given: 20 °C</source>
+        <translation>no indicada: 20 °C</translation>
+    </message>
+    <message>
+        <source>not given: 0 (cold start)</source>
+        <translation>no indicado: 0 (arranque en frío)</translation>
+    </message>
+    <message>
+        <source> MPa</source>
+        <translation> MPa</translation>
+    </message>
+    <message>
+        <source> °C</source>
+        <translation> °C</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>F_f/F_c for the Kienzle model, replacing the material data&apos;s ratio</source>
+        <translation>F_f/F_c para el modelo de Kienzle, en lugar de la proporción de los datos del material</translation>
+    </message>
+    <message>
+        <source>F_p/F_c for the Kienzle model, replacing the material data&apos;s ratio</source>
+        <translation>F_p/F_c para el modelo de Kienzle, en lugar de la proporción de los datos del material</translation>
+    </message>
+    <message>
+        <source>Ambient temperature of the shop, for the thermal drift (not given: the ISO 1 reference temperature, 20 °C)</source>
+        <translation>Temperatura ambiente del taller, para la deriva térmica (no indicada: la temperatura de referencia de ISO 1, 20 °C)</translation>
+    </message>
+    <message>
+        <source>Time since the machine was started, for the thermal warm-up (not given: a cold machine, 0 min)</source>
+        <translation>Tiempo desde que se arrancó la máquina, para el calentamiento (no indicado: máquina fría, 0 min)</translation>
+    </message>
+    <message>
+        <source>&amp;Model:</source>
+        <translation>&amp;Modelo:</translation>
+    </message>
+    <message>
+        <source>F_f/F_c:</source>
+        <translation>F_f/F_c:</translation>
+    </message>
+    <message>
+        <source>F_p/F_c:</source>
+        <translation>F_p/F_c:</translation>
+    </message>
+    <message>
+        <source>K_n:</source>
+        <translation>K_n:</translation>
+    </message>
+    <message>
+        <source>K_f:</source>
+        <translation>K_f:</translation>
+    </message>
+    <message>
+        <source>Ambient:</source>
+        <translation>Ambiente:</translation>
+    </message>
+    <message>
+        <source>Since start:</source>
+        <translation>Desde el arranque:</translation>
+    </message>
+    <message>
+        <source>Kienzle: F_c from kc1.1 and mc of the material, F_f and F_p as ratios of it. Li &amp; Du (2002, eq. 15–20): normal pressure K_n and friction ratio K_f fitted to measured forces (tolturn-cli calibrate-forces).</source>
+        <translation>Kienzle: F_c a partir de kc1.1 y mc del material, F_f y F_p como proporciones de ella. Li &amp; Du (2002, ec. 15–20): presión normal K_n y relación de fricción K_f ajustadas a fuerzas medidas (tolturn-cli calibrate-forces).</translation>
+    </message>
+    <message>
+        <source>K_n of Li &amp; Du (2002): normal pressure on the rake face</source>
+        <translation>K_n de Li &amp; Du (2002): presión normal sobre la cara de desprendimiento</translation>
+    </message>
+    <message>
+        <source>K_f of Li &amp; Du (2002): friction force over normal force</source>
+        <translation>K_f de Li &amp; Du (2002): fuerza de fricción entre fuerza normal</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::HelpBrowser</name>
     <message>
         <source>TolTurn User Guide</source>
@@ -4310,6 +4413,14 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Change machine stiffness</source>
         <translation>Cambiar rigidez de la máquina</translation>
+    </message>
+    <message>
+        <source>Change force model</source>
+        <translation>Cambiar modelo de fuerzas</translation>
+    </message>
+    <message>
+        <source>Change shop conditions</source>
+        <translation>Cambiar condiciones del taller</translation>
     </message>
 </context>
 <context>

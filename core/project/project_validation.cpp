@@ -313,7 +313,18 @@ void checkCharacterisation(const Project &p, Diagnostics &out)
     requireNonNegative(c.pivotDistance_mm, QStringLiteral("characterisation.pivot_distance_mm"), out);
     if (c.thermal)
         requirePositive(c.thermal->timeConstant_min, QStringLiteral("characterisation.thermal.time_constant_min"), out);
-    requireNonNegative(p.environment.timeSinceStart_min, QStringLiteral("environment.time_since_start_min"), out);
+}
+
+// Checked with or without a thermal characterisation: the values are the shop's, kept in the file.
+void checkEnvironment(const Environment &e, Diagnostics &out)
+{
+    requireNonNegative(e.timeSinceStart_min, QStringLiteral("environment.time_since_start_min"), out);
+    constexpr double kAbsoluteZero_C = -273.15; // ITS-90 / SI: 0 K
+    if (e.ambientTemperature_C &&
+        (!std::isfinite(*e.ambientTemperature_C) || *e.ambientTemperature_C <= kAbsoluteZero_C))
+        out.push_back(makeError(QStringLiteral("environment.ambient_temperature_C"),
+                                ProjectValidation::tr("must be above absolute zero (-273.15 °C), but is %1 °C")
+                                    .arg(num(*e.ambientTemperature_C))));
 }
 
 void checkRange(const std::optional<ValueRange> &range, const QString &field, Diagnostics &out)
@@ -386,6 +397,7 @@ Diagnostics validateProject(const Project &project)
     checkTolerances(project, out);
     checkCuttingModel(project, out);
     checkCharacterisation(project, out);
+    checkEnvironment(project.environment, out);
     checkPlanning(project, out);
     return out;
 }

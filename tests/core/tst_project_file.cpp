@@ -407,6 +407,11 @@ private Q_SLOTS:
             "zone width above zero, but it is 0 µm");
         row("negative feed", shaft, {QStringLiteral("passes[1].feed_mm_rev=-0.1")}, "passes[1].feed_mm_rev",
             "above zero, but is -0.1");
+        // The shop conditions are checked without a thermal characterisation too.
+        row("negative time since start", shaft, {QStringLiteral("environment={\"time_since_start_min\": -5}")},
+            "environment.time_since_start_min", "zero or more, but is -5");
+        row("ambient below absolute zero", shaft, {QStringLiteral("environment={\"ambient_temperature_C\": -300}")},
+            "environment.ambient_temperature_C", "above absolute zero (-273.15 °C), but is -300 °C");
     }
 
     void badInput()

@@ -10,6 +10,7 @@
 #include "widgets/planning/planning_panel.h"
 #include "widgets/profile/feature_panel.h"
 #include "widgets/results/deflection_panel.h"
+#include "widgets/setup/force_model_editor.h"
 #include "widgets/setup/setup_panel.h"
 #include "widgets/tolerances/tolerance_panel.h"
 #include "widgets/tolerances/tolerance_verdict_model.h"
@@ -156,6 +157,32 @@ private Q_SLOTS:
         stock->setMillimetres(60.0);
         QVERIFY2(w.document()->problems().empty(), qPrintable(listedFields(w).join(u',')));
         QVERIFY(exportEnabled(w));
+    }
+
+    // Values without an editor of their own before (the force model, the shop conditions) can be
+    // repaired too, and set back to "not given".
+    void shopConditionsCanBeRepaired()
+    {
+        QTemporaryDir dir;
+        const QString path =
+            exampleWith(dir, "\"passes\": [", "\"environment\": {\"time_since_start_min\": -5}, \"passes\": [");
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(path));
+        QCOMPARE(listedFields(w), QStringList{QStringLiteral("environment.time_since_start_min")});
+        QDoubleSpinBox *sinceStart = w.setupPanel()->forceModelEditor()->box(ForceModelEditor::TimeSinceStart);
+        QTRY_COMPARE(w.focusWidget(), sinceStart);
+        sinceStart->setValue(30.0);
+        QVERIFY(w.document()->problems().empty());
+        QCOMPARE(w.document()->project().environment.timeSinceStart_min, std::optional<double>(30.0));
+        // A Kienzle force ratio set, then back to the material's.
+        QDoubleSpinBox *feedRatio = w.setupPanel()->forceModelEditor()->box(ForceModelEditor::FeedRatio);
+        feedRatio->setValue(0.45);
+        QCOMPARE(w.document()->project().cuttingModel.feedToCuttingRatio, std::optional<double>(0.45));
+        feedRatio->setValue(feedRatio->minimum());
+        QVERIFY(!w.document()->project().cuttingModel.feedToCuttingRatio);
+        QCOMPARE(feedRatio->text(), QStringLiteral("material's"));
+        QCOMPARE(w.document()->project().environment.timeSinceStart_min, std::optional<double>(30.0)); // kept
     }
 
     // Only a file that is not a TolTurn project is refused (tst_main_window: unknown version).

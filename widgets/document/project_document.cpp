@@ -294,6 +294,16 @@ Diagnostics ProjectDocument::setTool(const Tool &tool)
     return editField(&Project::tool, tool, tr("Change tool"));
 }
 
+Diagnostics ProjectDocument::setCuttingModel(const CuttingModel &model)
+{
+    return editField(&Project::cuttingModel, model, tr("Change force model"));
+}
+
+Diagnostics ProjectDocument::setEnvironment(const Environment &environment)
+{
+    return editField(&Project::environment, environment, tr("Change shop conditions"));
+}
+
 Diagnostics ProjectDocument::setClamping(const Clamping &clamping)
 {
     return editField(&Project::clamping, clamping, tr("Change clamping"));

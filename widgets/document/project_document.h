@@ -66,6 +66,8 @@ public:
     Diagnostics setMaterial(const QString &materialId);
     Diagnostics setMachine(const QString &machineId);
     Diagnostics setTool(const Tool &tool);
+    Diagnostics setCuttingModel(const CuttingModel &model);
+    Diagnostics setEnvironment(const Environment &environment);
     Diagnostics setClamping(const Clamping &clamping);
     Diagnostics setCharacterisation(const MachineCharacterisation &characterisation);
     // The part's profile after an edit of the profile editor, named by `description` in Undo.

@@ -9,6 +9,7 @@
 #include "widgets/common/length_spin_box.h"
 #include "widgets/common/project_fields.h"
 #include "widgets/document/project_document.h"
+#include "widgets/setup/force_model_editor.h"
 #include "widgets/setup/stiffness_editor.h"
 
 #include <QComboBox>
@@ -101,6 +102,7 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     , m_overhang(new LengthSpinBox(
           1000.0, tr("Tool length out of the turret for the toolpost term (Valiño et al. 2008, eq. 6); "
                      "'from holder' uses the holder's length.")))
+    , m_forceModel(new ForceModelEditor)
     , m_message(new QLabel)
 {
     setObjectName(QStringLiteral("setupPanel"));
@@ -116,6 +118,7 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     column->addWidget(createToolGroup());
     column->addWidget(createClampingGroup());
     column->addWidget(createPassesGroup());
+    column->addWidget(m_forceModel);
     column->addWidget(m_message);
     column->addStretch(1);
     auto *scroll = new QScrollArea;
@@ -138,6 +141,10 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     setProjectField(*m_overhang, QStringLiteral("tool.overhang_mm"));
     setProjectField(*m_clamping, QStringLiteral("clamping.method"));
     setProjectField(*m_clampedLength, QStringLiteral("clamping.clamped_length_mm"));
+    connect(m_forceModel, &ForceModelEditor::cuttingModelEdited, this,
+            [this](const CuttingModel &model) { showOutcome(m_document.setCuttingModel(model)); });
+    connect(m_forceModel, &ForceModelEditor::environmentEdited, this,
+            [this](const Environment &environment) { showOutcome(m_document.setEnvironment(environment)); });
     connect(&m_document, &ProjectDocument::projectChanged, this, &SetupPanel::projectChanged);
     projectChanged();
 }
@@ -347,6 +354,7 @@ void SetupPanel::showValues()
     markFindings();
     showMachineStiffness();
     m_stiffness->showCharacterisation(p.characterisation);
+    m_forceModel->showValues(p.cuttingModel, p.environment);
     m_updating = false;
 }
 

@@ -19,6 +19,7 @@ namespace tolturn {
 class LengthSpinBox;
 
 class ProjectDocument;
+class ForceModelEditor;
 class StiffnessEditor;
 
 // The set-up of the open project: material, machine (and what is known of its stiffness),
@@ -48,6 +49,8 @@ public:
     [[nodiscard]] LengthSpinBox *overhangBox() const { return m_overhang; }
 
     [[nodiscard]] StiffnessEditor *stiffnessEditor() const { return m_stiffness; }
+
+    [[nodiscard]] ForceModelEditor *forceModelEditor() const { return m_forceModel; }
 
     // Cutting speed, feed and depth of cut of pass `index`.
     [[nodiscard]] QDoubleSpinBox *passBox(int index, int column) const;
@@ -104,6 +107,7 @@ private:
     QGridLayout *m_passGrid = nullptr;
     std::vector<std::vector<QDoubleSpinBox *>> m_passBoxes;
     std::vector<QLabel *> m_passLabels;
+    ForceModelEditor *m_forceModel;
     QLabel *m_message;
 };
 
