@@ -75,10 +75,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>geben Sie genau eine Projektdatei an</translation>
     </message>
     <message>
-        <source>part &quot;%1&quot;, %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances</source>
-        <translation>Teil „%1“, %2 mm lang, %3 äußere und %4 innere Formelemente, %5, %6 Schnitte, %7 Toleranzen</translation>
-    </message>
-    <message>
         <source>Print the findings as JSON on standard output.</source>
         <translation>Befunde als JSON auf der Standardausgabe ausgeben.</translation>
     </message>
@@ -311,10 +307,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>„%1“ kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>PDF file to write.</source>
-        <translation>Zu schreibende PDF-Datei.</translation>
-    </message>
-    <message>
         <source>give one project file and -o FILE.pdf</source>
         <translation>geben Sie eine Projektdatei und -o DATEI.pdf an</translation>
     </message>
@@ -401,6 +393,32 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The planner&apos;s name for the title block.</source>
         <translation>Der Name des Planers für das Schriftfeld.</translation>
+    </message>
+    <message>
+        <source>cannot write to standard output: %1</source>
+        <translation>Standardausgabe kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>PDF file to write (&apos;-&apos;: standard output).</source>
+        <translation>Zu schreibende PDF-Datei (&apos;-&apos;: Standardausgabe).</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot;, %2 mm long, %3 outer and %4 inner features, %5, %6, %7</source>
+        <translation>Teil „%1“, %2 mm lang, %3 äußere und %4 innere Formelemente, %5, %6, %7</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pass(es)</source>
+        <translation>
+            <numerusform>%n Schnitt</numerusform>
+            <numerusform>%n Schnitte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n tolerance(s)</source>
+        <translation>
+            <numerusform>%n Toleranz</numerusform>
+            <numerusform>%n Toleranzen</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -732,10 +750,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Ergebnis als JSON ausgeben.</translation>
     </message>
     <message>
-        <source>The project file to write.</source>
-        <translation>Zu schreibende Projektdatei.</translation>
-    </message>
-    <message>
         <source>Turn the part end for end (z = 0 at the other end).</source>
         <translation>Das Teil wenden (z = 0 am anderen Ende).</translation>
     </message>
@@ -764,16 +778,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>geben Sie eine STEP- oder IGES-Datei und -o PROJEKT an</translation>
     </message>
     <message>
-        <source>%1: written, part &quot;%2&quot;, %3 mm long, %4 outer and %5 inner features, %6 warnings</source>
-        <translation>%1: geschrieben, Teil „%2“, %3 mm lang, %4 äußere und %5 innere Formelemente, %6 Warnungen</translation>
-    </message>
-    <message>
         <source>Write the project&apos;s part as a solid of revolution to a STEP file in mm (AP214), for CAD and CAM.</source>
         <translation>Das Teil des Projekts als Rotationskörper in eine STEP-Datei in mm (AP214) schreiben, für CAD und CAM.</translation>
-    </message>
-    <message>
-        <source>The STEP file to write.</source>
-        <translation>Zu schreibende STEP-Datei.</translation>
     </message>
     <message>
         <source>The project file.</source>
@@ -786,6 +792,33 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1: written</source>
         <translation>%1: geschrieben</translation>
+    </message>
+    <message>
+        <source>cannot read back &apos;%1&apos;: %2</source>
+        <translation>&apos;%1&apos; kann nicht zurückgelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>The project file to write (&apos;-&apos;: standard output).</source>
+        <translation>Die zu schreibende Projektdatei (&apos;-&apos;: Standardausgabe).</translation>
+    </message>
+    <message>
+        <source>--json and -o - would both write to standard output</source>
+        <translation>--json und -o - würden beide auf die Standardausgabe schreiben</translation>
+    </message>
+    <message>
+        <source>The STEP file to write (&apos;-&apos;: standard output).</source>
+        <translation>Die zu schreibende STEP-Datei (&apos;-&apos;: Standardausgabe).</translation>
+    </message>
+    <message>
+        <source>%1: written, part &quot;%2&quot;, %3 mm long, %4 outer and %5 inner features, %6</source>
+        <translation>%1: geschrieben, Teil „%2“, %3 mm lang, %4 äußere und %5 innere Formelemente, %6</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n Warnung</numerusform>
+            <numerusform>%n Warnungen</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -75,10 +75,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>indique exactamente un archivo de proyecto</translation>
     </message>
     <message>
-        <source>part &quot;%1&quot;, %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances</source>
-        <translation>pieza &quot;%1&quot;, %2 mm de longitud, %3 elementos exteriores y %4 interiores, %5, %6 pasadas, %7 tolerancias</translation>
-    </message>
-    <message>
         <source>Print the findings as JSON on standard output.</source>
         <translation>Escribir los problemas detectados en formato JSON en la salida estándar.</translation>
     </message>
@@ -311,10 +307,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
-        <source>PDF file to write.</source>
-        <translation>Archivo PDF de salida.</translation>
-    </message>
-    <message>
         <source>give one project file and -o FILE.pdf</source>
         <translation>indique un archivo de proyecto y -o ARCHIVO.pdf</translation>
     </message>
@@ -401,6 +393,32 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The planner&apos;s name for the title block.</source>
         <translation>El nombre del planificador para el cajetín.</translation>
+    </message>
+    <message>
+        <source>cannot write to standard output: %1</source>
+        <translation>no se puede escribir en la salida estándar: %1</translation>
+    </message>
+    <message>
+        <source>PDF file to write (&apos;-&apos;: standard output).</source>
+        <translation>Archivo PDF que escribir (&apos;-&apos;: salida estándar).</translation>
+    </message>
+    <message>
+        <source>part &quot;%1&quot;, %2 mm long, %3 outer and %4 inner features, %5, %6, %7</source>
+        <translation>pieza «%1», %2 mm de largo, %3 elementos exteriores y %4 interiores, %5, %6, %7</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pass(es)</source>
+        <translation>
+            <numerusform>%n pasada</numerusform>
+            <numerusform>%n pasadas</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n tolerance(s)</source>
+        <translation>
+            <numerusform>%n tolerancia</numerusform>
+            <numerusform>%n tolerancias</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -732,10 +750,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Escribir el resultado en formato JSON.</translation>
     </message>
     <message>
-        <source>The project file to write.</source>
-        <translation>Archivo de proyecto de salida.</translation>
-    </message>
-    <message>
         <source>Turn the part end for end (z = 0 at the other end).</source>
         <translation>Dar la vuelta a la pieza (z = 0 en el otro extremo).</translation>
     </message>
@@ -764,16 +778,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>indique un archivo STEP o IGES y -o PROYECTO</translation>
     </message>
     <message>
-        <source>%1: written, part &quot;%2&quot;, %3 mm long, %4 outer and %5 inner features, %6 warnings</source>
-        <translation>%1: escrito, pieza &quot;%2&quot;, %3 mm de longitud, %4 elementos exteriores y %5 interiores, %6 avisos</translation>
-    </message>
-    <message>
         <source>Write the project&apos;s part as a solid of revolution to a STEP file in mm (AP214), for CAD and CAM.</source>
         <translation>Escribir la pieza del proyecto como cuerpo de revolución en un archivo STEP en mm (AP214), para CAD y CAM.</translation>
-    </message>
-    <message>
-        <source>The STEP file to write.</source>
-        <translation>Archivo STEP de salida.</translation>
     </message>
     <message>
         <source>The project file.</source>
@@ -786,6 +792,33 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1: written</source>
         <translation>%1: escrito</translation>
+    </message>
+    <message>
+        <source>cannot read back &apos;%1&apos;: %2</source>
+        <translation>no se puede releer &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>The project file to write (&apos;-&apos;: standard output).</source>
+        <translation>El archivo de proyecto que escribir (&apos;-&apos;: salida estándar).</translation>
+    </message>
+    <message>
+        <source>--json and -o - would both write to standard output</source>
+        <translation>--json y -o - escribirían ambos en la salida estándar</translation>
+    </message>
+    <message>
+        <source>The STEP file to write (&apos;-&apos;: standard output).</source>
+        <translation>El archivo STEP que escribir (&apos;-&apos;: salida estándar).</translation>
+    </message>
+    <message>
+        <source>%1: written, part &quot;%2&quot;, %3 mm long, %4 outer and %5 inner features, %6</source>
+        <translation>%1: escrito, pieza «%2», %3 mm de largo, %4 elementos exteriores y %5 interiores, %6</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n advertencia</numerusform>
+            <numerusform>%n advertencias</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -43,14 +43,13 @@ struct CommandLine {
 
 QString projectSummary(const Project &p)
 {
-    return CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6 passes, %7 tolerances")
+    return CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6, %7")
         .arg(p.part.name)
         .arg(p.part.length_mm())
         .arg(p.part.outer.segments.size())
         .arg(p.part.inner.segments.size())
-        .arg(keyword(p.clamping.method))
-        .arg(p.passes.size())
-        .arg(p.tolerances.size());
+        .arg(displayName(p.clamping.method), CommandLine::tr("%n pass(es)", nullptr, static_cast<int>(p.passes.size())),
+             CommandLine::tr("%n tolerance(s)", nullptr, static_cast<int>(p.tolerances.size())));
 }
 
 } // namespace

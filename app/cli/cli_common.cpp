@@ -6,6 +6,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFileDevice>
 #include <QSaveFile>
 #include <QTextStream>
 
@@ -53,8 +54,15 @@ std::optional<Project> readProject(const QString &file, QTextStream &err)
 QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out)
 {
     if (path == QLatin1String("-")) {
-        out << QString::fromUtf8(data);
+        // The bytes as they are (a PDF or STEP file too), after whatever the stream holds.
         out.flush();
+        if (auto *device = qobject_cast<QFileDevice *>(out.device())) {
+            if (device->write(data) != data.size() || !device->flush())
+                return CommandLine::tr("cannot write to standard output: %1").arg(device->errorString());
+        } else {
+            out << QString::fromUtf8(data);
+            out.flush();
+        }
         return {};
     }
     QSaveFile file(path);

@@ -37,8 +37,15 @@ namespace tolturn {
 // Reads a project for a command, printing its problems as "FILE: severity: field: message".
 [[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err);
 
-// Writes a command's text output to a file atomically, or to standard output for "-". Returns an
-// error message, empty on success.
+// True for the output path "-" (`-o -`): the command writes its file to standard output, and its
+// own messages then go to standard error.
+[[nodiscard]] inline bool isStandardOutput(const QString &path)
+{
+    return path == QLatin1String("-");
+}
+
+// Writes a command's output (text, or a PDF or STEP file) to a file atomically, or to standard
+// output for "-". Returns an error message, empty on success.
 [[nodiscard]] QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out);
 
 // A finding as JSON: {"severity": "error" | "warning", "field": …, "message": …}.

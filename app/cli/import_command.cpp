@@ -10,9 +10,11 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <QTextStream>
 
 #include <algorithm>
@@ -79,12 +81,34 @@ QJsonObject importJson(const QString &file, const QString &output, const CadImpo
 }
 
 // Writes the project when the import gave a valid profile; the reason otherwise, empty on success.
-QString writeImported(const CadImportResult &r, const QString &output, const QString &material, const QString &machine)
+QString writeImported(const CadImportResult &r, const QString &output, const QString &material, const QString &machine,
+                      QTextStream &out)
 {
     if (!r.profile || hasErrors(r.diagnostics))
         return ImportCommand::tr("no project written: the import has errors");
-    const WriteResult written = writeProjectFile(output, projectFor(*r.profile, material, machine));
+    const Project project = projectFor(*r.profile, material, machine);
+    if (isStandardOutput(output))
+        return writeOutput(output, serializeProjectJson(project), out);
+    const WriteResult written = writeProjectFile(output, project);
     return written.ok ? QString() : written.error;
+}
+
+// The STEP file of `part` at `output`, or on standard output for "-" (OpenCascade writes only
+// files: a temporary one is copied).
+QString writeStep(const PartProfile &part, const QString &output, QTextStream &out)
+{
+    if (!isStandardOutput(output)) {
+        const StepExportResult written = exportProfileToStep(part, output);
+        return written.ok ? QString() : written.error;
+    }
+    const QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("part.step"));
+    if (const StepExportResult written = exportProfileToStep(part, path); !written.ok)
+        return written.error;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return ImportCommand::tr("cannot read back '%1': %2").arg(path, file.errorString());
+    return writeOutput(output, file.readAll(), out);
 }
 
 } // namespace
@@ -108,7 +132,8 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
     QCommandLineParser parser;
     const QCommandLineOption json(QStringLiteral("json"), ImportCommand::tr("Print the result as JSON."));
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    ImportCommand::tr("The project file to write."), QStringLiteral("PROJECT"));
+                                    ImportCommand::tr("The project file to write ('-': standard output)."),
+                                    QStringLiteral("PROJECT"));
     const QCommandLineOption flip(QStringLiteral("flip"),
                                   ImportCommand::tr("Turn the part end for end (z = 0 at the other end)."));
     const QCommandLineOption solid(QStringLiteral("solid"),
@@ -145,8 +170,14 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
     options.flip = parser.isSet(flip);
     options.solidIndex = *solidIndex;
     options.axisIndex = *axisIndex;
+    const bool toStandardOutput = isStandardOutput(parser.value(output));
+    if (toStandardOutput && parser.isSet(json)) {
+        err << programName() << " import: " << ImportCommand::tr("--json and -o - would both write to standard output")
+            << '\n';
+        return kExitUsage;
+    }
     const CadImportResult r = importCadFile(file, options);
-    const QString problem = writeImported(r, parser.value(output), parser.value(material), parser.value(machine));
+    const QString problem = writeImported(r, parser.value(output), parser.value(material), parser.value(machine), out);
     if (parser.isSet(json)) {
         out << QJsonDocument(importJson(file, parser.value(output), r, problem.isEmpty()))
                    .toJson(QJsonDocument::Indented);
@@ -154,13 +185,13 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
         for (const Diagnostic &d : r.diagnostics)
             err << file << ": " << d.toString() << '\n';
         if (problem.isEmpty())
-            out << ImportCommand::tr("%1: written, part \"%2\", %3 mm long, %4 outer and %5 inner features, %6 "
-                                     "warnings")
+            (toStandardOutput ? err : out)
+                << ImportCommand::tr("%1: written, part \"%2\", %3 mm long, %4 outer and %5 inner features, %6")
                        .arg(parser.value(output), r.profile->name)
                        .arg(r.profile->length_mm())
                        .arg(r.profile->outer.segments.size())
                        .arg(r.profile->inner.segments.size())
-                       .arg(r.diagnostics.size())
+                       .arg(ImportCommand::tr("%n warning(s)", nullptr, static_cast<int>(r.diagnostics.size())))
                 << '\n';
     }
     if (!problem.isEmpty()) {
@@ -185,7 +216,8 @@ int runExportStep(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    ImportCommand::tr("The STEP file to write."), QStringLiteral("FILE.step"));
+                                    ImportCommand::tr("The STEP file to write ('-': standard output)."),
+                                    QStringLiteral("FILE.step"));
     parser.addOption(output);
     parser.addPositionalArgument(QStringLiteral("project"), ImportCommand::tr("The project file."),
                                  QStringLiteral("PROJECT"));
@@ -203,12 +235,12 @@ int runExportStep(const QStringList &args, QTextStream &out, QTextStream &err)
         err << file << ": " << d.toString() << '\n';
     if (!read.project)
         return kExitProblems;
-    const StepExportResult written = exportProfileToStep(read.project->part, parser.value(output));
-    if (!written.ok) {
-        err << programName() << " export-step: " << written.error << '\n';
+    if (const QString problem = writeStep(read.project->part, parser.value(output), out); !problem.isEmpty()) {
+        err << programName() << " export-step: " << problem << '\n';
         return kExitProblems;
     }
-    out << ImportCommand::tr("%1: written").arg(parser.value(output)) << '\n';
+    (isStandardOutput(parser.value(output)) ? err : out)
+        << ImportCommand::tr("%1: written").arg(parser.value(output)) << '\n';
     return kExitOk;
 }
 

@@ -47,7 +47,8 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    CommandLine::tr("PDF file to write."), QStringLiteral("FILE"));
+                                    CommandLine::tr("PDF file to write ('-': standard output)."),
+                                    QStringLiteral("FILE"));
     const QCommandLineOption planner(
         QStringLiteral("planner"), CommandLine::tr("The planner's name for the title block."), QStringLiteral("NAME"));
     parser.addOptions({output, planner});
@@ -63,13 +64,13 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
-    const ReportResult written =
-        writeReport(*project, {QFileInfo(file).fileName(), parser.value(planner)}, parser.value(output));
-    if (!written.ok) {
-        err << programName() << " report: " << written.error << '\n';
+    const RenderedReport report = renderReport(*project, {QFileInfo(file).fileName(), parser.value(planner)});
+    if (const QString problem = writeOutput(parser.value(output), report.pdf, out); !problem.isEmpty()) {
+        err << programName() << " report: " << problem << '\n';
         return kExitProblems;
     }
-    out << CommandLine::tr("%1: %2 pages").arg(parser.value(output)).arg(written.pages) << '\n';
+    (isStandardOutput(parser.value(output)) ? err : out)
+        << CommandLine::tr("%1: %2 pages").arg(parser.value(output)).arg(report.pages) << '\n';
     return kExitOk;
 }
 

@@ -78,8 +78,10 @@ private Q_SLOTS:
                               example("hollow-sleeve-tailstock.tolturn"), example("long-shaft-centres.tolturn")});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out.count(QStringLiteral(": ok — ")), 3);
-        QVERIFY(r.out.contains(QStringLiteral("part \"Hollow sleeve\", 400 mm long, 8 outer and 3 inner features, "
-                                              "chuck_tailstock")));
+        // In words, not the file's keywords; plurals right.
+        QVERIFY2(r.out.contains(QStringLiteral("part \"Hollow sleeve\", 400 mm long, 8 outer and 3 inner features, "
+                                               "chuck + tailstock, 6 passes, 9 tolerances")), // as counted in the file
+                 qPrintable(r.out));
         // Plausibility: the examples' finishing feeds (0.1 and 0.08 mm/rev) lie below the 0.17 mm/rev
         // the insert's catalogue range starts at (planning.ranges of each file): warnings, not errors.
         QVERIFY2(r.err.contains(QStringLiteral("stepped-shaft-chuck.tolturn: warning: passes[8].feed_mm_rev: 0.1 "

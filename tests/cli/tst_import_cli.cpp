@@ -75,6 +75,8 @@ private Q_SLOTS:
         QVERIFY(imported.out.startsWith(project + QStringLiteral(": written")));
         const Run checked = runCli({QStringLiteral("check"), project});
         QVERIFY2(checked.exitCode == 0, qPrintable(checked.err));
+        // An imported part gets one finishing pass and no tolerances yet: a singular and a plural.
+        QVERIFY2(checked.out.contains(QStringLiteral("1 pass, 0 tolerances")), qPrintable(checked.out));
         const PartProfile want = readPart(source);
         const PartProfile got = readPart(project);
         QVERIFY(sameContour(got.outer, want.outer));
@@ -101,6 +103,31 @@ private Q_SLOTS:
         QVERIFY(!got.inner.empty());
         QCOMPARE(got.inner.segments.front().from.r_mm, 22.5);
         QVERIFY(runCli({QStringLiteral("check"), project}).exitCode == 0);
+    }
+
+    // "-o -": the STEP file and the project on standard output, byte for byte what a file would
+    // hold, the messages on standard error; a pipe of the two gives the example's contour back.
+    void standardOutputForBoth()
+    {
+        const QString source = example("stepped-shaft-chuck.tolturn");
+        const QString stepFile = m_dir.filePath(QStringLiteral("piped.step"));
+        const Run exported = runCli({QStringLiteral("export-step"), QStringLiteral("-o"), QStringLiteral("-"), source});
+        QVERIFY2(exported.exitCode == 0, qPrintable(exported.err));
+        QVERIFY(exported.out.startsWith(QStringLiteral("ISO-10303-21;")));
+        QVERIFY(exported.out.trimmed().endsWith(QStringLiteral("END-ISO-10303-21;")));
+        QVERIFY(exported.err.contains(QStringLiteral("-: written")));
+        QVERIFY(tolturn::test::writeFile(stepFile, exported.out.toUtf8()));
+        const Run imported = runCli({QStringLiteral("import"), QStringLiteral("-o"), QStringLiteral("-"), stepFile});
+        QVERIFY2(imported.exitCode == 0, qPrintable(imported.err));
+        QVERIFY(imported.err.contains(QStringLiteral("11 outer and 0 inner features, 0 warnings")));
+        const ProjectParseResult read = parseProjectJson(imported.out.toUtf8());
+        QVERIFY(read.project);
+        QVERIFY(sameContour(read.project->part.outer, readPart(source).outer));
+        // Two outputs cannot share standard output.
+        const Run both = runCli(
+            {QStringLiteral("import"), QStringLiteral("--json"), QStringLiteral("-o"), QStringLiteral("-"), stepFile});
+        QCOMPARE(both.exitCode, 2);
+        QVERIFY(both.err.contains(QStringLiteral("--json and -o -")));
     }
 
     void importErrors()

@@ -6,6 +6,7 @@
 
 #include <QDate>
 #include <QFile>
+#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
@@ -122,6 +123,25 @@ private Q_SLOTS:
         const QStringList t5 = tableRow(tolerances, QStringLiteral("T5"));
         QVERIFY2(t5.size() >= 6, qPrintable(t5.join(QLatin1Char('|'))));
         QCOMPARE(t5.at(5), QStringLiteral("15.0"));
+    }
+
+    // "-o -": the PDF on standard output (a pipe to a printer or a viewer), the page count on
+    // standard error.
+    void reportOnStandardOutput()
+    {
+        QProcess cli;
+        cli.start(QStringLiteral(TOLTURN_CLI_PATH), {QStringLiteral("report"), QStringLiteral("-o"),
+                                                     QStringLiteral("-"), example("stepped-shaft-chuck.tolturn")});
+        QVERIFY(cli.waitForFinished(60000));
+        QCOMPARE(cli.exitCode(), 0);
+        const QByteArray pdf = cli.readAllStandardOutput();
+        QVERIFY(pdf.startsWith("%PDF-"));
+        QVERIFY(pdf.trimmed().endsWith("%%EOF"));
+        QVERIFY(QString::fromUtf8(cli.readAllStandardError()).contains(QStringLiteral("-: 5 pages")));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("piped.pdf"));
+        QVERIFY(tolturn::test::writeFile(path, pdf));
+        QVERIFY(pdfText(path).contains(QStringLiteral("Stepped shaft")));
     }
 
     void badProjectWritesNothing()

@@ -135,6 +135,44 @@ private Q_SLOTS:
         }
     }
 
+    // English, the source language, has only its plural forms (lupdate -pluralonly): every one
+    // finished, singular and plural different, and each found again in today's sources.
+    void englishPluralsFinished()
+    {
+        const Catalogue catalogue = readCatalogue(tsPath(QStringLiteral("en")));
+        QVERIFY(catalogue.size() >= 7);
+        for (const auto &[key, m] : catalogue) {
+            const QString where = key.first + QStringLiteral(" / \"") + m.source + QLatin1Char('"');
+            QVERIFY2(m.type.isEmpty(), qPrintable(where + QStringLiteral(" is ") + m.type));
+            QVERIFY2(m.translations.size() == 2 && m.translations[0] != m.translations[1],
+                     qPrintable(where + QStringLiteral(": needs a singular and a plural")));
+            QVERIFY2(!m.translations[1].contains(QStringLiteral("(s)")), qPrintable(where));
+        }
+        QTemporaryDir dir;
+        const QString scanned = dir.filePath(QStringLiteral("plurals.ts"));
+        QProcess lupdate;
+        lupdate.start(QStringLiteral(TOLTURN_LUPDATE),
+                      {QStringLiteral("-silent"), QStringLiteral("-pluralonly"), QStringLiteral("-locations"),
+                       QStringLiteral("none"), QStringLiteral("-I"), QStringLiteral(TOLTURN_SOURCE_DIR),
+                       QStringLiteral("@" TOLTURN_TRANSLATED_SOURCES), QStringLiteral("-ts"), scanned});
+        QVERIFY(lupdate.waitForFinished(120000));
+        QCOMPARE(lupdate.exitCode(), 0);
+        for (const auto &[key, m] : readCatalogue(scanned)) {
+            const auto it = catalogue.find(key);
+            QVERIFY2(it != catalogue.end() && it->second.type.isEmpty(),
+                     qPrintable(QStringLiteral("no English plural forms for ") + m.source +
+                                QStringLiteral(" (run update_translations and fill tolturn_en.ts)")));
+        }
+    }
+
+    // In English the plural forms are used: "1 pass", "2 passes", never "pass(es)".
+    void englishPluralsAreLoaded()
+    {
+        installTranslations(*QCoreApplication::instance(), QLocale(QLocale::English));
+        QCOMPARE(QCoreApplication::translate("CommandLine", "%n pass(es)", nullptr, 1), QStringLiteral("1 pass"));
+        QCOMPARE(QCoreApplication::translate("CommandLine", "%n pass(es)", nullptr, 9), QStringLiteral("9 passes"));
+    }
+
     // lupdate run over today's sources finds no string the committed files lack: a string added
     // to the code without its translations fails here.
     void sourcesFullyTranslated_data() { languages_data(); }

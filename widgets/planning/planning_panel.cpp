@@ -5,6 +5,7 @@
 #include "core/planning/gcode.h"
 #include "core/planning/planning_problem.h"
 #include "core/project/keywords.h"
+#include "widgets/common/project_fields.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/planning_data_dialog.h"
@@ -202,6 +203,7 @@ void PlanningPanel::buildControls()
     connect(m_run, &QPushButton::clicked, this, &PlanningPanel::optimise);
     connect(m_cancel, &QPushButton::clicked, this, &PlanningPanel::cancel);
     connect(m_apply, &QPushButton::clicked, this, &PlanningPanel::applyPlan);
+    setProjectField(*m_data, QStringLiteral("planning")); // its values are edited in the dialog it opens
     m_data->setToolTip(tr("Rates, tool life, the insert's cutting ranges and the part's limits the optimiser "
                           "works with"));
     connect(m_data, &QPushButton::clicked, this, &PlanningPanel::editPlanningData);

@@ -426,37 +426,9 @@ ReportResult cancelledReport()
     return r;
 }
 
-} // namespace
-
-ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
-                         const std::function<bool(double)> &progress)
+// The laid-out pages as an A4 PDF with the footer (program, part, page numbers) on each.
+QByteArray pdfOf(const std::vector<std::unique_ptr<QPicture>> &pages, const Project &project)
 {
-    ReportResult result;
-    auto step = [&](double f) { return !progress || progress(f); };
-    const RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
-    const DeviationResult &deviation = range.compliant;
-    std::vector<ToleranceEvaluation> verdictList;
-    for (const ToleranceRangeEvaluation &e : range.tolerances)
-        verdictList.push_back(e.compliant);
-    const FinishingOutput finishing = finishingOutput(project, DataLibrary::builtIn());
-
-    Layout layout;
-    titleBlock(layout, project, header);
-    summary(layout, project, range);
-    drawing(layout, project);
-    inputs(layout, project, deviation, finishing);
-    if (!step(0.2))
-        return cancelledReport();
-    deviationPlots(layout, project, deviation, range.stiff);
-    verdicts(layout, project, verdictList);
-    if (!step(0.4))
-        return cancelledReport();
-    plan(layout, project, finishing);
-    if (!step(0.8))
-        return cancelledReport();
-    sources(layout, project, deviation);
-    const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
-
     QByteArray bytes;
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::WriteOnly);
@@ -490,14 +462,66 @@ ReportResult writeReport(const Project &project, const ReportHeader &header, con
             painter.restore();
         }
     }
+    return bytes;
+}
+
+} // namespace
+
+RenderedReport renderReport(const Project &project, const ReportHeader &header,
+                            const std::function<bool(double)> &progress)
+{
+    RenderedReport rendered;
+    auto step = [&](double f) { return !progress || progress(f); };
+    const RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
+    const DeviationResult &deviation = range.compliant;
+    std::vector<ToleranceEvaluation> verdictList;
+    for (const ToleranceRangeEvaluation &e : range.tolerances)
+        verdictList.push_back(e.compliant);
+    const FinishingOutput finishing = finishingOutput(project, DataLibrary::builtIn());
+
+    Layout layout;
+    titleBlock(layout, project, header);
+    summary(layout, project, range);
+    drawing(layout, project);
+    inputs(layout, project, deviation, finishing);
+    if (!step(0.2)) {
+        rendered.cancelled = true;
+        return rendered;
+    }
+    deviationPlots(layout, project, deviation, range.stiff);
+    verdicts(layout, project, verdictList);
+    if (!step(0.4)) {
+        rendered.cancelled = true;
+        return rendered;
+    }
+    plan(layout, project, finishing);
+    if (!step(0.8)) {
+        rendered.cancelled = true;
+        return rendered;
+    }
+    sources(layout, project, deviation);
+    const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
+    rendered.pdf = pdfOf(pages, project);
+    rendered.pages = static_cast<int>(pages.size());
+    return rendered;
+}
+
+ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
+                         const std::function<bool(double)> &progress)
+{
+    ReportResult result;
+    const RenderedReport rendered = renderReport(project, header, progress);
+    if (rendered.cancelled)
+        return cancelledReport();
     QSaveFile file(pdfPath);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+    if (!file.open(QIODevice::WriteOnly) || file.write(rendered.pdf) != rendered.pdf.size() || !file.commit()) {
         result.error = Report::tr("cannot write '%1': %2").arg(pdfPath, file.errorString());
         return result;
     }
     result.ok = true;
-    result.pages = static_cast<int>(pages.size());
-    step(1.0);
+    result.pages = rendered.pages;
+    if (progress)
+        progress(1.0);
     return result;
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/project/project.h"
 
+#include <QByteArray>
 #include <QString>
 
 #include <functional>
@@ -31,5 +32,15 @@ struct ReportHeader {
 // file is written atomically. `progress` (0…1) returning false cancels.
 [[nodiscard]] ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
                                        const std::function<bool(double)> &progress = {});
+
+// The same report as PDF bytes in memory (for standard output); `pages` set, `error` empty.
+struct RenderedReport {
+    QByteArray pdf;
+    int pages = 0;
+    bool cancelled = false;
+};
+
+[[nodiscard]] RenderedReport renderReport(const Project &project, const ReportHeader &header,
+                                          const std::function<bool(double)> &progress = {});
 
 } // namespace tolturn
