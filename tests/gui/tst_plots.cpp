@@ -60,9 +60,15 @@ private Q_SLOTS:
     {
         LinePlot plot;
         twoCurves(plot);
-        QCOMPARE(plot.readoutAt(1.4), QStringLiteral("z [mm] = 1\ntotal: 1.5\nspindle, chuck: —"));
-        QCOMPARE(plot.readoutAt(1.6), QStringLiteral("z [mm] = 2\ntotal: 2.5\nspindle, chuck: 0.75"));
-        QCOMPARE(plot.readoutAt(-5.0), QStringLiteral("z [mm] = 0\ntotal: 0.5\nspindle, chuck: 0.25"));
+        // Each value with its axis's unit (thin space between number and unit).
+        QCOMPARE(plot.readoutAt(1.4), QString::fromUtf8("z = 1\u2009mm\ntotal: 1.5\u2009µm\nspindle, chuck: —"));
+        QCOMPARE(plot.readoutAt(1.6),
+                 QString::fromUtf8("z = 2\u2009mm\ntotal: 2.5\u2009µm\nspindle, chuck: 0.75\u2009µm"));
+        QCOMPARE(plot.readoutAt(-5.0),
+                 QString::fromUtf8("z = 0\u2009mm\ntotal: 0.5\u2009µm\nspindle, chuck: 0.25\u2009µm"));
+        // A label without a unit is shown as it is.
+        plot.setAxisLabels(QStringLiteral("station"), QStringLiteral("count"));
+        QCOMPARE(plot.readoutAt(1.0), QStringLiteral("station = 1\ntotal: 1.5\nspindle, chuck: —"));
     }
 
     void exportsPngSvgPdf()

@@ -4,12 +4,14 @@
 #include "core/common/csv.h"
 #include "widgets/plot/plot_backend.h"
 
+#include <QRegularExpression>
 #include <QToolTip>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace tolturn {
 
@@ -171,8 +173,27 @@ QSize LinePlot::legendNeeds() const
     return m_plot->legend->minimumOuterSizeHint();
 }
 
+namespace {
+
+// "z [mm]" as its quantity "z" and unit "mm"; a label without a unit in brackets is all quantity.
+std::pair<QString, QString> quantityAndUnit(const QString &label)
+{
+    static const QRegularExpression withUnit(QStringLiteral("^(.*?)\\s*\\[([^\\]]*)\\]\\s*$"));
+    const QRegularExpressionMatch m = withUnit.match(label);
+    return m.hasMatch() ? std::pair{m.captured(1), m.captured(2)} : std::pair{label, QString()};
+}
+
+QString withUnit(const QString &number, const QString &unit)
+{
+    return unit.isEmpty() ? number : number + QChar(0x2009) + unit; // a thin space between number and unit
+}
+
+} // namespace
+
 QString LinePlot::readoutAt(double x) const
 {
+    const auto [xName, xUnit] = quantityAndUnit(m_plot->xAxis->label());
+    const QString yUnit = quantityAndUnit(m_plot->yAxis->label()).second;
     QStringList lines;
     for (int g = 0; g < m_plot->graphCount(); ++g) {
         const QCPGraph *graph = m_plot->graph(g);
@@ -183,9 +204,10 @@ QString LinePlot::readoutAt(double x) const
             (it == graph->data()->constEnd() || std::abs((it - 1)->key - x) < std::abs(it->key - x)))
             --it;
         if (lines.isEmpty())
-            lines << QStringLiteral("%1 = %2").arg(m_plot->xAxis->label(), QString::number(it->key, 'g', 5));
-        lines << QStringLiteral("%1: %2").arg(
-            graph->name(), std::isfinite(it->value) ? QString::number(it->value, 'g', 4) : QStringLiteral("—"));
+            lines << QStringLiteral("%1 = %2").arg(xName, withUnit(QString::number(it->key, 'g', 5), xUnit));
+        lines << QStringLiteral("%1: %2").arg(graph->name(), std::isfinite(it->value)
+                                                                 ? withUnit(QString::number(it->value, 'g', 4), yUnit)
+                                                                 : QStringLiteral("—"));
     }
     return lines.join(QLatin1Char('\n'));
 }

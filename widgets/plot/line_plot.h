@@ -47,7 +47,8 @@ public:
     // The curves as CSV: one column per curve when they share their x values, else one row per
     // point (curve, x, y). The header carries the axis labels with their units; gaps are empty.
     [[nodiscard]] QString csvText() const;
-    // The values of every curve at the point nearest to `x` (the hover read-out).
+    // The values of every curve at the point nearest to `x`, with the axes' units (the hover
+    // read-out): "z = 35 mm", "total: 12.4 µm".
     [[nodiscard]] QString readoutAt(double x) const;
     // Writes the plot as PNG, SVG or PDF (by suffix), atomically; returns the error, if any.
     [[nodiscard]] QString exportImage(const QString &path);
