@@ -521,10 +521,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Stauchung des Werkzeugträgers nicht berücksichtigt: Halter „%1“ ist nicht in der Datenbibliothek.</translation>
     </message>
     <message>
-        <source>Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give tool.overhang_mm for the length out of the turret.</source>
-        <translation>Werkzeugträger: Die gesamte Halterlänge (%1 mm) wird als auf Druck belastet angenommen, eine obere Schranke; geben Sie tool.overhang_mm für die Länge außerhalb des Revolvers an.</translation>
-    </message>
-    <message>
         <source>Workpiece only: machine supports rigid, no toolpost or thermal term.</source>
         <translation>Nur Werkstück: Maschinenabstützungen starr, ohne Werkzeugträger- und Wärmeanteil.</translation>
     </message>
@@ -603,6 +599,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>given forces</source>
         <translation>vorgegebene Kräfte</translation>
+    </message>
+    <message>
+        <source>Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; enter the tool&apos;s overhang (the length out of the turret) to replace it.</source>
+        <translation>Werkzeughalter: Die ganze Halterlänge (%1 mm) wird auf Druck gerechnet, eine obere Schranke; geben Sie die Auskraglänge des Werkzeugs (die Länge außerhalb des Revolvers) ein, um sie zu ersetzen.</translation>
     </message>
 </context>
 <context>
@@ -2167,14 +2167,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Kompensation des Schlichtschnitts des Projekts, nur wo eine Toleranz es erfordert:</translation>
     </message>
     <message>
-        <source>6  Assumptions and sources</source>
-        <translation>6  Annahmen und Quellen</translation>
-    </message>
-    <message>
-        <source>Model: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP system for turning (2008): eq. 2–8 (deviation), §V and Fig. 4 (tolerances), §VI (optimisation). X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) (2002): eq. 15–20 (forces), §3.4 (compensation). Kienzle (1952) forces; Timoshenko beam with the shear coefficient of G. R. Cowper (1966); ISO 286-1/-2 limits; ISO 1101 characteristics. The equations as implemented, their corrections and the validation: docs/model.md in TolTurn.</source>
-        <translation>Modell: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP system for turning (2008): Gl. 2–8 (Abweichung), §V und Abb. 4 (Toleranzen), §VI (Optimierung). X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) (2002): Gl. 15–20 (Kräfte), §3.4 (Kompensation). Kräfte nach Kienzle (1952); Timoshenko-Balken mit dem Schubkorrekturfaktor nach G. R. Cowper (1966); Grenzabmaße nach ISO 286-1/-2; Eigenschaften nach ISO 1101. Die Gleichungen in der implementierten Form, ihre Korrekturen und die Validierung: docs/model.md in TolTurn.</translation>
-    </message>
-    <message>
         <source>Material data (%1): %2</source>
         <translation>Werkstoffdaten (%1): %2</translation>
     </message>
@@ -2281,6 +2273,66 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 of %2 µm predicted against a zone of %3 µm</source>
         <translation>%1 von %2 µm vorhergesagt, bei einer Toleranzzone von %3 µm</translation>
+    </message>
+    <message>
+        <source>6  Assumptions</source>
+        <translation>6  Annahmen</translation>
+    </message>
+    <message>
+        <source>What this prediction rests on, beyond the project&apos;s own values:</source>
+        <translation>Worauf diese Vorhersage über die Werte des Projekts hinaus beruht:</translation>
+    </message>
+    <message>
+        <source>Appendix A  Literature</source>
+        <translation>Anhang A  Literatur</translation>
+    </message>
+    <message>
+        <source>[1] G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos: Machining error predictive model in a CAPP system for turning: formulation and initial tests (2008). Used: eq. 2–8 (deviation), §III (spindle–chuck springs from a test bar), §V and Fig. 4 (tolerances), §VI (optimisation).</source>
+        <translation>[1] G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos: Machining error predictive model in a CAPP system for turning: formulation and initial tests (2008). Verwendet: Gl. 2–8 (Abweichung), §III (Federn von Spindel und Futter aus einem Prüfstab), §V und Abb. 4 (Toleranzen), §VI (Optimierung).</translation>
+    </message>
+    <message>
+        <source>[2] X. Li, R. Du: Analysis and compensation of workpiece errors in turning. Int. J. Prod. Res. 40(7) (2002). Used: eq. 15–20 (forces with the nose radius), §3.4 (compensation).</source>
+        <translation>[2] X. Li, R. Du: Analysis and compensation of workpiece errors in turning. Int. J. Prod. Res. 40(7) (2002). Verwendet: Gl. 15–20 (Kräfte mit dem Eckenradius), §3.4 (Kompensation).</translation>
+    </message>
+    <message>
+        <source>[3] O. Kienzle: Die Bestimmung von Kräften und Leistungen an spanenden Werkzeugen und Werkzeugmaschinen. VDI-Z 94 (1952) 299–305. Used: the specific cutting force kc1.1 · h^-mc.</source>
+        <translation>[3] O. Kienzle: Die Bestimmung von Kräften und Leistungen an spanenden Werkzeugen und Werkzeugmaschinen. VDI-Z 94 (1952) 299–305. Verwendet: die spezifische Schnittkraft kc1.1 · h^-mc.</translation>
+    </message>
+    <message>
+        <source>[4] G. R. Cowper: The shear coefficient in Timoshenko&apos;s beam theory. J. Appl. Mech. 33 (1966) 335–340. Used: the shear coefficient of solid and hollow round sections.</source>
+        <translation>[4] G. R. Cowper: The shear coefficient in Timoshenko&apos;s beam theory. J. Appl. Mech. 33 (1966) 335–340. Verwendet: der Schubkorrekturfaktor von Voll- und Hohlkreisquerschnitten.</translation>
+    </message>
+    <message>
+        <source>[5] ISO 286-1 and ISO 286-2: limits and fits (tolerance grades, fundamental deviations).</source>
+        <translation>[5] ISO 286-1 und ISO 286-2: Grenzmaße und Passungen (Toleranzgrade, Grundabmaße).</translation>
+    </message>
+    <message>
+        <source>[6] ISO 1101: geometrical tolerancing (form, orientation, location and run-out).</source>
+        <translation>[6] ISO 1101: Geometrische Tolerierung (Form, Richtung, Ort und Lauf).</translation>
+    </message>
+    <message>
+        <source>[7] ISO 3002-1: basic quantities in cutting (entering and trailing edge angles).</source>
+        <translation>[7] ISO 3002-1: Grundbegriffe der Zerspanung (Einstell- und Nebeneinstellwinkel).</translation>
+    </message>
+    <message>
+        <source>The equations as implemented, the corrections of printing errors and the validation against closed forms: docs/model.md of TolTurn.</source>
+        <translation>Die Gleichungen wie umgesetzt, die Korrekturen von Druckfehlern und die Validierung gegen geschlossene Lösungen: docs/model.md von TolTurn.</translation>
+    </message>
+    <message>
+        <source>Appendix B  Sources of the data</source>
+        <translation>Anhang B  Quellen der Daten</translation>
+    </message>
+    <message>
+        <source>Chuck stiffness range: %1</source>
+        <translation>Steifigkeitsbereich des Futters: %1</translation>
+    </message>
+    <message>
+        <source>Machine stiffness, measured: %1</source>
+        <translation>Maschinensteifigkeit, gemessen: %1</translation>
+    </message>
+    <message>
+        <source>Tool life: %1</source>
+        <translation>Standzeit: %1</translation>
     </message>
 </context>
 <context>

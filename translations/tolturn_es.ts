@@ -521,10 +521,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>No se incluye el acortamiento de la torreta: el portaherramientas &quot;%1&quot; no está en la biblioteca de datos.</translation>
     </message>
     <message>
-        <source>Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give tool.overhang_mm for the length out of the turret.</source>
-        <translation>Torreta: se considera comprimida toda la longitud del portaherramientas (%1 mm), una cota superior; indique tool.overhang_mm para la longitud que sobresale de la torreta.</translation>
-    </message>
-    <message>
         <source>Workpiece only: machine supports rigid, no toolpost or thermal term.</source>
         <translation>Solo la pieza: apoyos de la máquina rígidos, sin término de torreta ni térmico.</translation>
     </message>
@@ -603,6 +599,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>given forces</source>
         <translation>fuerzas dadas</translation>
+    </message>
+    <message>
+        <source>Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; enter the tool&apos;s overhang (the length out of the turret) to replace it.</source>
+        <translation>Portaherramientas: se toma toda la longitud del portaherramientas (%1 mm) a compresión, una cota superior; introduzca el voladizo de la herramienta (la longitud fuera de la torreta) para sustituirla.</translation>
     </message>
 </context>
 <context>
@@ -2167,14 +2167,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Compensación de la pasada de acabado del proyecto, solo donde lo requiere una tolerancia:</translation>
     </message>
     <message>
-        <source>6  Assumptions and sources</source>
-        <translation>6  Hipótesis y fuentes</translation>
-    </message>
-    <message>
-        <source>Model: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP system for turning (2008): eq. 2–8 (deviation), §V and Fig. 4 (tolerances), §VI (optimisation). X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) (2002): eq. 15–20 (forces), §3.4 (compensation). Kienzle (1952) forces; Timoshenko beam with the shear coefficient of G. R. Cowper (1966); ISO 286-1/-2 limits; ISO 1101 characteristics. The equations as implemented, their corrections and the validation: docs/model.md in TolTurn.</source>
-        <translation>Modelo: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP system for turning (2008): ec. 2–8 (desviación), §V y Fig. 4 (tolerancias), §VI (optimización). X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) (2002): ec. 15–20 (fuerzas), §3.4 (compensación). Fuerzas de Kienzle (1952); viga de Timoshenko con el coeficiente de cortante de G. R. Cowper (1966); límites ISO 286-1/-2; características ISO 1101. Las ecuaciones tal como están implementadas, sus correcciones y la validación: docs/model.md en TolTurn.</translation>
-    </message>
-    <message>
         <source>Material data (%1): %2</source>
         <translation>Datos del material (%1): %2</translation>
     </message>
@@ -2281,6 +2273,66 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 of %2 µm predicted against a zone of %3 µm</source>
         <translation>%1 de %2 µm prevista frente a una zona de %3 µm</translation>
+    </message>
+    <message>
+        <source>6  Assumptions</source>
+        <translation>6  Hipótesis</translation>
+    </message>
+    <message>
+        <source>What this prediction rests on, beyond the project&apos;s own values:</source>
+        <translation>En qué se basa esta predicción, además de los valores del proyecto:</translation>
+    </message>
+    <message>
+        <source>Appendix A  Literature</source>
+        <translation>Anexo A  Bibliografía</translation>
+    </message>
+    <message>
+        <source>[1] G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos: Machining error predictive model in a CAPP system for turning: formulation and initial tests (2008). Used: eq. 2–8 (deviation), §III (spindle–chuck springs from a test bar), §V and Fig. 4 (tolerances), §VI (optimisation).</source>
+        <translation>[1] G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos: Machining error predictive model in a CAPP system for turning: formulation and initial tests (2008). Se usa: ec. 2–8 (desviación), §III (muelles de husillo y plato a partir de una barra de prueba), §V y fig. 4 (tolerancias), §VI (optimización).</translation>
+    </message>
+    <message>
+        <source>[2] X. Li, R. Du: Analysis and compensation of workpiece errors in turning. Int. J. Prod. Res. 40(7) (2002). Used: eq. 15–20 (forces with the nose radius), §3.4 (compensation).</source>
+        <translation>[2] X. Li, R. Du: Analysis and compensation of workpiece errors in turning. Int. J. Prod. Res. 40(7) (2002). Se usa: ec. 15–20 (fuerzas con el radio de punta), §3.4 (compensación).</translation>
+    </message>
+    <message>
+        <source>[3] O. Kienzle: Die Bestimmung von Kräften und Leistungen an spanenden Werkzeugen und Werkzeugmaschinen. VDI-Z 94 (1952) 299–305. Used: the specific cutting force kc1.1 · h^-mc.</source>
+        <translation>[3] O. Kienzle: Die Bestimmung von Kräften und Leistungen an spanenden Werkzeugen und Werkzeugmaschinen. VDI-Z 94 (1952) 299–305. Se usa: la fuerza específica de corte kc1.1 · h^-mc.</translation>
+    </message>
+    <message>
+        <source>[4] G. R. Cowper: The shear coefficient in Timoshenko&apos;s beam theory. J. Appl. Mech. 33 (1966) 335–340. Used: the shear coefficient of solid and hollow round sections.</source>
+        <translation>[4] G. R. Cowper: The shear coefficient in Timoshenko&apos;s beam theory. J. Appl. Mech. 33 (1966) 335–340. Se usa: el coeficiente de cortante de secciones circulares macizas y huecas.</translation>
+    </message>
+    <message>
+        <source>[5] ISO 286-1 and ISO 286-2: limits and fits (tolerance grades, fundamental deviations).</source>
+        <translation>[5] ISO 286-1 e ISO 286-2: límites y ajustes (grados de tolerancia, diferencias fundamentales).</translation>
+    </message>
+    <message>
+        <source>[6] ISO 1101: geometrical tolerancing (form, orientation, location and run-out).</source>
+        <translation>[6] ISO 1101: tolerancias geométricas (forma, orientación, posición y alabeo).</translation>
+    </message>
+    <message>
+        <source>[7] ISO 3002-1: basic quantities in cutting (entering and trailing edge angles).</source>
+        <translation>[7] ISO 3002-1: magnitudes básicas del corte (ángulos de posición principal y secundario).</translation>
+    </message>
+    <message>
+        <source>The equations as implemented, the corrections of printing errors and the validation against closed forms: docs/model.md of TolTurn.</source>
+        <translation>Las ecuaciones tal como se implementan, las correcciones de erratas y la validación frente a soluciones cerradas: docs/model.md de TolTurn.</translation>
+    </message>
+    <message>
+        <source>Appendix B  Sources of the data</source>
+        <translation>Anexo B  Fuentes de los datos</translation>
+    </message>
+    <message>
+        <source>Chuck stiffness range: %1</source>
+        <translation>Intervalo de rigidez del plato: %1</translation>
+    </message>
+    <message>
+        <source>Machine stiffness, measured: %1</source>
+        <translation>Rigidez de la máquina, medida: %1</translation>
+    </message>
+    <message>
+        <source>Tool life: %1</source>
+        <translation>Vida de la herramienta: %1</translation>
     </message>
 </context>
 <context>

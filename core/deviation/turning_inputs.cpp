@@ -149,8 +149,8 @@ double toolpostCompliance(const Project &p, const DataLibrary &data, QStringList
     if (!p.tool.overhang_mm && h->length_mm) {
         length = h->length_mm->value;
         notes << DeviationModel::tr(
-                     "Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; give "
-                     "tool.overhang_mm for the length out of the turret.")
+                     "Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; enter "
+                     "the tool's overhang (the length out of the turret) to replace it.")
                      .arg(num(length));
     }
     ToolpostCompliance tp;

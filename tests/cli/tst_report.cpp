@@ -11,6 +11,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
+
 using tolturn::test::example;
 using tolturn::test::Run;
 using tolturn::test::runCli;
@@ -58,8 +60,9 @@ private Q_SLOTS:
         QVERIFY(r.out.contains(QStringLiteral("%1 pages").arg(pages)));
 
         const QString text = pdfText(pdf);
-        for (const char *section : {"1 Part", "2 Set-up sheet and inputs", "3 Predicted deviation", "4 Tolerances",
-                                    "5 Plan", "6 Assumptions and sources"}) {
+        for (const char *section :
+             {"1 Part", "2 Set-up sheet and inputs", "3 Predicted deviation", "4 Tolerances", "5 Plan", "6 Assumptions",
+              "Appendix A Literature", "Appendix B Sources of the data"}) {
             const QString pattern =
                 QStringLiteral("^\\f?%1$")
                     .arg( // a heading may open a page
@@ -67,6 +70,21 @@ private Q_SLOTS:
             QVERIFY2(text.contains(QRegularExpression(pattern, QRegularExpression::MultilineOption)), section);
         }
         QVERIFY(text.contains(QStringLiteral("page %1 of %1").arg(pages)));
+        // The appendices open a page of their own: the shop floor reads up to the assumptions.
+        const QStringList pageTexts = text.split(QLatin1Char('\f'));
+        const auto appendix = std::find_if(pageTexts.begin(), pageTexts.end(), [](const QString &page) {
+            return page.contains(QStringLiteral("Appendix A"));
+        });
+        QVERIFY(appendix != pageTexts.end());
+        QVERIFY(appendix->trimmed().startsWith(QStringLiteral("Appendix A")));
+        QVERIFY(appendix->contains(QStringLiteral("[3] O. Kienzle")));
+        // The material's and the chuck's sources, for a machine that was not measured ("stiffness" is
+        // set with a ligature in the PDF's text).
+        const QString dataSources = text.mid(text.indexOf(QStringLiteral("Appendix B")));
+        QVERIFY(dataSources.contains(QStringLiteral("Material data (C45E-N): ISCAR")));
+        QVERIFY2(dataSources.contains(QStringLiteral("range: 'Modular Design for Machine Tools'")),
+                 qPrintable(dataSources));
+        QVERIFY(!text.contains(QStringLiteral("tool.overhang_mm"))); // no internal keys
         QVERIFY(text.contains(QStringLiteral("C45E-N")));
         // The finishing feed below the insert's published range is said in the inputs, in words, and the
         // eight roughing passes below its speed range once.

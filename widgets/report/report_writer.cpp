@@ -394,28 +394,59 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
     l.table(rows, {70, 90, 90, 120, 120});
 }
 
-void sources(Layout &l, const Project &p, const DeviationResult &d)
+void assumptions(Layout &l, const DeviationResult &d)
 {
-    l.heading(Report::tr("6  Assumptions and sources"));
+    l.heading(Report::tr("6  Assumptions"));
+    l.paragraph(Report::tr("What this prediction rests on, beyond the project's own values:"), 8.5);
     if (d.inputs) {
         for (const QString &note : d.inputs->notes)
             l.paragraph(QStringLiteral("• ") + note, 8.5);
     }
-    l.paragraph(
-        Report::tr("Model: G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos, Machining error predictive model in a CAPP "
-                   "system for turning (2008): eq. 2–8 (deviation), §V and Fig. 4 (tolerances), §VI (optimisation). "
-                   "X. Li, R. Du, Analysis and compensation of workpiece errors in turning, Int. J. Prod. Res. 40(7) "
-                   "(2002): eq. 15–20 (forces), §3.4 (compensation). Kienzle (1952) forces; Timoshenko beam with the "
-                   "shear coefficient of G. R. Cowper (1966); ISO 286-1/-2 limits; ISO 1101 characteristics. The "
-                   "equations as implemented, their corrections and the validation: docs/model.md in TolTurn."),
-        8.5);
+}
+
+// The literature the model comes from, numbered, with what is used of each.
+void literature(Layout &l)
+{
+    l.heading(Report::tr("Appendix A  Literature"));
+    const QStringList references{
+        Report::tr("[1] G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos: Machining error predictive model in a CAPP "
+                   "system for turning: formulation and initial tests (2008). Used: eq. 2–8 (deviation), §III "
+                   "(spindle–chuck springs from a test bar), §V and Fig. 4 (tolerances), §VI (optimisation)."),
+        Report::tr("[2] X. Li, R. Du: Analysis and compensation of workpiece errors in turning. Int. J. Prod. Res. "
+                   "40(7) (2002). Used: eq. 15–20 (forces with the nose radius), §3.4 (compensation)."),
+        Report::tr("[3] O. Kienzle: Die Bestimmung von Kräften und Leistungen an spanenden Werkzeugen und "
+                   "Werkzeugmaschinen. VDI-Z 94 (1952) 299–305. Used: the specific cutting force kc1.1 · h^-mc."),
+        Report::tr("[4] G. R. Cowper: The shear coefficient in Timoshenko's beam theory. J. Appl. Mech. 33 (1966) "
+                   "335–340. Used: the shear coefficient of solid and hollow round sections."),
+        Report::tr("[5] ISO 286-1 and ISO 286-2: limits and fits (tolerance grades, fundamental deviations)."),
+        Report::tr("[6] ISO 1101: geometrical tolerancing (form, orientation, location and run-out)."),
+        Report::tr("[7] ISO 3002-1: basic quantities in cutting (entering and trailing edge angles)."),
+        Report::tr("The equations as implemented, the corrections of printing errors and the validation against "
+                   "closed forms: docs/model.md of TolTurn.")};
+    for (const QString &reference : references)
+        l.paragraph(reference, 8.5);
+}
+
+// Where every number of the data library that this project used comes from.
+void dataSources(Layout &l, const Project &p)
+{
+    l.heading(Report::tr("Appendix B  Sources of the data"));
     const DataLibrary &data = DataLibrary::builtIn();
     if (const MaterialData *m = data.material(p.materialId)) {
         l.paragraph(Report::tr("Material data (%1): %2").arg(m->id, data.sourceText(m->kc11_MPa.source)), 8.0);
         l.paragraph(Report::tr("Elastic constants: %1").arg(data.sourceText(m->youngsModulus_MPa.source)), 8.0);
     }
+    if (p.characterisation.spindleRadial == std::nullopt) {
+        if (const auto &chuck = data.uncharacterisedSupports().chuckRadial)
+            l.paragraph(Report::tr("Chuck stiffness range: %1").arg(data.sourceText(chuck->compliant_N_per_mm.source)),
+                        8.0);
+    } else if (!p.characterisation.source.isEmpty()) {
+        l.paragraph(Report::tr("Machine stiffness, measured: %1").arg(p.characterisation.source), 8.0);
+    }
     if (!p.planning.rangesSource.isEmpty())
         l.paragraph(Report::tr("Cutting ranges: %1").arg(p.planning.rangesSource), 8.0);
+    if (!p.planning.toolLifeSource.isEmpty())
+        l.paragraph(Report::tr("Tool life: %1").arg(p.planning.toolLifeSource), 8.0);
 }
 
 ReportResult cancelledReport()
@@ -499,7 +530,10 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
         rendered.cancelled = true;
         return rendered;
     }
-    sources(layout, project, deviation);
+    assumptions(layout, deviation);
+    layout.newPage(); // the appendices: for reference, not for the shop floor
+    literature(layout);
+    dataSources(layout, project);
     const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
     rendered.pdf = pdfOf(pages, project);
     rendered.pages = static_cast<int>(pages.size());
