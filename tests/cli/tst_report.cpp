@@ -70,7 +70,7 @@ private Q_SLOTS:
             QVERIFY2(text.contains(QRegularExpression(pattern, QRegularExpression::MultilineOption)), section);
         }
         QVERIFY(text.contains(QStringLiteral("page %1 of %1").arg(pages)));
-        // The appendices open a page of their own: the shop floor reads up to the assumptions.
+        // The appendices open a page of their own here: the assumptions end low on their page.
         const QStringList pageTexts = text.split(QLatin1Char('\f'));
         const auto appendix = std::find_if(pageTexts.begin(), pageTexts.end(), [](const QString &page) {
             return page.contains(QStringLiteral("Appendix A"));
@@ -78,6 +78,8 @@ private Q_SLOTS:
         QVERIFY(appendix != pageTexts.end());
         QVERIFY(appendix->trimmed().startsWith(QStringLiteral("Appendix A")));
         QVERIFY(appendix->contains(QStringLiteral("[3] O. Kienzle")));
+        QVERIFY((appendix - 1)->contains(QStringLiteral("6  Assumptions")) ||
+                (appendix - 1)->contains(QStringLiteral("6 Assumptions")));
         // The material's and the chuck's sources, for a machine that was not measured ("stiffness" is
         // set with a ligature in the PDF's text).
         const QString dataSources = text.mid(text.indexOf(QStringLiteral("Appendix B")));
@@ -160,6 +162,36 @@ private Q_SLOTS:
         const QString path = dir.filePath(QStringLiteral("piped.pdf"));
         QVERIFY(tolturn::test::writeFile(path, pdf));
         QVERIFY(pdfText(path).contains(QStringLiteral("Stepped shaft")));
+    }
+
+    // No page holds only a few lines: on every page but the last, the content (words, by their
+    // boxes from pdftotext -bbox, the footer left out) reaches below the middle of the page.
+    void pagesAreFilled()
+    {
+        for (const char *name :
+             {"stepped-shaft-chuck.tolturn", "hollow-sleeve-tailstock.tolturn", "long-shaft-centres.tolturn",
+              "slender-pin-chuck.tolturn", "thin-pin-compensation.tolturn"}) {
+            QTemporaryDir dir;
+            const QString pdf = dir.filePath(QStringLiteral("r.pdf"));
+            QCOMPARE(runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, example(name)}).exitCode, 0);
+            const Run boxes =
+                runProgram(QStringLiteral("pdftotext"), {QStringLiteral("-bbox"), pdf, QStringLiteral("-")});
+            const QStringList pages = boxes.out.split(QStringLiteral("<page "));
+            static const QRegularExpression word(QStringLiteral("yMax=\"([0-9.]+)\""));
+            constexpr double kPageHeight = 842.0;              // A4 in points
+            constexpr double kFooterTop = kPageHeight - 48.0;  // the footer sits in the bottom margin
+            for (qsizetype i = 1; i + 1 < pages.size(); ++i) { // [0] is the document's head
+                double bottom = 0.0;
+                for (auto it = word.globalMatch(pages[i]); it.hasNext();) {
+                    const double y = it.next().captured(1).toDouble();
+                    if (y < kFooterTop)
+                        bottom = std::max(bottom, y);
+                }
+                QVERIFY2(bottom > kPageHeight / 2.0,
+                         qPrintable(
+                             QStringLiteral("%1: page %2 ends at %3 pt").arg(QLatin1String(name)).arg(i).arg(bottom)));
+            }
+        }
     }
 
     void badProjectWritesNothing()

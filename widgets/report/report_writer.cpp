@@ -531,7 +531,10 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
         return rendered;
     }
     assumptions(layout, deviation);
-    layout.newPage(); // the appendices: for reference, not for the shop floor
+    // The appendices (for reference, not for the shop floor) open a page unless a third of this
+    // one is still free: no page is left holding a few lines.
+    if (layout.remaining() < (report::kBottom - report::kMargin) / 3.0)
+        layout.newPage();
     literature(layout);
     dataSources(layout, project);
     const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
