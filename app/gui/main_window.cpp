@@ -76,6 +76,9 @@ MainWindow::MainWindow(QWidget *parent)
     setWindowIcon(QIcon(applicationIconPath()));
     m_profileView->setObjectName(QStringLiteral("profileView"));
     setCentralWidget(m_profileView);
+    // The drawing keeps room for a legible part when the window is small (a laptop): the docks give
+    // way first.
+    m_profileView->setMinimumSize(520, 240);
     statusBar()->addPermanentWidget(m_summary);
     statusBar()->showMessage(tr("Open a project (File > Open) or an example part (File > Open Example)."));
 

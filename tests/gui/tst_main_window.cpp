@@ -28,6 +28,7 @@
 #include <QGraphicsItem>
 #include <QGraphicsRectItem>
 #include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -147,9 +148,12 @@ private Q_SLOTS:
         // No two dimension texts of the drawing overlap at this size (ISO 129-1 legibility).
         auto *view = w.findChild<ProfileView *>(QStringLiteral("profileView"));
         std::vector<QRectF> labels;
+        // Where Qt draws each text, from the text items themselves (not from DimensionItem's own
+        // arithmetic, which the layout uses).
         for (QGraphicsItem *item : view->scene()->items())
-            if (const auto *d = dynamic_cast<DimensionItem *>(item))
-                labels.push_back(d->labelRect(view->viewportTransform()));
+            if (const auto *text = dynamic_cast<QGraphicsSimpleTextItem *>(item);
+                text && dynamic_cast<DimensionItem *>(text->parentItem()))
+                labels.push_back(text->deviceTransform(view->viewportTransform()).mapRect(text->boundingRect()));
         QVERIFY(labels.size() >= 10);
         for (std::size_t i = 0; i < labels.size(); ++i)
             for (std::size_t j = i + 1; j < labels.size(); ++j)

@@ -50,9 +50,9 @@ void DimensionItem::shiftLabel(double along, double lift)
 
 QRectF DimensionItem::labelRect(const QTransform &sceneToDevice) const
 {
-    // The label ignores the scene's scale: its anchor maps, its box does not scale.
-    const QPointF anchor = sceneToDevice.map(m_label->scenePos());
-    return m_label->transform().mapRect(m_label->boundingRect()).translated(anchor);
+    // The label ignores the scene's scale: Qt's device transform maps its anchor and applies its
+    // own offset and turn in pixels.
+    return m_label->deviceTransform(sceneToDevice).mapRect(m_label->boundingRect());
 }
 
 bool DimensionItem::isAcross() const
