@@ -2657,6 +2657,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>reading &apos;%1&apos; failed: %2</source>
         <translation>das Lesen von „%1“ ist fehlgeschlagen: %2</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos;, line %2: the number &apos;%3&apos; is beyond the largest real (about 1.8e308)</source>
+        <translation>&apos;%1&apos;, Zeile %2: Die Zahl &apos;%3&apos; liegt jenseits der größten reellen Zahl (etwa 1,8e308)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a consistent model: %2</source>
+        <translation>&apos;%1&apos; ist kein widerspruchsfreies Modell: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; could not be read: OpenCascade stopped on an invalid model (%2); check the file in the CAD system that wrote it</source>
+        <translation>&apos;%1&apos; konnte nicht gelesen werden: OpenCascade hielt bei einem ungültigen Modell an (%2); prüfen Sie die Datei in dem CAD-System, das sie geschrieben hat</translation>
+    </message>
 </context>
 <context>
     <name>StiffnessCommand</name>

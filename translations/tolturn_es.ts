@@ -2657,6 +2657,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>reading &apos;%1&apos; failed: %2</source>
         <translation>error al leer &apos;%1&apos;: %2</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos;, line %2: the number &apos;%3&apos; is beyond the largest real (about 1.8e308)</source>
+        <translation>&apos;%1&apos;, línea %2: el número &apos;%3&apos; supera el mayor real (unos 1,8e308)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a consistent model: %2</source>
+        <translation>&apos;%1&apos; no es un modelo coherente: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; could not be read: OpenCascade stopped on an invalid model (%2); check the file in the CAD system that wrote it</source>
+        <translation>No se pudo leer &apos;%1&apos;: OpenCascade se detuvo ante un modelo no válido (%2); revise el archivo en el sistema CAD que lo escribió</translation>
+    </message>
 </context>
 <context>
     <name>StiffnessCommand</name>

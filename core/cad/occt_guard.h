@@ -16,6 +16,13 @@ namespace tolturn::cad {
 
 [[nodiscard]] std::mutex &occtMutex();
 
+// Runs `work` with OpenCascade's signal handlers set (OSD::SetSignal with OCC_CATCH_SIGNALS), so
+// that an invalid memory access inside OpenCascade, as a malformed file can cause in its
+// translators, is thrown from here as a Standard_Failure (OSD_SIGSEGV, ...) instead of ending the
+// process. The handlers the process had are restored afterwards. What `work` had on its stack at
+// the fault is not destroyed (OpenCascade jumps out with longjmp): hold locks outside it.
+void runGuarded(const std::function<void()> &work);
+
 // While alive (and while the lock is held), OpenCascade's default messenger prints failures only:
 // its readers and writers print transfer statistics to standard output, which would mix with
 // the CLI's results (JSON). The previous trace levels are restored afterwards.

@@ -9,16 +9,23 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <Standard_Failure.hxx>
 
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Reader.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_InterfaceModel.hxx>
 #include <Interface_Static.hxx>
+#include <OSD_Signal.hxx>
 #include <STEPControl_Reader.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -41,6 +48,8 @@ constexpr double kTraceDone = 0.95;
 
 // Bytes read from each end of the file to recognise its format.
 constexpr qint64 kSniffBytes = 4096;
+// Lines are read this long at most when the file is scanned (a STEP or IGES line is far shorter).
+constexpr qint64 kMaxLineBytes = 1 << 20;
 
 QString num(double v)
 {
@@ -101,6 +110,53 @@ QString checkIgesText(const QString &path, const QByteArray &head, const QByteAr
     return {};
 }
 
+// The number (digits, sign, point, exponent) that the character at `at` belongs to.
+QString numberAround(const QString &text, qsizetype at)
+{
+    const auto inNumber = [](QChar c) {
+        return c.isDigit() || c == QLatin1Char('.') || c == QLatin1Char('+') || c == QLatin1Char('-') ||
+               c.toUpper() == QLatin1Char('E') || c.toUpper() == QLatin1Char('D');
+    };
+    qsizetype from = at;
+    while (from > 0 && inNumber(text.at(from - 1)))
+        --from;
+    qsizetype to = at;
+    while (to < text.size() && inNumber(text.at(to)))
+        ++to;
+    return text.mid(from, to - from);
+}
+
+// A real that overflows a double (STEP 1.E400, IGES 1.0D400) becomes infinite in OpenCascade,
+// whose geometry then fails in ways it does not report (a crash in curve projection): such a
+// file is refused with the line and the number.
+QString checkRealsFinite(const QString &path, QFile &file, CadFormat format)
+{
+    static const QRegularExpression withExponent(QStringLiteral("[0-9.]([EeDd])([+]?)([0-9]{3,})"));
+    constexpr int kLargestExponent = 308; // DBL_MAX is about 1.8e308 (IEC 60559 binary64)
+    file.seek(0);
+    for (qint64 line = 1; !file.atEnd(); ++line) {
+        QString text = QString::fromLatin1(file.readLine(kMaxLineBytes));
+        if (format == CadFormat::Iges) {
+            // IGES 5.3 §2.1: reals only in the Global (G) and Parameter Data (P) sections, in
+            // columns 1–72 and 1–64; the rest of a record is its section letter and sequence.
+            constexpr int kSectionColumn = 72;
+            const QChar section = text.size() > kSectionColumn ? text.at(kSectionColumn) : QChar();
+            if (section != QLatin1Char('G') && section != QLatin1Char('P'))
+                continue;
+            text.truncate(section == QLatin1Char('P') ? 64 : kSectionColumn);
+        }
+        for (auto it = withExponent.globalMatch(text); it.hasNext();) {
+            const QRegularExpressionMatch m = it.next();
+            if (m.captured(3).toInt() > kLargestExponent)
+                return StepImport::tr("'%1', line %2: the number '%3' is beyond the largest real (about 1.8e308)")
+                    .arg(path)
+                    .arg(line)
+                    .arg(numberAround(text, m.capturedStart(1)));
+        }
+    }
+    return {};
+}
+
 // The problem with the file before OpenCascade sees it, empty when it looks readable.
 QString checkFile(const QString &path, CadFormat format)
 {
@@ -117,13 +173,34 @@ QString checkFile(const QString &path, CadFormat format)
     const QByteArray head = file.read(kSniffBytes);
     file.seek(std::max<qint64>(0, info.size() - kSniffBytes));
     const QByteArray tail = file.readAll();
-    return format == CadFormat::Step ? checkStepText(path, head, tail) : checkIgesText(path, head, tail);
+    QString problem = format == CadFormat::Step ? checkStepText(path, head, tail) : checkIgesText(path, head, tail);
+    return problem.isEmpty() ? checkRealsFinite(path, file, format) : problem;
 }
 
-// Reads and transfers the file under the OpenCascade lock; a null shape after an error.
+// The first failure OpenCascade found while loading the file (an unresolved reference, an entity
+// of the wrong type), with the entity's label; empty when there is none. A model with one is not
+// transferred: its translators assume a consistent model.
+QString firstLoadFailure(XSControl_Reader &reader)
+{
+    const Interface_CheckIterator checks = reader.WS()->ModelCheckList(Standard_False);
+    const Handle(Interface_InterfaceModel) model = reader.Model();
+    for (checks.Start(); checks.More(); checks.Next()) {
+        const Handle(Interface_Check) &check = checks.Value();
+        if (check.IsNull() || !check->HasFailed() || check->NbFails() < 1)
+            continue;
+        const int entity = checks.Number();
+        const QString label = entity > 0 && !model.IsNull() && entity <= model->NbEntities()
+                                  ? QString::fromLatin1(model->StringLabel(model->Value(entity))->ToCString())
+                                  : QString();
+        const QString message = QString::fromLatin1(check->CFail(1, Standard_True));
+        return label.isEmpty() ? message : QStringLiteral("%1: %2").arg(label, message);
+    }
+    return {};
+}
+
+// Reads and transfers the file (the caller holds the OpenCascade lock); a null shape after an error.
 TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOptions &options, CadImportResult &result)
 {
-    const std::lock_guard lock(cad::occtMutex());
     const cad::QuietMessages quiet;
     STEPControl_Reader step;
     IGESControl_Reader iges;
@@ -138,6 +215,10 @@ TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOpt
         fail(result, format == CadFormat::Step
                          ? StepImport::tr("OpenCascade cannot parse '%1' as a STEP file (ISO 10303-21)").arg(path)
                          : StepImport::tr("OpenCascade cannot parse '%1' as an IGES file").arg(path));
+        return {};
+    }
+    if (const QString failure = firstLoadFailure(reader); !failure.isEmpty()) {
+        fail(result, StepImport::tr("'%1' is not a consistent model: %2").arg(path, failure));
         return {};
     }
     if (!report(options, result, kReadDone))
@@ -340,8 +421,15 @@ void importInto(const QString &path, const CadImportOptions &options, CadImportR
 CadImportResult importCadFile(const QString &path, const CadImportOptions &options)
 {
     CadImportResult result;
+    // The whole import under the lock and the signal guard: OpenCascade's global state is shared,
+    // and a malformed model can make its algorithms fault anywhere, not only in the reader.
+    const std::lock_guard lock(cad::occtMutex());
     try {
-        importInto(path, options, result);
+        cad::runGuarded([&] { importInto(path, options, result); });
+    } catch (const OSD_Signal &e) {
+        fail(result, StepImport::tr("'%1' could not be read: OpenCascade stopped on an invalid model (%2); check the "
+                                    "file in the CAD system that wrote it")
+                         .arg(path, QString::fromLocal8Bit(e.GetMessageString()).trimmed()));
     } catch (const Standard_Failure &e) {
         fail(result, StepImport::tr("OpenCascade failed while reading '%1': %2")
                          .arg(path, QString::fromLocal8Bit(e.GetMessageString())));

@@ -2,6 +2,7 @@
 // STEP/IGES import (issue 7): parts are built here with OpenCascade from hand-made profiles (with
 // fillets, chamfers, a bore, and non-turned features cut in), written to files and imported; the
 // extracted contours must match the hand-made ones to 1 µm.
+#include "core/cad/occt_guard.h"
 #include "core/cad/step_export.h"
 #include "core/cad/step_import.h"
 
@@ -10,6 +11,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <Standard_Failure.hxx>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
@@ -35,7 +37,9 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <gp_Ax2.hxx>
 #include <numbers>
 
@@ -661,6 +665,72 @@ private Q_SLOTS:
         QVERIFY(file.resize(file.size() / 2));
         file.close();
         expectNamedError(importCadFile(path), name, QStringLiteral("truncated"));
+    }
+
+    // Files a fuzzer broke (issue 14): each a named error, the process alive. A deleted entity
+    // line left OpenCascade's face translator on a null reference (a crash); reals beyond a
+    // double became infinite and crashed its curve projection.
+    void malformedModelsGiveNamedErrors_data()
+    {
+        QTest::addColumn<QString>("edit");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("edge loop deleted")
+            << QStringLiteral("delete-edge-loop") << QStringLiteral("is not a consistent model: #");
+        QTest::newRow("reference to nothing")
+            << QStringLiteral("dangling-reference") << QStringLiteral("is not a consistent model: #");
+        QTest::newRow("real beyond a double")
+            << QStringLiteral("overflow") << QStringLiteral("the number '1.E400' is beyond the largest real");
+    }
+
+    void malformedModelsGiveNamedErrors()
+    {
+        QFETCH(QString, edit);
+        QFETCH(QString, reason);
+        const QString path = m_dir.filePath(edit + QStringLiteral(".step"));
+        writeCad(pinPart(), path);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QStringList lines = QString::fromLatin1(file.readAll()).split(QLatin1Char('\n'));
+        file.close();
+        const auto first = [&lines](const char *entity) {
+            return std::find_if(lines.begin(), lines.end(),
+                                [entity](const QString &l) { return l.contains(QLatin1String(entity)); });
+        };
+        if (edit == QLatin1String("delete-edge-loop")) {
+            lines.erase(first("EDGE_LOOP"));
+        } else if (edit == QLatin1String("dangling-reference")) {
+            auto loop = first("ADVANCED_FACE");
+            loop->replace(QRegularExpression(QStringLiteral("\\(#\\d+")), QStringLiteral("(#999999"));
+        } else {
+            auto point = first("CARTESIAN_POINT");
+            point->replace(QRegularExpression(QStringLiteral("\\(([^()]*)\\)\\s*\\)")),
+                           QStringLiteral("(1.E400,0.,0.))"));
+        }
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(lines.join(QLatin1Char('\n')).toLatin1());
+        file.close();
+        expectNamedError(importCadFile(path), edit + QStringLiteral(".step"), reason);
+    }
+
+    // A fault inside OpenCascade under the guard is an exception, not the end of the process, and
+    // the process's own handlers are back afterwards.
+    void faultsUnderTheGuardAreExceptions()
+    {
+        struct sigaction before {};
+
+        sigaction(SIGSEGV, nullptr, &before);
+        bool thrown = false;
+        try {
+            cad::runGuarded([] { std::raise(SIGSEGV); });
+        } catch (const Standard_Failure &e) {
+            thrown = QString::fromLatin1(e.DynamicType()->Name()).startsWith(QStringLiteral("OSD_"));
+        }
+        QVERIFY(thrown);
+
+        struct sigaction after {};
+
+        sigaction(SIGSEGV, nullptr, &after);
+        QVERIFY(after.sa_handler == before.sa_handler);
     }
 
     void sectionNotTurnedAllRoundIsAnError()
