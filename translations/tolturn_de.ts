@@ -147,10 +147,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>--pass muss ein Schnittindex sein (0, 1, …), nicht „%1“</translation>
     </message>
     <message>
-        <source>--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), not &quot;%1&quot;</source>
-        <translation>--load erwartet drei Zahlen in Newton, radial,tangential,axial (z. B. 200,500,150), nicht „%1“</translation>
-    </message>
-    <message>
         <source>K_n = %1 N/mm², K_f = %2 (Li &amp; Du eq. 15), RMS residual %3 N over %4 cuts</source>
         <translation>K_n = %1 N/mm², K_f = %2 (Li &amp; Du Gl. 15), RMS-Restfehler %3 N über %4 Schnitte</translation>
     </message>
@@ -419,6 +415,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>%n Toleranz</numerusform>
             <numerusform>%n Toleranzen</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>the result is not finite at &apos;%1&apos;: the inputs lie beyond what the model computes (see the input bounds in docs/project-format.md)</source>
+        <translation>das Ergebnis ist bei &apos;%1&apos; nicht endlich: Die Eingaben liegen jenseits dessen, was das Modell berechnet (siehe die Eingabegrenzen in docs/project-format.md)</translation>
+    </message>
+    <message>
+        <source>--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), each at most 1e6, not &quot;%1&quot;</source>
+        <translation>--load nimmt drei Zahlen in Newton, radial,tangential,axial (z. B. 200,500,150), jede höchstens 1e6, nicht &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
@@ -822,6 +826,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>InputBounds</name>
+    <message>
+        <source>%1 is beyond what TolTurn computes with: at most %2%3</source>
+        <translation>%1 liegt jenseits dessen, womit TolTurn rechnet: höchstens %2%3</translation>
+    </message>
+</context>
+<context>
     <name>InsertCodes</name>
     <message>
         <source>insert code &quot;%1&quot;: %2</source>
@@ -1205,6 +1216,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>No spindle speed limit known (machine data or planning.max_spindle_speed_rpm): spindle speed is not constrained.</source>
         <translation>Keine Drehzahlgrenze bekannt (Maschinendaten oder planning.max_spindle_speed_rpm): die Drehzahl ist nicht begrenzt.</translation>
+    </message>
+    <message>
+        <source>the stock leaves %1 mm to remove on the radius: at least %2 roughing passes at the insert&apos;s largest depth of cut (%3 mm), and the optimiser plans up to %4; turn from a smaller bar</source>
+        <translation>das Rohteil lässt %1 mm auf dem Radius abzutragen: mindestens %2 Schruppschnitte bei der größten Schnitttiefe der Wendeschneidplatte (%3 mm), und der Optimierer plant bis zu %4; drehen Sie aus einer kleineren Stange</translation>
     </message>
 </context>
 <context>
@@ -2737,16 +2752,16 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>ein Prüfstab-Projekt und eine Messdatei angeben, und --write oder --into, nicht beides</translation>
     </message>
     <message>
-        <source>--load takes three numbers in newtons, radial,tangential,axial, not &quot;%1&quot;</source>
-        <translation>--load erwartet drei Zahlen in Newton, radial,tangential,axial, nicht &quot;%1&quot;</translation>
-    </message>
-    <message>
         <source>--pivot takes a length in mm, not &quot;%1&quot;</source>
         <translation>--pivot erwartet eine Länge in mm, nicht &quot;%1&quot;</translation>
     </message>
     <message>
         <source>wrote %1: spindle–chuck springs</source>
         <translation>%1 geschrieben: Federn der Spindel–Futter-Einheit</translation>
+    </message>
+    <message>
+        <source>--load takes three numbers in newtons, radial,tangential,axial, each at most 1e6, not &quot;%1&quot;</source>
+        <translation>--load nimmt drei Zahlen in Newton, radial,tangential,axial, jede höchstens 1e6, nicht &quot;%1&quot;</translation>
     </message>
 </context>
 <context>

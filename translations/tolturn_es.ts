@@ -147,10 +147,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>--pass debe ser un índice de pasada (0, 1, …), no &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), not &quot;%1&quot;</source>
-        <translation>--load admite tres números en newtons, radial,tangencial,axial (p. ej. 200,500,150), no &quot;%1&quot;</translation>
-    </message>
-    <message>
         <source>K_n = %1 N/mm², K_f = %2 (Li &amp; Du eq. 15), RMS residual %3 N over %4 cuts</source>
         <translation>K_n = %1 N/mm², K_f = %2 (Li &amp; Du ec. 15), residuo RMS %3 N en %4 cortes</translation>
     </message>
@@ -419,6 +415,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>%n tolerancia</numerusform>
             <numerusform>%n tolerancias</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>the result is not finite at &apos;%1&apos;: the inputs lie beyond what the model computes (see the input bounds in docs/project-format.md)</source>
+        <translation>el resultado no es finito en &apos;%1&apos;: los datos quedan fuera de lo que el modelo calcula (vea los límites de entrada en docs/project-format.md)</translation>
+    </message>
+    <message>
+        <source>--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), each at most 1e6, not &quot;%1&quot;</source>
+        <translation>--load toma tres números en newtons, radial,tangencial,axial (p. ej. 200,500,150), cada uno como mucho 1e6, no &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
@@ -822,6 +826,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>InputBounds</name>
+    <message>
+        <source>%1 is beyond what TolTurn computes with: at most %2%3</source>
+        <translation>%1 supera lo que TolTurn calcula: como mucho %2%3</translation>
+    </message>
+</context>
+<context>
     <name>InsertCodes</name>
     <message>
         <source>insert code &quot;%1&quot;: %2</source>
@@ -1205,6 +1216,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>No spindle speed limit known (machine data or planning.max_spindle_speed_rpm): spindle speed is not constrained.</source>
         <translation>No se conoce límite de velocidad del husillo (datos de la máquina o planning.max_spindle_speed_rpm): la velocidad no está restringida.</translation>
+    </message>
+    <message>
+        <source>the stock leaves %1 mm to remove on the radius: at least %2 roughing passes at the insert&apos;s largest depth of cut (%3 mm), and the optimiser plans up to %4; turn from a smaller bar</source>
+        <translation>el bruto deja %1 mm que quitar en el radio: al menos %2 pasadas de desbaste a la mayor profundidad de corte de la plaquita (%3 mm), y el optimizador planifica hasta %4; tornee a partir de una barra menor</translation>
     </message>
 </context>
 <context>
@@ -2737,16 +2752,16 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>indique un proyecto de barra de prueba y un archivo de mediciones, y --write o --into, no ambos</translation>
     </message>
     <message>
-        <source>--load takes three numbers in newtons, radial,tangential,axial, not &quot;%1&quot;</source>
-        <translation>--load admite tres números en newtons, radial,tangencial,axial, no &quot;%1&quot;</translation>
-    </message>
-    <message>
         <source>--pivot takes a length in mm, not &quot;%1&quot;</source>
         <translation>--pivot admite una longitud en mm, no &quot;%1&quot;</translation>
     </message>
     <message>
         <source>wrote %1: spindle–chuck springs</source>
         <translation>escrito %1: muelles husillo–plato</translation>
+    </message>
+    <message>
+        <source>--load takes three numbers in newtons, radial,tangential,axial, each at most 1e6, not &quot;%1&quot;</source>
+        <translation>--load toma tres números en newtons, radial,tangencial,axial, cada uno como mucho 1e6, no &quot;%1&quot;</translation>
     </message>
 </context>
 <context>

@@ -94,8 +94,10 @@ int runCheck(const QStringList &args, QTextStream &out, QTextStream &err)
         if (valid)
             out << file << ": " << CommandLine::tr("ok") << " — " << projectSummary(*result.project) << '\n';
     }
-    if (parser.isSet(json))
-        out << QJsonDocument(reports).toJson(QJsonDocument::Indented);
+    if (parser.isSet(json)) {
+        if (const int code = printJson(reports, out, err, QStringLiteral("check")); code != kExitOk)
+            return code;
+    }
     return anyErrors ? kExitProblems : kExitOk;
 }
 

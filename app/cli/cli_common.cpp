@@ -7,6 +7,9 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileDevice>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QSaveFile>
 #include <QTextStream>
 
@@ -86,6 +89,47 @@ QString oneProjectFile(const QCommandLineParser &parser, const QString &command,
     return {};
 }
 
+namespace {
+
+// The path ("tolerances[2].value_um") of the first number in `v` that is not finite; empty if none.
+QString firstNonFinite(const QJsonValue &v, const QString &path)
+{
+    if (v.isDouble())
+        return std::isfinite(v.toDouble()) ? QString() : path;
+    if (v.isArray()) {
+        const QJsonArray array = v.toArray();
+        for (qsizetype i = 0; i < array.size(); ++i)
+            if (QString found = firstNonFinite(array.at(i), QStringLiteral("%1[%2]").arg(path).arg(i));
+                !found.isEmpty())
+                return found;
+    } else if (v.isObject()) {
+        const QJsonObject object = v.toObject();
+        for (auto it = object.begin(); it != object.end(); ++it)
+            if (QString found =
+                    firstNonFinite(it.value(), path.isEmpty() ? it.key() : path + QLatin1Char('.') + it.key());
+                !found.isEmpty())
+                return found;
+    }
+    return {};
+}
+
+} // namespace
+
+int printJson(const QJsonValue &result, QTextStream &out, QTextStream &err, const QString &command)
+{
+    if (const QString bad = firstNonFinite(result, QString()); !bad.isEmpty()) {
+        err << programName() << ' ' << command << ": "
+            << CommandLine::tr("the result is not finite at '%1': the inputs lie beyond what the model computes "
+                               "(see the input bounds in docs/project-format.md)")
+                   .arg(bad)
+            << '\n';
+        return kExitProblems;
+    }
+    out << (result.isArray() ? QJsonDocument(result.toArray()) : QJsonDocument(result.toObject()))
+               .toJson(QJsonDocument::Indented);
+    return kExitOk;
+}
+
 QJsonObject diagnosticJson(const Diagnostic &d)
 {
     return {{QStringLiteral("severity"),
@@ -103,7 +147,7 @@ std::optional<CuttingForces> parseLoad(const QString &text)
     for (int i = 0; i < 3; ++i) {
         bool ok = false;
         v[i] = parts.at(i).trimmed().toDouble(&ok);
-        if (!ok || !std::isfinite(v[i]))
+        if (!ok || !std::isfinite(v[i]) || std::abs(v[i]) > kMaxLoad_N)
             return std::nullopt;
     }
     return CuttingForces{v[1], v[2], v[0]};

@@ -6,6 +6,7 @@
 #include "core/project/project.h"
 
 #include <QJsonObject>
+#include <QJsonValue>
 #include <QString>
 #include <QStringList>
 
@@ -31,6 +32,11 @@ namespace tolturn {
 // The project file of a command that takes exactly one; empty after printing the usage error.
 [[nodiscard]] QString oneProjectFile(const QCommandLineParser &parser, const QString &command, QTextStream &err);
 
+// The largest force --load takes, per component: twice the 500 kN that a cut of the largest depth
+// and feed TolTurn takes (50 mm x 5 mm/rev = 250 mm²) needs at a specific cutting force of
+// 2 000 N/mm², about kc1.1 of a hard steel.
+inline constexpr double kMaxLoad_N = 1e6;
+
 // The forces of --load: "Fr,Ft,Fa" in newtons (radial, tangential, axial); nullopt if malformed.
 [[nodiscard]] std::optional<CuttingForces> parseLoad(const QString &text);
 
@@ -47,6 +53,12 @@ namespace tolturn {
 // Writes a command's output (text, or a PDF or STEP file) to a file atomically, or to standard
 // output for "-". Returns an error message, empty on success.
 [[nodiscard]] QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out);
+
+// Prints a command's JSON result, unless some number in it is not finite (an overflow the input
+// checks did not stop): then nothing is printed, the path of the first such number is named on
+// `err`, and the exit code for problems is returned; kExitOk otherwise. No `null` leaves with
+// exit code 0.
+[[nodiscard]] int printJson(const QJsonValue &result, QTextStream &out, QTextStream &err, const QString &command);
 
 // A finding as JSON: {"severity": "error" | "warning", "field": …, "message": …}.
 [[nodiscard]] QJsonObject diagnosticJson(const Diagnostic &d);

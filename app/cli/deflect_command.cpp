@@ -210,8 +210,9 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
         options.loadOverride = parseLoad(parser.value(load));
         if (!options.loadOverride) {
             err << programName() << " deflect: "
-                << CommandLine::tr(
-                       "--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), not \"%1\"")
+                << CommandLine::tr("--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), "
+                                   "each at most "
+                                   "1e6, not \"%1\"")
                        .arg(parser.value(load))
                 << '\n';
             return kExitUsage;
@@ -226,9 +227,8 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!result.inputs)
         return kExitProblems;
     if (parser.isSet(json))
-        out << QJsonDocument(deviationJson(file, *project, result)).toJson(QJsonDocument::Indented);
-    else
-        printDeviationText(out, result);
+        return printJson(deviationJson(file, *project, result), out, err, QStringLiteral("deflect"));
+    printDeviationText(out, result);
     return kExitOk;
 }
 

@@ -129,14 +129,13 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
         QJsonArray list;
         for (const ToleranceRangeEvaluation &e : range.tolerances)
             list.append(rangeEvaluationJson(e));
-        out << QJsonDocument(QJsonObject{{QStringLiteral("file"), file},
-                                         {QStringLiteral("machine_assumption"), assumption},
-                                         {QStringLiteral("machine_is_range"), range.machineIsRange},
-                                         {QStringLiteral("rigid_support_assumed"), range.someSupportRigid},
-                                         {QStringLiteral("notes"), QJsonArray::fromStringList(deviation.inputs->notes)},
-                                         {QStringLiteral("tolerances"), list}})
-                   .toJson(QJsonDocument::Indented);
-        return kExitOk;
+        return printJson(QJsonObject{{QStringLiteral("file"), file},
+                                     {QStringLiteral("machine_assumption"), assumption},
+                                     {QStringLiteral("machine_is_range"), range.machineIsRange},
+                                     {QStringLiteral("rigid_support_assumed"), range.someSupportRigid},
+                                     {QStringLiteral("notes"), QJsonArray::fromStringList(deviation.inputs->notes)},
+                                     {QStringLiteral("tolerances"), list}},
+                         out, err, QStringLiteral("evaluate"));
     }
     if (!assumption.isEmpty())
         out << CommandLine::tr("Machine: %1").arg(assumption) << '\n';

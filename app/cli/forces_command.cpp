@@ -113,11 +113,12 @@ int runCalibrateForces(const QStringList &args, QTextStream &out, QTextStream &e
     if (!cal.coefficients)
         return kExitProblems;
     if (parser.isSet(json)) {
-        out << QJsonDocument(QJsonObject{{QStringLiteral("normal_pressure_MPa"), cal.coefficients->normalPressure_MPa},
-                                         {QStringLiteral("friction_ratio"), cal.coefficients->frictionRatio},
-                                         {QStringLiteral("rms_residual_N"), cal.rmsResidual_N},
-                                         {QStringLiteral("cuts"), static_cast<int>(cuts.measurements->size())}})
-                   .toJson(QJsonDocument::Indented);
+        const QJsonObject result{{QStringLiteral("normal_pressure_MPa"), cal.coefficients->normalPressure_MPa},
+                                 {QStringLiteral("friction_ratio"), cal.coefficients->frictionRatio},
+                                 {QStringLiteral("rms_residual_N"), cal.rmsResidual_N},
+                                 {QStringLiteral("cuts"), static_cast<int>(cuts.measurements->size())}};
+        if (const int code = printJson(result, out, err, QStringLiteral("calibrate-forces")); code != kExitOk)
+            return code;
     } else {
         printCalibration(out, cal, *tool, *cuts.measurements);
     }

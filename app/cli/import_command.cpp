@@ -179,8 +179,10 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
     const CadImportResult r = importCadFile(file, options);
     const QString problem = writeImported(r, parser.value(output), parser.value(material), parser.value(machine), out);
     if (parser.isSet(json)) {
-        out << QJsonDocument(importJson(file, parser.value(output), r, problem.isEmpty()))
-                   .toJson(QJsonDocument::Indented);
+        if (const int code = printJson(importJson(file, parser.value(output), r, problem.isEmpty()), out, err,
+                                       QStringLiteral("import"));
+            code != kExitOk)
+            return code;
     } else {
         for (const Diagnostic &d : r.diagnostics)
             err << file << ": " << d.toString() << '\n';

@@ -102,12 +102,11 @@ int runIso286(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!r.limits)
         return kExitProblems;
     if (parser.isSet(json))
-        out << QJsonDocument(classLimitsJson(*r.limits)).toJson(QJsonDocument::Indented);
-    else
-        out << CommandLine::tr("%1 %2: upper %3 µm, lower %4 µm (%5 = %6 µm)")
-                   .arg(formatNumber(*nominal), r.limits->toleranceClass, signedUm(r.limits->upper_um),
-                        signedUm(r.limits->lower_um), r.limits->itName, formatNumber(r.limits->it_um))
-            << '\n';
+        return printJson(classLimitsJson(*r.limits), out, err, QStringLiteral("iso286"));
+    out << CommandLine::tr("%1 %2: upper %3 µm, lower %4 µm (%5 = %6 µm)")
+               .arg(formatNumber(*nominal), r.limits->toleranceClass, signedUm(r.limits->upper_um),
+                    signedUm(r.limits->lower_um), r.limits->itName, formatNumber(r.limits->it_um))
+        << '\n';
     return kExitOk;
 }
 
@@ -137,13 +136,15 @@ int runFit(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitProblems;
     const iso286::Fit &f = *r.fit;
     if (parser.isSet(json)) {
-        out << QJsonDocument(QJsonObject{{QStringLiteral("nominal_mm"), *nominal},
-                                         {QStringLiteral("hole"), classLimitsJson(f.hole)},
-                                         {QStringLiteral("shaft"), classLimitsJson(f.shaft)},
-                                         {QStringLiteral("type"), iso286::fitTypeKeyword(f.type)},
-                                         {QStringLiteral("max_clearance_um"), f.maxClearance_um},
-                                         {QStringLiteral("min_clearance_um"), f.minClearance_um}})
-                   .toJson(QJsonDocument::Indented);
+        if (const int code = printJson(QJsonObject{{QStringLiteral("nominal_mm"), *nominal},
+                                                   {QStringLiteral("hole"), classLimitsJson(f.hole)},
+                                                   {QStringLiteral("shaft"), classLimitsJson(f.shaft)},
+                                                   {QStringLiteral("type"), iso286::fitTypeKeyword(f.type)},
+                                                   {QStringLiteral("max_clearance_um"), f.maxClearance_um},
+                                                   {QStringLiteral("min_clearance_um"), f.minClearance_um}},
+                                       out, err, QStringLiteral("fit"));
+            code != kExitOk)
+            return code;
     } else {
         out << CommandLine::tr(
                    "%1 %2/%3: %4 fit; hole %5/%6 µm, shaft %7/%8 µm; clearance max %9 µm, min %10 µm (negative: "

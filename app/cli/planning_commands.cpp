@@ -63,9 +63,10 @@ QJsonArray constraintsJson(const std::vector<ConstraintValue> &list)
 
 QString constraintText(const ConstraintValue &c)
 {
+    // Four significant digits: a ratio of 10^270 (degenerate tool-life data) is no row of digits.
     return QStringLiteral("%1: %2 of %3 %4 (%5 %)")
         .arg(c.label(), QString::number(c.value, 'g', 4), QString::number(c.limit, 'g', 4), c.unit,
-             QString::number(100.0 * (c.value / c.limit), 'f', 1));
+             QString::number(100.0 * (c.value / c.limit), 'g', 4));
 }
 
 PassConditions roughingOf(const PlanResult &r, const PlanningProblem &problem)
@@ -201,10 +202,13 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!built.problem)
         return kExitProblems;
     const PlanResult plan = optimisePlan(*built.problem);
-    if (parser.isSet(json))
-        out << QJsonDocument(planJson(plan, *built.problem)).toJson(QJsonDocument::Indented);
-    else
+    if (parser.isSet(json)) {
+        if (const int code = printJson(planJson(plan, *built.problem), out, err, QStringLiteral("optimize"));
+            code != kExitOk)
+            return code;
+    } else {
         printPlan(out, plan, *built.problem);
+    }
     if (!plan.feasible)
         return kExitProblems;
     if (parser.isSet(write)) {
@@ -315,11 +319,10 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
                 entry.insert(QStringLiteral("objective_value"), o.plan.evaluation.objective);
             list.append(entry);
         }
-        out << QJsonDocument(QJsonObject{{QStringLiteral("file"), file},
-                                         {QStringLiteral("objective"), keyword(project->planning.objective)},
-                                         {QStringLiteral("ranking"), list}})
-                   .toJson(QJsonDocument::Indented);
-        return kExitOk;
+        return printJson(QJsonObject{{QStringLiteral("file"), file},
+                                     {QStringLiteral("objective"), keyword(project->planning.objective)},
+                                     {QStringLiteral("ranking"), list}},
+                         out, err, QStringLiteral("advise-clamping"));
     }
     int rank = 1;
     for (const ClampingOption &o : options)

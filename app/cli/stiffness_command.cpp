@@ -157,7 +157,9 @@ int runCalibrateStiffness(const QStringList &args, QTextStream &out, QTextStream
     std::optional<CuttingForces> forces;
     if (parser.isSet(load) && !(forces = parseLoad(parser.value(load)))) {
         err << programName() << ' ' << name << ": "
-            << StiffnessCommand::tr("--load takes three numbers in newtons, radial,tangential,axial, not \"%1\"")
+            << StiffnessCommand::tr(
+                   "--load takes three numbers in newtons, radial,tangential,axial, each at most 1e6, not "
+                   "\"%1\"")
                    .arg(parser.value(load))
             << '\n';
         return kExitUsage;
@@ -182,7 +184,9 @@ int runCalibrateStiffness(const QStringList &args, QTextStream &out, QTextStream
         problems.insert(problems.end(), cal.diagnostics.begin(), cal.diagnostics.end());
     }
     if (parser.isSet(json)) {
-        out << QJsonDocument(calibrationJson(cal)).toJson(QJsonDocument::Indented);
+        if (const int code = printJson(calibrationJson(cal), out, err, QStringLiteral("calibrate-stiffness"));
+            code != kExitOk)
+            return code;
     } else {
         for (const Diagnostic &d : problems)
             err << d.toString() << '\n';

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/project_json.h"
 
+#include "core/io/input_bounds.h"
 #include "core/io/json_reader.h"
 #include "core/project/keywords.h"
 #include "core/project/project_validation.h"
@@ -552,6 +553,7 @@ ProjectParseResult parseProjectJson(const QByteArray &json)
     auto project = readProject(doc.object(), result.diagnostics);
     if (!project)
         return result;
+    checkInputBounds(doc.object(), result.diagnostics);
     if (!hasErrors(result.diagnostics)) {
         const Diagnostics semantic = validateProject(*project);
         result.diagnostics.insert(result.diagnostics.end(), semantic.begin(), semantic.end());

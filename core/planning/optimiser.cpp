@@ -12,6 +12,15 @@ namespace tolturn {
 namespace {
 
 constexpr double kPenalty = 1000.0;
+// What an overflowing objective or violation is taken as: worse than any real plan (minutes or
+// currency per part, relative violations), and small enough that NLopt's arithmetic on it stays
+// finite: COBYLA loops for ever inside its own linear algebra on values near the double range.
+constexpr double kWorstObjective = 1e12;
+
+double finiteOrWorst(double v)
+{
+    return std::isfinite(v) ? std::min(v, kWorstObjective) : kWorstObjective;
+}
 
 struct Context {
     Context(const PlanningProblem &p, int k, const PlanBox &box, const OptimisationOptions &o)
@@ -49,7 +58,14 @@ struct Context {
             cancelled = true;
             throw nlopt::forced_stop();
         }
-        return problem->evaluate(candidateAt(denormalise(u), roughingPasses));
+        // NLopt's own count is not a bound for every algorithm: COBYLA can go on for ever on
+        // an objective that overflows. The search stops here at its budget, whatever it does.
+        if (evaluations > budget)
+            throw nlopt::forced_stop();
+        CandidateEvaluation e = problem->evaluate(candidateAt(denormalise(u), roughingPasses));
+        // An overflowing cost or violation (degenerate tool-life data, say) ranks last, finitely.
+        e.objective = finiteOrWorst(e.objective);
+        return e;
     }
 };
 
@@ -58,7 +74,7 @@ double penalised(unsigned n, const double *u, double *, void *data)
     (void)n;
     auto *c = static_cast<Context *>(data);
     const CandidateEvaluation e = c->evaluate(u);
-    return e.objective * (1.0 + kPenalty * e.totalViolation());
+    return finiteOrWorst(e.objective * (1.0 + kPenalty * e.totalViolation()));
 }
 
 double objectiveOnly(unsigned, const double *u, double *, void *data)
@@ -70,7 +86,7 @@ double objectiveOnly(unsigned, const double *u, double *, void *data)
 double violationOnly(unsigned, const double *u, double *, void *data)
 {
     auto *c = static_cast<Context *>(data);
-    return c->evaluate(u).totalViolation();
+    return finiteOrWorst(c->evaluate(u).totalViolation());
 }
 
 void constraints(unsigned m, double *result, unsigned, const double *u, double *, void *data)
@@ -78,7 +94,7 @@ void constraints(unsigned m, double *result, unsigned, const double *u, double *
     auto *c = static_cast<Context *>(data);
     const CandidateEvaluation e = c->evaluate(u);
     for (unsigned i = 0; i < m && i < e.constraints.size(); ++i)
-        result[i] = e.constraints[i].violation();
+        result[i] = finiteOrWorst(e.constraints[i].violation());
 }
 
 std::vector<double> runSearch(nlopt::algorithm algorithm, Context &context, std::vector<double> start, int evaluations,

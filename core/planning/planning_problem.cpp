@@ -132,6 +132,19 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
         }
         p.m_finishPaths.push_back(std::move(path));
     }
+    // As roughingPassRange() counts them, before its cap: the finishing pass at the largest depth.
+    if (const double fewest = std::ceil((p.m_radialStock_mm - p.m_depth.max) / p.m_depth.max - 1e-9);
+        fewest > kMaxRoughingPasses) {
+        out.push_back(makeError(
+            QStringLiteral("part.stock_diameter_mm"),
+            Planning::tr("the stock leaves %1 mm to remove on the radius: at least %2 roughing passes at the insert's "
+                         "largest depth of cut (%3 mm), and the optimiser plans up to %4; turn from a smaller bar")
+                .arg(formatNumber(p.m_radialStock_mm))
+                .arg(formatNumber(fewest))
+                .arg(formatNumber(p.m_depth.max))
+                .arg(kMaxRoughingPasses)));
+        return result;
+    }
     if (!s.taylorC_m_min || !s.taylorN)
         p.m_notes << Planning::tr(
             "No Taylor constants in the project's planning data: tool life and tool cost are not in the "
@@ -223,8 +236,11 @@ std::pair<int, int> PlanningProblem::roughingPassRange(double finishingDepth_mm)
     const double left = m_radialStock_mm - finishingDepth_mm;
     if (left <= 1e-9)
         return {0, 0};
-    const int fewest = std::max(1, static_cast<int>(std::ceil(left / m_depth.max - 1e-9)));
-    const int most = std::max(fewest, static_cast<int>(std::floor(left / m_depth.min + 1e-9)));
+    // In double first: a stock of metres over a depth of microns would overflow an int.
+    const double fewestPasses = std::ceil(left / m_depth.max - 1e-9);
+    const double mostPasses = std::floor(left / m_depth.min + 1e-9);
+    const int fewest = static_cast<int>(std::clamp(fewestPasses, 1.0, kMaxRoughingPasses + 1.0));
+    const int most = std::max(fewest, static_cast<int>(std::min(mostPasses, double(kMaxRoughingPasses))));
     return {fewest, most};
 }
 

@@ -69,6 +69,10 @@ struct CandidateEvaluation {
 // Everything the optimiser, the cutting window and the clamping advisor need about one project,
 // prepared once: the resolved inputs, the influence table of the finishing pass, the turned
 // lengths and the stock to remove.
+// The most roughing passes a plan has: a program limit (a stock that needs more is refused when
+// the problem is built, and smaller depths are not searched beyond it), not a machining rule.
+inline constexpr int kMaxRoughingPasses = 100;
+
 class PlanningProblem {
 public:
     struct BuildResult {

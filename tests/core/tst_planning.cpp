@@ -263,6 +263,49 @@ private Q_SLOTS:
                  qPrintable(QString::number(roughness->violation())));
     }
 
+    // Degenerate inputs a fuzzer found (issue 14) end with a named result, never a hang.
+    // Taylor constants C = 0.5 m/min, n = 0.01: the tool lasts (0.5/200)^100 min at 200 m/min,
+    // an overflow of the tool cost that left NLopt's COBYLA looping for ever.
+    void degenerateToolLifeIsInfeasibleNotAHang()
+    {
+        Project p = example("stepped-shaft-chuck.tolturn");
+        p.planning.taylorC_m_min = 0.5;
+        p.planning.taylorN = 0.01;
+        p.planning.minToolLife_min = 15.0;
+        p.planning.toolLifeSource = QStringLiteral("test: degenerate");
+        const PlanResult r = optimisePlan(*problemFor(p));
+        QVERIFY(!r.feasible);
+        const auto toolLife = std::find_if(r.conflicts.begin(), r.conflicts.end(), [](const ConstraintValue &c) {
+            return c.name == QLatin1String("tool_life");
+        });
+        QVERIFY(toolLife != r.conflicts.end());
+        // The 15 min asked for against T = (C/v)^(1/n), at most (0.5/201.2)^100 ≈ 10^-260 min at
+        // the insert's slowest speed.
+        QCOMPARE(toolLife->value, 15.0);
+        QVERIFY2(toolLife->limit <= std::pow(0.5 / 201.2, 100.0) * 1.001, qPrintable(QString::number(toolLife->limit)));
+        // Every search within its budget: a coarse look per count of passes, two full searches and
+        // the least-violating one (optimisePlan).
+        const OptimisationOptions o;
+        QVERIFY(r.evaluations <= (kMaxRoughingPasses + 1) * 120 + 2 * (o.globalEvaluations + o.localEvaluations) +
+                                     o.globalEvaluations);
+    }
+
+    // A bar 100 m across would need tens of thousands of roughing passes: refused by name when
+    // the problem is built, where it used to enumerate every count of passes.
+    void hugeStockIsRefusedByName()
+    {
+        Project p = example("stepped-shaft-chuck.tolturn");
+        p.part.stockDiameter_mm = 1e5;
+        const PlanningProblem::BuildResult b = PlanningProblem::build(p, DataLibrary::builtIn());
+        QVERIFY(!b.problem);
+        QVERIFY(!b.diagnostics.empty());
+        QCOMPARE(b.diagnostics.back().field, QStringLiteral("part.stock_diameter_mm"));
+        // Radial stock 50 000 - 14 mm (the end chamfer runs down to Ø28), less a 2 mm finishing
+        // pass, over 2 mm roughing passes: (49 986 - 2) / 2 = 24 992 passes at least.
+        QVERIFY2(b.diagnostics.back().message.contains(QStringLiteral("at least 24992 roughing passes")),
+                 qPrintable(b.diagnostics.back().message));
+    }
+
     // Every cell of the window is what a direct evaluation of that plan says.
     void windowAgreesWithDirectEvaluation()
     {

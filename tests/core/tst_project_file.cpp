@@ -407,6 +407,16 @@ private Q_SLOTS:
             "zone width above zero, but it is 0 µm");
         row("negative feed", shaft, {QStringLiteral("passes[1].feed_mm_rev=-0.1")}, "passes[1].feed_mm_rev",
             "above zero, but is -0.1");
+        // Numbers beyond what TolTurn computes with (issue 14: they overflowed into verdicts).
+        row("friction ratio 1e308", shaft,
+            {QStringLiteral("cutting_model={\"force_model\": \"kienzle\", \"friction_ratio\": 1e308}")},
+            "cutting_model.friction_ratio", "1e+308 is beyond what TolTurn computes with: at most 10");
+        row("depth of cut 1e300", shaft, {QStringLiteral("passes[0].depth_of_cut_mm=1e300")},
+            "passes[0].depth_of_cut_mm", "at most 50 mm");
+        row("corner 20 m from the face", shaft, {QStringLiteral("part.outer[1].from.z_mm=-20000")},
+            "part.outer[1].from.z_mm", "at most 10000 mm");
+        row("stock 100 m across", shaft, {QStringLiteral("part.stock_diameter_mm=100000")}, "part.stock_diameter_mm",
+            "at most 5000 mm");
         // The shop conditions are checked without a thermal characterisation too.
         row("negative time since start", shaft, {QStringLiteral("environment={\"time_since_start_min\": -5}")},
             "environment.time_since_start_min", "zero or more, but is -5");
