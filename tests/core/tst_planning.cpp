@@ -286,8 +286,8 @@ private Q_SLOTS:
         // Every search within its budget: a coarse look per count of passes, two full searches and
         // the least-violating one (optimisePlan).
         const OptimisationOptions o;
-        QVERIFY(r.evaluations <= (kMaxRoughingPasses + 1) * 120 + 2 * (o.globalEvaluations + o.localEvaluations) +
-                                     o.globalEvaluations);
+        QVERIFY(r.evaluations <=
+                (kMaxRoughingPasses + 1) * 120 + 2 * (o.globalEvaluations + o.localEvaluations) + o.globalEvaluations);
     }
 
     // A bar 100 m across would need tens of thousands of roughing passes: refused by name when
