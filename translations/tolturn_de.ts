@@ -1077,8 +1077,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>unbekannter Wert „%2“ für %1; erwartet wird einer von: %3</translation>
     </message>
     <message>
-        <source>unknown field, ignored</source>
-        <translation>unbekanntes Feld, ignoriert</translation>
+        <source>unknown field, kept as it is</source>
+        <translation>unbekanntes Feld, unverändert beibehalten</translation>
     </message>
 </context>
 <context>
@@ -1681,6 +1681,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>„%1“ kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; not written: the project would not open again (%2)</source>
+        <translation>&apos;%1&apos; nicht geschrieben: Das Projekt ließe sich nicht wieder öffnen (%2)</translation>
     </message>
 </context>
 <context>
@@ -2580,6 +2584,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>writing &apos;%1&apos; failed: %2</source>
         <translation>das Schreiben von „%1“ ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>cannot set the permissions of &apos;%1&apos;: %2</source>
+        <translation>die Zugriffsrechte von &apos;%1&apos; können nicht gesetzt werden: %2</translation>
     </message>
 </context>
 <context>

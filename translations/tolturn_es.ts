@@ -1077,8 +1077,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>%1 desconocido &quot;%2&quot;; se esperaba uno de: %3</translation>
     </message>
     <message>
-        <source>unknown field, ignored</source>
-        <translation>campo desconocido, se ignora</translation>
+        <source>unknown field, kept as it is</source>
+        <translation>campo desconocido, se conserva tal cual</translation>
     </message>
 </context>
 <context>
@@ -1681,6 +1681,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>no se puede guardar &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; not written: the project would not open again (%2)</source>
+        <translation>&apos;%1&apos; no se escribió: el proyecto no se podría volver a abrir (%2)</translation>
     </message>
 </context>
 <context>
@@ -2580,6 +2584,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>writing &apos;%1&apos; failed: %2</source>
         <translation>error al escribir &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot set the permissions of &apos;%1&apos;: %2</source>
+        <translation>no se pueden fijar los permisos de &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>

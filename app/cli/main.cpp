@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tolturn-cli: the command-line front end.
 #include "app/cli/command_line.h"
+#include "core/cad/step_export.h"
 #include "core/common/library_info.h"
 #include "translations/i18n.h"
 
@@ -8,6 +9,7 @@
 #include <QCoreApplication>
 #include <QTextStream>
 
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -27,10 +29,26 @@ std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[])
     return std::make_unique<QCoreApplication>(argc, argv);
 }
 
+// Ctrl+C or a kill while a file is being written: the temporary file goes (the target was never
+// touched), then the signal ends the process as it would have.
+extern "C" void removeTemporariesAndDie(int signal)
+{
+    tolturn::removePendingExportFile();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+void removeTemporariesOnTermination()
+{
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP})
+        std::signal(signal, removeTemporariesAndDie);
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
 {
+    removeTemporariesOnTermination();
     const std::unique_ptr<QCoreApplication> app = makeApplication(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("TolTurn"));
     QCoreApplication::setApplicationName(QStringLiteral("tolturn-cli"));

@@ -80,7 +80,8 @@ bool Autosave::saveNow()
         removeCopy();
         return true;
     }
-    return writeProjectFile(copyPath(), m_document.project()).ok && writeMeta(metaPath(copyPath()), m_document);
+    return writeProjectFile(copyPath(), m_document.project(), WriteCheck::KeepProblems).ok &&
+           writeMeta(metaPath(copyPath()), m_document);
 }
 
 void Autosave::removeCopy() const

@@ -244,7 +244,8 @@ bool FileController::saveTo(const QString &path)
 {
     if (!m_document.hasProject())
         return false;
-    const WriteResult result = writeProjectFile(path, m_document.project());
+    // A project with problems is saved as it is: it opens again to be repaired, nothing is lost.
+    const WriteResult result = writeProjectFile(path, m_document.project(), WriteCheck::KeepProblems);
     if (!result.ok) {
         m_prompts.showError(tr("Cannot save %1").arg(QFileInfo(path).fileName()),
                             tr("The project was not saved; the file on disk is unchanged.\n\n%1").arg(result.error));

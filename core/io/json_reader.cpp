@@ -147,11 +147,31 @@ std::optional<QString> JsonObjectReader::keywordText(const QString &key, Presenc
     return value;
 }
 
+namespace {
+
+// The collector of the CollectUnknown alive on this thread, if any.
+thread_local std::vector<std::pair<QString, QJsonValue>> *t_unknownSink = nullptr;
+
+} // namespace
+
+JsonObjectReader::CollectUnknown::CollectUnknown(std::vector<std::pair<QString, QJsonValue>> &sink)
+{
+    t_unknownSink = &sink;
+}
+
+JsonObjectReader::CollectUnknown::~CollectUnknown()
+{
+    t_unknownSink = nullptr;
+}
+
 void JsonObjectReader::finish()
 {
     for (auto it = m_object.constBegin(); it != m_object.constEnd(); ++it) {
-        if (!m_read.contains(it.key()))
-            m_out.push_back(makeWarning(fieldPath(it.key()), JsonReading::tr("unknown field, ignored")));
+        if (m_read.contains(it.key()))
+            continue;
+        m_out.push_back(makeWarning(fieldPath(it.key()), JsonReading::tr("unknown field, kept as it is")));
+        if (t_unknownSink)
+            t_unknownSink->emplace_back(fieldPath(it.key()), it.value());
     }
 }
 

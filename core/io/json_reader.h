@@ -9,6 +9,8 @@
 #include <QString>
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace tolturn {
 
@@ -19,6 +21,16 @@ enum class Presence { Required, Optional };
 // unknown (a warning) by finish().
 class JsonObjectReader {
 public:
+    // While one is alive, finish() also collects every unknown field, with its path and value, in
+    // `sink` (the project reader keeps them to write them back).
+    class CollectUnknown {
+    public:
+        explicit CollectUnknown(std::vector<std::pair<QString, QJsonValue>> &sink);
+        ~CollectUnknown();
+        CollectUnknown(const CollectUnknown &) = delete;
+        CollectUnknown &operator=(const CollectUnknown &) = delete;
+    };
+
     JsonObjectReader(QJsonObject object, QString path, Diagnostics &out);
 
     [[nodiscard]] std::optional<double> number(const QString &key, Presence presence);

@@ -6,6 +6,8 @@
 #include <QFileInfo>
 #include <QSaveFile>
 
+#include <algorithm>
+
 namespace tolturn {
 
 namespace {
@@ -43,12 +45,20 @@ ProjectParseResult readProjectFile(const QString &path)
     return parseProjectJson(file.readAll());
 }
 
-WriteResult writeProjectFile(const QString &path, const Project &project)
+WriteResult writeProjectFile(const QString &path, const Project &project, WriteCheck check)
 {
+    const QByteArray bytes = serializeProjectJson(project);
+    if (check == WriteCheck::RefuseInvalid) {
+        const ProjectParseResult again = parseProjectJson(bytes);
+        const auto error = std::find_if(again.diagnostics.begin(), again.diagnostics.end(),
+                                        [](const Diagnostic &d) { return d.severity == Severity::Error; });
+        if (!again.project && error != again.diagnostics.end())
+            return {false, ProjectFile::tr("'%1' not written: the project would not open again (%2)")
+                               .arg(path, error->toString())};
+    }
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return {false, ProjectFile::tr("cannot write '%1': %2").arg(path, file.errorString())};
-    const QByteArray bytes = serializeProjectJson(project);
     if (file.write(bytes) != bytes.size()) {
         const QString reason = file.errorString();
         file.cancelWriting();

@@ -550,9 +550,15 @@ ProjectParseResult parseProjectJson(const QByteArray &json)
             makeError(QString(), ProjectJson::tr("a project file holds one JSON object, not a list")));
         return result;
     }
-    auto project = readProject(doc.object(), result.diagnostics);
+    std::vector<std::pair<QString, QJsonValue>> unknown;
+    std::optional<Project> project;
+    {
+        const JsonObjectReader::CollectUnknown collect(unknown);
+        project = readProject(doc.object(), result.diagnostics);
+    }
     if (!project)
         return result;
+    project->unknownFields = std::move(unknown);
     checkInputBounds(doc.object(), result.diagnostics);
     if (!hasErrors(result.diagnostics)) {
         const Diagnostics semantic = validateProject(*project);
@@ -564,6 +570,39 @@ ProjectParseResult parseProjectJson(const QByteArray &json)
         result.project = std::move(project);
     return result;
 }
+
+namespace {
+
+// `node` with `value` at `path` ("part.colour", "passes[2].note") where the path's parent still
+// exists and the field is not set: an unknown field written back where it was.
+QJsonValue withUnknownField(const QJsonValue &node, const QString &path, const QJsonValue &value)
+{
+    static const QRegularExpression step(QStringLiteral("^([^.\\[]+)(?:\\[(\\d+)\\])?(?:\\.(.*))?$"));
+    const QRegularExpressionMatch m = step.match(path);
+    if (!m.hasMatch() || !node.isObject())
+        return node;
+    QJsonObject object = node.toObject();
+    const QString key = m.captured(1);
+    const QString rest = m.captured(3);
+    if (m.captured(2).isEmpty()) {
+        if (rest.isEmpty()) {
+            if (!object.contains(key))
+                object.insert(key, value);
+        } else if (object.contains(key)) {
+            object.insert(key, withUnknownField(object.value(key), rest, value));
+        }
+        return object;
+    }
+    QJsonArray array = object.value(key).toArray();
+    const int index = m.captured(2).toInt();
+    if (index < array.size() && !rest.isEmpty()) {
+        array[index] = withUnknownField(array.at(index), rest, value);
+        object.insert(key, array);
+    }
+    return object;
+}
+
+} // namespace
 
 QByteArray serializeProjectJson(const Project &project)
 {
@@ -643,6 +682,8 @@ QJsonObject projectJsonObject(const Project &p)
         insertOptional(environment, "time_since_start_min", p.environment.timeSinceStart_min);
         root.insert(QStringLiteral("environment"), environment);
     }
+    for (const auto &[path, value] : p.unknownFields)
+        root = withUnknownField(root, path, value).toObject();
     return root;
 }
 

@@ -3,10 +3,12 @@
 
 #include "core/part/profile.h"
 
+#include <QJsonValue>
 #include <QString>
 #include <QStringList>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace tolturn {
@@ -197,6 +199,9 @@ struct Project {
     MachineCharacterisation characterisation;
     Environment environment;
     PlanningSettings planning;
+    // Fields of the file this TolTurn does not know (a newer version's, another tool's), by path
+    // ("part.colour"), written back as they were so that no command drops them.
+    std::vector<std::pair<QString, QJsonValue>> unknownFields;
 
     friend bool operator==(const Project &, const Project &) = default;
 };

@@ -333,6 +333,57 @@ private Q_SLOTS:
         QCOMPARE(r.diagnostics[0].field, QStringLiteral("part.colour"));
     }
 
+    // Fields this version does not know survive a write (issue 14: every --write dropped them),
+    // at the top, in an object and in a list element.
+    void unknownFieldsAreWrittenBack()
+    {
+        const QByteArray json = edited(exampleJson(QStringLiteral("stepped-shaft-chuck.tolturn")),
+                                       {QStringLiteral("part.colour=\"blue\""), QStringLiteral("erp_order=4711"),
+                                        QStringLiteral("passes[2].coolant={\"kind\": \"flood\"}")});
+        const ProjectParseResult first = parseProjectJson(json);
+        QVERIFY(first.project);
+        QCOMPARE(first.project->unknownFields.size(), std::size_t{3});
+        const QJsonObject written = QJsonDocument::fromJson(serializeProjectJson(*first.project)).object();
+        QCOMPARE(written.value(QStringLiteral("erp_order")).toInt(), 4711);
+        QCOMPARE(written.value(QStringLiteral("part")).toObject().value(QStringLiteral("colour")).toString(),
+                 QStringLiteral("blue"));
+        QCOMPARE(written.value(QStringLiteral("passes"))
+                     .toArray()
+                     .at(2)
+                     .toObject()
+                     .value(QStringLiteral("coolant"))
+                     .toObject()
+                     .value(QStringLiteral("kind"))
+                     .toString(),
+                 QStringLiteral("flood"));
+    }
+
+    // A project that would not open again is not written (issue 14: calibrate-forces --write
+    // saved a negative K_f, and the project no longer opened); the file on disk stays as it was.
+    void invalidProjectIsNotWritten()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.tolturn"));
+        ProjectParseResult r = readProjectFile(examplePath(QStringLiteral("stepped-shaft-chuck.tolturn")));
+        QVERIFY(r.project);
+        QVERIFY(writeProjectFile(path, *r.project).ok);
+        QFile before(path);
+        QVERIFY(before.open(QIODevice::ReadOnly));
+        const QByteArray bytes = before.readAll();
+        before.close();
+        Project bad = *r.project;
+        bad.cuttingModel.frictionRatio = -0.4;
+        const WriteResult refused = writeProjectFile(path, bad);
+        QVERIFY(!refused.ok);
+        QVERIFY2(refused.error.contains(QStringLiteral("cutting_model.friction_ratio")), qPrintable(refused.error));
+        QFile after(path);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), bytes);
+        // The desktop program keeps a project with problems as it is, to repair it later.
+        QVERIFY(writeProjectFile(path, bad, WriteCheck::KeepProblems).ok);
+        QVERIFY(readProjectFile(path).repairable);
+    }
+
     // Each bad input gives exactly one error, on the named field, whose message names the value.
     void badInput_data()
     {

@@ -42,6 +42,7 @@
 #include <csignal>
 #include <gp_Ax2.hxx>
 #include <numbers>
+#include <sys/stat.h>
 
 using namespace tolturn;
 
@@ -588,6 +589,26 @@ private Q_SLOTS:
         QTest::newRow("bored shaft") << expectedShaft();
         QTest::newRow("pin") << expectedPin();
         QTest::newRow("tube") << expectedTube();
+    }
+
+    // A STEP file gets the permissions a new file gets (issue 14: it was 0600, those of the
+    // temporary file), and a replaced file keeps its own.
+    void exportKeepsUsualPermissions()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("permissions.step"));
+        QFile::remove(path);
+        QVERIFY(exportProfileToStep(expectedPin(), path).ok);
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+
+        struct stat st {};
+
+        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
+        QCOMPARE(st.st_mode & 0777, 0666 & ~mask);
+        QCOMPARE(::chmod(QFile::encodeName(path).constData(), 0640), 0);
+        QVERIFY(exportProfileToStep(expectedPin(), path).ok);
+        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
+        QCOMPARE(st.st_mode & 0777, mode_t{0640});
     }
 
     void exportThenImportRoundTrips()
