@@ -424,6 +424,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), each at most 1e6, not &quot;%1&quot;</source>
         <translation>--load nimmt drei Zahlen in Newton, radial,tangential,axial (z. B. 200,500,150), jede höchstens 1e6, nicht &quot;%1&quot;</translation>
     </message>
+    <message>
+        <source>--stations %1 on %2 features makes %3 tool positions, more than the %4 computed at once; give at most %5</source>
+        <translation>--stations %1 auf %2 Formelementen ergibt %3 Werkzeugstellungen, mehr als die %4, die auf einmal berechnet werden; geben Sie höchstens %5 an</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -830,6 +834,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 is beyond what TolTurn computes with: at most %2%3</source>
         <translation>%1 liegt jenseits dessen, womit TolTurn rechnet: höchstens %2%3</translation>
+    </message>
+    <message>
+        <source>holds %1 entries, more than the %2 TolTurn computes with</source>
+        <translation>enthält %1 Einträge, mehr als die %2, mit denen TolTurn rechnet</translation>
     </message>
 </context>
 <context>
@@ -1255,6 +1263,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the pass needs %1 kW of cutting power, more than the machine&apos;s %2 kW</source>
         <translation>der Schnitt braucht %1 kW Schnittleistung, mehr als die %2 kW der Maschine</translation>
+    </message>
+    <message>
+        <source>the passes cut %1 mm deep in all, but the stock is at most %2 mm thick on the radius (Ø%3 mm bar, smallest turned Ø%4 mm): the tool cuts air for %5 mm, and the forces and deflection are not those of the passes as given</source>
+        <translation>die Schnitte schneiden insgesamt %1 mm tief, aber das Aufmaß ist auf dem Radius höchstens %2 mm dick (Stange Ø%3 mm, kleinster gedrehter Ø%4 mm): Das Werkzeug schneidet %5 mm Luft, und Kräfte und Durchbiegung sind nicht die der angegebenen Schnitte</translation>
     </message>
 </context>
 <context>

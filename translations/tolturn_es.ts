@@ -424,6 +424,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>--load takes three numbers in newtons, radial,tangential,axial (e.g. 200,500,150), each at most 1e6, not &quot;%1&quot;</source>
         <translation>--load toma tres números en newtons, radial,tangencial,axial (p. ej. 200,500,150), cada uno como mucho 1e6, no &quot;%1&quot;</translation>
     </message>
+    <message>
+        <source>--stations %1 on %2 features makes %3 tool positions, more than the %4 computed at once; give at most %5</source>
+        <translation>--stations %1 en %2 elementos da %3 posiciones de la herramienta, más que las %4 que se calculan de una vez; indique como mucho %5</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -830,6 +834,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 is beyond what TolTurn computes with: at most %2%3</source>
         <translation>%1 supera lo que TolTurn calcula: como mucho %2%3</translation>
+    </message>
+    <message>
+        <source>holds %1 entries, more than the %2 TolTurn computes with</source>
+        <translation>contiene %1 entradas, más que las %2 con las que calcula TolTurn</translation>
     </message>
 </context>
 <context>
@@ -1255,6 +1263,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the pass needs %1 kW of cutting power, more than the machine&apos;s %2 kW</source>
         <translation>la pasada necesita %1 kW de potencia de corte, más que los %2 kW de la máquina</translation>
+    </message>
+    <message>
+        <source>the passes cut %1 mm deep in all, but the stock is at most %2 mm thick on the radius (Ø%3 mm bar, smallest turned Ø%4 mm): the tool cuts air for %5 mm, and the forces and deflection are not those of the passes as given</source>
+        <translation>las pasadas cortan %1 mm de profundidad en total, pero el sobreespesor es como mucho de %2 mm en el radio (barra de Ø%3 mm, menor Ø torneado %4 mm): la herramienta corta aire durante %5 mm, y las fuerzas y la flexión no son las de las pasadas indicadas</translation>
     </message>
 </context>
 <context>

@@ -37,6 +37,14 @@ namespace tolturn {
 
 namespace {
 
+// The most tool positions `deflect` computes in one run, over all features: a few seconds and a
+// JSON result of some megabytes (docs/cli.md).
+constexpr qsizetype kMaxStations = 20000;
+
+} // namespace
+
+namespace {
+
 struct CommandLine {
     Q_DECLARE_TR_FUNCTIONS(CommandLine)
 };
@@ -221,6 +229,21 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
+    // The stations are per feature: their total bounds the time and the size of the output.
+    const auto features = static_cast<qsizetype>(project->part.outer.segments.size()) +
+                          static_cast<qsizetype>(project->part.inner.segments.size());
+    if (const qsizetype total = features * options.stationsPerFeature; total > kMaxStations) {
+        err << programName() << " deflect: "
+            << CommandLine::tr("--stations %1 on %2 features makes %3 tool positions, more than the %4 computed at "
+                               "once; give at most %5")
+                   .arg(options.stationsPerFeature)
+                   .arg(features)
+                   .arg(total)
+                   .arg(kMaxStations)
+                   .arg(std::max<qsizetype>(2, kMaxStations / std::max<qsizetype>(1, features)))
+            << '\n';
+        return kExitUsage;
+    }
     const DeviationResult result = computeDeviation(*project, DataLibrary::builtIn(), options);
     for (const Diagnostic &d : result.diagnostics)
         err << file << ": " << d.toString() << '\n';

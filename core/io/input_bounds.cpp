@@ -69,6 +69,19 @@ const InputBound &boundFor(const QString &path)
     return inputBounds().back();
 }
 
+// The most entries a list may hold: a contour of a thousand segments is far beyond a drawn part
+// (the examples have up to 11) and keeps the deflection computation, which grows with the square
+// of the segments, to seconds; the plan has at most 100 roughing passes and one finishing pass.
+qsizetype longestList(const QString &path)
+{
+    if (path == QLatin1String("part.outer") || path == QLatin1String("part.inner") ||
+        path == QLatin1String("tolerances") || path == QLatin1String("datums"))
+        return 1000;
+    if (path == QLatin1String("passes"))
+        return 101;
+    return 10000;
+}
+
 void check(const QJsonValue &v, const QString &path, Diagnostics &out)
 {
     if (v.isDouble()) {
@@ -80,6 +93,12 @@ void check(const QJsonValue &v, const QString &path, Diagnostics &out)
                                                    b.unit.isEmpty() ? QString() : QStringLiteral(" ") + b.unit)));
     } else if (v.isArray()) {
         const QJsonArray array = v.toArray();
+        if (const qsizetype most = longestList(path); array.size() > most) {
+            out.push_back(makeError(path, InputBounds::tr("holds %1 entries, more than the %2 TolTurn computes with")
+                                              .arg(array.size())
+                                              .arg(most)));
+            return;
+        }
         for (qsizetype i = 0; i < array.size(); ++i)
             check(array.at(i), QStringLiteral("%1[%2]").arg(path).arg(i), out);
     } else if (v.isObject()) {

@@ -2,6 +2,9 @@
 #include "core/io/json_reader.h"
 
 #include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QRegularExpression>
 
 #include <cmath>
 #include <utility>
@@ -51,6 +54,13 @@ JsonObjectReader::JsonObjectReader(QJsonObject object, QString path, Diagnostics
 
 QString JsonObjectReader::fieldPath(const QString &key) const
 {
+    // A key a path cannot hold as it is (empty, or with a dot, bracket or quote) is written as a
+    // JSON string in brackets, so that every path names one field: planning[""], part["a.b"].
+    static const QRegularExpression plain(QStringLiteral(R"(^[^.\[\]"]+$)"));
+    if (!plain.match(key).hasMatch()) {
+        const QByteArray quoted = QJsonDocument(QJsonArray{key}).toJson(QJsonDocument::Compact);
+        return m_path + QLatin1Char('[') + QString::fromUtf8(quoted.mid(1, quoted.size() - 2)) + QLatin1Char(']');
+    }
     return m_path.isEmpty() ? key : m_path + QLatin1Char('.') + key;
 }
 

@@ -492,15 +492,20 @@ QJsonObject planningJson(const PlanningSettings &p)
                   {QStringLiteral("tool_cost_per_edge"), p.toolCostPerEdge},
                   {QStringLiteral("tool_change_time_min"), p.toolChangeTime_min},
                   {QStringLiteral("handling_time_min"), p.handlingTime_min}};
-    if (p.taylorC_m_min && p.taylorN) {
-        QJsonObject life{{QStringLiteral("C_m_min"), *p.taylorC_m_min},
-                         {QStringLiteral("n"), *p.taylorN},
-                         {QStringLiteral("source"), p.toolLifeSource}};
+    // Each part that is set, so that a file's values come back whatever else is missing.
+    if (p.taylorC_m_min || p.taylorN || p.minToolLife_min || !p.toolLifeSource.isEmpty()) {
+        QJsonObject life;
+        insertOptional(life, "C_m_min", p.taylorC_m_min);
+        insertOptional(life, "n", p.taylorN);
         insertOptional(life, "min_minutes", p.minToolLife_min);
+        if (!p.toolLifeSource.isEmpty())
+            life.insert(QStringLiteral("source"), p.toolLifeSource);
         o.insert(QStringLiteral("tool_life"), life);
     }
-    if (p.cuttingSpeed_m_min || p.feed_mm_rev || p.depthOfCut_mm) {
-        QJsonObject ranges{{QStringLiteral("source"), p.rangesSource}};
+    if (p.cuttingSpeed_m_min || p.feed_mm_rev || p.depthOfCut_mm || !p.rangesSource.isEmpty()) {
+        QJsonObject ranges;
+        if (!p.rangesSource.isEmpty())
+            ranges.insert(QStringLiteral("source"), p.rangesSource);
         if (p.cuttingSpeed_m_min)
             ranges.insert(QStringLiteral("cutting_speed_m_min"), rangeJson(*p.cuttingSpeed_m_min));
         if (p.feed_mm_rev)
@@ -573,31 +578,59 @@ ProjectParseResult parseProjectJson(const QByteArray &json)
 
 namespace {
 
-// `node` with `value` at `path` ("part.colour", "passes[2].note") where the path's parent still
-// exists and the field is not set: an unknown field written back where it was.
-QJsonValue withUnknownField(const QJsonValue &node, const QString &path, const QJsonValue &value)
+// The steps of a field path: object keys (plain, or JSON strings in brackets) and list indices.
+struct PathStep {
+    QString key;    // empty for an index
+    int index = -1; // -1 for a key
+};
+
+std::vector<PathStep> pathSteps(const QString &path)
 {
-    static const QRegularExpression step(QStringLiteral("^([^.\\[]+)(?:\\[(\\d+)\\])?(?:\\.(.*))?$"));
-    const QRegularExpressionMatch m = step.match(path);
-    if (!m.hasMatch() || !node.isObject())
+    static const QRegularExpression step(QStringLiteral(R"(\.?([^.\[\]"]+)|\[(\d+)\]|\[("(?:[^"\\]|\\.)*")\])"));
+    std::vector<PathStep> steps;
+    qsizetype consumed = 0;
+    for (auto it = step.globalMatch(path); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        if (m.capturedStart() != consumed)
+            return {}; // not a path this program writes
+        consumed = m.capturedEnd();
+        if (m.capturedLength(1) > 0)
+            steps.push_back({m.captured(1)});
+        else if (m.capturedLength(2) > 0)
+            steps.push_back({QString(), m.captured(2).toInt()});
+        else
+            steps.push_back({QJsonDocument::fromJson("[" + m.captured(3).toUtf8() + "]").array().at(0).toString()});
+    }
+    return consumed == path.size() ? steps : std::vector<PathStep>{};
+}
+
+// `node` with `value` at the steps from `at` where the parent still exists and the field is not
+// set: an unknown field written back where it was.
+QJsonValue withUnknownField(const QJsonValue &node, const std::vector<PathStep> &steps, std::size_t at,
+                            const QJsonValue &value)
+{
+    if (at >= steps.size())
+        return node;
+    const PathStep &s = steps[at];
+    const bool last = at + 1 == steps.size();
+    if (s.index >= 0) {
+        QJsonArray array = node.toArray();
+        if (!node.isArray() || s.index >= array.size() || last)
+            return node;
+        array[s.index] = withUnknownField(array.at(s.index), steps, at + 1, value);
+        return array;
+    }
+    if (!node.isObject())
         return node;
     QJsonObject object = node.toObject();
-    const QString key = m.captured(1);
-    const QString rest = m.captured(3);
-    if (m.captured(2).isEmpty()) {
-        if (rest.isEmpty()) {
-            if (!object.contains(key))
-                object.insert(key, value);
-        } else if (object.contains(key)) {
-            object.insert(key, withUnknownField(object.value(key), rest, value));
-        }
-        return object;
-    }
-    QJsonArray array = object.value(key).toArray();
-    const int index = m.captured(2).toInt();
-    if (index < array.size() && !rest.isEmpty()) {
-        array[index] = withUnknownField(array.at(index), rest, value);
-        object.insert(key, array);
+    if (last) {
+        if (!object.contains(s.key))
+            object.insert(s.key, value);
+    } else if (object.contains(s.key) || steps[at + 1].index < 0) {
+        // An object that held only unknown fields is written again to hold them.
+        object.insert(
+            s.key, withUnknownField(object.value(s.key).isUndefined() ? QJsonValue(QJsonObject()) : object.value(s.key),
+                                    steps, at + 1, value));
     }
     return object;
 }
@@ -611,13 +644,9 @@ QByteArray serializeProjectJson(const Project &project)
 
 QJsonValue projectValueAt(const Project &project, const QString &field)
 {
-    // "part.outer[2].to.r_mm": keys separated by dots, list indices in brackets.
-    static const QRegularExpression step(QStringLiteral("([^.\\[\\]]+)|\\[(\\d+)\\]"));
     QJsonValue value = projectJsonObject(project);
-    for (auto it = step.globalMatch(field); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
-        value =
-            m.captured(1).isEmpty() ? value.toArray().at(m.captured(2).toInt()) : value.toObject().value(m.captured(1));
+    for (const PathStep &step : pathSteps(field)) {
+        value = step.index >= 0 ? value.toArray().at(step.index) : value.toObject().value(step.key);
         if (value.isUndefined())
             break;
     }
@@ -683,7 +712,7 @@ QJsonObject projectJsonObject(const Project &p)
         root.insert(QStringLiteral("environment"), environment);
     }
     for (const auto &[path, value] : p.unknownFields)
-        root = withUnknownField(root, path, value).toObject();
+        root = withUnknownField(root, pathSteps(path), 0, value).toObject();
     return root;
 }
 

@@ -4,6 +4,7 @@
 #include "core/cutting/cutting_quantities.h"
 #include "core/deviation/deviation_model.h"
 #include "core/project/keywords.h"
+#include "core/tooling/iso1832.h"
 
 #include <QCoreApplication>
 
@@ -32,6 +33,12 @@ void checkLibraryEntries(const Project &p, const DataLibrary &data, Diagnostics 
         out.push_back(
             makeError(QStringLiteral("machine"), Plausibility::tr("unknown machine \"%1\"; the data library has: %2")
                                                      .arg(p.machineId, libraryIds(data.machines()))));
+    // The insert's code is read as ISO 1832: one that does not decode names what is wrong with it.
+    const InsertParseResult insert = parseInsertCode(p.tool.insertCode);
+    if (!insert.insert) {
+        for (const Diagnostic &d : insert.diagnostics)
+            out.push_back(makeError(QStringLiteral("tool.insert"), d.message));
+    }
     if (data.holder(p.tool.holderCode) != nullptr)
         return;
     const QString code = p.tool.holderCode.trimmed().toUpper();
@@ -87,6 +94,8 @@ std::optional<double> machineLimit(const MachineData *m, const char *key)
     return it == m->limits.end() ? std::nullopt : std::optional<double>(it->second.value);
 }
 
+void checkStockTaken(const Project &p, double smallestDiameter_mm, Diagnostics &out);
+
 void checkPasses(const Project &p, const DataLibrary &data, Diagnostics &out)
 {
     const PlanningSettings &s = p.planning;
@@ -124,6 +133,29 @@ void checkPasses(const Project &p, const DataLibrary &data, Diagnostics &out)
                                               .arg(num(power), num(*maxPower))));
         }
     }
+    checkStockTaken(p, smallest, out);
+}
+
+// The passes together cut no deeper than the stock is thick where it is thickest (the bar's
+// radius less the smallest turned radius): deeper, the last passes cut air, and their forces,
+// deflection and time are not those of the part.
+void checkStockTaken(const Project &p, double smallestDiameter_mm, Diagnostics &out)
+{
+    if (p.passes.empty() || smallestDiameter_mm > 1e299)
+        return;
+    const double stock_mm = 0.5 * (p.part.stockDiameter_mm - smallestDiameter_mm);
+    double depth_mm = 0.0;
+    for (const CuttingPass &pass : p.passes)
+        depth_mm += pass.depthOfCut_mm;
+    constexpr double kTolerance_mm = 1e-6; // equal depths given to a few decimals
+    if (depth_mm > stock_mm + kTolerance_mm)
+        out.push_back(makeWarning(
+            QStringLiteral("passes[%1].depth_of_cut_mm").arg(p.passes.size() - 1),
+            Plausibility::tr("the passes cut %1 mm deep in all, but the stock is at most %2 mm thick on the radius "
+                             "(Ø%3 mm bar, smallest turned Ø%4 mm): the tool cuts air for %5 mm, and the forces "
+                             "and deflection are not those of the passes as given")
+                .arg(num(depth_mm), num(stock_mm), num(p.part.stockDiameter_mm), num(smallestDiameter_mm),
+                     num(depth_mm - stock_mm))));
 }
 
 } // namespace
