@@ -2412,6 +2412,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>a part of a turned surface that does not go round (the end wall of a keyway or a slot)</source>
         <translation>ein Abschnitt einer gedrehten Fläche, der nicht ganz umläuft (die Stirnwand einer Passfedernut oder einer Nut)</translation>
     </message>
+    <message>
+        <source>a plane</source>
+        <translation>eine Ebene</translation>
+    </message>
+    <message>
+        <source>a cylinder</source>
+        <translation>ein Zylinder</translation>
+    </message>
+    <message>
+        <source>a cone</source>
+        <translation>ein Kegel</translation>
+    </message>
+    <message>
+        <source>a sphere</source>
+        <translation>eine Kugel</translation>
+    </message>
+    <message>
+        <source>a torus</source>
+        <translation>ein Torus</translation>
+    </message>
 </context>
 <context>
     <name>SetupSheet</name>
@@ -2703,6 +2723,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>&apos;%1&apos; could not be read: OpenCascade stopped on an invalid model (%2); check the file in the CAD system that wrote it</source>
         <translation>&apos;%1&apos; konnte nicht gelesen werden: OpenCascade hielt bei einem ungültigen Modell an (%2); prüfen Sie die Datei in dem CAD-System, das sie geschrieben hat</translation>
+    </message>
+    <message>
+        <source>face %1 is written as a B-spline surface and was read as %2, which it is within 0.001 mm</source>
+        <translation>Fläche %1 ist als B-Spline-Fläche geschrieben und wurde als %2 gelesen, was sie bis auf 0,001 mm ist</translation>
     </message>
 </context>
 <context>

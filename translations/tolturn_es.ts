@@ -2412,6 +2412,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>a part of a turned surface that does not go round (the end wall of a keyway or a slot)</source>
         <translation>una parte de una superficie torneada que no da la vuelta completa (la pared final de un chavetero o de una ranura)</translation>
     </message>
+    <message>
+        <source>a plane</source>
+        <translation>un plano</translation>
+    </message>
+    <message>
+        <source>a cylinder</source>
+        <translation>un cilindro</translation>
+    </message>
+    <message>
+        <source>a cone</source>
+        <translation>un cono</translation>
+    </message>
+    <message>
+        <source>a sphere</source>
+        <translation>una esfera</translation>
+    </message>
+    <message>
+        <source>a torus</source>
+        <translation>un toro</translation>
+    </message>
 </context>
 <context>
     <name>SetupSheet</name>
@@ -2703,6 +2723,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>&apos;%1&apos; could not be read: OpenCascade stopped on an invalid model (%2); check the file in the CAD system that wrote it</source>
         <translation>No se pudo leer &apos;%1&apos;: OpenCascade se detuvo ante un modelo no válido (%2); revise el archivo en el sistema CAD que lo escribió</translation>
+    </message>
+    <message>
+        <source>face %1 is written as a B-spline surface and was read as %2, which it is within 0.001 mm</source>
+        <translation>la cara %1 está escrita como superficie B-spline y se leyó como %2, que es con una tolerancia de 0,001 mm</translation>
     </message>
 </context>
 <context>

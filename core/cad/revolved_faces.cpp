@@ -10,6 +10,9 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <Geom_Surface.hxx>
+#include <ShapeCustom_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -72,7 +75,40 @@ gp_Ax1 canonical(const gp_Ax1 &a)
     return {gp_Pnt(o.XYZ() - t * d.XYZ()), d};
 }
 
-std::optional<gp_Ax1> surfaceAxis(const BRepAdaptor_Surface &s)
+// Within this distance a B-spline or Bézier surface is taken as the plane, cylinder, cone,
+// sphere or torus it stands for: 1 µm, a hundredth of the tightest IT grade a turned diameter
+// gets here (IT5 at 3 mm is 4 µm, ISO 286-1 table 1), and far above the approximation error of
+// the CAD systems that write elementary faces as splines.
+constexpr double kAnalyticTolerance_mm = 1e-3;
+
+// The face's surface (with its location) as the tracer reads it: an elementary surface as it is,
+// a spline one converted to the elementary surface it is within kAnalyticTolerance_mm
+// (ShapeCustom_Surface::ConvertToAnalytical), else as it is.
+struct FaceGeometry {
+    GeomAdaptor_Surface surface;
+    bool converted = false;
+};
+
+FaceGeometry faceGeometry(const TopoDS_Face &face)
+{
+    FaceGeometry g;
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+    if (surface.IsNull())
+        return g;
+    g.surface.Load(surface);
+    const GeomAbs_SurfaceType type = g.surface.GetType();
+    if (type != GeomAbs_BSplineSurface && type != GeomAbs_BezierSurface)
+        return g;
+    ShapeCustom_Surface convert(surface);
+    const Handle(Geom_Surface) analytic = convert.ConvertToAnalytical(kAnalyticTolerance_mm, Standard_False);
+    if (!analytic.IsNull()) {
+        g.surface.Load(analytic);
+        g.converted = true;
+    }
+    return g;
+}
+
+std::optional<gp_Ax1> surfaceAxis(const Adaptor3d_Surface &s)
 {
     switch (s.GetType()) {
     case GeomAbs_Cylinder:
@@ -81,6 +117,8 @@ std::optional<gp_Ax1> surfaceAxis(const BRepAdaptor_Surface &s)
         return s.Cone().Axis();
     case GeomAbs_Torus:
         return s.Torus().Axis();
+    case GeomAbs_SurfaceOfRevolution: // IGES 120, the usual form of turned faces in IGES files
+        return s.AxeOfRevolution();
     default:
         return std::nullopt; // a sphere is symmetric about every line through its centre
     }
@@ -144,8 +182,9 @@ SectionPiece arc(ProfilePoint a, ProfilePoint b, ProfilePoint centre, double rad
 
 // The point of the face in the middle of its parameter range, to tell which half of a circle
 // an arc of a torus lies on.
-gp_Pnt midPoint(const TopoDS_Face &face, const BRepAdaptor_Surface &s)
+gp_Pnt midPoint(const TopoDS_Face &face)
 {
+    const BRepAdaptor_Surface s(face); // the face's own parameters, whatever surface it is read as
     double u0 = 0.0;
     double u1 = 0.0;
     double v0 = 0.0;
@@ -160,7 +199,8 @@ public:
 
     void trace(int index, const TopoDS_Face &face)
     {
-        const BRepAdaptor_Surface s(face);
+        const FaceGeometry geometry = faceGeometry(face);
+        const GeomAdaptor_Surface &s = geometry.surface;
         const Extent e = faceExtent(face, m_frame);
         std::optional<SectionPiece> piece;
         QString what;
@@ -187,6 +227,8 @@ public:
             what = otherSurface(s.GetType());
             break;
         }
+        if (piece && geometry.converted)
+            m_out.convertedFaces.emplace_back(index, surfaceName(s.GetType()));
         if (piece) {
             piece->faces.push_back(index);
             piece->faceArea_mm2 = faceArea(face);
@@ -199,7 +241,7 @@ public:
 private:
     // A plane is a turned face when its normal is the axis (the trace is a line at constant z);
     // the face reaches the axis when the axis point of the plane lies inside it.
-    std::optional<SectionPiece> plane(const TopoDS_Face &face, const BRepAdaptor_Surface &s, const Extent &e,
+    std::optional<SectionPiece> plane(const TopoDS_Face &face, const GeomAdaptor_Surface &s, const Extent &e,
                                       QString &what) const
     {
         const gp_Pln pln = s.Plane();
@@ -214,7 +256,7 @@ private:
         return line({z, throughAxis ? 0.0 : e.rMin}, {z, e.rMax});
     }
 
-    std::optional<SectionPiece> cylinder(const BRepAdaptor_Surface &s, const Extent &e, QString &what) const
+    std::optional<SectionPiece> cylinder(const GeomAdaptor_Surface &s, const Extent &e, QString &what) const
     {
         const gp_Cylinder c = s.Cylinder();
         if (!coaxial(c.Axis(), m_frame.axis)) {
@@ -230,7 +272,7 @@ private:
 
     // gp_Cone: P(u, v) = O + (R + v sin a)(cos u X + sin u Y) + v cos a Z, so the radius grows by
     // tan a per unit along the cone's own axis direction Z.
-    std::optional<SectionPiece> cone(const BRepAdaptor_Surface &s, const Extent &e, QString &what) const
+    std::optional<SectionPiece> cone(const GeomAdaptor_Surface &s, const Extent &e, QString &what) const
     {
         const gp_Cone c = s.Cone();
         if (!coaxial(c.Axis(), m_frame.axis)) {
@@ -248,7 +290,7 @@ private:
     // gp_Torus: the tube circle of minor radius rho is centred at the major radius R; its trace
     // is an arc centred at (z of the torus centre, R). Its ends are at the face's z extremes,
     // on the half of the circle the middle of the face lies on.
-    std::optional<SectionPiece> torus(const TopoDS_Face &face, const BRepAdaptor_Surface &s, const Extent &e,
+    std::optional<SectionPiece> torus(const TopoDS_Face &face, const GeomAdaptor_Surface &s, const Extent &e,
                                       QString &what) const
     {
         const gp_Torus t = s.Torus();
@@ -258,7 +300,7 @@ private:
         }
         const ProfilePoint centre{m_frame.z(t.Location()), t.MajorRadius()};
         const double rho = t.MinorRadius();
-        const double side = m_frame.r(midPoint(face, s)) >= centre.r_mm ? 1.0 : -1.0;
+        const double side = m_frame.r(midPoint(face)) >= centre.r_mm ? 1.0 : -1.0;
         const auto at = [&](double z) {
             const double dz = z - centre.z_mm;
             return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
@@ -268,7 +310,7 @@ private:
 
     // A sphere centred on the axis traces an arc centred on the axis (a ball end, a spherical
     // seat); r >= 0 takes the upper half of its circle.
-    std::optional<SectionPiece> sphere(const BRepAdaptor_Surface &s, const Extent &e, QString &what) const
+    std::optional<SectionPiece> sphere(const GeomAdaptor_Surface &s, const Extent &e, QString &what) const
     {
         const gp_Sphere sp = s.Sphere();
         if (m_frame.r(sp.Location()) > kJoinTolerance_mm) {
@@ -287,7 +329,7 @@ private:
     // A curve swept about an axis (what BRepPrimAPI_MakeRevol makes of a line or an arc): its
     // meridian is the basis curve, traced at the middle angle of the face from the first to the
     // last parameter of the curve. Lines and circles are turned; other curves are free-form.
-    std::optional<SectionPiece> revolution(const TopoDS_Face &face, const BRepAdaptor_Surface &s, QString &what) const
+    std::optional<SectionPiece> revolution(const TopoDS_Face &face, const GeomAdaptor_Surface &s, QString &what) const
     {
         const GeomAbs_CurveType basis = s.BasisCurve()->GetType();
         if (!coaxial(s.AxeOfRevolution(), m_frame.axis) || (basis != GeomAbs_Line && basis != GeomAbs_Circle)) {
@@ -304,16 +346,22 @@ private:
             const gp_Pnt p = s.Value(u, v);
             return ProfilePoint{m_frame.z(p), m_frame.r(p)};
         };
-        const ProfilePoint a = at(v0);
-        const ProfilePoint b = at(v1);
         if (basis == GeomAbs_Line)
-            return line(a, b);
-        const auto circle = circleThrough(a, at(0.5 * (v0 + v1)), b);
-        if (!circle) {
-            what = otherSurface(GeomAbs_SurfaceOfRevolution);
-            return std::nullopt;
-        }
-        return arc(a, b, circle->first, circle->second);
+            return line(at(v0), at(v1));
+        // A circle in a meridian plane sweeps a torus (IGES writes fillets so): its trace is the
+        // arc of that circle between the face's z extremes, on the half the face lies on, as for
+        // a torus. Three points of the parameter range would not do: an IGES trimmed surface
+        // keeps the whole circle as its parameter range.
+        const gp_Circ circle = s.BasisCurve()->Circle();
+        const ProfilePoint centre{m_frame.z(circle.Location()), m_frame.r(circle.Location())};
+        const double rho = circle.Radius();
+        const Extent e = faceExtent(face, m_frame);
+        const double side = m_frame.r(midPoint(face)) >= centre.r_mm ? 1.0 : -1.0;
+        const auto onCircle = [&](double z) {
+            const double dz = z - centre.z_mm;
+            return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
+        };
+        return arc(onCircle(e.zMin), onCircle(e.zMax), centre, rho);
     }
 
     // The circle through three points (centre, radius); nullopt when they are in a line.
@@ -331,6 +379,24 @@ private:
         const double b2 = bx * bx + by * by;
         const ProfilePoint centre{p.z_mm + (by * a2 - ay * b2) / d, p.r_mm + (ax * b2 - bx * a2) / d};
         return std::pair{centre, std::hypot(p.z_mm - centre.z_mm, p.r_mm - centre.r_mm)};
+    }
+
+    static QString surfaceName(GeomAbs_SurfaceType type)
+    {
+        switch (type) {
+        case GeomAbs_Plane:
+            return RevolvedFaces::tr("a plane");
+        case GeomAbs_Cylinder:
+            return RevolvedFaces::tr("a cylinder");
+        case GeomAbs_Cone:
+            return RevolvedFaces::tr("a cone");
+        case GeomAbs_Sphere:
+            return RevolvedFaces::tr("a sphere");
+        case GeomAbs_Torus:
+            return RevolvedFaces::tr("a torus");
+        default:
+            return otherSurface(type);
+        }
     }
 
     static QString otherSurface(GeomAbs_SurfaceType type)
@@ -399,7 +465,7 @@ std::vector<AxisCandidate> findAxes(const TopoDS_Shape &body)
     std::vector<AxisCandidate> axes;
     for (int i = 1; i <= faces.Extent(); ++i) {
         const TopoDS_Face &face = TopoDS::Face(faces(i));
-        const auto axis = surfaceAxis(BRepAdaptor_Surface(face));
+        const auto axis = surfaceAxis(faceGeometry(face).surface);
         if (!axis)
             continue;
         const double area = faceArea(face);

@@ -35,6 +35,8 @@ struct LeftOutFace {
 struct SectionTrace {
     std::vector<SectionPiece> pieces;
     std::vector<LeftOutFace> leftOut;
+    // Faces written as splines and read as the elementary surface they are (face index, its name).
+    std::vector<std::pair<int, QString>> convertedFaces;
     bool cancelled = false;
 };
 

@@ -371,6 +371,13 @@ void extractProfile(const QString &path, const TopoDS_Shape &body, const gp_Ax1 
     cad::placePieces(trace.pieces, place);
     std::sort(trace.leftOut.begin(), trace.leftOut.end(), [](const auto &a, const auto &b) { return a.face < b.face; });
     reportLeftOut(trace.leftOut, place, result.diagnostics);
+    // Said, not hidden: the profile rests on these faces being what they were taken for.
+    for (const auto &[face, surface] : trace.convertedFaces)
+        result.diagnostics.push_back(makeWarning(
+            QStringLiteral("step.face[%1]").arg(face),
+            StepImport::tr("face %1 is written as a B-spline surface and was read as %2, which it is within 0.001 mm")
+                .arg(face)
+                .arg(surface)));
     cad::ContourBuild contours = cad::buildContours(trace.pieces, options.chamferMaxLength_mm);
     const bool broken = hasErrors(contours.diagnostics);
     result.diagnostics.insert(result.diagnostics.end(), contours.diagnostics.begin(), contours.diagnostics.end());

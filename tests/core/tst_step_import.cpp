@@ -18,6 +18,7 @@
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
@@ -286,6 +287,17 @@ void writeIges(const TopoDS_Shape &shape, const QString &path, const char *unit 
     QVERIFY(writer.Write(QFile::encodeName(path).constData()));
 }
 
+// IGES as many CAD systems write it: trimmed surfaces (144) over surfaces of revolution (120)
+// and planes, no B-Rep solid.
+void writeIgesSurfaces(const TopoDS_Shape &shape, const QString &path)
+{
+    IGESControl_Controller::Init();
+    IGESControl_Writer writer("MM", 0); // 0: faces as trimmed surfaces
+    QVERIFY(writer.AddShape(shape));
+    writer.ComputeModel();
+    QVERIFY(writer.Write(QFile::encodeName(path).constData()));
+}
+
 void writeCad(const TopoDS_Shape &shape, const QString &path)
 {
     if (path.endsWith(QLatin1String(".igs")))
@@ -460,6 +472,36 @@ private Q_SLOTS:
         QCOMPARE(r.solids.size(), std::size_t{1});
         QCOMPARE(r.chosenAxis, 0);
         QCOMPARE(r.profile->name, part);
+    }
+
+    // Real CAD files (issue 14): the same pin with every face a B-spline (STEP), and written as
+    // IGES trimmed surfaces over surfaces of revolution; both read as the pin, the spline faces
+    // said to have been read as the elementary surfaces they are.
+    void importsSplineAndTrimmedSurfaceFiles_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("STEP, B-spline faces") << QStringLiteral("pin-nurbs.step");
+        QTest::newRow("IGES 144 over 120") << QStringLiteral("pin-surfaces.igs");
+    }
+
+    void importsSplineAndTrimmedSurfaceFiles()
+    {
+        QFETCH(QString, name);
+        const QString path = m_dir.filePath(name);
+        const bool nurbs = name.contains(QLatin1String("nurbs"));
+        // Splines: the tube (planes, an outer and an inner cylinder); ShapeCustom_Surface finds no
+        // tori, so fillets written as splines are not read yet (docs/step-import.md, known limits).
+        if (nurbs)
+            writeStep(BRepBuilderAPI_NurbsConvert(revolve(kTubeSection)).Shape(), path);
+        else
+            writeIgesSurfaces(pinPart(), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        compareProfiles(*r.profile, nurbs ? expectedTube() : expectedPin());
+        const auto said = std::count_if(r.diagnostics.begin(), r.diagnostics.end(), [](const Diagnostic &d) {
+            return d.message.contains(QLatin1String("was read as a cylinder, which it is within 0.001 mm"));
+        });
+        QCOMPARE(said > 0, nurbs);
     }
 
     void importsBoresAndSpheres_data()
