@@ -48,6 +48,13 @@ QString exampleWith(const QTemporaryDir &dir, const QByteArray &from, const QByt
     return path;
 }
 
+// Shows the window and opens the example with one value replaced in it.
+bool openWith(MainWindow &w, const QTemporaryDir &dir, const QByteArray &from, const QByteArray &to)
+{
+    w.show();
+    return w.fileController()->openFile(exampleWith(dir, from, to));
+}
+
 QString deflectionSummary(const MainWindow &w)
 {
     return w.deflectionPanel()->findChild<QLabel *>(QStringLiteral("deflectionSummary"))->text();
@@ -85,10 +92,8 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         // The finishing pass (the ninth) of the example has f = 0.1 mm/rev; make it negative.
-        const QString path = exampleWith(dir, "\"feed_mm_rev\": 0.1", "\"feed_mm_rev\": -0.1");
         MainWindow w;
-        w.show();
-        QVERIFY(w.fileController()->openFile(path));
+        QVERIFY(openWith(w, dir, "\"feed_mm_rev\": 0.1", "\"feed_mm_rev\": -0.1"));
         QVERIFY(w.document()->hasProject());
         QCOMPARE(listedFields(w), QStringList{QStringLiteral("passes[8].feed_mm_rev")});
         QDoubleSpinBox *feed = w.setupPanel()->passBox(8, 1);
@@ -125,10 +130,8 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         // The stock is Ø60 mm around a part of Ø56 at most; Ø50 is too small for it.
-        const QString path = exampleWith(dir, "\"stock_diameter_mm\": 60", "\"stock_diameter_mm\": 50");
         MainWindow w;
-        w.show();
-        QVERIFY(w.fileController()->openFile(path));
+        QVERIFY(openWith(w, dir, "\"stock_diameter_mm\": 60", "\"stock_diameter_mm\": 50"));
         const Diagnostics problems = w.document()->problems();
         QVERIFY(!problems.empty());
         QCOMPARE(problems.front().field, QStringLiteral("part.stock_diameter_mm"));
@@ -147,10 +150,8 @@ private Q_SLOTS:
     void unreadableValueIsListedUntilEntered()
     {
         QTemporaryDir dir;
-        const QString path = exampleWith(dir, "\"stock_diameter_mm\": 60", "\"stock_diameter_mm\": \"60 mm\"");
         MainWindow w;
-        w.show();
-        QVERIFY(w.fileController()->openFile(path));
+        QVERIFY(openWith(w, dir, "\"stock_diameter_mm\": 60", "\"stock_diameter_mm\": \"60 mm\""));
         QStringList fields = listedFields(w);
         QVERIFY2(fields.count(QStringLiteral("part.stock_diameter_mm")) == 2, qPrintable(fields.join(u',')));
         auto *stock = w.setupPanel()->findChild<LengthSpinBox *>(QStringLiteral("stockDiameter"));
