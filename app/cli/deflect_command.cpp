@@ -39,7 +39,7 @@ namespace {
 
 // The most tool positions `deflect` computes in one run, over all features: a few seconds and a
 // JSON result of some megabytes (docs/cli.md).
-constexpr qsizetype kMaxStations = 20000;
+constexpr qsizetype kMaxStations = 25000; // the default 21 per feature on the largest profile, 1000 segments
 
 } // namespace
 

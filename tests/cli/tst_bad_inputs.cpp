@@ -203,7 +203,7 @@ private Q_SLOTS:
             QStringLiteral("not \"a,b,c\""));
         row("stations beyond the total", QByteArray("-"),
             {QStringLiteral("deflect"), QStringLiteral("--stations"), QStringLiteral("100000"), shaftPath}, 2,
-            QStringLiteral("more than the 20000 computed at once; give at most 1818"));
+            QStringLiteral("more than the 25000 computed at once; give at most 2272"));
         row("stations 1", QByteArray("-"),
             {QStringLiteral("deflect"), QStringLiteral("--stations"), QStringLiteral("1"), shaftPath}, 2,
             QStringLiteral("--stations must be a whole number from 2"));
