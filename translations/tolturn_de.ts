@@ -612,6 +612,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; enter the tool&apos;s overhang (the length out of the turret) to replace it.</source>
         <translation>Werkzeughalter: Die ganze Halterlänge (%1 mm) wird auf Druck gerechnet, eine obere Schranke; geben Sie die Auskraglänge des Werkzeugs (die Länge außerhalb des Revolvers) ein, um sie zu ersetzen.</translation>
     </message>
+    <message>
+        <source>the predicted deflection, %1 mm at z = %2 mm, is larger than the depth of cut %3 mm: the part would spring out of the cut, and a model linear in the forces of the nominal depth does not hold; support the part (tailstock, steady rest) or cut less</source>
+        <translation>die vorhergesagte Durchbiegung, %1 mm bei z = %2 mm, ist größer als die Schnitttiefe %3 mm: Das Teil würde aus dem Schnitt federn, und ein in den Kräften der Nenntiefe lineares Modell gilt nicht; stützen Sie das Teil (Reitstock, Lünette) ab oder schneiden Sie weniger tief</translation>
+    </message>
 </context>
 <context>
     <name>GCode</name>

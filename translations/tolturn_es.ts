@@ -612,6 +612,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Toolpost: the whole holder length (%1 mm) is taken in compression, an upper bound; enter the tool&apos;s overhang (the length out of the turret) to replace it.</source>
         <translation>Portaherramientas: se toma toda la longitud del portaherramientas (%1 mm) a compresión, una cota superior; introduzca el voladizo de la herramienta (la longitud fuera de la torreta) para sustituirla.</translation>
     </message>
+    <message>
+        <source>the predicted deflection, %1 mm at z = %2 mm, is larger than the depth of cut %3 mm: the part would spring out of the cut, and a model linear in the forces of the nominal depth does not hold; support the part (tailstock, steady rest) or cut less</source>
+        <translation>la flexión prevista, %1 mm en z = %2 mm, es mayor que la profundidad de corte %3 mm: la pieza se saldría del corte, y un modelo lineal en las fuerzas de la profundidad nominal no vale; apoye la pieza (contrapunto, luneta) o corte menos</translation>
+    </message>
 </context>
 <context>
     <name>GCode</name>

@@ -366,6 +366,39 @@ DeviationResult deviationFor(const PartProfile &part, const TurningInputs &in, c
     return evaluateInfluenceTable(part, table, in);
 }
 
+namespace {
+
+// The model is linear: the forces are those of the nominal depth of cut, whatever the part's
+// deflection (Valiño et al. 2008 eq. 2: deviation = compliance x force). Where the predicted
+// radial deviation exceeds the depth of cut the part would spring out of the cut altogether, the
+// real depth and forces are not the modelled ones, and the result says nothing about the part
+// (a long shaft in a chuck, say): a warning on the pass, with the largest deviation and where.
+void checkSmallDeflection(DeviationResult &result, const TurningInputs &in, const DeviationOptions &options)
+{
+    if (options.loadOverride)
+        return; // given forces: no depth of cut stands behind them
+    double worst_mm = 0.0;
+    double at_mm = 0.0;
+    for (const FeatureDeviation &f : result.features) {
+        for (const Station &st : f.stations) {
+            if (std::abs(st.radial.total_mm()) > worst_mm) {
+                worst_mm = std::abs(st.radial.total_mm());
+                at_mm = st.z_mm;
+            }
+        }
+    }
+    if (worst_mm > in.pass.depthOfCut_mm)
+        result.diagnostics.push_back(makeWarning(
+            QStringLiteral("passes"),
+            DeviationModel::tr("the predicted deflection, %1 mm at z = %2 mm, is larger than the depth of cut %3 mm: "
+                               "the part would spring out of the cut, and a model linear in the forces of the "
+                               "nominal depth does not hold; support the part (tailstock, steady rest) or cut less")
+                .arg(QString::number(worst_mm, 'f', worst_mm >= 10.0 ? 0 : 3), formatNumber(at_mm),
+                     formatNumber(in.pass.depthOfCut_mm))));
+}
+
+} // namespace
+
 DeviationResult computeDeviation(const Project &project, const DataLibrary &data, const DeviationOptions &options)
 {
     InputsResult resolved = resolveTurningInputs(project, data, options);
@@ -377,6 +410,7 @@ DeviationResult computeDeviation(const Project &project, const DataLibrary &data
     const TurningInputs &in = *resolved.inputs;
     DeviationResult result = deviationFor(project.part, in, options);
     result.diagnostics = resolved.diagnostics;
+    checkSmallDeflection(result, in, options);
     if (in.maxPower_kW && result.maxPower_kW > *in.maxPower_kW)
         result.diagnostics.push_back(
             makeWarning(QStringLiteral("passes"),

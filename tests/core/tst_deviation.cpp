@@ -102,6 +102,24 @@ private Q_SLOTS:
 
     // With the in-process section the whole length between chuck and tool still carries the pass's
     // stock (feeding towards the chuck): the cantilever term uses radius r + ap.
+    // Validity (issue 14): a bar that would spring further than the depth of cut is said to lie
+    // beyond the linear model; a stiff one is not. A cantilever of Ø40 x L deflects F L³/(3EI)
+    // (I = π 20⁴/4 = 125 664 mm⁴, E = 210 000 MPa): under a radial force of the order of 100 N
+    // (Fp = 0.25 Fc, Fc some 400 N at f 0.2 mm, ap 1 mm) about 1 m at L = 10 m and 1 µm at 100 mm,
+    // against the 1 mm depth of cut.
+    void deflectionBeyondTheCutIsFlagged()
+    {
+        const auto flagged = [](double length) {
+            const DeviationResult r =
+                computeDeviation(barProject(20.0, length, ClampingMethod::Chuck, 40.0), DataLibrary::builtIn());
+            return std::any_of(r.diagnostics.begin(), r.diagnostics.end(), [](const Diagnostic &d) {
+                return d.message.contains(QLatin1String("would spring out of the cut"));
+            });
+        };
+        QVERIFY(flagged(10000.0));
+        QVERIFY(!flagged(100.0));
+    }
+
     void inProcessSectionOfCantilever()
     {
         const double r = 12.0, ap = 1.0;
