@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es">
 <context>
+    <name>AtomicFile</name>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: the data did not reach the disk</source>
+        <translation>no se puede escribir &apos;%1&apos;: los datos no llegaron al disco</translation>
+    </message>
+    <message>
+        <source>cannot set the permissions of &apos;%1&apos;: %2</source>
+        <translation>no se pueden fijar los permisos de &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>no se puede guardar &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
     <name>ClampingAdvice</name>
     <message>
         <source>meets every constraint: %1 %2 per part</source>
@@ -297,10 +316,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Print the ranking as JSON.</source>
         <translation>Escribir la clasificación en formato JSON.</translation>
-    </message>
-    <message>
-        <source>cannot write &apos;%1&apos;: %2</source>
-        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>give one project file and -o FILE.pdf</source>
@@ -1280,10 +1295,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no se puede exportar un gráfico como &apos;%1&apos;: use .png, .svg o .pdf</translation>
     </message>
     <message>
-        <source>cannot write &apos;%1&apos;: %2</source>
-        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)</source>
         <translation>Imagen PNG (*.png);;Dibujo SVG (*.svg);;Documento PDF (*.pdf)</translation>
     </message>
@@ -1689,14 +1700,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
         <translation>no se puede abrir &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>cannot write &apos;%1&apos;: %2</source>
-        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>no se puede guardar &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>&apos;%1&apos; not written: the project would not open again (%2)</source>
@@ -2224,10 +2227,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>page %1 of %2</source>
         <translation>página %1 de %2</translation>
-    </message>
-    <message>
-        <source>cannot write &apos;%1&apos;: %2</source>
-        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>Machine: %1.</source>
@@ -4359,14 +4358,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>profile correction</source>
         <translation>corrección del perfil</translation>
-    </message>
-    <message>
-        <source>cannot write &apos;%1&apos;: %2</source>
-        <translation>no se puede escribir &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>no se puede guardar &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>Planning Data…</source>

@@ -2,6 +2,7 @@
 #include "app/cli/cli_common.h"
 
 #include "app/cli/command_line.h"
+#include "core/common/atomic_file.h"
 #include "core/io/project_file.h"
 
 #include <QCommandLineParser>
@@ -10,7 +11,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QTextStream>
 
 #include <cmath>
@@ -68,10 +68,7 @@ QString writeOutput(const QString &path, const QByteArray &data, QTextStream &ou
         }
         return {};
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(data) < 0 || !file.commit())
-        return CommandLine::tr("cannot write '%1': %2").arg(path, file.errorString());
-    return {};
+    return writeFileAtomically(path, data);
 }
 
 int parseNamedCommand(QCommandLineParser &parser, const QString &name, const QStringList &args, QTextStream &out,

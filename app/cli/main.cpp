@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tolturn-cli: the command-line front end.
 #include "app/cli/command_line.h"
-#include "core/cad/step_export.h"
+#include "core/common/atomic_file.h"
 #include "core/common/library_info.h"
 #include "translations/i18n.h"
 
@@ -33,7 +33,7 @@ std::unique_ptr<QCoreApplication> makeApplication(int &argc, char *argv[])
 // touched), then the signal ends the process as it would have.
 extern "C" void removeTemporariesAndDie(int signal)
 {
-    tolturn::removePendingExportFile();
+    tolturn::removePendingTemporaryFile();
     std::signal(signal, SIG_DFL);
     std::raise(signal);
 }

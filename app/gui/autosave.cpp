@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/autosave.h"
 
+#include "core/common/atomic_file.h"
 #include "core/io/project_file.h"
 #include "widgets/document/project_document.h"
 
@@ -9,7 +10,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QUuid>
 
 #include <algorithm>
@@ -30,8 +30,7 @@ bool writeMeta(const QString &path, const ProjectDocument &document)
     const QJsonObject meta{{QStringLiteral("original"), document.filePath()},
                            {QStringLiteral("part"), document.project().part.name},
                            {QStringLiteral("saved"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
-    QSaveFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(QJsonDocument(meta).toJson()) >= 0 && file.commit();
+    return writeFileAtomically(path, QJsonDocument(meta).toJson()).isEmpty();
 }
 
 // True when no running session holds the lock of this copy.

@@ -2,6 +2,7 @@
 #include "core/cad/step_export.h"
 
 #include "core/cad/occt_guard.h"
+#include "core/common/atomic_file.h"
 #include "core/part/profile_geometry.h"
 #include "core/part/profile_validation.h"
 
@@ -108,51 +109,6 @@ bool writeStep(const TopoDS_Shape &shape, const QString &file)
     return writer.Write(QFile::encodeName(file).constData()) == IFSelect_RetDone;
 }
 
-// The temporary file of the export in progress, for removePendingExportFile(): a fixed buffer
-// that a signal handler may read.
-std::array<char, 4096> g_pendingPath{};
-volatile std::sig_atomic_t g_pending = 0;
-
-struct PendingFile {
-    explicit PendingFile(const QString &path)
-    {
-        const QByteArray name = QFile::encodeName(path);
-        if (name.size() >= static_cast<qsizetype>(g_pendingPath.size()))
-            return;
-        std::memcpy(g_pendingPath.data(), name.constData(), static_cast<std::size_t>(name.size()) + 1);
-        g_pending = 1;
-    }
-
-    ~PendingFile() { g_pending = 0; }
-
-    PendingFile(const PendingFile &) = delete;
-    PendingFile &operator=(const PendingFile &) = delete;
-};
-
-// What the written file's permissions are: the replaced file's, else a new file's (0666 less the
-// umask, as open(2) would give).
-QFileDevice::Permissions permissionsFor(const QString &path)
-{
-    if (QFileInfo::exists(path))
-        return QFile::permissions(path);
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    const mode_t mode = 0666 & ~mask;
-    QFileDevice::Permissions p;
-    const std::pair<mode_t, QFileDevice::Permission> bits[] = {
-        {S_IRUSR, QFileDevice::ReadOwner},  {S_IWUSR, QFileDevice::WriteOwner}, {S_IRGRP, QFileDevice::ReadGroup},
-        {S_IWGRP, QFileDevice::WriteGroup}, {S_IROTH, QFileDevice::ReadOther},  {S_IWOTH, QFileDevice::WriteOther}};
-    for (const auto &[bit, permission] : bits) {
-        if (mode & bit)
-            p |= permission;
-    }
-    if (p & QFileDevice::ReadOwner)
-        p |= QFileDevice::ReadUser;
-    if (p & QFileDevice::WriteOwner)
-        p |= QFileDevice::WriteUser;
-    return p;
-}
-
 StepExportResult exportInto(const PartProfile &profile, const QString &path)
 {
     // Only a valid profile bounds a face: a gap or an overlap leaves no closed wire to revolve.
@@ -170,10 +126,10 @@ StepExportResult exportInto(const PartProfile &profile, const QString &path)
     if (!temp.open())
         return {false, StepExport::tr("cannot write '%1': %2").arg(path, temp.errorString())};
     temp.close();
-    const PendingFile pending(temp.fileName());
+    const PendingTemporaryFile pending(temp.fileName());
     if (!writeStep(solid, temp.fileName()))
         return {false, StepExport::tr("OpenCascade could not write the solid to '%1'").arg(path)};
-    if (!temp.setPermissions(permissionsFor(path)))
+    if (!temp.setPermissions(permissionsForWrite(path)))
         return {false, StepExport::tr("cannot set the permissions of '%1': %2").arg(path, temp.errorString())};
     if (std::rename(QFile::encodeName(temp.fileName()).constData(), QFile::encodeName(path).constData()) != 0)
         return {false, StepExport::tr("cannot save '%1': renaming the temporary file failed").arg(path)};
@@ -182,12 +138,6 @@ StepExportResult exportInto(const PartProfile &profile, const QString &path)
 }
 
 } // namespace
-
-void removePendingExportFile() noexcept
-{
-    if (g_pending)
-        ::unlink(g_pendingPath.data());
-}
 
 StepExportResult exportProfileToStep(const PartProfile &profile, const QString &path)
 {

@@ -19,8 +19,4 @@ struct StepExportResult {
 // the umask), not the 0600 of a temporary file.
 [[nodiscard]] StepExportResult exportProfileToStep(const PartProfile &profile, const QString &path);
 
-// Removes the temporary file of an export in progress. Async-signal-safe: for a handler of
-// SIGINT or SIGTERM, so that an interrupted export leaves no hidden file behind.
-void removePendingExportFile() noexcept;
-
 } // namespace tolturn

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/project_file.h"
 
+#include "core/common/atomic_file.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <algorithm>
 
@@ -56,17 +57,8 @@ WriteResult writeProjectFile(const QString &path, const Project &project, WriteC
             return {false, ProjectFile::tr("'%1' not written: the project would not open again (%2)")
                                .arg(path, error->toString())};
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return {false, ProjectFile::tr("cannot write '%1': %2").arg(path, file.errorString())};
-    if (file.write(bytes) != bytes.size()) {
-        const QString reason = file.errorString();
-        file.cancelWriting();
-        return {false, ProjectFile::tr("cannot write '%1': %2").arg(path, reason)};
-    }
-    if (!file.commit())
-        return {false, ProjectFile::tr("cannot save '%1': %2").arg(path, file.errorString())};
-    return {true, QString()};
+    QString error = writeFileAtomically(path, bytes);
+    return {error.isEmpty(), error};
 }
 
 } // namespace tolturn

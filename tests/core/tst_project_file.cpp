@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Project files: round trips, atomic writing, and one named error for each kind of bad input.
+#include "core/common/atomic_file.h"
 #include "core/io/project_file.h"
 
 #include <QDir>
@@ -10,6 +11,8 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <sys/stat.h>
 
 using namespace tolturn;
 
@@ -320,6 +323,45 @@ private Q_SLOTS:
                  json.value(QStringLiteral("material")).toString());
         QVERIFY(projectValueAt(*r.project, QStringLiteral("passes[99].feed_mm_rev")).isUndefined());
         QVERIFY(projectValueAt(*r.project, QStringLiteral("part.no_such_field")).isUndefined());
+    }
+
+    // Every file TolTurn writes goes through one atomic write (issue 14): the replaced file keeps
+    // its permissions, a new one gets 0666 less the umask, nothing is left beside it, and a
+    // temporary file of an interrupted write is what a signal handler removes.
+    void atomicWritesKeepPermissionsAndLeaveNothing()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("out.txt"));
+        QCOMPARE(writeFileAtomically(path, "first"), QString());
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+
+        struct stat st {};
+
+        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
+        QCOMPARE(st.st_mode & 0777, 0666 & ~mask);
+        QCOMPARE(::chmod(QFile::encodeName(path).constData(), 0600), 0);
+        QCOMPARE(writeFileAtomically(path, "second"), QString());
+        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
+        QCOMPARE(st.st_mode & 0777, mode_t{0600});
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("second"));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("out.txt")});
+        // Into a folder that is not there: an error naming the file, nothing written.
+        const QString nowhere = dir.filePath(QStringLiteral("none/out.txt"));
+        QVERIFY(writeFileAtomically(nowhere, "x").contains(nowhere));
+        // The temporary file of a write in progress, as a handler of SIGTERM removes it.
+        const QString pending = dir.filePath(QStringLiteral(".tolturn-pending"));
+        {
+            QFile half(pending);
+            QVERIFY(half.open(QIODevice::WriteOnly) && half.write("half") == 4);
+        }
+        {
+            const PendingTemporaryFile guard(pending);
+            removePendingTemporaryFile();
+        }
+        QVERIFY(!QFile::exists(pending));
     }
 
     void unknownFieldIsOnlyAWarning()

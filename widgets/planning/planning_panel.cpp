@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/planning/planning_panel.h"
 
+#include "core/common/atomic_file.h"
 #include "core/deviation/deviation_model.h"
 #include "core/planning/gcode.h"
 #include "core/planning/planning_problem.h"
@@ -22,7 +23,6 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTimer>
@@ -570,13 +570,7 @@ QString PlanningPanel::gcodeText() const
 
 QString PlanningPanel::exportGCode(const QString &path) const
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return tr("cannot write '%1': %2").arg(path, file.errorString());
-    file.write(gcodeText().toUtf8());
-    if (!file.commit())
-        return tr("cannot save '%1': %2").arg(path, file.errorString());
-    return {};
+    return writeFileAtomically(path, gcodeText().toUtf8());
 }
 
 } // namespace tolturn

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/plot/plot_backend.h"
 
+#include "core/common/atomic_file.h"
+
 #include <QApplication>
 #include <QBuffer>
 #include <QClipboard>
@@ -12,7 +14,6 @@
 #include <QPdfWriter>
 #include <QPicture>
 #include <QRectF>
-#include <QSaveFile>
 #include <QSvgGenerator>
 #include <qcustomplot.h>
 
@@ -83,10 +84,7 @@ QString exportPlot(QCustomPlot &plot, const QString &path)
         return QCoreApplication::translate("PlotExport", "cannot export a plot as '%1': use .png, .svg or .pdf")
             .arg(QFileInfo(path).fileName());
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        return QCoreApplication::translate("PlotExport", "cannot write '%1': %2").arg(path, file.errorString());
-    return {};
+    return writeFileAtomically(path, bytes);
 }
 
 QString plotExportFilter()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/report/report_writer.h"
 
+#include "core/common/atomic_file.h"
 #include "core/common/library_info.h"
 #include "core/planning/planning_report.h"
 #include "core/planning/plausibility.h"
@@ -27,7 +28,6 @@
 #include <QPainter>
 #include <QPdfWriter>
 #include <QPicture>
-#include <QSaveFile>
 
 #include <cmath>
 #include <limits>
@@ -550,9 +550,8 @@ ReportResult writeReport(const Project &project, const ReportHeader &header, con
     const RenderedReport rendered = renderReport(project, header, progress);
     if (rendered.cancelled)
         return cancelledReport();
-    QSaveFile file(pdfPath);
-    if (!file.open(QIODevice::WriteOnly) || file.write(rendered.pdf) != rendered.pdf.size() || !file.commit()) {
-        result.error = Report::tr("cannot write '%1': %2").arg(pdfPath, file.errorString());
+    if (QString error = writeFileAtomically(pdfPath, rendered.pdf); !error.isEmpty()) {
+        result.error = std::move(error);
         return result;
     }
     result.ok = true;
