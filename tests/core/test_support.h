@@ -5,7 +5,10 @@
 
 #include "core/part/profile.h"
 
+#include <QFile>
 #include <QString>
+
+#include <sys/stat.h>
 
 namespace tolturn::test {
 
@@ -24,6 +27,22 @@ inline Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoin
     s.from = a;
     s.to = b;
     return s;
+}
+
+// The permission bits of a file (-1 when it cannot be read), and those a new file gets: 0666
+// less the umask (open(2)).
+inline int permissionBits(const QString &path)
+{
+    struct stat st {};
+
+    return ::stat(QFile::encodeName(path).constData(), &st) == 0 ? static_cast<int>(st.st_mode & 0777) : -1;
+}
+
+inline int newFileBits()
+{
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    return static_cast<int>(0666 & ~mask);
 }
 
 } // namespace tolturn::test

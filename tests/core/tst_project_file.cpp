@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Project files: round trips, atomic writing, and one named error for each kind of bad input.
+#include "tests/core/test_support.h"
+
 #include "core/common/atomic_file.h"
 #include "core/io/project_file.h"
 
@@ -333,17 +335,10 @@ private Q_SLOTS:
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("out.txt"));
         QCOMPARE(writeFileAtomically(path, "first"), QString());
-        const mode_t mask = ::umask(0);
-        ::umask(mask);
-
-        struct stat st {};
-
-        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
-        QCOMPARE(st.st_mode & 0777, 0666 & ~mask);
+        QCOMPARE(test::permissionBits(path), test::newFileBits());
         QCOMPARE(::chmod(QFile::encodeName(path).constData(), 0600), 0);
         QCOMPARE(writeFileAtomically(path, "second"), QString());
-        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
-        QCOMPARE(st.st_mode & 0777, mode_t{0600});
+        QCOMPARE(test::permissionBits(path), 0600);
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), QByteArray("second"));

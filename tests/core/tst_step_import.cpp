@@ -2,6 +2,8 @@
 // STEP/IGES import (issue 7): parts are built here with OpenCascade from hand-made profiles (with
 // fillets, chamfers, a bore, and non-turned features cut in), written to files and imported; the
 // extracted contours must match the hand-made ones to 1 µm.
+#include "tests/core/test_support.h"
+
 #include "core/cad/occt_guard.h"
 #include "core/cad/step_export.h"
 #include "core/cad/step_import.h"
@@ -640,17 +642,10 @@ private Q_SLOTS:
         const QString path = m_dir.filePath(QStringLiteral("permissions.step"));
         QFile::remove(path);
         QVERIFY(exportProfileToStep(expectedPin(), path).ok);
-        const mode_t mask = ::umask(0);
-        ::umask(mask);
-
-        struct stat st {};
-
-        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
-        QCOMPARE(st.st_mode & 0777, 0666 & ~mask);
+        QCOMPARE(test::permissionBits(path), test::newFileBits());
         QCOMPARE(::chmod(QFile::encodeName(path).constData(), 0640), 0);
         QVERIFY(exportProfileToStep(expectedPin(), path).ok);
-        QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
-        QCOMPARE(st.st_mode & 0777, mode_t{0640});
+        QCOMPARE(test::permissionBits(path), 0640);
     }
 
     void exportThenImportRoundTrips()
