@@ -24,6 +24,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
+
 #include <cmath>
 #include <utility>
 
@@ -216,6 +218,33 @@ private Q_SLOTS:
         QVERIFY2(f.prompts.error.contains(QStringLiteral("drawing.step")), qPrintable(f.prompts.error));
         QCOMPARE(f.document.project(), before);
         QCOMPARE(f.prompts.confirmations, 0);
+    }
+
+    // A model OpenCascade used to crash on (issue 14: one EDGE_LOOP line deleted), imported on the
+    // worker thread as the window does: an error naming the file, the project as it was, and the
+    // program still here to import a good file afterwards.
+    void malformedModelLeavesTheProgramRunning()
+    {
+        QTemporaryDir dir;
+        QFile seed(QStringLiteral(TOLTURN_SOURCE_DIR "/fuzz/corpus/cad/slender-pin.step"));
+        QVERIFY(seed.open(QIODevice::ReadOnly));
+        QList<QByteArray> lines = seed.readAll().split('\n');
+        const auto loop = std::find_if(lines.begin(), lines.end(),
+                                       [](const QByteArray &l) { return l.contains("EDGE_LOOP"); });
+        QVERIFY(loop != lines.end());
+        lines.erase(loop);
+        const QString bad = dir.filePath(QStringLiteral("broken.step"));
+        QFile file(bad);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(lines.join('\n'));
+        file.close();
+        Fixture f;
+        QVERIFY(f.files.openFile(example("hollow-sleeve-tailstock.tolturn")));
+        const Project before = f.document.project();
+        QVERIFY(!runImport(f, bad));
+        QVERIFY2(f.prompts.error.contains(QStringLiteral("broken.step")), qPrintable(f.prompts.error));
+        QCOMPARE(f.document.project(), before);
+        QVERIFY(runImport(f, QStringLiteral(TOLTURN_SOURCE_DIR "/fuzz/corpus/cad/slender-pin.step")));
     }
 
     // Cancelled (here in the confirmation): nothing changes.
