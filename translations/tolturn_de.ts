@@ -2435,6 +2435,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>a torus</source>
         <translation>ein Torus</translation>
     </message>
+    <message>
+        <source>a torus about the part axis</source>
+        <translation>ein Torus um die Teileachse</translation>
+    </message>
+    <message>
+        <source>a cylinder, cone or face about the part axis</source>
+        <translation>ein Zylinder, Kegel oder eine Planfläche um die Teileachse</translation>
+    </message>
 </context>
 <context>
     <name>SetupSheet</name>

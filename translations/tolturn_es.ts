@@ -2435,6 +2435,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>a torus</source>
         <translation>un toro</translation>
     </message>
+    <message>
+        <source>a torus about the part axis</source>
+        <translation>un toro alrededor del eje de la pieza</translation>
+    </message>
+    <message>
+        <source>a cylinder, cone or face about the part axis</source>
+        <translation>un cilindro, cono o cara alrededor del eje de la pieza</translation>
+    </message>
 </context>
 <context>
     <name>SetupSheet</name>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cad/revolved_faces.h"
 
+#include <Eigen/Dense>
 #include <QCoreApplication>
 
 #include <BRepAdaptor_Curve.hxx>
@@ -223,6 +224,18 @@ public:
         case GeomAbs_SurfaceOfRevolution:
             piece = revolution(face, s, what);
             break;
+        case GeomAbs_BSplineSurface:
+        case GeomAbs_BezierSurface:
+            // Not an elementary surface as a whole: a fillet (torus) or a cone written as a spline
+            // is still one meridian curve turned about the part axis.
+            piece = meridian(face, e);
+            if (piece)
+                m_out.convertedFaces.emplace_back(
+                    index, piece->arc ? RevolvedFaces::tr("a torus about the part axis")
+                                      : RevolvedFaces::tr("a cylinder, cone or face about the part axis"));
+            else
+                what = otherSurface(s.GetType());
+            break;
         default:
             what = otherSurface(s.GetType());
             break;
@@ -362,6 +375,64 @@ private:
             return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
         };
         return arc(onCircle(e.zMin), onCircle(e.zMax), centre, rho);
+    }
+
+    // A spline face that is a surface of revolution about the part axis: points over its parameter
+    // range, each taken to (z, r) about the axis, lie on one line (a cone, cylinder or plane) or one
+    // circle (a torus) within kAnalyticTolerance_mm. The circle is the least-squares fit of
+    // (z - zc)² + (r - rc)² = rho² written linear in zc, rc and rho² - zc² - rc² (Kasa 1976).
+    std::optional<SectionPiece> meridian(const TopoDS_Face &face, const Extent &e) const
+    {
+        constexpr int kSamples = 9; // per parameter direction
+        const BRepAdaptor_Surface s(face);
+        std::vector<ProfilePoint> points;
+        for (int i = 0; i < kSamples; ++i) {
+            for (int j = 0; j < kSamples; ++j) {
+                const double u = s.FirstUParameter() + (s.LastUParameter() - s.FirstUParameter()) * i / (kSamples - 1);
+                const double v = s.FirstVParameter() + (s.LastVParameter() - s.FirstVParameter()) * j / (kSamples - 1);
+                const gp_Pnt p = s.Value(u, v);
+                points.push_back({m_frame.z(p), m_frame.r(p)});
+            }
+        }
+        // A line first: all points at the distance of the line through the extreme z.
+        const ProfilePoint a = *std::min_element(points.begin(), points.end(),
+                                                 [](const auto &p, const auto &q) { return p.z_mm < q.z_mm; });
+        const ProfilePoint b = *std::max_element(points.begin(), points.end(),
+                                                 [](const auto &p, const auto &q) { return p.z_mm < q.z_mm; });
+        const double length = std::hypot(b.z_mm - a.z_mm, b.r_mm - a.r_mm);
+        const auto offLine = [&](const ProfilePoint &p) {
+            return std::abs((b.z_mm - a.z_mm) * (p.r_mm - a.r_mm) - (b.r_mm - a.r_mm) * (p.z_mm - a.z_mm)) / length;
+        };
+        if (length > kJoinTolerance_mm && std::all_of(points.begin(), points.end(), [&](const auto &p) {
+                return offLine(p) <= kAnalyticTolerance_mm;
+            }))
+            return line(a, b);
+        Eigen::MatrixXd m(static_cast<Eigen::Index>(points.size()), 3);
+        Eigen::VectorXd rhs(static_cast<Eigen::Index>(points.size()));
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const auto row = static_cast<Eigen::Index>(k);
+            m(row, 0) = 2.0 * points[k].z_mm;
+            m(row, 1) = 2.0 * points[k].r_mm;
+            m(row, 2) = 1.0;
+            rhs(row) = points[k].z_mm * points[k].z_mm + points[k].r_mm * points[k].r_mm;
+        }
+        const Eigen::Vector3d x = m.colPivHouseholderQr().solve(rhs);
+        const ProfilePoint centre{x(0), x(1)};
+        const double rho2 = x(2) + x(0) * x(0) + x(1) * x(1);
+        if (!(rho2 > 0.0))
+            return std::nullopt;
+        const double rho = std::sqrt(rho2);
+        const bool onCircle = std::all_of(points.begin(), points.end(), [&](const ProfilePoint &p) {
+            return std::abs(std::hypot(p.z_mm - centre.z_mm, p.r_mm - centre.r_mm) - rho) <= kAnalyticTolerance_mm;
+        });
+        if (!onCircle)
+            return std::nullopt;
+        const double side = m_frame.r(midPoint(face)) >= centre.r_mm ? 1.0 : -1.0;
+        const auto at = [&](double z) {
+            const double dz = z - centre.z_mm;
+            return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
+        };
+        return arc(at(e.zMin), at(e.zMax), centre, rho);
     }
 
     // The circle through three points (centre, radius); nullopt when they are in a line.

@@ -25,7 +25,6 @@
 #include <QTest>
 
 #include <algorithm>
-
 #include <cmath>
 #include <utility>
 
@@ -229,8 +228,8 @@ private Q_SLOTS:
         QFile seed(QStringLiteral(TOLTURN_SOURCE_DIR "/fuzz/corpus/cad/slender-pin.step"));
         QVERIFY(seed.open(QIODevice::ReadOnly));
         QList<QByteArray> lines = seed.readAll().split('\n');
-        const auto loop = std::find_if(lines.begin(), lines.end(),
-                                       [](const QByteArray &l) { return l.contains("EDGE_LOOP"); });
+        const auto loop =
+            std::find_if(lines.begin(), lines.end(), [](const QByteArray &l) { return l.contains("EDGE_LOOP"); });
         QVERIFY(loop != lines.end());
         lines.erase(loop);
         const QString bad = dir.filePath(QStringLiteral("broken.step"));
