@@ -313,12 +313,7 @@ private:
         }
         const ProfilePoint centre{m_frame.z(t.Location()), t.MajorRadius()};
         const double rho = t.MinorRadius();
-        const double side = m_frame.r(midPoint(face)) >= centre.r_mm ? 1.0 : -1.0;
-        const auto at = [&](double z) {
-            const double dz = z - centre.z_mm;
-            return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
-        };
-        return arc(at(e.zMin), at(e.zMax), centre, rho);
+        return meridianArc(face, centre, rho, e);
     }
 
     // A sphere centred on the axis traces an arc centred on the axis (a ball end, a spherical
@@ -369,12 +364,7 @@ private:
         const ProfilePoint centre{m_frame.z(circle.Location()), m_frame.r(circle.Location())};
         const double rho = circle.Radius();
         const Extent e = faceExtent(face, m_frame);
-        const double side = m_frame.r(midPoint(face)) >= centre.r_mm ? 1.0 : -1.0;
-        const auto onCircle = [&](double z) {
-            const double dz = z - centre.z_mm;
-            return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
-        };
-        return arc(onCircle(e.zMin), onCircle(e.zMax), centre, rho);
+        return meridianArc(face, centre, rho, e);
     }
 
     // A spline face that is a surface of revolution about the part axis: points over its parameter
@@ -427,29 +417,20 @@ private:
         });
         if (!onCircle)
             return std::nullopt;
+        return meridianArc(face, centre, rho, e);
+    }
+
+    // The trace of a face whose meridian is a circle (centre, radius rho) in the half-plane: the
+    // arc between the face's z extremes, on the half of the circle the middle of the face lies on.
+    [[nodiscard]] std::optional<SectionPiece> meridianArc(const TopoDS_Face &face, const ProfilePoint &centre,
+                                                          double rho, const Extent &e) const
+    {
         const double side = m_frame.r(midPoint(face)) >= centre.r_mm ? 1.0 : -1.0;
         const auto at = [&](double z) {
             const double dz = z - centre.z_mm;
             return ProfilePoint{z, centre.r_mm + side * std::sqrt(std::max(0.0, rho * rho - dz * dz))};
         };
         return arc(at(e.zMin), at(e.zMax), centre, rho);
-    }
-
-    // The circle through three points (centre, radius); nullopt when they are in a line.
-    static std::optional<std::pair<ProfilePoint, double>> circleThrough(const ProfilePoint &p, const ProfilePoint &q,
-                                                                        const ProfilePoint &w)
-    {
-        const double ax = q.z_mm - p.z_mm;
-        const double ay = q.r_mm - p.r_mm;
-        const double bx = w.z_mm - p.z_mm;
-        const double by = w.r_mm - p.r_mm;
-        const double d = 2.0 * (ax * by - ay * bx);
-        if (std::abs(d) <= kJoinTolerance_mm * kJoinTolerance_mm)
-            return std::nullopt;
-        const double a2 = ax * ax + ay * ay;
-        const double b2 = bx * bx + by * by;
-        const ProfilePoint centre{p.z_mm + (by * a2 - ay * b2) / d, p.r_mm + (ax * b2 - bx * a2) / d};
-        return std::pair{centre, std::hypot(p.z_mm - centre.z_mm, p.r_mm - centre.r_mm)};
     }
 
     static QString surfaceName(GeomAbs_SurfaceType type)
