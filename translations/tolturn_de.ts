@@ -443,6 +443,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>--stations %1 on %2 features makes %3 tool positions, more than the %4 computed at once; give at most %5</source>
         <translation>--stations %1 auf %2 Formelementen ergibt %3 Werkzeugstellungen, mehr als die %4, die auf einmal berechnet werden; geben Sie höchstens %5 an</translation>
     </message>
+    <message>
+        <source>Best plan (%1) found within the time limit</source>
+        <translation>Bester Plan (%1) innerhalb der Zeitgrenze</translation>
+    </message>
+    <message>
+        <source>Stop the search after SECONDS (0.01 to 3600, default 60) with the best plan found by then.</source>
+        <translation>Die Suche nach SECONDS (0,01 bis 3600, Vorgabe 60) mit dem bis dahin besten Plan beenden.</translation>
+    </message>
+    <message>
+        <source>--time-limit is from 0.01 to 3600 seconds, not &quot;%1&quot;</source>
+        <translation>--time-limit liegt zwischen 0,01 und 3600 Sekunden, nicht „%1“</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1216,6 +1228,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>total axial run-out</source>
         <translation>Gesamtplanlauf</translation>
+    </message>
+</context>
+<context>
+    <name>Optimiser</name>
+    <message>
+        <source>The search stopped at its time limit of %1 s after %2 plans: the plan shown is the best found by then, not necessarily the optimum.</source>
+        <translation>Die Suche endete an ihrer Zeitgrenze von %1 s nach %2 Plänen: der gezeigte Plan ist der bis dahin beste, nicht unbedingt das Optimum.</translation>
     </message>
 </context>
 <context>

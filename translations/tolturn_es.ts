@@ -443,6 +443,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>--stations %1 on %2 features makes %3 tool positions, more than the %4 computed at once; give at most %5</source>
         <translation>--stations %1 en %2 elementos da %3 posiciones de la herramienta, más que las %4 que se calculan de una vez; indique como mucho %5</translation>
     </message>
+    <message>
+        <source>Best plan (%1) found within the time limit</source>
+        <translation>Mejor plan (%1) hallado dentro del límite de tiempo</translation>
+    </message>
+    <message>
+        <source>Stop the search after SECONDS (0.01 to 3600, default 60) with the best plan found by then.</source>
+        <translation>Detener la búsqueda tras SECONDS (0,01 a 3600, por defecto 60) con el mejor plan hallado hasta entonces.</translation>
+    </message>
+    <message>
+        <source>--time-limit is from 0.01 to 3600 seconds, not &quot;%1&quot;</source>
+        <translation>--time-limit va de 0,01 a 3600 segundos, no «%1»</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1216,6 +1228,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>total axial run-out</source>
         <translation>oscilación total axial</translation>
+    </message>
+</context>
+<context>
+    <name>Optimiser</name>
+    <message>
+        <source>The search stopped at its time limit of %1 s after %2 plans: the plan shown is the best found by then, not necessarily the optimum.</source>
+        <translation>La búsqueda se detuvo en su límite de tiempo de %1 s tras %2 planes: el plan mostrado es el mejor hallado hasta entonces, no necesariamente el óptimo.</translation>
     </message>
 </context>
 <context>

@@ -94,6 +94,7 @@ QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
             {QStringLiteral("binding"), constraintsJson(r.binding)},
             {QStringLiteral("conflicts"), constraintsJson(r.conflicts)},
             {QStringLiteral("evaluations"), r.evaluations},
+            {QStringLiteral("timed_out"), r.timedOut},
             {QStringLiteral("notes"), QJsonArray::fromStringList(r.notes)}};
 }
 
@@ -101,9 +102,13 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
 {
     const CandidateEvaluation &e = r.evaluation;
     const PassConditions rough = roughingOf(r, problem);
-    out << (r.feasible ? CommandLine::tr("Optimum (%1)").arg(keyword(problem.project().planning.objective))
-                       : CommandLine::tr("No plan meets every constraint; the one that violates them least"))
-        << '\n';
+    const QString objective = keyword(problem.project().planning.objective);
+    if (r.feasible)
+        out << (r.timedOut ? CommandLine::tr("Best plan (%1) found within the time limit").arg(objective)
+                           : CommandLine::tr("Optimum (%1)").arg(objective));
+    else
+        out << CommandLine::tr("No plan meets every constraint; the one that violates them least");
+    out << '\n';
     out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part")
                .arg(QString::number(e.time_min, 'f', 3), QString::number(e.finishingTime_min, 'f', 3),
                     QString::number(e.roughingTime_min, 'f', 3), QString::number(e.cost, 'f', 2),
@@ -162,7 +167,11 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         CommandLine::tr(
             "Plan for the compliant (default) or the stiff end of an unmeasured machine's stiffness range."),
         QStringLiteral("END"));
-    parser.addOptions({json, objective, write, machineEnd});
+    const QCommandLineOption timeLimit(
+        QStringLiteral("time-limit"),
+        CommandLine::tr("Stop the search after SECONDS (0.01 to 3600, default 60) with the best plan found by then."),
+        QStringLiteral("SECONDS"), QStringLiteral("60"));
+    parser.addOptions({json, objective, write, machineEnd, timeLimit});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("optimize"), args, out, err); stop >= 0)
@@ -170,6 +179,15 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     const QString file = oneProjectFile(parser, QStringLiteral("optimize"), err);
     if (file.isEmpty())
         return kExitUsage;
+    OptimisationOptions options;
+    bool ok = false;
+    options.timeLimit_s = parser.value(timeLimit).toDouble(&ok);
+    if (!ok || !(options.timeLimit_s >= 0.01 && options.timeLimit_s <= 3600.0)) {
+        err << programName() << " optimize: "
+            << CommandLine::tr("--time-limit is from 0.01 to 3600 seconds, not \"%1\"").arg(parser.value(timeLimit))
+            << '\n';
+        return kExitUsage;
+    }
     std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
@@ -200,7 +218,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     }
     if (!built.problem)
         return kExitProblems;
-    const PlanResult plan = optimisePlan(*built.problem);
+    const PlanResult plan = optimisePlan(*built.problem, options);
     if (parser.isSet(json)) {
         if (const int code = printJson(planJson(plan, *built.problem), out, err, QStringLiteral("optimize"));
             code != kExitOk)

@@ -1,34 +1,46 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/optimiser.h"
 
+#include <QCoreApplication>
 #include <nlopt.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace tolturn {
 
 namespace {
+
+struct Optimiser {
+    Q_DECLARE_TR_FUNCTIONS(Optimiser)
+};
 
 constexpr double kPenalty = 1000.0;
 // What an overflowing objective or violation is taken as: worse than any real plan (minutes or
 // currency per part, relative violations), and small enough that NLopt's arithmetic on it stays
 // finite: COBYLA loops for ever inside its own linear algebra on values near the double range.
 constexpr double kWorstObjective = 1e12;
+// The longest search that may be asked for: an hour.
+constexpr double kMaxTimeLimit_s = 3600.0;
 
 double finiteOrWorst(double v)
 {
     return std::isfinite(v) ? std::min(v, kWorstObjective) : kWorstObjective;
 }
 
+using Clock = std::chrono::steady_clock;
+
 struct Context {
-    Context(const PlanningProblem &p, int k, const PlanBox &box, const OptimisationOptions &o)
+    Context(const PlanningProblem &p, int k, const PlanBox &box, const OptimisationOptions &o, Clock::time_point end)
         : problem(&p)
         , roughingPasses(k)
         , lower(box.lower)
         , upper(box.upper)
         , options(&o)
+        , deadline(end)
     {
     }
 
@@ -36,11 +48,13 @@ struct Context {
     int roughingPasses;
     std::vector<double> lower, upper;
     const OptimisationOptions *options;
+    Clock::time_point deadline;
     int evaluations = 0;
     double done = 0.0;  // fraction of the whole run before this search
     double share = 0.0; // fraction of the whole run this search stands for
     int budget = 1;
     bool cancelled = false;
+    bool timedOut = false;
 
     [[nodiscard]] std::vector<double> denormalise(const double *u) const
     {
@@ -62,6 +76,10 @@ struct Context {
         // an objective that overflows. The search stops here at its budget, whatever it does.
         if (evaluations > budget)
             throw nlopt::forced_stop();
+        if (Clock::now() >= deadline) {
+            timedOut = true;
+            throw nlopt::forced_stop();
+        }
         CandidateEvaluation e = problem->evaluate(candidateAt(denormalise(u), roughingPasses));
         // An overflowing cost or violation (degenerate tool-life data, say) ranks last, finitely.
         e.objective = finiteOrWorst(e.objective);
@@ -177,19 +195,21 @@ struct SearchOutcome {
 // Global search (penalised DIRECT-L) and, when `localEvaluations` > 0, a local refinement with
 // the constraints (COBYLA), for one number of roughing passes.
 SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEvaluations, int localEvaluations,
-                           const OptimisationOptions &options, double done, double share, PlanResult &result)
+                           const OptimisationOptions &options, double done, double share, PlanResult &result,
+                           Clock::time_point deadline)
 {
     const PlanBox box = planBox(problem, k);
-    Context c(problem, k, box, options);
+    Context c(problem, k, box, options, deadline);
     c.done = done;
     c.share = share;
     c.budget = globalEvaluations + localEvaluations;
     std::vector<double> u =
         runSearch(nlopt::GN_DIRECT_L, c, std::vector<double>(5, 0.5), globalEvaluations, penalised, false);
-    if (!c.cancelled && localEvaluations > 0)
+    if (!c.cancelled && !c.timedOut && localEvaluations > 0)
         u = runSearch(nlopt::LN_COBYLA, c, u, localEvaluations, objectiveOnly, true);
     result.evaluations += c.evaluations;
     result.cancelled = result.cancelled || c.cancelled;
+    result.timedOut = result.timedOut || c.timedOut;
     SearchOutcome outcome;
     outcome.candidate = candidateAt(c.denormalise(u.data()), k);
     outcome.evaluation = problem.evaluate(outcome.candidate);
@@ -207,6 +227,10 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
 {
     PlanResult result;
     result.notes = problem.notes();
+    const auto started = Clock::now();
+    const auto deadline = started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                        std::clamp(options.timeLimit_s, 0.0, kMaxTimeLimit_s)));
+    auto goOn = [&result] { return !result.cancelled && !result.timedOut; };
     // Every number of roughing passes some finishing allowance in the insert's depth range allows.
     const int fewest = problem.roughingPassRange(problem.depthRange().max).first;
     const int most = problem.roughingPassRange(problem.depthRange().min).second;
@@ -215,52 +239,67 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
         if (!planBox(problem, k).empty())
             counts.push_back(k);
     }
-    // A coarse look at every number of passes, then the full search where it looks best.
+    // A coarse look at every number of passes, then the full search where it looks best. The best
+    // plan seen so far is kept for a search stopped at its time limit.
     constexpr int kCoarse = 120;
     constexpr std::size_t kRefined = 2;
+    std::optional<SearchOutcome> bestSeen;
+    auto keepIfBetter = [&bestSeen](const SearchOutcome &o) {
+        if (!bestSeen || rank(o.evaluation) < rank(bestSeen->evaluation))
+            bestSeen = o;
+    };
     std::vector<std::pair<double, int>> ranked;
-    for (std::size_t i = 0; i < counts.size() && !result.cancelled; ++i) {
+    for (std::size_t i = 0; i < counts.size() && goOn(); ++i) {
         const SearchOutcome coarse = searchPasses(problem, counts[i], kCoarse, 0, options,
                                                   0.3 * static_cast<double>(i) / static_cast<double>(counts.size()),
-                                                  0.3 / static_cast<double>(counts.size()), result);
+                                                  0.3 / static_cast<double>(counts.size()), result, deadline);
+        keepIfBetter(coarse);
         ranked.emplace_back(rank(coarse.evaluation), counts[i]);
     }
     std::sort(ranked.begin(), ranked.end());
-    double best = std::numeric_limits<double>::infinity();
     double leastViolation = std::numeric_limits<double>::infinity();
     PlanCandidate leastViolating;
     const std::size_t refined = std::min(kRefined, ranked.size());
-    for (std::size_t i = 0; i < refined && !result.cancelled; ++i) {
+    for (std::size_t i = 0; i < refined && goOn(); ++i) {
         const SearchOutcome o =
             searchPasses(problem, ranked[i].second, options.globalEvaluations, options.localEvaluations, options,
                          0.3 + 0.7 * static_cast<double>(i) / static_cast<double>(refined),
-                         0.7 / static_cast<double>(refined), result);
-        if (o.evaluation.feasible(1e-6) && o.evaluation.objective < best) {
-            best = o.evaluation.objective;
-            result.feasible = true;
-            result.candidate = o.candidate;
-            result.evaluation = o.evaluation;
-        } else if (!result.feasible && o.evaluation.totalViolation() < leastViolation) {
+                         0.7 / static_cast<double>(refined), result, deadline);
+        keepIfBetter(o);
+        if (!o.evaluation.feasible(1e-6) && o.evaluation.totalViolation() < leastViolation) {
             leastViolation = o.evaluation.totalViolation();
             leastViolating = o.candidate;
         }
     }
-    if (!result.feasible && !counts.empty() && !result.cancelled) {
+    if (bestSeen) {
+        result.feasible = bestSeen->evaluation.feasible(1e-6);
+        result.candidate = bestSeen->candidate;
+        result.evaluation = bestSeen->evaluation;
+    }
+    if (!result.feasible && !counts.empty() && goOn()) {
         // Nothing feasible: the plan that violates the constraints least, and what it violates.
         const int k = leastViolating.roughingPasses;
         const PlanBox box = planBox(problem, k);
-        Context c(problem, k, box, options);
+        Context c(problem, k, box, options, deadline);
         c.budget = options.globalEvaluations;
         std::vector<double> u = runSearch(nlopt::GN_DIRECT_L, c, std::vector<double>(5, 0.5), options.globalEvaluations,
                                           violationOnly, false);
         result.evaluations += c.evaluations;
+        result.timedOut = result.timedOut || c.timedOut;
         result.candidate = candidateAt(c.denormalise(u.data()), k);
         result.evaluation = problem.evaluate(result.candidate);
+    }
+    if (!result.feasible) {
         for (const ConstraintValue &v : result.evaluation.constraints) {
             if (v.violation() > 1e-6)
                 result.conflicts.push_back(v);
         }
     }
+    if (result.timedOut)
+        result.notes << Optimiser::tr("The search stopped at its time limit of %1 s after %2 plans: the plan shown is "
+                                      "the best found by then, not necessarily the optimum.")
+                            .arg(options.timeLimit_s)
+                            .arg(result.evaluations);
     for (const ConstraintValue &v : result.evaluation.constraints) {
         if (std::abs(v.violation()) <= 0.01)
             result.binding.push_back(v);

@@ -10,6 +10,9 @@ namespace tolturn {
 struct OptimisationOptions {
     int globalEvaluations = 600; // per number of roughing passes
     int localEvaluations = 300;
+    // Wall-clock bound on the whole search; the best plan found by then is returned, marked
+    // timedOut. The evaluation budgets bound it too; this bounds a part whose evaluations are slow.
+    double timeLimit_s = 60.0;
     // Called now and then with the fraction done; returning false cancels.
     std::function<bool(double fraction)> progress;
 };
@@ -17,6 +20,7 @@ struct OptimisationOptions {
 struct PlanResult {
     bool feasible = false;
     bool cancelled = false;
+    bool timedOut = false; // stopped at OptimisationOptions::timeLimit_s: the best plan by then
     PlanCandidate candidate;
     CandidateEvaluation evaluation;
     std::vector<ConstraintValue> binding;   // within 1 % of their limit at the optimum

@@ -249,6 +249,9 @@ private Q_SLOTS:
         row("write of an infeasible plan", shaftWith(QStringLiteral("planning.max_ra_um"), 0.05),
             {QStringLiteral("optimize"), QStringLiteral("--write"), QStringLiteral("IN")}, 1,
             QStringLiteral("roughness"));
+        row("optimiser time limit of zero", QJsonDocument(shaft()).toJson(),
+            {QStringLiteral("optimize"), QStringLiteral("--time-limit"), QStringLiteral("0"), QStringLiteral("IN")}, 2,
+            QStringLiteral("--time-limit is from 0.01 to 3600 seconds, not \"0\""));
     }
 
     void catalogue()

@@ -290,6 +290,27 @@ private Q_SLOTS:
                 (kMaxRoughingPasses + 1) * 120 + 2 * (o.globalEvaluations + o.localEvaluations) + o.globalEvaluations);
     }
 
+    // The search is bounded in time as well as in evaluations: with a limit already passed when
+    // it starts, it stops within its first plans and says so; with the default it finishes untouched.
+    void searchStopsAtItsTimeLimit()
+    {
+        const auto problem = problemFor(example("stepped-shaft-chuck.tolturn"));
+        OptimisationOptions o;
+        o.timeLimit_s = 0.0;
+        const PlanResult stopped = optimisePlan(*problem, o);
+        QVERIFY(stopped.timedOut);
+        // NLopt may ask once more before it sees the stop; the full search takes thousands.
+        QVERIFY2(stopped.evaluations <= 3, qPrintable(QString::number(stopped.evaluations)));
+        QVERIFY(!stopped.notes.isEmpty());
+        QVERIFY(stopped.notes.constLast().contains(QStringLiteral("time limit")));
+        // The plan reported is a real point of the box, with its own evaluation.
+        QVERIFY(stopped.candidate.finishing.cuttingSpeed_m_min > 0.0);
+        QCOMPARE(stopped.evaluation.objective, problem->evaluate(stopped.candidate).objective);
+        const PlanResult whole = optimisePlan(*problem);
+        QVERIFY(!whole.timedOut);
+        QVERIFY(whole.evaluations > 1000);
+    }
+
     // A bar 100 m across would need tens of thousands of roughing passes: refused by name when
     // the problem is built, where it used to enumerate every count of passes.
     void hugeStockIsRefusedByName()
