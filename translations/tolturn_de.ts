@@ -2735,10 +2735,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>„%1“ enthält keinen Körper, keine Schale und keine Fläche</translation>
     </message>
     <message>
-        <source>OpenCascade failed while reading &apos;%1&apos;: %2</source>
-        <translation>Fehler in OpenCascade beim Lesen von „%1“: %2</translation>
-    </message>
-    <message>
         <source>reading &apos;%1&apos; failed: %2</source>
         <translation>das Lesen von „%1“ ist fehlgeschlagen: %2</translation>
     </message>
@@ -2757,6 +2753,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>face %1 is written as a B-spline surface and was read as %2, which it is within 0.001 mm</source>
         <translation>Fläche %1 ist als B-Spline-Fläche geschrieben und wurde als %2 gelesen, was sie bis auf 0,001 mm ist</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a consistent model: %2 refers to itself</source>
+        <translation>„%1“ ist kein konsistentes Modell: %2 verweist auf sich selbst</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a consistent model: %2 refers to %3, which leads back to %2 (a cycle of references)</source>
+        <translation>„%1“ ist kein konsistentes Modell: %2 verweist auf %3, das zurück zu %2 führt (ein Verweiszyklus)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; nests its entities %2 deep at %3, more than the %4 any CAD model needs</source>
+        <translation>„%1“ verschachtelt seine Entitäten bei %3 %2 Ebenen tief, mehr als die %4, die ein CAD-Modell braucht</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; could not be read: OpenCascade failed on it (%2); check the file in the CAD system that wrote it</source>
+        <translation>„%1“ konnte nicht gelesen werden: OpenCascade scheiterte daran (%2); prüfen Sie die Datei im CAD-System, das sie geschrieben hat</translation>
     </message>
 </context>
 <context>

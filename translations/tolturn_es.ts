@@ -2735,10 +2735,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>&apos;%1&apos; no contiene ningún cuerpo, lámina ni cara</translation>
     </message>
     <message>
-        <source>OpenCascade failed while reading &apos;%1&apos;: %2</source>
-        <translation>OpenCascade ha fallado al leer &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>reading &apos;%1&apos; failed: %2</source>
         <translation>error al leer &apos;%1&apos;: %2</translation>
     </message>
@@ -2757,6 +2753,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>face %1 is written as a B-spline surface and was read as %2, which it is within 0.001 mm</source>
         <translation>la cara %1 está escrita como superficie B-spline y se leyó como %2, que es con una tolerancia de 0,001 mm</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a consistent model: %2 refers to itself</source>
+        <translation>«%1» no es un modelo coherente: %2 se refiere a sí mismo</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a consistent model: %2 refers to %3, which leads back to %2 (a cycle of references)</source>
+        <translation>«%1» no es un modelo coherente: %2 se refiere a %3, que lleva de vuelta a %2 (un ciclo de referencias)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; nests its entities %2 deep at %3, more than the %4 any CAD model needs</source>
+        <translation>«%1» anida sus entidades %2 niveles en %3, más que los %4 que necesita cualquier modelo CAD</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; could not be read: OpenCascade failed on it (%2); check the file in the CAD system that wrote it</source>
+        <translation>«%1» no se pudo leer: OpenCascade falló con él (%2); revise el archivo en el sistema CAD que lo escribió</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cad/step_import.h"
 
+#include "core/cad/model_references.h"
 #include "core/cad/occt_guard.h"
 #include "core/cad/profile_chains.h"
 #include "core/cad/revolved_faces.h"
@@ -198,6 +199,22 @@ QString firstLoadFailure(XSControl_Reader &reader)
     return {};
 }
 
+// A cycle of references or a chain too deep: the translators would recurse on it without end.
+QString referenceProblemText(const QString &path, const cad::ReferenceProblem &problem)
+{
+    if (problem.kind == cad::ReferenceProblem::Kind::Cycle)
+        return problem.entity == problem.through
+                   ? StepImport::tr("'%1' is not a consistent model: %2 refers to itself").arg(path, problem.entity)
+                   : StepImport::tr("'%1' is not a consistent model: %2 refers to %3, which leads back to %2 (a cycle "
+                                    "of references)")
+                         .arg(path, problem.entity, problem.through);
+    return StepImport::tr("'%1' nests its entities %2 deep at %3, more than the %4 any CAD model needs")
+        .arg(path)
+        .arg(problem.depth)
+        .arg(problem.entity)
+        .arg(cad::kMaxReferenceDepth);
+}
+
 // Reads and transfers the file (the caller holds the OpenCascade lock); a null shape after an error.
 TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOptions &options, CadImportResult &result)
 {
@@ -219,6 +236,10 @@ TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOpt
     }
     if (const QString failure = firstLoadFailure(reader); !failure.isEmpty()) {
         fail(result, StepImport::tr("'%1' is not a consistent model: %2").arg(path, failure));
+        return {};
+    }
+    if (const auto problem = cad::firstReferenceProblem(reader.WS()->Graph())) {
+        fail(result, referenceProblemText(path, *problem));
         return {};
     }
     if (!report(options, result, kReadDone))
@@ -438,8 +459,11 @@ CadImportResult importCadFile(const QString &path, const CadImportOptions &optio
                                     "file in the CAD system that wrote it")
                          .arg(path, QString::fromLocal8Bit(e.GetMessageString()).trimmed()));
     } catch (const Standard_Failure &e) {
-        fail(result, StepImport::tr("OpenCascade failed while reading '%1': %2")
-                         .arg(path, QString::fromLocal8Bit(e.GetMessageString())));
+        // A stack overflow in a translator arrives here as a bare "System Signal received"
+        // (occt_guard.cpp): the same advice as for the other faults.
+        fail(result, StepImport::tr("'%1' could not be read: OpenCascade failed on it (%2); check the file in the CAD "
+                                    "system that wrote it")
+                         .arg(path, QString::fromLocal8Bit(e.GetMessageString()).trimmed()));
     } catch (const std::exception &e) {
         fail(result, StepImport::tr("reading '%1' failed: %2").arg(path, QString::fromLocal8Bit(e.what())));
     }

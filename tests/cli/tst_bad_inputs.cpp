@@ -82,6 +82,20 @@ QByteArray replacedFirst(QByteArray text, const QByteArray &what, const QByteArr
     return text.replace(at, what.size(), with);
 }
 
+// The pin with its first oriented edge reached through `depth` oriented edges in a row: a model
+// without a cycle, nested deeper than the import accepts (core/cad/model_references.h).
+QByteArray pinWithNestedEdges(int depth)
+{
+    QByteArray text = replacedFirst(stepOfThePin(), "#57 = ORIENTED_EDGE('',*,*,#21,.T.);",
+                                    "#57 = ORIENTED_EDGE('',*,*,#100001,.T.);");
+    QByteArray chain;
+    for (int i = 1; i <= depth; ++i)
+        chain += "#" + QByteArray::number(100000 + i) + " = ORIENTED_EDGE('',*,*,#" +
+                 (i < depth ? QByteArray::number(100001 + i) : QByteArray("21")) + ",.T.);\n";
+    const qsizetype end = text.lastIndexOf("ENDSEC;"); // of the DATA section
+    return text.insert(end, chain);
+}
+
 QByteArray withoutLineContaining(const QByteArray &text, const QByteArray &what)
 {
     QList<QByteArray> lines = text.split('\n');
@@ -238,6 +252,17 @@ private Q_SLOTS:
             QStringLiteral("is not a consistent model: #"), QStringLiteral("pin.step"));
         row("STEP real 1.E400", replacedFirst(stepOfThePin(), "0.,0.,0.", "1.E400,0.,0."), import, 1,
             QStringLiteral("the number '1.E400' is beyond the largest real"), QStringLiteral("pin.step"));
+        row("STEP oriented edge of itself",
+            replacedFirst(stepOfThePin(), "#57 = ORIENTED_EDGE('',*,*,#21,.T.);",
+                          "#57 = ORIENTED_EDGE('',*,*,#57,.T.);"),
+            import, 1, QStringLiteral("could not be read: OpenCascade failed"), QStringLiteral("pin.step"));
+        row("STEP nested 450 deep", pinWithNestedEdges(450), import, 1,
+            QStringLiteral("nests its entities 401 deep at #"), QStringLiteral("pin.step"));
+        row("STEP cycle of references",
+            replacedFirst(stepOfThePin(), "#68 = DEFINITIONAL_REPRESENTATION('',(#69),#73);",
+                          "#68 = DEFINITIONAL_REPRESENTATION('',(#62),#73);"),
+            import, 1, QStringLiteral("#68 refers to #62, which leads back to #68 (a cycle of references)"),
+            QStringLiteral("pin.step"));
         row("import into no folder", stepOfThePin(),
             {QStringLiteral("import"), QStringLiteral("-o"), QStringLiteral("DIR/none/out.tolturn"),
              QStringLiteral("IN")},
