@@ -21,6 +21,13 @@
     </message>
 </context>
 <context>
+    <name>CadImportJson</name>
+    <message>
+        <source>the import&apos;s result has no valid &quot;%1&quot;</source>
+        <translation>das Ergebnis des Imports hat kein gültiges „%1“</translation>
+    </message>
+</context>
+<context>
     <name>ClampingAdvice</name>
     <message>
         <source>meets every constraint: %1 %2 per part</source>
@@ -858,6 +865,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>%n Warnung</numerusform>
             <numerusform>%n Warnungen</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Report the progress on standard error, as lines &quot;progress F&quot; with F from 0 to 1.</source>
+        <translation>Den Fortschritt auf der Standardfehlerausgabe melden, als Zeilen „progress F“ mit F von 0 bis 1.</translation>
     </message>
 </context>
 <context>
@@ -3122,6 +3133,29 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Exported the part as a revolved solid to %1</source>
         <translation>Das Teil wurde als Rotationskörper nach %1 exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::CadReaderProcess</name>
+    <message>
+        <source>The CAD reader &apos;%1&apos; is missing: TolTurn reads STEP and IGES files with tolturn-cli, which is installed beside it. Install TolTurn again.</source>
+        <translation>Das CAD-Leseprogramm „%1“ fehlt: TolTurn liest STEP- und IGES-Dateien mit tolturn-cli, das neben ihm installiert ist. Installieren Sie TolTurn erneut.</translation>
+    </message>
+    <message>
+        <source>No temporary folder for the import: %1</source>
+        <translation>Kein temporärer Ordner für den Import: %1</translation>
+    </message>
+    <message>
+        <source>The CAD reader &apos;%1&apos; could not be started: %2</source>
+        <translation>Das CAD-Leseprogramm „%1“ konnte nicht gestartet werden: %2</translation>
+    </message>
+    <message>
+        <source>Reading %1 ended the CAD reader (OpenCascade) abnormally; the program and the project are not affected. The file is probably damaged: check it in the CAD system that wrote it.%2</source>
+        <translation>Das Lesen von %1 hat das CAD-Leseprogramm (OpenCascade) abnormal beendet; Programm und Projekt sind nicht betroffen. Die Datei ist wahrscheinlich beschädigt: prüfen Sie sie im CAD-System, das sie geschrieben hat.%2</translation>
+    </message>
+    <message>
+        <source>The CAD reader gave no result for %1 (exit code %2): %3 %4</source>
+        <translation>Das CAD-Leseprogramm lieferte kein Ergebnis für %1 (Exit-Code %2): %3 %4</translation>
     </message>
 </context>
 <context>

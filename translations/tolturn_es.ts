@@ -21,6 +21,13 @@
     </message>
 </context>
 <context>
+    <name>CadImportJson</name>
+    <message>
+        <source>the import&apos;s result has no valid &quot;%1&quot;</source>
+        <translation>el resultado de la importación no tiene un «%1» válido</translation>
+    </message>
+</context>
+<context>
     <name>ClampingAdvice</name>
     <message>
         <source>meets every constraint: %1 %2 per part</source>
@@ -858,6 +865,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>%n advertencia</numerusform>
             <numerusform>%n advertencias</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Report the progress on standard error, as lines &quot;progress F&quot; with F from 0 to 1.</source>
+        <translation>Informar del progreso en la salida de error estándar, como líneas «progress F» con F de 0 a 1.</translation>
     </message>
 </context>
 <context>
@@ -3122,6 +3133,29 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Exported the part as a revolved solid to %1</source>
         <translation>Se ha exportado la pieza como cuerpo de revolución a %1</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::CadReaderProcess</name>
+    <message>
+        <source>The CAD reader &apos;%1&apos; is missing: TolTurn reads STEP and IGES files with tolturn-cli, which is installed beside it. Install TolTurn again.</source>
+        <translation>Falta el lector CAD «%1»: TolTurn lee archivos STEP e IGES con tolturn-cli, instalado junto a él. Vuelva a instalar TolTurn.</translation>
+    </message>
+    <message>
+        <source>No temporary folder for the import: %1</source>
+        <translation>No hay carpeta temporal para la importación: %1</translation>
+    </message>
+    <message>
+        <source>The CAD reader &apos;%1&apos; could not be started: %2</source>
+        <translation>No se pudo iniciar el lector CAD «%1»: %2</translation>
+    </message>
+    <message>
+        <source>Reading %1 ended the CAD reader (OpenCascade) abnormally; the program and the project are not affected. The file is probably damaged: check it in the CAD system that wrote it.%2</source>
+        <translation>La lectura de %1 terminó el lector CAD (OpenCascade) de forma anómala; el programa y el proyecto no se ven afectados. El archivo probablemente está dañado: revíselo en el sistema CAD que lo escribió.%2</translation>
+    </message>
+    <message>
+        <source>The CAD reader gave no result for %1 (exit code %2): %3 %4</source>
+        <translation>El lector CAD no dio resultado para %1 (código de salida %2): %3 %4</translation>
     </message>
 </context>
 <context>

@@ -127,14 +127,6 @@ int printJson(const QJsonValue &result, QTextStream &out, QTextStream &err, cons
     return kExitOk;
 }
 
-QJsonObject diagnosticJson(const Diagnostic &d)
-{
-    return {{QStringLiteral("severity"),
-             d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning")},
-            {QStringLiteral("field"), d.field},
-            {QStringLiteral("message"), d.message}};
-}
-
 std::optional<CuttingForces> parseLoad(const QString &text)
 {
     const QStringList parts = text.split(QLatin1Char(','));

@@ -60,7 +60,4 @@ inline constexpr double kMaxLoad_N = 1e6;
 // exit code 0.
 [[nodiscard]] int printJson(const QJsonValue &result, QTextStream &out, QTextStream &err, const QString &command);
 
-// A finding as JSON: {"severity": "error" | "warning", "field": …, "message": …}.
-[[nodiscard]] QJsonObject diagnosticJson(const Diagnostic &d);
-
 } // namespace tolturn

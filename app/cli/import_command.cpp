@@ -5,6 +5,7 @@
 #include "app/cli/command_line.h"
 #include "core/cad/step_export.h"
 #include "core/cad/step_import.h"
+#include "core/io/cad_import_json.h"
 #include "core/io/project_file.h"
 #include "core/project/project_defaults.h"
 
@@ -50,34 +51,13 @@ Project projectFor(const PartProfile &part, const QString &material, const QStri
     return p;
 }
 
-QJsonArray vectorJson(const double (&v)[3])
-{
-    return {v[0], v[1], v[2]};
-}
-
 QJsonObject importJson(const QString &file, const QString &output, const CadImportResult &r, bool written)
 {
-    QJsonArray solids;
-    for (const CadSolidInfo &s : r.solids)
-        solids.append(
-            QJsonObject{{QStringLiteral("volume_mm3"), s.volume_mm3}, {QStringLiteral("faces"), s.faceCount}});
-    QJsonArray axes;
-    for (const CadAxisInfo &a : r.axes)
-        axes.append(QJsonObject{{QStringLiteral("origin_mm"), vectorJson(a.origin_mm)},
-                                {QStringLiteral("direction"), vectorJson(a.direction)},
-                                {QStringLiteral("revolved_area_mm2"), a.revolvedArea_mm2},
-                                {QStringLiteral("faces"), a.faceCount}});
-    QJsonArray diagnostics;
-    for (const Diagnostic &d : r.diagnostics)
-        diagnostics.append(diagnosticJson(d));
-    return {{QStringLiteral("file"), file},
-            {QStringLiteral("output"), output},
-            {QStringLiteral("written"), written},
-            {QStringLiteral("solids"), solids},
-            {QStringLiteral("chosen_solid"), r.chosenSolid},
-            {QStringLiteral("axes"), axes},
-            {QStringLiteral("chosen_axis"), r.chosenAxis},
-            {QStringLiteral("diagnostics"), diagnostics}};
+    QJsonObject json = cadImportJson(r);
+    json.insert(QStringLiteral("file"), file);
+    json.insert(QStringLiteral("output"), output);
+    json.insert(QStringLiteral("written"), written);
+    return json;
 }
 
 // Writes the project when the import gave a valid profile; the reason otherwise, empty on success.
@@ -116,7 +96,7 @@ QString writeStep(const PartProfile &part, const QString &output, QTextStream &o
 QString importSynopsis()
 {
     return QStringLiteral(
-        "import [--json] [--flip] [--solid N] [--axis N] [--material ID] [--machine ID] -o PROJECT FILE");
+        "import [--json] [--flip] [--solid N] [--axis N] [--material ID] [--machine ID] [--progress] -o PROJECT FILE");
 }
 
 QString importSummary()
@@ -150,7 +130,10 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("machine"),
         ImportCommand::tr("The machine's id (default: %1).").arg(QLatin1String(kDefaultMachineId)),
         QStringLiteral("ID"), QLatin1String(kDefaultMachineId));
-    parser.addOptions({json, output, flip, solid, axis, material, machine});
+    const QCommandLineOption progress(
+        QStringLiteral("progress"),
+        ImportCommand::tr("Report the progress on standard error, as lines \"progress F\" with F from 0 to 1."));
+    parser.addOptions({json, output, flip, solid, axis, material, machine, progress});
     parser.addPositionalArgument(QStringLiteral("file"), ImportCommand::tr("The STEP or IGES file."),
                                  QStringLiteral("FILE"));
     if (const int stop =
@@ -176,6 +159,15 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
             << '\n';
         return kExitUsage;
     }
+    if (parser.isSet(progress))
+        options.progress = [&err, last = -1](double fraction) mutable {
+            // Whole percents: a line for each change, flushed for the program that reads them.
+            if (const int percent = static_cast<int>(100.0 * fraction); percent != last) {
+                last = percent;
+                err << "progress " << QString::number(percent / 100.0, 'f', 2) << Qt::endl;
+            }
+            return true;
+        };
     const CadImportResult r = importCadFile(file, options);
     const QString problem = writeImported(r, parser.value(output), parser.value(material), parser.value(machine), out);
     if (parser.isSet(json)) {

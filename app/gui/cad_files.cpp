@@ -7,7 +7,6 @@
 
 #include <QDir>
 #include <QFileInfo>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <utility>
 
@@ -32,28 +31,24 @@ CadFileController::CadFileController(ProjectDocument &document, FileController &
     , m_files(files)
     , m_prompts(prompts)
 {
-    connect(&m_watcher, &QFutureWatcher<CadImportResult>::finished, this, &CadFileController::readFinished);
-    connect(this, &CadFileController::importProgress, this, [this](int percent) {
-        if (!m_progress || m_cancel)
+    connect(&m_reader, &CadReaderProcess::finished, this, &CadFileController::readFinished);
+    connect(&m_reader, &CadReaderProcess::progress, this, [this](double fraction) {
+        Q_EMIT importProgress(static_cast<int>(100.0 * fraction));
+        if (!m_progress)
             return;
         // A shown modal progress dialog runs the event loop in update(), where the reader's
         // finished() can arrive: readFinished() waits until every update has returned.
         ++m_progressUpdates; // they nest when the event loop runs inside
-        const bool goOn = m_progress->update(percent / 100.0);
+        const bool goOn = m_progress->update(fraction);
         --m_progressUpdates;
         if (m_progressUpdates == 0 && std::exchange(m_finishPending, false))
             QMetaObject::invokeMethod(this, &CadFileController::readFinished, Qt::QueuedConnection);
         if (!goOn)
-            m_cancel = true;
+            m_reader.cancel();
     });
 }
 
-CadFileController::~CadFileController()
-{
-    // The reader calls back into this object: stop it before it goes.
-    m_cancel = true;
-    m_watcher.waitForFinished();
-}
+CadFileController::~CadFileController() = default; // the reader ends its child process
 
 void CadFileController::importCad()
 {
@@ -75,20 +70,10 @@ void CadFileController::importFile(const QString &path)
 
 void CadFileController::startReading(const CadImportOptions &options)
 {
-    m_cancel = false;
     m_progress = m_prompts.startProgress(tr("Reading %1…").arg(QFileInfo(m_path).fileName()));
     if (m_progress)
-        m_progress->onCancel([this] { m_cancel = true; }); // the reader sees it at its next report
-    CadImportOptions run = options;
-    // Called on the reader's thread: hand the fraction to this (GUI) thread, and say whether
-    // the planner has cancelled.
-    run.progress = [this](double fraction) {
-        QMetaObject::invokeMethod(
-            this, [this, fraction] { Q_EMIT importProgress(static_cast<int>(100.0 * fraction)); },
-            Qt::QueuedConnection);
-        return !m_cancel.load();
-    };
-    m_watcher.setFuture(QtConcurrent::run([path = m_path, run] { return importCadFile(path, run); }));
+        m_progress->onCancel([this] { m_reader.cancel(); }); // the child process ends at once
+    m_reader.start(m_path, options);
 }
 
 void CadFileController::readFinished()
@@ -98,7 +83,7 @@ void CadFileController::readFinished()
         return;
     }
     m_progress.reset();
-    const CadImportResult result = m_watcher.result();
+    const CadImportResult result = m_reader.result();
     const QString name = QFileInfo(m_path).fileName();
     if (result.cancelled) {
         Q_EMIT statusMessage(tr("Import of %1 cancelled; the project is unchanged.").arg(name));

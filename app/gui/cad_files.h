@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "app/gui/cad_reader_process.h"
 #include "app/gui/file_controller.h"
 #include "core/cad/step_import.h"
 
-#include <QFutureWatcher>
 #include <QObject>
 
-#include <atomic>
 #include <memory>
 #include <optional>
 
@@ -37,8 +36,9 @@ public:
     [[nodiscard]] virtual std::unique_ptr<TaskProgress> startProgress(const QString &label) = 0;
 };
 
-// File > Import STEP/IGES and File > Export STEP. The file is read off the GUI thread (OpenCascade
-// can take seconds on a large model) with progress and cancel; the planner confirms the body, the
+// File > Import STEP/IGES and File > Export STEP. The file is read in a child process
+// (CadReaderProcess: OpenCascade can take seconds on a large model, and a damaged file must not
+// take the window with it) with progress and cancel; the planner confirms the body, the
 // axis and the chuck end; the part then opens as a new, unsaved project with a default set-up.
 // A failed or cancelled import leaves the document as it was.
 class CadFileController : public QObject {
@@ -52,9 +52,9 @@ public:
     // Imports `path`; importFinished() follows (at once when nothing can start).
     void importFile(const QString &path);
 
-    [[nodiscard]] bool isImporting() const { return m_watcher.isRunning(); }
+    [[nodiscard]] bool isImporting() const { return m_reader.isRunning(); }
 
-    void cancelImport() { m_cancel = true; }
+    void cancelImport() { m_reader.cancel(); }
 
     bool exportStep();
     bool exportStepTo(const QString &path);
@@ -73,9 +73,8 @@ private:
     ProjectDocument &m_document;
     FileController &m_files;
     CadPrompts &m_prompts;
-    QFutureWatcher<CadImportResult> m_watcher;
+    CadReaderProcess m_reader;
     std::unique_ptr<TaskProgress> m_progress;
-    std::atomic<bool> m_cancel = false;
     QString m_path;
     bool m_confirmed = false;     // the second read, with the planner's choice
     int m_progressUpdates = 0;    // m_progress->update() calls running (they may run the event loop)

@@ -13,6 +13,21 @@ QString Diagnostic::toString() const
     return prefix + QStringLiteral(": ") + field + QStringLiteral(": ") + message;
 }
 
+QJsonObject diagnosticJson(const Diagnostic &d)
+{
+    return {{QStringLiteral("severity"),
+             d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning")},
+            {QStringLiteral("field"), d.field},
+            {QStringLiteral("message"), d.message}};
+}
+
+Diagnostic diagnosticFromJson(const QJsonObject &o)
+{
+    const bool warning = o.value(QStringLiteral("severity")).toString() == QLatin1String("warning");
+    return {warning ? Severity::Warning : Severity::Error, o.value(QStringLiteral("field")).toString(),
+            o.value(QStringLiteral("message")).toString()};
+}
+
 bool hasErrors(const Diagnostics &diagnostics)
 {
     return std::any_of(diagnostics.begin(), diagnostics.end(),

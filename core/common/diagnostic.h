@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QJsonObject>
 #include <QString>
 
 #include <vector>
@@ -28,6 +29,11 @@ using Diagnostics = std::vector<Diagnostic>;
 [[nodiscard]] int countOf(const Diagnostics &diagnostics, Severity severity);
 [[nodiscard]] Diagnostic makeError(const QString &field, const QString &message);
 [[nodiscard]] Diagnostic makeWarning(const QString &field, const QString &message);
+
+// A finding as JSON: {"severity": "error" | "warning", "field": …, "message": …}, the form of
+// every command's --json output; and back (a missing or unknown severity reads as an error).
+[[nodiscard]] QJsonObject diagnosticJson(const Diagnostic &d);
+[[nodiscard]] Diagnostic diagnosticFromJson(const QJsonObject &o);
 
 // Number formatting for messages: shortest form that round-trips to the shown precision.
 [[nodiscard]] QString formatNumber(double value);

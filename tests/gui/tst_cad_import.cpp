@@ -6,6 +6,7 @@
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/cad_files.h"
+#include "app/gui/cad_reader_process.h"
 #include "app/gui/file_controller.h"
 #include "app/gui/import_dialog.h"
 #include "app/gui/main_window.h"
@@ -17,6 +18,7 @@
 
 #include <QAbstractItemModelTester>
 #include <QAction>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -83,7 +85,7 @@ public:
             {
                 ++depth;
                 if (std::exchange(first, false))
-                    QTest::qWait(300); // the reader (some ms) finishes meanwhile
+                    QTest::qWait(2000); // the reader (a fraction of a second) finishes meanwhile
                 --depth;
                 return true;
             }
@@ -132,6 +134,29 @@ PartProfile stepped()
     return readProjectFile(example("stepped-shaft-chuck.tolturn")).project->part;
 }
 
+// A stand-in for tolturn-cli: a shell script in `dir` with `body`.
+QString fakeReader(const QTemporaryDir &dir, const QByteArray &body)
+{
+    const QString path = dir.filePath(QStringLiteral("fake-reader.sh"));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return {};
+    file.write("#!/bin/sh\n" + body + "\n");
+    file.close();
+    file.setPermissions(file.permissions() | QFileDevice::ExeOwner);
+    return path;
+}
+
+// Sets the reader for a test and the real one back afterwards.
+struct ReaderProgram {
+    explicit ReaderProgram(const QString &program) { CadReaderProcess::setDefaultProgram(program); }
+
+    ~ReaderProgram() { CadReaderProcess::setDefaultProgram(QStringLiteral(TOLTURN_CLI_PATH)); }
+
+    ReaderProgram(const ReaderProgram &) = delete;
+    ReaderProgram &operator=(const ReaderProgram &) = delete;
+};
+
 bool near(ProfilePoint a, ProfilePoint b)
 {
     return std::abs(a.z_mm - b.z_mm) < 1e-3 && std::abs(a.r_mm - b.r_mm) < 1e-3;
@@ -143,7 +168,12 @@ class TestCadImport : public QObject {
     Q_OBJECT
 private Q_SLOTS:
 
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        // The test runs from the build tree's tests folder, not beside tolturn-cli.
+        CadReaderProcess::setDefaultProgram(QStringLiteral(TOLTURN_CLI_PATH));
+    }
 
     // The example shaft written as a solid comes back corner for corner (to 1 µm) as a new,
     // unsaved project with the default set-up around it.
@@ -219,8 +249,8 @@ private Q_SLOTS:
         QCOMPARE(f.prompts.confirmations, 0);
     }
 
-    // A model OpenCascade used to crash on (issue 14: one EDGE_LOOP line deleted), imported on the
-    // worker thread as the window does: an error naming the file, the project as it was, and the
+    // A model OpenCascade used to crash on (issue 14: one EDGE_LOOP line deleted), imported in the
+    // child process as the window does: an error naming the file, the project as it was, and the
     // program still here to import a good file afterwards.
     void malformedModelLeavesTheProgramRunning()
     {
@@ -244,6 +274,57 @@ private Q_SLOTS:
         QVERIFY2(f.prompts.error.contains(QStringLiteral("broken.step")), qPrintable(f.prompts.error));
         QCOMPARE(f.document.project(), before);
         QVERIFY(runImport(f, QStringLiteral(TOLTURN_SOURCE_DIR "/fuzz/corpus/cad/slender-pin.step")));
+    }
+
+    // Whatever a file makes OpenCascade do, it does it in the child: a reader that dies of a
+    // segmentation fault gives an error naming the file, the project stays as it was, and the next
+    // import works.
+    void crashingReaderLeavesTheProgramRunning()
+    {
+        QTemporaryDir dir;
+        Fixture f;
+        QVERIFY(f.files.openFile(example("hollow-sleeve-tailstock.tolturn")));
+        const Project before = f.document.project();
+        {
+            const ReaderProgram crashing(fakeReader(dir, "echo 'progress 0.10' >&2\nkill -SEGV $$"));
+            QVERIFY(!runImport(f, dir.filePath(QStringLiteral("damaged.step"))));
+        }
+        QVERIFY2(f.prompts.error.contains(QStringLiteral("damaged.step")) &&
+                     f.prompts.error.contains(QStringLiteral("abnormally")),
+                 qPrintable(f.prompts.error));
+        QCOMPARE(f.document.project(), before);
+        QVERIFY(runImport(f, QStringLiteral(TOLTURN_SOURCE_DIR "/fuzz/corpus/cad/slender-pin.step")));
+    }
+
+    // A reader that never finishes (OpenCascade's parser has no cancel of its own) ends at once on
+    // Cancel.
+    void cancelEndsAReaderThatHangs()
+    {
+        QTemporaryDir dir;
+        const ReaderProgram hanging(fakeReader(dir, "echo 'progress 0.05' >&2\nexec sleep 600"));
+        Fixture f;
+        QSignalSpy progress(&f.cad, &CadFileController::importProgress);
+        QSignalSpy finished(&f.cad, &CadFileController::importFinished);
+        f.cad.importFile(dir.filePath(QStringLiteral("huge.step")));
+        QVERIFY(progress.wait(10000));
+        QCOMPARE(progress.last().constFirst().toInt(), 5);
+        QElapsedTimer clock;
+        clock.start();
+        f.cad.cancelImport();
+        QVERIFY(finished.wait(10000));
+        QVERIFY2(clock.elapsed() < 5000, qPrintable(QString::number(clock.elapsed())));
+        QVERIFY(finished.last().at(1).toString().contains(QStringLiteral("cancelled")));
+        QVERIFY(!f.document.hasProject());
+    }
+
+    // No reader beside the program: an error that names it and says what to do.
+    void missingReaderIsNamed()
+    {
+        const ReaderProgram missing(QStringLiteral("/nonexistent/tolturn-cli"));
+        Fixture f;
+        QVERIFY(!runImport(f, QStringLiteral(TOLTURN_SOURCE_DIR "/fuzz/corpus/cad/slender-pin.step")));
+        QVERIFY2(f.prompts.error.contains(QStringLiteral("/nonexistent/tolturn-cli")), qPrintable(f.prompts.error));
+        QVERIFY(!f.document.hasProject());
     }
 
     // Cancelled (here in the confirmation): nothing changes.

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/cad/step_import.h"
+
+#include <QObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <memory>
+
+namespace tolturn {
+
+// Reads a STEP or IGES file in a child process: `tolturn-cli import --json --progress`, the part
+// written to a temporary project file and read back. OpenCascade's translators run on data they
+// trust; whatever a file makes them do (a fault the signal guard cannot turn into an error, a
+// loop, memory without end), it happens in the child, and the window, the document and the
+// unsaved work go on. Cancel ends the child at once, in any phase of the import.
+class CadReaderProcess : public QObject {
+    Q_OBJECT
+public:
+    explicit CadReaderProcess(QObject *parent = nullptr);
+    ~CadReaderProcess() override;
+
+    // The reader: tolturn-cli beside the running program (both are installed in one folder).
+    [[nodiscard]] static QString defaultProgram();
+    // For a program that is not installed beside tolturn-cli (the tests).
+    static void setDefaultProgram(const QString &program);
+
+    // Starts reading `path` with `options` (their progress callback is not used: see progress()).
+    void start(const QString &path, const CadImportOptions &options);
+    void cancel();
+    [[nodiscard]] bool isRunning() const;
+
+    // The result once finished() was emitted.
+    [[nodiscard]] const CadImportResult &result() const { return m_result; }
+
+Q_SIGNALS:
+    void progress(double fraction);
+    void finished();
+
+private:
+    void readProgress();
+    void processFinished(int exitCode, QProcess::ExitStatus status);
+    void failed(const QString &message);
+    // The part from the project file the child wrote, or why there is none.
+    void takeWrittenPart(bool written);
+    [[nodiscard]] QString stderrText() const;
+
+    std::unique_ptr<QProcess> m_process;
+    std::unique_ptr<QTemporaryDir> m_folder;
+    QString m_path;
+    QByteArray m_stderr;  // every line but the progress ones, for the message when the child fails
+    QByteArray m_pending; // an incomplete line of standard error
+    bool m_cancelled = false;
+    CadImportResult m_result;
+};
+
+} // namespace tolturn
