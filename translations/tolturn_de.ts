@@ -1132,6 +1132,49 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>MeasuredParts</name>
+    <message>
+        <source>the part&apos;s profile has no feature &quot;%1&quot;</source>
+        <translation>das Profil des Teils hat kein Element „%1“</translation>
+    </message>
+    <message>
+        <source>z = %1 mm is not on feature %2 (z from %3 to %4 mm)</source>
+        <translation>z = %1 mm liegt nicht auf Element %2 (z von %3 bis %4 mm)</translation>
+    </message>
+    <message>
+        <source>a diameter of %1 mm does not fit feature %2 (Ø%3 to Ø%4 mm)</source>
+        <translation>ein Durchmesser von %1 mm passt nicht zu Element %2 (Ø%3 bis Ø%4 mm)</translation>
+    </message>
+    <message>
+        <source>a radial deviation of %1 mm is beyond the ±%2 mm of a turned part</source>
+        <translation>eine radiale Abweichung von %1 mm liegt außerhalb der ±%2 mm eines Drehteils</translation>
+    </message>
+    <message>
+        <source>the machine the part was cut on is not given</source>
+        <translation>die Maschine, auf der das Teil gefertigt wurde, ist nicht angegeben</translation>
+    </message>
+    <message>
+        <source>the time of measurement is not given</source>
+        <translation>der Zeitpunkt der Messung ist nicht angegeben</translation>
+    </message>
+    <message>
+        <source>the time since start must be from 0 to %1 min, not %2</source>
+        <translation>die Zeit seit dem Start muss zwischen 0 und %1 min liegen, nicht %2</translation>
+    </message>
+    <message>
+        <source>the ambient temperature must be from %1 to %2 °C, not %3</source>
+        <translation>die Umgebungstemperatur muss zwischen %1 und %2 °C liegen, nicht %3</translation>
+    </message>
+    <message>
+        <source>the project the part was cut from is not a valid project%1</source>
+        <translation>das Projekt, aus dem das Teil gefertigt wurde, ist kein gültiges Projekt%1</translation>
+    </message>
+    <message>
+        <source>the part has no measured point</source>
+        <translation>das Teil hat keinen Messpunkt</translation>
+    </message>
+</context>
+<context>
     <name>MeasurementFiles</name>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
@@ -1156,6 +1199,84 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the file has no measurement</source>
         <translation>die Datei enthält keine Messung</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementSchema</name>
+    <message>
+        <source>the store refused &quot;%1&quot;: %2</source>
+        <translation>der Speicher lehnte „%1“ ab: %2</translation>
+    </message>
+    <message>
+        <source>the store refused the checksum of part %1: %2</source>
+        <translation>der Speicher lehnte die Prüfsumme von Teil %1 ab: %2</translation>
+    </message>
+    <message>
+        <source>the store has schema version %1, newer than this program&apos;s %2: update TolTurn</source>
+        <translation>der Speicher hat Schemaversion %1, neuer als die %2 dieses Programms: aktualisieren Sie TolTurn</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementStore</name>
+    <message>
+        <source>cannot open the measurement store %1: %2</source>
+        <translation>der Messwertspeicher %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s SQLite driver is not installed (Debian: libqt6sql6-sqlite)</source>
+        <translation>der SQLite-Treiber von Qt ist nicht installiert (Debian: libqt6sql6-sqlite)</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s PostgreSQL driver is not installed (Debian: libqt6sql6-psql)</source>
+        <translation>der PostgreSQL-Treiber von Qt ist nicht installiert (Debian: libqt6sql6-psql)</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1</source>
+        <translation>der Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>cannot start a transaction</source>
+        <translation>keine Transaktion möglich</translation>
+    </message>
+    <message>
+        <source>cannot store the part</source>
+        <translation>das Teil kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>cannot store point %1</source>
+        <translation>Punkt %1 kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>cannot commit the part</source>
+        <translation>das Teil kann nicht festgeschrieben werden</translation>
+    </message>
+    <message>
+        <source>cannot read part %1</source>
+        <translation>Teil %1 kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>the store has no part %1</source>
+        <translation>der Speicher hat kein Teil %1</translation>
+    </message>
+    <message>
+        <source>cannot read the points of part %1</source>
+        <translation>die Punkte von Teil %1 können nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>part %1 has a point of unknown quantity &quot;%2&quot;</source>
+        <translation>Teil %1 hat einen Punkt mit unbekannter Größe „%2“</translation>
+    </message>
+    <message>
+        <source>cannot list the parts</source>
+        <translation>die Teile können nicht aufgelistet werden</translation>
+    </message>
+    <message>
+        <source>cannot count the parts</source>
+        <translation>die Teile können nicht gezählt werden</translation>
+    </message>
+    <message>
+        <source>cannot remove part %1</source>
+        <translation>Teil %1 kann nicht entfernt werden</translation>
     </message>
 </context>
 <context>

@@ -1132,6 +1132,49 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>MeasuredParts</name>
+    <message>
+        <source>the part&apos;s profile has no feature &quot;%1&quot;</source>
+        <translation>el perfil de la pieza no tiene el elemento «%1»</translation>
+    </message>
+    <message>
+        <source>z = %1 mm is not on feature %2 (z from %3 to %4 mm)</source>
+        <translation>z = %1 mm no está en el elemento %2 (z de %3 a %4 mm)</translation>
+    </message>
+    <message>
+        <source>a diameter of %1 mm does not fit feature %2 (Ø%3 to Ø%4 mm)</source>
+        <translation>un diámetro de %1 mm no corresponde al elemento %2 (Ø%3 a Ø%4 mm)</translation>
+    </message>
+    <message>
+        <source>a radial deviation of %1 mm is beyond the ±%2 mm of a turned part</source>
+        <translation>una desviación radial de %1 mm supera los ±%2 mm de una pieza torneada</translation>
+    </message>
+    <message>
+        <source>the machine the part was cut on is not given</source>
+        <translation>no se indica la máquina en que se mecanizó la pieza</translation>
+    </message>
+    <message>
+        <source>the time of measurement is not given</source>
+        <translation>no se indica el momento de la medición</translation>
+    </message>
+    <message>
+        <source>the time since start must be from 0 to %1 min, not %2</source>
+        <translation>el tiempo desde el arranque debe ir de 0 a %1 min, no %2</translation>
+    </message>
+    <message>
+        <source>the ambient temperature must be from %1 to %2 °C, not %3</source>
+        <translation>la temperatura ambiente debe ir de %1 a %2 °C, no %3</translation>
+    </message>
+    <message>
+        <source>the project the part was cut from is not a valid project%1</source>
+        <translation>el proyecto del que se mecanizó la pieza no es un proyecto válido%1</translation>
+    </message>
+    <message>
+        <source>the part has no measured point</source>
+        <translation>la pieza no tiene ningún punto medido</translation>
+    </message>
+</context>
+<context>
     <name>MeasurementFiles</name>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
@@ -1156,6 +1199,84 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the file has no measurement</source>
         <translation>el archivo no contiene ninguna medición</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementSchema</name>
+    <message>
+        <source>the store refused &quot;%1&quot;: %2</source>
+        <translation>el almacén rechazó «%1»: %2</translation>
+    </message>
+    <message>
+        <source>the store refused the checksum of part %1: %2</source>
+        <translation>el almacén rechazó la suma de control de la pieza %1: %2</translation>
+    </message>
+    <message>
+        <source>the store has schema version %1, newer than this program&apos;s %2: update TolTurn</source>
+        <translation>el almacén tiene la versión de esquema %1, más nueva que la %2 de este programa: actualice TolTurn</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementStore</name>
+    <message>
+        <source>cannot open the measurement store %1: %2</source>
+        <translation>no se puede abrir el almacén de mediciones %1: %2</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s SQLite driver is not installed (Debian: libqt6sql6-sqlite)</source>
+        <translation>el controlador SQLite de Qt no está instalado (Debian: libqt6sql6-sqlite)</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s PostgreSQL driver is not installed (Debian: libqt6sql6-psql)</source>
+        <translation>el controlador PostgreSQL de Qt no está instalado (Debian: libqt6sql6-psql)</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1</source>
+        <translation>no se puede crear la carpeta %1</translation>
+    </message>
+    <message>
+        <source>cannot start a transaction</source>
+        <translation>no se puede iniciar una transacción</translation>
+    </message>
+    <message>
+        <source>cannot store the part</source>
+        <translation>no se puede guardar la pieza</translation>
+    </message>
+    <message>
+        <source>cannot store point %1</source>
+        <translation>no se puede guardar el punto %1</translation>
+    </message>
+    <message>
+        <source>cannot commit the part</source>
+        <translation>no se puede confirmar la pieza</translation>
+    </message>
+    <message>
+        <source>cannot read part %1</source>
+        <translation>no se puede leer la pieza %1</translation>
+    </message>
+    <message>
+        <source>the store has no part %1</source>
+        <translation>el almacén no tiene la pieza %1</translation>
+    </message>
+    <message>
+        <source>cannot read the points of part %1</source>
+        <translation>no se pueden leer los puntos de la pieza %1</translation>
+    </message>
+    <message>
+        <source>part %1 has a point of unknown quantity &quot;%2&quot;</source>
+        <translation>la pieza %1 tiene un punto de magnitud desconocida «%2»</translation>
+    </message>
+    <message>
+        <source>cannot list the parts</source>
+        <translation>no se pueden listar las piezas</translation>
+    </message>
+    <message>
+        <source>cannot count the parts</source>
+        <translation>no se pueden contar las piezas</translation>
+    </message>
+    <message>
+        <source>cannot remove part %1</source>
+        <translation>no se puede eliminar la pieza %1</translation>
     </message>
 </context>
 <context>

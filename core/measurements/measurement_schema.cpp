@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/measurements/measurement_schema.h"
+
+#include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QStringList>
+#include <QVariant>
+
+#include <utility>
+#include <vector>
+
+namespace tolturn::measurements {
+
+namespace {
+
+struct MeasurementSchema {
+    Q_DECLARE_TR_FUNCTIONS(MeasurementSchema)
+};
+
+bool isPostgres(const QSqlDatabase &db)
+{
+    return db.driverName() == QLatin1String("QPSQL");
+}
+
+bool run(QSqlQuery &q, const QString &sql, QString *error)
+{
+    if (q.exec(sql))
+        return true;
+    if (error)
+        *error = MeasurementSchema::tr("the store refused \"%1\": %2").arg(sql.simplified(), q.lastError().text());
+    return false;
+}
+
+// Version 1: the parts and their points. The only difference between the two databases is the
+// generated key: SQLite's INTEGER PRIMARY KEY is its row id, PostgreSQL's BIGSERIAL a sequence.
+QStringList version1(const QSqlDatabase &db)
+{
+    const QString key =
+        isPostgres(db) ? QStringLiteral("BIGSERIAL PRIMARY KEY") : QStringLiteral("INTEGER PRIMARY KEY");
+    return {QStringLiteral("CREATE TABLE tolturn_schema (version INTEGER NOT NULL)"),
+            QStringLiteral("INSERT INTO tolturn_schema (version) VALUES (0)"),
+            QStringLiteral("CREATE TABLE measured_parts (id %1, machine_id TEXT NOT NULL, part_name TEXT NOT NULL, "
+                           "measured_at TEXT NOT NULL, measured_by TEXT NOT NULL, method TEXT NOT NULL, "
+                           "time_since_start_min DOUBLE PRECISION, ambient_c DOUBLE PRECISION, "
+                           "project_json TEXT NOT NULL, note TEXT NOT NULL)")
+                .arg(key),
+            QStringLiteral("CREATE TABLE measured_points (part_id BIGINT NOT NULL REFERENCES measured_parts (id) ON "
+                           "DELETE CASCADE, seq INTEGER NOT NULL, feature_id TEXT NOT NULL, z_mm DOUBLE PRECISION "
+                           "NOT NULL, quantity TEXT NOT NULL, value_mm DOUBLE PRECISION NOT NULL, PRIMARY KEY "
+                           "(part_id, seq))")};
+}
+
+QStringList version2()
+{
+    return {QStringLiteral("ALTER TABLE measured_parts ADD COLUMN profile_sha256 TEXT"),
+            QStringLiteral("CREATE INDEX measured_parts_by_machine ON measured_parts (machine_id, measured_at)")};
+}
+
+// The checksums of the parts stored before version 2.
+bool fillProfileChecksums(QSqlDatabase &db, QString *error)
+{
+    QSqlQuery select(db);
+    select.setForwardOnly(true);
+    if (!run(select, QStringLiteral("SELECT id, project_json FROM measured_parts WHERE profile_sha256 IS NULL"), error))
+        return false;
+    std::vector<std::pair<qint64, QString>> sums;
+    while (select.next())
+        sums.emplace_back(select.value(0).toLongLong(), profileChecksum(select.value(1).toString().toUtf8()));
+    select.finish();
+    QSqlQuery update(db);
+    if (!update.prepare(QStringLiteral("UPDATE measured_parts SET profile_sha256 = ? WHERE id = ?")))
+        return run(update, update.lastQuery(), error);
+    for (const auto &[id, sum] : sums) {
+        update.bindValue(0, sum);
+        update.bindValue(1, id);
+        if (!update.exec()) {
+            if (error)
+                *error = MeasurementSchema::tr("the store refused the checksum of part %1: %2")
+                             .arg(id)
+                             .arg(update.lastError().text());
+            return false;
+        }
+    }
+    return true;
+}
+
+bool step(QSqlDatabase &db, int to, QString *error)
+{
+    QSqlQuery q(db);
+    const QStringList statements = to == 1 ? version1(db) : version2();
+    for (const QString &sql : statements) {
+        if (!run(q, sql, error))
+            return false;
+    }
+    if (to == 2 && !fillProfileChecksums(db, error))
+        return false;
+    return run(q, QStringLiteral("UPDATE tolturn_schema SET version = %1").arg(to), error);
+}
+
+} // namespace
+
+int schemaVersionOf(const QSqlDatabase &db, QString *error)
+{
+    if (!db.tables().contains(QStringLiteral("tolturn_schema")))
+        return 0;
+    QSqlQuery q(db);
+    if (!run(q, QStringLiteral("SELECT version FROM tolturn_schema"), error) || !q.next())
+        return -1;
+    return q.value(0).toInt();
+}
+
+bool migrateSchema(QSqlDatabase &db, int target, QString *error)
+{
+    int version = schemaVersionOf(db, error);
+    if (version < 0)
+        return false;
+    if (version > target) {
+        if (error)
+            *error = MeasurementSchema::tr("the store has schema version %1, newer than this program's %2: update "
+                                           "TolTurn")
+                         .arg(version)
+                         .arg(target);
+        return false;
+    }
+    while (version < target) {
+        if (!db.transaction()) {
+            if (error)
+                *error = db.lastError().text();
+            return false;
+        }
+        if (!step(db, version + 1, error) || !db.commit()) {
+            if (error && error->isEmpty())
+                *error = db.lastError().text();
+            db.rollback();
+            return false;
+        }
+        ++version;
+    }
+    return true;
+}
+
+QString profileChecksum(const QByteArray &projectJson)
+{
+    const QJsonDocument doc = QJsonDocument::fromJson(projectJson);
+    const QJsonValue part = doc.object().value(QStringLiteral("part"));
+    if (!part.isObject())
+        return {};
+    return QString::fromLatin1(QCryptographicHash::hash(QJsonDocument(part.toObject()).toJson(QJsonDocument::Compact),
+                                                        QCryptographicHash::Sha256)
+                                   .toHex());
+}
+
+} // namespace tolturn::measurements

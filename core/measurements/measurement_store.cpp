@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/measurements/measurement_store.h"
+
+#include "core/io/project_json.h"
+#include "core/measurements/measurement_schema.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QStandardPaths>
+#include <QVariant>
+
+#include <atomic>
+#include <cmath>
+#include <utility>
+
+namespace tolturn {
+
+namespace {
+
+struct MeasurementStoreText {
+    Q_DECLARE_TR_FUNCTIONS(MeasurementStore)
+};
+
+// How long a writer waits for another process's transaction on an SQLite store.
+constexpr int kSqliteBusyTimeout_ms = 10000;
+
+QString nextConnectionName()
+{
+    static std::atomic<int> counter{0};
+    return QStringLiteral("tolturn-measurements-%1").arg(counter++);
+}
+
+QVariant optionalValue(const std::optional<double> &v)
+{
+    return v ? QVariant(*v) : QVariant(QMetaType(QMetaType::Double));
+}
+
+std::optional<double> optionalFrom(const QVariant &v)
+{
+    return v.isNull() ? std::nullopt : std::optional<double>(v.toDouble());
+}
+
+QString timeText(const QDateTime &t)
+{
+    return t.toUTC().toString(Qt::ISODateWithMs);
+}
+
+QString failure(const QString &what, const QSqlError &e)
+{
+    return QStringLiteral("%1: %2").arg(what, e.text());
+}
+
+// The WHERE clause of a filter and its values, in order.
+QString whereOf(const PartFilter &f, QVariantList &values)
+{
+    QStringList conditions;
+    if (!f.machineId.isEmpty()) {
+        conditions << QStringLiteral("machine_id = ?");
+        values << f.machineId;
+    }
+    if (!f.text.isEmpty()) {
+        conditions << QStringLiteral("(LOWER(part_name) LIKE ? OR LOWER(measured_by) LIKE ? OR LOWER(method) LIKE ?)");
+        const QString pattern = QLatin1Char('%') + f.text.toLower() + QLatin1Char('%');
+        values << pattern << pattern << pattern;
+    }
+    return conditions.isEmpty() ? QString() : QStringLiteral(" WHERE ") + conditions.join(QStringLiteral(" AND "));
+}
+
+bool prepareAndRun(QSqlQuery &q, const QString &sql, const QVariantList &values)
+{
+    if (!q.prepare(sql))
+        return false;
+    for (qsizetype i = 0; i < values.size(); ++i)
+        q.bindValue(static_cast<int>(i), values.at(i));
+    return q.exec();
+}
+
+} // namespace
+
+QString StoreLocation::describe() const
+{
+    if (kind == Kind::SQLite)
+        return QDir::toNativeSeparators(file);
+    return QStringLiteral("postgresql://%1@%2:%3/%4").arg(user, host).arg(port).arg(database);
+}
+
+StoreLocation defaultStoreLocation()
+{
+    StoreLocation l;
+    // One file for the desktop program and the command line (their application names differ, so
+    // AppDataLocation would give each its own).
+    l.file = QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))
+                 .filePath(QStringLiteral("TolTurn/measurements.sqlite"));
+    return l;
+}
+
+MeasurementStore::MeasurementStore(StoreLocation location, QString connection)
+    : m_location(std::move(location))
+    , m_connection(std::move(connection))
+{
+}
+
+MeasurementStore::~MeasurementStore()
+{
+    {
+        QSqlDatabase database = db();
+        database.close();
+    }
+    QSqlDatabase::removeDatabase(m_connection);
+}
+
+QSqlDatabase MeasurementStore::db() const
+{
+    return QSqlDatabase::database(m_connection, false);
+}
+
+std::unique_ptr<MeasurementStore> MeasurementStore::open(const StoreLocation &location, QString *error)
+{
+    const bool sqlite = location.kind == StoreLocation::Kind::SQLite;
+    const QString driver = sqlite ? QStringLiteral("QSQLITE") : QStringLiteral("QPSQL");
+    const auto refuse = [&](const QString &why) -> std::unique_ptr<MeasurementStore> {
+        if (error)
+            *error = MeasurementStoreText::tr("cannot open the measurement store %1: %2").arg(location.describe(), why);
+        return nullptr;
+    };
+    if (!QSqlDatabase::isDriverAvailable(driver))
+        return refuse(
+            sqlite ? MeasurementStoreText::tr("Qt's SQLite driver is not installed (Debian: libqt6sql6-sqlite)")
+                   : MeasurementStoreText::tr("Qt's PostgreSQL driver is not installed (Debian: libqt6sql6-psql)"));
+    if (sqlite && !QDir().mkpath(QFileInfo(location.file).absolutePath()))
+        return refuse(
+            MeasurementStoreText::tr("cannot create the folder %1").arg(QFileInfo(location.file).absolutePath()));
+    const QString name = nextConnectionName();
+    std::unique_ptr<MeasurementStore> store(new MeasurementStore(location, name));
+    QSqlDatabase db = QSqlDatabase::addDatabase(driver, name);
+    if (sqlite) {
+        db.setDatabaseName(location.file);
+        db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=%1").arg(kSqliteBusyTimeout_ms));
+    } else {
+        db.setHostName(location.host);
+        db.setPort(location.port);
+        db.setDatabaseName(location.database);
+        db.setUserName(location.user);
+        db.setPassword(location.password);
+    }
+    if (!db.open())
+        return refuse(db.lastError().text());
+    QSqlQuery q(db);
+    // SQLite: references enforced (its default is off), and a write-ahead log so that readers do
+    // not block the writer.
+    if (sqlite &&
+        (!q.exec(QStringLiteral("PRAGMA foreign_keys = ON")) || !q.exec(QStringLiteral("PRAGMA journal_mode = WAL"))))
+        return refuse(q.lastError().text());
+    q.finish(); // the pragma's result row would hold the migration's commit back
+    QString why;
+    if (!measurements::migrateSchema(db, kMeasurementSchemaVersion, &why))
+        return refuse(why);
+    return store;
+}
+
+int MeasurementStore::schemaVersion() const
+{
+    return measurements::schemaVersionOf(db(), nullptr);
+}
+
+std::optional<qint64> MeasurementStore::add(const MeasuredPart &part, Diagnostics &problems)
+{
+    problems = validateMeasuredPart(part);
+    if (hasErrors(problems))
+        return std::nullopt;
+    const ProjectParseResult snapshot = parseProjectJson(part.projectJson);
+    QSqlDatabase database = db();
+    QSqlQuery q(database);
+    const auto fail = [&](const QString &what, const QSqlError &e) -> std::optional<qint64> {
+        database.rollback();
+        problems.push_back(makeError(QStringLiteral("store"), failure(what, e)));
+        return std::nullopt;
+    };
+    // SQLite: take the write lock now (BEGIN IMMEDIATE), so that two writers queue on the busy
+    // timeout instead of one failing when it tries to write inside a read transaction.
+    const bool begun = m_location.kind == StoreLocation::Kind::SQLite ? q.exec(QStringLiteral("BEGIN IMMEDIATE"))
+                                                                      : database.transaction();
+    if (!begun)
+        return fail(MeasurementStoreText::tr("cannot start a transaction"),
+                    q.lastError().isValid() ? q.lastError() : database.lastError());
+    if (!prepareAndRun(q,
+                       QStringLiteral("INSERT INTO measured_parts (machine_id, part_name, measured_at, measured_by, "
+                                      "method, time_since_start_min, ambient_c, project_json, note, profile_sha256) "
+                                      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+                       {part.machineId, snapshot.project->part.name, timeText(part.measuredAt), part.measuredBy,
+                        part.method, optionalValue(part.timeSinceStart_min), optionalValue(part.ambient_C),
+                        QString::fromUtf8(part.projectJson), part.note,
+                        measurements::profileChecksum(part.projectJson)}))
+        return fail(MeasurementStoreText::tr("cannot store the part"), q.lastError());
+    const qint64 id = q.lastInsertId().toLongLong();
+    for (std::size_t i = 0; i < part.points.size(); ++i) {
+        const MeasuredPoint &p = part.points[i];
+        if (!prepareAndRun(q,
+                           QStringLiteral("INSERT INTO measured_points (part_id, seq, feature_id, z_mm, quantity, "
+                                          "value_mm) VALUES (?, ?, ?, ?, ?, ?)"),
+                           {id, static_cast<int>(i), p.featureId, p.z_mm, keyword(p.quantity), p.value_mm}))
+            return fail(MeasurementStoreText::tr("cannot store point %1").arg(i), q.lastError());
+    }
+    if (m_location.kind == StoreLocation::Kind::SQLite ? !q.exec(QStringLiteral("COMMIT")) : !database.commit())
+        return fail(MeasurementStoreText::tr("cannot commit the part"),
+                    q.lastError().isValid() ? q.lastError() : database.lastError());
+    return id;
+}
+
+std::optional<MeasuredPart> MeasurementStore::part(qint64 id, QString *error) const
+{
+    QSqlQuery q(db());
+    const auto fail = [error](const QString &why) -> std::optional<MeasuredPart> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    if (!prepareAndRun(q,
+                       QStringLiteral("SELECT machine_id, measured_at, measured_by, method, time_since_start_min, "
+                                      "ambient_c, project_json, note FROM measured_parts WHERE id = ?"),
+                       {id}))
+        return fail(failure(MeasurementStoreText::tr("cannot read part %1").arg(id), q.lastError()));
+    if (!q.next())
+        return fail(MeasurementStoreText::tr("the store has no part %1").arg(id));
+    MeasuredPart p;
+    p.id = id;
+    p.machineId = q.value(0).toString();
+    p.measuredAt = QDateTime::fromString(q.value(1).toString(), Qt::ISODateWithMs);
+    p.measuredBy = q.value(2).toString();
+    p.method = q.value(3).toString();
+    p.timeSinceStart_min = optionalFrom(q.value(4));
+    p.ambient_C = optionalFrom(q.value(5));
+    p.projectJson = q.value(6).toString().toUtf8();
+    p.note = q.value(7).toString();
+    if (!prepareAndRun(q,
+                       QStringLiteral("SELECT feature_id, z_mm, quantity, value_mm FROM measured_points WHERE "
+                                      "part_id = ? ORDER BY seq"),
+                       {id}))
+        return fail(failure(MeasurementStoreText::tr("cannot read the points of part %1").arg(id), q.lastError()));
+    while (q.next()) {
+        const auto quantity = measuredQuantityFromKeyword(q.value(2).toString());
+        if (!quantity)
+            return fail(MeasurementStoreText::tr("part %1 has a point of unknown quantity \"%2\"")
+                            .arg(id)
+                            .arg(q.value(2).toString()));
+        p.points.push_back({q.value(0).toString(), q.value(1).toDouble(), *quantity, q.value(3).toDouble()});
+    }
+    return p;
+}
+
+std::optional<std::vector<MeasuredPartSummary>> MeasurementStore::list(const PartFilter &filter, QString *error) const
+{
+    QVariantList values;
+    QString sql = QStringLiteral("SELECT p.id, p.machine_id, p.part_name, p.measured_at, p.measured_by, p.method, "
+                                 "(SELECT COUNT(*) FROM measured_points m WHERE m.part_id = p.id) FROM "
+                                 "measured_parts p") +
+                  whereOf(filter, values) + QStringLiteral(" ORDER BY p.measured_at DESC, p.id DESC");
+    if (filter.limit >= 0)
+        sql += QStringLiteral(" LIMIT %1 OFFSET %2").arg(filter.limit).arg(std::max(0, filter.offset));
+    QSqlQuery q(db());
+    q.setForwardOnly(true);
+    if (!prepareAndRun(q, sql, values)) {
+        if (error)
+            *error = failure(MeasurementStoreText::tr("cannot list the parts"), q.lastError());
+        return std::nullopt;
+    }
+    std::vector<MeasuredPartSummary> out;
+    while (q.next())
+        out.push_back({q.value(0).toLongLong(), q.value(1).toString(), q.value(2).toString(),
+                       QDateTime::fromString(q.value(3).toString(), Qt::ISODateWithMs), q.value(4).toString(),
+                       q.value(5).toString(), q.value(6).toInt()});
+    return out;
+}
+
+std::optional<qint64> MeasurementStore::count(const PartFilter &filter, QString *error) const
+{
+    QVariantList values;
+    QSqlQuery q(db());
+    if (!prepareAndRun(q, QStringLiteral("SELECT COUNT(*) FROM measured_parts") + whereOf(filter, values), values) ||
+        !q.next()) {
+        if (error)
+            *error = failure(MeasurementStoreText::tr("cannot count the parts"), q.lastError());
+        return std::nullopt;
+    }
+    return q.value(0).toLongLong();
+}
+
+bool MeasurementStore::remove(qint64 id, QString *error)
+{
+    QSqlQuery q(db());
+    if (!prepareAndRun(q, QStringLiteral("DELETE FROM measured_parts WHERE id = ?"), {id})) {
+        if (error)
+            *error = failure(MeasurementStoreText::tr("cannot remove part %1").arg(id), q.lastError());
+        return false;
+    }
+    if (q.numRowsAffected() < 1) {
+        if (error)
+            *error = MeasurementStoreText::tr("the store has no part %1").arg(id);
+        return false;
+    }
+    return true;
+}
+
+} // namespace tolturn
