@@ -1175,6 +1175,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>MeasurementCsv</name>
+    <message>
+        <source>a line needs either diameter_mm or radial_deviation_um, and one only</source>
+        <translation>eine Zeile braucht entweder diameter_mm oder radial_deviation_um, und nur eines</translation>
+    </message>
+</context>
+<context>
     <name>MeasurementFiles</name>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
@@ -1199,6 +1206,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the file has no measurement</source>
         <translation>die Datei enthält keine Messung</translation>
+    </message>
+    <message>
+        <source>%1 must not be empty</source>
+        <translation>%1 darf nicht leer sein</translation>
     </message>
 </context>
 <context>
@@ -1277,6 +1288,159 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>cannot remove part %1</source>
         <translation>Teil %1 kann nicht entfernt werden</translation>
+    </message>
+    <message>
+        <source>the store is not named</source>
+        <translation>der Speicher ist nicht angegeben</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a PostgreSQL address of the form postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</source>
+        <translation>„%1“ ist keine PostgreSQL-Adresse der Form postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementsCommand</name>
+    <message>
+        <source>The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
+        <translation>Der Speicher: eine SQLite-Datei oder postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (Vorgabe: %1).</translation>
+    </message>
+    <message>
+        <source>--%1 takes a number, not &quot;%2&quot;</source>
+        <translation>--%1 erwartet eine Zahl, nicht „%2“</translation>
+    </message>
+    <message>
+        <source>a part is named by its number from 1, not &quot;%1&quot;</source>
+        <translation>ein Teil wird mit seiner Nummer ab 1 angegeben, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>The measured points (feature, z_mm, diameter_mm or radial_deviation_um).</source>
+        <translation>Die Messpunkte (feature, z_mm, diameter_mm oder radial_deviation_um).</translation>
+    </message>
+    <message>
+        <source>The machine the part was cut on (default: the project&apos;s).</source>
+        <translation>Die Maschine, auf der das Teil gefertigt wurde (Vorgabe: die des Projekts).</translation>
+    </message>
+    <message>
+        <source>When it was measured, ISO 8601 (default: now).</source>
+        <translation>Wann gemessen wurde, ISO 8601 (Vorgabe: jetzt).</translation>
+    </message>
+    <message>
+        <source>Who measured it.</source>
+        <translation>Wer gemessen hat.</translation>
+    </message>
+    <message>
+        <source>How: micrometer, CMM, bore gauge, …</source>
+        <translation>Wie: Bügelmessschraube, KMG, Innenmessgerät, …</translation>
+    </message>
+    <message>
+        <source>Minutes the machine had run when it was cut.</source>
+        <translation>Minuten, die die Maschine beim Fertigen lief.</translation>
+    </message>
+    <message>
+        <source>Ambient temperature when it was cut, °C.</source>
+        <translation>Umgebungstemperatur beim Fertigen, °C.</translation>
+    </message>
+    <message>
+        <source>A note.</source>
+        <translation>Eine Notiz.</translation>
+    </message>
+    <message>
+        <source>The project the part was cut from.</source>
+        <translation>Das Projekt, aus dem das Teil gefertigt wurde.</translation>
+    </message>
+    <message>
+        <source>Store a measured part.</source>
+        <translation>Ein gemessenes Teil speichern.</translation>
+    </message>
+    <message>
+        <source>give one project file and --csv FILE.csv</source>
+        <translation>geben Sie eine Projektdatei und --csv FILE.csv an</translation>
+    </message>
+    <message>
+        <source>--at takes a time as 2026-11-24T08:30:00Z, not &quot;%1&quot;</source>
+        <translation>--at erwartet eine Zeit wie 2026-11-24T08:30:00Z, nicht „%1“</translation>
+    </message>
+    <message numerus="yes">
+        <source>stored part %1: %2, %n point(s), in %3</source>
+        <translation>
+            <numerusform>Teil %1 gespeichert: %2, %n Punkt, in %3</numerusform>
+            <numerusform>Teil %1 gespeichert: %2, %n Punkte, in %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Only the parts of this machine.</source>
+        <translation>Nur die Teile dieser Maschine.</translation>
+    </message>
+    <message>
+        <source>Only parts with this in their name, measurer or method.</source>
+        <translation>Nur Teile mit diesem Text im Namen, Prüfer oder Verfahren.</translation>
+    </message>
+    <message>
+        <source>At most N parts, newest first.</source>
+        <translation>Höchstens N Teile, neueste zuerst.</translation>
+    </message>
+    <message>
+        <source>Print the list as JSON.</source>
+        <translation>Die Liste als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>List the stored parts, newest first.</source>
+        <translation>Die gespeicherten Teile auflisten, neueste zuerst.</translation>
+    </message>
+    <message>
+        <source>--limit takes a number from 1, not &quot;%1&quot;</source>
+        <translation>--limit erwartet eine Zahl ab 1, nicht „%1“</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n Punkt</numerusform>
+            <numerusform>%n Punkte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The part&apos;s number.</source>
+        <translation>Die Nummer des Teils.</translation>
+    </message>
+    <message>
+        <source>Remove a stored part with its points.</source>
+        <translation>Ein gespeichertes Teil mit seinen Punkten entfernen.</translation>
+    </message>
+    <message>
+        <source>give the number of one part</source>
+        <translation>geben Sie die Nummer eines Teils an</translation>
+    </message>
+    <message>
+        <source>removed part %1</source>
+        <translation>Teil %1 entfernt</translation>
+    </message>
+    <message>
+        <source>Every part of this machine.</source>
+        <translation>Alle Teile dieser Maschine.</translation>
+    </message>
+    <message>
+        <source>The CSV file to write (&apos;-&apos;, the default: standard output).</source>
+        <translation>Die zu schreibende CSV-Datei („-“, die Vorgabe: Standardausgabe).</translation>
+    </message>
+    <message>
+        <source>Parts by number.</source>
+        <translation>Teile nach Nummer.</translation>
+    </message>
+    <message>
+        <source>Write stored parts&apos; points as CSV.</source>
+        <translation>Die Punkte gespeicherter Teile als CSV schreiben.</translation>
+    </message>
+    <message>
+        <source>give part numbers or --machine ID</source>
+        <translation>geben Sie Teilenummern oder --machine ID an</translation>
+    </message>
+    <message>
+        <source>The measurement history of the machines (an SQLite file or a shared PostgreSQL database): store a measured part with the project it was cut from, list, remove, export as CSV.</source>
+        <translation>Die Messhistorie der Maschinen (eine SQLite-Datei oder eine gemeinsame PostgreSQL-Datenbank): ein gemessenes Teil mit seinem Projekt speichern, auflisten, entfernen, als CSV exportieren.</translation>
+    </message>
+    <message>
+        <source>say add, list, remove or export, not &quot;%1&quot;</source>
+        <translation>sagen Sie add, list, remove oder export, nicht „%1“</translation>
     </message>
 </context>
 <context>

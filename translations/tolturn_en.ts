@@ -29,6 +29,23 @@
     </message>
 </context>
 <context>
+    <name>MeasurementsCommand</name>
+    <message numerus="yes">
+        <source>stored part %1: %2, %n point(s), in %3</source>
+        <translation>
+            <numerusform>stored part %1: %2, %n point, in %3</numerusform>
+            <numerusform>stored part %1: %2, %n points, in %3</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n point</numerusform>
+            <numerusform>%n points</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tolturn::FileController</name>
     <message numerus="yes">
         <source>Opened %1 with %n problem(s) to repair before it can be computed</source>

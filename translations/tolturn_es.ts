@@ -1175,6 +1175,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>MeasurementCsv</name>
+    <message>
+        <source>a line needs either diameter_mm or radial_deviation_um, and one only</source>
+        <translation>una línea necesita diameter_mm o radial_deviation_um, y solo uno</translation>
+    </message>
+</context>
+<context>
     <name>MeasurementFiles</name>
     <message>
         <source>cannot open &apos;%1&apos;: %2</source>
@@ -1199,6 +1206,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the file has no measurement</source>
         <translation>el archivo no contiene ninguna medición</translation>
+    </message>
+    <message>
+        <source>%1 must not be empty</source>
+        <translation>%1 no debe estar vacío</translation>
     </message>
 </context>
 <context>
@@ -1277,6 +1288,159 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>cannot remove part %1</source>
         <translation>no se puede eliminar la pieza %1</translation>
+    </message>
+    <message>
+        <source>the store is not named</source>
+        <translation>no se indica el almacén</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a PostgreSQL address of the form postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</source>
+        <translation>«%1» no es una dirección PostgreSQL de la forma postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</translation>
+    </message>
+</context>
+<context>
+    <name>MeasurementsCommand</name>
+    <message>
+        <source>The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
+        <translation>El almacén: un archivo SQLite o postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (por defecto: %1).</translation>
+    </message>
+    <message>
+        <source>--%1 takes a number, not &quot;%2&quot;</source>
+        <translation>--%1 espera un número, no «%2»</translation>
+    </message>
+    <message>
+        <source>a part is named by its number from 1, not &quot;%1&quot;</source>
+        <translation>una pieza se indica por su número desde 1, no «%1»</translation>
+    </message>
+    <message>
+        <source>The measured points (feature, z_mm, diameter_mm or radial_deviation_um).</source>
+        <translation>Los puntos medidos (feature, z_mm, diameter_mm o radial_deviation_um).</translation>
+    </message>
+    <message>
+        <source>The machine the part was cut on (default: the project&apos;s).</source>
+        <translation>La máquina en que se mecanizó la pieza (por defecto: la del proyecto).</translation>
+    </message>
+    <message>
+        <source>When it was measured, ISO 8601 (default: now).</source>
+        <translation>Cuándo se midió, ISO 8601 (por defecto: ahora).</translation>
+    </message>
+    <message>
+        <source>Who measured it.</source>
+        <translation>Quién la midió.</translation>
+    </message>
+    <message>
+        <source>How: micrometer, CMM, bore gauge, …</source>
+        <translation>Cómo: micrómetro, MMC, medidor de interiores, …</translation>
+    </message>
+    <message>
+        <source>Minutes the machine had run when it was cut.</source>
+        <translation>Minutos que llevaba la máquina en marcha al mecanizarla.</translation>
+    </message>
+    <message>
+        <source>Ambient temperature when it was cut, °C.</source>
+        <translation>Temperatura ambiente al mecanizarla, °C.</translation>
+    </message>
+    <message>
+        <source>A note.</source>
+        <translation>Una nota.</translation>
+    </message>
+    <message>
+        <source>The project the part was cut from.</source>
+        <translation>El proyecto del que se mecanizó la pieza.</translation>
+    </message>
+    <message>
+        <source>Store a measured part.</source>
+        <translation>Guardar una pieza medida.</translation>
+    </message>
+    <message>
+        <source>give one project file and --csv FILE.csv</source>
+        <translation>indique un archivo de proyecto y --csv FILE.csv</translation>
+    </message>
+    <message>
+        <source>--at takes a time as 2026-11-24T08:30:00Z, not &quot;%1&quot;</source>
+        <translation>--at espera una hora como 2026-11-24T08:30:00Z, no «%1»</translation>
+    </message>
+    <message numerus="yes">
+        <source>stored part %1: %2, %n point(s), in %3</source>
+        <translation>
+            <numerusform>pieza %1 guardada: %2, %n punto, en %3</numerusform>
+            <numerusform>pieza %1 guardada: %2, %n puntos, en %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Only the parts of this machine.</source>
+        <translation>Solo las piezas de esta máquina.</translation>
+    </message>
+    <message>
+        <source>Only parts with this in their name, measurer or method.</source>
+        <translation>Solo piezas con esto en su nombre, medidor o método.</translation>
+    </message>
+    <message>
+        <source>At most N parts, newest first.</source>
+        <translation>Como mucho N piezas, las más recientes primero.</translation>
+    </message>
+    <message>
+        <source>Print the list as JSON.</source>
+        <translation>Imprimir la lista como JSON.</translation>
+    </message>
+    <message>
+        <source>List the stored parts, newest first.</source>
+        <translation>Listar las piezas guardadas, las más recientes primero.</translation>
+    </message>
+    <message>
+        <source>--limit takes a number from 1, not &quot;%1&quot;</source>
+        <translation>--limit espera un número desde 1, no «%1»</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n punto</numerusform>
+            <numerusform>%n puntos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The part&apos;s number.</source>
+        <translation>El número de la pieza.</translation>
+    </message>
+    <message>
+        <source>Remove a stored part with its points.</source>
+        <translation>Eliminar una pieza guardada con sus puntos.</translation>
+    </message>
+    <message>
+        <source>give the number of one part</source>
+        <translation>indique el número de una pieza</translation>
+    </message>
+    <message>
+        <source>removed part %1</source>
+        <translation>pieza %1 eliminada</translation>
+    </message>
+    <message>
+        <source>Every part of this machine.</source>
+        <translation>Todas las piezas de esta máquina.</translation>
+    </message>
+    <message>
+        <source>The CSV file to write (&apos;-&apos;, the default: standard output).</source>
+        <translation>El archivo CSV a escribir («-», por defecto: salida estándar).</translation>
+    </message>
+    <message>
+        <source>Parts by number.</source>
+        <translation>Piezas por número.</translation>
+    </message>
+    <message>
+        <source>Write stored parts&apos; points as CSV.</source>
+        <translation>Escribir los puntos de las piezas guardadas como CSV.</translation>
+    </message>
+    <message>
+        <source>give part numbers or --machine ID</source>
+        <translation>indique números de pieza o --machine ID</translation>
+    </message>
+    <message>
+        <source>The measurement history of the machines (an SQLite file or a shared PostgreSQL database): store a measured part with the project it was cut from, list, remove, export as CSV.</source>
+        <translation>El historial de mediciones de las máquinas (un archivo SQLite o una base PostgreSQL compartida): guardar una pieza medida con el proyecto del que salió, listar, eliminar, exportar como CSV.</translation>
+    </message>
+    <message>
+        <source>say add, list, remove or export, not &quot;%1&quot;</source>
+        <translation>diga add, list, remove o export, no «%1»</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include "app/cli/gcode_command.h"
 #include "app/cli/import_command.h"
 #include "app/cli/iso286_command.h"
+#include "app/cli/measurements_command.h"
 #include "app/cli/planning_commands.h"
 #include "app/cli/report_command.h"
 #include "app/cli/stiffness_command.h"
@@ -119,7 +120,8 @@ const std::vector<Command> &commands()
              "deciding condition of Valiño et al. Fig. 4, and the verdict."),
          runEvaluate},
         {QStringLiteral("optimize"),
-         QStringLiteral("optimize [--json] [--objective time|cost] [--machine-end compliant|stiff] [--write] PROJECT"),
+         QStringLiteral("optimize [--json] [--objective time|cost] [--machine-end compliant|stiff] [--time-limit S] "
+                        "[--write] PROJECT"),
          CommandLine::tr(
              "Cutting conditions of the finishing and roughing passes at least time or cost per part under every "
              "constraint (tolerances, roughness, power, torque, force, spindle speed, tool life)."),
@@ -140,6 +142,7 @@ const std::vector<Command> &commands()
          runReport},
         {QStringLiteral("import"), importSynopsis(), importSummary(), runImport},
         {QStringLiteral("export-step"), exportStepSynopsis(), exportStepSummary(), runExportStep},
+        {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
     };
     return list;
 }

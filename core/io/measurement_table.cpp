@@ -42,11 +42,19 @@ std::vector<qsizetype> headerColumns(const QStringList &cells, const QString &wh
 }
 
 MeasurementRow readRow(const QStringList &cells, const QString &where, const std::vector<MeasurementColumn> &columns,
-                       const std::vector<qsizetype> &columnOf, Diagnostics &out)
+                       const std::vector<qsizetype> &columnOf, Diagnostics &out, MeasurementTexts &texts)
 {
     MeasurementRow row;
     for (std::size_t c = 0; c < columns.size(); ++c) {
         const QString cell = columnOf[c] < 0 ? QString() : cells.value(columnOf[c]).trimmed();
+        if (columns[c].text) {
+            if (cell.isEmpty() && columns[c].required)
+                out.push_back(
+                    makeError(where, MeasurementFiles::tr("%1 must not be empty").arg(QLatin1String(columns[c].name))));
+            texts.cells << cell;
+            row.emplace_back(std::nullopt);
+            continue;
+        }
         if (cell.isEmpty() && !columns[c].required) {
             row.emplace_back(std::nullopt);
             continue;
@@ -67,7 +75,7 @@ MeasurementRow readRow(const QStringList &cells, const QString &where, const std
 
 std::optional<std::vector<MeasurementRow>> parseMeasurementTable(const QString &text, const QString &fileName,
                                                                  const std::vector<MeasurementColumn> &columns,
-                                                                 Diagnostics &out)
+                                                                 Diagnostics &out, std::vector<MeasurementTexts> *texts)
 {
     static const QRegularExpression separator(QStringLiteral("[,;]"));
     const int errorsBefore = countOf(out, Severity::Error);
@@ -86,7 +94,10 @@ std::optional<std::vector<MeasurementRow>> parseMeasurementTable(const QString &
                 return std::nullopt;
             continue;
         }
-        rows.push_back(readRow(cells, where, columns, columnOf, out));
+        MeasurementTexts rowTexts{static_cast<int>(n + 1), {}};
+        rows.push_back(readRow(cells, where, columns, columnOf, out, rowTexts));
+        if (texts)
+            texts->push_back(rowTexts);
     }
     if (columnOf.empty())
         out.push_back(makeError(fileName, MeasurementFiles::tr("the file has no header line")));
@@ -97,8 +108,9 @@ std::optional<std::vector<MeasurementRow>> parseMeasurementTable(const QString &
     return rows;
 }
 
-std::optional<std::vector<MeasurementRow>>
-readMeasurementTable(const QString &path, const std::vector<MeasurementColumn> &columns, Diagnostics &out)
+std::optional<std::vector<MeasurementRow>> readMeasurementTable(const QString &path,
+                                                                const std::vector<MeasurementColumn> &columns,
+                                                                Diagnostics &out, std::vector<MeasurementTexts> *texts)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
@@ -106,7 +118,7 @@ readMeasurementTable(const QString &path, const std::vector<MeasurementColumn> &
                                 MeasurementFiles::tr("cannot open '%1': %2").arg(path, file.errorString())));
         return std::nullopt;
     }
-    return parseMeasurementTable(QString::fromUtf8(file.readAll()), path, columns, out);
+    return parseMeasurementTable(QString::fromUtf8(file.readAll()), path, columns, out, texts);
 }
 
 } // namespace tolturn

@@ -10,6 +10,8 @@
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QStandardPaths>
+#include <QUrl>
+#include <QUrlQuery>
 #include <QVariant>
 
 #include <atomic>
@@ -41,6 +43,12 @@ QVariant optionalValue(const std::optional<double> &v)
 std::optional<double> optionalFrom(const QVariant &v)
 {
     return v.isNull() ? std::nullopt : std::optional<double>(v.toDouble());
+}
+
+// An unset text as an empty one: Qt binds a null QString as SQL NULL.
+QString textValue(const QString &s)
+{
+    return s.isNull() ? QStringLiteral("") : s;
 }
 
 QString timeText(const QDateTime &t)
@@ -85,6 +93,38 @@ QString StoreLocation::describe() const
     if (kind == Kind::SQLite)
         return QDir::toNativeSeparators(file);
     return QStringLiteral("postgresql://%1@%2:%3/%4").arg(user, host).arg(port).arg(database);
+}
+
+std::optional<StoreLocation> storeLocationFromText(const QString &text, QString *error)
+{
+    StoreLocation l;
+    if (!text.startsWith(QLatin1String("postgresql://")) && !text.startsWith(QLatin1String("postgres://"))) {
+        if (text.trimmed().isEmpty()) {
+            if (error)
+                *error = MeasurementStoreText::tr("the store is not named");
+            return std::nullopt;
+        }
+        l.file = text;
+        return l;
+    }
+    const QUrl url(text, QUrl::StrictMode);
+    const QString database = url.path().mid(1);
+    if (!url.isValid() || url.host(QUrl::FullyDecoded).isEmpty() || url.userName().isEmpty() || database.isEmpty()) {
+        if (error)
+            *error = MeasurementStoreText::tr("\"%1\" is not a PostgreSQL address of the form "
+                                              "postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]")
+                         .arg(url.toDisplayString(QUrl::RemovePassword));
+        return std::nullopt;
+    }
+    l.kind = StoreLocation::Kind::PostgreSQL;
+    // libpq's way to name a Unix socket's folder: ?host=/var/run/postgresql (a host is a name).
+    const QString socketFolder = QUrlQuery(url).queryItemValue(QStringLiteral("host"), QUrl::FullyDecoded);
+    l.host = socketFolder.isEmpty() ? url.host(QUrl::FullyDecoded) : socketFolder;
+    l.port = url.port(5432);
+    l.database = database;
+    l.user = url.userName(QUrl::FullyDecoded);
+    l.password = url.password(QUrl::FullyDecoded);
+    return l;
 }
 
 StoreLocation defaultStoreLocation()
@@ -190,9 +230,9 @@ std::optional<qint64> MeasurementStore::add(const MeasuredPart &part, Diagnostic
                        QStringLiteral("INSERT INTO measured_parts (machine_id, part_name, measured_at, measured_by, "
                                       "method, time_since_start_min, ambient_c, project_json, note, profile_sha256) "
                                       "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
-                       {part.machineId, snapshot.project->part.name, timeText(part.measuredAt), part.measuredBy,
-                        part.method, optionalValue(part.timeSinceStart_min), optionalValue(part.ambient_C),
-                        QString::fromUtf8(part.projectJson), part.note,
+                       {part.machineId, textValue(snapshot.project->part.name), timeText(part.measuredAt),
+                        textValue(part.measuredBy), textValue(part.method), optionalValue(part.timeSinceStart_min),
+                        optionalValue(part.ambient_C), QString::fromUtf8(part.projectJson), textValue(part.note),
                         measurements::profileChecksum(part.projectJson)}))
         return fail(MeasurementStoreText::tr("cannot store the part"), q.lastError());
     const qint64 id = q.lastInsertId().toLongLong();

@@ -28,6 +28,11 @@ struct StoreLocation {
     [[nodiscard]] QString describe() const;
 };
 
+// A store named as a user writes it: "postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE", with
+// "?host=/var/run/postgresql" for a Unix socket's folder as libpq has it; otherwise the path of
+// an SQLite file. Empty, with `error` set, for a malformed address.
+[[nodiscard]] std::optional<StoreLocation> storeLocationFromText(const QString &text, QString *error);
+
 // The per-user SQLite file, shared by the desktop program and the command line:
 // <GenericDataLocation>/TolTurn/measurements.sqlite (~/.local/share/TolTurn/… on Linux).
 [[nodiscard]] StoreLocation defaultStoreLocation();

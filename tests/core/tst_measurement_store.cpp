@@ -358,6 +358,48 @@ private Q_SLOTS:
         }
     }
 
+    // Unset texts (no one named, no method) are stored as empty, not refused as missing.
+    void storesAPartWithoutTexts()
+    {
+        auto store = openStore(freshLocation());
+        QVERIFY(store);
+        MeasuredPart p = measuredShaft();
+        p.measuredBy = QString();
+        p.method = QString();
+        p.note = QString();
+        Diagnostics problems;
+        const auto id = store->add(p, problems);
+        QVERIFY2(id.has_value(), qPrintable(problems.empty() ? QString() : problems.back().toString()));
+        QString error;
+        QVERIFY(store->part(*id, &error)->measuredBy.isEmpty());
+    }
+
+    // A store as a user writes it: a file, or a PostgreSQL address as libpq takes it.
+    void readsStoreAddresses()
+    {
+        QString error;
+        const auto file = storeLocationFromText(QStringLiteral("/data/shop.sqlite"), &error);
+        QVERIFY(file && file->kind == StoreLocation::Kind::SQLite && file->file == QLatin1String("/data/shop.sqlite"));
+        const auto pg =
+            storeLocationFromText(QStringLiteral("postgresql://planner:s%40cret@db.shop.local:5433/history"), &error);
+        QVERIFY(pg.has_value());
+        QCOMPARE(pg->kind, StoreLocation::Kind::PostgreSQL);
+        QCOMPARE(pg->host, QStringLiteral("db.shop.local"));
+        QCOMPARE(pg->port, 5433);
+        QCOMPARE(pg->database, QStringLiteral("history"));
+        QCOMPARE(pg->user, QStringLiteral("planner"));
+        QCOMPARE(pg->password, QStringLiteral("s@cret"));
+        QCOMPARE(pg->describe(), QStringLiteral("postgresql://planner@db.shop.local:5433/history"));
+        const auto socket = storeLocationFromText(
+            QStringLiteral("postgres://planner@localhost/history?host=/var/run/postgresql"), &error);
+        QVERIFY(socket.has_value());
+        QCOMPARE(socket->host, QStringLiteral("/var/run/postgresql"));
+        QCOMPARE(socket->port, 5432);
+        QVERIFY(!storeLocationFromText(QStringLiteral("postgresql://db.shop.local/history"), &error)); // no user
+        QVERIFY(error.contains(QStringLiteral("is not a PostgreSQL address")));
+        QVERIFY(!storeLocationFromText(QStringLiteral("postgresql://planner@db.shop.local"), &error)); // no database
+    }
+
     // An unreachable database: a named error, no store.
     void unreachableStoreIsNamed()
     {

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tolturn-cli measurements (issue 15): a measured part stored from CSV with its project, listed,
+// exported with the values that went in, removed; bad files and stores named, nothing stored.
+#include "tests/cli/cli_runner.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+using tolturn::test::example;
+using tolturn::test::runCli;
+using tolturn::test::writeFile;
+
+namespace {
+
+// The stepped shaft measured with a micrometer at two places on the Ø50 and a dial gauge on the Ø40.
+constexpr char kPoints[] = "feature,z_mm,diameter_mm,radial_deviation_um\n"
+                           "# part 1 of the batch\n"
+                           "O4,40,50.012,\n"
+                           "O4,75,50.018,\n"
+                           "O6,100,,6\n";
+
+} // namespace
+
+class TestMeasurementsCli : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+    [[nodiscard]] QString store() const { return m_dir.filePath(QStringLiteral("history.sqlite")); }
+
+    tolturn::test::Run measurements(const QStringList &args)
+    {
+        return runCli(QStringList{QStringLiteral("measurements")} + args +
+                      QStringList{QStringLiteral("--store"), store()});
+    }
+
+private Q_SLOTS:
+
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        QVERIFY(writeFile(m_dir.filePath(QStringLiteral("points.csv")), kPoints));
+    }
+
+    // In, listed, out as it went in, removed.
+    void storesListsExportsAndRemoves()
+    {
+        const QString csv = m_dir.filePath(QStringLiteral("points.csv"));
+        const auto added =
+            measurements({QStringLiteral("add"), QStringLiteral("--csv"), csv, QStringLiteral("--by"),
+                          QStringLiteral("A. Planner"), QStringLiteral("--method"), QStringLiteral("micrometer"),
+                          QStringLiteral("--at"), QStringLiteral("2026-11-24T08:30:00Z"), QStringLiteral("--ambient"),
+                          QStringLiteral("21.5"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(added.exitCode, 0);
+        QVERIFY2(added.out.contains(QStringLiteral("stored part 1: Stepped shaft, 3 points")), qPrintable(added.out));
+        const auto listed = measurements({QStringLiteral("list"), QStringLiteral("--json")});
+        QCOMPARE(listed.exitCode, 0);
+        const QJsonArray list = QJsonDocument::fromJson(listed.out.toUtf8()).array();
+        QCOMPARE(list.size(), 1);
+        const QJsonObject part = list.at(0).toObject();
+        QCOMPARE(part.value(QStringLiteral("machine")).toString(), QStringLiteral("haas-st-20")); // the project's
+        QCOMPARE(part.value(QStringLiteral("measured_at")).toString(), QStringLiteral("2026-11-24T08:30:00.000Z"));
+        QCOMPARE(part.value(QStringLiteral("points")).toInt(), 3);
+        const auto exported = measurements({QStringLiteral("export"), QStringLiteral("1")});
+        QCOMPARE(exported.exitCode, 0);
+        QCOMPARE(exported.out, QStringLiteral("part,machine,measured_at,feature,z_mm,diameter_mm,radial_deviation_um\n"
+                                              "1,haas-st-20,2026-11-24T08:30:00.000Z,O4,40,50.012,\n"
+                                              "1,haas-st-20,2026-11-24T08:30:00.000Z,O4,75,50.018,\n"
+                                              "1,haas-st-20,2026-11-24T08:30:00.000Z,O6,100,,6\n"));
+        QCOMPARE(measurements({QStringLiteral("remove"), QStringLiteral("1")}).exitCode, 0);
+        const auto again = measurements({QStringLiteral("remove"), QStringLiteral("1")});
+        QCOMPARE(again.exitCode, 1);
+        QVERIFY(again.err.contains(QStringLiteral("the store has no part 1")));
+    }
+
+    // Each wrong input named; the store keeps what it had.
+    void badInputsAreNamed_data()
+    {
+        QTest::addColumn<QByteArray>("csv");
+        QTest::addColumn<QStringList>("extra");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("bad cell") << QByteArray("feature,z_mm,diameter_mm\nO4,40,5O.01\n") << QStringList{} << 1
+                                  << QStringLiteral(
+                                         "points.csv:2: diameter_mm must be a number above zero, not \"5O.01\"");
+        QTest::newRow("no feature column") << QByteArray("z_mm,diameter_mm\n40,50.01\n") << QStringList{} << 1
+                                           << QStringLiteral("the header lacks the column \"feature\"");
+        QTest::newRow("both values") << QByteArray("feature,z_mm,diameter_mm,radial_deviation_um\nO4,40,50.01,3\n")
+                                     << QStringList{} << 1
+                                     << QStringLiteral("points.csv:2: a line needs either diameter_mm or "
+                                                       "radial_deviation_um, and one only");
+        QTest::newRow("another part's diameter")
+            << QByteArray("feature,z_mm,diameter_mm\nO4,40,42\n") << QStringList{} << 1
+            << QStringLiteral("points[0].value_mm: a diameter of 42 mm does not fit feature O4 (Ø50 to Ø50 mm)");
+        QTest::newRow("hot shop") << QByteArray(kPoints)
+                                  << QStringList{QStringLiteral("--ambient"), QStringLiteral("90")} << 1
+                                  << QStringLiteral("ambient_C: the ambient temperature must be from -10 to 50 °C");
+        QTest::newRow("bad time") << QByteArray(kPoints)
+                                  << QStringList{QStringLiteral("--at"), QStringLiteral("monday")} << 2
+                                  << QStringLiteral("--at takes a time as 2026-11-24T08:30:00Z, not \"monday\"");
+    }
+
+    void badInputsAreNamed()
+    {
+        QFETCH(QByteArray, csv);
+        QFETCH(QStringList, extra);
+        QFETCH(int, exitCode);
+        QFETCH(QString, message);
+        const QString file = m_dir.filePath(QStringLiteral("points.csv"));
+        QVERIFY(writeFile(file, csv));
+        const auto before = measurements({QStringLiteral("list"), QStringLiteral("--json")});
+        const auto r = measurements(QStringList{QStringLiteral("add"), QStringLiteral("--csv"), file} + extra +
+                                    QStringList{example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, exitCode);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QCOMPARE(measurements({QStringLiteral("list"), QStringLiteral("--json")}).out, before.out);
+        QVERIFY(writeFile(file, kPoints));
+    }
+
+    // A database that is not there: named by its address (without the password).
+    void unreachableStoreIsNamed()
+    {
+        const auto r = runCli({QStringLiteral("measurements"), QStringLiteral("list"), QStringLiteral("--store"),
+                               QStringLiteral("postgresql://planner:secret@localhost:1/shop?host=") + m_dir.path()});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("cannot open the measurement store postgresql://planner@")),
+                 qPrintable(r.err));
+        QVERIFY(!r.err.contains(QStringLiteral("secret")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMeasurementsCli)
+#include "tst_measurements_cli.moc"
