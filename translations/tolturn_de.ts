@@ -778,6 +778,25 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>HybridRbf</name>
+    <message>
+        <source>%1 input rows but %2 targets</source>
+        <translation>%1 Eingabezeilen, aber %2 Zielwerte</translation>
+    </message>
+    <message>
+        <source>%1 samples; the network needs at least 3</source>
+        <translation>%1 Stichproben; das Netz braucht mindestens 3</translation>
+    </message>
+    <message>
+        <source>an input or a target is not a finite number</source>
+        <translation>eine Eingabe oder ein Zielwert ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>no network could be fitted to the samples</source>
+        <translation>an die Stichproben ließ sich kein Netz anpassen</translation>
+    </message>
+</context>
+<context>
     <name>ImportCommand</name>
     <message>
         <source>--%1 takes a number from 0, not &apos;%2&apos;</source>

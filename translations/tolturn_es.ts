@@ -778,6 +778,25 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>HybridRbf</name>
+    <message>
+        <source>%1 input rows but %2 targets</source>
+        <translation>%1 filas de entrada pero %2 objetivos</translation>
+    </message>
+    <message>
+        <source>%1 samples; the network needs at least 3</source>
+        <translation>%1 muestras; la red necesita al menos 3</translation>
+    </message>
+    <message>
+        <source>an input or a target is not a finite number</source>
+        <translation>una entrada o un objetivo no es un número finito</translation>
+    </message>
+    <message>
+        <source>no network could be fitted to the samples</source>
+        <translation>no se pudo ajustar ninguna red a las muestras</translation>
+    </message>
+</context>
+<context>
     <name>ImportCommand</name>
     <message>
         <source>--%1 takes a number from 0, not &apos;%2&apos;</source>
