@@ -1194,6 +1194,25 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>MeasuredResiduals</name>
+    <message>
+        <source>part %1 is left out: its project snapshot does not read</source>
+        <translation>Teil %1 bleibt außen vor: sein Projektstand lässt sich nicht lesen</translation>
+    </message>
+    <message>
+        <source>part %1 is left out: the physics model cannot compute its project</source>
+        <translation>Teil %1 bleibt außen vor: das physikalische Modell kann sein Projekt nicht berechnen</translation>
+    </message>
+    <message>
+        <source>%1 measured points; learning needs at least 3</source>
+        <translation>%1 Messpunkte; das Lernen braucht mindestens 3</translation>
+    </message>
+    <message>
+        <source>%1 measured part(s); leaving one out needs at least 2</source>
+        <translation>%1 gemessene(s) Teil(e); das Weglassen eines Teils braucht mindestens 2</translation>
+    </message>
+</context>
+<context>
     <name>MeasurementCsv</name>
     <message>
         <source>a line needs either diameter_mm or radial_deviation_um, and one only</source>

@@ -1194,6 +1194,25 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>MeasuredResiduals</name>
+    <message>
+        <source>part %1 is left out: its project snapshot does not read</source>
+        <translation>la pieza %1 queda fuera: su copia del proyecto no se puede leer</translation>
+    </message>
+    <message>
+        <source>part %1 is left out: the physics model cannot compute its project</source>
+        <translation>la pieza %1 queda fuera: el modelo físico no puede calcular su proyecto</translation>
+    </message>
+    <message>
+        <source>%1 measured points; learning needs at least 3</source>
+        <translation>%1 puntos medidos; el aprendizaje necesita al menos 3</translation>
+    </message>
+    <message>
+        <source>%1 measured part(s); leaving one out needs at least 2</source>
+        <translation>%1 pieza(s) medida(s); dejar una fuera necesita al menos 2</translation>
+    </message>
+</context>
+<context>
     <name>MeasurementCsv</name>
     <message>
         <source>a line needs either diameter_mm or radial_deviation_um, and one only</source>

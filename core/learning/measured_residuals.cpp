@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/learning/measured_residuals.h"
+
+#include "core/deviation/deviation_model.h"
+#include "core/io/project_json.h"
+#include "core/tolerance/target_contour.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace tolturn {
+
+namespace {
+
+struct MeasuredResiduals {
+    Q_DECLARE_TR_FUNCTIONS(MeasuredResiduals)
+};
+
+constexpr int kBackfittingPasses = 4;
+
+// The predicted radius error on a feature at z, linear between its stations.
+std::optional<double> physicsAt(const DeviationResult &d, const QString &featureId, double z)
+{
+    for (const FeatureDeviation &f : d.features) {
+        if (f.featureId != featureId || f.stations.empty())
+            continue;
+        const auto &st = f.stations;
+        if (st.size() == 1 || z <= st.front().z_mm)
+            return st.front().radiusError_mm;
+        for (std::size_t i = 1; i < st.size(); ++i) {
+            if (z <= st[i].z_mm) {
+                const double span = st[i].z_mm - st[i - 1].z_mm;
+                const double t = span > 0.0 ? (z - st[i - 1].z_mm) / span : 0.0;
+                return st[i - 1].radiusError_mm + t * (st[i].radiusError_mm - st[i - 1].radiusError_mm);
+            }
+        }
+        return st.back().radiusError_mm;
+    }
+    return std::nullopt;
+}
+
+double spindleSpeedAt(const DeviationResult &d, const QString &featureId)
+{
+    for (const FeatureDeviation &f : d.features) {
+        if (f.featureId == featureId && !f.stations.empty())
+            return f.stations.front().spindleSpeed_rpm;
+    }
+    return 0.0;
+}
+
+void addPartSamples(const MeasuredPart &part, const DataLibrary &data, std::vector<ResidualSample> &out,
+                    Diagnostics &warnings)
+{
+    const ProjectParseResult read = parseProjectJson(part.projectJson);
+    const QString field = QStringLiteral("parts[%1]").arg(part.id);
+    if (!read.project) {
+        warnings.push_back(makeWarning(field, MeasuredResiduals::tr("part %1 is left out: its project snapshot "
+                                                                    "does not read")
+                                                  .arg(part.id)));
+        return;
+    }
+    const DeviationResult d = computeDeviation(*read.project, data, {});
+    if (!d.inputs) {
+        warnings.push_back(makeWarning(field, MeasuredResiduals::tr("part %1 is left out: the physics model cannot "
+                                                                    "compute its project")
+                                                  .arg(part.id)));
+        return;
+    }
+    const ProgramTargets targets = programTargets(*read.project);
+    const TurningInputs &in = *d.inputs;
+    for (const MeasuredPoint &p : part.points) {
+        const bool inner =
+            std::any_of(read.project->part.inner.segments.begin(), read.project->part.inner.segments.end(),
+                        [&p](const Segment &s) { return s.id == p.featureId; });
+        const auto target = targetRadius_mm(inner ? targets.inner : targets.outer, p.featureId, p.z_mm);
+        const auto physics = physicsAt(d, p.featureId, p.z_mm);
+        if (!target || !physics)
+            continue; // a face or a feature the model does not turn: nothing to compare
+        ResidualSample s;
+        s.partId = part.id;
+        s.featureId = p.featureId;
+        s.z_mm = p.z_mm;
+        s.diameter_mm = 2.0 * *target;
+        // As the physics model's radius error: machined radius − programmed radius. A radial
+        // deviation is recorded as material left, which on a bore is a radius short.
+        const double materialLeft_mm = p.quantity == MeasuredQuantity::RadialDeviation ? p.value_mm : 0.0;
+        s.measured_mm = p.quantity == MeasuredQuantity::Diameter ? 0.5 * p.value_mm - *target
+                                                                 : (inner ? -materialLeft_mm : materialLeft_mm);
+        s.physics_mm = *physics;
+        s.inputs << spindleSpeedAt(d, p.featureId), in.pass.feed_mm_rev,
+            part.timeSinceStart_min.value_or(in.timeSinceStart_min), part.ambient_C.value_or(in.ambientTemperature_C),
+            in.forces.tangential_N * *target * 1e-3, in.forces.axial_N, in.forces.radial_N, p.z_mm;
+        out.push_back(s);
+    }
+}
+
+// The plane fitted to the residuals less `explained` (what the network predicts; empty: nothing).
+std::optional<GeometricError> fitGeometric(const std::vector<ResidualSample> &samples,
+                                           const std::vector<double> &explained)
+{
+    // Least squares on [φ z 1]; a column with no spread (one diameter, one z) is left out.
+    const auto n = static_cast<Eigen::Index>(samples.size());
+    if (n < 3)
+        return std::nullopt;
+    Eigen::MatrixXd a(n, 3);
+    Eigen::VectorXd y(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const ResidualSample &s = samples[static_cast<std::size_t>(i)];
+        a.row(i) << s.diameter_mm, s.z_mm, 1.0;
+        y[i] = s.residual_mm() - (explained.empty() ? 0.0 : explained[static_cast<std::size_t>(i)]);
+    }
+    std::vector<Eigen::Index> used;
+    for (Eigen::Index c = 0; c < 2; ++c) {
+        if (a.col(c).maxCoeff() - a.col(c).minCoeff() > 1e-9)
+            used.push_back(c);
+    }
+    used.push_back(2);
+    Eigen::MatrixXd reduced(n, static_cast<Eigen::Index>(used.size()));
+    for (std::size_t k = 0; k < used.size(); ++k)
+        reduced.col(static_cast<Eigen::Index>(k)) = a.col(used[k]);
+    const Eigen::VectorXd w = reduced.colPivHouseholderQr().solve(y);
+    Eigen::Vector3d full = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < used.size(); ++k)
+        full[used[k]] = w[static_cast<Eigen::Index>(k)];
+    return GeometricError{full[0], full[1], full[2]};
+}
+
+} // namespace
+
+std::vector<ResidualSample> residualSamples(const std::vector<MeasuredPart> &parts, const DataLibrary &data,
+                                            Diagnostics &warnings)
+{
+    std::vector<ResidualSample> out;
+    for (const MeasuredPart &part : parts)
+        addPartSamples(part, data, out, warnings);
+    return out;
+}
+
+double LearnedResidual::predict_mm(const ResidualSample &s) const
+{
+    const double rest = network ? network->predict(s.inputs) : 0.0;
+    return geometric.at(s.diameter_mm, s.z_mm) + rest;
+}
+
+std::optional<LearnedResidual> learnResidual(const std::vector<ResidualSample> &samples,
+                                             const RbfTrainingOptions &options, QString *error)
+{
+    auto geometric = fitGeometric(samples, {});
+    if (!geometric) {
+        if (error)
+            *error = MeasuredResiduals::tr("%1 measured points; learning needs at least 3").arg(samples.size());
+        return std::nullopt;
+    }
+    const auto n = static_cast<Eigen::Index>(samples.size());
+    Eigen::MatrixXd x(n, 8);
+    for (Eigen::Index i = 0; i < n; ++i)
+        x.row(i) = samples[static_cast<std::size_t>(i)].inputs.transpose();
+    // Backfitting (Hastie & Tibshirani, Generalized Additive Models, 1990, §4.3): the plane and
+    // the network each fitted to what the other leaves, so that a warm-up drift that differs from
+    // part to part does not bias the geometric error, nor the geometric error the network.
+    LearnedResidual learned;
+    std::vector<double> networkPart(samples.size(), 0.0);
+    for (int pass = 0; pass < kBackfittingPasses; ++pass) {
+        Eigen::VectorXd y(n);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const ResidualSample &s = samples[static_cast<std::size_t>(i)];
+            y[i] = s.residual_mm() - geometric->at(s.diameter_mm, s.z_mm);
+        }
+        learned.network = trainHybridRbf(x, y, options, error);
+        if (!learned.network)
+            return std::nullopt;
+        for (Eigen::Index i = 0; i < n; ++i)
+            networkPart[static_cast<std::size_t>(i)] = learned.network->predict(x.row(i).transpose());
+        geometric = fitGeometric(samples, networkPart);
+    }
+    learned.geometric = *geometric;
+    // The network's last fit was to the plane before; once more to the final plane.
+    Eigen::VectorXd y(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const ResidualSample &s = samples[static_cast<std::size_t>(i)];
+        y[i] = s.residual_mm() - learned.geometric.at(s.diameter_mm, s.z_mm);
+    }
+    learned.network = trainHybridRbf(x, y, options, error);
+    if (!learned.network)
+        return std::nullopt;
+    return learned;
+}
+
+std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample> &samples,
+                                               const RbfTrainingOptions &options, QString *error)
+{
+    std::map<qint64, std::vector<std::size_t>> byPart;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        byPart[samples[i].partId].push_back(i);
+    if (byPart.size() < 2) {
+        if (error)
+            *error = MeasuredResiduals::tr("%1 measured part(s); leaving one out needs at least 2").arg(byPart.size());
+        return std::nullopt;
+    }
+    CrossValidation cv;
+    double physics = 0.0, learned = 0.0;
+    for (const auto &[part, rows] : byPart) {
+        std::vector<ResidualSample> training;
+        for (const ResidualSample &s : samples) {
+            if (s.partId != part)
+                training.push_back(s);
+        }
+        const auto model = learnResidual(training, options, error);
+        if (!model)
+            return std::nullopt;
+        for (const std::size_t i : rows) {
+            const ResidualSample &s = samples[i];
+            physics += s.residual_mm() * s.residual_mm();
+            const double e = s.residual_mm() - model->predict_mm(s);
+            learned += e * e;
+        }
+        ++cv.parts;
+        cv.points += static_cast<int>(rows.size());
+    }
+    cv.physicsRms_mm = std::sqrt(physics / cv.points);
+    cv.learnedRms_mm = std::sqrt(learned / cv.points);
+    return cv;
+}
+
+} // namespace tolturn

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/data/data_library.h"
+#include "core/learning/hybrid_rbf.h"
+#include "core/measurements/measured_part.h"
+
+#include <Eigen/Dense>
+
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+// One measured point against TolTurn's physics (docs/learning.md): what the part came out as and
+// what the model predicted for it, both as the machined radius less the programmed one (mm, as
+// radiusError_mm: on a bore, material left is negative), and
+// the inputs Li & Du give their networks (003 §3.2–3.3).
+struct ResidualSample {
+    qint64 partId = 0;
+    QString featureId;
+    double z_mm = 0.0;
+    double diameter_mm = 0.0;  // the programmed diameter there
+    double measured_mm = 0.0;  // measured radius − programmed radius
+    double physics_mm = 0.0;   // predicted radius error (computeDeviation)
+    // Li & Du's inputs: spindle speed [rpm], feed [mm/rev], time since start [min], ambient [°C]
+    // (thermal, §3.2); spindle torque T = F_t·D/2 [N·m], axial and radial force [N], z [mm]
+    // (force-induced, §3.3; the paper writes T = F_t D, a factor the input scaling removes).
+    Eigen::Matrix<double, 8, 1> inputs = Eigen::Matrix<double, 8, 1>::Zero();
+
+    [[nodiscard]] double residual_mm() const { return measured_mm - physics_mm; }
+};
+
+// The samples of the stored parts: each part's snapshot through the physics model at its
+// finishing pass, each point against the program's target at its z. A part whose snapshot cannot
+// be computed is left out with a warning naming it.
+[[nodiscard]] std::vector<ResidualSample> residualSamples(const std::vector<MeasuredPart> &parts,
+                                                          const DataLibrary &data, Diagnostics &warnings);
+
+// The geometric error as a plane in the diameter and z: δ_G = a·φ + b·z + c. Li & Du's eq. 4 is
+// the line in φ (the X axis's linear error); the term in z is the taper that a Z axis not parallel
+// to the spindle leaves (ISO 230-1, parallelism of the Z motion to the spindle axis).
+struct GeometricError {
+    double perDiameter = 0.0; // a [mm/mm]
+    double perZ = 0.0;        // b [mm/mm]: the taper
+    double offset_mm = 0.0;   // c
+    [[nodiscard]] double at(double diameter_mm, double z_mm) const
+    {
+        return perDiameter * diameter_mm + perZ * z_mm + offset_mm;
+    }
+};
+
+// What was learned of a machine: the residual of the physics model = geometric error + an RBF
+// network of the rest over Li & Du's inputs.
+struct LearnedResidual {
+    GeometricError geometric;
+    std::optional<RbfNetwork> network; // absent when too few samples remain for one
+    [[nodiscard]] double predict_mm(const ResidualSample &s) const;
+};
+
+[[nodiscard]] std::optional<LearnedResidual> learnResidual(const std::vector<ResidualSample> &samples,
+                                                           const RbfTrainingOptions &options, QString *error);
+
+// How well the physics alone and the physics with the learned residual predict parts not used to
+// learn (leave one part out, as the issue asks): RMS over every point of every part, in mm.
+struct CrossValidation {
+    int parts = 0;
+    int points = 0;
+    double physicsRms_mm = 0.0;
+    double learnedRms_mm = 0.0;
+};
+
+[[nodiscard]] std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample> &samples,
+                                                             const RbfTrainingOptions &options, QString *error);
+
+} // namespace tolturn
