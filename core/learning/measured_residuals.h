@@ -20,9 +20,9 @@ struct ResidualSample {
     qint64 partId = 0;
     QString featureId;
     double z_mm = 0.0;
-    double diameter_mm = 0.0;  // the programmed diameter there
-    double measured_mm = 0.0;  // measured radius − programmed radius
-    double physics_mm = 0.0;   // predicted radius error (computeDeviation)
+    double diameter_mm = 0.0; // the programmed diameter there
+    double measured_mm = 0.0; // measured radius − programmed radius
+    double physics_mm = 0.0;  // predicted radius error (computeDeviation)
     // Li & Du's inputs: spindle speed [rpm], feed [mm/rev], time since start [min], ambient [°C]
     // (thermal, §3.2); spindle torque T = F_t·D/2 [N·m], axial and radial force [N], z [mm]
     // (force-induced, §3.3; the paper writes T = F_t D, a factor the input scaling removes).
@@ -44,6 +44,7 @@ struct GeometricError {
     double perDiameter = 0.0; // a [mm/mm]
     double perZ = 0.0;        // b [mm/mm]: the taper
     double offset_mm = 0.0;   // c
+
     [[nodiscard]] double at(double diameter_mm, double z_mm) const
     {
         return perDiameter * diameter_mm + perZ * z_mm + offset_mm;
