@@ -462,6 +462,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>--time-limit is from 0.01 to 3600 seconds, not &quot;%1&quot;</source>
         <translation>--time-limit liegt zwischen 0,01 und 3600 Sekunden, nicht „%1“</translation>
     </message>
+    <message>
+        <source>Learn what a machine&apos;s measured parts show beyond the physics (Li &amp; Du): geometric error, hybrid RBF network, and how well parts not learned from are predicted with and without it.</source>
+        <translation>Lernen, was die gemessenen Teile einer Maschine über die Physik hinaus zeigen (Li &amp; Du): geometrischer Fehler, hybrides RBF-Netz und wie gut nicht gelernte Teile mit und ohne es vorhergesagt werden.</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1148,6 +1152,49 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>unknown field, kept as it is</source>
         <translation>unbekanntes Feld, unverändert beibehalten</translation>
+    </message>
+</context>
+<context>
+    <name>LearnCommand</name>
+    <message>
+        <source>The machine to learn.</source>
+        <translation>Die zu lernende Maschine.</translation>
+    </message>
+    <message>
+        <source>The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
+        <translation>Der Speicher: eine SQLite-Datei oder postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (Vorgabe: %1).</translation>
+    </message>
+    <message>
+        <source>gcv (default) or bic: when the network stops growing.</source>
+        <translation>gcv (Vorgabe) oder bic: wann das Netz aufhört zu wachsen.</translation>
+    </message>
+    <message>
+        <source>Print the result as JSON.</source>
+        <translation>Das Ergebnis als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>give --machine ID, and --criterion gcv or bic</source>
+        <translation>geben Sie --machine ID an, und --criterion gcv oder bic</translation>
+    </message>
+    <message>
+        <source>%1 has %2 stored part(s) with %3 usable point(s): %4</source>
+        <translation>%1 hat %2 gespeicherte(s) Teil(e) mit %3 verwendbaren Punkt(en): %4</translation>
+    </message>
+    <message>
+        <source>%1: %2 parts, %3 measured points</source>
+        <translation>%1: %2 Teile, %3 Messpunkte</translation>
+    </message>
+    <message>
+        <source>  geometric error: %1 µm per mm of diameter, %2 µm per mm along z (taper), %3 µm offset</source>
+        <translation>  geometrischer Fehler: %1 µm je mm Durchmesser, %2 µm je mm längs z (Konizität), %3 µm Versatz</translation>
+    </message>
+    <message>
+        <source>  network: %1 of %2 nodes kept (radius scale %3), leave-one-out RMS %4 µm</source>
+        <translation>  Netz: %1 von %2 Knoten behalten (Radiusfaktor %3), Leave-one-out-RMS %4 µm</translation>
+    </message>
+    <message>
+        <source>  parts predicted without having been learned from (leave one part out): physics alone %1 µm RMS, physics + learned %2 µm RMS</source>
+        <translation>  Teile vorhergesagt, ohne aus ihnen gelernt zu haben (ein Teil weggelassen): nur Physik %1 µm RMS, Physik + Gelerntes %2 µm RMS</translation>
     </message>
 </context>
 <context>

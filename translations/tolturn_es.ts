@@ -462,6 +462,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>--time-limit is from 0.01 to 3600 seconds, not &quot;%1&quot;</source>
         <translation>--time-limit va de 0,01 a 3600 segundos, no «%1»</translation>
     </message>
+    <message>
+        <source>Learn what a machine&apos;s measured parts show beyond the physics (Li &amp; Du): geometric error, hybrid RBF network, and how well parts not learned from are predicted with and without it.</source>
+        <translation>Aprender lo que las piezas medidas de una máquina muestran más allá de la física (Li &amp; Du): error geométrico, red RBF híbrida y lo bien que se predicen piezas no aprendidas con y sin ella.</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1148,6 +1152,49 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>unknown field, kept as it is</source>
         <translation>campo desconocido, se conserva tal cual</translation>
+    </message>
+</context>
+<context>
+    <name>LearnCommand</name>
+    <message>
+        <source>The machine to learn.</source>
+        <translation>La máquina a aprender.</translation>
+    </message>
+    <message>
+        <source>The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
+        <translation>El almacén: un archivo SQLite o postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (por defecto: %1).</translation>
+    </message>
+    <message>
+        <source>gcv (default) or bic: when the network stops growing.</source>
+        <translation>gcv (por defecto) o bic: cuándo deja de crecer la red.</translation>
+    </message>
+    <message>
+        <source>Print the result as JSON.</source>
+        <translation>Imprimir el resultado como JSON.</translation>
+    </message>
+    <message>
+        <source>give --machine ID, and --criterion gcv or bic</source>
+        <translation>indique --machine ID, y --criterion gcv o bic</translation>
+    </message>
+    <message>
+        <source>%1 has %2 stored part(s) with %3 usable point(s): %4</source>
+        <translation>%1 tiene %2 pieza(s) guardada(s) con %3 punto(s) utilizable(s): %4</translation>
+    </message>
+    <message>
+        <source>%1: %2 parts, %3 measured points</source>
+        <translation>%1: %2 piezas, %3 puntos medidos</translation>
+    </message>
+    <message>
+        <source>  geometric error: %1 µm per mm of diameter, %2 µm per mm along z (taper), %3 µm offset</source>
+        <translation>  error geométrico: %1 µm por mm de diámetro, %2 µm por mm a lo largo de z (conicidad), %3 µm de desplazamiento</translation>
+    </message>
+    <message>
+        <source>  network: %1 of %2 nodes kept (radius scale %3), leave-one-out RMS %4 µm</source>
+        <translation>  red: %1 de %2 nodos conservados (escala de radio %3), RMS leave-one-out %4 µm</translation>
+    </message>
+    <message>
+        <source>  parts predicted without having been learned from (leave one part out): physics alone %1 µm RMS, physics + learned %2 µm RMS</source>
+        <translation>  piezas predichas sin haber aprendido de ellas (dejando una fuera): solo física %1 µm RMS, física + aprendido %2 µm RMS</translation>
     </message>
 </context>
 <context>

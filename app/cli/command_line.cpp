@@ -9,6 +9,7 @@
 #include "app/cli/gcode_command.h"
 #include "app/cli/import_command.h"
 #include "app/cli/iso286_command.h"
+#include "app/cli/learn_command.h"
 #include "app/cli/measurements_command.h"
 #include "app/cli/planning_commands.h"
 #include "app/cli/report_command.h"
@@ -143,6 +144,11 @@ const std::vector<Command> &commands()
         {QStringLiteral("import"), importSynopsis(), importSummary(), runImport},
         {QStringLiteral("export-step"), exportStepSynopsis(), exportStepSummary(), runExportStep},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
+        {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
+         CommandLine::tr(
+             "Learn what a machine's measured parts show beyond the physics (Li & Du): geometric error, hybrid RBF "
+             "network, and how well parts not learned from are predicted with and without it."),
+         runLearn},
     };
     return list;
 }

@@ -3,11 +3,18 @@
 // exported with the values that went in, removed; bad files and stores named, nothing stored.
 #include "tests/cli/cli_runner.h"
 
+#include "core/data/data_library.h"
+#include "core/deviation/deviation_model.h"
+#include "core/io/project_file.h"
+#include "core/tolerance/target_contour.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
 
 using tolturn::test::example;
 using tolturn::test::runCli;
@@ -118,6 +125,51 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
         QCOMPARE(measurements({QStringLiteral("list"), QStringLiteral("--json")}).out, before.out);
         QVERIFY(writeFile(file, kPoints));
+    }
+
+    // Parts that came out exactly as the physics predicts plus 5 µm on the radius everywhere (a
+    // machine that cuts large): the physics alone misses them by 5 µm RMS, what is learned takes
+    // the 5 µm as the geometric offset and predicts parts it did not learn from.
+    void learnsAConstantOffset()
+    {
+        const QString project = example("stepped-shaft-chuck.tolturn");
+        const tolturn::Project p = *tolturn::readProjectFile(project).project;
+        const tolturn::DeviationResult physics = tolturn::computeDeviation(p, tolturn::DataLibrary::builtIn(), {});
+        const tolturn::ProgramTargets targets = tolturn::programTargets(p);
+        QByteArray csv = "feature,z_mm,diameter_mm\n";
+        for (const tolturn::FeatureDeviation &f : physics.features) {
+            if (f.kind != tolturn::SegmentKind::Cylinder)
+                continue;
+            for (std::size_t i = 0; i < f.stations.size(); i += 5) {
+                const tolturn::Station &st = f.stations[i];
+                const double target = *tolturn::targetRadius_mm(targets.outer, f.featureId, st.z_mm);
+                csv += f.featureId.toLatin1() + ',' + QByteArray::number(st.z_mm, 'g', 17) + ',' +
+                       QByteArray::number(2.0 * (target + st.radiusError_mm + 0.005), 'g', 17) + '\n';
+            }
+        }
+        const QString file = m_dir.filePath(QStringLiteral("offset.csv"));
+        QVERIFY(writeFile(file, csv));
+        const QString learnStore = m_dir.filePath(QStringLiteral("learn.sqlite"));
+        for (int i = 0; i < 6; ++i) {
+            const auto added =
+                runCli({QStringLiteral("measurements"), QStringLiteral("add"), QStringLiteral("--csv"), file,
+                        QStringLiteral("--time-since-start"), QString::number(30 * i), QStringLiteral("--ambient"),
+                        QString::number(19 + i), QStringLiteral("--store"), learnStore, project});
+            QCOMPARE(added.exitCode, 0);
+        }
+        const auto learned = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-20"),
+                                     QStringLiteral("--json"), QStringLiteral("--store"), learnStore});
+        QVERIFY2(learned.exitCode == 0, qPrintable(learned.err));
+        const QJsonObject result = QJsonDocument::fromJson(learned.out.toUtf8()).object();
+        QCOMPARE(result.value(QStringLiteral("parts")).toInt(), 6);
+        const QJsonObject cv = result.value(QStringLiteral("cross_validation")).toObject();
+        QVERIFY2(std::abs(cv.value(QStringLiteral("physics_rms_um")).toDouble() - 5.0) < 1e-6, qPrintable(learned.out));
+        QVERIFY2(cv.value(QStringLiteral("learned_rms_um")).toDouble() < 0.1, qPrintable(learned.out));
+        // Too few parts to leave one out: named.
+        const auto none = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-30"),
+                                  QStringLiteral("--store"), learnStore});
+        QCOMPARE(none.exitCode, 1);
+        QVERIFY2(none.err.contains(QStringLiteral("haas-st-30 has 0 stored part")), qPrintable(none.err));
     }
 
     // A database that is not there: named by its address (without the password).

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/learn_command.h"
+
+#include "app/cli/cli_common.h"
+#include "app/cli/command_line.h"
+#include "core/data/data_library.h"
+#include "core/learning/measured_residuals.h"
+#include "core/measurements/measurement_store.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QJsonObject>
+#include <QTextStream>
+
+namespace tolturn {
+
+namespace {
+
+struct LearnCommand {
+    Q_DECLARE_TR_FUNCTIONS(LearnCommand)
+};
+
+QString um(double mm)
+{
+    return QString::number(1000.0 * mm, 'f', 2);
+}
+
+} // namespace
+
+int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption machine(QStringLiteral("machine"), LearnCommand::tr("The machine to learn."),
+                                     QStringLiteral("ID"));
+    const QCommandLineOption store(
+        QStringLiteral("store"),
+        LearnCommand::tr(
+            "The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).")
+            .arg(defaultStoreLocation().describe()),
+        QStringLiteral("STORE"));
+    const QCommandLineOption criterion(QStringLiteral("criterion"),
+                                       LearnCommand::tr("gcv (default) or bic: when the network stops growing."),
+                                       QStringLiteral("NAME"), QStringLiteral("gcv"));
+    const QCommandLineOption json(QStringLiteral("json"), LearnCommand::tr("Print the result as JSON."));
+    parser.addOptions({machine, store, criterion, json});
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("learn"), args, out, err); stop >= 0)
+        return stop;
+    const QString prefix = programName() + QStringLiteral(" learn: ");
+    const QString name = parser.value(criterion);
+    if (!parser.isSet(machine) || (name != QLatin1String("gcv") && name != QLatin1String("bic"))) {
+        err << prefix << LearnCommand::tr("give --machine ID, and --criterion gcv or bic") << '\n';
+        return kExitUsage;
+    }
+    QString error;
+    const std::optional<StoreLocation> location =
+        parser.isSet(store) ? storeLocationFromText(parser.value(store), &error) : defaultStoreLocation();
+    const auto history = location ? MeasurementStore::open(*location, &error) : nullptr;
+    if (!history) {
+        err << prefix << error << '\n';
+        return kExitProblems;
+    }
+    PartFilter filter;
+    filter.machineId = parser.value(machine);
+    const auto list = history->list(filter, &error);
+    if (!list) {
+        err << prefix << error << '\n';
+        return kExitProblems;
+    }
+    std::vector<MeasuredPart> parts;
+    for (const MeasuredPartSummary &s : *list) {
+        auto part = history->part(s.id, &error);
+        if (!part) {
+            err << prefix << error << '\n';
+            return kExitProblems;
+        }
+        parts.push_back(std::move(*part));
+    }
+    Diagnostics warnings;
+    const std::vector<ResidualSample> samples = residualSamples(parts, DataLibrary::builtIn(), warnings);
+    for (const Diagnostic &d : warnings)
+        err << d.toString() << '\n';
+    RbfTrainingOptions options;
+    options.criterion = name == QLatin1String("bic") ? RbfCriterion::Bic : RbfCriterion::Gcv;
+    const auto learned = learnResidual(samples, options, &error);
+    const auto cv = learned ? leaveOnePartOut(samples, options, &error) : std::nullopt;
+    if (!learned || !cv) {
+        err << prefix
+            << LearnCommand::tr("%1 has %2 stored part(s) with %3 usable point(s): %4")
+                   .arg(filter.machineId)
+                   .arg(parts.size())
+                   .arg(samples.size())
+                   .arg(error)
+            << '\n';
+        return kExitProblems;
+    }
+    const GeometricError &g = learned->geometric;
+    if (parser.isSet(json))
+        return printJson(QJsonObject{{QStringLiteral("machine"), filter.machineId},
+                                     {QStringLiteral("parts"), cv->parts},
+                                     {QStringLiteral("points"), cv->points},
+                                     {QStringLiteral("geometric"),
+                                      QJsonObject{{QStringLiteral("per_diameter_um_per_mm"), 1000.0 * g.perDiameter},
+                                                  {QStringLiteral("per_z_um_per_mm"), 1000.0 * g.perZ},
+                                                  {QStringLiteral("offset_um"), 1000.0 * g.offset_mm}}},
+                                     {QStringLiteral("network"),
+                                      QJsonObject{{QStringLiteral("nodes"), learned->network->nodes()},
+                                                  {QStringLiteral("tree_nodes"), learned->network->treeNodes},
+                                                  {QStringLiteral("radius_scale"), learned->network->radiusScale},
+                                                  {QStringLiteral("leave_one_out_rms_um"),
+                                                   1000.0 * learned->network->leaveOneOutRms}}},
+                                     {QStringLiteral("cross_validation"),
+                                      QJsonObject{{QStringLiteral("physics_rms_um"), 1000.0 * cv->physicsRms_mm},
+                                                  {QStringLiteral("learned_rms_um"), 1000.0 * cv->learnedRms_mm}}}},
+                         out, err, QStringLiteral("learn"));
+    out << LearnCommand::tr("%1: %2 parts, %3 measured points").arg(filter.machineId).arg(cv->parts).arg(cv->points)
+        << '\n'
+        << LearnCommand::tr("  geometric error: %1 µm per mm of diameter, %2 µm per mm along z (taper), %3 µm offset")
+               .arg(QString::number(1000.0 * g.perDiameter, 'g', 3), QString::number(1000.0 * g.perZ, 'g', 3),
+                    QString::number(1000.0 * g.offset_mm, 'f', 2))
+        << '\n'
+        << LearnCommand::tr("  network: %1 of %2 nodes kept (radius scale %3), leave-one-out RMS %4 µm")
+               .arg(learned->network->nodes())
+               .arg(learned->network->treeNodes)
+               .arg(learned->network->radiusScale)
+               .arg(um(learned->network->leaveOneOutRms))
+        << '\n'
+        << LearnCommand::tr("  parts predicted without having been learned from (leave one part out): physics alone "
+                            "%1 µm RMS, physics + learned %2 µm RMS")
+               .arg(um(cv->physicsRms_mm), um(cv->learnedRms_mm))
+        << '\n';
+    return kExitOk;
+}
+
+} // namespace tolturn
