@@ -466,6 +466,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Learn what a machine&apos;s measured parts show beyond the physics (Li &amp; Du): geometric error, hybrid RBF network, and how well parts not learned from are predicted with and without it.</source>
         <translation>Lernen, was die gemessenen Teile einer Maschine über die Physik hinaus zeigen (Li &amp; Du): geometrischer Fehler, hybrides RBF-Netz und wie gut nicht gelernte Teile mit und ohne es vorhergesagt werden.</translation>
     </message>
+    <message>
+        <source>With what was learned of %1 (model %2, %3 parts; parts left out predicted to %4 µm RMS, the physics alone %5 µm):</source>
+        <translation>Mit dem, was von %1 gelernt wurde (Modell %2, %3 Teile; weggelassene Teile auf %4 µm RMS vorhergesagt, die Physik allein %5 µm):</translation>
+    </message>
+    <message>
+        <source>radius error %1 … %2 µm</source>
+        <translation>Radiusfehler %1 … %2 µm</translation>
+    </message>
+    <message>
+        <source>Add what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Hinzufügen, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
+    </message>
+    <message>
+        <source>The measurement store for --learned (default: the per-user one).</source>
+        <translation>Der Messwertspeicher für --learned (Vorgabe: der des Benutzers).</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1196,6 +1212,29 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>  parts predicted without having been learned from (leave one part out): physics alone %1 µm RMS, physics + learned %2 µm RMS</source>
         <translation>  Teile vorhergesagt, ohne aus ihnen gelernt zu haben (ein Teil weggelassen): nur Physik %1 µm RMS, Physik + Gelerntes %2 µm RMS</translation>
     </message>
+    <message>
+        <source>Keep what was learned in the store as the machine&apos;s model, for the commands&apos; --learned.</source>
+        <translation>Das Gelernte im Speicher als Modell der Maschine behalten, für --learned der Befehle.</translation>
+    </message>
+    <message>
+        <source>kept as the model of %1 (number %2) in %3</source>
+        <translation>als Modell von %1 (Nummer %2) in %3 behalten</translation>
+    </message>
+    <message>
+        <source>nothing has been learned of %1 yet: run &apos;learn --machine %1 --save&apos;</source>
+        <translation>von %1 wurde noch nichts gelernt: führen Sie „learn --machine %1 --save“ aus</translation>
+    </message>
+    <message>
+        <source>the model %1 of %2 is damaged: %3</source>
+        <translation>das Modell %1 von %2 ist beschädigt: %3</translation>
+    </message>
+</context>
+<context>
+    <name>LearnedModelJson</name>
+    <message>
+        <source>the learned model has no valid &quot;%1&quot;</source>
+        <translation>das gelernte Modell hat kein gültiges „%1“</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredParts</name>
@@ -1381,6 +1420,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>&quot;%1&quot; is not a PostgreSQL address of the form postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</source>
         <translation>„%1“ ist keine PostgreSQL-Adresse der Form postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</translation>
+    </message>
+    <message>
+        <source>a learned model needs its machine and finite figures</source>
+        <translation>ein gelerntes Modell braucht seine Maschine und endliche Kennzahlen</translation>
+    </message>
+    <message>
+        <source>cannot keep the learned model</source>
+        <translation>das gelernte Modell kann nicht behalten werden</translation>
+    </message>
+    <message>
+        <source>cannot read the learned models</source>
+        <translation>die gelernten Modelle können nicht gelesen werden</translation>
     </message>
 </context>
 <context>

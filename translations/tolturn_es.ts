@@ -466,6 +466,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Learn what a machine&apos;s measured parts show beyond the physics (Li &amp; Du): geometric error, hybrid RBF network, and how well parts not learned from are predicted with and without it.</source>
         <translation>Aprender lo que las piezas medidas de una máquina muestran más allá de la física (Li &amp; Du): error geométrico, red RBF híbrida y lo bien que se predicen piezas no aprendidas con y sin ella.</translation>
     </message>
+    <message>
+        <source>With what was learned of %1 (model %2, %3 parts; parts left out predicted to %4 µm RMS, the physics alone %5 µm):</source>
+        <translation>Con lo aprendido de %1 (modelo %2, %3 piezas; piezas dejadas fuera predichas a %4 µm RMS, la física sola %5 µm):</translation>
+    </message>
+    <message>
+        <source>radius error %1 … %2 µm</source>
+        <translation>error de radio %1 … %2 µm</translation>
+    </message>
+    <message>
+        <source>Add what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Añadir lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
+    </message>
+    <message>
+        <source>The measurement store for --learned (default: the per-user one).</source>
+        <translation>El almacén de mediciones para --learned (por defecto: el del usuario).</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1196,6 +1212,29 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>  parts predicted without having been learned from (leave one part out): physics alone %1 µm RMS, physics + learned %2 µm RMS</source>
         <translation>  piezas predichas sin haber aprendido de ellas (dejando una fuera): solo física %1 µm RMS, física + aprendido %2 µm RMS</translation>
     </message>
+    <message>
+        <source>Keep what was learned in the store as the machine&apos;s model, for the commands&apos; --learned.</source>
+        <translation>Guardar lo aprendido en el almacén como modelo de la máquina, para --learned de las órdenes.</translation>
+    </message>
+    <message>
+        <source>kept as the model of %1 (number %2) in %3</source>
+        <translation>guardado como modelo de %1 (número %2) en %3</translation>
+    </message>
+    <message>
+        <source>nothing has been learned of %1 yet: run &apos;learn --machine %1 --save&apos;</source>
+        <translation>aún no se ha aprendido nada de %1: ejecute «learn --machine %1 --save»</translation>
+    </message>
+    <message>
+        <source>the model %1 of %2 is damaged: %3</source>
+        <translation>el modelo %1 de %2 está dañado: %3</translation>
+    </message>
+</context>
+<context>
+    <name>LearnedModelJson</name>
+    <message>
+        <source>the learned model has no valid &quot;%1&quot;</source>
+        <translation>el modelo aprendido no tiene un «%1» válido</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredParts</name>
@@ -1381,6 +1420,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>&quot;%1&quot; is not a PostgreSQL address of the form postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</source>
         <translation>«%1» no es una dirección PostgreSQL de la forma postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE[?host=SOCKET_FOLDER]</translation>
+    </message>
+    <message>
+        <source>a learned model needs its machine and finite figures</source>
+        <translation>un modelo aprendido necesita su máquina y cifras finitas</translation>
+    </message>
+    <message>
+        <source>cannot keep the learned model</source>
+        <translation>no se puede guardar el modelo aprendido</translation>
+    </message>
+    <message>
+        <source>cannot read the learned models</source>
+        <translation>no se pueden leer los modelos aprendidos</translation>
     </message>
 </context>
 <context>

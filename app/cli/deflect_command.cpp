@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "app/cli/learn_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -29,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -119,6 +121,66 @@ QJsonObject deviationJson(const QString &file, const Project &project, const Dev
             {QStringLiteral("faces"), faces}};
 }
 
+// The learned correction at every station and the predicted radius error with it; the model's
+// provenance and figures (docs/learning.md).
+void addLearned(QJsonObject &json, const Project &project, const DeviationResult &r, const LoadedModel &model)
+{
+    const std::vector<std::vector<double>> learned = learnedAtStations(project, r, model.model);
+    QJsonArray features = json.value(QStringLiteral("features")).toArray();
+    for (qsizetype f = 0; f < features.size() && f < static_cast<qsizetype>(learned.size()); ++f) {
+        QJsonObject feature = features.at(f).toObject();
+        QJsonArray stations = feature.value(QStringLiteral("stations")).toArray();
+        const std::vector<double> &values = learned[static_cast<std::size_t>(f)];
+        const std::vector<Station> &physics = r.features[static_cast<std::size_t>(f)].stations;
+        for (qsizetype i = 0; i < stations.size() && i < static_cast<qsizetype>(values.size()); ++i) {
+            QJsonObject st = stations.at(i).toObject();
+            const double v = values[static_cast<std::size_t>(i)];
+            st.insert(QStringLiteral("learned_um"), v * kUmPerMm);
+            st.insert(QStringLiteral("radius_error_with_learned_um"),
+                      (physics[static_cast<std::size_t>(i)].radiusError_mm + v) * kUmPerMm);
+            stations[i] = st;
+        }
+        feature[QStringLiteral("stations")] = stations;
+        features[f] = feature;
+    }
+    json[QStringLiteral("features")] = features;
+    json[QStringLiteral("learned")] =
+        QJsonObject{{QStringLiteral("machine"), model.record.machineId},
+                    {QStringLiteral("model"), model.record.id},
+                    {QStringLiteral("trained_at"), model.record.trainedAt.toUTC().toString(Qt::ISODateWithMs)},
+                    {QStringLiteral("parts"), model.record.parts},
+                    {QStringLiteral("points"), model.record.points},
+                    {QStringLiteral("physics_rms_um"), model.record.physicsRms_mm * kUmPerMm},
+                    {QStringLiteral("learned_rms_um"), model.record.learnedRms_mm * kUmPerMm}};
+}
+
+void printLearned(QTextStream &out, const Project &project, const DeviationResult &r, const LoadedModel &model)
+{
+    out << CommandLine::tr("With what was learned of %1 (model %2, %3 parts; parts left out predicted to %4 µm RMS, "
+                           "the physics alone %5 µm):")
+               .arg(model.record.machineId)
+               .arg(model.record.id)
+               .arg(model.record.parts)
+               .arg(QString::number(model.record.learnedRms_mm * kUmPerMm, 'f', 1),
+                    QString::number(model.record.physicsRms_mm * kUmPerMm, 'f', 1))
+        << '\n';
+    const std::vector<std::vector<double>> learned = learnedAtStations(project, r, model.model);
+    for (std::size_t f = 0; f < r.features.size() && f < learned.size(); ++f) {
+        const std::vector<Station> &st = r.features[f].stations;
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (std::size_t i = 0; i < st.size() && i < learned[f].size(); ++i) {
+            lo = std::min(lo, st[i].radiusError_mm + learned[f][i]);
+            hi = std::max(hi, st[i].radiusError_mm + learned[f][i]);
+        }
+        if (st.empty())
+            continue;
+        out << QStringLiteral("  %1  ").arg(r.features[f].featureId, -6)
+            << CommandLine::tr("radius error %1 … %2 µm")
+                   .arg(QString::number(lo * kUmPerMm, 'f', 1), QString::number(hi * kUmPerMm, 'f', 1))
+            << '\n';
+    }
+}
+
 void printDeviationText(QTextStream &out, const DeviationResult &r)
 {
     const TurningInputs &in = *r.inputs;
@@ -185,7 +247,13 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
                                   QStringLiteral("N"));
     const QCommandLineOption noInProcess(QStringLiteral("no-in-process"),
                                          CommandLine::tr("Ignore the stock still on the uncut side of the tool."));
-    parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess});
+    const QCommandLineOption learned(
+        QStringLiteral("learned"),
+        CommandLine::tr("Add what was learned of the machine from its measured parts (learn --save)."));
+    const QCommandLineOption store(QStringLiteral("store"),
+                                   CommandLine::tr("The measurement store for --learned (default: the per-user one)."),
+                                   QStringLiteral("STORE"));
+    parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess, learned, store});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("deflect"), args, out, err); stop >= 0)
@@ -248,9 +316,21 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
         err << file << ": " << d.toString() << '\n';
     if (!result.inputs)
         return kExitProblems;
-    if (parser.isSet(json))
-        return printJson(deviationJson(file, *project, result), out, err, QStringLiteral("deflect"));
+    std::optional<LoadedModel> model;
+    if (parser.isSet(learned)) {
+        model = loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("deflect"), err);
+        if (!model)
+            return kExitProblems;
+    }
+    if (parser.isSet(json)) {
+        QJsonObject result_json = deviationJson(file, *project, result);
+        if (model)
+            addLearned(result_json, *project, result, *model);
+        return printJson(result_json, out, err, QStringLiteral("deflect"));
+    }
     printDeviationText(out, result);
+    if (model)
+        printLearned(out, *project, result, *model);
     return kExitOk;
 }
 

@@ -4,11 +4,14 @@
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
 #include "core/data/data_library.h"
+#include "core/learning/learned_model_json.h"
 #include "core/learning/measured_residuals.h"
 #include "core/measurements/measurement_store.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDateTime>
+#include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
 
@@ -42,7 +45,10 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
                                        LearnCommand::tr("gcv (default) or bic: when the network stops growing."),
                                        QStringLiteral("NAME"), QStringLiteral("gcv"));
     const QCommandLineOption json(QStringLiteral("json"), LearnCommand::tr("Print the result as JSON."));
-    parser.addOptions({machine, store, criterion, json});
+    const QCommandLineOption save(
+        QStringLiteral("save"),
+        LearnCommand::tr("Keep what was learned in the store as the machine's model, for the commands' --learned."));
+    parser.addOptions({machine, store, criterion, json, save});
     if (const int stop = parseNamedCommand(parser, QStringLiteral("learn"), args, out, err); stop >= 0)
         return stop;
     const QString prefix = programName() + QStringLiteral(" learn: ");
@@ -93,6 +99,26 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
             << '\n';
         return kExitProblems;
     }
+    if (parser.isSet(save)) {
+        const LearnedModelRecord record{0,
+                                        filter.machineId,
+                                        QDateTime::currentDateTimeUtc(),
+                                        cv->parts,
+                                        cv->points,
+                                        cv->physicsRms_mm,
+                                        cv->learnedRms_mm,
+                                        QJsonDocument(learnedResidualJson(*learned)).toJson(QJsonDocument::Compact)};
+        const auto id = history->addLearnedModel(record, &error);
+        if (!id) {
+            err << prefix << error << '\n';
+            return kExitProblems;
+        }
+        err << LearnCommand::tr("kept as the model of %1 (number %2) in %3")
+                   .arg(filter.machineId)
+                   .arg(*id)
+                   .arg(history->location().describe())
+            << '\n';
+    }
     const GeometricError &g = learned->geometric;
     if (parser.isSet(json))
         return printJson(QJsonObject{{QStringLiteral("machine"), filter.machineId},
@@ -129,6 +155,33 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
                .arg(um(cv->physicsRms_mm), um(cv->learnedRms_mm))
         << '\n';
     return kExitOk;
+}
+
+std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId, const QString &command,
+                                            QTextStream &err)
+{
+    const QString prefix = programName() + QLatin1Char(' ') + command + QStringLiteral(": ");
+    QString error;
+    const std::optional<StoreLocation> location =
+        store.isEmpty() ? std::optional<StoreLocation>(defaultStoreLocation()) : storeLocationFromText(store, &error);
+    const auto history = location ? MeasurementStore::open(*location, &error) : nullptr;
+    const auto record = history ? history->latestLearnedModel(machineId, &error) : std::nullopt;
+    if (!record) {
+        err << prefix
+            << (error.isEmpty()
+                    ? LearnCommand::tr("nothing has been learned of %1 yet: run 'learn --machine %1 --save'")
+                          .arg(machineId)
+                    : error)
+            << '\n';
+        return std::nullopt;
+    }
+    const auto model = learnedResidualFromJson(QJsonDocument::fromJson(record->modelJson).object(), &error);
+    if (!model) {
+        err << prefix << LearnCommand::tr("the model %1 of %2 is damaged: %3").arg(record->id).arg(machineId).arg(error)
+            << '\n';
+        return std::nullopt;
+    }
+    return LoadedModel{*record, *model};
 }
 
 } // namespace tolturn

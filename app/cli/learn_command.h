@@ -2,12 +2,27 @@
 // tolturn-cli learn (docs/cli.md): what the measured parts of a machine teach beyond the physics.
 #pragma once
 
+#include "core/learning/measured_residuals.h"
+#include "core/measurements/measurement_store.h"
+
 #include <QStringList>
+
+#include <optional>
 
 class QTextStream;
 
 namespace tolturn {
 
 int runLearn(const QStringList &args, QTextStream &out, QTextStream &err);
+
+// The newest model learned of `machineId` in the store named `store` (empty: the default), for
+// the commands' --learned; empty after printing why on `err` (no store, no model, a damaged one).
+struct LoadedModel {
+    LearnedModelRecord record;
+    LearnedResidual model;
+};
+
+[[nodiscard]] std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId,
+                                                          const QString &command, QTextStream &err);
 
 } // namespace tolturn

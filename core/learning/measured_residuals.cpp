@@ -51,6 +51,30 @@ double spindleSpeedAt(const DeviationResult &d, const QString &featureId)
     return 0.0;
 }
 
+// The sample of a point on a feature, without its measured value: the programmed diameter, the
+// physics' radius error and Li & Du's inputs. Empty where the program has no target or the model
+// no station (a face, a feature not turned).
+std::optional<ResidualSample> sampleAt(const Project &project, const DeviationResult &d, const ProgramTargets &targets,
+                                       const QString &featureId, double z, double timeSinceStart_min, double ambient_C)
+{
+    const bool inner = std::any_of(project.part.inner.segments.begin(), project.part.inner.segments.end(),
+                                   [&featureId](const Segment &s) { return s.id == featureId; });
+    const auto target = targetRadius_mm(inner ? targets.inner : targets.outer, featureId, z);
+    const auto physics = physicsAt(d, featureId, z);
+    if (!target || !physics)
+        return std::nullopt;
+    const TurningInputs &in = *d.inputs;
+    ResidualSample s;
+    s.featureId = featureId;
+    s.inner = inner;
+    s.z_mm = z;
+    s.diameter_mm = 2.0 * *target;
+    s.physics_mm = *physics;
+    s.inputs << spindleSpeedAt(d, featureId), in.pass.feed_mm_rev, timeSinceStart_min, ambient_C,
+        in.forces.tangential_N * *target * 1e-3, in.forces.axial_N, in.forces.radial_N, z;
+    return s;
+}
+
 void addPartSamples(const MeasuredPart &part, const DataLibrary &data, std::vector<ResidualSample> &out,
                     Diagnostics &warnings)
 {
@@ -70,34 +94,22 @@ void addPartSamples(const MeasuredPart &part, const DataLibrary &data, std::vect
         return;
     }
     const ProgramTargets targets = programTargets(*read.project);
-    const TurningInputs &in = *d.inputs;
     for (const MeasuredPoint &p : part.points) {
-        const bool inner =
-            std::any_of(read.project->part.inner.segments.begin(), read.project->part.inner.segments.end(),
-                        [&p](const Segment &s) { return s.id == p.featureId; });
-        const auto target = targetRadius_mm(inner ? targets.inner : targets.outer, p.featureId, p.z_mm);
-        const auto physics = physicsAt(d, p.featureId, p.z_mm);
-        if (!target || !physics)
+        auto s = sampleAt(*read.project, d, targets, p.featureId, p.z_mm,
+                          part.timeSinceStart_min.value_or(d.inputs->timeSinceStart_min),
+                          part.ambient_C.value_or(d.inputs->ambientTemperature_C));
+        if (!s)
             continue; // a face or a feature the model does not turn: nothing to compare
-        ResidualSample s;
-        s.partId = part.id;
-        s.featureId = p.featureId;
-        s.z_mm = p.z_mm;
-        s.diameter_mm = 2.0 * *target;
+        s->partId = part.id;
         // As the physics model's radius error: machined radius − programmed radius. A radial
         // deviation is recorded as material left, which on a bore is a radius short.
-        const double materialLeft_mm = p.quantity == MeasuredQuantity::RadialDeviation ? p.value_mm : 0.0;
-        s.measured_mm = p.quantity == MeasuredQuantity::Diameter ? 0.5 * p.value_mm - *target
-                                                                 : (inner ? -materialLeft_mm : materialLeft_mm);
-        s.physics_mm = *physics;
-        s.inputs << spindleSpeedAt(d, p.featureId), in.pass.feed_mm_rev,
-            part.timeSinceStart_min.value_or(in.timeSinceStart_min), part.ambient_C.value_or(in.ambientTemperature_C),
-            in.forces.tangential_N * *target * 1e-3, in.forces.axial_N, in.forces.radial_N, p.z_mm;
-        out.push_back(s);
+        const double target = 0.5 * s->diameter_mm;
+        s->measured_mm = p.quantity == MeasuredQuantity::Diameter ? 0.5 * p.value_mm - target
+                                                                  : (s->inner ? -p.value_mm : p.value_mm);
+        out.push_back(*s);
     }
 }
 
-// The plane fitted to the residuals less `explained` (what the network predicts; empty: nothing).
 std::optional<GeometricError> fitGeometric(const std::vector<ResidualSample> &samples,
                                            const std::vector<double> &explained)
 {
@@ -223,6 +235,25 @@ std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample>
     cv.physicsRms_mm = std::sqrt(physics / cv.points);
     cv.learnedRms_mm = std::sqrt(learned / cv.points);
     return cv;
+}
+
+std::vector<std::vector<double>> learnedAtStations(const Project &project, const DeviationResult &deviation,
+                                                   const LearnedResidual &learned)
+{
+    std::vector<std::vector<double>> out;
+    if (!deviation.inputs)
+        return out;
+    const ProgramTargets targets = programTargets(project);
+    for (const FeatureDeviation &f : deviation.features) {
+        std::vector<double> feature;
+        for (const Station &st : f.stations) {
+            const auto s = sampleAt(project, deviation, targets, f.featureId, st.z_mm,
+                                    deviation.inputs->timeSinceStart_min, deviation.inputs->ambientTemperature_C);
+            feature.push_back(s ? learned.predict_mm(*s) : 0.0);
+        }
+        out.push_back(std::move(feature));
+    }
+    return out;
 }
 
 } // namespace tolturn

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/data/data_library.h"
+#include "core/deviation/deviation_model.h"
 #include "core/learning/hybrid_rbf.h"
 #include "core/measurements/measured_part.h"
 
@@ -19,6 +20,7 @@ namespace tolturn {
 struct ResidualSample {
     qint64 partId = 0;
     QString featureId;
+    bool inner = false;
     double z_mm = 0.0;
     double diameter_mm = 0.0; // the programmed diameter there
     double measured_mm = 0.0; // measured radius − programmed radius
@@ -73,5 +75,10 @@ struct CrossValidation {
 
 [[nodiscard]] std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample> &samples,
                                                              const RbfTrainingOptions &options, QString *error);
+
+// What was learned at every station of a deviation result of `project` (its features in order,
+// their stations in order), in mm of radius: the learned correction to each predicted radius error.
+[[nodiscard]] std::vector<std::vector<double>>
+learnedAtStations(const Project &project, const DeviationResult &deviation, const LearnedResidual &learned);
 
 } // namespace tolturn

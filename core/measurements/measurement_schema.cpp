@@ -54,6 +54,17 @@ QStringList version1(const QSqlDatabase &db)
                            "(part_id, seq))")};
 }
 
+// Version 3: what was learned of each machine, newest last (docs/learning.md).
+QStringList version3(const QSqlDatabase &db)
+{
+    const QString key =
+        isPostgres(db) ? QStringLiteral("BIGSERIAL PRIMARY KEY") : QStringLiteral("INTEGER PRIMARY KEY");
+    return {QStringLiteral("CREATE TABLE learned_models (id %1, machine_id TEXT NOT NULL, trained_at TEXT NOT NULL, "
+                           "parts INTEGER NOT NULL, points INTEGER NOT NULL, physics_rms_mm DOUBLE PRECISION NOT "
+                           "NULL, learned_rms_mm DOUBLE PRECISION NOT NULL, model_json TEXT NOT NULL)")
+                .arg(key)};
+}
+
 QStringList version2()
 {
     return {QStringLiteral("ALTER TABLE measured_parts ADD COLUMN profile_sha256 TEXT"),
@@ -91,7 +102,7 @@ bool fillProfileChecksums(QSqlDatabase &db, QString *error)
 bool step(QSqlDatabase &db, int to, QString *error)
 {
     QSqlQuery q(db);
-    const QStringList statements = to == 1 ? version1(db) : version2();
+    const QStringList statements = to == 1 ? version1(db) : to == 2 ? version2() : version3(db);
     for (const QString &sql : statements) {
         if (!run(q, sql, error))
             return false;

@@ -15,7 +15,9 @@ namespace tolturn::measurements {
 //  2: measured_parts.profile_sha256, the checksum of the snapshot's profile (learning takes the
 //     parts of one profile; a part whose profile no longer matches the project is told apart
 //     without parsing every snapshot), filled for the parts already stored; and an index on
-//     (machine_id, measured_at) for the listing of a machine's parts, newest first.
+//     (machine_id, measured_at) for the listing of a machine's parts, newest first;
+//  3: learned_models, what `learn --save` keeps of a machine (the model as JSON, with the parts,
+//     points and cross-validation figures it came with).
 // A database newer than `target` is refused.
 [[nodiscard]] bool migrateSchema(QSqlDatabase &db, int target, QString *error);
 

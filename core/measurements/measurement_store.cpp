@@ -344,4 +344,50 @@ bool MeasurementStore::remove(qint64 id, QString *error)
     return true;
 }
 
+std::optional<qint64> MeasurementStore::addLearnedModel(const LearnedModelRecord &model, QString *error)
+{
+    QSqlQuery q(db());
+    if (model.machineId.isEmpty() || !std::isfinite(model.physicsRms_mm) || !std::isfinite(model.learnedRms_mm)) {
+        if (error)
+            *error = MeasurementStoreText::tr("a learned model needs its machine and finite figures");
+        return std::nullopt;
+    }
+    if (!prepareAndRun(q,
+                       QStringLiteral("INSERT INTO learned_models (machine_id, trained_at, parts, points, "
+                                      "physics_rms_mm, learned_rms_mm, model_json) VALUES (?, ?, ?, ?, ?, ?, ?)"),
+                       {model.machineId, timeText(model.trainedAt), model.parts, model.points, model.physicsRms_mm,
+                        model.learnedRms_mm, QString::fromUtf8(model.modelJson)})) {
+        if (error)
+            *error = failure(MeasurementStoreText::tr("cannot keep the learned model"), q.lastError());
+        return std::nullopt;
+    }
+    return q.lastInsertId().toLongLong();
+}
+
+std::optional<LearnedModelRecord> MeasurementStore::latestLearnedModel(const QString &machineId, QString *error) const
+{
+    QSqlQuery q(db());
+    if (!prepareAndRun(q,
+                       QStringLiteral("SELECT id, trained_at, parts, points, physics_rms_mm, learned_rms_mm, "
+                                      "model_json FROM learned_models WHERE machine_id = ? ORDER BY trained_at DESC, "
+                                      "id DESC LIMIT 1"),
+                       {machineId})) {
+        if (error)
+            *error = failure(MeasurementStoreText::tr("cannot read the learned models"), q.lastError());
+        return std::nullopt;
+    }
+    if (!q.next())
+        return std::nullopt;
+    LearnedModelRecord r;
+    r.id = q.value(0).toLongLong();
+    r.machineId = machineId;
+    r.trainedAt = QDateTime::fromString(q.value(1).toString(), Qt::ISODateWithMs);
+    r.parts = q.value(2).toInt();
+    r.points = q.value(3).toInt();
+    r.physicsRms_mm = q.value(4).toDouble();
+    r.learnedRms_mm = q.value(5).toDouble();
+    r.modelJson = q.value(6).toString().toUtf8();
+    return r;
+}
+
 } // namespace tolturn

@@ -39,13 +39,25 @@ struct StoreLocation {
 
 // The schema version this program writes; older stores are migrated when opened
 // (measurement_schema.h), newer ones are refused.
-inline constexpr int kMeasurementSchemaVersion = 2;
+inline constexpr int kMeasurementSchemaVersion = 3;
 
 struct PartFilter {
     QString machineId; // empty: every machine
     QString text;      // in the part's name, who measured or how; empty: any
     int limit = -1;    // -1: all
     int offset = 0;
+};
+
+// What was learned of a machine from its parts (core/learning), as kept in the store.
+struct LearnedModelRecord {
+    qint64 id = 0;
+    QString machineId;
+    QDateTime trainedAt; // UTC
+    int parts = 0;
+    int points = 0;
+    double physicsRms_mm = 0.0; // leave one part out, the physics alone
+    double learnedRms_mm = 0.0; // and with what was learned
+    QByteArray modelJson;       // learnedResidualJson()
 };
 
 // The measurement history. Every write is one transaction: a part is stored with all its points
@@ -71,6 +83,11 @@ public:
     [[nodiscard]] std::optional<qint64> count(const PartFilter &filter, QString *error) const;
     // False with `error` when there is no such part or the store refused.
     bool remove(qint64 id, QString *error);
+
+    // Keeps a learned model; its new id, or empty with `error`.
+    [[nodiscard]] std::optional<qint64> addLearnedModel(const LearnedModelRecord &model, QString *error);
+    // The newest learned model of a machine; empty without `error` when there is none.
+    [[nodiscard]] std::optional<LearnedModelRecord> latestLearnedModel(const QString &machineId, QString *error) const;
 
 private:
     MeasurementStore(StoreLocation location, QString connection);

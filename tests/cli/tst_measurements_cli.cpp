@@ -165,6 +165,39 @@ private Q_SLOTS:
         const QJsonObject cv = result.value(QStringLiteral("cross_validation")).toObject();
         QVERIFY2(std::abs(cv.value(QStringLiteral("physics_rms_um")).toDouble() - 5.0) < 1e-6, qPrintable(learned.out));
         QVERIFY2(cv.value(QStringLiteral("learned_rms_um")).toDouble() < 0.1, qPrintable(learned.out));
+        // Nothing kept yet: --learned says so; kept, the prediction adds the 5 µm at every station.
+        const QStringList deflect{QStringLiteral("deflect"),
+                                  QStringLiteral("--learned"),
+                                  QStringLiteral("--json"),
+                                  QStringLiteral("--store"),
+                                  learnStore,
+                                  project};
+        const auto before = runCli(deflect);
+        QCOMPARE(before.exitCode, 1);
+        QVERIFY2(before.err.contains(QStringLiteral("nothing has been learned of haas-st-20 yet")),
+                 qPrintable(before.err));
+        const auto saved = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-20"),
+                                   QStringLiteral("--save"), QStringLiteral("--store"), learnStore});
+        QVERIFY2(saved.exitCode == 0 && saved.err.contains(QStringLiteral("kept as the model of haas-st-20")),
+                 qPrintable(saved.err));
+        const auto after = runCli(deflect);
+        QVERIFY2(after.exitCode == 0, qPrintable(after.err));
+        const QJsonObject deflected = QJsonDocument::fromJson(after.out.toUtf8()).object();
+        QCOMPARE(deflected.value(QStringLiteral("learned")).toObject().value(QStringLiteral("parts")).toInt(), 6);
+        int checked = 0;
+        for (const QJsonValue &f : deflected.value(QStringLiteral("features")).toArray()) {
+            if (f[QStringLiteral("type")].toString() != QLatin1String("cylinder"))
+                continue;
+            for (const QJsonValue &st : f[QStringLiteral("stations")].toArray()) {
+                QVERIFY2(std::abs(st[QStringLiteral("learned_um")].toDouble() - 5.0) < 0.1,
+                         qPrintable(QString::number(st[QStringLiteral("learned_um")].toDouble())));
+                QCOMPARE(st[QStringLiteral("radius_error_with_learned_um")].toDouble(),
+                         st[QStringLiteral("radius_error_um")].toDouble() +
+                             st[QStringLiteral("learned_um")].toDouble());
+                ++checked;
+            }
+        }
+        QVERIFY(checked > 20);
         // Too few parts to leave one out: named.
         const auto none = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-30"),
                                   QStringLiteral("--store"), learnStore});

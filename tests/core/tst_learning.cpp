@@ -6,9 +6,11 @@
 #include "core/io/project_file.h"
 #include "core/io/project_json.h"
 #include "core/learning/hybrid_rbf.h"
+#include "core/learning/learned_model_json.h"
 #include "core/learning/measured_residuals.h"
 #include "core/tolerance/target_contour.h"
 
+#include <QJsonArray>
 #include <QTest>
 
 #include <cmath>
@@ -260,6 +262,32 @@ private Q_SLOTS:
         QVERIFY2(cv->learnedRms_mm < 1.05 * cv->physicsRms_mm,
                  qPrintable(QStringLiteral("%1 against %2 mm").arg(cv->learnedRms_mm).arg(cv->physicsRms_mm)));
         QVERIFY(cv->physicsRms_mm < 1.2 * truth.noise_mm);
+    }
+
+    // What is learned survives the store: the same predictions after JSON and back; a damaged
+    // model is refused by field.
+    void learnedModelRoundTrips()
+    {
+        Diagnostics warnings;
+        const auto samples = residualSamples(measuredParts(8, Truth{}, 21), DataLibrary::builtIn(), warnings);
+        QString error;
+        const auto learned = learnResidual(samples, {}, &error);
+        QVERIFY2(learned.has_value(), qPrintable(error));
+        const QJsonObject json = learnedResidualJson(*learned);
+        const auto back = learnedResidualFromJson(json, &error);
+        QVERIFY2(back.has_value(), qPrintable(error));
+        for (const ResidualSample &s : samples)
+            QCOMPARE(back->predict_mm(s), learned->predict_mm(s));
+        QJsonObject damaged = json;
+        QJsonObject network = damaged.value(QStringLiteral("network")).toObject();
+        QJsonArray radii = network.value(QStringLiteral("radii")).toArray();
+        QJsonArray first = radii.at(0).toArray();
+        first[0] = -1.0;
+        radii[0] = first;
+        network[QStringLiteral("radii")] = radii;
+        damaged[QStringLiteral("network")] = network;
+        QVERIFY(!learnedResidualFromJson(damaged, &error).has_value());
+        QVERIFY2(error.contains(QStringLiteral("network.radii")), qPrintable(error));
     }
 
     void refusesTooFewOrBadSamples()

@@ -83,7 +83,8 @@ class TestMeasurementStore : public QObject {
         db.setUserName(l.user);
         if (db.open()) {
             QSqlQuery q(db);
-            q.exec(QStringLiteral("DROP TABLE IF EXISTS measured_points, measured_parts, tolturn_schema"));
+            q.exec(
+                QStringLiteral("DROP TABLE IF EXISTS learned_models, measured_points, measured_parts, tolturn_schema"));
             db.close();
         }
         db = QSqlDatabase();
@@ -292,7 +293,7 @@ private Q_SLOTS:
         QSqlDatabase::removeDatabase(QStringLiteral("v1"));
         auto store = openStore(l);
         QVERIFY(store);
-        QCOMPARE(store->schemaVersion(), 2);
+        QCOMPARE(store->schemaVersion(), kMeasurementSchemaVersion);
         QString error;
         const auto list = store->list({}, &error);
         QVERIFY2(list.has_value(), qPrintable(error));
@@ -321,7 +322,7 @@ private Q_SLOTS:
         }
         QString error;
         QVERIFY(!MeasurementStore::open(l, &error));
-        QVERIFY2(error.contains(QStringLiteral("schema version 99, newer than this program's 2")), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("schema version 99, newer than this program's 3")), qPrintable(error));
     }
 
     // Two writers at once, each with its own connection (as two programs would): every part
@@ -372,6 +373,36 @@ private Q_SLOTS:
         QVERIFY2(id.has_value(), qPrintable(problems.empty() ? QString() : problems.back().toString()));
         QString error;
         QVERIFY(store->part(*id, &error)->measuredBy.isEmpty());
+    }
+
+    // Learned models are kept per machine; the newest is the one in use.
+    void keepsLearnedModels()
+    {
+        auto store = openStore(freshLocation());
+        QVERIFY(store);
+        QString error;
+        QVERIFY(!store->latestLearnedModel(QStringLiteral("haas-st-20"), &error).has_value());
+        QVERIFY(error.isEmpty());
+        LearnedModelRecord older{0,
+                                 QStringLiteral("haas-st-20"),
+                                 QDateTime(QDate(2026, 11, 1), QTime(9, 0), Qt::UTC),
+                                 12,
+                                 144,
+                                 0.004,
+                                 0.0012,
+                                 QByteArray("{\"geometric\": 1}")};
+        LearnedModelRecord newer = older;
+        newer.trainedAt = older.trainedAt.addDays(7);
+        newer.parts = 20;
+        QVERIFY(store->addLearnedModel(newer, &error).has_value());
+        QVERIFY(store->addLearnedModel(older, &error).has_value());
+        const auto latest = store->latestLearnedModel(QStringLiteral("haas-st-20"), &error);
+        QVERIFY2(latest.has_value(), qPrintable(error));
+        QCOMPARE(latest->parts, 20);
+        QCOMPARE(latest->trainedAt, newer.trainedAt);
+        QCOMPARE(latest->modelJson, older.modelJson);
+        QCOMPARE(latest->learnedRms_mm, 0.0012);
+        QVERIFY(!store->latestLearnedModel(QStringLiteral("haas-st-30"), &error).has_value());
     }
 
     // A store as a user writes it: a file, or a PostgreSQL address as libpq takes it.
