@@ -479,8 +479,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Hinzufügen, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
     </message>
     <message>
-        <source>The measurement store for --learned (default: the per-user one).</source>
-        <translation>Der Messwertspeicher für --learned (Vorgabe: der des Benutzers).</translation>
+        <source>The measurement store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
+        <translation>Der Messwertspeicher: eine SQLite-Datei oder postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (Vorgabe: %1).</translation>
     </message>
 </context>
 <context>
@@ -1436,10 +1436,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
 </context>
 <context>
     <name>MeasurementsCommand</name>
-    <message>
-        <source>The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
-        <translation>Der Speicher: eine SQLite-Datei oder postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (Vorgabe: %1).</translation>
-    </message>
     <message>
         <source>--%1 takes a number, not &quot;%2&quot;</source>
         <translation>--%1 erwartet eine Zahl, nicht „%2“</translation>

@@ -479,8 +479,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Añadir lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
     </message>
     <message>
-        <source>The measurement store for --learned (default: the per-user one).</source>
-        <translation>El almacén de mediciones para --learned (por defecto: el del usuario).</translation>
+        <source>The measurement store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
+        <translation>El almacén de mediciones: un archivo SQLite o postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (por defecto: %1).</translation>
     </message>
 </context>
 <context>
@@ -1436,10 +1436,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
 </context>
 <context>
     <name>MeasurementsCommand</name>
-    <message>
-        <source>The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
-        <translation>El almacén: un archivo SQLite o postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (por defecto: %1).</translation>
-    </message>
     <message>
         <source>--%1 takes a number, not &quot;%2&quot;</source>
         <translation>--%1 espera un número, no «%2»</translation>

@@ -4,7 +4,9 @@
 #include "app/cli/command_line.h"
 #include "core/common/atomic_file.h"
 #include "core/io/project_file.h"
+#include "core/measurements/measurement_store.h"
 
+#include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileDevice>
@@ -140,6 +142,27 @@ std::optional<CuttingForces> parseLoad(const QString &text)
             return std::nullopt;
     }
     return CuttingForces{v[1], v[2], v[0]};
+}
+
+QCommandLineOption measurementStoreOption()
+{
+    return {QStringLiteral("store"),
+            QCoreApplication::translate("CommandLine",
+                                        "The measurement store: an SQLite file, or "
+                                        "postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).")
+                .arg(defaultStoreLocation().describe()),
+            QStringLiteral("STORE")};
+}
+
+std::unique_ptr<MeasurementStore> openMeasurementStore(const QString &store, const QString &prefix, QTextStream &err)
+{
+    QString error;
+    const std::optional<StoreLocation> location =
+        store.isEmpty() ? std::optional<StoreLocation>(defaultStoreLocation()) : storeLocationFromText(store, &error);
+    std::unique_ptr<MeasurementStore> opened = location ? MeasurementStore::open(*location, &error) : nullptr;
+    if (!opened)
+        err << prefix << error << '\n';
+    return opened;
 }
 
 } // namespace tolturn

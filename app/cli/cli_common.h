@@ -10,12 +10,16 @@
 #include <QString>
 #include <QStringList>
 
+#include <memory>
 #include <optional>
 
+class QCommandLineOption;
 class QCommandLineParser;
 class QTextStream;
 
 namespace tolturn {
+
+class MeasurementStore;
 
 // What every tolturn-cli command shares.
 [[nodiscard]] QString programName();
@@ -59,5 +63,13 @@ inline constexpr double kMaxLoad_N = 1e6;
 // `err`, and the exit code for problems is returned; kExitOk otherwise. No `null` leaves with
 // exit code 0.
 [[nodiscard]] int printJson(const QJsonValue &result, QTextStream &out, QTextStream &err, const QString &command);
+
+// --store STORE of the commands that use the measurement history (docs/cli.md, measurements).
+[[nodiscard]] QCommandLineOption measurementStoreOption();
+
+// The measurement store named by `store` (an SQLite file or a postgresql:// address; empty: the
+// per-user file), opened; null after printing why on `err` after `prefix`.
+[[nodiscard]] std::unique_ptr<MeasurementStore> openMeasurementStore(const QString &store, const QString &prefix,
+                                                                     QTextStream &err);
 
 } // namespace tolturn

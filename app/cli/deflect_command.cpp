@@ -250,9 +250,7 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption learned(
         QStringLiteral("learned"),
         CommandLine::tr("Add what was learned of the machine from its measured parts (learn --save)."));
-    const QCommandLineOption store(QStringLiteral("store"),
-                                   CommandLine::tr("The measurement store for --learned (default: the per-user one)."),
-                                   QStringLiteral("STORE"));
+    const QCommandLineOption store = measurementStoreOption();
     parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess, learned, store});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));

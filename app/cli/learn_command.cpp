@@ -57,14 +57,10 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
         err << prefix << LearnCommand::tr("give --machine ID, and --criterion gcv or bic") << '\n';
         return kExitUsage;
     }
-    QString error;
-    const std::optional<StoreLocation> location =
-        parser.isSet(store) ? storeLocationFromText(parser.value(store), &error) : defaultStoreLocation();
-    const auto history = location ? MeasurementStore::open(*location, &error) : nullptr;
-    if (!history) {
-        err << prefix << error << '\n';
+    const auto history = openMeasurementStore(parser.value(store), prefix, err);
+    if (!history)
         return kExitProblems;
-    }
+    QString error;
     PartFilter filter;
     filter.machineId = parser.value(machine);
     const auto list = history->list(filter, &error);
@@ -161,11 +157,11 @@ std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString 
                                             QTextStream &err)
 {
     const QString prefix = programName() + QLatin1Char(' ') + command + QStringLiteral(": ");
+    const auto history = openMeasurementStore(store, prefix, err);
+    if (!history)
+        return std::nullopt;
     QString error;
-    const std::optional<StoreLocation> location =
-        store.isEmpty() ? std::optional<StoreLocation>(defaultStoreLocation()) : storeLocationFromText(store, &error);
-    const auto history = location ? MeasurementStore::open(*location, &error) : nullptr;
-    const auto record = history ? history->latestLearnedModel(machineId, &error) : std::nullopt;
+    const auto record = history->latestLearnedModel(machineId, &error);
     if (!record) {
         err << prefix
             << (error.isEmpty()

@@ -32,26 +32,9 @@ QString prefix(const QString &action)
     return programName() + QStringLiteral(" measurements ") + action + QStringLiteral(": ");
 }
 
-// The options every action takes: where the store is.
-QCommandLineOption storeOption()
-{
-    return {QStringLiteral("store"),
-            MeasurementsCommand::tr("The store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE "
-                                    "(default: %1).")
-                .arg(defaultStoreLocation().describe()),
-            QStringLiteral("STORE")};
-}
-
 std::unique_ptr<MeasurementStore> openStore(const QCommandLineParser &parser, const QString &action, QTextStream &err)
 {
-    QString error;
-    std::optional<StoreLocation> location = parser.isSet(QStringLiteral("store"))
-                                                ? storeLocationFromText(parser.value(QStringLiteral("store")), &error)
-                                                : std::optional<StoreLocation>(defaultStoreLocation());
-    std::unique_ptr<MeasurementStore> store = location ? MeasurementStore::open(*location, &error) : nullptr;
-    if (!store)
-        err << prefix(action) << error << '\n';
-    return store;
+    return openMeasurementStore(parser.value(QStringLiteral("store")), prefix(action), err);
 }
 
 std::optional<double> numberOption(const QCommandLineParser &parser, const QString &name, const QString &action,
@@ -96,7 +79,7 @@ int runAdd(const QStringList &args, QTextStream &out, QTextStream &err)
     QCommandLineParser parser;
     const QString action = QStringLiteral("add");
     parser.addOptions(
-        {storeOption(),
+        {measurementStoreOption(),
          {QStringLiteral("csv"),
           MeasurementsCommand::tr("The measured points (feature, z_mm, diameter_mm or "
                                   "radial_deviation_um)."),
@@ -180,7 +163,7 @@ int runList(const QStringList &args, QTextStream &out, QTextStream &err)
     QCommandLineParser parser;
     const QString action = QStringLiteral("list");
     parser.addOptions(
-        {storeOption(),
+        {measurementStoreOption(),
          {QStringLiteral("machine"), MeasurementsCommand::tr("Only the parts of this machine."), QStringLiteral("ID")},
          {QStringLiteral("text"), MeasurementsCommand::tr("Only parts with this in their name, measurer or method."),
           QStringLiteral("TEXT")},
@@ -236,7 +219,7 @@ int runRemove(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
     const QString action = QStringLiteral("remove");
-    parser.addOption(storeOption());
+    parser.addOption(measurementStoreOption());
     parser.addPositionalArgument(QStringLiteral("id"), MeasurementsCommand::tr("The part's number."),
                                  QStringLiteral("ID"));
     if (const int stop = parseCommand(parser, QStringLiteral("measurements remove"),
@@ -268,7 +251,7 @@ int runExport(const QStringList &args, QTextStream &out, QTextStream &err)
     QCommandLineParser parser;
     const QString action = QStringLiteral("export");
     parser.addOptions(
-        {storeOption(),
+        {measurementStoreOption(),
          {QStringLiteral("machine"), MeasurementsCommand::tr("Every part of this machine."), QStringLiteral("ID")},
          {{QStringLiteral("o"), QStringLiteral("output")},
           MeasurementsCommand::tr("The CSV file to write ('-', the default: standard output)."),
