@@ -44,7 +44,7 @@ CadFileController::CadFileController(ProjectDocument &document, FileController &
         if (m_progressUpdates == 0 && std::exchange(m_finishPending, false))
             QMetaObject::invokeMethod(this, &CadFileController::readFinished, Qt::QueuedConnection);
         if (!goOn)
-            m_reader.cancel();
+            cancelReading();
     });
 }
 
@@ -68,11 +68,18 @@ void CadFileController::importFile(const QString &path)
     startReading({});
 }
 
+void CadFileController::cancelReading()
+{
+    m_cancelRequested = true; // also when the child has already finished and its result waits
+    m_reader.cancel();
+}
+
 void CadFileController::startReading(const CadImportOptions &options)
 {
+    m_cancelRequested = false;
     m_progress = m_prompts.startProgress(tr("Reading %1…").arg(QFileInfo(m_path).fileName()));
     if (m_progress)
-        m_progress->onCancel([this] { m_reader.cancel(); }); // the child process ends at once
+        m_progress->onCancel([this] { cancelReading(); }); // the child process ends at once
     m_reader.start(m_path, options);
 }
 
@@ -85,7 +92,7 @@ void CadFileController::readFinished()
     m_progress.reset();
     const CadImportResult result = m_reader.result();
     const QString name = QFileInfo(m_path).fileName();
-    if (result.cancelled) {
+    if (result.cancelled || m_cancelRequested) {
         Q_EMIT statusMessage(tr("Import of %1 cancelled; the project is unchanged.").arg(name));
         Q_EMIT importFinished(false, tr("Import of %1 cancelled.").arg(name), {});
         return;

@@ -54,7 +54,7 @@ public:
 
     [[nodiscard]] bool isImporting() const { return m_reader.isRunning(); }
 
-    void cancelImport() { m_reader.cancel(); }
+    void cancelImport() { cancelReading(); }
 
     bool exportStep();
     bool exportStepTo(const QString &path);
@@ -67,6 +67,7 @@ Q_SIGNALS:
 
 private:
     void startReading(const CadImportOptions &options);
+    void cancelReading();
     void readFinished();
     void openImported(const CadImportResult &result);
 
@@ -76,9 +77,10 @@ private:
     CadReaderProcess m_reader;
     std::unique_ptr<TaskProgress> m_progress;
     QString m_path;
-    bool m_confirmed = false;     // the second read, with the planner's choice
-    int m_progressUpdates = 0;    // m_progress->update() calls running (they may run the event loop)
-    bool m_finishPending = false; // the reader finished during one of them
+    bool m_confirmed = false;       // the second read, with the planner's choice
+    int m_progressUpdates = 0;      // m_progress->update() calls running (they may run the event loop)
+    bool m_finishPending = false;   // the reader finished during one of them
+    bool m_cancelRequested = false; // the planner cancelled this read
 };
 
 } // namespace tolturn

@@ -10,6 +10,9 @@
 #include <QJsonDocument>
 #include <QStandardPaths>
 
+#include <algorithm>
+#include <cmath>
+
 namespace tolturn {
 
 namespace {
@@ -29,10 +32,12 @@ CadReaderProcess::CadReaderProcess(QObject *parent) : QObject(parent) {}
 
 CadReaderProcess::~CadReaderProcess()
 {
-    if (isRunning()) {
+    if (m_process) {
         m_process->disconnect(this);
-        m_process->kill();
-        m_process->waitForFinished(5000);
+        if (isRunning()) {
+            m_process->kill();
+            m_process->waitForFinished(5000);
+        }
     }
 }
 
@@ -54,6 +59,18 @@ void CadReaderProcess::setDefaultProgram(const QString &program)
 bool CadReaderProcess::isRunning() const
 {
     return m_process && m_process->state() != QProcess::NotRunning;
+}
+
+void CadReaderProcess::retireProcess()
+{
+    if (!m_process)
+        return;
+    m_process->disconnect(this);
+    if (m_process->state() != QProcess::NotRunning) {
+        m_process->kill();
+        m_process->waitForFinished(5000);
+    }
+    m_process.release()->deleteLater();
 }
 
 void CadReaderProcess::start(const QString &path, const CadImportOptions &options)
@@ -84,11 +101,18 @@ void CadReaderProcess::start(const QString &path, const CadImportOptions &option
     if (options.flip)
         args << QStringLiteral("--flip");
     args << QStringLiteral("--") << path;
+    // The previous child's QProcess may be the sender of the finished() this is called from (a
+    // second read with the planner's choice): let it go once control is back in the event loop.
+    retireProcess();
     m_process = std::make_unique<QProcess>();
     connect(m_process.get(), &QProcess::readyReadStandardError, this, &CadReaderProcess::readProgress);
     connect(m_process.get(), &QProcess::finished, this, &CadReaderProcess::processFinished);
     connect(m_process.get(), &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
-        if (error == QProcess::FailedToStart)
+        if (error == QProcess::FailedToStart && m_cancelled) {
+            m_result = {};
+            m_result.cancelled = true;
+            QMetaObject::invokeMethod(this, &CadReaderProcess::finished, Qt::QueuedConnection);
+        } else if (error == QProcess::FailedToStart)
             failed(tr("The CAD reader '%1' could not be started: %2")
                        .arg(QDir::toNativeSeparators(m_process->program()), m_process->errorString()));
     });
@@ -106,14 +130,16 @@ void CadReaderProcess::cancel()
 void CadReaderProcess::readProgress()
 {
     m_pending += m_process->readAllStandardError();
+    if (m_pending.size() > kMaxOutputBytes) // a line without end: not the reader's output
+        m_pending = m_pending.right(kMaxOutputBytes);
     qsizetype end = 0;
     while ((end = m_pending.indexOf('\n')) >= 0) {
         const QByteArray line = m_pending.left(end).trimmed();
         m_pending.remove(0, end + 1);
         bool ok = false;
         const double fraction = line.startsWith("progress ") ? line.mid(9).toDouble(&ok) : 0.0;
-        if (ok)
-            Q_EMIT progress(fraction);
+        if (ok && std::isfinite(fraction))
+            Q_EMIT progress(std::clamp(fraction, 0.0, 1.0));
         else if (m_stderr.size() < kMaxOutputBytes)
             m_stderr += line + '\n';
     }

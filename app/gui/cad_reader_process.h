@@ -40,6 +40,7 @@ Q_SIGNALS:
     void finished();
 
 private:
+    void retireProcess();
     void readProgress();
     void processFinished(int exitCode, QProcess::ExitStatus status);
     void failed(const QString &message);

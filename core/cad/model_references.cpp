@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cad/model_references.h"
 
+#include <IGESDraw_LabelDisplay.hxx>
 #include <Interface_EntityIterator.hxx>
 #include <Interface_InterfaceModel.hxx>
 #include <TCollection_HAsciiString.hxx>
@@ -24,6 +25,10 @@ std::vector<int> referencedBy(const Interface_Graph &graph, int number)
     std::vector<int> out;
     Interface_EntityIterator shared = graph.Shareds(graph.Entity(number));
     for (shared.Start(); shared.More(); shared.Next()) {
+        // An IGES entity's label display (402 form 5) points back at the entity it labels, a cycle
+        // by design that the translators never follow (they read no annotation): not a reference.
+        if (shared.Value()->IsKind(STANDARD_TYPE(IGESDraw_LabelDisplay)))
+            continue;
         const int n = graph.EntityNumber(shared.Value());
         if (n > 0) // 0: not an entity of the model
             out.push_back(n);

@@ -16,6 +16,10 @@ struct HybridRbf {
     Q_DECLARE_TR_FUNCTIONS(HybridRbf)
 };
 
+// The half-width given along an input that did not vary in training (scaled units): Gaussians
+// flat along it.
+constexpr double kFlatRadius = 1e6;
+
 // A node of the regression tree: its hyper-rectangle (in scaled inputs) and how many samples it
 // holds.
 struct TreeNode {
@@ -69,7 +73,10 @@ Split bestSplit(const std::vector<int> &rows, const Eigen::MatrixXd &x, const Ei
             const double cost =
                 (leftSquares - leftSum * leftSum / k) + (totalSquares - leftSquares - rightSum * rightSum / (n - k));
             if (cost < best.cost) {
-                best = {static_cast<int>(d), 0.5 * (here + next), cost};
+                // Halfway, unless the two values are neighbouring doubles and the middle rounds
+                // to the lower one: then the upper one, so that `here` still goes left.
+                const double middle = 0.5 * (here + next);
+                best = {static_cast<int>(d), middle > here ? middle : next, cost};
             }
         }
     }
@@ -103,6 +110,8 @@ std::vector<TreeNode> regressionTree(const Eigen::MatrixXd &x, const Eigen::Vect
         right.lower[split.dimension] = split.at;
         for (const int i : node.rows)
             (x(i, split.dimension) < split.at ? left.rows : right.rows).push_back(i);
+        if (left.rows.empty() || right.rows.empty())
+            continue; // cannot happen with the threshold above; a leaf rather than the same node again
         stack.push_back(std::move(right));
         stack.push_back(std::move(left));
     }
@@ -137,7 +146,10 @@ struct Solved {
     double sse = 0.0;
 };
 
-Solved solve(const Eigen::MatrixXd &hth, const Eigen::VectorXd &hty, double yty, const std::vector<int> &kept)
+// The weights from the normal equations; the residual sum of squares ‖y − Hw‖² from H itself (the
+// shortcut yᵀy − wᵀHᵀy cancels to nothing on a near-exact fit, which would then always win).
+Solved solve(const Eigen::MatrixXd &h, const Eigen::VectorXd &y, const Eigen::MatrixXd &hth, const Eigen::VectorXd &hty,
+             const std::vector<int> &kept)
 {
     const auto m = static_cast<Eigen::Index>(kept.size());
     Eigen::MatrixXd a(m, m);
@@ -150,7 +162,10 @@ Solved solve(const Eigen::MatrixXd &hth, const Eigen::VectorXd &hty, double yty,
     a.diagonal().array() += 1e-10 * std::max(a.diagonal().maxCoeff(), 1e-300);
     Solved s;
     s.weights = a.ldlt().solve(b);
-    s.sse = std::max(0.0, yty - s.weights.dot(b));
+    Eigen::VectorXd residual = y;
+    for (Eigen::Index c = 0; c < m; ++c)
+        residual -= s.weights[c] * h.col(kept[static_cast<std::size_t>(c)]);
+    s.sse = residual.squaredNorm();
     return s;
 }
 
@@ -160,15 +175,14 @@ struct Candidate {
     double criterion = std::numeric_limits<double>::infinity();
 };
 
-// Backward elimination (appendix A): the node with the fewest samples goes first (the deeper of
-// two equal ones: later in the tree's order), down to one node; the subset with the lowest
+// Backward elimination (appendix A): the node with the fewest samples goes first (of two equal
+// ones, the later in the tree's depth-first order), down to one node; the subset with the lowest
 // criterion is kept.
 Candidate eliminate(const Eigen::MatrixXd &h, const Eigen::VectorXd &y, const std::vector<TreeNode> &nodes,
                     RbfCriterion criterion)
 {
     const Eigen::MatrixXd hth = h.transpose() * h;
     const Eigen::VectorXd hty = h.transpose() * y;
-    const double yty = y.squaredNorm();
     const auto p = static_cast<int>(y.size());
     std::vector<int> order(nodes.size());
     std::iota(order.begin(), order.end(), 0);
@@ -179,7 +193,7 @@ Candidate eliminate(const Eigen::MatrixXd &h, const Eigen::VectorXd &y, const st
     // order: most samples first; the subsets kept are its prefixes, from all nodes down to one.
     for (std::size_t m = std::min(order.size(), static_cast<std::size_t>(p - 1)); m >= 1; --m) {
         std::vector<int> kept(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(m));
-        const Solved s = solve(hth, hty, yty, kept);
+        const Solved s = solve(h, y, hth, hty, kept);
         const double value = criterionOf(criterion, s.sse, p, static_cast<int>(m));
         if (value < best.criterion)
             best = {std::move(kept), s.weights, value};
@@ -221,7 +235,11 @@ std::optional<RbfNetwork> trainHybridRbf(const Eigen::MatrixXd &inputs, const Ei
         return refuse(HybridRbf::tr("an input or a target is not a finite number"));
     RbfNetwork net;
     net.inputMin = inputs.colwise().minCoeff().transpose();
-    net.inputSpan = (inputs.colwise().maxCoeff().transpose() - net.inputMin).cwiseMax(1e-12);
+    // An input that did not vary in training says nothing: span 1 and, below, a radius that makes
+    // the Gaussians flat along it, so that another value there later changes nothing.
+    const Eigen::VectorXd range = inputs.colwise().maxCoeff().transpose() - net.inputMin;
+    const Eigen::Array<bool, Eigen::Dynamic, 1> constant = (range.array() <= 0.0);
+    net.inputSpan = constant.select(Eigen::VectorXd::Ones(range.size()), range);
     const Eigen::MatrixXd x =
         (inputs.rowwise() - net.inputMin.transpose()).array().rowwise() / net.inputSpan.transpose().array();
     const int minLeaf = options.minSamplesPerLeaf > 0 ? options.minSamplesPerLeaf : std::max(3, p / 64);
@@ -231,9 +249,11 @@ std::optional<RbfNetwork> trainHybridRbf(const Eigen::MatrixXd &inputs, const Ei
     Eigen::MatrixXd halfWidths(static_cast<Eigen::Index>(nodes.size()), x.cols());
     for (std::size_t j = 0; j < nodes.size(); ++j) {
         centres.row(static_cast<Eigen::Index>(j)) = 0.5 * (nodes[j].lower + nodes[j].upper).transpose();
-        // A side of zero width (all samples at one value of an input) gets a small radius, not zero.
+        // A side of zero width gets a small radius, not zero; an input that never varied, one
+        // so large (in the scaled inputs' units) that the Gaussians do not depend on it.
+        const Eigen::VectorXd half = (0.5 * (nodes[j].upper - nodes[j].lower)).cwiseMax(1e-3);
         halfWidths.row(static_cast<Eigen::Index>(j)) =
-            (0.5 * (nodes[j].upper - nodes[j].lower)).cwiseMax(1e-3).transpose();
+            constant.select(Eigen::VectorXd::Constant(half.size(), kFlatRadius), half).transpose();
     }
     Candidate best;
     for (const double alpha : options.radiusScales) {

@@ -42,11 +42,18 @@ std::optional<double> physicsAt(const DeviationResult &d, const QString &feature
     return std::nullopt;
 }
 
-double spindleSpeedAt(const DeviationResult &d, const QString &featureId)
+// The spindle speed where the tool is at z (under constant cutting speed it changes along a cone
+// or a face): the nearest station's.
+double spindleSpeedAt(const DeviationResult &d, const QString &featureId, double z)
 {
     for (const FeatureDeviation &f : d.features) {
-        if (f.featureId == featureId && !f.stations.empty())
-            return f.stations.front().spindleSpeed_rpm;
+        if (f.featureId != featureId || f.stations.empty())
+            continue;
+        const auto nearest =
+            std::min_element(f.stations.begin(), f.stations.end(), [z](const Station &a, const Station &b) {
+                return std::abs(a.z_mm - z) < std::abs(b.z_mm - z);
+            });
+        return nearest->spindleSpeed_rpm;
     }
     return 0.0;
 }
@@ -70,7 +77,7 @@ std::optional<ResidualSample> sampleAt(const Project &project, const DeviationRe
     s.z_mm = z;
     s.diameter_mm = 2.0 * *target;
     s.physics_mm = *physics;
-    s.inputs << spindleSpeedAt(d, featureId), in.pass.feed_mm_rev, timeSinceStart_min, ambient_C,
+    s.inputs << spindleSpeedAt(d, featureId, z), in.pass.feed_mm_rev, timeSinceStart_min, ambient_C,
         in.forces.tangential_N * *target * 1e-3, in.forces.axial_N, in.forces.radial_N, z;
     return s;
 }

@@ -116,42 +116,79 @@ bool step(QSqlDatabase &db, int to, QString *error)
 
 int schemaVersionOf(const QSqlDatabase &db, QString *error)
 {
-    if (!db.tables().contains(QStringLiteral("tolturn_schema")))
-        return 0;
     QSqlQuery q(db);
+    // PostgreSQL: the table as the search path finds it (QPSQL's tables() names a table outside
+    // "public" with its schema, "shop.tolturn_schema").
+    if (isPostgres(db)) {
+        if (!run(q, QStringLiteral("SELECT to_regclass('tolturn_schema') IS NOT NULL"), error) || !q.next())
+            return -1;
+        if (!q.value(0).toBool())
+            return 0;
+    } else if (!db.tables().contains(QStringLiteral("tolturn_schema"))) {
+        return 0;
+    }
     if (!run(q, QStringLiteral("SELECT version FROM tolturn_schema"), error) || !q.next())
         return -1;
     return q.value(0).toInt();
 }
 
-bool migrateSchema(QSqlDatabase &db, int target, QString *error)
+namespace {
+
+// Takes the store for one migration step: SQLite's write lock at once (BEGIN IMMEDIATE), or on
+// PostgreSQL a transaction holding an advisory lock, so that two programs opening a new or old
+// store at the same time migrate it one after the other; the second then finds it done.
+bool beginMigrationStep(QSqlDatabase &db, QString *error)
 {
-    int version = schemaVersionOf(db, error);
-    if (version < 0)
-        return false;
-    if (version > target) {
+    QSqlQuery q(db);
+    if (!isPostgres(db))
+        return run(q, QStringLiteral("BEGIN IMMEDIATE"), error);
+    if (!db.transaction()) {
         if (error)
-            *error = MeasurementSchema::tr("the store has schema version %1, newer than this program's %2: update "
-                                           "TolTurn")
-                         .arg(version)
-                         .arg(target);
+            *error = db.lastError().text();
         return false;
     }
-    while (version < target) {
-        if (!db.transaction()) {
+    // The key: "TolT" in ASCII, TolTurn's lock of its own schema.
+    return run(q, QStringLiteral("SELECT pg_advisory_xact_lock(1416588372)"), error);
+}
+
+bool endMigrationStep(QSqlDatabase &db, bool commit)
+{
+    if (isPostgres(db))
+        return commit ? db.commit() : db.rollback();
+    QSqlQuery q(db);
+    return q.exec(commit ? QStringLiteral("COMMIT") : QStringLiteral("ROLLBACK"));
+}
+
+} // namespace
+
+bool migrateSchema(QSqlDatabase &db, int target, QString *error)
+{
+    for (;;) {
+        if (!beginMigrationStep(db, error))
+            return false;
+        // Read under the lock: another program may have migrated meanwhile.
+        const int version = schemaVersionOf(db, error);
+        if (version < 0 || version > target) {
+            if (version > target && error)
+                *error = MeasurementSchema::tr("the store has schema version %1, newer than this program's %2: "
+                                               "update TolTurn")
+                             .arg(version)
+                             .arg(target);
+            endMigrationStep(db, false);
+            return false;
+        }
+        if (version == target)
+            return endMigrationStep(db, true);
+        if (!step(db, version + 1, error)) {
+            endMigrationStep(db, false);
+            return false;
+        }
+        if (!endMigrationStep(db, true)) {
             if (error)
                 *error = db.lastError().text();
             return false;
         }
-        if (!step(db, version + 1, error) || !db.commit()) {
-            if (error && error->isEmpty())
-                *error = db.lastError().text();
-            db.rollback();
-            return false;
-        }
-        ++version;
     }
-    return true;
 }
 
 QString profileChecksum(const QByteArray &projectJson)

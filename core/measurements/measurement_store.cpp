@@ -61,20 +61,20 @@ QString failure(const QString &what, const QSqlError &e)
     return QStringLiteral("%1: %2").arg(what, e.text());
 }
 
-// The WHERE clause of a filter and its values, in order.
+// The WHERE clause of a filter's machine and its value. The text is matched here, in Qt, not in
+// SQL: SQLite's LOWER folds ASCII only, and LIKE would take % and _ in what was typed as wildcards.
 QString whereOf(const PartFilter &f, QVariantList &values)
 {
-    QStringList conditions;
-    if (!f.machineId.isEmpty()) {
-        conditions << QStringLiteral("machine_id = ?");
-        values << f.machineId;
-    }
-    if (!f.text.isEmpty()) {
-        conditions << QStringLiteral("(LOWER(part_name) LIKE ? OR LOWER(measured_by) LIKE ? OR LOWER(method) LIKE ?)");
-        const QString pattern = QLatin1Char('%') + f.text.toLower() + QLatin1Char('%');
-        values << pattern << pattern << pattern;
-    }
-    return conditions.isEmpty() ? QString() : QStringLiteral(" WHERE ") + conditions.join(QStringLiteral(" AND "));
+    if (f.machineId.isEmpty())
+        return {};
+    values << f.machineId;
+    return QStringLiteral(" WHERE machine_id = ?");
+}
+
+bool matchesText(const MeasuredPartSummary &s, const QString &text)
+{
+    return text.isEmpty() || s.partName.contains(text, Qt::CaseInsensitive) ||
+           s.measuredBy.contains(text, Qt::CaseInsensitive) || s.method.contains(text, Qt::CaseInsensitive);
 }
 
 bool prepareAndRun(QSqlQuery &q, const QString &sql, const QVariantList &values)
@@ -298,7 +298,8 @@ std::optional<std::vector<MeasuredPartSummary>> MeasurementStore::list(const Par
                                  "(SELECT COUNT(*) FROM measured_points m WHERE m.part_id = p.id) FROM "
                                  "measured_parts p") +
                   whereOf(filter, values) + QStringLiteral(" ORDER BY p.measured_at DESC, p.id DESC");
-    if (filter.limit >= 0)
+    const bool paged = filter.limit >= 0 && filter.text.isEmpty(); // else paged after the text match
+    if (paged)
         sql += QStringLiteral(" LIMIT %1 OFFSET %2").arg(filter.limit).arg(std::max(0, filter.offset));
     QSqlQuery q(db());
     q.setForwardOnly(true);
@@ -308,15 +309,34 @@ std::optional<std::vector<MeasuredPartSummary>> MeasurementStore::list(const Par
         return std::nullopt;
     }
     std::vector<MeasuredPartSummary> out;
-    while (q.next())
-        out.push_back({q.value(0).toLongLong(), q.value(1).toString(), q.value(2).toString(),
-                       QDateTime::fromString(q.value(3).toString(), Qt::ISODateWithMs), q.value(4).toString(),
-                       q.value(5).toString(), q.value(6).toInt()});
+    int skipped = 0;
+    while (q.next()) {
+        MeasuredPartSummary s{q.value(0).toLongLong(), q.value(1).toString(),
+                              q.value(2).toString(),   QDateTime::fromString(q.value(3).toString(), Qt::ISODateWithMs),
+                              q.value(4).toString(),   q.value(5).toString(),
+                              q.value(6).toInt()};
+        if (!paged && !matchesText(s, filter.text))
+            continue;
+        if (!paged && skipped < filter.offset) {
+            ++skipped;
+            continue;
+        }
+        out.push_back(std::move(s));
+        if (!paged && filter.limit >= 0 && static_cast<int>(out.size()) >= filter.limit)
+            break;
+    }
     return out;
 }
 
 std::optional<qint64> MeasurementStore::count(const PartFilter &filter, QString *error) const
 {
+    if (!filter.text.isEmpty()) {
+        PartFilter all = filter;
+        all.limit = -1;
+        all.offset = 0;
+        const auto parts = list(all, error);
+        return parts ? std::optional<qint64>(static_cast<qint64>(parts->size())) : std::nullopt;
+    }
     QVariantList values;
     QSqlQuery q(db());
     if (!prepareAndRun(q, QStringLiteral("SELECT COUNT(*) FROM measured_parts") + whereOf(filter, values), values) ||

@@ -216,9 +216,23 @@ SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEval
     return outcome;
 }
 
-double rank(const CandidateEvaluation &e)
+// Plans in order of merit: a feasible one before any infeasible one; feasible ones by their
+// objective, infeasible ones by how much they violate (a number added to a huge one would not
+// tell them apart).
+struct Rank {
+    bool infeasible = true;
+    double value = std::numeric_limits<double>::infinity();
+
+    friend bool operator<(const Rank &a, const Rank &b)
+    {
+        return a.infeasible != b.infeasible ? !a.infeasible : a.value < b.value;
+    }
+};
+
+Rank rank(const CandidateEvaluation &e)
 {
-    return e.feasible(1e-6) ? e.objective : std::numeric_limits<double>::max() / 2 + e.totalViolation();
+    const bool feasible = e.feasible(1e-6);
+    return {!feasible, feasible ? e.objective : e.totalViolation()};
 }
 
 } // namespace
@@ -248,7 +262,7 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
         if (!bestSeen || rank(o.evaluation) < rank(bestSeen->evaluation))
             bestSeen = o;
     };
-    std::vector<std::pair<double, int>> ranked;
+    std::vector<std::pair<Rank, int>> ranked;
     for (std::size_t i = 0; i < counts.size() && goOn(); ++i) {
         const SearchOutcome coarse = searchPasses(problem, counts[i], kCoarse, 0, options,
                                                   0.3 * static_cast<double>(i) / static_cast<double>(counts.size()),
@@ -256,7 +270,8 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
         keepIfBetter(coarse);
         ranked.emplace_back(rank(coarse.evaluation), counts[i]);
     }
-    std::sort(ranked.begin(), ranked.end());
+    std::sort(ranked.begin(), ranked.end(),
+              [](const std::pair<Rank, int> &a, const std::pair<Rank, int> &b) { return a.first < b.first; });
     double leastViolation = std::numeric_limits<double>::infinity();
     PlanCandidate leastViolating;
     const std::size_t refined = std::min(kRefined, ranked.size());
@@ -286,8 +301,13 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
                                           violationOnly, false);
         result.evaluations += c.evaluations;
         result.timedOut = result.timedOut || c.timedOut;
-        result.candidate = candidateAt(c.denormalise(u.data()), k);
-        result.evaluation = problem.evaluate(result.candidate);
+        const PlanCandidate least = candidateAt(c.denormalise(u.data()), k);
+        const CandidateEvaluation e = problem.evaluate(least);
+        // A search stopped at the time limit may end worse than a plan already seen.
+        if (!bestSeen || rank(e) < rank(bestSeen->evaluation)) {
+            result.candidate = least;
+            result.evaluation = e;
+        }
     }
     if (!result.feasible) {
         for (const ConstraintValue &v : result.evaluation.constraints) {

@@ -290,6 +290,30 @@ private Q_SLOTS:
         QVERIFY2(error.contains(QStringLiteral("network.radii")), qPrintable(error));
     }
 
+    // An input that never varied in training (the same ambient for every part) changes nothing
+    // when it takes another value later; inputs one double apart split, and the tree ends.
+    void degenerateInputs()
+    {
+        Samples train = samples(200, 0.5, true, 5);
+        train.x.col(1).setConstant(0.5);
+        QString error;
+        const auto net = trainHybridRbf(train.x, train.y, {}, &error);
+        QVERIFY2(net.has_value(), qPrintable(error));
+        const Eigen::Vector2d seen(0.3, 0.5);
+        const Eigen::Vector2d other(0.3, 0.9);
+        QCOMPARE(net->predict(other), net->predict(seen));
+        QVERIFY(std::abs(net->predict(seen)) > 1.0); // and the network did learn along the other input
+        Eigen::MatrixXd close(8, 1);
+        Eigen::VectorXd y(8);
+        for (int i = 0; i < 8; ++i) {
+            close(i, 0) = i % 2 == 0 ? 1.0 : std::nextafter(1.0, 2.0);
+            y[i] = i % 2 == 0 ? 0.0 : 1.0;
+        }
+        RbfTrainingOptions fine;
+        fine.minSamplesPerLeaf = 1;
+        QVERIFY(trainHybridRbf(close, y, fine, &error).has_value());
+    }
+
     void refusesTooFewOrBadSamples()
     {
         QString error;

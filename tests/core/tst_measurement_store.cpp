@@ -224,6 +224,8 @@ private Q_SLOTS:
             MeasuredPart p = measuredShaft(i % 2 == 0 ? QStringLiteral("haas-st-20") : QStringLiteral("haas-st-30"));
             p.measuredAt = p.measuredAt.addSecs(qint64{3600} * i);
             p.measuredBy = i == 3 ? QStringLiteral("B. Inspector") : QStringLiteral("A. Planner");
+            if (i == 1)
+                p.measuredBy = QStringLiteral("Ömer Öztürk");
             ids.push_back(store->add(p, problems).value_or(-1));
             QVERIFY(ids.back() > 0);
         }
@@ -238,6 +240,21 @@ private Q_SLOTS:
         PartFilter inspector;
         inspector.text = QStringLiteral("inspector");
         QCOMPARE(store->list(inspector, &error)->size(), std::size_t{1});
+        // Any letter's case, on SQLite too (its LOWER folds ASCII only); what is typed is text.
+        PartFilter accented;
+        accented.text = QStringLiteral("öztürk");
+        QCOMPARE(store->list(accented, &error)->size(), std::size_t{1});
+        QCOMPARE(store->count(accented, &error).value_or(-1), qint64{1});
+        PartFilter wildcard;
+        wildcard.text = QStringLiteral("%");
+        QCOMPARE(store->list(wildcard, &error)->size(), std::size_t{0});
+        PartFilter planners;
+        planners.text = QStringLiteral("planner");
+        planners.limit = 1;
+        planners.offset = 1;
+        const auto secondPlanner = store->list(planners, &error);
+        QCOMPARE(secondPlanner->size(), std::size_t{1});
+        QCOMPARE(secondPlanner->front().id, ids[0]); // planners: parts 2 and 0, newest first
         PartFilter page;
         page.limit = 2;
         page.offset = 1;
