@@ -185,10 +185,10 @@ private Q_SLOTS:
         const QJsonObject deflected = QJsonDocument::fromJson(after.out.toUtf8()).object();
         QCOMPARE(deflected.value(QStringLiteral("learned")).toObject().value(QStringLiteral("parts")).toInt(), 6);
         int checked = 0;
-        for (const QJsonValue &f : deflected.value(QStringLiteral("features")).toArray()) {
+        for (const auto &f : deflected.value(QStringLiteral("features")).toArray()) {
             if (f[QStringLiteral("type")].toString() != QLatin1String("cylinder"))
                 continue;
-            for (const QJsonValue &st : f[QStringLiteral("stations")].toArray()) {
+            for (const auto &st : f[QStringLiteral("stations")].toArray()) {
                 QVERIFY2(std::abs(st[QStringLiteral("learned_um")].toDouble() - 5.0) < 0.1,
                          qPrintable(QString::number(st[QStringLiteral("learned_um")].toDouble())));
                 QCOMPARE(st[QStringLiteral("radius_error_with_learned_um")].toDouble(),

@@ -137,7 +137,7 @@ PartProfile stepped()
 // A stand-in for tolturn-cli: a shell script in `dir` with `body`.
 QString fakeReader(const QTemporaryDir &dir, const QByteArray &body)
 {
-    const QString path = dir.filePath(QStringLiteral("fake-reader.sh"));
+    QString path = dir.filePath(QStringLiteral("fake-reader.sh"));
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return {};
