@@ -482,6 +482,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The measurement store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
         <translation>Der Messwertspeicher: eine SQLite-Datei oder postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (Vorgabe: %1).</translation>
     </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, Modell %2, %3 Teile</translation>
+    </message>
+    <message>
+        <source>Machine: learned from measured parts (%1); parts left out were predicted to %2 µm RMS, the physics alone to %3 µm</source>
+        <translation>Maschine: aus gemessenen Teilen gelernt (%1); weggelassene Teile auf %2 µm RMS vorhergesagt, die Physik allein auf %3 µm</translation>
+    </message>
+    <message>
+        <source>Judge with what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Mit dem urteilen, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -795,6 +807,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>program O%1, checksum %2 (SHA-256, first 16 digits)</source>
         <translation>Programm O%1, Prüfsumme %2 (SHA-256, erste 16 Stellen)</translation>
+    </message>
+    <message>
+        <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Mit dem kompensieren, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
+    </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, Modell %2, %3 Teile</translation>
     </message>
 </context>
 <context>
@@ -1296,6 +1316,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 measured part(s); leaving one out needs at least 2</source>
         <translation>%1 gemessene(s) Teil(e); das Weglassen eines Teils braucht mindestens 2</translation>
+    </message>
+    <message>
+        <source>The predicted radius errors include what was learned from measured parts (%1): the machine&apos;s measured behaviour replaces its stiffness range.</source>
+        <translation>Die vorhergesagten Radiusfehler enthalten, was aus gemessenen Teilen gelernt wurde (%1): das gemessene Verhalten der Maschine ersetzt ihren Steifigkeitsbereich.</translation>
     </message>
 </context>
 <context>

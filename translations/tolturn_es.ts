@@ -482,6 +482,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The measurement store: an SQLite file, or postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (default: %1).</source>
         <translation>El almacén de mediciones: un archivo SQLite o postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (por defecto: %1).</translation>
     </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, modelo %2, %3 piezas</translation>
+    </message>
+    <message>
+        <source>Machine: learned from measured parts (%1); parts left out were predicted to %2 µm RMS, the physics alone to %3 µm</source>
+        <translation>Máquina: aprendida de piezas medidas (%1); las piezas dejadas fuera se predijeron a %2 µm RMS, la física sola a %3 µm</translation>
+    </message>
+    <message>
+        <source>Judge with what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Juzgar con lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -795,6 +807,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>program O%1, checksum %2 (SHA-256, first 16 digits)</source>
         <translation>programa O%1, suma de control %2 (SHA-256, primeros 16 dígitos)</translation>
+    </message>
+    <message>
+        <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Compensar con lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
+    </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, modelo %2, %3 piezas</translation>
     </message>
 </context>
 <context>
@@ -1296,6 +1316,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 measured part(s); leaving one out needs at least 2</source>
         <translation>%1 pieza(s) medida(s); dejar una fuera necesita al menos 2</translation>
+    </message>
+    <message>
+        <source>The predicted radius errors include what was learned from measured parts (%1): the machine&apos;s measured behaviour replaces its stiffness range.</source>
+        <translation>Los errores de radio predichos incluyen lo aprendido de piezas medidas (%1): el comportamiento medido de la máquina sustituye a su rango de rigidez.</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "app/cli/learn_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -100,13 +101,74 @@ QJsonObject rangeEvaluationJson(const ToleranceRangeEvaluation &e)
     return o;
 }
 
+// The verdicts on physics + what was learned: one prediction, the machine's measured behaviour in
+// place of its stiffness range (docs/learning.md).
+int evaluateLearned(const QString &file, const Project &project, const QString &store, bool json, QTextStream &out,
+                    QTextStream &err)
+{
+    const std::optional<LoadedModel> model =
+        loadLearnedModel(store, project.machineId, QStringLiteral("evaluate"), err);
+    if (!model)
+        return kExitProblems;
+    const QString provenance = CommandLine::tr("%1, model %2, %3 parts")
+                                   .arg(model->record.machineId)
+                                   .arg(model->record.id)
+                                   .arg(model->record.parts);
+    const DeviationResult deviation =
+        withLearnedResidual(project, computeDeviation(project, DataLibrary::builtIn(), {}), model->model, provenance);
+    for (const Diagnostic &d : deviation.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!deviation.inputs)
+        return kExitProblems;
+    const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(project, deviation);
+    if (json) {
+        QJsonArray list;
+        for (const ToleranceEvaluation &e : verdicts)
+            list.append(evaluationJson(e));
+        return printJson(
+            QJsonObject{{QStringLiteral("file"), file},
+                        {QStringLiteral("learned"),
+                         QJsonObject{{QStringLiteral("machine"), model->record.machineId},
+                                     {QStringLiteral("model"), model->record.id},
+                                     {QStringLiteral("parts"), model->record.parts},
+                                     {QStringLiteral("physics_rms_um"), 1000.0 * model->record.physicsRms_mm},
+                                     {QStringLiteral("learned_rms_um"), 1000.0 * model->record.learnedRms_mm}}},
+                        {QStringLiteral("notes"), QJsonArray::fromStringList(deviation.inputs->notes)},
+                        {QStringLiteral("tolerances"), list}},
+            out, err, QStringLiteral("evaluate"));
+    }
+    out << CommandLine::tr("Machine: learned from measured parts (%1); parts left out were predicted to %2 µm RMS, "
+                           "the physics alone to %3 µm")
+               .arg(provenance, QString::number(1000.0 * model->record.learnedRms_mm, 'f', 1),
+                    QString::number(1000.0 * model->record.physicsRms_mm, 'f', 1))
+        << '\n';
+    for (const ToleranceEvaluation &e : verdicts) {
+        const auto number = [](const std::optional<double> &v) {
+            return v ? QString::number(*v, 'f', 3) : QStringLiteral("—");
+        };
+        out << QStringLiteral("%1 %2 %3 %4 %5 %6  %7\n")
+                   .arg(e.toleranceId, -10)
+                   .arg(displayName(e.type), -23)
+                   .arg(e.featureId, -8)
+                   .arg(number(e.value_um), 10)
+                   .arg(number(e.limit_um), 11)
+                   .arg(number(e.utilisation_pct), 8)
+                   .arg(verdictName(e.verdict));
+    }
+    return kExitOk;
+}
+
 } // namespace
 
 int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
     const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the verdicts as JSON."));
-    parser.addOption(json);
+    const QCommandLineOption learned(
+        QStringLiteral("learned"),
+        CommandLine::tr("Judge with what was learned of the machine from its measured parts (learn --save)."));
+    const QCommandLineOption store = measurementStoreOption();
+    parser.addOptions({json, learned, store});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("evaluate"), args, out, err); stop >= 0)
@@ -117,6 +179,8 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
+    if (parser.isSet(learned))
+        return evaluateLearned(file, *project, parser.value(store), parser.isSet(json), out, err);
     const RangeEvaluation range = evaluateOverStiffnessRange(*project, DataLibrary::builtIn());
     const DeviationResult &deviation = range.compliant;
     for (const Diagnostic &d : deviation.diagnostics)

@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "app/cli/learn_command.h"
 #include "core/deviation/deviation_model.h"
 #include "core/planning/gcode.h"
 #include "core/planning/planning_report.h"
@@ -62,7 +63,11 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
                                                    "compensates), 'tip-path' the path of the imaginary tool tip "
                                                    "computed by TolTurn. Default: control."),
                                   QStringLiteral("HANDLING"), QStringLiteral("control"));
-    parser.addOptions({output, compensated, dialect, nose});
+    const QCommandLineOption learned(
+        QStringLiteral("learned"),
+        GCodeCommand::tr("Compensate with what was learned of the machine from its measured parts (learn --save)."));
+    const QCommandLineOption store = measurementStoreOption();
+    parser.addOptions({output, compensated, dialect, nose, learned, store});
     parser.addPositionalArgument(QStringLiteral("project"), GCodeCommand::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, QStringLiteral("gcode"), gcodeSynopsis(), gcodeSummary(), args, out, err);
@@ -94,7 +99,20 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
-    const FinishingOutput finishing = finishingOutput(*project, DataLibrary::builtIn(), options);
+    DeviationResult deviation = computeDeviation(*project, DataLibrary::builtIn(), {});
+    if (parser.isSet(learned)) {
+        const std::optional<LoadedModel> model =
+            loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("gcode"), err);
+        if (!model)
+            return kExitProblems;
+        deviation = withLearnedResidual(*project, std::move(deviation), model->model,
+                                        GCodeCommand::tr("%1, model %2, %3 parts")
+                                            .arg(model->record.machineId)
+                                            .arg(model->record.id)
+                                            .arg(model->record.parts));
+    }
+    const FinishingOutput finishing =
+        finishingOutputFor(*project, DataLibrary::builtIn(), std::move(deviation), options);
     for (const Diagnostic &d : finishing.deviation.diagnostics)
         err << file << ": " << d.toString() << '\n';
     if (!finishing.deviation.inputs)

@@ -263,4 +263,21 @@ std::vector<std::vector<double>> learnedAtStations(const Project &project, const
     return out;
 }
 
+DeviationResult withLearnedResidual(const Project &project, DeviationResult deviation, const LearnedResidual &learned,
+                                    const QString &provenance)
+{
+    const std::vector<std::vector<double>> add = learnedAtStations(project, deviation, learned);
+    for (std::size_t f = 0; f < deviation.features.size() && f < add.size(); ++f) {
+        std::vector<Station> &stations = deviation.features[f].stations;
+        for (std::size_t i = 0; i < stations.size() && i < add[f].size(); ++i)
+            stations[i].radiusError_mm += add[f][i];
+    }
+    if (deviation.inputs)
+        deviation.inputs->notes << MeasuredResiduals::tr(
+                                       "The predicted radius errors include what was learned from measured parts (%1): "
+                                       "the machine's measured behaviour replaces its stiffness range.")
+                                       .arg(provenance);
+    return deviation;
+}
+
 } // namespace tolturn

@@ -81,4 +81,10 @@ struct CrossValidation {
 [[nodiscard]] std::vector<std::vector<double>>
 learnedAtStations(const Project &project, const DeviationResult &deviation, const LearnedResidual &learned);
 
+// The deviation result with what was learned added to every station's radius error (the
+// predicted machined radius then being physics + learned), and a note saying so, naming
+// `provenance` ("haas-st-20, model 3, 30 parts"). Faces keep the physics' conicity.
+[[nodiscard]] DeviationResult withLearnedResidual(const Project &project, DeviationResult deviation,
+                                                  const LearnedResidual &learned, const QString &provenance);
+
 } // namespace tolturn

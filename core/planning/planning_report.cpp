@@ -3,6 +3,8 @@
 
 #include "core/planning/gcode.h"
 
+#include <utility>
+
 namespace tolturn {
 
 PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, const PlanningJobOptions &options)
@@ -46,8 +48,14 @@ PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, c
 
 FinishingOutput finishingOutput(const Project &project, const DataLibrary &data, const GCodeOptions &options)
 {
+    return finishingOutputFor(project, data, computeDeviation(project, data, {}), options);
+}
+
+FinishingOutput finishingOutputFor(const Project &project, const DataLibrary &data, DeviationResult deviation,
+                                   const GCodeOptions &options)
+{
     FinishingOutput out;
-    out.deviation = computeDeviation(project, data, {});
+    out.deviation = std::move(deviation);
     if (!out.deviation.inputs)
         return out;
     out.compensation = planCompensation(project, out.deviation, evaluateTolerances(project, out.deviation));

@@ -44,5 +44,9 @@ struct FinishingOutput {
 
 [[nodiscard]] FinishingOutput finishingOutput(const Project &project, const DataLibrary &data,
                                               const GCodeOptions &options = {});
+// The same from a deviation the caller computed (with what was learned added, say): the
+// compensation is planned from that prediction.
+[[nodiscard]] FinishingOutput finishingOutputFor(const Project &project, const DataLibrary &data,
+                                                 DeviationResult deviation, const GCodeOptions &options = {});
 
 } // namespace tolturn

@@ -138,22 +138,32 @@ std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, do
 // A tool whose trailing (minor) edge makes kappa' = 180° - kappa_r - epsilon_r with the axis
 // (ISO 3002-1, tool cutting edge angle and minor cutting edge angle; the corner angle of the insert
 // between them) can follow a contour that falls, in its feed direction, no steeper than kappa'.
+// A steeper fall no higher than r_e (1 - sin kappa') stays within the corner radius, which cuts it
+// (the arc of the corner rises that far before the trailing edge begins): the micrometre steps of
+// a compensated path, say. Consecutive steep elements count as one fall.
 void warnWhereTheTrailingEdgeCannotFollow(const std::vector<PathElement> &chain, double trailing_deg,
-                                          QStringList &warnings)
+                                          double noseRadius_mm, QStringList &warnings)
 {
+    const double withinCorner_mm = noseRadius_mm * (1.0 - std::sin(trailing_deg * std::numbers::pi / 180.0));
     std::set<QString> named;
+    double fall_mm = 0.0; // of the steep elements in a row so far
     for (const PathElement &e : chain) {
+        double steepest_deg = 0.0;
         for (const ProfilePoint d : {startTangent(e), endTangent(e)}) {
-            if (d.r_mm >= -1e-9)
-                continue;
-            const double fall_deg = radiansToDegrees(std::atan2(-d.r_mm, -d.z_mm));
-            if (fall_deg > trailing_deg + 1e-6 && named.insert(e.featureId).second)
-                warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing "
-                                          "edge (%3°): it cannot be turned towards the chuck with this tool without "
-                                          "damaging it; turn it from the other side or with a neutral tool.")
-                                .arg(e.featureId, QString::number(fall_deg, 'f', 1),
-                                     QString::number(trailing_deg, 'f', 1));
+            if (d.r_mm < -1e-9)
+                steepest_deg = std::max(steepest_deg, radiansToDegrees(std::atan2(-d.r_mm, -d.z_mm)));
         }
+        if (steepest_deg <= trailing_deg + 1e-6) {
+            fall_mm = 0.0;
+            continue;
+        }
+        fall_mm += std::max(0.0, e.from.r_mm - e.to.r_mm);
+        if (fall_mm > withinCorner_mm && named.insert(e.featureId).second)
+            warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing "
+                                      "edge (%3°): it cannot be turned towards the chuck with this tool without "
+                                      "damaging it; turn it from the other side or with a neutral tool.")
+                            .arg(e.featureId, QString::number(steepest_deg, 'f', 1),
+                                 QString::number(trailing_deg, 'f', 1));
     }
 }
 
@@ -417,7 +427,7 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
     path.finishing.number = number;
     const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm);
     if (trailingEdgeAngle_deg)
-        warnWhereTheTrailingEdgeCannotFollow(g.contour, *trailingEdgeAngle_deg, path.warnings);
+        warnWhereTheTrailingEdgeCannotFollow(g.contour, *trailingEdgeAngle_deg, noseRadius_mm, path.warnings);
     else
         path.warnings << Toolpaths::tr("The trailing edge angle of the tool is not known (holder entering angle and "
                                        "insert shape): falling contours are not checked.");

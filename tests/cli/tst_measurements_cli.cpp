@@ -198,6 +198,24 @@ private Q_SLOTS:
             }
         }
         QVERIFY(checked > 20);
+        // The verdicts see it too: every predicted diameter 10 µm larger than the physics alone's.
+        const auto plain = runCli({QStringLiteral("evaluate"), QStringLiteral("--json"), project});
+        const auto judged = runCli({QStringLiteral("evaluate"), QStringLiteral("--learned"), QStringLiteral("--json"),
+                                    QStringLiteral("--store"), learnStore, project});
+        QVERIFY2(judged.exitCode == 0, qPrintable(judged.err));
+        const QJsonArray without = QJsonDocument::fromJson(plain.out.toUtf8())[QStringLiteral("tolerances")].toArray();
+        const QJsonArray with = QJsonDocument::fromJson(judged.out.toUtf8())[QStringLiteral("tolerances")].toArray();
+        QCOMPARE(with.size(), without.size());
+        int sizes = 0;
+        for (qsizetype i = 0; i < with.size(); ++i) {
+            if (with[i][QStringLiteral("type")].toString() != QLatin1String("diameter"))
+                continue;
+            const double shift = with[i][QStringLiteral("predicted_max_um")].toDouble() -
+                                 without[i][QStringLiteral("predicted_max_um")].toDouble();
+            QVERIFY2(std::abs(shift - 10.0) < 0.2, qPrintable(QString::number(shift)));
+            ++sizes;
+        }
+        QVERIFY(sizes >= 2);
         // Too few parts to leave one out: named.
         const auto none = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-30"),
                                   QStringLiteral("--store"), learnStore});

@@ -334,6 +334,38 @@ private Q_SLOTS:
         QVERIFY(!program.path.endFaceFaced); // between centres: the end face is not faced
     }
 
+    // A fall no higher than r_e (1 - sin kappa') = 0.8 (1 - sin 5°) = 0.730 mm stays within the
+    // insert's corner radius, which cuts it: the left shoulder lowered to a 0.4 mm step is no
+    // warning (as the micrometre steps of a compensated path), a 0.8 mm step is.
+    void fallWithinTheCornerRadiusIsNoWarning_data()
+    {
+        QTest::addColumn<double>("step_mm");
+        QTest::addColumn<bool>("warned");
+        QTest::newRow("0.4 mm") << 0.4 << false;
+        QTest::newRow("0.8 mm") << 0.8 << true;
+    }
+
+    void fallWithinTheCornerRadiusIsNoWarning()
+    {
+        QFETCH(double, step_mm);
+        QFETCH(bool, warned);
+        Project p = example(QStringLiteral("long-shaft-centres.tolturn"));
+        std::vector<Segment> &outer = p.part.outer.segments;
+        const double journal = 21.0 - step_mm; // O3, the left journal, under the Ø42 body
+        outer[1].to.r_mm = journal;            // O2, the chamfer up to it
+        outer[2].from.r_mm = outer[2].to.r_mm = journal;
+        outer[3].from.r_mm = journal; // O4, the shoulder up to the body
+        p.tolerances.erase(std::remove_if(p.tolerances.begin(), p.tolerances.end(),
+                                          [](const Tolerance &t) { return t.featureId == QLatin1String("O3"); }),
+                           p.tolerances.end());
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(d.inputs.has_value());
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, {});
+        const bool fallWarned = std::any_of(program.path.warnings.begin(), program.path.warnings.end(),
+                                            [](const QString &w) { return w.startsWith(QStringLiteral("O4 falls")); });
+        QCOMPARE(fallWarned, warned);
+    }
+
     void linuxCncReproducesTheProfile_data()
     {
         QTest::addColumn<QString>("file");
