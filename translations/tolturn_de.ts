@@ -483,10 +483,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Der Messwertspeicher: eine SQLite-Datei oder postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (Vorgabe: %1).</translation>
     </message>
     <message>
-        <source>%1, model %2, %3 parts</source>
-        <translation>%1, Modell %2, %3 Teile</translation>
-    </message>
-    <message>
         <source>Machine: learned from measured parts (%1); parts left out were predicted to %2 µm RMS, the physics alone to %3 µm</source>
         <translation>Maschine: aus gemessenen Teilen gelernt (%1); weggelassene Teile auf %2 µm RMS vorhergesagt, die Physik allein auf %3 µm</translation>
     </message>
@@ -811,10 +807,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Mit dem kompensieren, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
-    </message>
-    <message>
-        <source>%1, model %2, %3 parts</source>
-        <translation>%1, Modell %2, %3 Teile</translation>
     </message>
 </context>
 <context>
@@ -1247,6 +1239,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the model %1 of %2 is damaged: %3</source>
         <translation>das Modell %1 von %2 ist beschädigt: %3</translation>
+    </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, Modell %2, %3 Teile</translation>
     </message>
 </context>
 <context>

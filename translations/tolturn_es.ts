@@ -483,10 +483,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>El almacén de mediciones: un archivo SQLite o postgresql://USER[:PASSWORD]@HOST[:PORT]/DATABASE (por defecto: %1).</translation>
     </message>
     <message>
-        <source>%1, model %2, %3 parts</source>
-        <translation>%1, modelo %2, %3 piezas</translation>
-    </message>
-    <message>
         <source>Machine: learned from measured parts (%1); parts left out were predicted to %2 µm RMS, the physics alone to %3 µm</source>
         <translation>Máquina: aprendida de piezas medidas (%1); las piezas dejadas fuera se predijeron a %2 µm RMS, la física sola a %3 µm</translation>
     </message>
@@ -811,10 +807,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Compensar con lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
-    </message>
-    <message>
-        <source>%1, model %2, %3 parts</source>
-        <translation>%1, modelo %2, %3 piezas</translation>
     </message>
 </context>
 <context>
@@ -1247,6 +1239,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the model %1 of %2 is damaged: %3</source>
         <translation>el modelo %1 de %2 está dañado: %3</translation>
+    </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, modelo %2, %3 piezas</translation>
     </message>
 </context>
 <context>

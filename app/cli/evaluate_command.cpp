@@ -110,10 +110,7 @@ int evaluateLearned(const QString &file, const Project &project, const QString &
         loadLearnedModel(store, project.machineId, QStringLiteral("evaluate"), err);
     if (!model)
         return kExitProblems;
-    const QString provenance = CommandLine::tr("%1, model %2, %3 parts")
-                                   .arg(model->record.machineId)
-                                   .arg(model->record.id)
-                                   .arg(model->record.parts);
+    const QString provenance = model->provenance();
     const DeviationResult deviation =
         withLearnedResidual(project, computeDeviation(project, DataLibrary::builtIn(), {}), model->model, provenance);
     for (const Diagnostic &d : deviation.diagnostics)

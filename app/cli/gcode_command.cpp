@@ -105,11 +105,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
             loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("gcode"), err);
         if (!model)
             return kExitProblems;
-        deviation = withLearnedResidual(*project, std::move(deviation), model->model,
-                                        GCodeCommand::tr("%1, model %2, %3 parts")
-                                            .arg(model->record.machineId)
-                                            .arg(model->record.id)
-                                            .arg(model->record.parts));
+        deviation = withLearnedResidual(*project, std::move(deviation), model->model, model->provenance());
     }
     const FinishingOutput finishing =
         finishingOutputFor(*project, DataLibrary::builtIn(), std::move(deviation), options);

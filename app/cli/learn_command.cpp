@@ -68,15 +68,15 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
         err << prefix << error << '\n';
         return kExitProblems;
     }
-    std::vector<MeasuredPart> parts;
-    for (const MeasuredPartSummary &s : *list) {
-        auto part = history->part(s.id, &error);
-        if (!part) {
-            err << prefix << error << '\n';
-            return kExitProblems;
-        }
-        parts.push_back(std::move(*part));
+    std::vector<qint64> ids;
+    for (const MeasuredPartSummary &s : *list)
+        ids.push_back(s.id);
+    const auto stored = history->parts(ids, &error);
+    if (!stored) {
+        err << prefix << error << '\n';
+        return kExitProblems;
     }
+    const std::vector<MeasuredPart> &parts = *stored;
     Diagnostics warnings;
     const std::vector<ResidualSample> samples = residualSamples(parts, DataLibrary::builtIn(), warnings);
     for (const Diagnostic &d : warnings)
@@ -151,6 +151,11 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
                .arg(um(cv->physicsRms_mm), um(cv->learnedRms_mm))
         << '\n';
     return kExitOk;
+}
+
+QString LoadedModel::provenance() const
+{
+    return LearnCommand::tr("%1, model %2, %3 parts").arg(record.machineId).arg(record.id).arg(record.parts);
 }
 
 std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId, const QString &command,

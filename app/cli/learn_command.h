@@ -20,6 +20,8 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err);
 struct LoadedModel {
     LearnedModelRecord record;
     LearnedResidual model;
+    // For notes and headings: "haas-st-20, model 3, 30 parts".
+    [[nodiscard]] QString provenance() const;
 };
 
 [[nodiscard]] std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId,

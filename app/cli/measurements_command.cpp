@@ -292,17 +292,13 @@ int runExport(const QStringList &args, QTextStream &out, QTextStream &err)
             ids.push_back(s.id);
         std::reverse(ids.begin(), ids.end()); // oldest first
     }
-    std::vector<MeasuredPart> parts;
-    for (const qint64 id : ids) {
-        auto part = store->part(id, &error);
-        if (!part) {
-            err << prefix(action) << error << '\n';
-            return kExitProblems;
-        }
-        parts.push_back(std::move(*part));
+    const auto parts = store->parts(ids, &error);
+    if (!parts) {
+        err << prefix(action) << error << '\n';
+        return kExitProblems;
     }
     if (const QString problem =
-            writeOutput(parser.value(QStringLiteral("output")), measuredPointsCsv(parts).toUtf8(), out);
+            writeOutput(parser.value(QStringLiteral("output")), measuredPointsCsv(*parts).toUtf8(), out);
         !problem.isEmpty()) {
         err << prefix(action) << problem << '\n';
         return kExitProblems;

@@ -291,6 +291,18 @@ std::optional<MeasuredPart> MeasurementStore::part(qint64 id, QString *error) co
     return p;
 }
 
+std::optional<std::vector<MeasuredPart>> MeasurementStore::parts(const std::vector<qint64> &ids, QString *error) const
+{
+    std::vector<MeasuredPart> out;
+    for (const qint64 id : ids) {
+        auto p = part(id, error);
+        if (!p)
+            return std::nullopt;
+        out.push_back(std::move(*p));
+    }
+    return out;
+}
+
 std::optional<std::vector<MeasuredPartSummary>> MeasurementStore::list(const PartFilter &filter, QString *error) const
 {
     QVariantList values;

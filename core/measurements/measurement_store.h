@@ -79,6 +79,8 @@ public:
     // Validates (validateMeasuredPart) and stores the part; its new id, or the problems.
     [[nodiscard]] std::optional<qint64> add(const MeasuredPart &part, Diagnostics &problems);
     [[nodiscard]] std::optional<MeasuredPart> part(qint64 id, QString *error) const;
+    // The parts with these ids, in that order; empty with `error` at the first that cannot be read.
+    [[nodiscard]] std::optional<std::vector<MeasuredPart>> parts(const std::vector<qint64> &ids, QString *error) const;
     [[nodiscard]] std::optional<std::vector<MeasuredPartSummary>> list(const PartFilter &filter, QString *error) const;
     [[nodiscard]] std::optional<qint64> count(const PartFilter &filter, QString *error) const;
     // False with `error` when there is no such part or the store refused.
