@@ -4,14 +4,11 @@
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
 #include "core/data/data_library.h"
-#include "core/learning/learned_model_json.h"
-#include "core/learning/measured_residuals.h"
+#include "core/learning/machine_learning.h"
 #include "core/measurements/measurement_store.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QDateTime>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
 
@@ -61,63 +58,38 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!history)
         return kExitProblems;
     QString error;
-    PartFilter filter;
-    filter.machineId = parser.value(machine);
-    const auto list = history->list(filter, &error);
-    if (!list) {
+    const QString machineId = parser.value(machine);
+    const auto parts = storedPartsOf(*history, machineId, &error);
+    if (!parts) {
         err << prefix << error << '\n';
         return kExitProblems;
     }
-    std::vector<qint64> ids;
-    for (const MeasuredPartSummary &s : *list)
-        ids.push_back(s.id);
-    const auto stored = history->parts(ids, &error);
-    if (!stored) {
-        err << prefix << error << '\n';
-        return kExitProblems;
-    }
-    const std::vector<MeasuredPart> &parts = *stored;
-    Diagnostics warnings;
-    const std::vector<ResidualSample> samples = residualSamples(parts, DataLibrary::builtIn(), warnings);
-    for (const Diagnostic &d : warnings)
-        err << d.toString() << '\n';
     RbfTrainingOptions options;
     options.criterion = name == QLatin1String("bic") ? RbfCriterion::Bic : RbfCriterion::Gcv;
-    const auto learned = learnResidual(samples, options, &error);
-    const auto cv = learned ? leaveOnePartOut(samples, options, &error) : std::nullopt;
-    if (!learned || !cv) {
-        err << prefix
-            << LearnCommand::tr("%1 has %2 stored part(s) with %3 usable point(s): %4")
-                   .arg(filter.machineId)
-                   .arg(parts.size())
-                   .arg(samples.size())
-                   .arg(error)
-            << '\n';
+    const MachineLearning run = learnMachine(*parts, DataLibrary::builtIn(), options);
+    for (const Diagnostic &d : run.warnings)
+        err << d.toString() << '\n';
+    if (!run.ok()) {
+        err << prefix << LearnCommand::tr("%1 has %2").arg(machineId, run.error) << '\n';
         return kExitProblems;
     }
     if (parser.isSet(save)) {
-        const LearnedModelRecord record{0,
-                                        filter.machineId,
-                                        QDateTime::currentDateTimeUtc(),
-                                        cv->parts,
-                                        cv->points,
-                                        cv->physicsRms_mm,
-                                        cv->learnedRms_mm,
-                                        QJsonDocument(learnedResidualJson(*learned)).toJson(QJsonDocument::Compact)};
-        const auto id = history->addLearnedModel(record, &error);
+        const auto id = history->addLearnedModel(learnedModelRecord(machineId, run), &error);
         if (!id) {
             err << prefix << error << '\n';
             return kExitProblems;
         }
         err << LearnCommand::tr("kept as the model of %1 (number %2) in %3")
-                   .arg(filter.machineId)
+                   .arg(machineId)
                    .arg(*id)
                    .arg(history->location().describe())
             << '\n';
     }
+    const std::optional<LearnedResidual> &learned = run.learned;
+    const std::optional<CrossValidation> &cv = run.validation;
     const GeometricError &g = learned->geometric;
     if (parser.isSet(json))
-        return printJson(QJsonObject{{QStringLiteral("machine"), filter.machineId},
+        return printJson(QJsonObject{{QStringLiteral("machine"), machineId},
                                      {QStringLiteral("parts"), cv->parts},
                                      {QStringLiteral("points"), cv->points},
                                      {QStringLiteral("geometric"),
@@ -134,8 +106,7 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
                                       QJsonObject{{QStringLiteral("physics_rms_um"), 1000.0 * cv->physicsRms_mm},
                                                   {QStringLiteral("learned_rms_um"), 1000.0 * cv->learnedRms_mm}}}},
                          out, err, QStringLiteral("learn"));
-    out << LearnCommand::tr("%1: %2 parts, %3 measured points").arg(filter.machineId).arg(cv->parts).arg(cv->points)
-        << '\n'
+    out << LearnCommand::tr("%1: %2 parts, %3 measured points").arg(machineId).arg(cv->parts).arg(cv->points) << '\n'
         << LearnCommand::tr("  geometric error: %1 µm per mm of diameter, %2 µm per mm along z (taper), %3 µm offset")
                .arg(QString::number(1000.0 * g.perDiameter, 'g', 3), QString::number(1000.0 * g.perZ, 'g', 3),
                     QString::number(1000.0 * g.offset_mm, 'f', 2))
@@ -153,11 +124,6 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
     return kExitOk;
 }
 
-QString LoadedModel::provenance() const
-{
-    return LearnCommand::tr("%1, model %2, %3 parts").arg(record.machineId).arg(record.id).arg(record.parts);
-}
-
 std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId, const QString &command,
                                             QTextStream &err)
 {
@@ -166,23 +132,15 @@ std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString 
     if (!history)
         return std::nullopt;
     QString error;
-    const auto record = history->latestLearnedModel(machineId, &error);
-    if (!record) {
+    auto model = latestModelOf(*history, machineId, &error);
+    if (!model)
         err << prefix
             << (error.isEmpty()
                     ? LearnCommand::tr("nothing has been learned of %1 yet: run 'learn --machine %1 --save'")
                           .arg(machineId)
                     : error)
             << '\n';
-        return std::nullopt;
-    }
-    const auto model = learnedResidualFromJson(QJsonDocument::fromJson(record->modelJson).object(), &error);
-    if (!model) {
-        err << prefix << LearnCommand::tr("the model %1 of %2 is damaged: %3").arg(record->id).arg(machineId).arg(error)
-            << '\n';
-        return std::nullopt;
-    }
-    return LoadedModel{*record, *model};
+    return model;
 }
 
 } // namespace tolturn

@@ -2,7 +2,7 @@
 // tolturn-cli learn (docs/cli.md): what the measured parts of a machine teach beyond the physics.
 #pragma once
 
-#include "core/learning/measured_residuals.h"
+#include "core/learning/machine_learning.h"
 #include "core/measurements/measurement_store.h"
 
 #include <QStringList>
@@ -17,13 +17,6 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err);
 
 // The newest model learned of `machineId` in the store named `store` (empty: the default), for
 // the commands' --learned; empty after printing why on `err` (no store, no model, a damaged one).
-struct LoadedModel {
-    LearnedModelRecord record;
-    LearnedResidual model;
-    // For notes and headings: "haas-st-20, model 3, 30 parts".
-    [[nodiscard]] QString provenance() const;
-};
-
 [[nodiscard]] std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId,
                                                           const QString &command, QTextStream &err);
 

@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "app/cli/learn_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -29,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -171,7 +173,11 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("time-limit"),
         CommandLine::tr("Stop the search after SECONDS (0.01 to 3600, default 60) with the best plan found by then."),
         QStringLiteral("SECONDS"), QStringLiteral("60"));
-    parser.addOptions({json, objective, write, machineEnd, timeLimit});
+    const QCommandLineOption learned(
+        QStringLiteral("learned"),
+        CommandLine::tr("Plan with what was learned of the machine from its measured parts (learn --save)."));
+    const QCommandLineOption store = measurementStoreOption();
+    parser.addOptions({json, objective, write, machineEnd, timeLimit, learned, store});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("optimize"), args, out, err); stop >= 0)
@@ -211,7 +217,20 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         }
         end = value == QLatin1String("stiff") ? StiffnessEnd::Stiff : StiffnessEnd::Compliant;
     }
-    const PlanningProblem::BuildResult built = PlanningProblem::build(*project, DataLibrary::builtIn(), end);
+    std::shared_ptr<const LoadedModel> model;
+    if (parser.isSet(learned)) {
+        if (parser.isSet(machineEnd)) {
+            err << programName() << " optimize: "
+                << CommandLine::tr("--learned replaces the stiffness range: give it or --machine-end, not both")
+                << '\n';
+            return kExitUsage;
+        }
+        auto loaded = loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("optimize"), err);
+        if (!loaded)
+            return kExitProblems;
+        model = std::make_shared<const LoadedModel>(std::move(*loaded));
+    }
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*project, DataLibrary::builtIn(), end, model);
     for (const Diagnostic &d : built.diagnostics) {
         if (d.severity == Severity::Error)
             err << file << ": " << d.toString() << '\n';

@@ -209,7 +209,8 @@ std::optional<LearnedResidual> learnResidual(const std::vector<ResidualSample> &
 }
 
 std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample> &samples,
-                                               const RbfTrainingOptions &options, QString *error)
+                                               const RbfTrainingOptions &options, QString *error,
+                                               const LearningControl &control)
 {
     std::map<qint64, std::vector<std::size_t>> byPart;
     for (std::size_t i = 0; i < samples.size(); ++i)
@@ -221,7 +222,15 @@ std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample>
     }
     CrossValidation cv;
     double physics = 0.0, learned = 0.0;
+    const int folds = static_cast<int>(byPart.size());
     for (const auto &[part, rows] : byPart) {
+        if (control.cancelled && control.cancelled()) {
+            if (error)
+                *error = MeasuredResiduals::tr("cancelled");
+            return std::nullopt;
+        }
+        if (control.progress)
+            control.progress(cv.parts, folds);
         std::vector<ResidualSample> training;
         for (const ResidualSample &s : samples) {
             if (s.partId != part)
@@ -239,6 +248,8 @@ std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample>
         ++cv.parts;
         cv.points += static_cast<int>(rows.size());
     }
+    if (control.progress)
+        control.progress(folds, folds);
     cv.physicsRms_mm = std::sqrt(physics / cv.points);
     cv.learnedRms_mm = std::sqrt(learned / cv.points);
     return cv;
@@ -247,10 +258,15 @@ std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample>
 std::vector<std::vector<double>> learnedAtStations(const Project &project, const DeviationResult &deviation,
                                                    const LearnedResidual &learned)
 {
+    return learnedAtStations(project, deviation, learned, programTargets(project));
+}
+
+std::vector<std::vector<double>> learnedAtStations(const Project &project, const DeviationResult &deviation,
+                                                   const LearnedResidual &learned, const ProgramTargets &targets)
+{
     std::vector<std::vector<double>> out;
     if (!deviation.inputs)
         return out;
-    const ProgramTargets targets = programTargets(project);
     for (const FeatureDeviation &f : deviation.features) {
         std::vector<double> feature;
         for (const Station &st : f.stations) {
@@ -263,15 +279,21 @@ std::vector<std::vector<double>> learnedAtStations(const Project &project, const
     return out;
 }
 
-DeviationResult withLearnedResidual(const Project &project, DeviationResult deviation, const LearnedResidual &learned,
-                                    const QString &provenance)
+void addLearnedResidual(const Project &project, DeviationResult &deviation, const LearnedResidual &learned,
+                        const ProgramTargets &targets)
 {
-    const std::vector<std::vector<double>> add = learnedAtStations(project, deviation, learned);
+    const std::vector<std::vector<double>> add = learnedAtStations(project, deviation, learned, targets);
     for (std::size_t f = 0; f < deviation.features.size() && f < add.size(); ++f) {
         std::vector<Station> &stations = deviation.features[f].stations;
         for (std::size_t i = 0; i < stations.size() && i < add[f].size(); ++i)
             stations[i].radiusError_mm += add[f][i];
     }
+}
+
+DeviationResult withLearnedResidual(const Project &project, DeviationResult deviation, const LearnedResidual &learned,
+                                    const QString &provenance)
+{
+    addLearnedResidual(project, deviation, learned, programTargets(project));
     if (deviation.inputs)
         deviation.inputs->notes << MeasuredResiduals::tr(
                                        "The predicted radius errors include what was learned from measured parts (%1): "

@@ -5,9 +5,11 @@
 #include "core/deviation/deviation_model.h"
 #include "core/learning/hybrid_rbf.h"
 #include "core/measurements/measured_part.h"
+#include "core/tolerance/target_contour.h"
 
 #include <Eigen/Dense>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -73,13 +75,30 @@ struct CrossValidation {
     double learnedRms_mm = 0.0;
 };
 
+// Progress and cancel of a long learning run (one step per part left out); both may be empty.
+struct LearningControl {
+    std::function<bool()> cancelled;
+    std::function<void(int done, int total)> progress;
+};
+
+// Empty with `error` when a fold cannot be learned, and when `control` cancelled (between folds).
 [[nodiscard]] std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample> &samples,
-                                                             const RbfTrainingOptions &options, QString *error);
+                                                             const RbfTrainingOptions &options, QString *error,
+                                                             const LearningControl &control = {});
 
 // What was learned at every station of a deviation result of `project` (its features in order,
 // their stations in order), in mm of radius: the learned correction to each predicted radius error.
 [[nodiscard]] std::vector<std::vector<double>>
 learnedAtStations(const Project &project, const DeviationResult &deviation, const LearnedResidual &learned);
+[[nodiscard]] std::vector<std::vector<double>> learnedAtStations(const Project &project,
+                                                                 const DeviationResult &deviation,
+                                                                 const LearnedResidual &learned,
+                                                                 const ProgramTargets &targets);
+
+// Adds what was learned to every station's radius error, without a note (the optimiser, for each
+// candidate, with the program's targets computed once).
+void addLearnedResidual(const Project &project, DeviationResult &deviation, const LearnedResidual &learned,
+                        const ProgramTargets &targets);
 
 // The deviation result with what was learned added to every station's radius error (the
 // predicted machined radius then being physics + learned), and a note saying so, naming

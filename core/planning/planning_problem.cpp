@@ -77,7 +77,8 @@ double CandidateEvaluation::totalViolation() const
     return sum;
 }
 
-PlanningProblem::BuildResult PlanningProblem::build(const Project &project, const DataLibrary &data, StiffnessEnd end)
+PlanningProblem::BuildResult PlanningProblem::build(const Project &project, const DataLibrary &data, StiffnessEnd end,
+                                                    std::shared_ptr<const LoadedModel> learned)
 {
     BuildResult result;
     Diagnostics &out = result.diagnostics;
@@ -91,7 +92,7 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     }
     DeviationOptions options;
     options.stationsPerFeature = kStations;
-    options.stiffnessEnd = end;
+    options.stiffnessEnd = learned ? StiffnessEnd::Compliant : end;
     Project withPass = project;
     if (withPass.passes.empty())
         withPass.passes.push_back(
@@ -111,6 +112,11 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     p.m_feed = *s.feed_mm_rev;
     p.m_depth = *s.depthOfCut_mm;
     p.m_notes = p.m_inputs.notes;
+    if (learned)
+        p.m_notes << Planning::tr("The tolerance constraints include what was learned of the machine from its measured "
+                                  "parts (%1); parts not learned from were predicted to %2 µm RMS.")
+                         .arg(learned->provenance(), QString::number(1000.0 * learned->uncertainty_mm(), 'f', 1));
+    p.m_learned = std::move(learned);
     // The finishing pass's deflection with the thinnest stock it may leave on the uncut side
     // (the smallest depth): the least stiff section, so the tolerance constraints err on the safe side.
     p.m_table = buildInfluenceTable(project.part, p.m_inputs, kStations, p.m_depth.min);
@@ -278,7 +284,9 @@ std::vector<ConstraintValue> PlanningProblem::toleranceConstraints(const PassCon
     in.pass.cuttingSpeed_m_min = pass.cuttingSpeed_m_min;
     in.pass.feed_mm_rev = pass.feed_mm_rev;
     in.pass.depthOfCut_mm = pass.depthOfCut_mm;
-    const DeviationResult deviation = evaluateInfluenceTable(m_project.part, m_table, in);
+    DeviationResult deviation = evaluateInfluenceTable(m_project.part, m_table, in);
+    if (m_learned)
+        addLearnedResidual(m_project, deviation, m_learned->model, m_targets);
     for (const ToleranceEvaluation &e :
          evaluateTolerances(m_project, deviation, EvaluationDetail::ValuesOnly, &m_targets)) {
         if (e.value_um && e.limit_um && *e.limit_um > 0.0)

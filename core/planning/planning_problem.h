@@ -4,6 +4,7 @@
 #include "core/common/diagnostic.h"
 #include "core/data/data_library.h"
 #include "core/deviation/deviation_model.h"
+#include "core/learning/machine_learning.h"
 #include "core/project/project.h"
 #include "core/tolerance/target_contour.h"
 
@@ -83,8 +84,12 @@ public:
     // On a machine that was not measured the tolerance constraints use the deflection at `end` of
     // the chuck's published stiffness range: the compliant end, so that the plan holds on any
     // machine in it, unless told otherwise.
+    // With `learned`, the tolerance constraints add what was learned of the machine from its
+    // measured parts to the physics of every candidate (docs/learning.md): the machine's measured
+    // behaviour, so its stiffness is taken as it was when the model was learned (the compliant end).
     static BuildResult build(const Project &project, const DataLibrary &data,
-                             StiffnessEnd end = StiffnessEnd::Compliant);
+                             StiffnessEnd end = StiffnessEnd::Compliant,
+                             std::shared_ptr<const LoadedModel> learned = nullptr);
 
     // `tolerances`, when given, are the tolerance constraints of this finishing feed and depth,
     // computed before (they do not depend on the cutting speed): the window maps reuse them.
@@ -116,6 +121,8 @@ public:
 
     [[nodiscard]] QStringList notes() const { return m_notes; }
 
+    [[nodiscard]] const std::shared_ptr<const LoadedModel> &learned() const { return m_learned; }
+
 private:
     PlanningProblem() = default;
     [[nodiscard]] CuttingForces forces(double feed_mm_rev, double depth_mm) const;
@@ -131,6 +138,7 @@ private:
     TurningInputs m_inputs;
     InfluenceTable m_table;
     ProgramTargets m_targets; // what the finishing program aims at, for the tolerance constraints
+    std::shared_ptr<const LoadedModel> m_learned;
     std::function<CuttingForces(double, double)> m_forceModel;
     ValueRange m_speed, m_feed, m_depth;
     double m_radialStock_mm = 0.0;

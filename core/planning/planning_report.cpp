@@ -10,7 +10,8 @@ namespace tolturn {
 PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, const PlanningJobOptions &options)
 {
     PlanningReport report;
-    const PlanningProblem::BuildResult built = PlanningProblem::build(project, data);
+    const PlanningProblem::BuildResult built =
+        PlanningProblem::build(project, data, StiffnessEnd::Compliant, options.learned);
     report.diagnostics = built.diagnostics;
     report.problem = built.problem;
     if (!built.problem)

@@ -26,6 +26,8 @@ struct PlanningJobOptions {
     int windowSize = 128;
     bool adviseClamping = true;
     std::function<bool(double fraction)> progress; // false cancels
+    // What was learned of the machine, when the planner plans with it (PlanningProblem::build).
+    std::shared_ptr<const LoadedModel> learned;
 };
 
 [[nodiscard]] PlanningReport runPlanningJob(const Project &project, const DataLibrary &data,

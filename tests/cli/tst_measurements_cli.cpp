@@ -216,6 +216,17 @@ private Q_SLOTS:
             ++sizes;
         }
         QVERIFY(sizes >= 2);
+        // The optimiser plans with it and says so; with a stiffness end as well it is a usage error.
+        const auto planned = runCli({QStringLiteral("optimize"), QStringLiteral("--learned"), QStringLiteral("--json"),
+                                     QStringLiteral("--time-limit"), QStringLiteral("20"), QStringLiteral("--store"),
+                                     learnStore, project});
+        const QJsonArray notes = QJsonDocument::fromJson(planned.out.toUtf8())[QStringLiteral("notes")].toArray();
+        QVERIFY2(QJsonDocument(notes).toJson().contains("haas-st-20, model 1, 6 parts"), qPrintable(planned.out));
+        const auto both =
+            runCli({QStringLiteral("optimize"), QStringLiteral("--learned"), QStringLiteral("--machine-end"),
+                    QStringLiteral("stiff"), QStringLiteral("--store"), learnStore, project});
+        QCOMPARE(both.exitCode, 2);
+        QVERIFY2(both.err.contains(QStringLiteral("--learned replaces the stiffness range")), qPrintable(both.err));
         // Too few parts to leave one out: named.
         const auto none = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-30"),
                                   QStringLiteral("--store"), learnStore});

@@ -7,13 +7,16 @@
 #include "core/io/project_json.h"
 #include "core/learning/hybrid_rbf.h"
 #include "core/learning/learned_model_json.h"
+#include "core/learning/machine_learning.h"
 #include "core/learning/measured_residuals.h"
+#include "core/planning/planning_problem.h"
 #include "core/tolerance/target_contour.h"
 
 #include <QJsonArray>
 #include <QTest>
 
 #include <cmath>
+#include <memory>
 #include <random>
 
 using namespace tolturn;
@@ -266,6 +269,52 @@ private Q_SLOTS:
 
     // What is learned survives the store: the same predictions after JSON and back; a damaged
     // model is refused by field.
+    // The optimiser's tolerance constraints with what was learned: a learned taper of 0.1 µm of
+    // radius per mm along z (a Z axis not parallel to the spindle) spreads the Ø50 h6 bearing seat
+    // (O4) by 2 · 0.1 µm/mm · L over its turned length L, so the constraint's value, the spread of
+    // the physics plus the taper, lies within 2·0.1·L ± the physics' own spread v0.
+    void optimiserPlansWithWhatWasLearned()
+    {
+        const Project p =
+            *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/stepped-shaft-chuck.tolturn"))
+                 .project;
+        const auto physics = PlanningProblem::build(p, DataLibrary::builtIn());
+        QVERIFY(physics.problem);
+        LoadedModel model;
+        model.record.machineId = p.machineId;
+        model.record.id = 7;
+        model.record.parts = 5;
+        model.record.learnedRms_mm = 0.0012;
+        model.model.geometric.perZ = 1e-4;
+        const auto learned = PlanningProblem::build(p, DataLibrary::builtIn(), StiffnessEnd::Compliant,
+                                                    std::make_shared<const LoadedModel>(model));
+        QVERIFY(learned.problem);
+        QVERIFY(learned.problem->notes().join(QLatin1Char(' ')).contains(QStringLiteral("model 7, 5 parts")));
+        const CuttingPass &finishing = p.passes.back();
+        const PassConditions pass{finishing.cuttingSpeed_m_min, finishing.feed_mm_rev, finishing.depthOfCut_mm};
+        auto valueOf = [&pass](const PlanningProblem &problem) {
+            for (const ConstraintValue &c : problem.toleranceConstraints(pass)) {
+                if (c.subject == QLatin1String("T1"))
+                    return c.value;
+            }
+            return -1.0;
+        };
+        const double v0 = valueOf(*physics.problem);
+        const double v = valueOf(*learned.problem);
+        QVERIFY(v0 >= 0.0 && v >= 0.0);
+        // The turned length of O4 as the model samples it (its first to last station).
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        double length = 0.0;
+        for (const FeatureDeviation &f : d.features) {
+            if (f.featureId == QLatin1String("O4"))
+                length = f.stations.back().z_mm - f.stations.front().z_mm;
+        }
+        QVERIFY(length > 40.0);
+        const double taper = 2.0 * 0.1 * length;
+        QVERIFY2(taper > 2.0 * v0, qPrintable(QString::number(v0))); // so that v0 alone is outside the band
+        QVERIFY2(std::abs(v - taper) <= v0 + 1e-9, qPrintable(QStringLiteral("%1 %2 %3").arg(v).arg(v0).arg(taper)));
+    }
+
     void learnedModelRoundTrips()
     {
         Diagnostics warnings;

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/diagnostic.h"
+#include "core/data/data_library.h"
+#include "core/learning/measured_residuals.h"
+#include "core/measurements/measurement_store.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace tolturn {
+
+// One learning run of a machine (docs/learning.md): its stored parts against the physics, the
+// residual learned from all of them, and how well parts left out are predicted. The command
+// line's `learn` and the desktop program's Measurements dock both run this.
+struct MachineLearning {
+    std::optional<LearnedResidual> learned;    // with `validation`, or neither
+    std::optional<CrossValidation> validation; // leave one part out
+    int parts = 0;                             // stored parts of the machine
+    int usablePoints = 0;                      // points compared with the physics
+    Diagnostics warnings;                      // parts left out, and why
+    QString error;                             // why nothing was learned; empty on success
+    bool cancelled = false;
+
+    [[nodiscard]] bool ok() const { return learned && validation; }
+};
+
+[[nodiscard]] MachineLearning learnMachine(const std::vector<MeasuredPart> &parts, const DataLibrary &data,
+                                           const RbfTrainingOptions &options, const LearningControl &control = {});
+
+// Every stored part of a machine, with its snapshot and points; empty with `error` when the store
+// refused.
+[[nodiscard]] std::optional<std::vector<MeasuredPart>> storedPartsOf(const MeasurementStore &store,
+                                                                     const QString &machineId, QString *error);
+
+// The record that keeps a successful run in the store (its id given by the store).
+[[nodiscard]] LearnedModelRecord learnedModelRecord(const QString &machineId, const MachineLearning &run);
+
+// A learned model as the commands and the window use it: the stored record and the model read
+// back from it.
+struct LoadedModel {
+    LearnedModelRecord record;
+    LearnedResidual model;
+    // For notes and headings: "haas-st-20, model 3, 30 parts".
+    [[nodiscard]] QString provenance() const;
+
+    // The uncertainty of a prediction with it: the RMS error on parts not learned from [mm].
+    [[nodiscard]] double uncertainty_mm() const { return record.learnedRms_mm; }
+};
+
+// The newest model of `machineId` in the store. Empty with `error` empty when nothing has been
+// learned of it yet; with `error` set when the store refused or the stored model is damaged.
+[[nodiscard]] std::optional<LoadedModel> latestModelOf(const MeasurementStore &store, const QString &machineId,
+                                                       QString *error);
+
+} // namespace tolturn
