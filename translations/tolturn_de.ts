@@ -490,6 +490,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Judge with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Mit dem urteilen, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
     </message>
+    <message>
+        <source>Plan with what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Mit dem planen, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
+    </message>
+    <message>
+        <source>--learned replaces the stiffness range: give it or --machine-end, not both</source>
+        <translation>--learned ersetzt den Steifigkeitsbereich: geben Sie es oder --machine-end an, nicht beides</translation>
+    </message>
+    <message>
+        <source>Base the report on what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Den Bericht auf das stützen, was aus den gemessenen Teilen über die Maschine gelernt wurde (learn --save).</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1205,10 +1217,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>geben Sie --machine ID an, und --criterion gcv oder bic</translation>
     </message>
     <message>
-        <source>%1 has %2 stored part(s) with %3 usable point(s): %4</source>
-        <translation>%1 hat %2 gespeicherte(s) Teil(e) mit %3 verwendbaren Punkt(en): %4</translation>
-    </message>
-    <message>
         <source>%1: %2 parts, %3 measured points</source>
         <translation>%1: %2 Teile, %3 Messpunkte</translation>
     </message>
@@ -1237,12 +1245,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>von %1 wurde noch nichts gelernt: führen Sie „learn --machine %1 --save“ aus</translation>
     </message>
     <message>
-        <source>the model %1 of %2 is damaged: %3</source>
-        <translation>das Modell %1 von %2 ist beschädigt: %3</translation>
-    </message>
-    <message>
-        <source>%1, model %2, %3 parts</source>
-        <translation>%1, Modell %2, %3 Teile</translation>
+        <source>%1 has %2</source>
+        <translation>%1 hat %2</translation>
     </message>
 </context>
 <context>
@@ -1250,6 +1254,51 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the learned model has no valid &quot;%1&quot;</source>
         <translation>das gelernte Modell hat kein gültiges „%1“</translation>
+    </message>
+</context>
+<context>
+    <name>MachineLearning</name>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, Modell %2, %3 Teile</translation>
+    </message>
+    <message>
+        <source>the model %1 of %2 is damaged: %3</source>
+        <translation>das Modell %1 von %2 ist beschädigt: %3</translation>
+    </message>
+    <message>
+        <source>the project snapshot of part %1 does not read</source>
+        <translation>der Projektstand von Teil %1 lässt sich nicht lesen</translation>
+    </message>
+    <message>
+        <source>the physics model cannot compute the snapshot of part %1</source>
+        <translation>das Physikmodell kann den Projektstand von Teil %1 nicht berechnen</translation>
+    </message>
+    <message>
+        <source>as learned from its measured parts (%1, learned %2 UTC): parts not learned from were predicted to %3 µm RMS, the physics alone to %4 µm; its stiffness range is not used</source>
+        <translation>wie aus ihren gemessenen Teilen gelernt (%1, gelernt %2 UTC): nicht zum Lernen verwendete Teile wurden auf %3 µm RMS vorhergesagt, von der Physik allein auf %4 µm; ihr Steifigkeitsbereich wird nicht verwendet</translation>
+    </message>
+    <message>
+        <source>%1 with %2: %3</source>
+        <translation>%1 mit %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n stored part(s)</source>
+        <translation>
+            <numerusform>%n gespeichertes Teil</numerusform>
+            <numerusform>%n gespeicherte Teile</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n usable point(s)</source>
+        <translation>
+            <numerusform>%n verwendbarer Punkt</numerusform>
+            <numerusform>%n verwendbare Punkte</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1316,6 +1365,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The predicted radius errors include what was learned from measured parts (%1): the machine&apos;s measured behaviour replaces its stiffness range.</source>
         <translation>Die vorhergesagten Radiusfehler enthalten, was aus gemessenen Teilen gelernt wurde (%1): das gemessene Verhalten der Maschine ersetzt ihren Steifigkeitsbereich.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
     </message>
 </context>
 <context>
@@ -1714,6 +1767,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the stock leaves %1 mm to remove on the radius: at least %2 roughing passes at the insert&apos;s largest depth of cut (%3 mm), and the optimiser plans up to %4; turn from a smaller bar</source>
         <translation>das Rohteil lässt %1 mm auf dem Radius abzutragen: mindestens %2 Schruppschnitte bei der größten Schnitttiefe der Wendeschneidplatte (%3 mm), und der Optimierer plant bis zu %4; drehen Sie aus einer kleineren Stange</translation>
+    </message>
+    <message>
+        <source>The tolerance constraints include what was learned of the machine from its measured parts (%1); parts not learned from were predicted to %2 µm RMS.</source>
+        <translation>Die Toleranz-Randbedingungen enthalten, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (%1); nicht gelernte Teile wurden auf %2 µm RMS vorhergesagt.</translation>
     </message>
 </context>
 <context>
@@ -3709,6 +3766,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The predicted deviation of every feature appears here once a part is open.</source>
         <translation>Die vorhergesagte Abweichung jedes Formelements erscheint hier, sobald ein Teil geöffnet ist.</translation>
     </message>
+    <message>
+        <source>total, physics + learned</source>
+        <translation>gesamt, Physik + Gelerntes</translation>
+    </message>
+    <message>
+        <source>diameter error, physics + learned</source>
+        <translation>Durchmesserfehler, Physik + Gelerntes</translation>
+    </message>
+    <message>
+        <source>Physics + learned (%1): what was learned of the machine from its measured parts is added to the physics; the band is ± the RMS error on parts not learned from (%2 µm).</source>
+        <translation>Physik + Gelerntes (%1): Was von der Maschine aus ihren gemessenen Teilen gelernt wurde, wird zur Physik addiert; das Band ist ± der RMS-Fehler bei nicht gelernten Teilen (%2 µm).</translation>
+    </message>
+    <message>
+        <source>%1 − %2 µm</source>
+        <translation>%1 − %2 µm</translation>
+    </message>
+    <message>
+        <source>%1 + %2 µm</source>
+        <translation>%1 + %2 µm</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::DiagnosticsPanel</name>
@@ -4431,6 +4508,384 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Problems</source>
         <translation>Probleme</translation>
     </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasuredPartsModel</name>
+    <message>
+        <source>Part %1</source>
+        <translation>Teil %1</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Gemessen</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Teil</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>By</source>
+        <translation>Prüfer</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasurementEntryDialog</name>
+    <message>
+        <source>Measured Part — %1 on %2</source>
+        <translation>Gemessenes Teil — %1 auf %2</translation>
+    </message>
+    <message>
+        <source>micrometer</source>
+        <translation>Bügelmessschraube</translation>
+    </message>
+    <message>
+        <source>CMM</source>
+        <translation>KMG</translation>
+    </message>
+    <message>
+        <source>bore gauge</source>
+        <translation>Innenmessgerät</translation>
+    </message>
+    <message>
+        <source>dial gauge along the part</source>
+        <translation>Messuhr entlang des Teils</translation>
+    </message>
+    <message>
+        <source>as in the project</source>
+        <translation>wie im Projekt</translation>
+    </message>
+    <message>
+        <source>Minutes from the machine&apos;s start to the cut: the warm-up the thermal error depends on (Li &amp; Du 2022, §3.2).</source>
+        <translation>Minuten vom Einschalten der Maschine bis zum Schnitt: die Erwärmung, von der der thermische Fehler abhängt (Li &amp; Du 2022, §3.2).</translation>
+    </message>
+    <message>
+        <source>Measured &amp;by:</source>
+        <translation>Gemessen &amp;von:</translation>
+    </message>
+    <message>
+        <source>&amp;Method:</source>
+        <translation>&amp;Messverfahren:</translation>
+    </message>
+    <message>
+        <source>Measured &amp;at:</source>
+        <translation>Gemessen &amp;am:</translation>
+    </message>
+    <message>
+        <source>&amp;Time since start [min]:</source>
+        <translation>&amp;Zeit seit Einschalten [min]:</translation>
+    </message>
+    <message>
+        <source>Am&amp;bient [°C]:</source>
+        <translation>Umge&amp;bung [°C]:</translation>
+    </message>
+    <message>
+        <source>&amp;Note:</source>
+        <translation>&amp;Notiz:</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>Formelement</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Gemessen</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>One measured point a row: a diameter in mm, or a radial deviation in µm (material left on the surface positive).</source>
+        <translation>Ein Messpunkt je Zeile: ein Durchmesser in mm oder eine radiale Abweichung in µm (an der Oberfläche verbliebenes Material positiv).</translation>
+    </message>
+    <message>
+        <source>Add &amp;Row</source>
+        <translation>Zeile &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Rows</source>
+        <translation>Zeilen &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>Read &amp;CSV…</source>
+        <translation>&amp;CSV lesen…</translation>
+    </message>
+    <message>
+        <source>Columns feature, z_mm and diameter_mm or radial_deviation_um (docs/learning.md).</source>
+        <translation>Spalten feature, z_mm und diameter_mm oder radial_deviation_um (docs/learning.md).</translation>
+    </message>
+    <message>
+        <source>&amp;Store</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>diameter [mm]</source>
+        <translation>Durchmesser [mm]</translation>
+    </message>
+    <message>
+        <source>radial deviation [µm]</source>
+        <translation>radiale Abweichung [µm]</translation>
+    </message>
+    <message>
+        <source>Read Measured Points</source>
+        <translation>Messpunkte lesen</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The file was not read:</source>
+        <translation>Die Datei wurde nicht gelesen:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s) read from %1.</source>
+        <translation>
+            <numerusform>%n Punkt aus %1 gelesen.</numerusform>
+            <numerusform>%n Punkte aus %1 gelesen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>feature</source>
+        <translation>Formelement</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>row %1, %2</source>
+        <translation>Zeile %1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasurementsPanel</name>
+    <message>
+        <source>Use the &amp;Local Store</source>
+        <translation>&amp;Lokalen Speicher verwenden</translation>
+    </message>
+    <message>
+        <source>Work with the measurement store on this computer until the shop database can be reached again (Preferences keep the shop database).</source>
+        <translation>Mit dem Messwertspeicher auf diesem Computer arbeiten, bis die Werkstattdatenbank wieder erreichbar ist (die Einstellungen behalten die Werkstattdatenbank).</translation>
+    </message>
+    <message>
+        <source>This project&apos;s machine</source>
+        <translation>Maschine dieses Projekts</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>Alle Maschinen</translation>
+    </message>
+    <message>
+        <source>Filter by part, who measured or method</source>
+        <translation>Nach Teil, Prüfer oder Verfahren filtern</translation>
+    </message>
+    <message>
+        <source>&amp;Add Measured Part…</source>
+        <translation>Gemessenes Teil &amp;hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Type in (or read from CSV) the measured points of a part cut from the open project.</source>
+        <translation>Die Messpunkte eines nach dem geöffneten Projekt gefertigten Teils eingeben (oder aus CSV lesen).</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>&amp;Export CSV…</source>
+        <translation>CSV e&amp;xportieren…</translation>
+    </message>
+    <message>
+        <source>What was learned of the machine</source>
+        <translation>Was von der Maschine gelernt wurde</translation>
+    </message>
+    <message>
+        <source>L&amp;earn</source>
+        <translation>Ler&amp;nen</translation>
+    </message>
+    <message>
+        <source>Learn the machine&apos;s error beyond the physics from all its measured parts (Li &amp; Du 2022: geometric error by regression, the rest by a hybrid RBF network), check it by leaving one part out, and keep it.</source>
+        <translation>Den Fehler der Maschine über die Physik hinaus aus allen ihren gemessenen Teilen lernen (Li &amp; Du 2022: geometrischer Fehler per Regression, der Rest mit einem hybriden RBF-Netz), ihn durch Weglassen je eines Teils prüfen und behalten.</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>&amp;Use in the predictions (verdicts, curves, plan, program, report)</source>
+        <translation>In den Vorhersagen &amp;verwenden (Bewertungen, Kurven, Plan, Programm, Bericht)</translation>
+    </message>
+    <message>
+        <source>Machine %1</source>
+        <translation>Maschine %1</translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>%1 wird gelesen…</translation>
+    </message>
+    <message>
+        <source>of %1</source>
+        <translation>von %1</translation>
+    </message>
+    <message>
+        <source>of all machines</source>
+        <translation>aller Maschinen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n measured part(s) %1 in %2</source>
+        <translation>
+            <numerusform>%n gemessenes Teil %1 in %2</numerusform>
+            <numerusform>%n gemessene Teile %1 in %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open a project to learn its machine from the parts measured on it.</source>
+        <translation>Öffnen Sie ein Projekt, um dessen Maschine aus den darauf gefertigten und gemessenen Teilen zu lernen.</translation>
+    </message>
+    <message>
+        <source>Nothing has been learned of %1 yet. Learn needs at least two measured parts; the more parts, conditions and times of day they cover, the better.</source>
+        <translation>Von %1 wurde noch nichts gelernt. Lernen braucht mindestens zwei gemessene Teile; je mehr Teile, Bedingungen und Tageszeiten sie abdecken, desto besser.</translation>
+    </message>
+    <message>
+        <source>Model %1, learned %2 from %3 parts (%4 points). Parts not learned from (leave one part out): physics alone %5 µm RMS, physics + learned %6 µm RMS.</source>
+        <translation>Modell %1, gelernt %2 aus %3 Teilen (%4 Punkte). Nicht gelernte Teile (ein Teil weggelassen): Physik allein %5 µm RMS, Physik + Gelerntes %6 µm RMS.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Part %1 stored with %n point(s).</source>
+        <translation>
+            <numerusform>Teil %1 mit %n Punkt gespeichert.</numerusform>
+            <numerusform>Teil %1 mit %n Punkten gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Measured Part Not Stored</source>
+        <translation>Gemessenes Teil nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>Remove Measured Parts</source>
+        <translation>Gemessene Teile entfernen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n measured part(s) and their points from %1? Models learned before keep what they learned.</source>
+        <translation>
+            <numerusform>%n gemessenes Teil und seine Punkte aus %1 entfernen? Zuvor gelernte Modelle behalten, was sie gelernt haben.</numerusform>
+            <numerusform>%n gemessene Teile und ihre Punkte aus %1 entfernen? Zuvor gelernte Modelle behalten, was sie gelernt haben.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n part(s) removed.</source>
+        <translation>
+            <numerusform>%n Teil entfernt.</numerusform>
+            <numerusform>%n Teile entfernt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not Removed</source>
+        <translation>Nicht entfernt</translation>
+    </message>
+    <message>
+        <source>Export Measured Parts</source>
+        <translation>Gemessene Teile exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n part(s) written to %1.</source>
+        <translation>
+            <numerusform>%n Teil nach %1 geschrieben.</numerusform>
+            <numerusform>%n Teile nach %1 geschrieben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not Exported</source>
+        <translation>Nicht exportiert</translation>
+    </message>
+    <message>
+        <source>Learning %1 from its measured parts…</source>
+        <translation>%1 wird aus ihren gemessenen Teilen gelernt…</translation>
+    </message>
+    <message>
+        <source>Learned and kept as model %1.</source>
+        <translation>Gelernt und als Modell %1 behalten.</translation>
+    </message>
+    <message>
+        <source>Learning cancelled; the model before is kept.</source>
+        <translation>Lernen abgebrochen; das bisherige Modell bleibt erhalten.</translation>
+    </message>
+    <message>
+        <source>Nothing learned: %1</source>
+        <translation>Nichts gelernt: %1</translation>
+    </message>
+    <message>
+        <source>Part %1: measured and predicted radius error</source>
+        <translation>Teil %1: gemessener und vorhergesagter Radiusfehler</translation>
+    </message>
+    <message>
+        <source>z from the part&apos;s left end [%1]</source>
+        <translation>z vom linken Teilende [%1]</translation>
+    </message>
+    <message>
+        <source>machined − programmed radius [%1]</source>
+        <translation>gefertigter − programmierter Radius [%1]</translation>
+    </message>
+    <message>
+        <source>physics</source>
+        <translation>Physik</translation>
+    </message>
+    <message>
+        <source>physics + learned − %1 µm</source>
+        <translation>Physik + Gelerntes − %1 µm</translation>
+    </message>
+    <message>
+        <source>physics + learned + %1 µm</source>
+        <translation>Physik + Gelerntes + %1 µm</translation>
+    </message>
+    <message>
+        <source>physics + learned</source>
+        <translation>Physik + Gelerntes</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Measured %1 by %2 (%3), %n point(s) compared.</source>
+        <translation>
+            <numerusform>Gemessen %1 von %2 (%3), %n Punkt verglichen.</numerusform>
+            <numerusform>Gemessen %1 von %2 (%3), %n Punkte verglichen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No model of %1 to compare with: Learn, then select the part again.</source>
+        <translation>Kein Modell von %1 zum Vergleichen: „Lernen“ ausführen, dann das Teil erneut auswählen.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningDataDialog</name>
@@ -5133,6 +5588,70 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>&amp;Currency:</source>
         <translation>&amp;Währung:</translation>
+    </message>
+    <message>
+        <source>Measurement store</source>
+        <translation>Messwertspeicher</translation>
+    </message>
+    <message>
+        <source>On this &amp;computer: %1</source>
+        <translation>Auf diesem &amp;Computer: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Shop database (PostgreSQL), shared by every planner</source>
+        <translation>&amp;Werkstattdatenbank (PostgreSQL), von allen Planern gemeinsam genutzt</translation>
+    </message>
+    <message>
+        <source>server name, or the folder of its socket (/var/run/postgresql)</source>
+        <translation>Servername oder der Ordner seines Sockets (/var/run/postgresql)</translation>
+    </message>
+    <message>
+        <source>&amp;Test Connection</source>
+        <translation>Verbindung &amp;testen</translation>
+    </message>
+    <message>
+        <source>TolTurn keeps no password: libpq reads it from ~/.pgpass, or the server needs none (peer authentication).</source>
+        <translation>TolTurn speichert kein Passwort: libpq liest es aus ~/.pgpass, oder der Server braucht keines (Peer-Authentifizierung).</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>P&amp;ort:</source>
+        <translation>P&amp;ort:</translation>
+    </message>
+    <message>
+        <source>&amp;Database:</source>
+        <translation>&amp;Datenbank:</translation>
+    </message>
+    <message>
+        <source>&amp;User:</source>
+        <translation>&amp;Benutzer:</translation>
+    </message>
+    <message>
+        <source>host</source>
+        <translation>Host</translation>
+    </message>
+    <message>
+        <source>database</source>
+        <translation>Datenbank</translation>
+    </message>
+    <message>
+        <source>user</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <source>The shop database needs its %1.</source>
+        <translation>Für die Werkstattdatenbank fehlt: %1.</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Verbindung zu %1 wird hergestellt…</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Mit %1 verbunden.</translation>
     </message>
 </context>
 <context>

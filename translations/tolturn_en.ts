@@ -29,6 +29,23 @@
     </message>
 </context>
 <context>
+    <name>MachineLearning</name>
+    <message numerus="yes">
+        <source>%n stored part(s)</source>
+        <translation>
+            <numerusform>%n stored part</numerusform>
+            <numerusform>%n stored parts</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n usable point(s)</source>
+        <translation>
+            <numerusform>%n usable point</numerusform>
+            <numerusform>%n usable points</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>MeasurementsCommand</name>
     <message numerus="yes">
         <source>stored part %1: %2, %n point(s), in %3</source>
@@ -69,6 +86,61 @@
         <translation>
             <numerusform>Not computed: the project has %n problem, listed under Problems. Double-click it to go to its value.</numerusform>
             <numerusform>Not computed: the project has %n problems, listed under Problems. Double-click one to go to its value.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasurementEntryDialog</name>
+    <message numerus="yes">
+        <source>%n point(s) read from %1.</source>
+        <translation>
+            <numerusform>%n point read from %1.</numerusform>
+            <numerusform>%n points read from %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasurementsPanel</name>
+    <message numerus="yes">
+        <source>%n measured part(s) %1 in %2</source>
+        <translation>
+            <numerusform>%n measured part %1 in %2</numerusform>
+            <numerusform>%n measured parts %1 in %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Part %1 stored with %n point(s).</source>
+        <translation>
+            <numerusform>Part %1 stored with %n point.</numerusform>
+            <numerusform>Part %1 stored with %n points.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n measured part(s) and their points from %1? Models learned before keep what they learned.</source>
+        <translation>
+            <numerusform>Remove %n measured part and its points from %1? Models learned before keep what they learned.</numerusform>
+            <numerusform>Remove %n measured parts and their points from %1? Models learned before keep what they learned.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n part(s) removed.</source>
+        <translation>
+            <numerusform>%n part removed.</numerusform>
+            <numerusform>%n parts removed.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n part(s) written to %1.</source>
+        <translation>
+            <numerusform>%n part written to %1.</numerusform>
+            <numerusform>%n parts written to %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Measured %1 by %2 (%3), %n point(s) compared.</source>
+        <translation>
+            <numerusform>Measured %1 by %2 (%3), %n point compared.</numerusform>
+            <numerusform>Measured %1 by %2 (%3), %n points compared.</numerusform>
         </translation>
     </message>
 </context>

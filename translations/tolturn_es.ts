@@ -490,6 +490,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Judge with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Juzgar con lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
     </message>
+    <message>
+        <source>Plan with what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Planificar con lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
+    </message>
+    <message>
+        <source>--learned replaces the stiffness range: give it or --machine-end, not both</source>
+        <translation>--learned sustituye al rango de rigidez: indique esta opción o --machine-end, no ambas</translation>
+    </message>
+    <message>
+        <source>Base the report on what was learned of the machine from its measured parts (learn --save).</source>
+        <translation>Basar el informe en lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -1205,10 +1217,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>indique --machine ID, y --criterion gcv o bic</translation>
     </message>
     <message>
-        <source>%1 has %2 stored part(s) with %3 usable point(s): %4</source>
-        <translation>%1 tiene %2 pieza(s) guardada(s) con %3 punto(s) utilizable(s): %4</translation>
-    </message>
-    <message>
         <source>%1: %2 parts, %3 measured points</source>
         <translation>%1: %2 piezas, %3 puntos medidos</translation>
     </message>
@@ -1237,12 +1245,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>aún no se ha aprendido nada de %1: ejecute «learn --machine %1 --save»</translation>
     </message>
     <message>
-        <source>the model %1 of %2 is damaged: %3</source>
-        <translation>el modelo %1 de %2 está dañado: %3</translation>
-    </message>
-    <message>
-        <source>%1, model %2, %3 parts</source>
-        <translation>%1, modelo %2, %3 piezas</translation>
+        <source>%1 has %2</source>
+        <translation>%1 tiene %2</translation>
     </message>
 </context>
 <context>
@@ -1250,6 +1254,51 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the learned model has no valid &quot;%1&quot;</source>
         <translation>el modelo aprendido no tiene un «%1» válido</translation>
+    </message>
+</context>
+<context>
+    <name>MachineLearning</name>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
+    </message>
+    <message>
+        <source>%1, model %2, %3 parts</source>
+        <translation>%1, modelo %2, %3 piezas</translation>
+    </message>
+    <message>
+        <source>the model %1 of %2 is damaged: %3</source>
+        <translation>el modelo %1 de %2 está dañado: %3</translation>
+    </message>
+    <message>
+        <source>the project snapshot of part %1 does not read</source>
+        <translation>la copia del proyecto de la pieza %1 no se puede leer</translation>
+    </message>
+    <message>
+        <source>the physics model cannot compute the snapshot of part %1</source>
+        <translation>el modelo físico no puede calcular la copia del proyecto de la pieza %1</translation>
+    </message>
+    <message>
+        <source>as learned from its measured parts (%1, learned %2 UTC): parts not learned from were predicted to %3 µm RMS, the physics alone to %4 µm; its stiffness range is not used</source>
+        <translation>según lo aprendido de sus piezas medidas (%1, aprendido %2 UTC): las piezas no usadas para aprender se predijeron con %3 µm RMS, la física sola con %4 µm; no se usa su rango de rigidez</translation>
+    </message>
+    <message>
+        <source>%1 with %2: %3</source>
+        <translation>%1 con %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n stored part(s)</source>
+        <translation>
+            <numerusform>%n pieza guardada</numerusform>
+            <numerusform>%n piezas guardadas</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n usable point(s)</source>
+        <translation>
+            <numerusform>%n punto utilizable</numerusform>
+            <numerusform>%n puntos utilizables</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1316,6 +1365,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The predicted radius errors include what was learned from measured parts (%1): the machine&apos;s measured behaviour replaces its stiffness range.</source>
         <translation>Los errores de radio predichos incluyen lo aprendido de piezas medidas (%1): el comportamiento medido de la máquina sustituye a su rango de rigidez.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
     </message>
 </context>
 <context>
@@ -1714,6 +1767,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the stock leaves %1 mm to remove on the radius: at least %2 roughing passes at the insert&apos;s largest depth of cut (%3 mm), and the optimiser plans up to %4; turn from a smaller bar</source>
         <translation>el bruto deja %1 mm que quitar en el radio: al menos %2 pasadas de desbaste a la mayor profundidad de corte de la plaquita (%3 mm), y el optimizador planifica hasta %4; tornee a partir de una barra menor</translation>
+    </message>
+    <message>
+        <source>The tolerance constraints include what was learned of the machine from its measured parts (%1); parts not learned from were predicted to %2 µm RMS.</source>
+        <translation>Las restricciones de tolerancia incluyen lo aprendido de la máquina a partir de sus piezas medidas (%1); las piezas no aprendidas se predijeron a %2 µm RMS.</translation>
     </message>
 </context>
 <context>
@@ -3709,6 +3766,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The predicted deviation of every feature appears here once a part is open.</source>
         <translation>La desviación prevista de cada elemento aparece aquí en cuanto se abre una pieza.</translation>
     </message>
+    <message>
+        <source>total, physics + learned</source>
+        <translation>total, modelo físico + aprendido</translation>
+    </message>
+    <message>
+        <source>diameter error, physics + learned</source>
+        <translation>error de diámetro, modelo físico + aprendido</translation>
+    </message>
+    <message>
+        <source>Physics + learned (%1): what was learned of the machine from its measured parts is added to the physics; the band is ± the RMS error on parts not learned from (%2 µm).</source>
+        <translation>Modelo físico + aprendido (%1): lo aprendido de la máquina a partir de sus piezas medidas se suma al modelo físico; la banda es ± el error RMS en las piezas no aprendidas (%2 µm).</translation>
+    </message>
+    <message>
+        <source>%1 − %2 µm</source>
+        <translation>%1 − %2 µm</translation>
+    </message>
+    <message>
+        <source>%1 + %2 µm</source>
+        <translation>%1 + %2 µm</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::DiagnosticsPanel</name>
@@ -4431,6 +4508,384 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Problems</source>
         <translation>Problemas</translation>
     </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Mediciones</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasuredPartsModel</name>
+    <message>
+        <source>Part %1</source>
+        <translation>Pieza %1</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Medido</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Pieza</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>By</source>
+        <translation>Medido por</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Método</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Puntos</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasurementEntryDialog</name>
+    <message>
+        <source>Measured Part — %1 on %2</source>
+        <translation>Pieza medida — %1 en %2</translation>
+    </message>
+    <message>
+        <source>micrometer</source>
+        <translation>micrómetro</translation>
+    </message>
+    <message>
+        <source>CMM</source>
+        <translation>MMC</translation>
+    </message>
+    <message>
+        <source>bore gauge</source>
+        <translation>alesómetro</translation>
+    </message>
+    <message>
+        <source>dial gauge along the part</source>
+        <translation>reloj comparador a lo largo de la pieza</translation>
+    </message>
+    <message>
+        <source>as in the project</source>
+        <translation>como en el proyecto</translation>
+    </message>
+    <message>
+        <source>Minutes from the machine&apos;s start to the cut: the warm-up the thermal error depends on (Li &amp; Du 2022, §3.2).</source>
+        <translation>Minutos desde el arranque de la máquina hasta el corte: el calentamiento del que depende el error térmico (Li &amp; Du 2022, §3.2).</translation>
+    </message>
+    <message>
+        <source>Measured &amp;by:</source>
+        <translation>Medido &amp;por:</translation>
+    </message>
+    <message>
+        <source>&amp;Method:</source>
+        <translation>&amp;Método:</translation>
+    </message>
+    <message>
+        <source>Measured &amp;at:</source>
+        <translation>Medido &amp;el:</translation>
+    </message>
+    <message>
+        <source>&amp;Time since start [min]:</source>
+        <translation>&amp;Tiempo desde el arranque [min]:</translation>
+    </message>
+    <message>
+        <source>Am&amp;bient [°C]:</source>
+        <translation>Am&amp;biente [°C]:</translation>
+    </message>
+    <message>
+        <source>&amp;Note:</source>
+        <translation>&amp;Nota:</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Medido</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>One measured point a row: a diameter in mm, or a radial deviation in µm (material left on the surface positive).</source>
+        <translation>Un punto medido por fila: un diámetro en mm o una desviación radial en µm (positiva si queda material en la superficie).</translation>
+    </message>
+    <message>
+        <source>Add &amp;Row</source>
+        <translation>&amp;Añadir fila</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Rows</source>
+        <translation>E&amp;liminar filas</translation>
+    </message>
+    <message>
+        <source>Read &amp;CSV…</source>
+        <translation>Leer &amp;CSV…</translation>
+    </message>
+    <message>
+        <source>Columns feature, z_mm and diameter_mm or radial_deviation_um (docs/learning.md).</source>
+        <translation>Columnas feature, z_mm y diameter_mm o radial_deviation_um (docs/learning.md).</translation>
+    </message>
+    <message>
+        <source>&amp;Store</source>
+        <translation>&amp;Guardar</translation>
+    </message>
+    <message>
+        <source>diameter [mm]</source>
+        <translation>diámetro [mm]</translation>
+    </message>
+    <message>
+        <source>radial deviation [µm]</source>
+        <translation>desviación radial [µm]</translation>
+    </message>
+    <message>
+        <source>Read Measured Points</source>
+        <translation>Leer puntos medidos</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>Archivos CSV (*.csv *.txt);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>The file was not read:</source>
+        <translation>No se ha leído el archivo:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s) read from %1.</source>
+        <translation>
+            <numerusform>%n punto leído de %1.</numerusform>
+            <numerusform>%n puntos leídos de %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>feature</source>
+        <translation>elemento</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>valor</translation>
+    </message>
+    <message>
+        <source>row %1, %2</source>
+        <translation>fila %1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MeasurementsPanel</name>
+    <message>
+        <source>Use the &amp;Local Store</source>
+        <translation>Usar el almacén &amp;local</translation>
+    </message>
+    <message>
+        <source>Work with the measurement store on this computer until the shop database can be reached again (Preferences keep the shop database).</source>
+        <translation>Trabajar con el almacén de mediciones de este equipo hasta que se pueda volver a acceder a la base de datos del taller (las preferencias conservan la base de datos del taller).</translation>
+    </message>
+    <message>
+        <source>This project&apos;s machine</source>
+        <translation>Máquina de este proyecto</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>Todas las máquinas</translation>
+    </message>
+    <message>
+        <source>Filter by part, who measured or method</source>
+        <translation>Filtrar por pieza, quién midió o método</translation>
+    </message>
+    <message>
+        <source>&amp;Add Measured Part…</source>
+        <translation>&amp;Añadir pieza medida…</translation>
+    </message>
+    <message>
+        <source>Type in (or read from CSV) the measured points of a part cut from the open project.</source>
+        <translation>Introducir (o leer de CSV) los puntos medidos de una pieza mecanizada según el proyecto abierto.</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Eliminar</translation>
+    </message>
+    <message>
+        <source>&amp;Export CSV…</source>
+        <translation>E&amp;xportar CSV…</translation>
+    </message>
+    <message>
+        <source>What was learned of the machine</source>
+        <translation>Lo aprendido de la máquina</translation>
+    </message>
+    <message>
+        <source>L&amp;earn</source>
+        <translation>A&amp;prender</translation>
+    </message>
+    <message>
+        <source>Learn the machine&apos;s error beyond the physics from all its measured parts (Li &amp; Du 2022: geometric error by regression, the rest by a hybrid RBF network), check it by leaving one part out, and keep it.</source>
+        <translation>Aprender el error de la máquina más allá del modelo físico a partir de todas sus piezas medidas (Li &amp; Du 2022: error geométrico por regresión, el resto con una red RBF híbrida), comprobarlo dejando fuera una pieza cada vez y guardarlo.</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>&amp;Use in the predictions (verdicts, curves, plan, program, report)</source>
+        <translation>&amp;Usar en las predicciones (veredictos, curvas, plan, programa, informe)</translation>
+    </message>
+    <message>
+        <source>Machine %1</source>
+        <translation>Máquina %1</translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>Leyendo %1…</translation>
+    </message>
+    <message>
+        <source>of %1</source>
+        <translation>de %1</translation>
+    </message>
+    <message>
+        <source>of all machines</source>
+        <translation>de todas las máquinas</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n measured part(s) %1 in %2</source>
+        <translation>
+            <numerusform>%n pieza medida %1 en %2</numerusform>
+            <numerusform>%n piezas medidas %1 en %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open a project to learn its machine from the parts measured on it.</source>
+        <translation>Abra un proyecto para aprender su máquina a partir de las piezas mecanizadas y medidas en ella.</translation>
+    </message>
+    <message>
+        <source>Nothing has been learned of %1 yet. Learn needs at least two measured parts; the more parts, conditions and times of day they cover, the better.</source>
+        <translation>Aún no se ha aprendido nada de %1. Aprender necesita al menos dos piezas medidas; cuantas más piezas, condiciones y horas del día cubran, mejor.</translation>
+    </message>
+    <message>
+        <source>Model %1, learned %2 from %3 parts (%4 points). Parts not learned from (leave one part out): physics alone %5 µm RMS, physics + learned %6 µm RMS.</source>
+        <translation>Modelo %1, aprendido %2 de %3 piezas (%4 puntos). Piezas no aprendidas (dejando una fuera): modelo físico solo %5 µm RMS, modelo físico + aprendido %6 µm RMS.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Part %1 stored with %n point(s).</source>
+        <translation>
+            <numerusform>Pieza %1 guardada con %n punto.</numerusform>
+            <numerusform>Pieza %1 guardada con %n puntos.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Measured Part Not Stored</source>
+        <translation>Pieza medida no guardada</translation>
+    </message>
+    <message>
+        <source>Remove Measured Parts</source>
+        <translation>Eliminar piezas medidas</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n measured part(s) and their points from %1? Models learned before keep what they learned.</source>
+        <translation>
+            <numerusform>¿Eliminar %n pieza medida y sus puntos de %1? Los modelos aprendidos antes conservan lo que aprendieron.</numerusform>
+            <numerusform>¿Eliminar %n piezas medidas y sus puntos de %1? Los modelos aprendidos antes conservan lo que aprendieron.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n part(s) removed.</source>
+        <translation>
+            <numerusform>%n pieza eliminada.</numerusform>
+            <numerusform>%n piezas eliminadas.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not Removed</source>
+        <translation>No se ha eliminado</translation>
+    </message>
+    <message>
+        <source>Export Measured Parts</source>
+        <translation>Exportar piezas medidas</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n part(s) written to %1.</source>
+        <translation>
+            <numerusform>%n pieza escrita en %1.</numerusform>
+            <numerusform>%n piezas escritas en %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not Exported</source>
+        <translation>No se ha exportado</translation>
+    </message>
+    <message>
+        <source>Learning %1 from its measured parts…</source>
+        <translation>Aprendiendo %1 a partir de sus piezas medidas…</translation>
+    </message>
+    <message>
+        <source>Learned and kept as model %1.</source>
+        <translation>Aprendido y guardado como modelo %1.</translation>
+    </message>
+    <message>
+        <source>Learning cancelled; the model before is kept.</source>
+        <translation>Aprendizaje cancelado; se conserva el modelo anterior.</translation>
+    </message>
+    <message>
+        <source>Nothing learned: %1</source>
+        <translation>No se ha aprendido nada: %1</translation>
+    </message>
+    <message>
+        <source>Part %1: measured and predicted radius error</source>
+        <translation>Pieza %1: error de radio medido y predicho</translation>
+    </message>
+    <message>
+        <source>z from the part&apos;s left end [%1]</source>
+        <translation>z desde el extremo izquierdo de la pieza [%1]</translation>
+    </message>
+    <message>
+        <source>machined − programmed radius [%1]</source>
+        <translation>radio mecanizado − programado [%1]</translation>
+    </message>
+    <message>
+        <source>physics</source>
+        <translation>modelo físico</translation>
+    </message>
+    <message>
+        <source>physics + learned − %1 µm</source>
+        <translation>modelo físico + aprendido − %1 µm</translation>
+    </message>
+    <message>
+        <source>physics + learned + %1 µm</source>
+        <translation>modelo físico + aprendido + %1 µm</translation>
+    </message>
+    <message>
+        <source>physics + learned</source>
+        <translation>modelo físico + aprendido</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>medido</translation>
+    </message>
+    <message numerus="yes">
+        <source>Measured %1 by %2 (%3), %n point(s) compared.</source>
+        <translation>
+            <numerusform>Medida %1 por %2 (%3), %n punto comparado.</numerusform>
+            <numerusform>Medida %1 por %2 (%3), %n puntos comparados.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No model of %1 to compare with: Learn, then select the part again.</source>
+        <translation>No hay modelo de %1 con el que comparar: use «Aprender» y vuelva a seleccionar la pieza.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::PlanningDataDialog</name>
@@ -5133,6 +5588,70 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>&amp;Currency:</source>
         <translation>&amp;Moneda:</translation>
+    </message>
+    <message>
+        <source>Measurement store</source>
+        <translation>Almacén de mediciones</translation>
+    </message>
+    <message>
+        <source>On this &amp;computer: %1</source>
+        <translation>En este &amp;equipo: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Shop database (PostgreSQL), shared by every planner</source>
+        <translation>Base de datos del &amp;taller (PostgreSQL), compartida por todos los planificadores</translation>
+    </message>
+    <message>
+        <source>server name, or the folder of its socket (/var/run/postgresql)</source>
+        <translation>nombre del servidor o la carpeta de su socket (/var/run/postgresql)</translation>
+    </message>
+    <message>
+        <source>&amp;Test Connection</source>
+        <translation>&amp;Probar conexión</translation>
+    </message>
+    <message>
+        <source>TolTurn keeps no password: libpq reads it from ~/.pgpass, or the server needs none (peer authentication).</source>
+        <translation>TolTurn no guarda ninguna contraseña: libpq la lee de ~/.pgpass, o el servidor no necesita ninguna (autenticación peer).</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Servidor:</translation>
+    </message>
+    <message>
+        <source>P&amp;ort:</source>
+        <translation>P&amp;uerto:</translation>
+    </message>
+    <message>
+        <source>&amp;Database:</source>
+        <translation>&amp;Base de datos:</translation>
+    </message>
+    <message>
+        <source>&amp;User:</source>
+        <translation>&amp;Usuario:</translation>
+    </message>
+    <message>
+        <source>host</source>
+        <translation>servidor</translation>
+    </message>
+    <message>
+        <source>database</source>
+        <translation>base de datos</translation>
+    </message>
+    <message>
+        <source>user</source>
+        <translation>usuario</translation>
+    </message>
+    <message>
+        <source>The shop database needs its %1.</source>
+        <translation>La base de datos del taller necesita su %1.</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Conectando con %1…</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Conectado con %1.</translation>
     </message>
 </context>
 <context>

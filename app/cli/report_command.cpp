@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "app/cli/learn_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -50,7 +51,11 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
                                     QStringLiteral("FILE"));
     const QCommandLineOption planner(
         QStringLiteral("planner"), CommandLine::tr("The planner's name for the title block."), QStringLiteral("NAME"));
-    parser.addOptions({output, planner});
+    const QCommandLineOption learned(
+        QStringLiteral("learned"),
+        CommandLine::tr("Base the report on what was learned of the machine from its measured parts (learn --save)."));
+    const QCommandLineOption store = measurementStoreOption();
+    parser.addOptions({output, planner, learned, store});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("report"), args, out, err); stop >= 0)
@@ -63,7 +68,14 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
     const std::optional<Project> project = readProject(file, err);
     if (!project)
         return kExitProblems;
-    const RenderedReport report = renderReport(*project, {QFileInfo(file).fileName(), parser.value(planner)});
+    ReportHeader header{QFileInfo(file).fileName(), parser.value(planner), nullptr};
+    if (parser.isSet(learned)) {
+        auto model = loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("report"), err);
+        if (!model)
+            return kExitProblems;
+        header.learned = std::make_shared<const LoadedModel>(std::move(*model));
+    }
+    const RenderedReport report = renderReport(*project, header);
     if (const QString problem = writeOutput(parser.value(output), report.pdf, out); !problem.isEmpty()) {
         err << programName() << " report: " << problem << '\n';
         return kExitProblems;

@@ -224,8 +224,9 @@ bool FileController::exportReportTo(const QString &pdfPath)
     QGuiApplication::setOverrideCursor(QCursor(Qt::WaitCursor));
     const std::unique_ptr<TaskProgress> progress = m_prompts.startProgress(tr("Writing the report…"));
     const ReportResult result =
-        writeReport(m_document.project(), {m_document.displayName(), loadPreferences().planner}, pdfPath,
-                    [&progress](double f) { return !progress || progress->update(f); });
+        writeReport(m_document.project(),
+                    {m_document.displayName(), loadPreferences().planner, m_learnedModel ? m_learnedModel() : nullptr},
+                    pdfPath, [&progress](double f) { return !progress || progress->update(f); });
     QGuiApplication::restoreOverrideCursor();
     if (result.cancelled) {
         Q_EMIT statusMessage(tr("Report cancelled; nothing was written."));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/learning/machine_learning.h"
 #include "core/project/project.h"
 
 #include <QDateTime>
@@ -86,6 +87,12 @@ public:
     bool exportReport();
     bool exportReportTo(const QString &pdfPath);
 
+    // What was learned of the machine, when the planner uses it: the report then rests on it.
+    void setLearnedModelSource(std::function<std::shared_ptr<const LoadedModel>()> source)
+    {
+        m_learnedModel = std::move(source);
+    }
+
     // The project File > New starts from.
     [[nodiscard]] static Project newBar();
 
@@ -105,6 +112,7 @@ private:
     ProjectDocument &m_document;
     RecentFiles &m_recentFiles;
     FilePrompts &m_prompts;
+    std::function<std::shared_ptr<const LoadedModel>()> m_learnedModel;
 };
 
 } // namespace tolturn

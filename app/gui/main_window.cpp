@@ -15,6 +15,7 @@
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
+#include "widgets/measurements/measurements_panel.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/profile/feature_panel.h"
 #include "widgets/profile/profile_scene.h"
@@ -68,6 +69,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_planning(new PlanningPanel(*m_document, this))
     , m_setup(new SetupPanel(*m_document, this))
     , m_feature(new FeaturePanel(*m_document, this))
+    , m_measurements(new MeasurementsPanel(this))
     , m_autosave(new Autosave(*m_document, autosaveFolder(), this))
     , m_problems(new ProblemNavigator(*m_document, {this, m_profileView, m_feature, m_tolerances}, this))
     , m_summary(new QLabel(this))
@@ -83,7 +85,12 @@ MainWindow::MainWindow(QWidget *parent)
     statusBar()->showMessage(tr("Open a project (File > Open) or an example part (File > Open Example)."));
 
     createActions();
-    m_planning->setCurrency(loadPreferences().currency);
+    const Preferences preferences = loadPreferences();
+    m_planning->setCurrency(preferences.currency);
+    m_measurements->setDefaultMeasuredBy(preferences.planner);
+    m_measurements->setStoreLocation(measurementStoreLocation(preferences));
+    connect(m_measurements, &MeasurementsPanel::learnedModelChanged, this, &MainWindow::showProject);
+    m_files->setLearnedModelSource([this] { return m_measurements->activeModel(); });
     connect(m_files, &FileController::statusMessage, this,
             [this](const QString &message) { statusBar()->showMessage(message, 5000); });
     connect(m_cad, &CadFileController::statusMessage, this,
@@ -167,6 +174,9 @@ void MainWindow::applyPreferences(const Preferences &preferences)
     savePreferences(preferences);
     DisplaySettings::instance().setUnits(DisplayUnits(preferences.lengthUnit));
     m_planning->setCurrency(preferences.currency);
+    m_measurements->setDefaultMeasuredBy(preferences.planner);
+    if (measurementStoreLocation(preferences).describe() != m_measurements->storeLocation().describe())
+        m_measurements->setStoreLocation(measurementStoreLocation(preferences));
     if (preferences.language != before.language)
         statusBar()->showMessage(tr("The new language is used when TolTurn is next started."), 8000);
 }
@@ -206,6 +216,8 @@ void MainWindow::createDocks()
     tabifyDockWidget(planning, m_importDock);
     createProblemsDock();
     tabifyDockWidget(m_importDock, m_problemsDock);
+    QDockWidget *measurements = createMeasurementsDock();
+    tabifyDockWidget(m_problemsDock, measurements);
     dock->raise();
     resizeDocks({setup, tolerances}, {440, 660}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
@@ -244,6 +256,22 @@ void MainWindow::createDocks()
     view->addAction(planning->toggleViewAction());
     view->addAction(m_importDock->toggleViewAction());
     view->addAction(m_problemsDock->toggleViewAction());
+    view->addAction(measurements->toggleViewAction());
+}
+
+QDockWidget *MainWindow::createMeasurementsDock()
+{
+    auto *dock = new QDockWidget(tr("Measurements"), this);
+    dock->setObjectName(QStringLiteral("measurementsDock"));
+    // In a scroll area, so that its list, buttons and plot never make the bottom docks (and the
+    // window) taller than a laptop screen allows.
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(m_measurements);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    dock->setWidget(scroll);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    return dock;
 }
 
 void MainWindow::createFileMenu()
@@ -365,6 +393,8 @@ void MainWindow::updateTitle()
 void MainWindow::showProject()
 {
     if (!m_document->hasProject()) {
+        m_measurements->setProject(nullptr);
+        m_planning->setLearnedModel(nullptr);
         m_profileView->clearProfile();
         m_deflection->clear();
         m_tolerances->showVerdicts({});
@@ -380,13 +410,29 @@ void MainWindow::showProject()
     const Project &project = m_document->project();
     m_profileView->setClamping(project.clamping);
     m_profileView->setProfile(project.part, project.tolerances, project.datums);
-    RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
-    m_tolerances->showVerdicts(std::move(range.tolerances), machineAssumptionText(range, DataLibrary::builtIn()),
-                               range.someSupportRigid);
-    m_deflection->showResult(project, std::move(range.compliant), std::move(range.stiff));
+    m_measurements->setProject(&project);
+    const std::shared_ptr<const LoadedModel> learned = m_measurements->activeModel();
+    m_planning->setLearnedModel(learned);
+    if (learned) {
+        showLearnedPrediction(project, *learned);
+    } else {
+        RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
+        m_tolerances->showVerdicts(std::move(range.tolerances), machineAssumptionText(range, DataLibrary::builtIn()),
+                                   range.someSupportRigid);
+        m_deflection->showResult(project, std::move(range.compliant), std::move(range.stiff));
+    }
     m_planning->projectChanged();
     updateSummary();
     updateTitle();
+}
+
+void MainWindow::showLearnedPrediction(const Project &project, const LoadedModel &model)
+{
+    RangeEvaluation learned = evaluateWithLearned(project, DataLibrary::builtIn(), model);
+    m_tolerances->showVerdicts(std::move(learned.tolerances), learnedAssumptionText(model), false);
+    DeviationResult physics = computeDeviation(project, DataLibrary::builtIn(), {});
+    LearnedCurves curves{learnedAtStations(project, physics, model.model), model.uncertainty_mm(), model.provenance()};
+    m_deflection->showResult(project, std::move(physics), std::nullopt, std::move(curves));
 }
 
 void MainWindow::showProjectWithProblems()

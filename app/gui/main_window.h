@@ -17,6 +17,7 @@ struct Preferences;
 
 class DeflectionPanel;
 class DiagnosticsPanel;
+class MeasurementsPanel;
 class ProblemNavigator;
 class Autosave;
 class FeaturePanel;
@@ -26,6 +27,7 @@ class SetupPanel;
 class TolerancePanel;
 class ProfileView;
 class ProjectDocument;
+struct LoadedModel;
 class RecentFiles;
 
 // The desktop program's window: menus and status bar around the views of one document.
@@ -61,6 +63,8 @@ public:
 
     [[nodiscard]] FeaturePanel *featurePanel() const { return m_feature; }
 
+    [[nodiscard]] MeasurementsPanel *measurementsPanel() const { return m_measurements; }
+
     // FilePrompts
     [[nodiscard]] QString chooseFileToOpen(const QString &startFolder) override;
     [[nodiscard]] QString chooseFileToSave(const QString &suggestedPath) override;
@@ -95,6 +99,9 @@ private:
     void createDocks();
     void createImportDock();
     void createProblemsDock();
+    [[nodiscard]] QDockWidget *createMeasurementsDock();
+    // The verdicts and curves on physics + what was learned of the machine (Measurements dock).
+    void showLearnedPrediction(const Project &project, const LoadedModel &model);
     // A project with problems: what can be shown without computing, and why the rest is not.
     void showProjectWithProblems();
     void showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics);
@@ -115,6 +122,7 @@ private:
     PlanningPanel *m_planning;
     SetupPanel *m_setup;
     FeaturePanel *m_feature;
+    MeasurementsPanel *m_measurements;
     Autosave *m_autosave;
     ProblemNavigator *m_problems;
     QMenu *m_recentMenu = nullptr;

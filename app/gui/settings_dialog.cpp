@@ -4,10 +4,16 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <QFutureWatcher>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSpinBox>
 #include <QVBoxLayout>
+#include <QtConcurrent>
 
 namespace tolturn {
 
@@ -51,7 +57,86 @@ SettingsDialog::SettingsDialog(const Preferences &current, QWidget *parent)
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
+    layout->addWidget(createStoreGroup(current));
     layout->addWidget(buttons);
+}
+
+QWidget *SettingsDialog::createStoreGroup(const Preferences &current)
+{
+    auto *group = new QGroupBox(tr("Measurement store"));
+    m_local = new QRadioButton(tr("On this &computer: %1").arg(defaultStoreLocation().describe()));
+    m_shop = new QRadioButton(tr("&Shop database (PostgreSQL), shared by every planner"));
+    m_host = new QLineEdit(current.shopHost);
+    m_host->setPlaceholderText(tr("server name, or the folder of its socket (/var/run/postgresql)"));
+    m_port = new QSpinBox;
+    m_port->setRange(1, 65535);
+    m_port->setValue(current.shopPort);
+    m_database = new QLineEdit(current.shopDatabaseName);
+    m_user = new QLineEdit(current.shopUser);
+    m_connection = new QLabel;
+    m_connection->setWordWrap(true);
+    m_connection->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto *test = new QPushButton(tr("&Test Connection"));
+    connect(test, &QPushButton::clicked, this, &SettingsDialog::testConnection);
+    (current.shopDatabase ? m_shop : m_local)->setChecked(true);
+    connect(m_shop, &QRadioButton::toggled, this, &SettingsDialog::updateStoreFields);
+    auto *password = new QLabel(tr("TolTurn keeps no password: libpq reads it from ~/.pgpass, or the server needs "
+                                   "none (peer authentication)."));
+    password->setWordWrap(true);
+    auto *shopForm = new QFormLayout;
+    shopForm->addRow(tr("&Host:"), m_host);
+    shopForm->addRow(tr("P&ort:"), m_port);
+    shopForm->addRow(tr("&Database:"), m_database);
+    shopForm->addRow(tr("&User:"), m_user);
+    shopForm->addRow(QString(), password);
+    shopForm->addRow(test, m_connection);
+    auto *layout = new QVBoxLayout(group);
+    layout->addWidget(m_local);
+    layout->addWidget(m_shop);
+    layout->addLayout(shopForm);
+    updateStoreFields();
+    return group;
+}
+
+void SettingsDialog::updateStoreFields()
+{
+    for (QWidget *w : std::initializer_list<QWidget *>{m_host, m_port, m_database, m_user})
+        w->setEnabled(m_shop->isChecked());
+}
+
+void SettingsDialog::accept()
+{
+    if (m_shop->isChecked()) {
+        QStringList missing;
+        if (m_host->text().trimmed().isEmpty())
+            missing << tr("host");
+        if (m_database->text().trimmed().isEmpty())
+            missing << tr("database");
+        if (m_user->text().trimmed().isEmpty())
+            missing << tr("user");
+        if (!missing.isEmpty()) {
+            m_connection->setText(tr("The shop database needs its %1.").arg(missing.join(QStringLiteral(", "))));
+            return;
+        }
+    }
+    QDialog::accept();
+}
+
+void SettingsDialog::testConnection()
+{
+    const StoreLocation location = measurementStoreLocation(preferences());
+    m_connection->setText(tr("Connecting to %1…").arg(location.describe()));
+    auto *watcher = new QFutureWatcher<QString>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, location] {
+        const QString error = watcher->result();
+        watcher->deleteLater();
+        m_connection->setText(error.isEmpty() ? tr("Connected to %1.").arg(location.describe()) : error);
+        Q_EMIT connectionTested(error.isEmpty());
+    });
+    watcher->setFuture(QtConcurrent::run([location] {
+        QString error;
+        return MeasurementStore::open(location, &error) ? QString() : error;
+    }));
 }
 
 Preferences SettingsDialog::preferences() const
@@ -61,6 +146,11 @@ Preferences SettingsDialog::preferences() const
     p.lengthUnit = static_cast<LengthUnit>(m_unit->currentData().toInt());
     p.planner = m_planner->text().trimmed();
     p.currency = m_currency->text().trimmed();
+    p.shopDatabase = m_shop->isChecked();
+    p.shopHost = m_host->text().trimmed();
+    p.shopPort = m_port->value();
+    p.shopDatabaseName = m_database->text().trimmed();
+    p.shopUser = m_user->text().trimmed();
     return p;
 }
 

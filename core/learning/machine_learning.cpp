@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/learning/machine_learning.h"
 
+#include "core/io/project_json.h"
 #include "core/learning/learned_model_json.h"
+#include "core/tolerance/evaluation.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -34,9 +36,9 @@ MachineLearning learnMachine(const std::vector<MeasuredPart> &parts, const DataL
         run.learned.reset();
         run.error = run.cancelled
                         ? MachineLearningText::tr("cancelled")
-                        : MachineLearningText::tr("%n stored part(s) with %1 usable point(s): %2", nullptr, run.parts)
-                              .arg(run.usablePoints)
-                              .arg(error);
+                        : MachineLearningText::tr("%1 with %2: %3")
+                              .arg(MachineLearningText::tr("%n stored part(s)", nullptr, run.parts),
+                                   MachineLearningText::tr("%n usable point(s)", nullptr, run.usablePoints), error);
     }
     return run;
 }
@@ -92,6 +94,62 @@ std::optional<LoadedModel> latestModelOf(const MeasurementStore &store, const QS
         return std::nullopt;
     }
     return LoadedModel{*record, *model};
+}
+
+PartComparison comparePart(const MeasuredPart &part, const DataLibrary &data, const LoadedModel *model)
+{
+    PartComparison out;
+    out.measured = residualSamples({part}, data, out.warnings);
+    const ProjectParseResult read = parseProjectJson(part.projectJson);
+    if (!read.project) {
+        out.error = MachineLearningText::tr("the project snapshot of part %1 does not read").arg(part.id);
+        return out;
+    }
+    const DeviationResult physics = computeDeviation(*read.project, data, {});
+    if (!physics.inputs) {
+        out.error = MachineLearningText::tr("the physics model cannot compute the snapshot of part %1").arg(part.id);
+        return out;
+    }
+    const std::vector<std::vector<double>> learned =
+        model ? learnedAtStations(*read.project, physics, model->model) : std::vector<std::vector<double>>{};
+    for (std::size_t f = 0; f < physics.features.size(); ++f) {
+        PartComparison::Feature feature{physics.features[f].featureId, {}, {}, {}};
+        const std::vector<Station> &stations = physics.features[f].stations;
+        for (std::size_t i = 0; i < stations.size(); ++i) {
+            feature.z_mm.push_back(stations[i].z_mm);
+            feature.physics_mm.push_back(stations[i].radiusError_mm);
+            if (f < learned.size() && i < learned[f].size())
+                feature.learned_mm.push_back(stations[i].radiusError_mm + learned[f][i]);
+        }
+        out.features.push_back(std::move(feature));
+    }
+    return out;
+}
+
+RangeEvaluation evaluateWithLearned(const Project &project, const DataLibrary &data, const LoadedModel &model)
+{
+    RangeEvaluation r;
+    r.compliant = withLearnedResidual(project, computeDeviation(project, data, {}), model.model, model.provenance());
+    if (!r.compliant.inputs)
+        return r;
+    for (ToleranceEvaluation &e : evaluateTolerances(project, r.compliant)) {
+        ToleranceRangeEvaluation t;
+        t.compliant = std::move(e);
+        r.tolerances.push_back(std::move(t));
+    }
+    // The thermal drift is in what was learned (Li & Du's thermal inputs), measured, not taken as zero.
+    r.thermalTakenAsZero = false;
+    return r;
+}
+
+QString learnedAssumptionText(const LoadedModel &model)
+{
+    return MachineLearningText::tr("as learned from its measured parts (%1, learned %2 UTC): parts not learned "
+                                   "from were predicted to %3 µm RMS, the physics alone to %4 µm; its stiffness "
+                                   "range is not used")
+        .arg(model.provenance(), model.record.trainedAt.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
+             QString::number(1000.0 * model.record.learnedRms_mm, 'f', 1),
+             QString::number(1000.0 * model.record.physicsRms_mm, 'f', 1));
 }
 
 } // namespace tolturn

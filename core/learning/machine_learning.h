@@ -5,6 +5,7 @@
 #include "core/data/data_library.h"
 #include "core/learning/measured_residuals.h"
 #include "core/measurements/measurement_store.h"
+#include "core/tolerance/range_verdicts.h"
 
 #include <QString>
 
@@ -55,5 +56,33 @@ struct LoadedModel {
 // learned of it yet; with `error` set when the store refused or the stored model is damaged.
 [[nodiscard]] std::optional<LoadedModel> latestModelOf(const MeasurementStore &store, const QString &machineId,
                                                        QString *error);
+
+// A measured part against the predictions, along z (the Measurements dock's plot): per turned
+// feature of its snapshot the physics' radius error at each station and, with a model, physics +
+// learned; and each measured point as a radius error (machined radius − programmed radius, mm).
+struct PartComparison {
+    struct Feature {
+        QString featureId;
+        std::vector<double> z_mm;
+        std::vector<double> physics_mm;
+        std::vector<double> learned_mm; // physics + learned; empty without a model
+    };
+
+    std::vector<Feature> features;
+    std::vector<ResidualSample> measured; // measured_mm and physics_mm at each usable point
+    Diagnostics warnings;
+    QString error; // the snapshot cannot be computed
+};
+
+[[nodiscard]] PartComparison comparePart(const MeasuredPart &part, const DataLibrary &data,
+                                         const LoadedModel *model = nullptr);
+
+// The verdicts of `project` on physics + what was learned: one prediction, the machine's measured
+// behaviour in place of its stiffness range (RangeVerdict::NoRange, as for a measured machine).
+[[nodiscard]] RangeEvaluation evaluateWithLearned(const Project &project, const DataLibrary &data,
+                                                  const LoadedModel &model);
+
+// One line on what the prediction rests on, for the banner above the verdicts and the report.
+[[nodiscard]] QString learnedAssumptionText(const LoadedModel &model);
 
 } // namespace tolturn

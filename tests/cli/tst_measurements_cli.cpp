@@ -17,7 +17,9 @@
 #include <cmath>
 
 using tolturn::test::example;
+using tolturn::test::Run;
 using tolturn::test::runCli;
+using tolturn::test::runProgram;
 using tolturn::test::writeFile;
 
 namespace {
@@ -227,6 +229,16 @@ private Q_SLOTS:
                     QStringLiteral("stiff"), QStringLiteral("--store"), learnStore, project});
         QCOMPARE(both.exitCode, 2);
         QVERIFY2(both.err.contains(QStringLiteral("--learned replaces the stiffness range")), qPrintable(both.err));
+        // The report rests on it too, and says so on its first page.
+        const QString pdf = m_dir.filePath(QStringLiteral("learned.pdf"));
+        const auto reported = runCli({QStringLiteral("report"), QStringLiteral("--learned"), QStringLiteral("--store"),
+                                      learnStore, QStringLiteral("-o"), pdf, project});
+        QVERIFY2(reported.exitCode == 0, qPrintable(reported.err));
+        const Run text = runProgram(QStringLiteral("pdftotext"),
+                                    {QStringLiteral("-l"), QStringLiteral("1"), pdf, QStringLiteral("-")});
+        QVERIFY2(text.out.simplified().contains(
+                     QStringLiteral("as learned from its measured parts (haas-st-20, model 1, 6 parts")),
+                 qPrintable(text.out));
         // Too few parts to leave one out: named.
         const auto none = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-30"),
                                   QStringLiteral("--store"), learnStore});

@@ -21,7 +21,11 @@
 #include <QComboBox>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
+#include <QLabel>
+#include <QLineEdit>
+#include <QRadioButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTest>
@@ -121,6 +125,41 @@ private Q_SLOTS:
         QCOMPARE(translationLocale(p).language(), QLocale::Spanish);
         QSettings().setValue(QStringLiteral("interface/language"), QStringLiteral("tlh"));
         QVERIFY(loadPreferences().language.isEmpty()); // not a language TolTurn has: the system's
+        savePreferences(Preferences());
+    }
+
+    // The shop's PostgreSQL database: kept without a password, refused without its host,
+    // database and user, and the local file otherwise.
+    void measurementStoreIsAPreference()
+    {
+        Preferences p;
+        p.shopDatabase = true;
+        p.shopHost = QStringLiteral("db.shop.example");
+        p.shopPort = 5433;
+        p.shopDatabaseName = QStringLiteral("tolturn");
+        p.shopUser = QStringLiteral("planner");
+        savePreferences(p);
+        QCOMPARE(loadPreferences(), p);
+        const StoreLocation shop = measurementStoreLocation(loadPreferences());
+        QCOMPARE(shop.kind, StoreLocation::Kind::PostgreSQL);
+        QCOMPARE(shop.describe(), QStringLiteral("postgresql://planner@db.shop.example:5433/tolturn"));
+        QVERIFY(shop.password.isEmpty());
+        QCOMPARE(measurementStoreLocation(Preferences()).describe(), defaultStoreLocation().describe());
+
+        SettingsDialog dialog(p);
+        QVERIFY(dialog.shopDatabaseButton()->isChecked());
+        QCOMPARE(dialog.shopPortBox()->value(), 5433);
+        dialog.shopDatabaseEdit()->clear();
+        dialog.shopUserEdit()->clear();
+        dialog.accept();
+        QCOMPARE(dialog.result(), int(QDialog::Rejected));
+        QVERIFY2(dialog.connectionResult()->text().contains(QStringLiteral("database, user")),
+                 qPrintable(dialog.connectionResult()->text()));
+        dialog.shopDatabaseEdit()->setText(QStringLiteral("tolturn"));
+        dialog.shopUserEdit()->setText(QStringLiteral("planner"));
+        dialog.accept();
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(dialog.preferences(), p);
         savePreferences(Preferences());
     }
 

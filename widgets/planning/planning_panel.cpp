@@ -315,6 +315,7 @@ void PlanningPanel::optimise()
     m_stop = std::make_shared<std::atomic<bool>>(false);
     PlanningJobOptions options;
     options.plane = static_cast<WindowPlane>(m_plane->currentData().toInt());
+    options.learned = m_learned;
     auto fraction = m_fraction;
     auto stop = m_stop;
     options.progress = [fraction, stop](double f) {
@@ -525,6 +526,14 @@ void PlanningPanel::showClamping()
     m_clamping->resizeColumnsToContents();
 }
 
+void PlanningPanel::setLearnedModel(std::shared_ptr<const LoadedModel> model)
+{
+    if (model == m_learned)
+        return;
+    m_learned = std::move(model);
+    showFinishing();
+}
+
 void PlanningPanel::showFinishing()
 {
     if (!m_document.hasProject() || m_document.hasProblems())
@@ -533,7 +542,14 @@ void PlanningPanel::showFinishing()
     if (m_dialect->currentData().isValid())
         options.dialect = static_cast<ControlDialect>(m_dialect->currentData().toInt());
     options.nose = static_cast<NoseHandling>(m_nose->currentData().toInt());
-    m_finishing = finishingOutput(m_document.project(), DataLibrary::builtIn(), options);
+    const Project &project = m_document.project();
+    m_finishing =
+        m_learned
+            ? finishingOutputFor(project, DataLibrary::builtIn(),
+                                 withLearnedResidual(project, computeDeviation(project, DataLibrary::builtIn(), {}),
+                                                     m_learned->model, m_learned->provenance()),
+                                 options)
+            : finishingOutput(project, DataLibrary::builtIn(), options);
     const auto &features = m_finishing.compensation.features;
     m_compensation->setRowCount(static_cast<int>(features.size()));
     for (int i = 0; i < m_compensation->rowCount(); ++i) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/learning/machine_learning.h"
 #include "core/planning/planning_report.h"
 
 #include <QFutureWatcher>
@@ -61,6 +62,11 @@ public:
 
     // The currency costs are given in (the preferences); empty: not stated.
     void setCurrency(const QString &currency);
+    // What was learned of the machine, when the planner uses it (Measurements dock): the plan's
+    // tolerance constraints, the compensation and the program then rest on physics + learned.
+    void setLearnedModel(std::shared_ptr<const LoadedModel> model);
+
+    [[nodiscard]] const std::shared_ptr<const LoadedModel> &learnedModel() const { return m_learned; }
 
     [[nodiscard]] QTableWidget *planPassesTable() const { return m_planPasses; }
 
@@ -82,6 +88,7 @@ private:
     void showPlanPasses();
 
     ProjectDocument &m_document;
+    std::shared_ptr<const LoadedModel> m_learned;
     QComboBox *m_objective;
     QComboBox *m_plane;
     std::vector<QCheckBox *> m_constraints;

@@ -94,6 +94,16 @@ void LinePlot::addStems(const QString &name, const QVector<double> &x, const QVe
     graph->setData(x, y, true);
 }
 
+void LinePlot::addPoints(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color)
+{
+    QCPGraph *graph = m_plot->addGraph();
+    graph->setName(name);
+    graph->setPen(QPen(color, 1.5));
+    graph->setLineStyle(QCPGraph::lsNone);
+    graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCrossCircle, color, 8));
+    graph->setData(x, y, false);
+}
+
 void LinePlot::rescaleAndReplot()
 {
     m_plot->rescaleAxes();

@@ -31,6 +31,8 @@ public:
                  const QVector<double> &lower, const QVector<double> &upper, const QColor &color);
     // Values at separate positions (one per face, say): a stem from zero up to each, with a dot.
     void addStems(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color);
+    // Values measured at separate positions (points of a measured part): a marker each, no line.
+    void addPoints(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color);
     // Fits the axes to the data (y always includes zero) and redraws.
     void rescaleAndReplot();
 

@@ -98,9 +98,8 @@ void titleBlock(Layout &l, const Project &p, const ReportHeader &header)
 
 // Page 1: what the supports rest on, boxed where the planner looks, and every tolerance's verdict
 // over the machine's stiffness range with the stiffness it needs.
-void summary(Layout &l, const Project &p, const RangeEvaluation &range)
+void summary(Layout &l, const Project &p, const RangeEvaluation &range, const QString &assumption)
 {
-    const QString assumption = machineAssumptionText(range, DataLibrary::builtIn());
     if (!assumption.isEmpty()) {
         const QColor fill = range.someSupportRigid ? QColor(0xfd, 0xe3, 0xc8) : QColor(0xe4, 0xec, 0xf7);
         const QColor edge = range.someSupportRigid ? QColor(0xd0, 0x8a, 0x3c) : QColor(0x8a, 0xa2, 0xc8);
@@ -213,7 +212,8 @@ void inputs(Layout &l, const Project &p, const DeviationResult &d, const Finishi
         l.paragraph(finding, 8.5);
 }
 
-void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const std::optional<DeviationResult> &stiff)
+void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const std::optional<DeviationResult> &stiff,
+                    const std::optional<LearnedCurves> &learned)
 {
     l.heading(Report::tr("3  Predicted deviation"));
     if (!d.inputs) {
@@ -233,6 +233,8 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const
         DeflectionPanel::addContributionCurves(plot, d, side, true);
         if (stiff)
             DeflectionPanel::addRangeBand(plot, d, *stiff, side, DeflectionPanel::totalRadial_mm, Report::tr("total"));
+        if (learned)
+            DeflectionPanel::addLearnedTotal(plot, d, *learned, side);
         plot.setAxisLabels(Report::tr("z from the part's left end [mm]"), Report::tr("deviation [µm]"));
         plot.rescaleAndReplot();
         l.caption(side == ContourSide::Outer ? Report::tr("Radial deviation of the outer contour (material left)")
@@ -347,7 +349,8 @@ void windowMap(Layout &l, const Project &project, const PlanningReport &r)
                     8.5);
 }
 
-void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
+void plan(Layout &l, const Project &p, const FinishingOutput &finishing,
+          const std::shared_ptr<const LoadedModel> &learned)
 {
     l.heading(Report::tr("5  Plan"));
     if (!p.planning.cuttingSpeed_m_min) {
@@ -356,6 +359,7 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing)
     } else {
         PlanningJobOptions o;
         o.windowSize = 64;
+        o.learned = learned;
         const PlanningReport r = runPlanningJob(p, DataLibrary::builtIn(), o);
         if (r.problem) {
             const PlanResult &pl = r.plan;
@@ -503,34 +507,48 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
 {
     RenderedReport rendered;
     auto step = [&](double f) { return !progress || progress(f); };
-    const RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
-    const DeviationResult &deviation = range.compliant;
+    const DataLibrary &data = DataLibrary::builtIn();
+    const LoadedModel *model = header.learned.get();
+    // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
+    // and the plan; the plots keep the physics' contributions and add the learned total.
+    const RangeEvaluation range =
+        model ? evaluateWithLearned(project, data, *model) : evaluateOverStiffnessRange(project, data);
+    std::optional<LearnedCurves> learned;
+    DeviationResult physics;
+    if (model) {
+        physics = computeDeviation(project, data, {});
+        learned = LearnedCurves{learnedAtStations(project, physics, model->model), model->uncertainty_mm(),
+                                model->provenance()};
+    }
+    const DeviationResult &deviation = model ? physics : range.compliant;
     std::vector<ToleranceEvaluation> verdictList;
     for (const ToleranceRangeEvaluation &e : range.tolerances)
         verdictList.push_back(e.compliant);
-    const FinishingOutput finishing = finishingOutput(project, DataLibrary::builtIn());
+    const FinishingOutput finishing =
+        model ? finishingOutputFor(project, data, range.compliant) : finishingOutput(project, data);
 
     Layout layout;
     titleBlock(layout, project, header);
-    summary(layout, project, range);
+    summary(layout, project, range,
+            model ? learnedAssumptionText(*model) : machineAssumptionText(range, DataLibrary::builtIn()));
     drawing(layout, project);
     inputs(layout, project, deviation, finishing);
     if (!step(0.2)) {
         rendered.cancelled = true;
         return rendered;
     }
-    deviationPlots(layout, project, deviation, range.stiff);
+    deviationPlots(layout, project, deviation, range.stiff, learned);
     verdicts(layout, project, verdictList);
     if (!step(0.4)) {
         rendered.cancelled = true;
         return rendered;
     }
-    plan(layout, project, finishing);
+    plan(layout, project, finishing, header.learned);
     if (!step(0.8)) {
         rendered.cancelled = true;
         return rendered;
     }
-    assumptions(layout, deviation);
+    assumptions(layout, model ? range.compliant : deviation);
     // The appendices (for reference, not for the shop floor) open a page unless a third of this
     // one is still free: no page is left holding a few lines.
     if (layout.remaining() < (report::kBottom - report::kMargin) / 3.0)

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/learning/machine_learning.h"
 #include "core/project/project.h"
 
 #include <QByteArray>
 #include <QString>
 
 #include <functional>
+#include <memory>
 
 namespace tolturn {
 
@@ -18,10 +20,13 @@ struct ReportResult {
 };
 
 // Who and what the report's title block names besides the project's own data (part name, drawing
-// number, revision, material): the project file's name and the planner (from the preferences).
+// number, revision, material): the project file's name and the planner (from the preferences);
+// and what the predictions rest on besides the physics: what was learned of the machine from its
+// measured parts, when the planner uses it (docs/learning.md).
 struct ReportHeader {
     QString projectName;
     QString planner;
+    std::shared_ptr<const LoadedModel> learned;
 };
 
 // Writes the PDF report of a project (File > Export Report, `tolturn-cli report`): title block,

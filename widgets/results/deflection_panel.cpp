@@ -72,10 +72,11 @@ DeflectionPanel::DeflectionPanel(QWidget *parent)
 }
 
 void DeflectionPanel::showResult(const Project &project, DeviationResult result,
-                                 std::optional<DeviationResult> stiffEnd)
+                                 std::optional<DeviationResult> stiffEnd, std::optional<LearnedCurves> learned)
 {
     m_result = std::move(result);
     m_stiffEnd = std::move(stiffEnd);
+    m_learned = std::move(learned);
     m_plot->setVisible(true);
     m_sideBox->setEnabled(!project.part.inner.empty());
     if (project.part.inner.empty() && m_side == ContourSide::Inner)
@@ -88,6 +89,7 @@ void DeflectionPanel::clear(const QString &why)
 {
     m_result = {};
     m_stiffEnd.reset();
+    m_learned.reset();
     m_plot->clear();
     m_plot->rescaleAndReplot();
     m_plot->setVisible(false); // empty axes would say nothing
@@ -175,6 +177,10 @@ void DeflectionPanel::plotContributions(bool radial)
             *m_plot, m_result, *m_stiffEnd, m_side,
             [radial](const Station &st) { return (radial ? st.radial : st.tangential).total_mm(); }, tr("total"),
             units);
+    // What was learned corrects the machined radius: as material left it is + on an outer
+    // surface and − in a bore (radiusError_mm's sign convention).
+    if (radial && m_learned)
+        addLearnedTotal(*m_plot, m_result, *m_learned, m_side, units);
     m_plot->setTitle(radial ? tr("Radial deviation (material left on the surface)") : tr("Tangential deviation"));
     m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
                           tr("deviation [%1]").arg(units.deviationSymbol()));
@@ -200,9 +206,57 @@ void DeflectionPanel::plotDiameterError()
         addRangeBand(
             *m_plot, m_result, *m_stiffEnd, m_side, [](const Station &st) { return 2.0 * st.radiusError_mm; },
             tr("diameter error"), units);
+    if (m_learned)
+        addLearnedCurve(
+            *m_plot, m_result, *m_learned, m_side,
+            [](const Station &st, double learned) { return 2.0 * (st.radiusError_mm + learned); }, 2.0,
+            tr("diameter error, physics + learned"), units);
     m_plot->setTitle(tr("Diameter error: machined minus nominal"));
     m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
                           tr("diameter error [%1]").arg(units.deviationSymbol()));
+}
+
+void DeflectionPanel::addLearnedTotal(LinePlot &plot, const DeviationResult &result, const LearnedCurves &learned,
+                                      ContourSide side, const DisplayUnits &units)
+{
+    // What was learned corrects the machined radius: as material left it is + on an outer
+    // surface and − in a bore (radiusError_mm's sign convention).
+    addLearnedCurve(
+        plot, result, learned, side,
+        [side](const Station &st, double l) { return st.radial.total_mm() + (side == ContourSide::Outer ? l : -l); },
+        1.0, tr("total, physics + learned"), units);
+}
+
+void DeflectionPanel::addLearnedCurve(LinePlot &plot, const DeviationResult &result, const LearnedCurves &learned,
+                                      ContourSide side, const std::function<double(const Station &, double)> &value,
+                                      double scale, const QString &name, const DisplayUnits &units)
+{
+    const double u = scale * learned.uncertainty_mm;
+    QVector<double> x;
+    QVector<double> y;
+    QVector<double> lower;
+    QVector<double> upper;
+    for (std::size_t f = 0; f < result.features.size() && f < learned.atStations.size(); ++f) {
+        const FeatureDeviation &feature = result.features[f];
+        const std::vector<double> &add = learned.atStations[f];
+        if (feature.side != side || add.size() != feature.stations.size())
+            continue;
+        for (std::size_t i = 0; i < add.size(); ++i) {
+            const double v = value(feature.stations[i], add[i]);
+            x << units.lengthFromMm(feature.stations[i].z_mm);
+            y << units.deviationFromUm(v * kUmPerMm);
+            lower << units.deviationFromUm((v - u) * kUmPerMm);
+            upper << units.deviationFromUm((v + u) * kUmPerMm);
+        }
+        x << units.lengthFromMm(feature.stations.back().z_mm);
+        y << kGap;
+        lower << kGap;
+        upper << kGap;
+    }
+    const QString rms = QString::number(u * kUmPerMm, 'f', 1);
+    plot.addBand(tr("%1 − %2 µm").arg(name, rms), tr("%1 + %2 µm").arg(name, rms), x, lower, upper,
+                 QColor(0x9a, 0x6a, 0x00));
+    plot.addCurve(name, x, y, QColor(0x9a, 0x6a, 0x00), Qt::SolidLine, 2.6);
 }
 
 // Where the machine is a stiffness range, the band of one quantity between the compliant end (the
@@ -274,6 +328,10 @@ void DeflectionPanel::updateTexts()
         lines << (d.severity == Severity::Error ? tr("Error: ") : tr("Warning: ")) + d.toString();
     if (m_result.inputs)
         lines += m_result.inputs->notes;
+    if (m_learned)
+        lines << tr("Physics + learned (%1): what was learned of the machine from its measured parts is added to the "
+                    "physics; the band is ± the RMS error on parts not learned from (%2 µm).")
+                     .arg(m_learned->provenance, QString::number(m_learned->uncertainty_mm * kUmPerMm, 'f', 1));
     m_notes->setText(lines.join(QLatin1Char('\n')));
 }
 

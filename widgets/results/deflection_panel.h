@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 class QComboBox;
 class QLabel;
@@ -19,6 +20,15 @@ class LinePlot;
 // Predicted deviation along z for the open project: total and each contribution (spindle–chuck,
 // toolpost, workpiece, thermal) for the outer or the inner contour, or the diameter error, with
 // the forces used and the assumptions the result rests on.
+// What was learned of the machine from its measured parts, drawn beside the physics
+// (docs/learning.md): the learned correction to the radius error at every station of the result
+// (learnedAtStations), and the RMS error of parts not learned from as its uncertainty.
+struct LearnedCurves {
+    std::vector<std::vector<double>> atStations; // mm of radius, per feature and station
+    double uncertainty_mm = 0.0;
+    QString provenance;
+};
+
 class DeflectionPanel : public QWidget {
     Q_OBJECT
 public:
@@ -28,7 +38,10 @@ public:
 
     // Shows the deviation computed for `project`; `stiffEnd`, where the machine is a published
     // stiffness range, is the same at the stiff end, drawn as a band with the total.
-    void showResult(const Project &project, DeviationResult result, std::optional<DeviationResult> stiffEnd = {});
+    // With `learned`, `result` is the physics alone and the curves of physics + learned, with
+    // their uncertainty band, are drawn beside it.
+    void showResult(const Project &project, DeviationResult result, std::optional<DeviationResult> stiffEnd = {},
+                    std::optional<LearnedCurves> learned = {});
     // Adds the curves of the total and of each contribution along one contour, in µm, broken at
     // the ends of the features (also used by the PDF report).
     static void addContributionCurves(LinePlot &plot, const DeviationResult &result, ContourSide side, bool radial,
@@ -38,6 +51,11 @@ public:
     static void addRangeBand(LinePlot &plot, const DeviationResult &result, const DeviationResult &stiffEnd,
                              ContourSide side, const std::function<double(const Station &)> &value, const QString &what,
                              const DisplayUnits &units = DisplayUnits());
+
+    // The total radial deviation with what was learned added (material left: + outer, − bores),
+    // with its band of ± the uncertainty (also used by the PDF report).
+    static void addLearnedTotal(LinePlot &plot, const DeviationResult &result, const LearnedCurves &learned,
+                                ContourSide side, const DisplayUnits &units = DisplayUnits());
 
     // The band of the total radial deviation.
     static double totalRadial_mm(const Station &st) { return st.radial.total_mm(); }
@@ -52,6 +70,8 @@ public:
 
     [[nodiscard]] const std::optional<DeviationResult> &stiffEnd() const { return m_stiffEnd; }
 
+    [[nodiscard]] const std::optional<LearnedCurves> &learned() const { return m_learned; }
+
     [[nodiscard]] LinePlot *plot() const { return m_plot; }
 
     [[nodiscard]] QString summaryText() const;
@@ -62,9 +82,16 @@ private:
     void plotDiameterError();
     void plotFaceConicity();
     void updateTexts();
+    // Physics + learned of one quantity along one contour, with its band of ± the uncertainty;
+    // `scale` 1 for the material left (radial), 2 for the diameter error.
+    static void addLearnedCurve(LinePlot &plot, const DeviationResult &result, const LearnedCurves &learned,
+                                ContourSide side,
+                                const std::function<double(const Station &, double learned_mm)> &value, double scale,
+                                const QString &name, const DisplayUnits &units);
 
     DeviationResult m_result;
     std::optional<DeviationResult> m_stiffEnd;
+    std::optional<LearnedCurves> m_learned;
     ContourSide m_side = ContourSide::Outer;
     Quantity m_quantity = Quantity::RadialContributions;
     QComboBox *m_sideBox;
