@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of learning (issue 15), results recorded in docs/benchmarks.md: the hybrid RBF network
-// trained on 10 000 measured points with the seven inputs of Li & Du (speed, feed, time since
+// trained on 10 000 measured points with the eight inputs of Li & Du (speed, feed, time since
 // start, ambient; torque, axial and radial force, z), and one prediction.
 // Run: build/<preset>/benchmarks/bench_learning
 #include "benchmarks/bench_timing.h"
@@ -17,7 +17,7 @@ using tolturn::bench::medianMilliseconds;
 int main()
 {
     constexpr int kPoints = 10000;
-    constexpr int kInputs = 7;
+    constexpr int kInputs = 8;
     std::mt19937 random(7);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     std::normal_distribution<double> noise(0.0, 0.5);

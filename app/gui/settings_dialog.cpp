@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/settings_dialog.h"
 
+#include "widgets/common/worker_threads.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
@@ -133,7 +135,7 @@ void SettingsDialog::testConnection()
         m_connection->setText(error.isEmpty() ? tr("Connected to %1.").arg(location.describe()) : error);
         Q_EMIT connectionTested(error.isEmpty());
     });
-    watcher->setFuture(QtConcurrent::run([location] {
+    watcher->setFuture(QtConcurrent::run(workerThreads(), [location] {
         QString error;
         return MeasurementStore::open(location, &error) ? QString() : error;
     }));

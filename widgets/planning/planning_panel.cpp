@@ -8,6 +8,7 @@
 #include "core/project/keywords.h"
 #include "widgets/common/project_fields.h"
 #include "widgets/common/table_copy.h"
+#include "widgets/common/worker_threads.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/planning_data_dialog.h"
 #include "widgets/plot/map_plot.h"
@@ -333,8 +334,8 @@ void PlanningPanel::optimise()
     });
     poll->start(50);
     const Project project = m_document.project(); // a copy: the worker never touches the document
-    m_watcher.setFuture(
-        QtConcurrent::run([project, options] { return runPlanningJob(project, DataLibrary::builtIn(), options); }));
+    m_watcher.setFuture(QtConcurrent::run(
+        workerThreads(), [project, options] { return runPlanningJob(project, DataLibrary::builtIn(), options); }));
 }
 
 void PlanningPanel::cancel()
