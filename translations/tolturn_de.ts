@@ -511,6 +511,77 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>CurrentForces</name>
+    <message>
+        <source>%1 = %2 is outside the range %3 to %4 of the calibration cuts: the network extrapolates</source>
+        <translation>%1 = %2 liegt außerhalb des Bereichs %3 bis %4 der Kalibrierschnitte: Das Netz extrapoliert</translation>
+    </message>
+    <message>
+        <source>a force, the chip area or an angle is not a finite number</source>
+        <translation>eine Kraft, der Spanungsquerschnitt oder ein Winkel ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>the uncut chip area A_c = %1 mm² (eq. 16) is not above zero</source>
+        <translation>der Spanungsquerschnitt A_c = %1 mm² (Gl. 16) ist nicht größer als null</translation>
+    </message>
+    <message>
+        <source>eq. 17 and 18 do not determine K_n and K_f for back rake %1°, normal rake %2° and effective lead angle %3° (determinant %4)</source>
+        <translation>Gl. 17 und 18 bestimmen K_n und K_f nicht für Rückspanwinkel %1°, Normalspanwinkel %2° und wirksamen Anstellwinkel %3° (Determinante %4)</translation>
+    </message>
+    <message>
+        <source>F_t = %1 N and F_a = %2 N give a normal pressure K_n = %3 N/mm² that is not positive (eq. 17–18): check the forces and the tool angles</source>
+        <translation>F_t = %1 N und F_a = %2 N ergeben einen Normaldruck K_n = %3 N/mm², der nicht positiv ist (Gl. 17–18): Prüfen Sie die Kräfte und die Werkzeugwinkel</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is not above zero</source>
+        <translation>%1 = %2 ist nicht größer als null</translation>
+    </message>
+    <message>
+        <source>the nose radius %1 mm is negative or not a number</source>
+        <translation>der Eckenradius %1 mm ist negativ oder keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1 = %2° is not between %3° and %4°</source>
+        <translation>%1 = %2° liegt nicht zwischen %3° und %4°</translation>
+    </message>
+    <message>
+        <source>the current–force model has not been trained</source>
+        <translation>das Strom-Kraft-Modell wurde nicht trainiert</translation>
+    </message>
+    <message>
+        <source>the radial force cannot be found from the estimated F_t = %1 N and F_a = %2 N: %3</source>
+        <translation>die Radialkraft lässt sich aus den geschätzten F_t = %1 N und F_a = %2 N nicht bestimmen: %3</translation>
+    </message>
+    <message>
+        <source>the friction ratio K_f = %1 found from F_t = %2 N and F_a = %3 N is negative: the friction on the rake face would push the chip down it</source>
+        <translation>das aus F_t = %2 N und F_a = %3 N ermittelte Reibungsverhältnis K_f = %1 ist negativ: Die Reibung auf der Spanfläche würde den Span an ihr hinunterdrücken</translation>
+    </message>
+    <message>
+        <source>samples: %1 calibration cuts; at least %2 are needed (the paper trained on 21)</source>
+        <translation>Stichproben: %1 Kalibrierschnitte; mindestens %2 sind nötig (die Veröffentlichung trainierte mit 21)</translation>
+    </message>
+    <message>
+        <source>the measured tangential force is not a finite number</source>
+        <translation>die gemessene Tangentialkraft ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>the measured axial force is not a finite number</source>
+        <translation>die gemessene Axialkraft ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>tangential network (eq. 11): %1</source>
+        <translation>Netz für die Tangentialkraft (Gl. 11): %1</translation>
+    </message>
+    <message>
+        <source>axial network (eq. 13): %1</source>
+        <translation>Netz für die Axialkraft (Gl. 13): %1</translation>
+    </message>
+    <message>
+        <source>the current–force model has no valid &quot;%1&quot;</source>
+        <translation>das Strom-Kraft-Modell hat keinen gültigen Wert „%1“</translation>
+    </message>
+</context>
+<context>
     <name>CuttingModels</name>
     <message>
         <source>%1 = %2 is outside the range %3 &lt; %1 &lt; %4 in which %5 is stated to hold</source>
@@ -689,6 +760,33 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the predicted deflection, %1 mm at z = %2 mm, is larger than the depth of cut %3 mm: the part would spring out of the cut, and a model linear in the forces of the nominal depth does not hold; support the part (tailstock, steady rest) or cut less</source>
         <translation>die vorhergesagte Durchbiegung, %1 mm bei z = %2 mm, ist größer als die Schnitttiefe %3 mm: Das Teil würde aus dem Schnitt federn, und ein in den Kräften der Nenntiefe lineares Modell gilt nicht; stützen Sie das Teil (Reitstock, Lünette) ab oder schneiden Sie weniger tief</translation>
+    </message>
+</context>
+<context>
+    <name>DriveReadings</name>
+    <message>
+        <source>%1 is not a finite number (a current from three phases is not, when a phase is negative or not finite)</source>
+        <translation>%1 ist keine endliche Zahl (ein aus drei Phasen gebildeter Strom ist es nicht, wenn eine Phase negativ oder nicht endlich ist)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is negative</source>
+        <translation>%1 = %2 ist negativ</translation>
+    </message>
+    <message>
+        <source>the spindle speed ω_s = %1 rad/s is not above zero: no cut</source>
+        <translation>die Spindeldrehzahl ω_s = %1 rad/s ist nicht größer als null: kein Schnitt</translation>
+    </message>
+    <message>
+        <source>the spindle current I_s = %1 A is below its idle current I_s0 = %2 A plus friction current ΔI_sf = %3 A, so the cutting current ΔI_s (eq. 10) would be negative: measure the idle and friction currents again at this speed</source>
+        <translation>der Spindelmotorstrom I_s = %1 A liegt unter seinem Leerlaufstrom I_s0 = %2 A plus Reibstrom ΔI_sf = %3 A, sodass der Schnittstrom ΔI_s (Gl. 10) negativ wäre: Messen Sie Leerlauf- und Reibstrom bei dieser Drehzahl erneut</translation>
+    </message>
+    <message>
+        <source>the feed current I_a = %1 A is below its idle current I_a0 = %2 A, so the cutting current ΔI_a would be negative: measure the idle current again at this feed speed</source>
+        <translation>der Vorschubmotorstrom I_a = %1 A liegt unter seinem Leerlaufstrom I_a0 = %2 A, sodass der Schnittstrom ΔI_a negativ wäre: Messen Sie den Leerlaufstrom bei dieser Vorschubgeschwindigkeit erneut</translation>
+    </message>
+    <message>
+        <source>the drive reading lacks the number &quot;%1&quot;</source>
+        <translation>den Antriebsmesswerten fehlt die Zahl „%1“</translation>
     </message>
 </context>
 <context>
@@ -1248,6 +1346,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 has %2</source>
         <translation>%1 hat %2</translation>
     </message>
+    <message>
+        <source>forces from motor currents: %1 calibration cuts; leaving one out, F_t to %2 N RMS, F_a to %3 N RMS</source>
+        <translation>Kräfte aus Motorströmen: %1 Kalibrierschnitte; bei Weglassen je eines Schnitts F_t auf %2 N RMS, F_a auf %3 N RMS</translation>
+    </message>
+    <message>
+        <source>Cuts with motor currents and dynamometer forces (CSV): parts that carry their drives&apos; readings then learn from forces estimated from their motor currents (Li &amp; Du eq. 7–19).</source>
+        <translation>Schnitte mit Motorströmen und Dynamometerkräften (CSV): Teile mit Messwerten ihrer Antriebe lernen dann aus Kräften, die aus ihren Motorströmen geschätzt werden (Li &amp; Du Gl. 7–19).</translation>
+    </message>
+    <message>
+        <source>%1 of %2 parts learned from forces estimated from their motor currents</source>
+        <translation>%1 von %2 Teilen lernten aus Kräften, die aus ihren Motorströmen geschätzt wurden</translation>
+    </message>
 </context>
 <context>
     <name>LearnedModelJson</name>
@@ -1343,6 +1453,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the part has no measured point</source>
         <translation>das Teil hat keinen Messpunkt</translation>
     </message>
+    <message>
+        <source>a CMM point needs finite x and y (x = %1, y = %2 mm)</source>
+        <translation>ein KMG-Punkt braucht endliche Werte für x und y (x = %1, y = %2 mm)</translation>
+    </message>
+    <message>
+        <source>a CMM point at radius %1 mm is not on feature %2 (R%3 to R%4 mm)</source>
+        <translation>ein KMG-Punkt bei Radius %1 mm liegt nicht auf Merkmal %2 (R%3 bis R%4 mm)</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredResiduals</name>
@@ -1370,12 +1488,20 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation>Teil %1: %2</translation>
+    </message>
+    <message>
+        <source>part %1: its forces are the physics model&apos;s, not estimated from its motor currents</source>
+        <translation>Teil %1: Seine Kräfte stammen aus dem Physikmodell, nicht aus seinen Motorströmen geschätzt</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>
     <message>
-        <source>a line needs either diameter_mm or radial_deviation_um, and one only</source>
-        <translation>eine Zeile braucht entweder diameter_mm oder radial_deviation_um, und nur eines</translation>
+        <source>a line needs one of diameter_mm, radial_deviation_um, or x_mm and y_mm (a CMM point)</source>
+        <translation>eine Zeile braucht diameter_mm, radial_deviation_um oder x_mm und y_mm (einen KMG-Punkt)</translation>
     </message>
 </context>
 <context>
@@ -1505,6 +1631,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>cannot read the learned models</source>
         <translation>die gelernten Modelle können nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>part %1 has a damaged drive reading: %2</source>
+        <translation>Teil %1 hat beschädigte Antriebsmesswerte: %2</translation>
     </message>
 </context>
 <context>
@@ -1646,6 +1776,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>say add, list, remove or export, not &quot;%1&quot;</source>
         <translation>sagen Sie add, list, remove oder export, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>not a JSON object (%1)</source>
+        <translation>kein JSON-Objekt (%1)</translation>
+    </message>
+    <message>
+        <source>The spindle and feed drives&apos; readings during the finishing cut (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</source>
+        <translation>Die Messwerte von Spindel- und Vorschubantrieb während des Schlichtschnitts (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</translation>
     </message>
 </context>
 <context>
@@ -4680,6 +4818,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>row %1, %2</source>
         <translation>Zeile %1, %2</translation>
+    </message>
+    <message>
+        <source>CMM point x; y [mm]</source>
+        <translation>KMG-Punkt x; y [mm]</translation>
     </message>
 </context>
 <context>

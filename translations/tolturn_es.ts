@@ -511,6 +511,77 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>CurrentForces</name>
+    <message>
+        <source>%1 = %2 is outside the range %3 to %4 of the calibration cuts: the network extrapolates</source>
+        <translation>%1 = %2 está fuera del intervalo de %3 a %4 de los cortes de calibración: la red extrapola</translation>
+    </message>
+    <message>
+        <source>a force, the chip area or an angle is not a finite number</source>
+        <translation>una fuerza, la sección de viruta o un ángulo no es un número finito</translation>
+    </message>
+    <message>
+        <source>the uncut chip area A_c = %1 mm² (eq. 16) is not above zero</source>
+        <translation>la sección de viruta sin deformar A_c = %1 mm² (ec. 16) no es mayor que cero</translation>
+    </message>
+    <message>
+        <source>eq. 17 and 18 do not determine K_n and K_f for back rake %1°, normal rake %2° and effective lead angle %3° (determinant %4)</source>
+        <translation>las ec. 17 y 18 no determinan K_n y K_f para un ángulo de inclinación posterior de %1°, un ángulo de desprendimiento normal de %2° y un ángulo de posición efectivo de %3° (determinante %4)</translation>
+    </message>
+    <message>
+        <source>F_t = %1 N and F_a = %2 N give a normal pressure K_n = %3 N/mm² that is not positive (eq. 17–18): check the forces and the tool angles</source>
+        <translation>F_t = %1 N y F_a = %2 N dan una presión normal K_n = %3 N/mm² que no es positiva (ec. 17–18): compruebe las fuerzas y los ángulos de la herramienta</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is not above zero</source>
+        <translation>%1 = %2 no es mayor que cero</translation>
+    </message>
+    <message>
+        <source>the nose radius %1 mm is negative or not a number</source>
+        <translation>el radio de punta %1 mm es negativo o no es un número</translation>
+    </message>
+    <message>
+        <source>%1 = %2° is not between %3° and %4°</source>
+        <translation>%1 = %2° no está entre %3° y %4°</translation>
+    </message>
+    <message>
+        <source>the current–force model has not been trained</source>
+        <translation>el modelo corriente-fuerza no se ha entrenado</translation>
+    </message>
+    <message>
+        <source>the radial force cannot be found from the estimated F_t = %1 N and F_a = %2 N: %3</source>
+        <translation>no se puede obtener la fuerza radial a partir de las estimaciones F_t = %1 N y F_a = %2 N: %3</translation>
+    </message>
+    <message>
+        <source>the friction ratio K_f = %1 found from F_t = %2 N and F_a = %3 N is negative: the friction on the rake face would push the chip down it</source>
+        <translation>la relación de fricción K_f = %1 obtenida de F_t = %2 N y F_a = %3 N es negativa: la fricción en la cara de desprendimiento empujaría la viruta hacia abajo por ella</translation>
+    </message>
+    <message>
+        <source>samples: %1 calibration cuts; at least %2 are needed (the paper trained on 21)</source>
+        <translation>muestras: %1 cortes de calibración; se necesitan al menos %2 (el artículo entrenó con 21)</translation>
+    </message>
+    <message>
+        <source>the measured tangential force is not a finite number</source>
+        <translation>la fuerza tangencial medida no es un número finito</translation>
+    </message>
+    <message>
+        <source>the measured axial force is not a finite number</source>
+        <translation>la fuerza axial medida no es un número finito</translation>
+    </message>
+    <message>
+        <source>tangential network (eq. 11): %1</source>
+        <translation>red de la fuerza tangencial (ec. 11): %1</translation>
+    </message>
+    <message>
+        <source>axial network (eq. 13): %1</source>
+        <translation>red de la fuerza axial (ec. 13): %1</translation>
+    </message>
+    <message>
+        <source>the current–force model has no valid &quot;%1&quot;</source>
+        <translation>el modelo corriente-fuerza no tiene un «%1» válido</translation>
+    </message>
+</context>
+<context>
     <name>CuttingModels</name>
     <message>
         <source>%1 = %2 is outside the range %3 &lt; %1 &lt; %4 in which %5 is stated to hold</source>
@@ -689,6 +760,33 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the predicted deflection, %1 mm at z = %2 mm, is larger than the depth of cut %3 mm: the part would spring out of the cut, and a model linear in the forces of the nominal depth does not hold; support the part (tailstock, steady rest) or cut less</source>
         <translation>la flexión prevista, %1 mm en z = %2 mm, es mayor que la profundidad de corte %3 mm: la pieza se saldría del corte, y un modelo lineal en las fuerzas de la profundidad nominal no vale; apoye la pieza (contrapunto, luneta) o corte menos</translation>
+    </message>
+</context>
+<context>
+    <name>DriveReadings</name>
+    <message>
+        <source>%1 is not a finite number (a current from three phases is not, when a phase is negative or not finite)</source>
+        <translation>%1 no es un número finito (una corriente obtenida de tres fases no lo es cuando una fase es negativa o no finita)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is negative</source>
+        <translation>%1 = %2 es negativo</translation>
+    </message>
+    <message>
+        <source>the spindle speed ω_s = %1 rad/s is not above zero: no cut</source>
+        <translation>la velocidad del husillo ω_s = %1 rad/s no es mayor que cero: no hay corte</translation>
+    </message>
+    <message>
+        <source>the spindle current I_s = %1 A is below its idle current I_s0 = %2 A plus friction current ΔI_sf = %3 A, so the cutting current ΔI_s (eq. 10) would be negative: measure the idle and friction currents again at this speed</source>
+        <translation>la corriente del motor del husillo I_s = %1 A es inferior a su corriente en vacío I_s0 = %2 A más la corriente de fricción ΔI_sf = %3 A, por lo que la corriente de corte ΔI_s (ec. 10) sería negativa: vuelva a medir las corrientes en vacío y de fricción a esta velocidad</translation>
+    </message>
+    <message>
+        <source>the feed current I_a = %1 A is below its idle current I_a0 = %2 A, so the cutting current ΔI_a would be negative: measure the idle current again at this feed speed</source>
+        <translation>la corriente del motor de avance I_a = %1 A es inferior a su corriente en vacío I_a0 = %2 A, por lo que la corriente de corte ΔI_a sería negativa: vuelva a medir la corriente en vacío a esta velocidad de avance</translation>
+    </message>
+    <message>
+        <source>the drive reading lacks the number &quot;%1&quot;</source>
+        <translation>a la lectura de los accionamientos le falta el número «%1»</translation>
     </message>
 </context>
 <context>
@@ -1248,6 +1346,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 has %2</source>
         <translation>%1 tiene %2</translation>
     </message>
+    <message>
+        <source>forces from motor currents: %1 calibration cuts; leaving one out, F_t to %2 N RMS, F_a to %3 N RMS</source>
+        <translation>fuerzas a partir de corrientes de motor: %1 cortes de calibración; dejando uno fuera, F_t con %2 N RMS, F_a con %3 N RMS</translation>
+    </message>
+    <message>
+        <source>Cuts with motor currents and dynamometer forces (CSV): parts that carry their drives&apos; readings then learn from forces estimated from their motor currents (Li &amp; Du eq. 7–19).</source>
+        <translation>Cortes con corrientes de motor y fuerzas de dinamómetro (CSV): las piezas que llevan las lecturas de sus accionamientos aprenden entonces de fuerzas estimadas a partir de sus corrientes de motor (Li &amp; Du ec. 7–19).</translation>
+    </message>
+    <message>
+        <source>%1 of %2 parts learned from forces estimated from their motor currents</source>
+        <translation>%1 de %2 piezas aprendieron de fuerzas estimadas a partir de sus corrientes de motor</translation>
+    </message>
 </context>
 <context>
     <name>LearnedModelJson</name>
@@ -1343,6 +1453,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the part has no measured point</source>
         <translation>la pieza no tiene ningún punto medido</translation>
     </message>
+    <message>
+        <source>a CMM point needs finite x and y (x = %1, y = %2 mm)</source>
+        <translation>un punto de MMC necesita x e y finitos (x = %1, y = %2 mm)</translation>
+    </message>
+    <message>
+        <source>a CMM point at radius %1 mm is not on feature %2 (R%3 to R%4 mm)</source>
+        <translation>un punto de MMC en el radio %1 mm no está en el elemento %2 (R%3 a R%4 mm)</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredResiduals</name>
@@ -1370,12 +1488,20 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation>pieza %1: %2</translation>
+    </message>
+    <message>
+        <source>part %1: its forces are the physics model&apos;s, not estimated from its motor currents</source>
+        <translation>pieza %1: sus fuerzas son las del modelo físico, no estimadas a partir de sus corrientes de motor</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>
     <message>
-        <source>a line needs either diameter_mm or radial_deviation_um, and one only</source>
-        <translation>una línea necesita diameter_mm o radial_deviation_um, y solo uno</translation>
+        <source>a line needs one of diameter_mm, radial_deviation_um, or x_mm and y_mm (a CMM point)</source>
+        <translation>una línea necesita diameter_mm, radial_deviation_um, o x_mm e y_mm (un punto de MMC)</translation>
     </message>
 </context>
 <context>
@@ -1505,6 +1631,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>cannot read the learned models</source>
         <translation>no se pueden leer los modelos aprendidos</translation>
+    </message>
+    <message>
+        <source>part %1 has a damaged drive reading: %2</source>
+        <translation>la pieza %1 tiene una lectura de accionamientos dañada: %2</translation>
     </message>
 </context>
 <context>
@@ -1646,6 +1776,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>say add, list, remove or export, not &quot;%1&quot;</source>
         <translation>diga add, list, remove o export, no «%1»</translation>
+    </message>
+    <message>
+        <source>not a JSON object (%1)</source>
+        <translation>no es un objeto JSON (%1)</translation>
+    </message>
+    <message>
+        <source>The spindle and feed drives&apos; readings during the finishing cut (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</source>
+        <translation>Las lecturas de los accionamientos del husillo y de avance durante el corte de acabado (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</translation>
     </message>
 </context>
 <context>
@@ -4680,6 +4818,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>row %1, %2</source>
         <translation>fila %1, %2</translation>
+    </message>
+    <message>
+        <source>CMM point x; y [mm]</source>
+        <translation>Punto de MMC x; y [mm]</translation>
     </message>
 </context>
 <context>

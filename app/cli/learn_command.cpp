@@ -25,6 +25,31 @@ QString um(double mm)
     return QString::number(1000.0 * mm, 'f', 2);
 }
 
+// The first stage of Li & Du's network from calibration cuts, with its figures on `err`; empty
+// after naming the problem.
+std::optional<CurrentForceModel> currentForceEstimator(const QString &path, const QString &prefix, QTextStream &err)
+{
+    Diagnostics problems;
+    const auto cuts = readForceCalibration(path, problems);
+    for (const Diagnostic &d : problems)
+        err << d.toString() << '\n';
+    if (!cuts)
+        return std::nullopt;
+    QString error;
+    auto model = trainCurrentForceModel(*cuts, currentForceTrainingOptions(), &error);
+    if (!model) {
+        err << prefix << path << ": " << error << '\n';
+        return std::nullopt;
+    }
+    err << LearnCommand::tr("forces from motor currents: %1 calibration cuts; leaving one out, F_t to %2 N RMS, F_a "
+                            "to %3 N RMS")
+               .arg(cuts->size())
+               .arg(QString::number(model->tangential.leaveOneOutRms, 'f', 1),
+                    QString::number(model->axial.leaveOneOutRms, 'f', 1))
+        << '\n';
+    return model;
+}
+
 } // namespace
 
 int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
@@ -45,7 +70,12 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption save(
         QStringLiteral("save"),
         LearnCommand::tr("Keep what was learned in the store as the machine's model, for the commands' --learned."));
-    parser.addOptions({machine, store, criterion, json, save});
+    const QCommandLineOption calibration(
+        QStringLiteral("force-calibration"),
+        LearnCommand::tr("Cuts with motor currents and dynamometer forces (CSV): parts that carry their drives' "
+                         "readings then learn from forces estimated from their motor currents (Li & Du eq. 7–19)."),
+        QStringLiteral("FILE.csv"));
+    parser.addOptions({machine, store, criterion, json, save, calibration});
     if (const int stop = parseNamedCommand(parser, QStringLiteral("learn"), args, out, err); stop >= 0)
         return stop;
     const QString prefix = programName() + QStringLiteral(" learn: ");
@@ -66,7 +96,14 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
     }
     RbfTrainingOptions options;
     options.criterion = name == QLatin1String("bic") ? RbfCriterion::Bic : RbfCriterion::Gcv;
-    const MachineLearning run = learnMachine(*parts, DataLibrary::builtIn(), options);
+    std::optional<CurrentForceModel> currents;
+    if (parser.isSet(calibration)) {
+        currents = currentForceEstimator(parser.value(calibration), prefix, err);
+        if (!currents)
+            return kExitProblems;
+    }
+    const MachineLearning run =
+        learnMachine(*parts, DataLibrary::builtIn(), options, {}, currents ? &*currents : nullptr);
     for (const Diagnostic &d : run.warnings)
         err << d.toString() << '\n';
     if (!run.ok()) {
@@ -85,6 +122,11 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
                    .arg(history->location().describe())
             << '\n';
     }
+    if (currents)
+        err << LearnCommand::tr("%1 of %2 parts learned from forces estimated from their motor currents")
+                   .arg(run.partsWithCurrentForces)
+                   .arg(run.parts)
+            << '\n';
     const std::optional<LearnedResidual> &learned = run.learned;
     const std::optional<CrossValidation> &cv = run.validation;
     const GeometricError &g = learned->geometric;

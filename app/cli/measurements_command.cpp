@@ -11,6 +11,7 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QTextStream>
@@ -74,6 +75,29 @@ QJsonObject summaryJson(const MeasuredPartSummary &s)
             {QStringLiteral("points"), s.pointCount}};
 }
 
+// The drives' readings of the cut from --drive FILE.json (docs/learning.md); `bad` set, with the
+// file and the problem named, when it cannot be read.
+std::optional<DriveReading> driveOption(const QCommandLineParser &parser, const QString &action, QTextStream &err,
+                                        bool &bad)
+{
+    if (!parser.isSet(QStringLiteral("drive")))
+        return std::nullopt;
+    const QString path = parser.value(QStringLiteral("drive"));
+    QFile file(path);
+    QJsonParseError parse{};
+    const QJsonDocument doc =
+        file.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(file.readAll(), &parse) : QJsonDocument();
+    QString error = !file.isOpen()    ? file.errorString()
+                    : !doc.isObject() ? MeasurementsCommand::tr("not a JSON object (%1)").arg(parse.errorString())
+                                      : QString();
+    std::optional<DriveReading> drive = error.isEmpty() ? driveReadingFromJson(doc.object(), &error) : std::nullopt;
+    if (!drive) {
+        err << prefix(action) << path << ": " << error << '\n';
+        bad = true;
+    }
+    return drive;
+}
+
 int runAdd(const QStringList &args, QTextStream &out, QTextStream &err)
 {
     QCommandLineParser parser;
@@ -95,7 +119,11 @@ int runAdd(const QStringList &args, QTextStream &out, QTextStream &err)
           QStringLiteral("MIN")},
          {QStringLiteral("ambient"), MeasurementsCommand::tr("Ambient temperature when it was cut, °C."),
           QStringLiteral("C")},
-         {QStringLiteral("note"), MeasurementsCommand::tr("A note."), QStringLiteral("TEXT")}});
+         {QStringLiteral("note"), MeasurementsCommand::tr("A note."), QStringLiteral("TEXT")},
+         {QStringLiteral("drive"),
+          MeasurementsCommand::tr("The spindle and feed drives' readings during the finishing cut (JSON: "
+                                  "spindle_current_A, spindle_idle_current_A, …; docs/learning.md)."),
+          QStringLiteral("FILE.json")}});
     parser.addPositionalArgument(QStringLiteral("project"),
                                  MeasurementsCommand::tr("The project the part was cut from."),
                                  QStringLiteral("PROJECT"));
@@ -112,6 +140,7 @@ int runAdd(const QStringList &args, QTextStream &out, QTextStream &err)
     MeasuredPart part;
     part.timeSinceStart_min = numberOption(parser, QStringLiteral("time-since-start"), action, err, bad);
     part.ambient_C = numberOption(parser, QStringLiteral("ambient"), action, err, bad);
+    part.drive = driveOption(parser, action, err, bad);
     part.measuredAt = parser.isSet(QStringLiteral("at"))
                           ? QDateTime::fromString(parser.value(QStringLiteral("at")), Qt::ISODateWithMs)
                           : QDateTime::currentDateTimeUtc();

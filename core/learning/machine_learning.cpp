@@ -10,6 +10,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
+
 namespace tolturn {
 
 namespace {
@@ -21,11 +23,13 @@ struct MachineLearningText {
 } // namespace
 
 MachineLearning learnMachine(const std::vector<MeasuredPart> &parts, const DataLibrary &data,
-                             const RbfTrainingOptions &options, const LearningControl &control)
+                             const RbfTrainingOptions &options, const LearningControl &control,
+                             const CurrentForceModel *forcesFromCurrents)
 {
     MachineLearning run;
     run.parts = static_cast<int>(parts.size());
-    const std::vector<ResidualSample> samples = residualSamples(parts, data, run.warnings);
+    const std::vector<ResidualSample> samples =
+        residualSamples(parts, data, run.warnings, forcesFromCurrents, &run.partsWithCurrentForces);
     run.usablePoints = static_cast<int>(samples.size());
     QString error;
     run.learned = learnResidual(samples, options, &error);

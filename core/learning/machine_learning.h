@@ -22,6 +22,7 @@ struct MachineLearning {
     std::optional<CrossValidation> validation; // leave one part out
     int parts = 0;                             // stored parts of the machine
     int usablePoints = 0;                      // points compared with the physics
+    int partsWithCurrentForces = 0;            // parts whose forces came from their motor currents
     Diagnostics warnings;                      // parts left out, and why
     QString error;                             // why nothing was learned; empty on success
     bool cancelled = false;
@@ -29,8 +30,11 @@ struct MachineLearning {
     [[nodiscard]] bool ok() const { return learned && validation; }
 };
 
+// With `forcesFromCurrents`, parts that carry drive readings learn from the forces estimated from
+// their motor currents (residualSamples).
 [[nodiscard]] MachineLearning learnMachine(const std::vector<MeasuredPart> &parts, const DataLibrary &data,
-                                           const RbfTrainingOptions &options, const LearningControl &control = {});
+                                           const RbfTrainingOptions &options, const LearningControl &control = {},
+                                           const CurrentForceModel *forcesFromCurrents = nullptr);
 
 // Every stored part of a machine, with its snapshot and points; empty with `error` when the store
 // refused.

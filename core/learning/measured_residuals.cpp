@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 
 namespace tolturn {
 
@@ -62,7 +63,8 @@ double spindleSpeedAt(const DeviationResult &d, const QString &featureId, double
 // physics' radius error and Li & Du's inputs. Empty where the program has no target or the model
 // no station (a face, a feature not turned).
 std::optional<ResidualSample> sampleAt(const Project &project, const DeviationResult &d, const ProgramTargets &targets,
-                                       const QString &featureId, double z, double timeSinceStart_min, double ambient_C)
+                                       const QString &featureId, double z, double timeSinceStart_min, double ambient_C,
+                                       const CuttingForces *measuredForces = nullptr)
 {
     const bool inner = std::any_of(project.part.inner.segments.begin(), project.part.inner.segments.end(),
                                    [&featureId](const Segment &s) { return s.id == featureId; });
@@ -77,13 +79,43 @@ std::optional<ResidualSample> sampleAt(const Project &project, const DeviationRe
     s.z_mm = z;
     s.diameter_mm = 2.0 * *target;
     s.physics_mm = *physics;
+    const CuttingForces &f = measuredForces ? *measuredForces : in.forces;
     s.inputs << spindleSpeedAt(d, featureId, z), in.pass.feed_mm_rev, timeSinceStart_min, ambient_C,
-        in.forces.tangential_N * *target * 1e-3, in.forces.axial_N, in.forces.radial_N, z;
+        f.tangential_N * *target * 1e-3, f.axial_N, f.radial_N, z;
     return s;
 }
 
-void addPartSamples(const MeasuredPart &part, const DataLibrary &data, std::vector<ResidualSample> &out,
-                    Diagnostics &warnings)
+// The forces of a part's finishing cut from its drives' motor currents (Li & Du eq. 7–19), when
+// it carries their readings and a calibrated estimator is given; else nothing, and the physics
+// model's forces are the network's inputs.
+std::optional<CuttingForces> forcesFromCurrents(const MeasuredPart &part, const Project &project,
+                                                const TurningInputs &in, const DataLibrary &data,
+                                                const CurrentForceModel *estimator, Diagnostics &warnings)
+{
+    if (!part.drive || !estimator)
+        return std::nullopt;
+    const QString field = QStringLiteral("parts[%1].drive").arg(part.id);
+    Diagnostics problems;
+    const auto tool = resolveLiDuToolGeometry(project, data, problems);
+    CuttingForceEstimate e;
+    if (tool) {
+        const ToolAngles angles{tool->normalRake_rad, tool->backRake_rad,
+                                0.5 * std::numbers::pi - tool->leadAngle_rad}; // γ_L = 90° − κ_r
+        e = estimator->estimate(*part.drive, angles, in.pass.feed_mm_rev, in.pass.depthOfCut_mm, tool->noseRadius_mm);
+        problems.insert(problems.end(), e.diagnostics.begin(), e.diagnostics.end());
+    }
+    for (const Diagnostic &d : problems)
+        warnings.push_back(makeWarning(field, MeasuredResiduals::tr("part %1: %2").arg(part.id).arg(d.toString())));
+    if (!e.forces)
+        warnings.push_back(makeWarning(field, MeasuredResiduals::tr("part %1: its forces are the physics model's, "
+                                                                    "not estimated from its motor currents")
+                                                  .arg(part.id)));
+    return e.forces;
+}
+
+// Adds the samples of one part; true when its forces came from its motor currents.
+bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const CurrentForceModel *estimator,
+                    std::vector<ResidualSample> &out, Diagnostics &warnings)
 {
     const ProjectParseResult read = parseProjectJson(part.projectJson);
     const QString field = QStringLiteral("parts[%1]").arg(part.id);
@@ -91,30 +123,42 @@ void addPartSamples(const MeasuredPart &part, const DataLibrary &data, std::vect
         warnings.push_back(makeWarning(field, MeasuredResiduals::tr("part %1 is left out: its project snapshot "
                                                                     "does not read")
                                                   .arg(part.id)));
-        return;
+        return false;
     }
     const DeviationResult d = computeDeviation(*read.project, data, {});
     if (!d.inputs) {
         warnings.push_back(makeWarning(field, MeasuredResiduals::tr("part %1 is left out: the physics model cannot "
                                                                     "compute its project")
                                                   .arg(part.id)));
-        return;
+        return false;
     }
     const ProgramTargets targets = programTargets(*read.project);
+    const std::optional<CuttingForces> measured =
+        forcesFromCurrents(part, *read.project, *d.inputs, data, estimator, warnings);
     for (const MeasuredPoint &p : part.points) {
         auto s = sampleAt(*read.project, d, targets, p.featureId, p.z_mm,
                           part.timeSinceStart_min.value_or(d.inputs->timeSinceStart_min),
-                          part.ambient_C.value_or(d.inputs->ambientTemperature_C));
+                          part.ambient_C.value_or(d.inputs->ambientTemperature_C), measured ? &*measured : nullptr);
         if (!s)
             continue; // a face or a feature the model does not turn: nothing to compare
         s->partId = part.id;
         // As the physics model's radius error: machined radius − programmed radius. A radial
         // deviation is recorded as material left, which on a bore is a radius short.
         const double target = 0.5 * s->diameter_mm;
-        s->measured_mm = p.quantity == MeasuredQuantity::Diameter ? 0.5 * p.value_mm - target
-                                                                  : (s->inner ? -p.value_mm : p.value_mm);
+        switch (p.quantity) {
+        case MeasuredQuantity::Diameter:
+            s->measured_mm = 0.5 * p.value_mm - target;
+            break;
+        case MeasuredQuantity::CmmPoint: // its radius √(x² + y²)
+            s->measured_mm = p.value_mm - target;
+            break;
+        case MeasuredQuantity::RadialDeviation:
+            s->measured_mm = s->inner ? -p.value_mm : p.value_mm;
+            break;
+        }
         out.push_back(*s);
     }
+    return measured.has_value();
 }
 
 std::optional<GeometricError> fitGeometric(const std::vector<ResidualSample> &samples,
@@ -150,11 +194,15 @@ std::optional<GeometricError> fitGeometric(const std::vector<ResidualSample> &sa
 } // namespace
 
 std::vector<ResidualSample> residualSamples(const std::vector<MeasuredPart> &parts, const DataLibrary &data,
-                                            Diagnostics &warnings)
+                                            Diagnostics &warnings, const CurrentForceModel *forcesFromCurrents,
+                                            int *partsWithCurrentForces)
 {
     std::vector<ResidualSample> out;
+    int fromCurrents = 0;
     for (const MeasuredPart &part : parts)
-        addPartSamples(part, data, out, warnings);
+        fromCurrents += addPartSamples(part, data, forcesFromCurrents, out, warnings) ? 1 : 0;
+    if (partsWithCurrentForces)
+        *partsWithCurrentForces = fromCurrents;
     return out;
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/data/data_library.h"
 #include "core/deviation/deviation_model.h"
+#include "core/learning/current_forces.h"
 #include "core/learning/hybrid_rbf.h"
 #include "core/measurements/measured_part.h"
 #include "core/tolerance/target_contour.h"
@@ -37,9 +38,14 @@ struct ResidualSample {
 
 // The samples of the stored parts: each part's snapshot through the physics model at its
 // finishing pass, each point against the program's target at its z. A part whose snapshot cannot
-// be computed is left out with a warning naming it.
+// be computed is left out with a warning naming it. With `forcesFromCurrents`, a part that carries
+// its drives' readings has its forces (the network's torque, axial and radial force) estimated
+// from its motor currents (Li & Du eq. 7–19) instead of the force model's; where the estimate
+// fails, the force model's, with a warning.
 [[nodiscard]] std::vector<ResidualSample> residualSamples(const std::vector<MeasuredPart> &parts,
-                                                          const DataLibrary &data, Diagnostics &warnings);
+                                                          const DataLibrary &data, Diagnostics &warnings,
+                                                          const CurrentForceModel *forcesFromCurrents = nullptr,
+                                                          int *partsWithCurrentForces = nullptr);
 
 // The geometric error as a plane in the diameter and z: δ_G = a·φ + b·z + c. Li & Du's eq. 4 is
 // the line in φ (the X axis's linear error); the term in z is the taper that a Z axis not parallel

@@ -49,7 +49,20 @@ void checkPoint(const MeasuredPoint &p, const PartProfile &part, const QString &
         out.push_back(makeError(field + QStringLiteral(".z_mm"),
                                 MeasuredParts::tr("z = %1 mm is not on feature %2 (z from %3 to %4 mm)")
                                     .arg(formatNumber(p.z_mm), p.featureId, formatNumber(zMin), formatNumber(zMax))));
-    if (p.quantity == MeasuredQuantity::Diameter) {
+    if (p.quantity == MeasuredQuantity::CmmPoint) {
+        const double rMin = std::min(s->from.r_mm, s->to.r_mm);
+        const double rMax = std::max(s->from.r_mm, s->to.r_mm);
+        if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm) ||
+            std::abs(p.value_mm - std::hypot(p.x_mm, p.y_mm)) > 1e-9 * std::max(1.0, p.value_mm))
+            out.push_back(makeError(field + QStringLiteral(".x_mm"),
+                                    MeasuredParts::tr("a CMM point needs finite x and y (x = %1, y = %2 mm)")
+                                        .arg(formatNumber(p.x_mm), formatNumber(p.y_mm))));
+        else if (p.value_mm > rMax + kMaxRadialDeviation_mm || p.value_mm < rMin - kMaxRadialDeviation_mm)
+            out.push_back(
+                makeError(field + QStringLiteral(".x_mm"),
+                          MeasuredParts::tr("a CMM point at radius %1 mm is not on feature %2 (R%3 to R%4 mm)")
+                              .arg(formatNumber(p.value_mm), p.featureId, formatNumber(rMin), formatNumber(rMax))));
+    } else if (p.quantity == MeasuredQuantity::Diameter) {
         // Against the feature's own diameters: a measured size a millimetre off is another part.
         const double d = 2.0 * std::max(s->from.r_mm, s->to.r_mm) + 2.0 * kMaxRadialDeviation_mm;
         if (!std::isfinite(p.value_mm) || p.value_mm <= 0.0 || p.value_mm > d ||
@@ -68,9 +81,22 @@ void checkPoint(const MeasuredPoint &p, const PartProfile &part, const QString &
 
 } // namespace
 
+MeasuredPoint cmmPoint(const QString &featureId, double x_mm, double y_mm, double z_mm)
+{
+    return {featureId, z_mm, MeasuredQuantity::CmmPoint, std::hypot(x_mm, y_mm), x_mm, y_mm};
+}
+
 QString keyword(MeasuredQuantity quantity)
 {
-    return quantity == MeasuredQuantity::Diameter ? QStringLiteral("diameter") : QStringLiteral("radial_deviation");
+    switch (quantity) {
+    case MeasuredQuantity::Diameter:
+        return QStringLiteral("diameter");
+    case MeasuredQuantity::RadialDeviation:
+        return QStringLiteral("radial_deviation");
+    case MeasuredQuantity::CmmPoint:
+        return QStringLiteral("cmm_point");
+    }
+    return {};
 }
 
 std::optional<MeasuredQuantity> measuredQuantityFromKeyword(const QString &text)
@@ -79,6 +105,8 @@ std::optional<MeasuredQuantity> measuredQuantityFromKeyword(const QString &text)
         return MeasuredQuantity::Diameter;
     if (text == QLatin1String("radial_deviation"))
         return MeasuredQuantity::RadialDeviation;
+    if (text == QLatin1String("cmm_point"))
+        return MeasuredQuantity::CmmPoint;
     return std::nullopt;
 }
 
@@ -111,6 +139,10 @@ Diagnostics validateMeasuredPart(const MeasuredPart &part)
                                              ? QString()
                                              : QStringLiteral(": ") + snapshot.diagnostics.front().toString())));
         return out;
+    }
+    if (part.drive) {
+        const Diagnostics drive = validateDriveReading(*part.drive, QStringLiteral("drive"));
+        out.insert(out.end(), drive.begin(), drive.end());
     }
     if (part.points.empty())
         out.push_back(makeError(QStringLiteral("points"), MeasuredParts::tr("the part has no measured point")));

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/common/diagnostic.h"
+#include "core/measurements/drive_reading.h"
 
 #include <QByteArray>
 #include <QDateTime>
@@ -12,19 +13,28 @@
 
 namespace tolturn {
 
-// What was measured at a point of a turned surface (docs/learning.md): the diameter there, or
-// the radial deviation from the programmed size (a dial gauge along the part, a CMM's radius
-// minus the nominal). Both in mm in the store; shown in µm where they are deviations.
-enum class MeasuredQuantity { Diameter, RadialDeviation };
+// What was measured at a point of a turned surface (docs/learning.md): the diameter there; the
+// radial deviation from the programmed size (a dial gauge along the part); or a point of the
+// surface as a coordinate measuring machine reports it, x and y across the axis and z along it, in
+// the part's frame (the CMM aligned on the part's axis, as its software does on a datum axis),
+// whose radius √(x² + y²) is what is compared. All in mm in the store; shown in µm where they are
+// deviations.
+enum class MeasuredQuantity { Diameter, RadialDeviation, CmmPoint };
 
 struct MeasuredPoint {
     QString featureId; // the profile segment's id ("O3", "I1") in the part's snapshot
     double z_mm = 0.0;
     MeasuredQuantity quantity = MeasuredQuantity::Diameter;
-    double value_mm = 0.0; // the diameter, or the radial deviation (positive: material left)
+    // The diameter, the radial deviation (positive: material left), or a CMM point's radius.
+    double value_mm = 0.0;
+    double x_mm = 0.0; // CmmPoint only
+    double y_mm = 0.0; // CmmPoint only
 
     friend bool operator==(const MeasuredPoint &, const MeasuredPoint &) = default;
 };
+
+// A CMM point, its radius worked out: value_mm = √(x² + y²).
+[[nodiscard]] MeasuredPoint cmmPoint(const QString &featureId, double x_mm, double y_mm, double z_mm);
 
 // One part as it came off a machine and was measured, with what it was cut from: the project
 // snapshot (profile, conditions, tool, clamping) and the shop conditions of the cut (Li & Du,
@@ -40,6 +50,10 @@ struct MeasuredPart {
     QByteArray projectJson; // the project file the part was cut from, as written then
     QString note;
     std::vector<MeasuredPoint> points;
+    // The drives' readings during the finishing cut, when they were logged: the forces the network
+    // learns from are then estimated from the motor currents (Li & Du eq. 7–14) rather than taken
+    // from the force model.
+    std::optional<DriveReading> drive;
 
     friend bool operator==(const MeasuredPart &, const MeasuredPart &) = default;
 };

@@ -16,10 +16,10 @@ struct MeasurementCsv {
 
 const std::vector<MeasurementColumn> &pointColumns()
 {
-    static const std::vector<MeasurementColumn> columns{{"feature", true, false, true},
-                                                        {"z_mm", true, false, false},
-                                                        {"diameter_mm", false, true, false},
-                                                        {"radial_deviation_um", false, false, false}};
+    static const std::vector<MeasurementColumn> columns{
+        {"feature", true, false, true},      {"z_mm", true, false, false},
+        {"diameter_mm", false, true, false}, {"radial_deviation_um", false, false, false},
+        {"x_mm", false, false, false},       {"y_mm", false, false, false}};
     return columns;
 }
 
@@ -34,16 +34,21 @@ std::optional<std::vector<MeasuredPoint>> pointsOf(const std::optional<std::vect
     for (std::size_t i = 0; i < rows->size(); ++i) {
         const MeasurementRow &r = (*rows)[i];
         const bool diameter = r[2].has_value();
-        if (diameter == r[3].has_value()) {
+        const bool radial = r[3].has_value();
+        const bool cmm = r[4].has_value() || r[5].has_value();
+        if (int(diameter) + int(radial) + int(cmm) != 1 || (cmm && !(r[4] && r[5]))) {
             out.push_back(makeError(QStringLiteral("%1:%2").arg(fileName).arg(texts[i].line),
-                                    MeasurementCsv::tr("a line needs either diameter_mm or radial_deviation_um, "
-                                                       "and one only")));
+                                    MeasurementCsv::tr("a line needs one of diameter_mm, radial_deviation_um, or "
+                                                       "x_mm and y_mm (a CMM point)")));
             ok = false;
             continue;
         }
-        points.push_back({texts[i].cells.value(0), *r[1],
-                          diameter ? MeasuredQuantity::Diameter : MeasuredQuantity::RadialDeviation,
-                          diameter ? *r[2] : *r[3] / 1000.0});
+        const QString feature = texts[i].cells.value(0);
+        if (cmm)
+            points.push_back(cmmPoint(feature, *r[4], *r[5], *r[1]));
+        else
+            points.push_back({feature, *r[1], diameter ? MeasuredQuantity::Diameter : MeasuredQuantity::RadialDeviation,
+                              diameter ? *r[2] : *r[3] / 1000.0});
     }
     if (!ok)
         return std::nullopt;
@@ -71,17 +76,18 @@ QString measuredPointsCsv(const std::vector<MeasuredPart> &parts)
 {
     QString csv = csvLine({QStringLiteral("part"), QStringLiteral("machine"), QStringLiteral("measured_at"),
                            QStringLiteral("feature"), QStringLiteral("z_mm"), QStringLiteral("diameter_mm"),
-                           QStringLiteral("radial_deviation_um")}) +
+                           QStringLiteral("radial_deviation_um"), QStringLiteral("x_mm"), QStringLiteral("y_mm")}) +
                   QLatin1Char('\n');
     for (const MeasuredPart &part : parts) {
         for (const MeasuredPoint &p : part.points) {
-            const bool diameter = p.quantity == MeasuredQuantity::Diameter;
-            csv +=
-                csvLine({QString::number(part.id), part.machineId, part.measuredAt.toUTC().toString(Qt::ISODateWithMs),
-                         p.featureId, QString::number(p.z_mm, 'g', 10),
-                         diameter ? QString::number(p.value_mm, 'g', 10) : QString(),
-                         diameter ? QString() : QString::number(1000.0 * p.value_mm, 'g', 10)}) +
-                QLatin1Char('\n');
+            const auto number = [](double v) { return QString::number(v, 'g', 10); };
+            const bool cmm = p.quantity == MeasuredQuantity::CmmPoint;
+            csv += csvLine({QString::number(part.id), part.machineId,
+                            part.measuredAt.toUTC().toString(Qt::ISODateWithMs), p.featureId, number(p.z_mm),
+                            p.quantity == MeasuredQuantity::Diameter ? number(p.value_mm) : QString(),
+                            p.quantity == MeasuredQuantity::RadialDeviation ? number(1000.0 * p.value_mm) : QString(),
+                            cmm ? number(p.x_mm) : QString(), cmm ? number(p.y_mm) : QString()}) +
+                   QLatin1Char('\n');
         }
     }
     return csv;

@@ -65,6 +65,15 @@ QStringList version3(const QSqlDatabase &db)
                 .arg(key)};
 }
 
+// Version 4: CMM points (x and y across the axis; value_mm keeps their radius) and the drive
+// readings of a part's cut (spindle and feed motor currents, Li & Du eq. 7–14, as JSON).
+QStringList version4()
+{
+    return {QStringLiteral("ALTER TABLE measured_points ADD COLUMN x_mm DOUBLE PRECISION"),
+            QStringLiteral("ALTER TABLE measured_points ADD COLUMN y_mm DOUBLE PRECISION"),
+            QStringLiteral("ALTER TABLE measured_parts ADD COLUMN drive_json TEXT")};
+}
+
 QStringList version2()
 {
     return {QStringLiteral("ALTER TABLE measured_parts ADD COLUMN profile_sha256 TEXT"),
@@ -102,7 +111,7 @@ bool fillProfileChecksums(QSqlDatabase &db, QString *error)
 bool step(QSqlDatabase &db, int to, QString *error)
 {
     QSqlQuery q(db);
-    const QStringList statements = to == 1 ? version1(db) : to == 2 ? version2() : version3(db);
+    const QStringList statements = to == 1 ? version1(db) : to == 2 ? version2() : to == 3 ? version3(db) : version4();
     for (const QString &sql : statements) {
         if (!run(q, sql, error))
             return false;

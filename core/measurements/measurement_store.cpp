@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonDocument>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QStandardPaths>
@@ -226,22 +227,29 @@ std::optional<qint64> MeasurementStore::add(const MeasuredPart &part, Diagnostic
     if (!begun)
         return fail(MeasurementStoreText::tr("cannot start a transaction"),
                     q.lastError().isValid() ? q.lastError() : database.lastError());
-    if (!prepareAndRun(q,
-                       QStringLiteral("INSERT INTO measured_parts (machine_id, part_name, measured_at, measured_by, "
-                                      "method, time_since_start_min, ambient_c, project_json, note, profile_sha256) "
-                                      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
-                       {part.machineId, textValue(snapshot.project->part.name), timeText(part.measuredAt),
-                        textValue(part.measuredBy), textValue(part.method), optionalValue(part.timeSinceStart_min),
-                        optionalValue(part.ambient_C), QString::fromUtf8(part.projectJson), textValue(part.note),
-                        measurements::profileChecksum(part.projectJson)}))
+    if (!prepareAndRun(
+            q,
+            QStringLiteral("INSERT INTO measured_parts (machine_id, part_name, measured_at, measured_by, "
+                           "method, time_since_start_min, ambient_c, project_json, note, profile_sha256, drive_json) "
+                           "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+            {part.machineId, textValue(snapshot.project->part.name), timeText(part.measuredAt),
+             textValue(part.measuredBy), textValue(part.method), optionalValue(part.timeSinceStart_min),
+             optionalValue(part.ambient_C), QString::fromUtf8(part.projectJson), textValue(part.note),
+             measurements::profileChecksum(part.projectJson),
+             part.drive ? QVariant(QString::fromUtf8(
+                              QJsonDocument(driveReadingJson(*part.drive)).toJson(QJsonDocument::Compact)))
+                        : QVariant(QMetaType::fromType<QString>())}))
         return fail(MeasurementStoreText::tr("cannot store the part"), q.lastError());
     const qint64 id = q.lastInsertId().toLongLong();
     for (std::size_t i = 0; i < part.points.size(); ++i) {
         const MeasuredPoint &p = part.points[i];
+        const bool cmm = p.quantity == MeasuredQuantity::CmmPoint;
         if (!prepareAndRun(q,
                            QStringLiteral("INSERT INTO measured_points (part_id, seq, feature_id, z_mm, quantity, "
-                                          "value_mm) VALUES (?, ?, ?, ?, ?, ?)"),
-                           {id, static_cast<int>(i), p.featureId, p.z_mm, keyword(p.quantity), p.value_mm}))
+                                          "value_mm, x_mm, y_mm) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"),
+                           {id, static_cast<int>(i), p.featureId, p.z_mm, keyword(p.quantity), p.value_mm,
+                            optionalValue(cmm ? std::optional(p.x_mm) : std::nullopt),
+                            optionalValue(cmm ? std::optional(p.y_mm) : std::nullopt)}))
             return fail(MeasurementStoreText::tr("cannot store point %1").arg(i), q.lastError());
     }
     if (m_location.kind == StoreLocation::Kind::SQLite ? !q.exec(QStringLiteral("COMMIT")) : !database.commit())
@@ -260,7 +268,7 @@ std::optional<MeasuredPart> MeasurementStore::part(qint64 id, QString *error) co
     };
     if (!prepareAndRun(q,
                        QStringLiteral("SELECT machine_id, measured_at, measured_by, method, time_since_start_min, "
-                                      "ambient_c, project_json, note FROM measured_parts WHERE id = ?"),
+                                      "ambient_c, project_json, note, drive_json FROM measured_parts WHERE id = ?"),
                        {id}))
         return fail(failure(MeasurementStoreText::tr("cannot read part %1").arg(id), q.lastError()));
     if (!q.next())
@@ -275,10 +283,17 @@ std::optional<MeasuredPart> MeasurementStore::part(qint64 id, QString *error) co
     p.ambient_C = optionalFrom(q.value(5));
     p.projectJson = q.value(6).toString().toUtf8();
     p.note = q.value(7).toString();
-    if (!prepareAndRun(q,
-                       QStringLiteral("SELECT feature_id, z_mm, quantity, value_mm FROM measured_points WHERE "
-                                      "part_id = ? ORDER BY seq"),
-                       {id}))
+    if (!q.value(8).isNull()) {
+        QString why;
+        p.drive = driveReadingFromJson(QJsonDocument::fromJson(q.value(8).toString().toUtf8()).object(), &why);
+        if (!p.drive)
+            return fail(MeasurementStoreText::tr("part %1 has a damaged drive reading: %2").arg(id).arg(why));
+    }
+    if (!prepareAndRun(
+            q,
+            QStringLiteral("SELECT feature_id, z_mm, quantity, value_mm, x_mm, y_mm FROM measured_points WHERE "
+                           "part_id = ? ORDER BY seq"),
+            {id}))
         return fail(failure(MeasurementStoreText::tr("cannot read the points of part %1").arg(id), q.lastError()));
     while (q.next()) {
         const auto quantity = measuredQuantityFromKeyword(q.value(2).toString());
@@ -286,7 +301,8 @@ std::optional<MeasuredPart> MeasurementStore::part(qint64 id, QString *error) co
             return fail(MeasurementStoreText::tr("part %1 has a point of unknown quantity \"%2\"")
                             .arg(id)
                             .arg(q.value(2).toString()));
-        p.points.push_back({q.value(0).toString(), q.value(1).toDouble(), *quantity, q.value(3).toDouble()});
+        p.points.push_back({q.value(0).toString(), q.value(1).toDouble(), *quantity, q.value(3).toDouble(),
+                            q.value(4).toDouble(), q.value(5).toDouble()});
     }
     return p;
 }

@@ -39,7 +39,7 @@ struct StoreLocation {
 
 // The schema version this program writes; older stores are migrated when opened
 // (measurement_schema.h), newer ones are refused.
-inline constexpr int kMeasurementSchemaVersion = 3;
+inline constexpr int kMeasurementSchemaVersion = 4;
 
 struct PartFilter {
     QString machineId; // empty: every machine

@@ -25,11 +25,13 @@ using tolturn::test::writeFile;
 namespace {
 
 // The stepped shaft measured with a micrometer at two places on the Ø50 and a dial gauge on the Ø40.
-constexpr char kPoints[] = "feature,z_mm,diameter_mm,radial_deviation_um\n"
+constexpr char kPoints[] = "feature,z_mm,diameter_mm,radial_deviation_um,x_mm,y_mm\n"
                            "# part 1 of the batch\n"
-                           "O4,40,50.012,\n"
-                           "O4,75,50.018,\n"
-                           "O6,100,,6\n";
+                           "O4,40,50.012,,,\n"
+                           "O4,75,50.018,,,\n"
+                           "O6,100,,6,,\n"
+                           "# a CMM point on the Ø40 g6 seat: radius √(12.003² + 16.004²) = 20.005 mm\n"
+                           "O6,110,,,12.003,16.004\n";
 
 } // namespace
 
@@ -64,7 +66,7 @@ private Q_SLOTS:
                           QStringLiteral("--at"), QStringLiteral("2026-11-24T08:30:00Z"), QStringLiteral("--ambient"),
                           QStringLiteral("21.5"), example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(added.exitCode, 0);
-        QVERIFY2(added.out.contains(QStringLiteral("stored part 1: Stepped shaft, 3 points")), qPrintable(added.out));
+        QVERIFY2(added.out.contains(QStringLiteral("stored part 1: Stepped shaft, 4 points")), qPrintable(added.out));
         const auto listed = measurements({QStringLiteral("list"), QStringLiteral("--json")});
         QCOMPARE(listed.exitCode, 0);
         const QJsonArray list = QJsonDocument::fromJson(listed.out.toUtf8()).array();
@@ -72,13 +74,15 @@ private Q_SLOTS:
         const QJsonObject part = list.at(0).toObject();
         QCOMPARE(part.value(QStringLiteral("machine")).toString(), QStringLiteral("haas-st-20")); // the project's
         QCOMPARE(part.value(QStringLiteral("measured_at")).toString(), QStringLiteral("2026-11-24T08:30:00.000Z"));
-        QCOMPARE(part.value(QStringLiteral("points")).toInt(), 3);
+        QCOMPARE(part.value(QStringLiteral("points")).toInt(), 4);
         const auto exported = measurements({QStringLiteral("export"), QStringLiteral("1")});
         QCOMPARE(exported.exitCode, 0);
-        QCOMPARE(exported.out, QStringLiteral("part,machine,measured_at,feature,z_mm,diameter_mm,radial_deviation_um\n"
-                                              "1,haas-st-20,2026-11-24T08:30:00.000Z,O4,40,50.012,\n"
-                                              "1,haas-st-20,2026-11-24T08:30:00.000Z,O4,75,50.018,\n"
-                                              "1,haas-st-20,2026-11-24T08:30:00.000Z,O6,100,,6\n"));
+        QCOMPARE(exported.out,
+                 QStringLiteral("part,machine,measured_at,feature,z_mm,diameter_mm,radial_deviation_um,x_mm,y_mm\n"
+                                "1,haas-st-20,2026-11-24T08:30:00.000Z,O4,40,50.012,,,\n"
+                                "1,haas-st-20,2026-11-24T08:30:00.000Z,O4,75,50.018,,,\n"
+                                "1,haas-st-20,2026-11-24T08:30:00.000Z,O6,100,,6,,\n"
+                                "1,haas-st-20,2026-11-24T08:30:00.000Z,O6,110,,,12.003,16.004\n"));
         QCOMPARE(measurements({QStringLiteral("remove"), QStringLiteral("1")}).exitCode, 0);
         const auto again = measurements({QStringLiteral("remove"), QStringLiteral("1")});
         QCOMPARE(again.exitCode, 1);
@@ -99,8 +103,13 @@ private Q_SLOTS:
                                            << QStringLiteral("the header lacks the column \"feature\"");
         QTest::newRow("both values") << QByteArray("feature,z_mm,diameter_mm,radial_deviation_um\nO4,40,50.01,3\n")
                                      << QStringList{} << 1
-                                     << QStringLiteral("points.csv:2: a line needs either diameter_mm or "
-                                                       "radial_deviation_um, and one only");
+                                     << QStringLiteral("points.csv:2: a line needs one of diameter_mm, "
+                                                       "radial_deviation_um, or x_mm and y_mm (a CMM point)");
+        QTest::newRow("half a CMM point") << QByteArray("feature,z_mm,x_mm,y_mm\nO6,100,12,\n") << QStringList{} << 1
+                                          << QStringLiteral("points.csv:2: a line needs one of diameter_mm");
+        QTest::newRow("CMM point off the seat")
+            << QByteArray("feature,z_mm,x_mm,y_mm\nO6,100,18,24\n") << QStringList{} << 1
+            << QStringLiteral("points[0].x_mm: a CMM point at radius 30 mm is not on feature O6 (R20 to R20 mm)");
         QTest::newRow("another part's diameter")
             << QByteArray("feature,z_mm,diameter_mm\nO4,40,42\n") << QStringList{} << 1
             << QStringLiteral("points[0].value_mm: a diameter of 42 mm does not fit feature O4 (Ø50 to Ø50 mm)");
@@ -244,6 +253,75 @@ private Q_SLOTS:
                                   QStringLiteral("--store"), learnStore});
         QCOMPARE(none.exitCode, 1);
         QVERIFY2(none.err.contains(QStringLiteral("haas-st-30 has 0 stored part")), qPrintable(none.err));
+    }
+
+    // Drive readings with a part, and the forces of Li & Du's first stage: calibration cuts with
+    // F_t = 40 N/A · ΔI_s and F_a = 25 N/A · ΔI_a; every part's forces then come from its currents.
+    void learnsFromMotorCurrents()
+    {
+        QByteArray calibration = "spindle_current_A,spindle_idle_current_A,spindle_friction_current_A,"
+                                 "spindle_speed_rad_s,spindle_acceleration_rad_s2,feed_current_A,feed_idle_current_A,"
+                                 "feed_speed_mm_min,tangential_N,axial_N\n";
+        for (int i = 0; i < 8; ++i) {
+            for (int j = 0; j < 5; ++j) {
+                const double spindle = 1.0 + 1.5 * i;
+                const double feed = 0.5 + 0.3 * i;
+                calibration += QStringLiteral("%1,5,0,%2,0,%3,1,%4,%5,%6\n")
+                                   .arg(5.0 + spindle)
+                                   .arg(100.0 + 20.0 * j)
+                                   .arg(1.0 + feed)
+                                   .arg(100.0 + 40.0 * j)
+                                   .arg(40.0 * spindle)
+                                   .arg(25.0 * feed)
+                                   .toUtf8();
+            }
+        }
+        const QString cal = m_dir.filePath(QStringLiteral("calibration.csv"));
+        QVERIFY(writeFile(cal, calibration));
+        const QString store = m_dir.filePath(QStringLiteral("currents.sqlite"));
+        const QString csv = m_dir.filePath(QStringLiteral("currents-points.csv"));
+        QVERIFY(writeFile(csv, kPoints));
+        for (int i = 0; i < 3; ++i) {
+            const QString drive = m_dir.filePath(QStringLiteral("drive%1.json").arg(i));
+            QVERIFY(writeFile(drive, QStringLiteral("{\"spindle_current_A\": %1, \"spindle_idle_current_A\": 5, "
+                                                    "\"spindle_friction_current_A\": 0, \"spindle_speed_rad_s\": 140, "
+                                                    "\"spindle_acceleration_rad_s2\": 0, \"feed_current_A\": %2, "
+                                                    "\"feed_idle_current_A\": 1, \"feed_speed_mm_min\": 180}")
+                                         .arg(8.0 + i)
+                                         .arg(1.8 + 0.2 * i)
+                                         .toUtf8()));
+            const auto added =
+                runCli({QStringLiteral("measurements"), QStringLiteral("add"), QStringLiteral("--csv"), csv,
+                        QStringLiteral("--drive"), drive, QStringLiteral("--time-since-start"), QString::number(20 * i),
+                        QStringLiteral("--store"), store, example("stepped-shaft-chuck.tolturn")});
+            QVERIFY2(added.exitCode == 0, qPrintable(added.err));
+        }
+        const auto learned = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("haas-st-20"),
+                                     QStringLiteral("--force-calibration"), cal, QStringLiteral("--store"), store});
+        QVERIFY2(learned.exitCode == 0, qPrintable(learned.err));
+        QVERIFY2(learned.err.contains(QStringLiteral("forces from motor currents: 40 calibration cuts")),
+                 qPrintable(learned.err));
+        QVERIFY2(learned.err.contains(QStringLiteral("3 of 3 parts learned from forces estimated from their motor "
+                                                     "currents")),
+                 qPrintable(learned.err));
+        // A reading below its idle current, and a file that is not JSON: named, nothing stored.
+        const QString below = m_dir.filePath(QStringLiteral("below.json"));
+        QVERIFY(writeFile(below, "{\"spindle_current_A\": 4, \"spindle_idle_current_A\": 5, "
+                                 "\"spindle_friction_current_A\": 0, \"spindle_speed_rad_s\": 140, "
+                                 "\"spindle_acceleration_rad_s2\": 0, \"feed_current_A\": 2, "
+                                 "\"feed_idle_current_A\": 1, \"feed_speed_mm_min\": 180}"));
+        const auto refused = runCli({QStringLiteral("measurements"), QStringLiteral("add"), QStringLiteral("--csv"),
+                                     csv, QStringLiteral("--drive"), below, QStringLiteral("--store"), store,
+                                     example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(refused.exitCode, 1);
+        QVERIFY2(refused.err.contains(QStringLiteral("drive.spindle_current_A")), qPrintable(refused.err));
+        const QString notJson = m_dir.filePath(QStringLiteral("not.json"));
+        QVERIFY(writeFile(notJson, "spindle 4 A"));
+        const auto unread = runCli({QStringLiteral("measurements"), QStringLiteral("add"), QStringLiteral("--csv"), csv,
+                                    QStringLiteral("--drive"), notJson, QStringLiteral("--store"), store,
+                                    example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(unread.exitCode, 2);
+        QVERIFY2(unread.err.contains(QStringLiteral("not.json: not a JSON object")), qPrintable(unread.err));
     }
 
     // A database that is not there: named by its address (without the password).

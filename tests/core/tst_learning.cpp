@@ -55,6 +55,22 @@ double rms(const Eigen::VectorXd &v)
     return std::sqrt(v.squaredNorm() / double(v.size()));
 }
 
+// A part of the stepped shaft (the example read back from its own JSON, as the store keeps it),
+// with `target` set to the program's radius at z = 50 mm on the Ø50 h6 seat O4.
+MeasuredPart shaftPart(Project &project, double &target)
+{
+    const QByteArray json = serializeProjectJson(
+        *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/stepped-shaft-chuck.tolturn")).project);
+    project = *parseProjectJson(json).project;
+    target = *targetRadius_mm(programTargets(project).outer, QStringLiteral("O4"), 50.0);
+    MeasuredPart part;
+    part.id = 1;
+    part.machineId = project.machineId;
+    part.measuredAt = QDateTime(QDate(2026, 11, 24), QTime(9, 0), Qt::UTC);
+    part.projectJson = json;
+    return part;
+}
+
 Eigen::VectorXd predictions(const RbfNetwork &net, const Eigen::MatrixXd &x)
 {
     Eigen::VectorXd f(x.rows());
@@ -313,6 +329,70 @@ private Q_SLOTS:
         const double taper = 2.0 * 0.1 * length;
         QVERIFY2(taper > 2.0 * v0, qPrintable(QString::number(v0))); // so that v0 alone is outside the band
         QVERIFY2(std::abs(v - taper) <= v0 + 1e-9, qPrintable(QStringLiteral("%1 %2 %3").arg(v).arg(v0).arg(taper)));
+    }
+
+    // A CMM point is compared by its radius √(x² + y²): points around the Ø50 seat at the target
+    // radius + 5 µm give a measured radius error of 5 µm whatever their angle, and the same sample
+    // as a diameter 10 µm above the target.
+    void cmmPointsAreComparedByTheirRadius()
+    {
+        Project project;
+        double target = 0.0;
+        MeasuredPart part = shaftPart(project, target);
+        const double r = target + 0.005;
+        part.points = {cmmPoint(QStringLiteral("O4"), r, 0.0, 50.0),
+                       cmmPoint(QStringLiteral("O4"), r * std::cos(2.0), r * std::sin(2.0), 50.0),
+                       {QStringLiteral("O4"), 50.0, MeasuredQuantity::Diameter, 2.0 * r}};
+        QVERIFY(validateMeasuredPart(part).empty());
+        Diagnostics warnings;
+        const std::vector<ResidualSample> samples = residualSamples({part}, DataLibrary::builtIn(), warnings);
+        QCOMPARE(samples.size(), std::size_t(3));
+        for (const ResidualSample &s : samples) {
+            QVERIFY2(std::abs(s.measured_mm - 0.005) < 1e-12, qPrintable(QString::number(s.measured_mm, 'g', 17)));
+            QCOMPARE(s.physics_mm, samples.back().physics_mm);
+        }
+    }
+
+    // Li & Du's first stage wired into the samples: calibration cuts with F_t = 40 N/A · ΔI_s and
+    // F_a = 25 N/A · ΔI_a (no noise); a part whose drives read ΔI_s = 5.5 A and ΔI_a = 1.4 A learns
+    // from F_t = 220 N (the torque input F_t·r) and F_a = 35 N, not from the force model's forces;
+    // without the estimator, the force model's.
+    void forcesFromMotorCurrentsFeedTheNetwork()
+    {
+        std::vector<ForceCalibrationSample> cuts;
+        for (int i = 0; i < 8; ++i) {
+            for (int j = 0; j < 5; ++j) {
+                const double spindle = 1.0 + 1.5 * i;
+                const double feed = 0.5 + 0.3 * i;
+                ForceCalibrationSample c;
+                c.drive = {5.0 + spindle, 5.0, 0.0, 100.0 + 20.0 * j, 0.0, 1.0 + feed, 1.0, 100.0 + 40.0 * j};
+                c.tangential_N = 40.0 * spindle;
+                c.axial_N = 25.0 * feed;
+                cuts.push_back(c);
+            }
+        }
+        QString error;
+        const auto estimator = trainCurrentForceModel(cuts, currentForceTrainingOptions(), &error);
+        QVERIFY2(estimator, qPrintable(error));
+        Project project;
+        double target = 0.0;
+        MeasuredPart part = shaftPart(project, target);
+        part.points = {{QStringLiteral("O4"), 50.0, MeasuredQuantity::Diameter, 2.0 * target}};
+        part.drive = DriveReading{10.5, 5.0, 0.0, 140.0, 0.0, 2.4, 1.0, 180.0};
+        QVERIFY(validateMeasuredPart(part).empty());
+        Diagnostics warnings;
+        int fromCurrents = 0;
+        const auto samples = residualSamples({part}, DataLibrary::builtIn(), warnings, &*estimator, &fromCurrents);
+        QCOMPARE(samples.size(), std::size_t(1));
+        QCOMPARE(fromCurrents, 1);
+        const double torque = 220.0 * target * 1e-3;
+        QVERIFY2(std::abs(samples[0].inputs[4] - torque) < 0.02 * torque,
+                 qPrintable(QStringLiteral("%1 %2").arg(samples[0].inputs[4]).arg(torque)));
+        QVERIFY2(std::abs(samples[0].inputs[5] - 35.0) < 0.7, qPrintable(QString::number(samples[0].inputs[5])));
+        const auto physics = residualSamples({part}, DataLibrary::builtIn(), warnings);
+        const TurningInputs in = *computeDeviation(project, DataLibrary::builtIn(), {}).inputs;
+        QCOMPARE(physics[0].inputs[5], in.forces.axial_N);
+        QVERIFY(std::abs(physics[0].inputs[5] - samples[0].inputs[5]) > 1.0); // so the check above can fail
     }
 
     void learnedModelRoundTrips()

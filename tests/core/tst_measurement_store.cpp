@@ -17,6 +17,7 @@
 #include <QTest>
 #include <QThread>
 
+#include <cmath>
 #include <memory>
 
 using namespace tolturn;
@@ -45,7 +46,8 @@ MeasuredPart measuredShaft(const QString &machine = QStringLiteral("haas-st-20")
     p.note = QStringLiteral("first part of the batch");
     p.points = {{QStringLiteral("O4"), 40.0, MeasuredQuantity::Diameter, 50.012},
                 {QStringLiteral("O4"), 75.0, MeasuredQuantity::Diameter, 50.018},
-                {QStringLiteral("O6"), 100.0, MeasuredQuantity::RadialDeviation, 0.006}};
+                {QStringLiteral("O6"), 100.0, MeasuredQuantity::RadialDeviation, 0.006},
+                cmmPoint(QStringLiteral("O6"), 12.003, 16.004, 110.0)};
     return p;
 }
 
@@ -139,7 +141,11 @@ private Q_SLOTS:
         QVERIFY(list.has_value());
         QCOMPARE(list->size(), std::size_t{1});
         QCOMPARE(list->front().partName, QStringLiteral("Stepped shaft"));
-        QCOMPARE(list->front().pointCount, 3);
+        QCOMPARE(list->front().pointCount, 4);
+        // The CMM point keeps its x and y, and its radius √(12.003² + 16.004²) = √400.200025.
+        QCOMPARE(out->points[3].quantity, MeasuredQuantity::CmmPoint);
+        QCOMPARE(out->points[3].x_mm, 12.003);
+        QVERIFY(std::abs(out->points[3].value_mm - std::sqrt(400.200025)) < 1e-12);
         // Without the shop conditions: absent, not zero.
         MeasuredPart bare = measuredShaft();
         bare.timeSinceStart_min.reset();
@@ -176,6 +182,9 @@ private Q_SLOTS:
         QTest::newRow("snapshot") << "snapshot"
                                   << "project"
                                   << "not a valid project";
+        QTest::newRow("cmm") << "cmm"
+                             << "points[3].x_mm"
+                             << "a CMM point at radius 30 mm is not on feature O6 (R20 to R20 mm)";
         QTest::newRow("no points") << "points"
                                    << "points"
                                    << "no measured point";
@@ -201,6 +210,8 @@ private Q_SLOTS:
             p.machineId.clear();
         else if (edit == QLatin1String("ambient"))
             p.ambient_C = 80.0;
+        else if (edit == QLatin1String("cmm"))
+            p.points[3] = cmmPoint(QStringLiteral("O6"), 18.0, 24.0, 110.0);
         else if (edit == QLatin1String("snapshot"))
             p.projectJson = "{\"format\": \"tolturn-project\"";
         else
@@ -271,7 +282,7 @@ private Q_SLOTS:
         QSqlDatabase db = QSqlDatabase::database(QSqlDatabase::connectionNames().constLast());
         QSqlQuery q(db);
         QVERIFY(q.exec(QStringLiteral("SELECT COUNT(*) FROM measured_points")) && q.next());
-        QCOMPARE(q.value(0).toInt(), 9);
+        QCOMPARE(q.value(0).toInt(), 3 * static_cast<int>(measuredShaft().points.size()));
     }
 
     // A store of the first schema version, with a part in it, is brought to the current version
@@ -339,7 +350,9 @@ private Q_SLOTS:
         }
         QString error;
         QVERIFY(!MeasurementStore::open(l, &error));
-        QVERIFY2(error.contains(QStringLiteral("schema version 99, newer than this program's 3")), qPrintable(error));
+        QVERIFY2(error.contains(
+                     QStringLiteral("schema version 99, newer than this program's %1").arg(kMeasurementSchemaVersion)),
+                 qPrintable(error));
     }
 
     // Two writers at once, each with its own connection (as two programs would): every part
@@ -368,7 +381,7 @@ private Q_SLOTS:
         QCOMPARE(store->count({}, &error).value_or(-1), qint64{2} * kParts);
         QSqlQuery q(QSqlDatabase::database(QSqlDatabase::connectionNames().constLast()));
         QVERIFY(q.exec(QStringLiteral("SELECT COUNT(*) FROM measured_points")) && q.next());
-        QCOMPARE(q.value(0).toInt(), 2 * kParts * 3);
+        QCOMPARE(q.value(0).toInt(), 2 * kParts * static_cast<int>(measuredShaft().points.size()));
         QFETCH_GLOBAL(QString, backend);
         if (backend == QLatin1String("sqlite")) {
             QVERIFY(q.exec(QStringLiteral("PRAGMA integrity_check")) && q.next());

@@ -176,6 +176,17 @@ private Q_SLOTS:
         QCOMPARE(part.points[2].value_mm, 0.003); // typed in µm, kept in mm
         QCOMPARE(part.machineId, project.machineId);
         QCOMPARE(*parseProjectJson(part.projectJson).project, project);
+        // A CMM point typed as "x; y": its radius √(12² + 16²) = 20 mm on the Ø40 seat O6.
+        dialog.addCmmPoint(QStringLiteral("O6"), 12.0, 16.0, 105.0);
+        QCOMPARE(dialog.table()->item(3, MeasurementEntryDialog::Value)->text(), QStringLiteral("12; 16"));
+        const MeasuredPart withCmm = dialog.part();
+        QCOMPARE(withCmm.points.size(), std::size_t(4));
+        QCOMPARE(withCmm.points[3].quantity, MeasuredQuantity::CmmPoint);
+        QCOMPARE(withCmm.points[3].value_mm, 20.0);
+        dialog.table()->item(3, MeasurementEntryDialog::Value)->setText(QStringLiteral("12"));
+        dialog.accept();
+        QVERIFY2(dialog.problemsText().contains(QStringLiteral("row 4, value")), qPrintable(dialog.problemsText()));
+        dialog.table()->removeRow(3);
 
         // A CSV with a bad cell: named by line and column, the table unchanged.
         const QString csv = m_dir.filePath(QStringLiteral("bad.csv"));

@@ -139,27 +139,42 @@ void MeasurementEntryDialog::addRow()
     quantity->addItem(tr("diameter [mm]"), QVariant::fromValue(static_cast<int>(MeasuredQuantity::Diameter)));
     quantity->addItem(tr("radial deviation [µm]"),
                       QVariant::fromValue(static_cast<int>(MeasuredQuantity::RadialDeviation)));
+    quantity->addItem(tr("CMM point x; y [mm]"), QVariant::fromValue(static_cast<int>(MeasuredQuantity::CmmPoint)));
     m_table->setCellWidget(row, Quantity, quantity);
     m_table->setItem(row, Value, new QTableWidgetItem);
 }
 
-void MeasurementEntryDialog::addPoint(const QString &featureId, double z_mm, MeasuredQuantity quantity, double value)
+int MeasurementEntryDialog::rowToFill()
 {
-    int row = m_table->rowCount() - 1;
-    const bool lastIsEmpty =
-        row >= 0 && m_table->item(row, Z)->text().isEmpty() && m_table->item(row, Value)->text().isEmpty();
-    if (!lastIsEmpty) {
-        addRow();
-        row = m_table->rowCount() - 1;
-    }
+    const int last = m_table->rowCount() - 1;
+    if (last >= 0 && m_table->item(last, Z)->text().isEmpty() && m_table->item(last, Value)->text().isEmpty())
+        return last;
+    addRow();
+    return m_table->rowCount() - 1;
+}
+
+void MeasurementEntryDialog::setFeature(int row, const QString &featureId)
+{
     auto *feature = qobject_cast<QComboBox *>(m_table->cellWidget(row, Feature));
     if (feature->findData(featureId) < 0)
         feature->addItem(featureId, featureId); // not on the profile: kept, and named by validation
     feature->setCurrentIndex(feature->findData(featureId));
+}
+
+void MeasurementEntryDialog::addPoint(const QString &featureId, double z_mm, MeasuredQuantity quantity, double value)
+{
+    const int row = rowToFill();
+    setFeature(row, featureId);
     m_table->item(row, Z)->setText(numberText(z_mm));
     auto *kind = qobject_cast<QComboBox *>(m_table->cellWidget(row, Quantity));
     kind->setCurrentIndex(kind->findData(static_cast<int>(quantity)));
     m_table->item(row, Value)->setText(numberText(value));
+}
+
+void MeasurementEntryDialog::addCmmPoint(const QString &featureId, double x_mm, double y_mm, double z_mm)
+{
+    addPoint(featureId, z_mm, MeasuredQuantity::CmmPoint, 0.0);
+    m_table->item(m_table->rowCount() - 1, Value)->setText(numberText(x_mm) + QStringLiteral("; ") + numberText(y_mm));
 }
 
 void MeasurementEntryDialog::removeSelectedRows()
@@ -195,8 +210,11 @@ bool MeasurementEntryDialog::readCsv(const QString &path)
     m_table->setRowCount(0);
     addRow();
     for (const MeasuredPoint &p : *points) {
-        const bool diameter = p.quantity == MeasuredQuantity::Diameter;
-        addPoint(p.featureId, p.z_mm, p.quantity, diameter ? p.value_mm : p.value_mm * kUmPerMm);
+        if (p.quantity == MeasuredQuantity::CmmPoint)
+            addCmmPoint(p.featureId, p.x_mm, p.y_mm, p.z_mm);
+        else
+            addPoint(p.featureId, p.z_mm, p.quantity,
+                     p.quantity == MeasuredQuantity::Diameter ? p.value_mm : p.value_mm * kUmPerMm);
     }
     m_problems->setText(
         tr("%n point(s) read from %1.", nullptr, static_cast<int>(points->size())).arg(QFileInfo(path).fileName()));
@@ -219,13 +237,21 @@ MeasuredPart MeasurementEntryDialog::part() const
         const QString value = m_table->item(row, Value)->text();
         if (z.trimmed().isEmpty() && value.trimmed().isEmpty())
             continue; // an empty row is not a point
-        MeasuredPoint point;
-        point.featureId = qobject_cast<QComboBox *>(m_table->cellWidget(row, Feature))->currentData().toString();
-        point.z_mm = numberFrom(z);
-        point.quantity = static_cast<MeasuredQuantity>(
+        const QString featureId =
+            qobject_cast<QComboBox *>(m_table->cellWidget(row, Feature))->currentData().toString();
+        const auto quantity = static_cast<MeasuredQuantity>(
             qobject_cast<QComboBox *>(m_table->cellWidget(row, Quantity))->currentData().toInt());
-        point.value_mm =
-            point.quantity == MeasuredQuantity::Diameter ? numberFrom(value) : numberFrom(value) / kUmPerMm;
+        MeasuredPoint point{featureId, numberFrom(z), quantity, numberFrom(value), 0.0, 0.0};
+        if (quantity == MeasuredQuantity::RadialDeviation) {
+            point.value_mm /= kUmPerMm;
+        } else if (quantity == MeasuredQuantity::CmmPoint) {
+            // "x; y" (or "x y"): a point that does not read gets NaNs, which validation names.
+            static const QRegularExpression separator(QStringLiteral("\\s*[;\\s]\\s*"));
+            const QStringList xy = value.trimmed().split(separator, Qt::SkipEmptyParts);
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            point = cmmPoint(featureId, xy.size() == 2 ? numberFrom(xy[0]) : nan,
+                             xy.size() == 2 ? numberFrom(xy[1]) : nan, point.z_mm);
+        }
         p.points.push_back(point);
     }
     return p;

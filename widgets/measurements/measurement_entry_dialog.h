@@ -36,6 +36,8 @@ public:
     // Appends a row (a feature id of the snapshot, z in mm, the value in mm for a diameter or in
     // µm for a radial deviation, as the table shows it).
     void addPoint(const QString &featureId, double z_mm, MeasuredQuantity quantity, double value);
+    // Appends a CMM point: its x and y (mm, across the axis) in the value cell, "x; y".
+    void addCmmPoint(const QString &featureId, double x_mm, double y_mm, double z_mm);
 
     [[nodiscard]] QTableWidget *table() const { return m_table; }
 
@@ -45,6 +47,9 @@ public:
 
 private:
     void addRow();
+    // The row to fill: the last when it is empty, else a new one.
+    [[nodiscard]] int rowToFill();
+    void setFeature(int row, const QString &featureId);
     void removeSelectedRows();
     void chooseCsv();
     [[nodiscard]] QString describeField(const QString &field) const;

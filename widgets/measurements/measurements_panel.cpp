@@ -5,6 +5,7 @@
 #include "core/data/data_library.h"
 #include "core/measurements/measurement_csv.h"
 #include "widgets/common/display_units.h"
+#include "widgets/common/worker_threads.h"
 #include "widgets/measurements/measured_parts_model.h"
 #include "widgets/measurements/measurement_entry_dialog.h"
 #include "widgets/plot/line_plot.h"
@@ -301,15 +302,17 @@ void MeasurementsPanel::startListing()
     const quint64 generation = ++m_listGeneration;
     const StoreLocation location = m_location;
     m_store->setText(tr("Reading %1…").arg(location.describe()));
-    whenReady(this, QtConcurrent::run([location, filter] {
-                  Listing out;
-                  const auto store = MeasurementStore::open(location, &out.error);
-                  if (store) {
-                      if (auto parts = store->list(filter, &out.error))
-                          out.parts = std::move(*parts);
-                  }
-                  return out;
-              }),
+    whenReady(this,
+              QtConcurrent::run(workerThreads(),
+                                [location, filter] {
+                                    Listing out;
+                                    const auto store = MeasurementStore::open(location, &out.error);
+                                    if (store) {
+                                        if (auto parts = store->list(filter, &out.error))
+                                            out.parts = std::move(*parts);
+                                    }
+                                    return out;
+                                }),
               [this, generation](const Listing &listing) {
                   if (generation != m_listGeneration)
                       return; // a newer listing was asked for meanwhile
@@ -387,13 +390,15 @@ void MeasurementsPanel::loadModel()
         return;
     }
     const StoreLocation location = m_location;
-    whenReady(this, QtConcurrent::run([location, machine] {
-                  ModelReading out;
-                  const auto store = MeasurementStore::open(location, &out.error);
-                  if (store)
-                      out.model = latestModelOf(*store, machine, &out.error);
-                  return out;
-              }),
+    whenReady(this,
+              QtConcurrent::run(workerThreads(),
+                                [location, machine] {
+                                    ModelReading out;
+                                    const auto store = MeasurementStore::open(location, &out.error);
+                                    if (store)
+                                        out.model = latestModelOf(*store, machine, &out.error);
+                                    return out;
+                                }),
               [this, generation](const ModelReading &reading) {
                   if (generation != m_modelGeneration)
                       return;
@@ -444,22 +449,26 @@ void MeasurementsPanel::addPart(const MeasuredPart &part)
 {
     const StoreLocation location = m_location;
     whenReady(
-        this, QtConcurrent::run([location, part] {
-            Reply out;
-            const auto store = MeasurementStore::open(location, &out.message);
-            if (!store)
+        this,
+        QtConcurrent::run(
+            workerThreads(),
+            [location, part] {
+                Reply out;
+                const auto store = MeasurementStore::open(location, &out.message);
+                if (!store)
+                    return out;
+                Diagnostics problems;
+                const auto id = store->add(part, problems);
+                out.ok = id.has_value();
+                QStringList lines;
+                for (const Diagnostic &d : problems)
+                    lines << d.toString();
+                out.message =
+                    out.ok
+                        ? tr("Part %1 stored with %n point(s).", nullptr, static_cast<int>(part.points.size())).arg(*id)
+                        : lines.join(QLatin1Char('\n'));
                 return out;
-            Diagnostics problems;
-            const auto id = store->add(part, problems);
-            out.ok = id.has_value();
-            QStringList lines;
-            for (const Diagnostic &d : problems)
-                lines << d.toString();
-            out.message =
-                out.ok ? tr("Part %1 stored with %n point(s).", nullptr, static_cast<int>(part.points.size())).arg(*id)
-                       : lines.join(QLatin1Char('\n'));
-            return out;
-        }),
+            }),
         [this](const Reply &reply) {
             if (reply.ok)
                 startListing();
@@ -486,19 +495,21 @@ void MeasurementsPanel::promptRemove()
 void MeasurementsPanel::removeParts(const std::vector<qint64> &ids)
 {
     const StoreLocation location = m_location;
-    whenReady(this, QtConcurrent::run([location, ids] {
-                  Reply out;
-                  const auto store = MeasurementStore::open(location, &out.message);
-                  if (!store)
-                      return out;
-                  for (const qint64 id : ids) {
-                      if (!store->remove(id, &out.message))
-                          return out;
-                  }
-                  out.ok = true;
-                  out.message = tr("%n part(s) removed.", nullptr, static_cast<int>(ids.size()));
-                  return out;
-              }),
+    whenReady(this,
+              QtConcurrent::run(workerThreads(),
+                                [location, ids] {
+                                    Reply out;
+                                    const auto store = MeasurementStore::open(location, &out.message);
+                                    if (!store)
+                                        return out;
+                                    for (const qint64 id : ids) {
+                                        if (!store->remove(id, &out.message))
+                                            return out;
+                                    }
+                                    out.ok = true;
+                                    out.message = tr("%n part(s) removed.", nullptr, static_cast<int>(ids.size()));
+                                    return out;
+                                }),
               [this](const Reply &reply) {
                   startListing();
                   if (!reply.ok)
@@ -521,21 +532,24 @@ void MeasurementsPanel::promptExport()
 void MeasurementsPanel::exportParts(const std::vector<qint64> &ids, const QString &path)
 {
     const StoreLocation location = m_location;
-    whenReady(this, QtConcurrent::run([location, ids, path] {
-                  Reply out;
-                  const auto store = MeasurementStore::open(location, &out.message);
-                  if (!store)
-                      return out;
-                  const auto parts = store->parts(ids, &out.message);
-                  if (!parts)
-                      return out;
-                  out.message = writeFileAtomically(path, measuredPointsCsv(*parts).toUtf8());
-                  out.ok = out.message.isEmpty();
-                  if (out.ok)
-                      out.message = tr("%n part(s) written to %1.", nullptr, static_cast<int>(parts->size()))
-                                        .arg(QDir::toNativeSeparators(path));
-                  return out;
-              }),
+    whenReady(this,
+              QtConcurrent::run(workerThreads(),
+                                [location, ids, path] {
+                                    Reply out;
+                                    const auto store = MeasurementStore::open(location, &out.message);
+                                    if (!store)
+                                        return out;
+                                    const auto parts = store->parts(ids, &out.message);
+                                    if (!parts)
+                                        return out;
+                                    out.message = writeFileAtomically(path, measuredPointsCsv(*parts).toUtf8());
+                                    out.ok = out.message.isEmpty();
+                                    if (out.ok)
+                                        out.message =
+                                            tr("%n part(s) written to %1.", nullptr, static_cast<int>(parts->size()))
+                                                .arg(QDir::toNativeSeparators(path));
+                                    return out;
+                                }),
               [this](const Reply &reply) {
                   if (!reply.ok)
                       QMessageBox::warning(this, tr("Not Exported"), reply.message);
@@ -557,31 +571,34 @@ void MeasurementsPanel::learn()
     m_progress->show();
     m_progressPoll->start();
     m_modelLabel->setText(tr("Learning %1 from its measured parts…").arg(machine));
-    whenReady(this, QtConcurrent::run([location, machine, state] {
-                  LearningOutcome out;
-                  const auto store = MeasurementStore::open(location, &out.error);
-                  if (!store)
-                      return out;
-                  const auto parts = storedPartsOf(*store, machine, &out.error);
-                  if (!parts)
-                      return out;
-                  LearningControl control;
-                  control.cancelled = [state] { return state->cancel.load(); };
-                  control.progress = [state](int done, int total) {
-                      state->total = total;
-                      state->done = done;
-                  };
-                  out.run = learnMachine(*parts, DataLibrary::builtIn(), RbfTrainingOptions{}, control);
-                  if (!out.run.ok())
-                      return out;
-                  LearnedModelRecord record = learnedModelRecord(machine, out.run);
-                  const auto id = store->addLearnedModel(record, &out.error);
-                  if (id) {
-                      record.id = *id;
-                      out.kept = LoadedModel{record, *out.run.learned};
-                  }
-                  return out;
-              }),
+    whenReady(this,
+              QtConcurrent::run(workerThreads(),
+                                [location, machine, state] {
+                                    LearningOutcome out;
+                                    const auto store = MeasurementStore::open(location, &out.error);
+                                    if (!store)
+                                        return out;
+                                    const auto parts = storedPartsOf(*store, machine, &out.error);
+                                    if (!parts)
+                                        return out;
+                                    LearningControl control;
+                                    control.cancelled = [state] { return state->cancel.load(); };
+                                    control.progress = [state](int done, int total) {
+                                        state->total = total;
+                                        state->done = done;
+                                    };
+                                    out.run =
+                                        learnMachine(*parts, DataLibrary::builtIn(), RbfTrainingOptions{}, control);
+                                    if (!out.run.ok())
+                                        return out;
+                                    LearnedModelRecord record = learnedModelRecord(machine, out.run);
+                                    const auto id = store->addLearnedModel(record, &out.error);
+                                    if (id) {
+                                        record.id = *id;
+                                        out.kept = LoadedModel{record, *out.run.learned};
+                                    }
+                                    return out;
+                                }),
               [this](const LearningOutcome &outcome) { finishLearning(outcome.run, outcome.kept, outcome.error); });
 }
 
@@ -627,19 +644,21 @@ void MeasurementsPanel::comparePart(qint64 id)
     const quint64 generation = ++m_compareGeneration;
     const StoreLocation location = m_location;
     std::shared_ptr<const LoadedModel> model = m_model;
-    whenReady(this, QtConcurrent::run([location, id, model] {
-                  Comparison out;
-                  const auto store = MeasurementStore::open(location, &out.error);
-                  if (!store)
-                      return out;
-                  out.part = store->part(id, &out.error);
-                  if (!out.part)
-                      return out;
-                  const bool sameMachine = model && model->record.machineId == out.part->machineId;
-                  out.comparison =
-                      tolturn::comparePart(*out.part, DataLibrary::builtIn(), sameMachine ? model.get() : nullptr);
-                  return out;
-              }),
+    whenReady(this,
+              QtConcurrent::run(workerThreads(),
+                                [location, id, model] {
+                                    Comparison out;
+                                    const auto store = MeasurementStore::open(location, &out.error);
+                                    if (!store)
+                                        return out;
+                                    out.part = store->part(id, &out.error);
+                                    if (!out.part)
+                                        return out;
+                                    const bool sameMachine = model && model->record.machineId == out.part->machineId;
+                                    out.comparison = tolturn::comparePart(*out.part, DataLibrary::builtIn(),
+                                                                          sameMachine ? model.get() : nullptr);
+                                    return out;
+                                }),
               [this, generation](const Comparison &c) {
                   if (generation != m_compareGeneration)
                       return;
