@@ -1461,6 +1461,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>a CMM point at radius %1 mm is not on feature %2 (R%3 to R%4 mm)</source>
         <translation>ein KMG-Punkt bei Radius %1 mm liegt nicht auf Merkmal %2 (R%3 bis R%4 mm)</translation>
     </message>
+    <message>
+        <source>the part was cut on %1, but its project is planned for %2: set the project&apos;s machine to %1 as it was cut, then store the part</source>
+        <translation>das Teil wurde auf %1 gefertigt, sein Projekt ist aber für %2 geplant: die Maschine des Projekts auf %1 setzen, wie gefertigt, dann das Teil speichern</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredResiduals</name>

@@ -1461,6 +1461,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>a CMM point at radius %1 mm is not on feature %2 (R%3 to R%4 mm)</source>
         <translation>un punto de MMC en el radio %1 mm no está en el elemento %2 (R%3 a R%4 mm)</translation>
     </message>
+    <message>
+        <source>the part was cut on %1, but its project is planned for %2: set the project&apos;s machine to %1 as it was cut, then store the part</source>
+        <translation>la pieza se mecanizó en %1, pero su proyecto está planificado para %2: ponga %1 como máquina del proyecto, tal como se mecanizó, y guarde la pieza</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredResiduals</name>

@@ -140,6 +140,13 @@ Diagnostics validateMeasuredPart(const MeasuredPart &part)
                                              : QStringLiteral(": ") + snapshot.diagnostics.front().toString())));
         return out;
     }
+    // The snapshot is computed as it was planned, on its own machine: a part cut on another
+    // machine would be learned against the wrong machine's physics.
+    if (!part.machineId.trimmed().isEmpty() && snapshot.project->machineId != part.machineId)
+        out.push_back(makeError(QStringLiteral("machine"),
+                                MeasuredParts::tr("the part was cut on %1, but its project is planned for %2: set the "
+                                                  "project's machine to %1 as it was cut, then store the part")
+                                    .arg(part.machineId, snapshot.project->machineId)));
     if (part.drive) {
         const Diagnostics drive = validateDriveReading(*part.drive, QStringLiteral("drive"));
         out.insert(out.end(), drive.begin(), drive.end());

@@ -113,6 +113,9 @@ private Q_SLOTS:
         QTest::newRow("another part's diameter")
             << QByteArray("feature,z_mm,diameter_mm\nO4,40,42\n") << QStringList{} << 1
             << QStringLiteral("points[0].value_mm: a diameter of 42 mm does not fit feature O4 (Ø50 to Ø50 mm)");
+        QTest::newRow("another machine")
+            << QByteArray(kPoints) << QStringList{QStringLiteral("--machine"), QStringLiteral("haas-st-30")} << 1
+            << QStringLiteral("machine: the part was cut on haas-st-30, but its project is planned for haas-st-20");
         QTest::newRow("hot shop") << QByteArray(kPoints)
                                   << QStringList{QStringLiteral("--ambient"), QStringLiteral("90")} << 1
                                   << QStringLiteral("ambient_C: the ambient temperature must be from -10 to 50 °C");

@@ -42,7 +42,10 @@ MeasuredPart measuredShaft(const QString &machine = QStringLiteral("haas-st-20")
     p.method = QStringLiteral("micrometer");
     p.timeSinceStart_min = 45.0;
     p.ambient_C = 21.5;
-    p.projectJson = exampleProject();
+    // The project as planned for that machine (a part is learned against its own machine's physics).
+    QJsonObject project = QJsonDocument::fromJson(exampleProject()).object();
+    project.insert(QStringLiteral("machine"), machine);
+    p.projectJson = QJsonDocument(project).toJson();
     p.note = QStringLiteral("first part of the batch");
     p.points = {{QStringLiteral("O4"), 40.0, MeasuredQuantity::Diameter, 50.012},
                 {QStringLiteral("O4"), 75.0, MeasuredQuantity::Diameter, 50.018},
@@ -176,6 +179,9 @@ private Q_SLOTS:
         QTest::newRow("machine") << "machine"
                                  << "machine"
                                  << "not given";
+        QTest::newRow("other machine") << "other machine"
+                                       << "machine"
+                                       << "cut on haas-st-30, but its project is planned for haas-st-20";
         QTest::newRow("ambient") << "ambient"
                                  << "ambient_C"
                                  << "not 80";
@@ -210,6 +216,8 @@ private Q_SLOTS:
             p.machineId.clear();
         else if (edit == QLatin1String("ambient"))
             p.ambient_C = 80.0;
+        else if (edit == QLatin1String("other machine"))
+            p.machineId = QStringLiteral("haas-st-30");
         else if (edit == QLatin1String("cmm"))
             p.points[3] = cmmPoint(QStringLiteral("O6"), 18.0, 24.0, 110.0);
         else if (edit == QLatin1String("snapshot"))
