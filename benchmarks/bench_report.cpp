@@ -33,7 +33,9 @@ int main(int argc, char *argv[])
         }
         int pages = 0;
         const QString pdf = out.filePath(name + QStringLiteral(".pdf"));
-        const double ms = medianMilliseconds(7, [&] { pages = writeReport(*read.project, {name, {}}, pdf).pages; });
+        const double ms = medianMilliseconds(7, [&] {
+            pages = writeReport(*read.project, {name, {}, nullptr}, pdf).pages;
+        });
         std::printf("%-36s %6d %12.1f\n", qPrintable(name), pages, ms);
     }
     return 0;

@@ -1465,6 +1465,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the part was cut on %1, but its project is planned for %2: set the project&apos;s machine to %1 as it was cut, then store the part</source>
         <translation>das Teil wurde auf %1 gefertigt, sein Projekt ist aber für %2 geplant: die Maschine des Projekts auf %1 setzen, wie gefertigt, dann das Teil speichern</translation>
     </message>
+    <message>
+        <source>a CMM point&apos;s radius %1 mm is not √(x² + y²) = %2 mm</source>
+        <translation>der Radius %1 mm eines KMG-Punkts ist nicht √(x² + y²) = %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredResiduals</name>
@@ -5031,6 +5035,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>No model of %1 to compare with: Learn, then select the part again.</source>
         <translation>Kein Modell von %1 zum Vergleichen: „Lernen“ ausführen, dann das Teil erneut auswählen.</translation>
+    </message>
+    <message>
+        <source>the store or the machine changed meanwhile; the model was kept in %1</source>
+        <translation>Speicher oder Maschine haben sich inzwischen geändert; das Modell wurde in %1 gespeichert</translation>
     </message>
 </context>
 <context>

@@ -1465,6 +1465,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the part was cut on %1, but its project is planned for %2: set the project&apos;s machine to %1 as it was cut, then store the part</source>
         <translation>la pieza se mecanizó en %1, pero su proyecto está planificado para %2: ponga %1 como máquina del proyecto, tal como se mecanizó, y guarde la pieza</translation>
     </message>
+    <message>
+        <source>a CMM point&apos;s radius %1 mm is not √(x² + y²) = %2 mm</source>
+        <translation>el radio %1 mm de un punto de MMC no es √(x² + y²) = %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredResiduals</name>
@@ -5031,6 +5035,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>No model of %1 to compare with: Learn, then select the part again.</source>
         <translation>No hay modelo de %1 con el que comparar: use «Aprender» y vuelva a seleccionar la pieza.</translation>
+    </message>
+    <message>
+        <source>the store or the machine changed meanwhile; the model was kept in %1</source>
+        <translation>el almacén o la máquina cambiaron entretanto; el modelo se guardó en %1</translation>
     </message>
 </context>
 <context>

@@ -79,9 +79,14 @@ std::optional<ResidualSample> sampleAt(const Project &project, const DeviationRe
     s.z_mm = z;
     s.diameter_mm = 2.0 * *target;
     s.physics_mm = *physics;
-    const CuttingForces &f = measuredForces ? *measuredForces : in.forces;
-    s.inputs << spindleSpeedAt(d, featureId, z), in.pass.feed_mm_rev, timeSinceStart_min, ambient_C,
-        f.tangential_N * *target * 1e-3, f.axial_N, f.radial_N, z;
+    const auto inputsWith = [&](const CuttingForces &f) {
+        Eigen::Matrix<double, 8, 1> x;
+        x << spindleSpeedAt(d, featureId, z), in.pass.feed_mm_rev, timeSinceStart_min, ambient_C,
+            f.tangential_N * *target * 1e-3, f.axial_N, f.radial_N, z;
+        return x;
+    };
+    s.predictionInputs = inputsWith(in.forces);
+    s.inputs = measuredForces ? inputsWith(*measuredForces) : s.predictionInputs;
     return s;
 }
 
@@ -208,7 +213,7 @@ std::vector<ResidualSample> residualSamples(const std::vector<MeasuredPart> &par
 
 double LearnedResidual::predict_mm(const ResidualSample &s) const
 {
-    const double rest = network ? network->predict(s.inputs) : 0.0;
+    const double rest = network ? network->predict(s.predictionInputs) : 0.0;
     return geometric.at(s.diameter_mm, s.z_mm) + rest;
 }
 

@@ -32,6 +32,10 @@ struct ResidualSample {
     // (thermal, §3.2); spindle torque T = F_t·D/2 [N·m], axial and radial force [N], z [mm]
     // (force-induced, §3.3; the paper writes T = F_t D, a factor the input scaling removes).
     Eigen::Matrix<double, 8, 1> inputs = Eigen::Matrix<double, 8, 1>::Zero();
+    // The same with the force model's forces: what a prediction has (a part being planned has no
+    // motor currents), so parts left out are predicted as every prediction is. Equal to `inputs`
+    // unless the forces came from the motor currents.
+    Eigen::Matrix<double, 8, 1> predictionInputs = Eigen::Matrix<double, 8, 1>::Zero();
 
     [[nodiscard]] double residual_mm() const { return measured_mm - physics_mm; }
 };

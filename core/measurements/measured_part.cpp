@@ -52,11 +52,15 @@ void checkPoint(const MeasuredPoint &p, const PartProfile &part, const QString &
     if (p.quantity == MeasuredQuantity::CmmPoint) {
         const double rMin = std::min(s->from.r_mm, s->to.r_mm);
         const double rMax = std::max(s->from.r_mm, s->to.r_mm);
-        if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm) ||
-            std::abs(p.value_mm - std::hypot(p.x_mm, p.y_mm)) > 1e-9 * std::max(1.0, p.value_mm))
+        if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm))
             out.push_back(makeError(field + QStringLiteral(".x_mm"),
                                     MeasuredParts::tr("a CMM point needs finite x and y (x = %1, y = %2 mm)")
                                         .arg(formatNumber(p.x_mm), formatNumber(p.y_mm))));
+        else if (!(std::abs(p.value_mm - std::hypot(p.x_mm, p.y_mm)) <=
+                   1e-9 * std::max(1.0, std::hypot(p.x_mm, p.y_mm))))
+            out.push_back(makeError(field + QStringLiteral(".value_mm"),
+                                    MeasuredParts::tr("a CMM point's radius %1 mm is not √(x² + y²) = %2 mm")
+                                        .arg(formatNumber(p.value_mm), formatNumber(std::hypot(p.x_mm, p.y_mm)))));
         else if (p.value_mm > rMax + kMaxRadialDeviation_mm || p.value_mm < rMin - kMaxRadialDeviation_mm)
             out.push_back(
                 makeError(field + QStringLiteral(".x_mm"),

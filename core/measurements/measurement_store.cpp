@@ -23,6 +23,8 @@ namespace tolturn {
 
 namespace {
 
+constexpr int kPostgresConnectTimeout_s = 5;
+
 struct MeasurementStoreText {
     Q_DECLARE_TR_FUNCTIONS(MeasurementStore)
 };
@@ -186,6 +188,9 @@ std::unique_ptr<MeasurementStore> MeasurementStore::open(const StoreLocation &lo
         db.setDatabaseName(location.database);
         db.setUserName(location.user);
         db.setPassword(location.password);
+        // libpq waits for a host that does not answer as long as TCP does (minutes); a shop
+        // database that cannot be reached is named within seconds instead.
+        db.setConnectOptions(QStringLiteral("connect_timeout=%1").arg(kPostgresConnectTimeout_s));
     }
     if (!db.open())
         return refuse(db.lastError().text());

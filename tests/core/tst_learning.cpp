@@ -393,6 +393,8 @@ private Q_SLOTS:
         const TurningInputs in = *computeDeviation(project, DataLibrary::builtIn(), {}).inputs;
         QCOMPARE(physics[0].inputs[5], in.forces.axial_N);
         QVERIFY(std::abs(physics[0].inputs[5] - samples[0].inputs[5]) > 1.0); // so the check above can fail
+        // A prediction (and a part left out) has the force model's forces: no currents when planning.
+        QCOMPARE(samples[0].predictionInputs[5], in.forces.axial_N);
     }
 
     void learnedModelRoundTrips()

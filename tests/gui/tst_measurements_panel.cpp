@@ -176,6 +176,11 @@ private Q_SLOTS:
         QCOMPARE(part.points[2].value_mm, 0.003); // typed in µm, kept in mm
         QCOMPARE(part.machineId, project.machineId);
         QCOMPARE(*parseProjectJson(part.projectJson).project, project);
+        // A part the store refused comes back into a new dialog whole.
+        MeasurementEntryDialog again(project, QString());
+        again.setPart(part);
+        QCOMPARE(again.part().points, part.points);
+        QCOMPARE(again.part().measuredBy, QStringLiteral("Ada"));
         // A CMM point typed as "x; y": its radius √(12² + 16²) = 20 mm on the Ø40 seat O6.
         dialog.addCmmPoint(QStringLiteral("O6"), 12.0, 16.0, 105.0);
         QCOMPARE(dialog.table()->item(3, MeasurementEntryDialog::Value)->text(), QStringLiteral("12; 16"));
@@ -223,7 +228,9 @@ private Q_SLOTS:
         panel.setProject(&project);
         QSignalSpy learned(&panel, &MeasurementsPanel::learningFinished);
         panel.learn();
-        QVERIFY(panel.isLearning()); // returned at once, the work in a worker thread
+        // Returned at once, the work in a worker thread: nothing finished yet.
+        QVERIFY(panel.isLearning());
+        QCOMPARE(learned.count(), 0);
         panel.cancelLearning();
         QVERIFY(waitFor(learned));
         QCOMPARE(learned.first().at(0).toBool(), false);

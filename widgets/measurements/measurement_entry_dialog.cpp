@@ -177,6 +177,27 @@ void MeasurementEntryDialog::addCmmPoint(const QString &featureId, double x_mm, 
     m_table->item(m_table->rowCount() - 1, Value)->setText(numberText(x_mm) + QStringLiteral("; ") + numberText(y_mm));
 }
 
+void MeasurementEntryDialog::setPart(const MeasuredPart &part)
+{
+    const auto text = [](const std::optional<double> &v) { return v ? numberText(*v) : QString(); };
+    m_measuredBy->setText(part.measuredBy);
+    m_method->setCurrentText(part.method);
+    if (part.measuredAt.isValid())
+        m_measuredAt->setDateTime(part.measuredAt.toLocalTime());
+    m_timeSinceStart->setText(text(part.timeSinceStart_min));
+    m_ambient->setText(text(part.ambient_C));
+    m_note->setText(part.note);
+    m_table->setRowCount(0);
+    addRow();
+    for (const MeasuredPoint &p : part.points) {
+        if (p.quantity == MeasuredQuantity::CmmPoint)
+            addCmmPoint(p.featureId, p.x_mm, p.y_mm, p.z_mm);
+        else
+            addPoint(p.featureId, p.z_mm, p.quantity,
+                     p.quantity == MeasuredQuantity::Diameter ? p.value_mm : p.value_mm * kUmPerMm);
+    }
+}
+
 void MeasurementEntryDialog::removeSelectedRows()
 {
     std::set<int, std::greater<>> rows; // from the last, so that the rows above keep their numbers
@@ -207,15 +228,9 @@ bool MeasurementEntryDialog::readCsv(const QString &path)
         m_problems->setText(tr("The file was not read:") + QLatin1Char('\n') + lines.join(QLatin1Char('\n')));
         return false;
     }
-    m_table->setRowCount(0);
-    addRow();
-    for (const MeasuredPoint &p : *points) {
-        if (p.quantity == MeasuredQuantity::CmmPoint)
-            addCmmPoint(p.featureId, p.x_mm, p.y_mm, p.z_mm);
-        else
-            addPoint(p.featureId, p.z_mm, p.quantity,
-                     p.quantity == MeasuredQuantity::Diameter ? p.value_mm : p.value_mm * kUmPerMm);
-    }
+    MeasuredPart read = part();
+    read.points = *points;
+    setPart(read);
     m_problems->setText(
         tr("%n point(s) read from %1.", nullptr, static_cast<int>(points->size())).arg(QFileInfo(path).fileName()));
     return true;

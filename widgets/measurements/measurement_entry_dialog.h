@@ -38,6 +38,8 @@ public:
     void addPoint(const QString &featureId, double z_mm, MeasuredQuantity quantity, double value);
     // Appends a CMM point: its x and y (mm, across the axis) in the value cell, "x; y".
     void addCmmPoint(const QString &featureId, double x_mm, double y_mm, double z_mm);
+    // Fills the dialog with a part typed before (its snapshot stays the dialog's project).
+    void setPart(const MeasuredPart &part);
 
     [[nodiscard]] QTableWidget *table() const { return m_table; }
 

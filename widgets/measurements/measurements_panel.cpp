@@ -31,6 +31,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <utility>
 
 namespace tolturn {
 
@@ -70,6 +71,7 @@ struct ModelReading {
 
 struct Comparison {
     std::optional<MeasuredPart> part;
+    std::shared_ptr<const LoadedModel> model; // the one compared with, if any
     PartComparison comparison;
     QString error;
 };
@@ -147,7 +149,7 @@ void MeasurementsPanel::buildUi()
     m_add->setToolTip(tr("Type in (or read from CSV) the measured points of a part cut from the open project."));
     m_remove = new QPushButton(tr("&Remove"));
     m_export = new QPushButton(tr("&Export CSV…"));
-    connect(m_add, &QPushButton::clicked, this, &MeasurementsPanel::promptAdd);
+    connect(m_add, &QPushButton::clicked, this, [this] { promptAdd(); });
     connect(m_remove, &QPushButton::clicked, this, &MeasurementsPanel::promptRemove);
     connect(m_export, &QPushButton::clicked, this, &MeasurementsPanel::promptExport);
     auto *partButtons = new QHBoxLayout;
@@ -229,6 +231,7 @@ void MeasurementsPanel::setStoreLocation(const StoreLocation &location)
     m_location = location;
     const bool had = m_model != nullptr;
     m_model.reset();
+    ++m_compareGeneration;
     m_storeError.clear();
     reload();
     loadModel();
@@ -436,13 +439,17 @@ void MeasurementsPanel::showModel()
     m_use->setEnabled(m_model != nullptr);
 }
 
-void MeasurementsPanel::promptAdd()
+void MeasurementsPanel::promptAdd(const std::optional<MeasuredPart> &typed)
 {
     if (!m_project)
         return;
     MeasurementEntryDialog dialog(*m_project, m_measuredBy, this);
-    if (dialog.exec() == QDialog::Accepted)
-        addPart(dialog.part());
+    if (typed)
+        dialog.setPart(*typed); // what the store refused, to be stored again, nothing typed lost
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    m_typedPart = dialog.part();
+    addPart(*m_typedPart);
 }
 
 void MeasurementsPanel::addPart(const MeasuredPart &part)
@@ -470,11 +477,14 @@ void MeasurementsPanel::addPart(const MeasuredPart &part)
                 return out;
             }),
         [this](const Reply &reply) {
+            const std::optional<MeasuredPart> typed = std::exchange(m_typedPart, std::nullopt);
             if (reply.ok)
                 startListing();
             else
                 QMessageBox::warning(this, tr("Measured Part Not Stored"), reply.message);
             Q_EMIT operationFinished(reply.ok, reply.message);
+            if (!reply.ok && typed)
+                promptAdd(typed); // the typed part back in its dialog
         });
 }
 
@@ -599,7 +609,15 @@ void MeasurementsPanel::learn()
                                     }
                                     return out;
                                 }),
-              [this](const LearningOutcome &outcome) { finishLearning(outcome.run, outcome.kept, outcome.error); });
+              [this, machine, store = location.describe()](const LearningOutcome &outcome) {
+                  // Kept in the store it was learned in; shown only if that store and machine are
+                  // still the dock's.
+                  const bool current = store == m_location.describe() && machine == machineId();
+                  finishLearning(
+                      outcome.run, current ? outcome.kept : std::nullopt,
+                      current ? outcome.error
+                              : tr("the store or the machine changed meanwhile; the model was kept in %1").arg(store));
+              });
 }
 
 void MeasurementsPanel::finishLearning(const MachineLearning &run, const std::optional<LoadedModel> &kept,
@@ -613,6 +631,8 @@ void MeasurementsPanel::finishLearning(const MachineLearning &run, const std::op
     QString message = !error.isEmpty() ? error : run.error;
     const bool ok = kept.has_value() && !run.cancelled;
     if (ok) {
+        ++m_modelGeneration; // a model read still on its way is older
+        ++m_compareGeneration;
         m_model = std::make_shared<const LoadedModel>(*kept);
         message = tr("Learned and kept as model %1.").arg(kept->record.id);
     }
@@ -655,8 +675,10 @@ void MeasurementsPanel::comparePart(qint64 id)
                                     if (!out.part)
                                         return out;
                                     const bool sameMachine = model && model->record.machineId == out.part->machineId;
-                                    out.comparison = tolturn::comparePart(*out.part, DataLibrary::builtIn(),
-                                                                          sameMachine ? model.get() : nullptr);
+                                    if (sameMachine)
+                                        out.model = model;
+                                    out.comparison =
+                                        tolturn::comparePart(*out.part, DataLibrary::builtIn(), out.model.get());
                                     return out;
                                 }),
               [this, generation](const Comparison &c) {
@@ -669,12 +691,13 @@ void MeasurementsPanel::comparePart(qint64 id)
                       Q_EMIT comparisonShown(false);
                       return;
                   }
-                  showComparison(*c.part, c.comparison);
+                  showComparison(*c.part, c.comparison, c.model.get());
                   Q_EMIT comparisonShown(true);
               });
 }
 
-void MeasurementsPanel::showComparison(const MeasuredPart &part, const PartComparison &comparison)
+void MeasurementsPanel::showComparison(const MeasuredPart &part, const PartComparison &comparison,
+                                       const LoadedModel *model)
 {
     const DisplayUnits units = DisplaySettings::instance().units();
     const double gap = std::numeric_limits<double>::quiet_NaN();
@@ -704,17 +727,18 @@ void MeasurementsPanel::showComparison(const MeasuredPart &part, const PartCompa
     m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
                           tr("machined − programmed radius [%1]").arg(units.deviationSymbol()));
     m_plot->addCurve(tr("physics"), x, physics, QColor(0x1f, 0x77, 0xb4), Qt::DashLine, 1.8);
-    const bool withModel = std::any_of(comparison.features.begin(), comparison.features.end(),
-                                       [](const PartComparison::Feature &f) { return !f.learned_mm.empty(); });
+    const bool withModel =
+        model != nullptr && std::any_of(comparison.features.begin(), comparison.features.end(),
+                                        [](const PartComparison::Feature &f) { return !f.learned_mm.empty(); });
     if (withModel) {
-        const double u = units.deviationFromUm(m_model->uncertainty_mm() * kUmPerMm);
+        const double u = units.deviationFromUm(model->uncertainty_mm() * kUmPerMm);
         QVector<double> lower;
         QVector<double> upper;
         for (const double v : learned) {
             lower << v - u;
             upper << v + u;
         }
-        const QString rms = QString::number(m_model->uncertainty_mm() * kUmPerMm, 'f', 1);
+        const QString rms = QString::number(model->uncertainty_mm() * kUmPerMm, 'f', 1);
         m_plot->addBand(tr("physics + learned − %1 µm").arg(rms), tr("physics + learned + %1 µm").arg(rms), x, lower,
                         upper, QColor(0x20, 0x20, 0x20));
         m_plot->addCurve(tr("physics + learned"), x, learned, QColor(0x20, 0x20, 0x20), Qt::SolidLine, 2.2);

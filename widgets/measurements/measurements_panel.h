@@ -106,16 +106,18 @@ private:
     void updateButtons();
     [[nodiscard]] std::vector<qint64> selectedIds() const;
     [[nodiscard]] QString machineId() const;
-    void promptAdd();
+    // The entry dialog; with `typed`, filled with a part the store refused.
+    void promptAdd(const std::optional<MeasuredPart> &typed = std::nullopt);
     void promptRemove();
     void promptExport();
     void useLocalStore();
-    void showComparison(const MeasuredPart &part, const PartComparison &comparison);
+    void showComparison(const MeasuredPart &part, const PartComparison &comparison, const LoadedModel *model);
     void finishLearning(const MachineLearning &run, const std::optional<LoadedModel> &kept, const QString &error);
 
     StoreLocation m_location;
     std::optional<Project> m_project;
     QString m_measuredBy;
+    std::optional<MeasuredPart> m_typedPart; // typed in the dialog, until the store has it
     std::shared_ptr<const LoadedModel> m_model;
     quint64 m_listGeneration = 0;
     quint64 m_modelGeneration = 0;

@@ -26,7 +26,7 @@ struct ReportResult {
 struct ReportHeader {
     QString projectName;
     QString planner;
-    std::shared_ptr<const LoadedModel> learned;
+    std::shared_ptr<const LoadedModel> learned = nullptr;
 };
 
 // Writes the PDF report of a project (File > Export Report, `tolturn-cli report`): title block,
