@@ -111,13 +111,15 @@ int evaluateLearned(const QString &file, const Project &project, const QString &
     if (!model)
         return kExitProblems;
     const QString provenance = model->provenance();
-    const DeviationResult deviation =
-        withLearnedResidual(project, computeDeviation(project, DataLibrary::builtIn(), {}), model->model, provenance);
+    const RangeEvaluation learned = evaluateWithLearned(project, DataLibrary::builtIn(), *model);
+    const DeviationResult &deviation = learned.compliant;
     for (const Diagnostic &d : deviation.diagnostics)
         err << file << ": " << d.toString() << '\n';
     if (!deviation.inputs)
         return kExitProblems;
-    const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(project, deviation);
+    std::vector<ToleranceEvaluation> verdicts;
+    for (const ToleranceRangeEvaluation &e : learned.tolerances)
+        verdicts.push_back(e.compliant);
     if (json) {
         QJsonArray list;
         for (const ToleranceEvaluation &e : verdicts)

@@ -428,9 +428,9 @@ void MainWindow::showProject()
 
 void MainWindow::showLearnedPrediction(const Project &project, const LoadedModel &model)
 {
-    RangeEvaluation learned = evaluateWithLearned(project, DataLibrary::builtIn(), model);
+    DeviationResult physics;
+    RangeEvaluation learned = evaluateWithLearned(project, DataLibrary::builtIn(), model, &physics);
     m_tolerances->showVerdicts(std::move(learned.tolerances), learnedAssumptionText(model), false);
-    DeviationResult physics = computeDeviation(project, DataLibrary::builtIn(), {});
     LearnedCurves curves{learnedAtStations(project, physics, model.model), model.uncertainty_mm(), model.provenance()};
     m_deflection->showResult(project, std::move(physics), std::nullopt, std::move(curves));
 }

@@ -130,10 +130,14 @@ PartComparison comparePart(const MeasuredPart &part, const DataLibrary &data, co
     return out;
 }
 
-RangeEvaluation evaluateWithLearned(const Project &project, const DataLibrary &data, const LoadedModel &model)
+RangeEvaluation evaluateWithLearned(const Project &project, const DataLibrary &data, const LoadedModel &model,
+                                    DeviationResult *physics)
 {
     RangeEvaluation r;
-    r.compliant = withLearnedResidual(project, computeDeviation(project, data, {}), model.model, model.provenance());
+    DeviationResult alone = computeDeviation(project, data, {});
+    if (physics)
+        *physics = alone;
+    r.compliant = withLearnedResidual(project, std::move(alone), model.model, model.provenance());
     if (!r.compliant.inputs)
         return r;
     for (ToleranceEvaluation &e : evaluateTolerances(project, r.compliant)) {

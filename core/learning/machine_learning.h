@@ -83,8 +83,9 @@ struct PartComparison {
 
 // The verdicts of `project` on physics + what was learned: one prediction, the machine's measured
 // behaviour in place of its stiffness range (RangeVerdict::NoRange, as for a measured machine).
+// `physics`, when given, receives the physics alone (for the curves that draw both).
 [[nodiscard]] RangeEvaluation evaluateWithLearned(const Project &project, const DataLibrary &data,
-                                                  const LoadedModel &model);
+                                                  const LoadedModel &model, DeviationResult *physics = nullptr);
 
 // One line on what the prediction rests on, for the banner above the verdicts and the report.
 [[nodiscard]] QString learnedAssumptionText(const LoadedModel &model);

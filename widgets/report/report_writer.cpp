@@ -511,12 +511,11 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
     const LoadedModel *model = header.learned.get();
     // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
     // and the plan; the plots keep the physics' contributions and add the learned total.
-    const RangeEvaluation range =
-        model ? evaluateWithLearned(project, data, *model) : evaluateOverStiffnessRange(project, data);
-    std::optional<LearnedCurves> learned;
     DeviationResult physics;
+    const RangeEvaluation range =
+        model ? evaluateWithLearned(project, data, *model, &physics) : evaluateOverStiffnessRange(project, data);
+    std::optional<LearnedCurves> learned;
     if (model) {
-        physics = computeDeviation(project, data, {});
         learned = LearnedCurves{learnedAtStations(project, physics, model->model), model->uncertainty_mm(),
                                 model->provenance()};
     }
