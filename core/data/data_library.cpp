@@ -194,6 +194,36 @@ void DataLibrary::readMachines(const QString &path)
     }
 }
 
+namespace {
+
+// Boring-bar materials (holders.json "boring_bar_materials"): every entry but "notes".
+std::vector<BoringBarMaterialData> readBoringBarMaterials(DataFileReader &r)
+{
+    std::vector<BoringBarMaterialData> materials;
+    const QJsonObject table = r.root().value(QStringLiteral("boring_bar_materials")).toObject();
+    for (auto it = table.begin(); it != table.end(); ++it) {
+        if (!it.value().isObject())
+            continue;
+        const QJsonObject o = it.value().toObject();
+        const QString p = QStringLiteral("boring_bar_materials.") + it.key();
+        const auto e = r.value(o, QStringLiteral("E_N_per_mm2"), p, true);
+        const auto nu = r.value(o, QStringLiteral("poisson_ratio"), p, true);
+        const auto ratio = r.value(o, QStringLiteral("max_overhang_ratio"), p, true);
+        QStringList letters;
+        for (const QJsonValue v : o.value(QStringLiteral("type_letters")).toArray())
+            letters << v.toString();
+        if (!e || !nu || !ratio || letters.isEmpty()) {
+            r.error(p, DataFiles::tr("a boring-bar material needs its type letters, modulus, Poisson's ratio and "
+                                     "largest overhang ratio"));
+            continue;
+        }
+        materials.push_back({it.key(), letters, *e, *nu, *ratio});
+    }
+    return materials;
+}
+
+} // namespace
+
 void DataLibrary::readHolders(const QString &path)
 {
     DataFileReader r(path, "tolturn-holders", m_diagnostics, m_sources);
@@ -218,6 +248,7 @@ void DataLibrary::readHolders(const QString &path)
                                   .value(QStringLiteral("steel_C45_class"))
                                   .toObject();
     m_shankModulus = r.value(steel, QStringLiteral("E_N_per_mm2"), QStringLiteral("shank_materials"), true);
+    m_barMaterials = readBoringBarMaterials(r);
 
     const QJsonArray list = r.root().value(QStringLiteral("holders")).toArray();
     for (qsizetype i = 0; i < list.size(); ++i) {
@@ -238,6 +269,18 @@ void DataLibrary::readHolders(const QString &path)
         h.inclination_deg = r.value(o, QStringLiteral("inclination_angle_deg"), p, false);
         m_holders.push_back(h);
     }
+}
+
+const BoringBarMaterialData *DataLibrary::boringBarMaterial(const HolderData &bar) const
+{
+    if (!bar.isBoringBar() || bar.code.isEmpty())
+        return nullptr;
+    const QString letter = bar.code.left(1).toUpper();
+    for (const BoringBarMaterialData &m : m_barMaterials) {
+        if (m.typeLetters.contains(letter))
+            return &m;
+    }
+    return nullptr;
 }
 
 const MaterialData *DataLibrary::material(const QString &id) const

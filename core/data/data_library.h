@@ -71,6 +71,19 @@ struct HolderData {
     SourcedValue enteringAngle_deg;
     std::optional<SourcedValue> shankHeight_mm, shankWidth_mm, length_mm, barDiameter_mm;
     std::optional<SourcedValue> rake_deg, inclination_deg;
+
+    // A boring bar (an internal tool held along the part's axis), by the kind the data give it.
+    [[nodiscard]] bool isBoringBar() const { return kind.startsWith(QLatin1String("boring bar")); }
+};
+
+// What a boring bar is made of (holders.json "boring_bar_materials"), found from the
+// toolholder-type letter that begins its ISO designation (S, A: steel; E: carbide).
+struct BoringBarMaterialData {
+    QString id; // "steel", "carbide"
+    QStringList typeLetters;
+    SourcedValue youngsModulus_MPa; // the compliant end of the published range
+    SourcedValue poissonRatio;
+    SourcedValue maxOverhangRatio; // the maker's largest overhang / bar diameter
 };
 
 // The ids of a data library's entries (materials, machines), for a message naming an unknown one.
@@ -125,6 +138,12 @@ public:
     // Support stiffness ranges for a machine without a measured characterisation.
     [[nodiscard]] const UncharacterisedSupports &uncharacterisedSupports() const { return m_supports; }
 
+    // The material of a boring bar from the first letter of its designation; nullptr when the
+    // letter is not one the data know (a damped bar, say).
+    [[nodiscard]] const BoringBarMaterialData *boringBarMaterial(const HolderData &bar) const;
+
+    [[nodiscard]] const std::vector<BoringBarMaterialData> &boringBarMaterials() const { return m_barMaterials; }
+
     // Young's modulus of a steel tool shank.
     [[nodiscard]] std::optional<SourcedValue> shankModulus() const { return m_shankModulus; }
 
@@ -142,6 +161,7 @@ private:
     std::vector<MaterialData> m_materials;
     std::vector<MachineData> m_machines;
     std::vector<HolderData> m_holders;
+    std::vector<BoringBarMaterialData> m_barMaterials;
     std::map<QChar, SourcedValue> m_styleAngles;
     std::optional<SourcedValue> m_negativeSeatRake;
     std::optional<SourcedValue> m_negativeSeatInclination;

@@ -253,7 +253,7 @@ std::vector<std::vector<double>> thermalAlongPass(const InfluenceTable &table, c
 Station evaluateStation(const StationInfluence &si, double z, double r0, bool outer, const TurningInputs &in,
                         double toolpost, double drift)
 {
-    const CuttingForces &f = in.forces;
+    const CuttingForces &f = in.forcesOn(outer ? ContourSide::Outer : ContourSide::Inner);
     Station st;
     st.z_mm = z;
     st.nominalRadius_mm = r0;
@@ -261,7 +261,15 @@ Station evaluateStation(const StationInfluence &si, double z, double r0, bool ou
     st.radial.spindleChuck_mm = f.radial_N * si.spindlePerRadial_mm_per_N + f.axial_N * si.spindlePerAxial_mm_per_N;
     st.radial.workpiece_mm =
         f.radial_N * si.radialPerRadial_mm_per_N + f.axial_N * si.radialPerAxial_mm_per_N - st.radial.spindleChuck_mm;
-    st.radial.toolpost_mm = f.radial_N * toolpost;
+    if (!outer && in.boring) {
+        // A boring bar lies along the axis: the passive force bends it, it does not shorten it.
+        const BoringBarDeflection bar =
+            boringBarDeflection(in.boring->bar, in.boring->compliance, f.radial_N, f.tangential_N, f.axial_N);
+        st.radial.boringBar_mm = bar.radial_mm;
+        st.tangential.boringBar_mm = bar.tangential_mm;
+    } else {
+        st.radial.toolpost_mm = f.radial_N * toolpost;
+    }
     // A drift of the tool away from the axis enlarges shafts and bores alike.
     st.radial.thermal_mm = outer ? drift : -drift;
     st.tangential.spindleChuck_mm = f.tangential_N * si.spindleTangential_mm_per_N;
@@ -292,8 +300,9 @@ FaceConicity faceUnderFacingCut(const Segment &s, const FeatureInfluence &f, con
     const double signM = (outer ? -1.0 : 1.0) * (facesRightEnd ? 1.0 : -1.0);
     const double rIn = std::min(s.from.r_mm, s.to.r_mm);
     const double rOut = std::max(s.from.r_mm, s.to.r_mm);
-    const double a = signF * in.forces.axial_N * si.rotationPerRadial_rad_per_N;
-    const double b = signM * in.forces.radial_N * si.rotationPerMoment_rad_per_Nmm;
+    const CuttingForces &forces = in.forcesOn(f.side);
+    const double a = signF * forces.axial_N * si.rotationPerRadial_rad_per_N;
+    const double b = signM * forces.radial_N * si.rotationPerMoment_rad_per_Nmm;
     const auto u = [a, b](double rho) { return rho * (a + b * rho); };
     constexpr int kSamples = 41;
     double lo = u(rIn);
@@ -339,8 +348,9 @@ DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceT
                                                table.toolpostCompliance_mm_per_N, drifts.empty() ? 0.0 : drifts[k][i]);
             const double diameter = 2.0 * st.nominalRadius_mm;
             const double speed = std::numbers::pi * diameter * st.spindleSpeed_rpm / 1000.0;
-            result.maxPower_kW = std::max(result.maxPower_kW, cuttingPower_kW(in.forces.tangential_N, speed));
-            result.maxTorque_Nm = std::max(result.maxTorque_Nm, spindleTorque_Nm(in.forces.tangential_N, diameter));
+            const double cuttingForce_N = in.forcesOn(f.side).tangential_N;
+            result.maxPower_kW = std::max(result.maxPower_kW, cuttingPower_kW(cuttingForce_N, speed));
+            result.maxTorque_Nm = std::max(result.maxTorque_Nm, spindleTorque_Nm(cuttingForce_N, diameter));
             fd.stations.push_back(st);
         }
         result.features.push_back(std::move(fd));

@@ -22,8 +22,12 @@ struct Contributions {
     double toolpost_mm = 0.0;
     double workpiece_mm = 0.0;
     double thermal_mm = 0.0;
+    double boringBar_mm = 0.0; // bending and twist of the boring bar (inner features, docs/model.md §3.1)
 
-    [[nodiscard]] double total_mm() const { return spindleChuck_mm + toolpost_mm + workpiece_mm + thermal_mm; }
+    [[nodiscard]] double total_mm() const
+    {
+        return spindleChuck_mm + toolpost_mm + workpiece_mm + thermal_mm + boringBar_mm;
+    }
 };
 
 // The machined radius less nominal from the radial and tangential deviation at a station (MODEL §1):
@@ -35,7 +39,7 @@ struct Station {
     double nominalRadius_mm = 0.0;
     double spindleSpeed_rpm = 0.0;
     Contributions radial;
-    Contributions tangential;         // toolpost and thermal terms are radial only
+    Contributions tangential;         // toolpost and thermal terms are radial only; the boring bar's both
     double radiusError_mm = 0.0;      // machined radius - nominal, radial and tangential combined exactly
     double sectionRotation_rad = 0.0; // rotation of the section under the tool
 };

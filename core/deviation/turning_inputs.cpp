@@ -3,6 +3,7 @@
 
 #include "core/mechanics/moving_load.h"
 #include "core/mechanics/spindle_chuck.h"
+#include "core/part/profile_geometry.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 
@@ -329,6 +330,96 @@ bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &i
     return true;
 }
 
+// How deep the boring bar must reach: from the right end face, where it enters, to the deepest
+// inner surface it cuts (not left of the chuck face).
+double boringReach_mm(const PartProfile &part, double supportStart_mm)
+{
+    double deepest = part.length_mm();
+    for (const Segment &s : part.inner.segments)
+        deepest = std::min(deepest, std::max(s.from.z_mm, supportStart_mm));
+    return part.length_mm() - deepest;
+}
+
+// Diagnostics of the boring tool's view of the project name the project's "boring_tool" fields.
+void renameToolFields(Diagnostics &list, qsizetype from)
+{
+    for (auto i = static_cast<std::size_t>(from); i < list.size(); ++i) {
+        if (list[i].field.startsWith(QLatin1String("tool")))
+            list[i].field.replace(0, 4, QStringLiteral("boring_tool"));
+    }
+}
+
+// The bar: its diameter from the holder data, its material from the designation's first letter,
+// the overhang as given (else the reach, the least that cuts the deepest bore), the edge's offset
+// as given (else the bar's radius, the least the edge can stand off its axis).
+std::optional<BoringBar> resolveBar(const Project &p, const DataLibrary &data, const TurningInputs &in,
+                                    BoringInputs &bi, Diagnostics &out)
+{
+    const Tool &t = *p.boringTool;
+    const HolderData *h = data.holder(t.holderCode);
+    if (h == nullptr || !h->isBoringBar() || !h->barDiameter_mm) {
+        out.push_back(
+            makeError(QStringLiteral("boring_tool.holder"),
+                      DeviationModel::tr("\"%1\" is not a boring bar in the data library").arg(t.holderCode)));
+        return std::nullopt;
+    }
+    const BoringBarMaterialData *m = data.boringBarMaterial(*h);
+    if (m == nullptr) {
+        out.push_back(
+            makeError(QStringLiteral("boring_tool.holder"),
+                      DeviationModel::tr("the bar material of \"%1\" (type letter %2) is not in the data library: its "
+                                         "stiffness is unknown")
+                          .arg(t.holderCode, t.holderCode.left(1))));
+        return std::nullopt;
+    }
+    BoringBar bar;
+    bar.diameter_mm = h->barDiameter_mm->value;
+    bar.material = {m->youngsModulus_MPa.value, m->poissonRatio.value, true};
+    const double reach = boringReach_mm(p.part, in.supportStart_mm);
+    bar.overhang_mm = t.overhang_mm.value_or(reach);
+    if (bar.overhang_mm + kProfileEpsilon_mm < reach) {
+        out.push_back(makeError(QStringLiteral("boring_tool.overhang_mm"),
+                                DeviationModel::tr("an overhang of %1 mm does not reach the bottom of the bore, %2 mm "
+                                                   "in from the right end face")
+                                    .arg(num(bar.overhang_mm), num(reach))));
+        return std::nullopt;
+    }
+    if (h->length_mm && bar.overhang_mm > h->length_mm->value) {
+        out.push_back(makeError(QStringLiteral("boring_tool.overhang_mm"),
+                                DeviationModel::tr("an overhang of %1 mm is longer than the bar \"%2\" itself (%3 mm)")
+                                    .arg(num(bar.overhang_mm), t.holderCode, num(h->length_mm->value))));
+        return std::nullopt;
+    }
+    bar.edgeOffset_mm = t.edgeOffset_mm.value_or(0.5 * bar.diameter_mm);
+    bi.holderCode = t.holderCode;
+    bi.barMaterial = m->id;
+    bi.maxOverhangRatio = m->maxOverhangRatio;
+    return bar;
+}
+
+void noteBar(const Project &p, const DataLibrary &data, const BoringInputs &bi, QStringList &notes)
+{
+    const BoringBarMaterialData *m = data.boringBarMaterial(*data.holder(bi.holderCode));
+    notes << DeviationModel::tr("Boring bar %1: %2, Ø%3 mm, %4 mm overhang (L/D %5), E = %6 GPa (%7).")
+                 .arg(bi.holderCode, bi.barMaterial, num(bi.bar.diameter_mm), num(bi.bar.overhang_mm),
+                      QString::number(bi.bar.overhangRatio(), 'f', 1), num(bi.bar.material.youngsModulus_MPa / 1000.0),
+                      data.sourceText(m->youngsModulus_MPa.source).section(QLatin1Char(','), 0, 0));
+    if (!p.boringTool->overhang_mm)
+        notes << DeviationModel::tr("Boring bar overhang not given: taken as the bore's depth, %1 mm, the least that "
+                                    "reaches; a longer overhang bends more.")
+                     .arg(num(bi.bar.overhang_mm));
+    if (!p.boringTool->edgeOffset_mm)
+        notes << DeviationModel::tr("The cutting edge's offset from the bar axis (the maker's f) not given: taken as "
+                                    "the bar's radius, %1 mm, the least it can be; the twist of the bar and the moment "
+                                    "of the feed force grow with it.")
+                     .arg(num(bi.bar.edgeOffset_mm));
+    // ISO designation type letter A: a steel bar with internal coolant supply (holders.json).
+    if (bi.holderCode.startsWith(QLatin1Char('A'), Qt::CaseInsensitive))
+        notes << DeviationModel::tr("Boring bar %1 has a coolant bore the designation does not size: computed as a "
+                                    "solid bar, which underestimates its deflection.")
+                     .arg(bi.holderCode);
+}
+
 } // namespace
 
 std::optional<LiDuToolGeometry> resolveLiDuToolGeometry(const Project &p, const DataLibrary &data, Diagnostics &out)
@@ -421,6 +512,47 @@ QString forceModelName(const QString &keyword)
     return keyword;
 }
 
+namespace {
+
+// The inner contour's tool: its insert, entering angle and forces as the turning tool's are
+// resolved, on a view of the project whose tool is the boring tool; then the bar.
+std::optional<BoringInputs> resolveBoring(const Project &p, const DataLibrary &data, const DeviationOptions &options,
+                                          const MaterialData &material, const TurningInputs &in, Diagnostics &out)
+{
+    Project view = p;
+    view.tool = *p.boringTool;
+    const auto first = static_cast<qsizetype>(out.size());
+    TurningInputs bin;
+    bin.pass = in.pass;
+    const InsertParseResult insert = parseInsertCode(view.tool.insertCode);
+    std::optional<SourcedValue> angle;
+    if (!insert.insert)
+        out.insert(out.end(), insert.diagnostics.begin(), insert.diagnostics.end());
+    else
+        angle = holderEnteringAngle(view, data, out);
+    if (insert.insert && angle) {
+        bin.noseRadius_mm = insert.insert->noseRadius_mm;
+        bin.enteringAngle_deg = angle->value;
+        resolveForces(view, data, options, material, bin, out);
+    }
+    renameToolFields(out, first);
+    if (hasErrors(out))
+        return std::nullopt;
+    BoringInputs bi;
+    bi.forces = bin.forces;
+    bi.noseRadius_mm = bin.noseRadius_mm;
+    bi.enteringAngle_deg = bin.enteringAngle_deg;
+    const auto bar = resolveBar(p, data, in, bi, out);
+    if (!bar)
+        return std::nullopt;
+    bi.bar = *bar;
+    if (!options.workpieceOnly)
+        bi.compliance = boringBarCompliance(bi.bar);
+    return bi;
+}
+
+} // namespace
+
 InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
 {
     InputsResult result;
@@ -466,6 +598,16 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
     if (hasErrors(out))
         return result;
     resolveSupports(p, data, options, in);
+    if (p.boringTool) {
+        in.boring = resolveBoring(p, data, options, *material, in, out);
+        if (!in.boring)
+            return result;
+        noteBar(p, data, *in.boring, in.notes);
+    } else if (!p.part.inner.empty()) {
+        in.notes << DeviationModel::tr("No boring bar given: the bores are computed as if cut by the turning tool "
+                                       "%1, without the bending of a bar, which in a bore is often the largest term.")
+                        .arg(p.tool.holderCode);
+    }
     if (!supportsHoldBeam(in.radialLeft, in.radialRight, in.supportEnd_mm - in.supportStart_mm) ||
         !supportsHoldBeam(in.tangentialLeft, in.tangentialRight, in.supportEnd_mm - in.supportStart_mm)) {
         out.push_back(makeError(QStringLiteral("clamping"),

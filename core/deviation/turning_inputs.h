@@ -10,6 +10,7 @@
 #include "core/cutting/cutting_forces.h"
 #include "core/data/data_library.h"
 #include "core/mechanics/beam.h"
+#include "core/mechanics/boring_bar.h"
 #include "core/project/project.h"
 
 #include <QString>
@@ -52,6 +53,19 @@ struct SupportStiffnessUsed {
     std::optional<StiffnessRange> range; // the published range, where there is one
 };
 
+// The boring bar that cuts the inner contour, with its own insert and so its own forces at the
+// pass's conditions (docs/model.md §3.1).
+struct BoringInputs {
+    QString holderCode;
+    QString barMaterial; // "steel", "carbide"
+    BoringBar bar;
+    BoringBarCompliance compliance;
+    CuttingForces forces;
+    double noseRadius_mm = 0.0;
+    double enteringAngle_deg = 0.0;
+    std::optional<SourcedValue> maxOverhangRatio; // the maker's largest L/D
+};
+
 // Everything the deviation model needs, resolved from a project and the data library.
 struct TurningInputs {
     ElasticMaterial material;
@@ -75,7 +89,14 @@ struct TurningInputs {
     double ambientTemperature_C = 20.0;
     std::optional<double> maxSpindleSpeed_rpm;
     std::optional<double> maxPower_kW;
-    QStringList notes; // assumptions the result depends on, for people
+    std::optional<BoringInputs> boring; // the inner contour's tool, when the project names one
+    QStringList notes;                  // assumptions the result depends on, for people
+
+    // The forces on the tool that cuts a contour: the boring bar's in a bore, when there is one.
+    [[nodiscard]] const CuttingForces &forcesOn(ContourSide side) const
+    {
+        return side == ContourSide::Inner && boring ? boring->forces : forces;
+    }
 };
 
 // A force model's keyword ("kienzle", "li_du", "given") as people read it: "Kienzle", "Li & Du",

@@ -91,15 +91,16 @@ PartProfile readPart(const QJsonObject &json, Diagnostics &out)
     return part;
 }
 
-Tool readTool(const QJsonObject &json, Diagnostics &out)
+Tool readTool(const QJsonObject &json, const QString &path, Diagnostics &out)
 {
-    JsonObjectReader r(json, QStringLiteral("tool"), out);
+    JsonObjectReader r(json, path, out);
     Tool tool;
     tool.insertCode = r.text(QStringLiteral("insert"), Presence::Required).value_or(QString());
     tool.holderCode = r.text(QStringLiteral("holder"), Presence::Optional).value_or(QString());
     tool.overhang_mm = r.number(QStringLiteral("overhang_mm"), Presence::Optional);
     tool.rake_deg = r.number(QStringLiteral("rake_deg"), Presence::Optional);
     tool.inclination_deg = r.number(QStringLiteral("inclination_deg"), Presence::Optional);
+    tool.edgeOffset_mm = r.number(QStringLiteral("edge_offset_mm"), Presence::Optional);
     r.finish();
     return tool;
 }
@@ -359,7 +360,9 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
     p.materialId = r.text(QStringLiteral("material"), Presence::Required).value_or(QString());
     p.machineId = r.text(QStringLiteral("machine"), Presence::Required).value_or(QString());
     if (const auto tool = r.object(QStringLiteral("tool"), Presence::Required))
-        p.tool = readTool(*tool, out);
+        p.tool = readTool(*tool, QStringLiteral("tool"), out);
+    if (const auto tool = r.object(QStringLiteral("boring_tool"), Presence::Optional))
+        p.boringTool = readTool(*tool, QStringLiteral("boring_tool"), out);
     if (const auto clamping = r.object(QStringLiteral("clamping"), Presence::Required))
         p.clamping = readClamping(*clamping, out);
     p.passes = readList<CuttingPass>(r, QStringLiteral("passes"), out, readPass);
@@ -444,6 +447,18 @@ void insertOptional(QJsonObject &o, const char *key, const std::optional<double>
 {
     if (value)
         o.insert(QLatin1String(key), *value);
+}
+
+QJsonObject toolJson(const Tool &t)
+{
+    QJsonObject tool{{QStringLiteral("insert"), t.insertCode}};
+    if (!t.holderCode.isEmpty())
+        tool.insert(QStringLiteral("holder"), t.holderCode);
+    insertOptional(tool, "overhang_mm", t.overhang_mm);
+    insertOptional(tool, "rake_deg", t.rake_deg);
+    insertOptional(tool, "inclination_deg", t.inclination_deg);
+    insertOptional(tool, "edge_offset_mm", t.edgeOffset_mm);
+    return tool;
 }
 
 QJsonObject springsJson(const SpindleSprings &s)
@@ -666,12 +681,7 @@ QJsonObject projectJsonObject(const Project &p)
     if (!p.part.inner.empty())
         part.insert(QStringLiteral("inner"), contourJson(p.part.inner));
 
-    QJsonObject tool{{QStringLiteral("insert"), p.tool.insertCode}};
-    if (!p.tool.holderCode.isEmpty())
-        tool.insert(QStringLiteral("holder"), p.tool.holderCode);
-    insertOptional(tool, "overhang_mm", p.tool.overhang_mm);
-    insertOptional(tool, "rake_deg", p.tool.rake_deg);
-    insertOptional(tool, "inclination_deg", p.tool.inclination_deg);
+    const QJsonObject tool = toolJson(p.tool);
 
     QJsonArray passes;
     for (const CuttingPass &pass : p.passes)
@@ -699,6 +709,8 @@ QJsonObject projectJsonObject(const Project &p)
         {QStringLiteral("datums"), datums},
         {QStringLiteral("tolerances"), tolerances},
     };
+    if (p.boringTool)
+        root.insert(QStringLiteral("boring_tool"), toolJson(*p.boringTool));
     if (p.cuttingModel != CuttingModel{})
         root.insert(QStringLiteral("cutting_model"), cuttingModelJson(p.cuttingModel));
     if (p.characterisation != MachineCharacterisation{})

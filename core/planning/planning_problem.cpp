@@ -43,6 +43,10 @@ bool constraintHasLimit(const Project &project, const DataLibrary &data, const Q
         return s.maxSpindleSpeed_rpm || machineHas("max_speed_rpm");
     if (constraint == QLatin1String("tool_life"))
         return s.minToolLife_min && s.taylorC_m_min && s.taylorN;
+    if (constraint == QLatin1String("bar_overhang")) {
+        const HolderData *bar = project.boringTool ? data.holder(project.boringTool->holderCode) : nullptr;
+        return bar != nullptr && data.boringBarMaterial(*bar) != nullptr;
+    }
     return true; // tolerances and the roughing depth always have theirs
 }
 
@@ -100,7 +104,13 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     InputsResult inputs = resolveTurningInputs(withPass, data, options);
     out.insert(out.end(), inputs.diagnostics.begin(), inputs.diagnostics.end());
     auto forces = projectForceModel(withPass, data, out);
-    if (!inputs.inputs || !forces)
+    std::optional<ForceFunction> boringForces;
+    if (project.boringTool && inputs.inputs) {
+        Project boringView = withPass;
+        boringView.tool = *project.boringTool;
+        boringForces = projectForceModel(boringView, data, out);
+    }
+    if (!inputs.inputs || !forces || (project.boringTool && !boringForces))
         return result;
 
     auto problem = std::shared_ptr<PlanningProblem>(new PlanningProblem);
@@ -108,6 +118,8 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     p.m_project = withPass;
     p.m_inputs = *inputs.inputs;
     p.m_forceModel = *forces;
+    if (boringForces)
+        p.m_boringForceModel = *boringForces;
     p.m_speed = *s.cuttingSpeed_m_min;
     p.m_feed = *s.feed_mm_rev;
     p.m_depth = *s.depthOfCut_mm;
@@ -131,6 +143,8 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
         for (std::size_t i = 0; i < f.z_mm.size(); ++i) {
             path.emplace_back(f.z_mm[i], 2.0 * f.nominalRadius_mm[i]);
             p.m_largestCutDiameter_mm = std::max(p.m_largestCutDiameter_mm, 2.0 * f.nominalRadius_mm[i]);
+            if (f.side == ContourSide::Inner)
+                p.m_largestBoreDiameter_mm = std::max(p.m_largestBoreDiameter_mm, 2.0 * f.nominalRadius_mm[i]);
             if (f.side == ContourSide::Outer) {
                 p.m_outerProfile.emplace_back(f.z_mm[i], f.nominalRadius_mm[i]);
                 p.m_radialStock_mm = std::max(p.m_radialStock_mm, stockRadius - f.nominalRadius_mm[i]);
@@ -281,6 +295,8 @@ std::vector<ConstraintValue> PlanningProblem::toleranceConstraints(const PassCon
     const CuttingForces f = forces(pass.feed_mm_rev, pass.depthOfCut_mm);
     TurningInputs in = m_inputs;
     in.forces = f;
+    if (in.boring && m_boringForceModel)
+        in.boring->forces = m_boringForceModel(pass.feed_mm_rev, pass.depthOfCut_mm);
     in.pass.cuttingSpeed_m_min = pass.cuttingSpeed_m_min;
     in.pass.feed_mm_rev = pass.feed_mm_rev;
     in.pass.depthOfCut_mm = pass.depthOfCut_mm;
@@ -311,6 +327,15 @@ void PlanningProblem::addFinishingLimits(const PassConditions &pass, const Cutti
                            QStringLiteral("µm")});
     }
     addPassLimits(QStringLiteral("finishing"), pass, f, m_largestCutDiameter_mm, out);
+    if (!m_inputs.boring || !m_boringForceModel)
+        return;
+    // The boring bar's own insert and forces in the bores, and the maker's longest overhang.
+    addPassLimits(QStringLiteral("boring"), pass, m_boringForceModel(pass.feed_mm_rev, pass.depthOfCut_mm),
+                  m_largestBoreDiameter_mm, out);
+    const BoringInputs &b = *m_inputs.boring;
+    if (isEnabled(QStringLiteral("bar_overhang")) && b.maxOverhangRatio)
+        out.push_back({QStringLiteral("bar_overhang"), b.holderCode, b.bar.overhangRatio(), b.maxOverhangRatio->value,
+                       QStringLiteral("×D")});
 }
 
 CandidateEvaluation PlanningProblem::evaluate(const PlanCandidate &c,

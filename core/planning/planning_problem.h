@@ -140,9 +140,11 @@ private:
     ProgramTargets m_targets; // what the finishing program aims at, for the tolerance constraints
     std::shared_ptr<const LoadedModel> m_learned;
     std::function<CuttingForces(double, double)> m_forceModel;
+    std::function<CuttingForces(double, double)> m_boringForceModel; // empty without a boring bar
     ValueRange m_speed, m_feed, m_depth;
     double m_radialStock_mm = 0.0;
     double m_largestCutDiameter_mm = 0.0;
+    double m_largestBoreDiameter_mm = 0.0;
     double m_stockDiameter_mm = 0.0;
     std::optional<double> m_maxPower_kW, m_maxTorque_Nm, m_maxSpeed_rpm;
     QStringList m_notes;

@@ -56,6 +56,60 @@ void checkLibraryEntries(const Project &p, const DataLibrary &data, Diagnostics 
                                       .arg(p.tool.holderCode)));
 }
 
+// The boring bar (docs/model.md §3.1): a bar the data know, its overhang within the maker's
+// largest L/D; bores without a bar are computed without its bending, which the planner is told.
+void checkBoringTool(const Project &p, const DataLibrary &data, Diagnostics &out)
+{
+    if (!p.boringTool) {
+        if (!p.part.inner.empty())
+            out.push_back(makeWarning(QStringLiteral("boring_tool"),
+                                      Plausibility::tr("the part has bores but no boring bar is given: they are "
+                                                       "computed as if cut by %1, without the bending of a bar")
+                                          .arg(p.tool.holderCode)));
+        return;
+    }
+    const Tool &t = *p.boringTool;
+    const InsertParseResult insert = parseInsertCode(t.insertCode);
+    if (!insert.insert) {
+        for (const Diagnostic &d : insert.diagnostics)
+            out.push_back(makeError(QStringLiteral("boring_tool.insert"), d.message));
+    }
+    const HolderData *bar = data.holder(t.holderCode);
+    if (bar == nullptr || !bar->isBoringBar() || !bar->barDiameter_mm) {
+        QStringList bars;
+        for (const HolderData &h : data.holders()) {
+            if (h.isBoringBar())
+                bars << h.code;
+        }
+        out.push_back(makeError(QStringLiteral("boring_tool.holder"),
+                                Plausibility::tr("\"%1\" is not a boring bar in the data library; it has: %2")
+                                    .arg(t.holderCode, bars.join(QStringLiteral(", ")))));
+        return;
+    }
+    const BoringBarMaterialData *material = data.boringBarMaterial(*bar);
+    if (material == nullptr) {
+        out.push_back(makeError(QStringLiteral("boring_tool.holder"),
+                                Plausibility::tr("the bar material of \"%1\" (type letter %2) is not in the data "
+                                                 "library")
+                                    .arg(t.holderCode, t.holderCode.left(1))));
+        return;
+    }
+    if (p.part.inner.empty())
+        out.push_back(makeWarning(QStringLiteral("boring_tool"),
+                                  Plausibility::tr("a boring bar is given but the part has no bore")));
+    if (t.overhang_mm) {
+        const double ratio = *t.overhang_mm / bar->barDiameter_mm->value;
+        if (ratio > material->maxOverhangRatio.value + 1e-9)
+            out.push_back(makeWarning(
+                QStringLiteral("boring_tool.overhang_mm"),
+                Plausibility::tr("%1 mm is %2 times the bar's diameter, more than the %3 times the maker allows a "
+                                 "%4 bar (%5): expect chatter; use a carbide or a larger bar, or bore from both ends")
+                    .arg(num(*t.overhang_mm), QString::number(ratio, 'f', 1), num(material->maxOverhangRatio.value),
+                         material->id,
+                         data.sourceText(material->maxOverhangRatio.source).section(QLatin1Char(','), 0, 1))));
+    }
+}
+
 void checkRange(double value, const std::optional<ValueRange> &range, const QString &field, const QString &unit,
                 const QString &source, Diagnostics &out)
 {
@@ -164,6 +218,7 @@ Diagnostics checkPlausibility(const Project &project, const DataLibrary &data)
 {
     Diagnostics out;
     checkLibraryEntries(project, data, out);
+    checkBoringTool(project, data, out);
     checkPasses(project, data, out);
     return out;
 }

@@ -127,10 +127,10 @@ QString keyword(ForceModel value)
 
 const QStringList &planningConstraintKeywords()
 {
-    static const QStringList words{QStringLiteral("tolerances"), QStringLiteral("roughness"),
-                                   QStringLiteral("power"),      QStringLiteral("torque"),
-                                   QStringLiteral("force"),      QStringLiteral("spindle_speed"),
-                                   QStringLiteral("tool_life"),  QStringLiteral("roughing_depth")};
+    static const QStringList words{
+        QStringLiteral("tolerances"), QStringLiteral("roughness"),      QStringLiteral("power"),
+        QStringLiteral("torque"),     QStringLiteral("force"),          QStringLiteral("spindle_speed"),
+        QStringLiteral("tool_life"),  QStringLiteral("roughing_depth"), QStringLiteral("bar_overhang")};
     return words;
 }
 

@@ -28,9 +28,11 @@ struct Clamping {
 struct Tool {
     QString insertCode;                // ISO 1832, e.g. "CNMG 120408"
     QString holderCode;                // ISO 5608, e.g. "PCLNR 2525M12"
-    std::optional<double> overhang_mm; // tool length out of the turret, for the toolpost term
+    std::optional<double> overhang_mm; // tool length out of the turret (a boring bar: clamping to edge)
     std::optional<double> rake_deg;    // normal rake, when the holder data do not give it
     std::optional<double> inclination_deg;
+    // A boring bar's cutting edge from the bar's axis, the maker's functional dimension f [mm].
+    std::optional<double> edgeOffset_mm;
 
     friend bool operator==(const Tool &, const Tool &) = default;
 };
@@ -191,6 +193,9 @@ struct Project {
     QString materialId;
     QString machineId;
     Tool tool;
+    // The tool that cuts the inner contour: a boring bar (docs/model.md §3.1). Without one the
+    // bores are computed as if cut by `tool`, and every result says so.
+    std::optional<Tool> boringTool;
     Clamping clamping;
     std::vector<CuttingPass> passes;
     std::vector<Datum> datums;

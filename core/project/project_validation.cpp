@@ -275,6 +275,14 @@ void checkCuttingModel(const Project &p, Diagnostics &out)
             ProjectValidation::tr("the li_du force model needs normal_pressure_MPa (K_n) and friction_ratio (K_f); "
                                   "fit them from measured forces with 'tolturn-cli calibrate-forces'")));
     requirePositive(p.tool.overhang_mm, QStringLiteral("tool.overhang_mm"), out);
+    if (p.boringTool) {
+        requireText(p.boringTool->insertCode, QStringLiteral("boring_tool.insert"),
+                    ProjectValidation::tr("the boring bar's insert code"), out);
+        requireText(p.boringTool->holderCode, QStringLiteral("boring_tool.holder"),
+                    ProjectValidation::tr("the boring bar"), out);
+        requirePositive(p.boringTool->overhang_mm, QStringLiteral("boring_tool.overhang_mm"), out);
+        requirePositive(p.boringTool->edgeOffset_mm, QStringLiteral("boring_tool.edge_offset_mm"), out);
+    }
 }
 
 void checkSprings(const std::optional<SpindleSprings> &s, const QString &path, Diagnostics &out)

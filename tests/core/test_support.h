@@ -3,10 +3,12 @@
 // constants of the steel the tests' bars are made of.
 #pragma once
 
+#include "core/common/diagnostic.h"
 #include "core/part/profile.h"
 
 #include <QFile>
 #include <QString>
+#include <QStringList>
 
 #include <sys/stat.h>
 
@@ -27,6 +29,15 @@ inline Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoin
     s.from = a;
     s.to = b;
     return s;
+}
+
+// Every finding, one a line, for a failing test's message.
+inline QString dump(const Diagnostics &d)
+{
+    QStringList lines;
+    for (const Diagnostic &x : d)
+        lines << x.toString();
+    return lines.join(QLatin1Char('\n'));
 }
 
 // The permission bits of a file (-1 when it cannot be read), and those a new file gets: 0666

@@ -23,6 +23,7 @@ constexpr double kNu = test::kSteelNu;
 constexpr double kG = test::kSteelG_MPa;
 constexpr double kKappaSolid = test::kKappaSolidCircle;
 
+using test::dump;
 using test::seg;
 
 // A plain bar Ø2r x L of C45E-N, one finishing pass, a CNMG insert in a PCLNR holder.
@@ -55,14 +56,6 @@ const FeatureDeviation &feature(const DeviationResult &r, const char *id)
 bool near(double value, double reference, double relative, double absolute = 0.0)
 {
     return std::abs(value - reference) <= relative * std::abs(reference) + absolute;
-}
-
-QString dump(const Diagnostics &d)
-{
-    QStringList lines;
-    for (const Diagnostic &x : d)
-        lines << x.toString();
-    return lines.join(QLatin1Char('\n'));
 }
 
 } // namespace

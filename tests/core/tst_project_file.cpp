@@ -84,13 +84,7 @@ Diagnostics errorsOf(const Diagnostics &all)
     return errors;
 }
 
-QString dump(const Diagnostics &all)
-{
-    QStringList lines;
-    for (const Diagnostic &d : all)
-        lines << d.toString();
-    return lines.join(QLatin1Char('\n'));
-}
+using test::dump;
 
 // A project that uses every field of the format, built in code.
 Project everyFieldProject()
