@@ -502,6 +502,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Base the report on what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Den Bericht auf das stützen, was aus den gemessenen Teilen über die Maschine gelernt wurde (learn --save).</translation>
     </message>
+    <message>
+        <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N</source>
+        <translation>Bohrstange %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; Nachgiebigkeit an der Spitze %6 µm/N</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -658,6 +662,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>a stiffness range needs 0 &lt; compliant &lt;= stiff, not %1 and %2</source>
         <translation>ein Steifigkeitsbereich braucht 0 &lt; nachgiebig &lt;= steif, nicht %1 und %2</translation>
     </message>
+    <message>
+        <source>a boring-bar material needs its type letters, modulus, Poisson&apos;s ratio and largest overhang ratio</source>
+        <translation>ein Bohrstangenwerkstoff benötigt seine Kennbuchstaben, E-Modul, Querkontraktionszahl und größtes Auskragverhältnis</translation>
+    </message>
 </context>
 <context>
     <name>DeviationModel</name>
@@ -760,6 +768,42 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the predicted deflection, %1 mm at z = %2 mm, is larger than the depth of cut %3 mm: the part would spring out of the cut, and a model linear in the forces of the nominal depth does not hold; support the part (tailstock, steady rest) or cut less</source>
         <translation>die vorhergesagte Durchbiegung, %1 mm bei z = %2 mm, ist größer als die Schnitttiefe %3 mm: Das Teil würde aus dem Schnitt federn, und ein in den Kräften der Nenntiefe lineares Modell gilt nicht; stützen Sie das Teil (Reitstock, Lünette) ab oder schneiden Sie weniger tief</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a boring bar in the data library</source>
+        <translation>&quot;%1&quot; ist keine Bohrstange in der Datenbibliothek</translation>
+    </message>
+    <message>
+        <source>the bar material of &quot;%1&quot; (type letter %2) is not in the data library: its stiffness is unknown</source>
+        <translation>der Stangenwerkstoff von &quot;%1&quot; (Kennbuchstabe %2) ist nicht in der Datenbibliothek: seine Steifigkeit ist unbekannt</translation>
+    </message>
+    <message>
+        <source>an overhang of %1 mm does not reach the bottom of the bore, %2 mm in from the right end face</source>
+        <translation>eine Auskraglänge von %1 mm reicht nicht bis zum Grund der Bohrung, %2 mm von der rechten Stirnfläche</translation>
+    </message>
+    <message>
+        <source>an overhang of %1 mm is longer than the bar &quot;%2&quot; itself (%3 mm)</source>
+        <translation>eine Auskraglänge von %1 mm ist länger als die Stange &quot;%2&quot; selbst (%3 mm)</translation>
+    </message>
+    <message>
+        <source>Boring bar %1: %2, Ø%3 mm, %4 mm overhang (L/D %5), E = %6 GPa (%7).</source>
+        <translation>Bohrstange %1: %2, Ø%3 mm, %4 mm Auskraglänge (L/D %5), E = %6 GPa (%7).</translation>
+    </message>
+    <message>
+        <source>Boring bar overhang not given: taken as the bore&apos;s depth, %1 mm, the least that reaches; a longer overhang bends more.</source>
+        <translation>Auskraglänge der Bohrstange nicht angegeben: als Tiefe der Bohrung angenommen, %1 mm, das Mindeste, das hinreicht; eine längere Auskraglänge biegt sich stärker.</translation>
+    </message>
+    <message>
+        <source>The cutting edge&apos;s offset from the bar axis (the maker&apos;s f) not given: taken as the bar&apos;s radius, %1 mm, the least it can be; the twist of the bar and the moment of the feed force grow with it.</source>
+        <translation>Versatz der Schneide von der Stangenachse (Maß f des Herstellers) nicht angegeben: als Radius der Stange angenommen, %1 mm, das Kleinstmögliche; die Verdrehung der Stange und das Moment der Vorschubkraft wachsen damit.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 has a coolant bore the designation does not size: computed as a solid bar, which underestimates its deflection.</source>
+        <translation>Bohrstange %1 hat eine Kühlmittelbohrung, deren Maße die Bezeichnung nicht angibt: als Vollstange berechnet, was ihre Durchbiegung unterschätzt.</translation>
+    </message>
+    <message>
+        <source>No boring bar given: the bores are computed as if cut by the turning tool %1, without the bending of a bar, which in a bore is often the largest term.</source>
+        <translation>Keine Bohrstange angegeben: die Bohrungen werden berechnet, als würden sie mit dem Drehwerkzeug %1 bearbeitet, ohne die Biegung einer Stange, die in einer Bohrung oft der größte Anteil ist.</translation>
     </message>
 </context>
 <context>
@@ -1957,6 +2001,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the passes cut %1 mm deep in all, but the stock is at most %2 mm thick on the radius (Ø%3 mm bar, smallest turned Ø%4 mm): the tool cuts air for %5 mm, and the forces and deflection are not those of the passes as given</source>
         <translation>die Schnitte schneiden insgesamt %1 mm tief, aber das Aufmaß ist auf dem Radius höchstens %2 mm dick (Stange Ø%3 mm, kleinster gedrehter Ø%4 mm): Das Werkzeug schneidet %5 mm Luft, und Kräfte und Durchbiegung sind nicht die der angegebenen Schnitte</translation>
     </message>
+    <message>
+        <source>the part has bores but no boring bar is given: they are computed as if cut by %1, without the bending of a bar</source>
+        <translation>das Teil hat Bohrungen, aber keine Bohrstange ist angegeben: sie werden berechnet, als würden sie mit %1 bearbeitet, ohne die Biegung einer Stange</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a boring bar in the data library; it has: %2</source>
+        <translation>&quot;%1&quot; ist keine Bohrstange in der Datenbibliothek; sie enthält: %2</translation>
+    </message>
+    <message>
+        <source>the bar material of &quot;%1&quot; (type letter %2) is not in the data library</source>
+        <translation>der Stangenwerkstoff von &quot;%1&quot; (Kennbuchstabe %2) ist nicht in der Datenbibliothek</translation>
+    </message>
+    <message>
+        <source>a boring bar is given but the part has no bore</source>
+        <translation>eine Bohrstange ist angegeben, aber das Teil hat keine Bohrung</translation>
+    </message>
+    <message>
+        <source>%1 mm is %2 times the bar&apos;s diameter, more than the %3 times the maker allows a %4 bar (%5): expect chatter; use a carbide or a larger bar, or bore from both ends</source>
+        <translation>%1 mm ist das %2-Fache des Stangendurchmessers, mehr als das %3-Fache, das der Hersteller für eine Stange aus %4 zulässt (%5): Rattern ist zu erwarten; eine Hartmetall- oder eine dickere Stange verwenden oder von beiden Seiten ausbohren</translation>
+    </message>
 </context>
 <context>
     <name>PlotExport</name>
@@ -2588,6 +2652,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>must be above absolute zero (-273.15 °C), but is %1 °C</source>
         <translation>muss über dem absoluten Nullpunkt (-273,15 °C) liegen, ist aber %1 °C</translation>
+    </message>
+    <message>
+        <source>the boring bar&apos;s insert code</source>
+        <translation>der Wendeschneidplattencode der Bohrstange</translation>
+    </message>
+    <message>
+        <source>the boring bar</source>
+        <translation>die Bohrstange</translation>
     </message>
 </context>
 <context>
@@ -3931,6 +4003,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 + %2 µm</source>
         <translation>%1 + %2 µm</translation>
+    </message>
+    <message>
+        <source>boring bar</source>
+        <translation>Bohrstange</translation>
     </message>
 </context>
 <context>
@@ -5692,6 +5768,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
         <source>Change shop conditions</source>
         <translation>Werkstattbedingungen ändern</translation>
     </message>
+    <message>
+        <source>Change boring bar</source>
+        <translation>Bohrstange ändern</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::SettingsDialog</name>
@@ -6021,6 +6101,82 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>finishing</source>
         <translation>Schlichten</translation>
+    </message>
+    <message>
+        <source>Boring bar</source>
+        <translation>Bohrstange</translation>
+    </message>
+    <message>
+        <source>The bar that cuts the inner contour. Without one the bores are computed as if cut by the turning tool, without the bending of a bar.</source>
+        <translation>Die Stange, die die Innenkontur bearbeitet. Ohne sie werden die Bohrungen berechnet, als würden sie mit dem Drehwerkzeug bearbeitet, ohne die Biegung einer Stange.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1 (Ø%2 mm, %3)</source>
+        <translation>%1 (Ø%2 mm, %3)</translation>
+    </message>
+    <message>
+        <source>material unknown</source>
+        <translation>Werkstoff unbekannt</translation>
+    </message>
+    <message>
+        <source>ISO 1832 designation of the boring bar&apos;s insert: its nose radius and the bar&apos;s entering angle give the forces in the bores.</source>
+        <translation>ISO-1832-Bezeichnung der Wendeschneidplatte der Bohrstange: ihr Eckenradius und der Einstellwinkel der Stange ergeben die Kräfte in den Bohrungen.</translation>
+    </message>
+    <message>
+        <source>Length of the bar out of its clamping to the cutting edge. &apos;bore depth&apos; takes the least that reaches the deepest bore, from the right end face.</source>
+        <translation>Länge der Stange von ihrer Einspannung bis zur Schneide. &apos;Bohrungstiefe&apos; nimmt das Mindeste, das die tiefste Bohrung von der rechten Stirnfläche aus erreicht.</translation>
+    </message>
+    <message>
+        <source>bore depth</source>
+        <translation>Bohrungstiefe</translation>
+    </message>
+    <message>
+        <source>The cutting edge&apos;s distance from the bar&apos;s axis, the maker&apos;s dimension f: the arm of the torque that twists the bar. &apos;bar radius&apos; takes the least it can be.</source>
+        <translation>Abstand der Schneide von der Stangenachse, das Maß f des Herstellers: der Hebelarm des Moments, das die Stange verdreht. &apos;Stangenradius&apos; nimmt das Kleinstmögliche.</translation>
+    </message>
+    <message>
+        <source>bar radius</source>
+        <translation>Stangenradius</translation>
+    </message>
+    <message>
+        <source>&amp;Bar:</source>
+        <translation>&amp;Stange:</translation>
+    </message>
+    <message>
+        <source>Insert (ISO 1832):</source>
+        <translation>Wendeschneidplatte (ISO 1832):</translation>
+    </message>
+    <message>
+        <source>Bar o&amp;verhang:</source>
+        <translation>&amp;Auskraglänge:</translation>
+    </message>
+    <message>
+        <source>Edge offset f:</source>
+        <translation>Schneidenversatz f:</translation>
+    </message>
+    <message>
+        <source>The part has bores: without a boring bar they are computed as if cut by the turning tool, without the bending of a bar.</source>
+        <translation>Das Teil hat Bohrungen: ohne Bohrstange werden sie berechnet, als würden sie mit dem Drehwerkzeug bearbeitet, ohne die Biegung einer Stange.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a boring bar of the data library.</source>
+        <translation>&quot;%1&quot; ist keine Bohrstange der Datenbibliothek.</translation>
+    </message>
+    <message>
+        <source>L/D %1</source>
+        <translation>L/D %1</translation>
+    </message>
+    <message>
+        <source>L/D from the reach of the bore</source>
+        <translation>L/D aus der Reichweite der Bohrung</translation>
+    </message>
+    <message>
+        <source>%1 bar, E = %2 GPa; %3; the maker allows up to %4 × D (%5).</source>
+        <translation>Stange aus %1, E = %2 GPa; %3; der Hersteller lässt bis zu %4 × D zu (%5).</translation>
     </message>
 </context>
 <context>

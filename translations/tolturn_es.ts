@@ -502,6 +502,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Base the report on what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Basar el informe en lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
     </message>
+    <message>
+        <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N</source>
+        <translation>Barra de mandrinar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; flexibilidad en la punta %6 µm/N</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -658,6 +662,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>a stiffness range needs 0 &lt; compliant &lt;= stiff, not %1 and %2</source>
         <translation>un rango de rigidez necesita 0 &lt; flexible &lt;= rígido, no %1 y %2</translation>
     </message>
+    <message>
+        <source>a boring-bar material needs its type letters, modulus, Poisson&apos;s ratio and largest overhang ratio</source>
+        <translation>un material de barra de mandrinar necesita sus letras de tipo, módulo de elasticidad, coeficiente de Poisson y mayor relación de voladizo</translation>
+    </message>
 </context>
 <context>
     <name>DeviationModel</name>
@@ -760,6 +768,42 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the predicted deflection, %1 mm at z = %2 mm, is larger than the depth of cut %3 mm: the part would spring out of the cut, and a model linear in the forces of the nominal depth does not hold; support the part (tailstock, steady rest) or cut less</source>
         <translation>la flexión prevista, %1 mm en z = %2 mm, es mayor que la profundidad de corte %3 mm: la pieza se saldría del corte, y un modelo lineal en las fuerzas de la profundidad nominal no vale; apoye la pieza (contrapunto, luneta) o corte menos</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a boring bar in the data library</source>
+        <translation>&quot;%1&quot; no es una barra de mandrinar de la biblioteca de datos</translation>
+    </message>
+    <message>
+        <source>the bar material of &quot;%1&quot; (type letter %2) is not in the data library: its stiffness is unknown</source>
+        <translation>el material de la barra de &quot;%1&quot; (letra de tipo %2) no está en la biblioteca de datos: se desconoce su rigidez</translation>
+    </message>
+    <message>
+        <source>an overhang of %1 mm does not reach the bottom of the bore, %2 mm in from the right end face</source>
+        <translation>un voladizo de %1 mm no llega al fondo del agujero, a %2 mm de la cara frontal derecha</translation>
+    </message>
+    <message>
+        <source>an overhang of %1 mm is longer than the bar &quot;%2&quot; itself (%3 mm)</source>
+        <translation>un voladizo de %1 mm es más largo que la propia barra &quot;%2&quot; (%3 mm)</translation>
+    </message>
+    <message>
+        <source>Boring bar %1: %2, Ø%3 mm, %4 mm overhang (L/D %5), E = %6 GPa (%7).</source>
+        <translation>Barra de mandrinar %1: %2, Ø%3 mm, %4 mm de voladizo (L/D %5), E = %6 GPa (%7).</translation>
+    </message>
+    <message>
+        <source>Boring bar overhang not given: taken as the bore&apos;s depth, %1 mm, the least that reaches; a longer overhang bends more.</source>
+        <translation>Voladizo de la barra de mandrinar no indicado: se toma la profundidad del agujero, %1 mm, el mínimo que llega; un voladizo mayor flexa más.</translation>
+    </message>
+    <message>
+        <source>The cutting edge&apos;s offset from the bar axis (the maker&apos;s f) not given: taken as the bar&apos;s radius, %1 mm, the least it can be; the twist of the bar and the moment of the feed force grow with it.</source>
+        <translation>Desplazamiento del filo respecto al eje de la barra (la cota f del fabricante) no indicado: se toma el radio de la barra, %1 mm, el mínimo posible; la torsión de la barra y el momento de la fuerza de avance crecen con él.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 has a coolant bore the designation does not size: computed as a solid bar, which underestimates its deflection.</source>
+        <translation>La barra de mandrinar %1 tiene un conducto de refrigerante cuyo tamaño no indica la designación: se calcula como barra maciza, lo que subestima su flexión.</translation>
+    </message>
+    <message>
+        <source>No boring bar given: the bores are computed as if cut by the turning tool %1, without the bending of a bar, which in a bore is often the largest term.</source>
+        <translation>No se ha indicado barra de mandrinar: los agujeros se calculan como si los mecanizara la herramienta de torneado %1, sin la flexión de una barra, que en un agujero suele ser el término mayor.</translation>
     </message>
 </context>
 <context>
@@ -1957,6 +2001,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the passes cut %1 mm deep in all, but the stock is at most %2 mm thick on the radius (Ø%3 mm bar, smallest turned Ø%4 mm): the tool cuts air for %5 mm, and the forces and deflection are not those of the passes as given</source>
         <translation>las pasadas cortan %1 mm de profundidad en total, pero el sobreespesor es como mucho de %2 mm en el radio (barra de Ø%3 mm, menor Ø torneado %4 mm): la herramienta corta aire durante %5 mm, y las fuerzas y la flexión no son las de las pasadas indicadas</translation>
     </message>
+    <message>
+        <source>the part has bores but no boring bar is given: they are computed as if cut by %1, without the bending of a bar</source>
+        <translation>la pieza tiene agujeros pero no se ha indicado barra de mandrinar: se calculan como si los mecanizara %1, sin la flexión de una barra</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a boring bar in the data library; it has: %2</source>
+        <translation>&quot;%1&quot; no es una barra de mandrinar de la biblioteca de datos; contiene: %2</translation>
+    </message>
+    <message>
+        <source>the bar material of &quot;%1&quot; (type letter %2) is not in the data library</source>
+        <translation>el material de la barra de &quot;%1&quot; (letra de tipo %2) no está en la biblioteca de datos</translation>
+    </message>
+    <message>
+        <source>a boring bar is given but the part has no bore</source>
+        <translation>se ha indicado una barra de mandrinar pero la pieza no tiene agujeros</translation>
+    </message>
+    <message>
+        <source>%1 mm is %2 times the bar&apos;s diameter, more than the %3 times the maker allows a %4 bar (%5): expect chatter; use a carbide or a larger bar, or bore from both ends</source>
+        <translation>%1 mm es %2 veces el diámetro de la barra, más de las %3 veces que el fabricante permite a una barra de %4 (%5): cabe esperar vibraciones; use una barra de metal duro o más gruesa, o mandrine desde ambos extremos</translation>
+    </message>
 </context>
 <context>
     <name>PlotExport</name>
@@ -2588,6 +2652,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>must be above absolute zero (-273.15 °C), but is %1 °C</source>
         <translation>debe estar por encima del cero absoluto (-273,15 °C), pero es %1 °C</translation>
+    </message>
+    <message>
+        <source>the boring bar&apos;s insert code</source>
+        <translation>el código de la plaquita de la barra de mandrinar</translation>
+    </message>
+    <message>
+        <source>the boring bar</source>
+        <translation>la barra de mandrinar</translation>
     </message>
 </context>
 <context>
@@ -3931,6 +4003,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 + %2 µm</source>
         <translation>%1 + %2 µm</translation>
+    </message>
+    <message>
+        <source>boring bar</source>
+        <translation>barra de mandrinar</translation>
     </message>
 </context>
 <context>
@@ -5692,6 +5768,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
         <source>Change shop conditions</source>
         <translation>Cambiar condiciones del taller</translation>
     </message>
+    <message>
+        <source>Change boring bar</source>
+        <translation>Cambiar barra de mandrinar</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::SettingsDialog</name>
@@ -6021,6 +6101,82 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>finishing</source>
         <translation>acabado</translation>
+    </message>
+    <message>
+        <source>Boring bar</source>
+        <translation>Barra de mandrinar</translation>
+    </message>
+    <message>
+        <source>The bar that cuts the inner contour. Without one the bores are computed as if cut by the turning tool, without the bending of a bar.</source>
+        <translation>La barra que mecaniza el contorno interior. Sin ella, los agujeros se calculan como si los mecanizara la herramienta de torneado, sin la flexión de una barra.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>%1 (Ø%2 mm, %3)</source>
+        <translation>%1 (Ø%2 mm, %3)</translation>
+    </message>
+    <message>
+        <source>material unknown</source>
+        <translation>material desconocido</translation>
+    </message>
+    <message>
+        <source>ISO 1832 designation of the boring bar&apos;s insert: its nose radius and the bar&apos;s entering angle give the forces in the bores.</source>
+        <translation>Designación ISO 1832 de la plaquita de la barra de mandrinar: su radio de punta y el ángulo de posición de la barra dan las fuerzas en los agujeros.</translation>
+    </message>
+    <message>
+        <source>Length of the bar out of its clamping to the cutting edge. &apos;bore depth&apos; takes the least that reaches the deepest bore, from the right end face.</source>
+        <translation>Longitud de la barra desde su amarre hasta el filo. &apos;profundidad del agujero&apos; toma el mínimo que llega al agujero más profundo, desde la cara frontal derecha.</translation>
+    </message>
+    <message>
+        <source>bore depth</source>
+        <translation>profundidad del agujero</translation>
+    </message>
+    <message>
+        <source>The cutting edge&apos;s distance from the bar&apos;s axis, the maker&apos;s dimension f: the arm of the torque that twists the bar. &apos;bar radius&apos; takes the least it can be.</source>
+        <translation>Distancia del filo al eje de la barra, la cota f del fabricante: el brazo del par que tuerce la barra. &apos;radio de la barra&apos; toma el mínimo posible.</translation>
+    </message>
+    <message>
+        <source>bar radius</source>
+        <translation>radio de la barra</translation>
+    </message>
+    <message>
+        <source>&amp;Bar:</source>
+        <translation>&amp;Barra:</translation>
+    </message>
+    <message>
+        <source>Insert (ISO 1832):</source>
+        <translation>Plaquita (ISO 1832):</translation>
+    </message>
+    <message>
+        <source>Bar o&amp;verhang:</source>
+        <translation>&amp;Voladizo de la barra:</translation>
+    </message>
+    <message>
+        <source>Edge offset f:</source>
+        <translation>Desplazamiento del filo f:</translation>
+    </message>
+    <message>
+        <source>The part has bores: without a boring bar they are computed as if cut by the turning tool, without the bending of a bar.</source>
+        <translation>La pieza tiene agujeros: sin barra de mandrinar se calculan como si los mecanizara la herramienta de torneado, sin la flexión de una barra.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a boring bar of the data library.</source>
+        <translation>&quot;%1&quot; no es una barra de mandrinar de la biblioteca de datos.</translation>
+    </message>
+    <message>
+        <source>L/D %1</source>
+        <translation>L/D %1</translation>
+    </message>
+    <message>
+        <source>L/D from the reach of the bore</source>
+        <translation>L/D según el alcance del agujero</translation>
+    </message>
+    <message>
+        <source>%1 bar, E = %2 GPa; %3; the maker allows up to %4 × D (%5).</source>
+        <translation>Barra de %1, E = %2 GPa; %3; el fabricante permite hasta %4 × D (%5).</translation>
     </message>
 </context>
 <context>

@@ -294,6 +294,11 @@ Diagnostics ProjectDocument::setTool(const Tool &tool)
     return editField(&Project::tool, tool, tr("Change tool"));
 }
 
+Diagnostics ProjectDocument::setBoringTool(const std::optional<Tool> &tool)
+{
+    return editField(&Project::boringTool, tool, tr("Change boring bar"));
+}
+
 Diagnostics ProjectDocument::setCuttingModel(const CuttingModel &model)
 {
     return editField(&Project::cuttingModel, model, tr("Change force model"));

@@ -66,6 +66,7 @@ public:
     Diagnostics setMaterial(const QString &materialId);
     Diagnostics setMachine(const QString &machineId);
     Diagnostics setTool(const Tool &tool);
+    Diagnostics setBoringTool(const std::optional<Tool> &tool); // nullopt: no boring bar
     Diagnostics setCuttingModel(const CuttingModel &model);
     Diagnostics setEnvironment(const Environment &environment);
     Diagnostics setClamping(const Clamping &clamping);

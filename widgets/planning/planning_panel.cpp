@@ -47,7 +47,8 @@ QColor constraintColor(const QString &keyword)
                                                   {QStringLiteral("force"), QColor(0xe3, 0x77, 0xc2)},
                                                   {QStringLiteral("spindle_speed"), QColor(0x17, 0xbe, 0xcf)},
                                                   {QStringLiteral("tool_life"), QColor(0xbc, 0xbd, 0x22)},
-                                                  {QStringLiteral("roughing_depth"), QColor(0x7f, 0x7f, 0x7f)}};
+                                                  {QStringLiteral("roughing_depth"), QColor(0x7f, 0x7f, 0x7f)},
+                                                  {QStringLiteral("bar_overhang"), QColor(0x1f, 0x77, 0xb4)}};
     const auto it = colors.find(keyword);
     return it == colors.end() ? QColor(Qt::gray) : it->second;
 }
@@ -133,17 +134,20 @@ void PlanningPanel::buildControls()
     for (QWidget *w :
          std::initializer_list<QWidget *>{m_data, m_objective, m_plane, m_run, m_cancel, m_progress, m_apply})
         top->addWidget(w);
-    auto *constraints = new QHBoxLayout;
-    constraints->addWidget(new QLabel(tr("Constraints:"), this));
+    // Two rows of switches, so that the dock stays narrow enough for a laptop screen.
+    auto *constraints = new QGridLayout;
+    constraints->addWidget(new QLabel(tr("Constraints:"), this), 0, 0);
+    const auto perRow = static_cast<int>((planningConstraintKeywords().size() + 1) / 2);
     for (const QString &keyword : planningConstraintKeywords()) {
         auto *box = new QCheckBox(QString(keyword).replace(QLatin1Char('_'), QLatin1Char(' ')), this);
         box->setProperty("constraint", keyword);
         box->setToolTip(tr("Switch the %1 constraint on or off (docs/planning.md §2)").arg(keyword));
         connect(box, &QCheckBox::toggled, this, &PlanningPanel::settingsEdited);
-        constraints->addWidget(box);
+        const auto index = static_cast<int>(m_constraints.size());
+        constraints->addWidget(box, index / perRow, 1 + index % perRow);
         m_constraints.push_back(box);
     }
-    constraints->addStretch();
+    constraints->setColumnStretch(perRow + 1, 1);
     m_plan->setWordWrap(true);
     m_plan->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_plan->setAlignment(Qt::AlignTop | Qt::AlignLeft);
@@ -196,7 +200,10 @@ void PlanningPanel::buildControls()
     m_tabs->addTab(m_clamping, tr("Clamping"));
     m_tabs->addTab(m_compensation, tr("Compensation"));
     m_tabs->addTab(gcodeTab, tr("G-code"));
+    constraints->setVerticalSpacing(0);
     auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(4);
     layout->addLayout(top);
     layout->addLayout(constraints);
     layout->addWidget(m_tabs, 1);

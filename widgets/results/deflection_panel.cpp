@@ -148,10 +148,15 @@ void DeflectionPanel::addContributionCurves(LinePlot &plot, const DeviationResul
          1.5},
         {tr("thermal"), [](const Contributions &c) { return c.thermal_mm; }, QColor(0xd6, 0x27, 0x28), Qt::DashDotLine,
          1.5},
+        {tr("boring bar"), [](const Contributions &c) { return c.boringBar_mm; }, QColor(0x94, 0x67, 0xbd),
+         Qt::DashLine, 1.5},
     };
+    const bool bar = side == ContourSide::Inner && result.inputs && result.inputs->boring;
     for (const CurveSpec &spec : specs) {
         if (!radial && (spec.name == tr("toolpost") || spec.name == tr("thermal")))
             continue; // radial-only terms
+        if (spec.name == tr("boring bar") && !bar)
+            continue; // the bar cuts the bores only
         QVector<double> x;
         QVector<double> y;
         for (const FeatureDeviation &f : result.features) {

@@ -116,6 +116,7 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
     column->addWidget(createPartGroup());
     column->addWidget(m_stiffness);
     column->addWidget(createToolGroup());
+    column->addWidget(createBoringGroup());
     column->addWidget(createClampingGroup());
     column->addWidget(createPassesGroup());
     column->addWidget(m_forceModel);
@@ -230,6 +231,63 @@ QWidget *SetupPanel::createToolGroup()
     return group;
 }
 
+// The boring bar that cuts the bores (docs/model.md §3.1): none, or a bar of the data library with
+// its insert, overhang and the cutting edge's offset from its axis.
+QWidget *SetupPanel::createBoringGroup()
+{
+    auto *group = new QGroupBox(tr("Boring bar"));
+    auto *form = new QFormLayout(group);
+    m_boringBar = new QComboBox;
+    m_boringBar->setObjectName(QStringLiteral("boringBar"));
+    m_boringBar->setToolTip(tr("The bar that cuts the inner contour. Without one the bores are computed as if cut by "
+                               "the turning tool, without the bending of a bar."));
+    m_boringBar->addItem(tr("none"), QString());
+    const DataLibrary &library = DataLibrary::builtIn();
+    for (const HolderData &h : library.holders()) {
+        if (!h.isBoringBar() || !h.barDiameter_mm)
+            continue;
+        const BoringBarMaterialData *m = library.boringBarMaterial(h);
+        m_boringBar->addItem(
+            tr("%1 (Ø%2 mm, %3)")
+                .arg(h.code, formatNumber(h.barDiameter_mm->value), m ? m->id : tr("material unknown")),
+            h.code);
+    }
+    m_boringBar->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_boringBar->setMinimumContentsLength(14);
+    m_boringInsert = new QLineEdit;
+    m_boringInsert->setObjectName(QStringLiteral("boringInsert"));
+    m_boringInsert->setPlaceholderText(QStringLiteral("CCMT 09T304"));
+    m_boringInsert->setToolTip(tr("ISO 1832 designation of the boring bar's insert: its nose radius and the bar's "
+                                  "entering angle give the forces in the bores."));
+    m_boringOverhang = new LengthSpinBox(
+        2000.0, tr("Length of the bar out of its clamping to the cutting edge. 'bore depth' takes the least "
+                   "that reaches the deepest bore, from the right end face."));
+    m_boringOverhang->setObjectName(QStringLiteral("boringOverhang"));
+    m_boringOverhang->setSpecialValueText(tr("bore depth"));
+    m_boringEdgeOffset = new LengthSpinBox(
+        500.0, tr("The cutting edge's distance from the bar's axis, the maker's dimension f: the arm of the torque "
+                  "that twists the bar. 'bar radius' takes the least it can be."));
+    m_boringEdgeOffset->setObjectName(QStringLiteral("boringEdgeOffset"));
+    m_boringEdgeOffset->setSpecialValueText(tr("bar radius"));
+    m_boringSummary = new QLabel;
+    m_boringSummary->setObjectName(QStringLiteral("boringSummary"));
+    m_boringSummary->setWordWrap(true);
+    form->addRow(tr("&Bar:"), m_boringBar);
+    form->addRow(tr("Insert (ISO 1832):"), m_boringInsert);
+    form->addRow(tr("Bar o&verhang:"), m_boringOverhang);
+    form->addRow(tr("Edge offset f:"), m_boringEdgeOffset);
+    form->addRow(QString(), m_boringSummary);
+    setProjectField(*m_boringBar, QStringLiteral("boring_tool.holder"));
+    setProjectField(*m_boringInsert, QStringLiteral("boring_tool.insert"));
+    setProjectField(*m_boringOverhang, QStringLiteral("boring_tool.overhang_mm"));
+    setProjectField(*m_boringEdgeOffset, QStringLiteral("boring_tool.edge_offset_mm"));
+    connect(m_boringBar, &QComboBox::activated, this, &SetupPanel::applyBoringTool);
+    connect(m_boringInsert, &QLineEdit::editingFinished, this, &SetupPanel::applyBoringTool);
+    connect(m_boringOverhang, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
+    connect(m_boringEdgeOffset, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
+    return group;
+}
+
 QWidget *SetupPanel::createClampingGroup()
 {
     auto *group = new QGroupBox(tr("Clamping"));
@@ -337,6 +395,7 @@ void SetupPanel::showValues()
                                                  .arg(insert.insert->noseRadius_mm)
                                            : QString());
     m_overhang->setMillimetres(p.tool.overhang_mm.value_or(0.0));
+    showBoringTool(p);
     m_clamping->setCurrentIndex(m_clamping->findData(static_cast<int>(p.clamping.method)));
     m_clampedLength->setMillimetres(p.clamping.clampedLength_mm);
     m_clampedLength->setEnabled(p.clamping.method != ClampingMethod::BetweenCentres);
@@ -419,6 +478,68 @@ void SetupPanel::applyTool()
     const double overhang_mm = m_overhang->millimetres();
     tool.overhang_mm = overhang_mm != 0.0 ? std::optional<double>(overhang_mm) : std::nullopt;
     showOutcome(m_document.setTool(tool));
+}
+
+void SetupPanel::showBoringTool(const Project &p)
+{
+    const bool bar = p.boringTool.has_value();
+    selectData(m_boringBar, bar ? p.boringTool->holderCode : QString());
+    m_boringInsert->setText(bar ? p.boringTool->insertCode : QString());
+    m_boringOverhang->setMillimetres(bar ? p.boringTool->overhang_mm.value_or(0.0) : 0.0);
+    m_boringEdgeOffset->setMillimetres(bar ? p.boringTool->edgeOffset_mm.value_or(0.0) : 0.0);
+    for (QWidget *w : std::initializer_list<QWidget *>{m_boringInsert, m_boringOverhang, m_boringEdgeOffset})
+        w->setEnabled(bar);
+    const DataLibrary &library = DataLibrary::builtIn();
+    const HolderData *h = bar ? library.holder(p.boringTool->holderCode) : nullptr;
+    const BoringBarMaterialData *m = h != nullptr ? library.boringBarMaterial(*h) : nullptr;
+    if (!bar) {
+        m_boringSummary->setText(p.part.inner.empty()
+                                     ? QString()
+                                     : tr("The part has bores: without a boring bar they are computed as if cut by "
+                                          "the turning tool, without the bending of a bar."));
+    } else if (h == nullptr || m == nullptr || !h->barDiameter_mm) {
+        m_boringSummary->setText(tr("\"%1\" is not a boring bar of the data library.").arg(p.boringTool->holderCode));
+    } else {
+        const QString overhang =
+            p.boringTool->overhang_mm
+                ? tr("L/D %1").arg(QString::number(*p.boringTool->overhang_mm / h->barDiameter_mm->value, 'f', 1))
+                : tr("L/D from the reach of the bore");
+        m_boringSummary->setText(
+            tr("%1 bar, E = %2 GPa; %3; the maker allows up to %4 × D (%5).")
+                .arg(m->id, formatNumber(m->youngsModulus_MPa.value / 1000.0), overhang,
+                     formatNumber(m->maxOverhangRatio.value),
+                     library.sourceText(m->maxOverhangRatio.source).section(QLatin1Char(','), 0, 0)));
+    }
+}
+
+void SetupPanel::applyBoringTool()
+{
+    if (m_updating)
+        return;
+    const QString code = m_boringBar->currentData().toString();
+    if (code.isEmpty()) {
+        showOutcome(m_document.setBoringTool(std::nullopt));
+        return;
+    }
+    const std::optional<Tool> &before = m_document.project().boringTool;
+    Tool tool = before.value_or(Tool{});
+    tool.holderCode = code;
+    // A new bar starts with the turning tool's insert; the planner changes it where it differs.
+    const QString typed = m_boringInsert->text().trimmed();
+    tool.insertCode = typed.isEmpty() ? m_document.project().tool.insertCode : typed;
+    const InsertParseResult insert = parseInsertCode(tool.insertCode);
+    if (!insert.insert) {
+        showOutcome(insert.diagnostics);
+        return;
+    }
+    tool.insertCode = insert.insert->code;
+    const double overhang_mm = m_boringOverhang->millimetres();
+    tool.overhang_mm = overhang_mm != 0.0 ? std::optional<double>(overhang_mm) : std::nullopt;
+    const double offset_mm = m_boringEdgeOffset->millimetres();
+    tool.edgeOffset_mm = offset_mm != 0.0 ? std::optional<double>(offset_mm) : std::nullopt;
+    if (before && tool == *before)
+        return;
+    showOutcome(m_document.setBoringTool(tool));
 }
 
 void SetupPanel::applyClamping()

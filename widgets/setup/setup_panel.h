@@ -18,6 +18,7 @@ namespace tolturn {
 
 class LengthSpinBox;
 
+struct Project;
 class ProjectDocument;
 class ForceModelEditor;
 class StiffnessEditor;
@@ -47,6 +48,16 @@ public:
     [[nodiscard]] LengthSpinBox *clampedLengthBox() const { return m_clampedLength; }
 
     [[nodiscard]] LengthSpinBox *overhangBox() const { return m_overhang; }
+
+    [[nodiscard]] QComboBox *boringBarBox() const { return m_boringBar; }
+
+    [[nodiscard]] QLineEdit *boringInsertEdit() const { return m_boringInsert; }
+
+    [[nodiscard]] LengthSpinBox *boringOverhangBox() const { return m_boringOverhang; }
+
+    [[nodiscard]] LengthSpinBox *boringEdgeOffsetBox() const { return m_boringEdgeOffset; }
+
+    [[nodiscard]] QLabel *boringBarSummary() const { return m_boringSummary; }
 
     [[nodiscard]] StiffnessEditor *stiffnessEditor() const { return m_stiffness; }
 
@@ -81,6 +92,9 @@ private:
     void applyMaterial();
     void applyMachine();
     void applyTool();
+    void applyBoringTool();
+    void showBoringTool(const Project &p);
+    QWidget *createBoringGroup();
     void applyClamping();
     void applyPassValue(std::size_t pass, int column);
     void applyStiffness();
@@ -104,6 +118,11 @@ private:
     QComboBox *m_clamping;
     LengthSpinBox *m_clampedLength;
     LengthSpinBox *m_overhang;
+    QComboBox *m_boringBar = nullptr;
+    QLineEdit *m_boringInsert = nullptr;
+    LengthSpinBox *m_boringOverhang = nullptr;
+    LengthSpinBox *m_boringEdgeOffset = nullptr;
+    QLabel *m_boringSummary = nullptr;
     QGridLayout *m_passGrid = nullptr;
     std::vector<std::vector<QDoubleSpinBox *>> m_passBoxes;
     std::vector<QLabel *> m_passLabels;
