@@ -4008,6 +4008,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>boring bar</source>
         <translation>Bohrstange</translation>
     </message>
+    <message>
+        <source> · bores: bar %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N at its tip</source>
+        <translation> · Bohrungen: Stange %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N an der Spitze</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::DiagnosticsPanel</name>

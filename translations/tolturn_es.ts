@@ -4008,6 +4008,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>boring bar</source>
         <translation>barra de mandrinar</translation>
     </message>
+    <message>
+        <source> · bores: bar %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N at its tip</source>
+        <translation> · agujeros: barra %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N en la punta</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::DiagnosticsPanel</name>

@@ -56,7 +56,8 @@ QJsonObject contributionsJson(const Contributions &c, bool radial)
 {
     QJsonObject o{{QStringLiteral("total"), c.total_mm() * kUmPerMm},
                   {QStringLiteral("spindle_chuck"), c.spindleChuck_mm * kUmPerMm},
-                  {QStringLiteral("workpiece"), c.workpiece_mm * kUmPerMm}};
+                  {QStringLiteral("workpiece"), c.workpiece_mm * kUmPerMm},
+                  {QStringLiteral("boring_bar"), c.boringBar_mm * kUmPerMm}};
     if (radial) {
         o.insert(QStringLiteral("toolpost"), c.toolpost_mm * kUmPerMm);
         o.insert(QStringLiteral("thermal"), c.thermal_mm * kUmPerMm);
@@ -74,6 +75,24 @@ QJsonObject stationJson(const Station &st)
             {QStringLiteral("radius_error_um"), st.radiusError_mm * kUmPerMm},
             {QStringLiteral("diameter_error_um"), 2.0 * st.radiusError_mm * kUmPerMm},
             {QStringLiteral("section_rotation_urad"), st.sectionRotation_rad * 1e6}};
+}
+
+// The boring bar and its forces (docs/model.md §3.1), as `deflect --json` gives them.
+QJsonObject boringBarJson(const BoringInputs &b)
+{
+    return {{QStringLiteral("holder"), b.holderCode},
+            {QStringLiteral("material"), b.barMaterial},
+            {QStringLiteral("diameter_mm"), b.bar.diameter_mm},
+            {QStringLiteral("overhang_mm"), b.bar.overhang_mm},
+            {QStringLiteral("overhang_ratio"), b.bar.overhangRatio()},
+            {QStringLiteral("max_overhang_ratio"),
+             b.maxOverhangRatio ? QJsonValue(b.maxOverhangRatio->value) : QJsonValue(QJsonValue::Null)},
+            {QStringLiteral("edge_offset_mm"), b.bar.edgeOffset_mm},
+            {QStringLiteral("youngs_modulus_MPa"), b.bar.material.youngsModulus_MPa},
+            {QStringLiteral("tip_compliance_um_per_N"), b.compliance.transverse_mm_per_N() * kUmPerMm},
+            {QStringLiteral("forces_N"), QJsonObject{{QStringLiteral("tangential"), b.forces.tangential_N},
+                                                     {QStringLiteral("axial"), b.forces.axial_N},
+                                                     {QStringLiteral("radial"), b.forces.radial_N}}}};
 }
 
 QJsonObject deviationJson(const QString &file, const Project &project, const DeviationResult &r)
@@ -99,26 +118,30 @@ QJsonObject deviationJson(const QString &file, const Project &project, const Dev
     QJsonArray warnings;
     for (const Diagnostic &d : r.diagnostics)
         warnings.append(diagnosticJson(d));
-    return {{QStringLiteral("file"), file},
-            {QStringLiteral("material"), project.materialId},
-            {QStringLiteral("clamping"), keyword(project.clamping.method)},
-            {QStringLiteral("force_model"), in.forceModel},
-            {QStringLiteral("pass"), QJsonObject{{QStringLiteral("index"), in.passIndex},
-                                                 {QStringLiteral("kind"), keyword(in.pass.kind)},
-                                                 {QStringLiteral("cutting_speed_m_min"), in.pass.cuttingSpeed_m_min},
-                                                 {QStringLiteral("feed_mm_rev"), in.pass.feed_mm_rev},
-                                                 {QStringLiteral("depth_of_cut_mm"), in.pass.depthOfCut_mm}}},
-            {QStringLiteral("forces_N"), QJsonObject{{QStringLiteral("tangential"), in.forces.tangential_N},
-                                                     {QStringLiteral("axial"), in.forces.axial_N},
-                                                     {QStringLiteral("radial"), in.forces.radial_N}}},
-            {QStringLiteral("max_power_kW"), r.maxPower_kW},
-            {QStringLiteral("max_torque_Nm"), r.maxTorque_Nm},
-            {QStringLiteral("theoretical_Ra_um"), r.theoreticalRa_um},
-            {QStringLiteral("theoretical_Rz_um"), r.theoreticalRz_um},
-            {QStringLiteral("notes"), QJsonArray::fromStringList(in.notes)},
-            {QStringLiteral("warnings"), warnings},
-            {QStringLiteral("features"), features},
-            {QStringLiteral("faces"), faces}};
+    QJsonObject json{
+        {QStringLiteral("file"), file},
+        {QStringLiteral("material"), project.materialId},
+        {QStringLiteral("clamping"), keyword(project.clamping.method)},
+        {QStringLiteral("force_model"), in.forceModel},
+        {QStringLiteral("pass"), QJsonObject{{QStringLiteral("index"), in.passIndex},
+                                             {QStringLiteral("kind"), keyword(in.pass.kind)},
+                                             {QStringLiteral("cutting_speed_m_min"), in.pass.cuttingSpeed_m_min},
+                                             {QStringLiteral("feed_mm_rev"), in.pass.feed_mm_rev},
+                                             {QStringLiteral("depth_of_cut_mm"), in.pass.depthOfCut_mm}}},
+        {QStringLiteral("forces_N"), QJsonObject{{QStringLiteral("tangential"), in.forces.tangential_N},
+                                                 {QStringLiteral("axial"), in.forces.axial_N},
+                                                 {QStringLiteral("radial"), in.forces.radial_N}}},
+        {QStringLiteral("max_power_kW"), r.maxPower_kW},
+        {QStringLiteral("max_torque_Nm"), r.maxTorque_Nm},
+        {QStringLiteral("theoretical_Ra_um"), r.theoreticalRa_um},
+        {QStringLiteral("theoretical_Rz_um"), r.theoreticalRz_um},
+        {QStringLiteral("notes"), QJsonArray::fromStringList(in.notes)},
+        {QStringLiteral("warnings"), warnings},
+        {QStringLiteral("features"), features},
+        {QStringLiteral("faces"), faces}};
+    if (in.boring)
+        json.insert(QStringLiteral("boring_bar"), boringBarJson(*in.boring));
+    return json;
 }
 
 // The learned correction at every station and the predicted radius error with it; the model's
@@ -195,6 +218,14 @@ void printDeviationText(QTextStream &out, const DeviationResult &r)
                     QString::number(r.theoreticalRz_um, 'f', 2), QString::number(r.maxPower_kW, 'f', 2),
                     QString::number(r.maxTorque_Nm, 'f', 1))
         << '\n';
+    if (in.boring)
+        out << CommandLine::tr("Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N")
+                   .arg(in.boring->holderCode, in.boring->barMaterial,
+                        QString::number(in.boring->forces.tangential_N, 'f', 1),
+                        QString::number(in.boring->forces.axial_N, 'f', 1),
+                        QString::number(in.boring->forces.radial_N, 'f', 1),
+                        QString::number(in.boring->compliance.transverse_mm_per_N() * kUmPerMm, 'g', 3))
+            << '\n';
     for (const QString &note : in.notes)
         out << CommandLine::tr("note: ") << note << '\n';
     out << CommandLine::tr(

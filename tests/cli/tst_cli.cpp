@@ -187,6 +187,58 @@ private Q_SLOTS:
                  qPrintable(QStringLiteral("%1 vs %2").arg(midSpan).arg(reference_um)));
     }
 
+    // The bushing's bore, bored with a Ø25 steel bar at 95 mm overhang (E = 190 000 MPa,
+    // nu = 0.269 in holders.json): under a given radial load of 200 N alone the bar's part of the
+    // deviation is the Timoshenko cantilever 200 (L^3/3EI + L/(kappa G A)) at every station.
+    void deflectBoringBar()
+    {
+        const Run r = runCli({QStringLiteral("deflect"), QStringLiteral("--json"), QStringLiteral("--load"),
+                              QStringLiteral("200,0,0"), example("bushing-bore-h7.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject bar = o.value(QStringLiteral("boring_bar")).toObject();
+        QCOMPARE(bar.value(QStringLiteral("holder")).toString(), QStringLiteral("S25T-PCLNR12"));
+        QCOMPARE(bar.value(QStringLiteral("overhang_ratio")).toDouble(), 95.0 / 25.0);
+        const double pi = 3.14159265358979, E = 190000.0, nu = 0.269, d = 25.0, L = 95.0;
+        const double I = pi * d * d * d * d / 64, A = pi * d * d / 4, G = E / (2 * (1 + nu));
+        const double kappa = 6 * (1 + nu) / (7 + 6 * nu);
+        const double reference_um = 1000.0 * 200.0 * (L * L * L / (3 * E * I) + L / (kappa * G * A));
+        int inner = 0;
+        for (const QJsonValue f : o.value(QStringLiteral("features")).toArray()) {
+            const bool isInner = f.toObject().value(QStringLiteral("side")).toString() == QLatin1String("inner");
+            for (const QJsonValue st : f.toObject().value(QStringLiteral("stations")).toArray()) {
+                const double v = st.toObject()
+                                     .value(QStringLiteral("radial_um"))
+                                     .toObject()
+                                     .value(QStringLiteral("boring_bar"))
+                                     .toDouble();
+                QVERIFY2(std::abs(v - (isInner ? reference_um : 0.0)) < 1e-6 * reference_um,
+                         qPrintable(QStringLiteral("%1 vs %2").arg(v).arg(reference_um)));
+                inner += isInner ? 1 : 0;
+            }
+        }
+        QVERIFY(inner > 0);
+        const Run text = runCli({QStringLiteral("deflect"), example("bushing-bore-h7.tolturn")});
+        QVERIFY2(text.out.contains(QStringLiteral("Boring bar S25T-PCLNR12 (steel)")), qPrintable(text.out));
+    }
+
+    // An overhang beyond the maker's 4 x D for a steel bar is a warning of check.
+    void checkBoringBarOverhang()
+    {
+        QFile source(example("bushing-bore-h7.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QByteArray text = source.readAll();
+        text.replace("\"overhang_mm\": 95", "\"overhang_mm\": 110");
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("long-bar.tolturn"));
+        QVERIFY(writeFile(path, text));
+        const Run r = runCli({QStringLiteral("check"), path});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains(QStringLiteral("warning: boring_tool.overhang_mm: 110 mm is 4.4 times the bar's "
+                                               "diameter, more than the 4 times the maker allows a steel bar")),
+                 qPrintable(r.err));
+    }
+
     void deflectText()
     {
         const Run r = runCli({QStringLiteral("deflect"), example("stepped-shaft-chuck.tolturn")});

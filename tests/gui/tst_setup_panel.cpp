@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Set-up dock driven as a user drives it: each change is one undoable edit, the deflection
 // curves follow it, and a refused value is put back with a message naming the field and value.
+#include "tests/gui/screenshot.h"
+
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
 #include "widgets/common/length_spin_box.h"
@@ -12,7 +14,9 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QLineEdit>
+#include <QScrollArea>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -50,6 +54,15 @@ double journalEndDeflection_mm(const DeviationResult &result)
     return std::nan("");
 }
 
+// The boring bar's radial part of the deviation at the bore's first tool position.
+double innerBarDeflection_mm(const DeviationResult &result)
+{
+    for (const FeatureDeviation &f : result.features)
+        if (f.side == ContourSide::Inner)
+            return f.stations.front().radial.boringBar_mm;
+    return std::nan("");
+}
+
 } // namespace
 
 class TestSetupPanel : public QObject {
@@ -71,6 +84,47 @@ private Q_SLOTS:
         QCOMPARE(s->passBox(8, 1)->value(), 0.1); // finishing feed
         QVERIFY(w.fileController()->close());
         QVERIFY(!s->isEnabled());
+    }
+
+    // The bushing's bore is bored with a bar: the dock shows it with its L/D against the maker's,
+    // a longer overhang bends it more, "none" takes it away, and each is one undoable edit.
+    void boringBarIsChosenAndUndone()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("bushing-bore-h7.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        QCOMPARE(s->boringBarBox()->currentData().toString(), QStringLiteral("S25T-PCLNR12"));
+        QCOMPARE(s->boringOverhangBox()->millimetres(), 95.0);
+        QVERIFY2(s->boringBarSummary()->text().contains(QStringLiteral("L/D 3.8")),
+                 qPrintable(s->boringBarSummary()->text()));
+        QVERIFY(s->boringBarSummary()->text().contains(QStringLiteral("4 × D")));
+        s->resize(460, 700);
+        s->findChild<QScrollArea *>()->ensureWidgetVisible(s->boringBarSummary());
+        test::saveScreenshot(*s, "setup-boring-bar.png");
+        const double at95 = innerBarDeflection_mm(w.deflectionPanel()->result());
+        QVERIFY(at95 > 0.0);
+        w.deflectionPanel()->setSide(ContourSide::Inner);
+        w.deflectionPanel()->setQuantity(DeflectionPanel::Quantity::RadialContributions);
+        test::saveScreenshot(*w.deflectionPanel(), "deflection-boring-bar.png");
+
+        s->boringOverhangBox()->setMillimetres(110.0);
+        QCOMPARE(w.document()->project().boringTool->overhang_mm, std::optional<double>(110.0));
+        // A cantilever's tip under a tip force: bending grows with L^3, shear with L.
+        const double at110 = innerBarDeflection_mm(w.deflectionPanel()->result());
+        QVERIFY2(at110 > at95 * std::pow(110.0 / 95.0, 2.5),
+                 qPrintable(QStringLiteral("%1 vs %2").arg(at110).arg(at95)));
+        QVERIFY(s->boringBarSummary()->text().contains(QStringLiteral("L/D 4.4")));
+
+        choose(s->boringBarBox(), QString());
+        QVERIFY(!w.document()->project().boringTool);
+        QCOMPARE(innerBarDeflection_mm(w.deflectionPanel()->result()), 0.0);
+        QVERIFY(!s->boringOverhangBox()->isEnabled());
+
+        w.document()->undoStack()->undo();
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->project().boringTool->overhang_mm, std::optional<double>(95.0));
+        QCOMPARE(s->boringBarBox()->currentData().toString(), QStringLiteral("S25T-PCLNR12"));
+        QCOMPARE(innerBarDeflection_mm(w.deflectionPanel()->result()), at95);
     }
 
     void tailstockChangesTheCurvesAndUndoes()

@@ -102,6 +102,7 @@ void DeflectionPanel::setSide(ContourSide side)
 {
     m_side = side;
     m_sideBox->setCurrentIndex(side == ContourSide::Outer ? 0 : 1);
+    m_summary->setText(summaryText()); // the bores' own tool, when there is one
     redraw();
 }
 
@@ -318,11 +319,25 @@ QString DeflectionPanel::summaryText() const
         return {};
     const TurningInputs &in = *m_result.inputs;
     return tr("Forces (%1): Fc %2 N, Ff %3 N, Fp %4 N · pass %5: vc %6 m/min, f %7 mm/rev, ap %8 mm · Ra %9 µm")
-        .arg(forceModelName(in.forceModel), QString::number(in.forces.tangential_N, 'f', 0),
-             QString::number(in.forces.axial_N, 'f', 0), QString::number(in.forces.radial_N, 'f', 0),
-             QString::number(in.passIndex + 1), formatNumber(in.pass.cuttingSpeed_m_min),
-             formatNumber(in.pass.feed_mm_rev), formatNumber(in.pass.depthOfCut_mm),
-             QString::number(m_result.theoreticalRa_um, 'f', 2));
+               .arg(forceModelName(in.forceModel), QString::number(in.forces.tangential_N, 'f', 0),
+                    QString::number(in.forces.axial_N, 'f', 0), QString::number(in.forces.radial_N, 'f', 0),
+                    QString::number(in.passIndex + 1), formatNumber(in.pass.cuttingSpeed_m_min),
+                    formatNumber(in.pass.feed_mm_rev), formatNumber(in.pass.depthOfCut_mm),
+                    QString::number(m_result.theoreticalRa_um, 'f', 2)) +
+           boringSummary(in);
+}
+
+// In the bores, the boring bar's own forces and its tip compliance (docs/model.md §3.1).
+QString DeflectionPanel::boringSummary(const TurningInputs &in) const
+{
+    if (m_side != ContourSide::Inner || !in.boring)
+        return {};
+    const BoringInputs &b = *in.boring;
+    return tr(" · bores: bar %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N at its tip")
+        .arg(b.holderCode, QString::number(b.bar.overhangRatio(), 'f', 1),
+             QString::number(b.forces.tangential_N, 'f', 0), QString::number(b.forces.axial_N, 'f', 0),
+             QString::number(b.forces.radial_N, 'f', 0),
+             QString::number(b.compliance.transverse_mm_per_N() * 1000.0, 'g', 3));
 }
 
 void DeflectionPanel::updateTexts()

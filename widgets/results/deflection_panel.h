@@ -75,6 +75,7 @@ public:
     [[nodiscard]] LinePlot *plot() const { return m_plot; }
 
     [[nodiscard]] QString summaryText() const;
+    [[nodiscard]] QString boringSummary(const TurningInputs &in) const;
 
 private:
     void redraw();
