@@ -10,7 +10,7 @@ build=${1:-build/dev}
 out=${2:-docs/images}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-for test in tst_planning_panel tst_feature_panel tst_cad_import tst_main_window tst_measurements_panel; do
+for test in tst_planning_panel tst_feature_panel tst_cad_import tst_main_window tst_measurements_panel tst_setup_panel; do
     TOLTURN_SCREENSHOTS="$out" xvfb-run -a -s "-screen 0 1680x1050x24" "$build/tests/$test" >/dev/null
 done
 QT_QPA_PLATFORM=offscreen "$build/app/tolturn-cli" report --planner "A. Planner" -o "$out/report.pdf" \

@@ -506,6 +506,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N</source>
         <translation>Bohrstange %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; Nachgiebigkeit an der Spitze %6 µm/N</translation>
     </message>
+    <message>
+        <source>The operation (set-up) to work on, by its name (default: the first).</source>
+        <translation>Die Aufspannung (Operation), mit der gearbeitet wird, über ihren Namen (Standard: die erste).</translation>
+    </message>
+    <message>
+        <source>--operation: the project has no operation &quot;%1&quot;; it has: %2</source>
+        <translation>--operation: das Projekt hat keine Aufspannung &quot;%1&quot;; vorhanden sind: %2</translation>
+    </message>
+    <message>
+        <source>the project has %1 operations (%2); this is %3 (--operation NAME for another)</source>
+        <translation>das Projekt hat %1 Aufspannungen (%2); dies ist %3 (--operation NAME für eine andere)</translation>
+    </message>
+    <message>
+        <source>%1 (operation %2 of %3): %4, the %5 end held</source>
+        <translation>%1 (Aufspannung %2 von %3): %4, Ende %5 gespannt</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -805,6 +821,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>No boring bar given: the bores are computed as if cut by the turning tool %1, without the bending of a bar, which in a bore is often the largest term.</source>
         <translation>Keine Bohrstange angegeben: die Bohrungen werden berechnet, als würden sie mit dem Drehwerkzeug %1 bearbeitet, ohne die Biegung einer Stange, die in einer Bohrung oft der größte Anteil ist.</translation>
     </message>
+    <message>
+        <source>%1, operation %2 of %3: the part held at its %4 end, z from that end.</source>
+        <translation>%1, Aufspannung %2 von %3: das Teil am Ende %4 gespannt, z von diesem Ende.</translation>
+    </message>
+    <message>
+        <source>The outer features later operations turn are still the stock, Ø%1 mm.</source>
+        <translation>Die Außenformelemente, die spätere Aufspannungen drehen, sind noch Rohmaterial, Ø%1 mm.</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>
@@ -902,6 +926,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Conditions: %1</source>
         <translation>Schnittwerte: %1</translation>
+    </message>
+    <message>
+        <source>%1, operation %2 of %3: the drawing&apos;s %4 end held; the right end face below is the free end of this set-up</source>
+        <translation>%1, Aufspannung %2 von %3: Ende %4 der Zeichnung gespannt; die rechte Stirnfläche im folgenden Programm ist das freie Ende dieser Aufspannung</translation>
     </message>
 </context>
 <context>
@@ -1920,6 +1948,73 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>total axial run-out</source>
         <translation>Gesamtplanlauf</translation>
     </message>
+    <message>
+        <source>left</source>
+        <translation>links</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechts</translation>
+    </message>
+</context>
+<context>
+    <name>Operations</name>
+    <message>
+        <source>another set-up</source>
+        <translation>einer anderen Aufspannung</translation>
+    </message>
+    <message>
+        <source>datum %1 on %2 is cut in %3</source>
+        <translation>Bezug %1 auf %2 wird in %3 bearbeitet</translation>
+    </message>
+    <message>
+        <source>%1 is cut in %2</source>
+        <translation>%1 wird in %2 bearbeitet</translation>
+    </message>
+    <message>
+        <source>spans set-ups: %1, %2 in %3; clamping again adds 0–%4 µm (%5)</source>
+        <translation>erstreckt sich über mehrere Aufspannungen: %1, %2 in %3; das Umspannen fügt 0–%4 µm hinzu (%5)</translation>
+    </message>
+    <message>
+        <source>; it holds with the largest of it</source>
+        <translation>; sie wird auch mit dem größten Wert eingehalten</translation>
+    </message>
+    <message>
+        <source>; it holds only if the re-clamping error stays below %1 µm</source>
+        <translation>; sie wird nur eingehalten, wenn der Umspannfehler unter %1 µm bleibt</translation>
+    </message>
+    <message>
+        <source>; it fails even without it</source>
+        <translation>; sie wird selbst ohne ihn nicht eingehalten</translation>
+    </message>
+    <message>
+        <source>feature %1 lies in the jaws of %2 (%3 mm from its held end): no tool reaches it there; name it in an operation that holds the other end</source>
+        <translation>Formelement %1 liegt in den Spannbacken von %2 (%3 mm vom gespannten Ende): dort erreicht es kein Werkzeug; führen Sie es in einer Aufspannung auf, die das andere Ende spannt</translation>
+    </message>
+    <message>
+        <source>an operation needs a name</source>
+        <translation>eine Aufspannung braucht einen Namen</translation>
+    </message>
+    <message>
+        <source>two operations are named &quot;%1&quot;</source>
+        <translation>zwei Aufspannungen heißen &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>operation &quot;%1&quot; has no cutting pass</source>
+        <translation>Aufspannung &quot;%1&quot; hat keinen Schnitt</translation>
+    </message>
+    <message>
+        <source>operation &quot;%1&quot; cuts no feature</source>
+        <translation>Aufspannung &quot;%1&quot; bearbeitet kein Formelement</translation>
+    </message>
+    <message>
+        <source>there is no feature &quot;%1&quot;</source>
+        <translation>es gibt kein Formelement &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>feature %1 is named by two operations</source>
+        <translation>Formelement %1 ist in zwei Aufspannungen aufgeführt</translation>
+    </message>
 </context>
 <context>
     <name>Optimiser</name>
@@ -2014,12 +2109,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>der Stangenwerkstoff von &quot;%1&quot; (Kennbuchstabe %2) ist nicht in der Datenbibliothek</translation>
     </message>
     <message>
-        <source>a boring bar is given but the part has no bore</source>
-        <translation>eine Bohrstange ist angegeben, aber das Teil hat keine Bohrung</translation>
-    </message>
-    <message>
         <source>%1 mm is %2 times the bar&apos;s diameter, more than the %3 times the maker allows a %4 bar (%5): expect chatter; use a carbide or a larger bar, or bore from both ends</source>
         <translation>%1 mm ist das %2-Fache des Stangendurchmessers, mehr als das %3-Fache, das der Hersteller für eine Stange aus %4 zulässt (%5): Rattern ist zu erwarten; eine Hartmetall- oder eine dickere Stange verwenden oder von beiden Seiten ausbohren</translation>
+    </message>
+    <message>
+        <source>a boring bar is given but no bore is cut</source>
+        <translation>eine Bohrstange ist angegeben, aber keine Bohrung wird bearbeitet</translation>
     </message>
 </context>
 <context>
@@ -2487,16 +2582,24 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>dies ist kein TolTurn-Projekt: das Format ist „%1“, erwartet wird „%2“</translation>
     </message>
     <message>
-        <source>unknown format version %1; this TolTurn reads version %2</source>
-        <translation>unbekannte Formatversion %1; diese TolTurn-Version liest Version %2</translation>
-    </message>
-    <message>
         <source>invalid JSON at line %1, column %2: %3</source>
         <translation>ungültiges JSON in Zeile %1, Spalte %2: %3</translation>
     </message>
     <message>
         <source>a project file holds one JSON object, not a list</source>
         <translation>eine Projektdatei enthält ein JSON-Objekt, keine Liste</translation>
+    </message>
+    <message>
+        <source>part end</source>
+        <translation>Teilende</translation>
+    </message>
+    <message>
+        <source>expected a feature id, found %1</source>
+        <translation>erwartet: eine Formelement-ID, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>unknown format version %1; this TolTurn reads versions 1 to %2</source>
+        <translation>unbekannte Formatversion %1; dieses TolTurn liest die Versionen 1 bis %2</translation>
     </message>
 </context>
 <context>
@@ -3109,6 +3212,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Tool life: %1</source>
         <translation>Standzeit: %1</translation>
+    </message>
+    <message>
+        <source>%1 (set-up %2 of %3, the %4 end held): </source>
+        <translation>%1 (Aufspannung %2 von %3, Ende %4 gespannt): </translation>
+    </message>
+    <message>
+        <source>z from the held (right) end [mm]</source>
+        <translation>z vom gespannten (rechten) Ende [mm]</translation>
     </message>
 </context>
 <context>
@@ -3761,6 +3872,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>No roughing pass is planned: the finishing pass would cut up to %1 mm more than its depth of cut.</source>
         <translation>Kein Schruppschnitt geplant: der Schlichtschnitt müsste bis zu %1 mm mehr als seine Schnitttiefe abnehmen.</translation>
     </message>
+    <message>
+        <source>%1 turns from the free end to z = %2 mm (from the held end); the rest of the outer contour is another operation&apos;s.</source>
+        <translation>%1 dreht vom freien Ende bis z = %2 mm (vom gespannten Ende aus); der Rest der Außenkontur gehört zu einer anderen Aufspannung.</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -4011,6 +4126,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source> · bores: bar %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N at its tip</source>
         <translation> · Bohrungen: Stange %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N an der Spitze</translation>
+    </message>
+    <message>
+        <source>z from the held (right) end [%1]</source>
+        <translation>z vom gespannten (rechten) Ende [%1]</translation>
     </message>
 </context>
 <context>
@@ -4737,6 +4856,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Measurements</source>
         <translation>Messungen</translation>
+    </message>
+    <message>
+        <source>The set-up shown: its part as held, its deflection, verdicts, plan and program</source>
+        <translation>Die angezeigte Aufspannung: ihr Teil wie gespannt, ihre Verformung, Bewertungen, Plan und Programm</translation>
+    </message>
+    <message>
+        <source>%1 (set-up %2 of %3, the %4 end held): </source>
+        <translation>%1 (Aufspannung %2 von %3, Ende %4 gespannt): </translation>
+    </message>
+    <message>
+        <source>%1: %2, %3 end held</source>
+        <translation>%1: %2, Ende %3 gespannt</translation>
     </message>
 </context>
 <context>
@@ -6182,6 +6313,22 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
         <source>%1 bar, E = %2 GPa; %3; the maker allows up to %4 × D (%5).</source>
         <translation>Stange aus %1, E = %2 GPa; %3; der Hersteller lässt bis zu %4 × D zu (%5).</translation>
     </message>
+    <message>
+        <source>left end (as drawn)</source>
+        <translation>linkes Ende (wie gezeichnet)</translation>
+    </message>
+    <message>
+        <source>right end (turned end for end)</source>
+        <translation>rechtes Ende (Teil umgedreht)</translation>
+    </message>
+    <message>
+        <source>The end of the drawing the chuck holds (between centres: the driven end). Held at its right end, the part is computed and programmed turned end for end.</source>
+        <translation>Das Ende der Zeichnung, das im Spannfutter gespannt ist (zwischen Spitzen: das angetriebene Ende). Am rechten Ende gespannt, wird das Teil umgedreht berechnet und programmiert.</translation>
+    </message>
+    <message>
+        <source>Held &amp;end:</source>
+        <translation>&amp;Gespanntes Ende:</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::StiffnessEditor</name>
@@ -6469,6 +6616,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Stiffness needed</source>
         <translation>Nötige Steifigkeit</translation>
+    </message>
+    <message>
+        <source>%1 is cut in %2: choose that set-up to see its verdict</source>
+        <translation>%1 wird in %2 bearbeitet: wählen Sie diese Aufspannung, um ihre Bewertung zu sehen</translation>
     </message>
 </context>
 </TS>

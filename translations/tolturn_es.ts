@@ -506,6 +506,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N</source>
         <translation>Barra de mandrinar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; flexibilidad en la punta %6 µm/N</translation>
     </message>
+    <message>
+        <source>The operation (set-up) to work on, by its name (default: the first).</source>
+        <translation>La operación (montaje) con la que trabajar, por su nombre (por defecto: la primera).</translation>
+    </message>
+    <message>
+        <source>--operation: the project has no operation &quot;%1&quot;; it has: %2</source>
+        <translation>--operation: el proyecto no tiene ninguna operación &quot;%1&quot;; tiene: %2</translation>
+    </message>
+    <message>
+        <source>the project has %1 operations (%2); this is %3 (--operation NAME for another)</source>
+        <translation>el proyecto tiene %1 operaciones (%2); esta es %3 (--operation NAME para otra)</translation>
+    </message>
+    <message>
+        <source>%1 (operation %2 of %3): %4, the %5 end held</source>
+        <translation>%1 (operación %2 de %3): %4, extremo %5 sujetado</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -805,6 +821,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>No boring bar given: the bores are computed as if cut by the turning tool %1, without the bending of a bar, which in a bore is often the largest term.</source>
         <translation>No se ha indicado barra de mandrinar: los agujeros se calculan como si los mecanizara la herramienta de torneado %1, sin la flexión de una barra, que en un agujero suele ser el término mayor.</translation>
     </message>
+    <message>
+        <source>%1, operation %2 of %3: the part held at its %4 end, z from that end.</source>
+        <translation>%1, operación %2 de %3: la pieza sujetada por su extremo %4, z desde ese extremo.</translation>
+    </message>
+    <message>
+        <source>The outer features later operations turn are still the stock, Ø%1 mm.</source>
+        <translation>Los elementos exteriores que tornean operaciones posteriores siguen en bruto, Ø%1 mm.</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>
@@ -902,6 +926,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Conditions: %1</source>
         <translation>Condiciones: %1</translation>
+    </message>
+    <message>
+        <source>%1, operation %2 of %3: the drawing&apos;s %4 end held; the right end face below is the free end of this set-up</source>
+        <translation>%1, operación %2 de %3: extremo %4 del plano sujetado; la cara frontal derecha del programa siguiente es el extremo libre de este montaje</translation>
     </message>
 </context>
 <context>
@@ -1920,6 +1948,73 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>total axial run-out</source>
         <translation>oscilación total axial</translation>
     </message>
+    <message>
+        <source>left</source>
+        <translation>izquierdo</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>derecho</translation>
+    </message>
+</context>
+<context>
+    <name>Operations</name>
+    <message>
+        <source>another set-up</source>
+        <translation>otro montaje</translation>
+    </message>
+    <message>
+        <source>datum %1 on %2 is cut in %3</source>
+        <translation>la referencia %1 en %2 se mecaniza en %3</translation>
+    </message>
+    <message>
+        <source>%1 is cut in %2</source>
+        <translation>%1 se mecaniza en %2</translation>
+    </message>
+    <message>
+        <source>spans set-ups: %1, %2 in %3; clamping again adds 0–%4 µm (%5)</source>
+        <translation>abarca varios montajes: %1, %2 en %3; volver a sujetar añade 0–%4 µm (%5)</translation>
+    </message>
+    <message>
+        <source>; it holds with the largest of it</source>
+        <translation>; se cumple incluso con el valor máximo</translation>
+    </message>
+    <message>
+        <source>; it holds only if the re-clamping error stays below %1 µm</source>
+        <translation>; solo se cumple si el error de re-sujeción se mantiene por debajo de %1 µm</translation>
+    </message>
+    <message>
+        <source>; it fails even without it</source>
+        <translation>; no se cumple ni siquiera sin él</translation>
+    </message>
+    <message>
+        <source>feature %1 lies in the jaws of %2 (%3 mm from its held end): no tool reaches it there; name it in an operation that holds the other end</source>
+        <translation>el elemento %1 está dentro de las garras en %2 (a %3 mm de su extremo sujetado): ninguna herramienta llega allí; inclúyalo en una operación que sujete el otro extremo</translation>
+    </message>
+    <message>
+        <source>an operation needs a name</source>
+        <translation>una operación necesita un nombre</translation>
+    </message>
+    <message>
+        <source>two operations are named &quot;%1&quot;</source>
+        <translation>dos operaciones se llaman &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>operation &quot;%1&quot; has no cutting pass</source>
+        <translation>la operación &quot;%1&quot; no tiene ninguna pasada de corte</translation>
+    </message>
+    <message>
+        <source>operation &quot;%1&quot; cuts no feature</source>
+        <translation>la operación &quot;%1&quot; no mecaniza ningún elemento</translation>
+    </message>
+    <message>
+        <source>there is no feature &quot;%1&quot;</source>
+        <translation>no existe ningún elemento &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>feature %1 is named by two operations</source>
+        <translation>el elemento %1 figura en dos operaciones</translation>
+    </message>
 </context>
 <context>
     <name>Optimiser</name>
@@ -2014,12 +2109,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>el material de la barra de &quot;%1&quot; (letra de tipo %2) no está en la biblioteca de datos</translation>
     </message>
     <message>
-        <source>a boring bar is given but the part has no bore</source>
-        <translation>se ha indicado una barra de mandrinar pero la pieza no tiene agujeros</translation>
-    </message>
-    <message>
         <source>%1 mm is %2 times the bar&apos;s diameter, more than the %3 times the maker allows a %4 bar (%5): expect chatter; use a carbide or a larger bar, or bore from both ends</source>
         <translation>%1 mm es %2 veces el diámetro de la barra, más de las %3 veces que el fabricante permite a una barra de %4 (%5): cabe esperar vibraciones; use una barra de metal duro o más gruesa, o mandrine desde ambos extremos</translation>
+    </message>
+    <message>
+        <source>a boring bar is given but no bore is cut</source>
+        <translation>se ha indicado una barra de mandrinar, pero no se mecaniza ningún agujero</translation>
     </message>
 </context>
 <context>
@@ -2487,16 +2582,24 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no es un proyecto de TolTurn: el formato es &quot;%1&quot; y se esperaba &quot;%2&quot;</translation>
     </message>
     <message>
-        <source>unknown format version %1; this TolTurn reads version %2</source>
-        <translation>versión de formato desconocida %1; esta versión de TolTurn lee la versión %2</translation>
-    </message>
-    <message>
         <source>invalid JSON at line %1, column %2: %3</source>
         <translation>JSON no válido en la línea %1, columna %2: %3</translation>
     </message>
     <message>
         <source>a project file holds one JSON object, not a list</source>
         <translation>un archivo de proyecto contiene un único objeto JSON, no una lista</translation>
+    </message>
+    <message>
+        <source>part end</source>
+        <translation>extremo de la pieza</translation>
+    </message>
+    <message>
+        <source>expected a feature id, found %1</source>
+        <translation>se esperaba un identificador de elemento y se ha encontrado %1</translation>
+    </message>
+    <message>
+        <source>unknown format version %1; this TolTurn reads versions 1 to %2</source>
+        <translation>versión de formato desconocida %1; este TolTurn lee las versiones 1 a %2</translation>
     </message>
 </context>
 <context>
@@ -3109,6 +3212,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Tool life: %1</source>
         <translation>Vida de la herramienta: %1</translation>
+    </message>
+    <message>
+        <source>%1 (set-up %2 of %3, the %4 end held): </source>
+        <translation>%1 (montaje %2 de %3, extremo %4 sujetado): </translation>
+    </message>
+    <message>
+        <source>z from the held (right) end [mm]</source>
+        <translation>z desde el extremo sujetado (derecho) [mm]</translation>
     </message>
 </context>
 <context>
@@ -3761,6 +3872,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>No roughing pass is planned: the finishing pass would cut up to %1 mm more than its depth of cut.</source>
         <translation>No hay pasada de desbaste planificada: la pasada de acabado cortaría hasta %1 mm más que su profundidad de corte.</translation>
     </message>
+    <message>
+        <source>%1 turns from the free end to z = %2 mm (from the held end); the rest of the outer contour is another operation&apos;s.</source>
+        <translation>%1 tornea desde el extremo libre hasta z = %2 mm (desde el extremo sujetado); el resto del contorno exterior corresponde a otra operación.</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -4011,6 +4126,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source> · bores: bar %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N at its tip</source>
         <translation> · agujeros: barra %1, L/D %2, Fc %3 N, Ff %4 N, Fp %5 N, %6 µm/N en la punta</translation>
+    </message>
+    <message>
+        <source>z from the held (right) end [%1]</source>
+        <translation>z desde el extremo sujetado (derecho) [%1]</translation>
     </message>
 </context>
 <context>
@@ -4737,6 +4856,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Measurements</source>
         <translation>Mediciones</translation>
+    </message>
+    <message>
+        <source>The set-up shown: its part as held, its deflection, verdicts, plan and program</source>
+        <translation>El montaje mostrado: su pieza tal como está sujetada, su flexión, veredictos, plan y programa</translation>
+    </message>
+    <message>
+        <source>%1 (set-up %2 of %3, the %4 end held): </source>
+        <translation>%1 (montaje %2 de %3, extremo %4 sujetado): </translation>
+    </message>
+    <message>
+        <source>%1: %2, %3 end held</source>
+        <translation>%1: %2, extremo %3 sujetado</translation>
     </message>
 </context>
 <context>
@@ -6182,6 +6313,22 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
         <source>%1 bar, E = %2 GPa; %3; the maker allows up to %4 × D (%5).</source>
         <translation>Barra de %1, E = %2 GPa; %3; el fabricante permite hasta %4 × D (%5).</translation>
     </message>
+    <message>
+        <source>left end (as drawn)</source>
+        <translation>extremo izquierdo (como en el plano)</translation>
+    </message>
+    <message>
+        <source>right end (turned end for end)</source>
+        <translation>extremo derecho (pieza invertida)</translation>
+    </message>
+    <message>
+        <source>The end of the drawing the chuck holds (between centres: the driven end). Held at its right end, the part is computed and programmed turned end for end.</source>
+        <translation>El extremo del plano que sujeta el plato (entre puntos: el extremo arrastrado). Sujetada por su extremo derecho, la pieza se calcula y se programa invertida.</translation>
+    </message>
+    <message>
+        <source>Held &amp;end:</source>
+        <translation>&amp;Extremo sujetado:</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::StiffnessEditor</name>
@@ -6469,6 +6616,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Stiffness needed</source>
         <translation>Rigidez necesaria</translation>
+    </message>
+    <message>
+        <source>%1 is cut in %2: choose that set-up to see its verdict</source>
+        <translation>%1 se mecaniza en %2: elija ese montaje para ver su veredicto</translation>
     </message>
 </context>
 </TS>

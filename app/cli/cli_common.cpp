@@ -5,6 +5,7 @@
 #include "core/common/atomic_file.h"
 #include "core/io/project_file.h"
 #include "core/measurements/measurement_store.h"
+#include "core/project/operations.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -54,6 +55,38 @@ std::optional<Project> readProject(const QString &file, QTextStream &err)
     for (const Diagnostic &d : read.diagnostics)
         err << file << ": " << d.toString() << '\n';
     return read.project;
+}
+
+QCommandLineOption operationOption()
+{
+    return {QStringLiteral("operation"),
+            CommandLine::tr("The operation (set-up) to work on, by its name (default: the first)."),
+            QStringLiteral("NAME")};
+}
+
+std::optional<Project> selectOperation(const Project &project, const QCommandLineParser &parser, const QString &command,
+                                       QTextStream &err)
+{
+    const int count = operationCount(project);
+    QStringList names;
+    for (int k = 0; k < count; ++k)
+        names << operationName(project, k);
+    const QString wanted = parser.value(QStringLiteral("operation"));
+    const auto index = wanted.isEmpty() ? qsizetype(0) : names.indexOf(wanted);
+    if (index < 0) {
+        err << programName() << ' ' << command << ": "
+            << CommandLine::tr("--operation: the project has no operation \"%1\"; it has: %2")
+                   .arg(wanted, names.join(QStringLiteral(", ")))
+            << '\n';
+        return std::nullopt;
+    }
+    if (count > 1 && wanted.isEmpty())
+        err << programName() << ' ' << command << ": "
+            << CommandLine::tr("the project has %1 operations (%2); this is %3 (--operation NAME for another)")
+                   .arg(count)
+                   .arg(names.join(QStringLiteral(", ")), names.front())
+            << '\n';
+    return operationView(project, static_cast<int>(index));
 }
 
 QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out)

@@ -47,6 +47,14 @@ inline constexpr double kMaxLoad_N = 1e6;
 // Reads a project for a command, printing its problems as "FILE: severity: field: message".
 [[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err);
 
+// --operation NAME, for the commands that work on one set-up of a project (docs/operations.md).
+[[nodiscard]] QCommandLineOption operationOption();
+// The project of the operation --operation names (by default the first) when the project has
+// several, saying on `err` which one it is; the project itself when it has one. nullopt, with a
+// message listing the operations, for a name it does not have.
+[[nodiscard]] std::optional<Project> selectOperation(const Project &project, const QCommandLineParser &parser,
+                                                     const QString &command, QTextStream &err);
+
 // True for the output path "-" (`-o -`): the command writes its file to standard output, and its
 // own messages then go to standard error.
 [[nodiscard]] inline bool isStandardOutput(const QString &path)

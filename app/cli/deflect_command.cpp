@@ -282,7 +282,7 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("learned"),
         CommandLine::tr("Add what was learned of the machine from its measured parts (learn --save)."));
     const QCommandLineOption store = measurementStoreOption();
-    parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess, learned, store});
+    parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess, learned, store, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("deflect"), args, out, err); stop >= 0)
@@ -322,9 +322,12 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
             return kExitUsage;
         }
     }
-    const std::optional<Project> project = readProject(file, err);
-    if (!project)
+    const std::optional<Project> whole = readProject(file, err);
+    if (!whole)
         return kExitProblems;
+    const std::optional<Project> project = selectOperation(*whole, parser, QStringLiteral("deflect"), err);
+    if (!project)
+        return kExitUsage;
     // The stations are per feature: their total bounds the time and the size of the output.
     const auto features = static_cast<qsizetype>(project->part.outer.segments.size()) +
                           static_cast<qsizetype>(project->part.inner.segments.size());

@@ -13,6 +13,7 @@
 #include "core/planning/optimiser.h"
 #include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/iso286.h"
 #include "core/tolerance/range_verdicts.h"
@@ -157,48 +158,36 @@ int evaluateLearned(const QString &file, const Project &project, const QString &
     return kExitOk;
 }
 
-} // namespace
-
-int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
+const Tolerance *toleranceById(const Project &project, const QString &id)
 {
-    QCommandLineParser parser;
-    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the verdicts as JSON."));
-    const QCommandLineOption learned(
-        QStringLiteral("learned"),
-        CommandLine::tr("Judge with what was learned of the machine from its measured parts (learn --save)."));
-    const QCommandLineOption store = measurementStoreOption();
-    parser.addOptions({json, learned, store});
-    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
-                                 QStringLiteral("PROJECT"));
-    if (const int stop = parseNamedCommand(parser, QStringLiteral("evaluate"), args, out, err); stop >= 0)
-        return stop;
-    const QString file = oneProjectFile(parser, QStringLiteral("evaluate"), err);
-    if (file.isEmpty())
-        return kExitUsage;
-    const std::optional<Project> project = readProject(file, err);
-    if (!project)
-        return kExitProblems;
-    if (parser.isSet(learned))
-        return evaluateLearned(file, *project, parser.value(store), parser.isSet(json), out, err);
-    const RangeEvaluation range = evaluateOverStiffnessRange(*project, DataLibrary::builtIn());
-    const DeviationResult &deviation = range.compliant;
-    for (const Diagnostic &d : deviation.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!deviation.inputs)
-        return kExitProblems;
-    const QString assumption = machineAssumptionText(range, DataLibrary::builtIn());
-    if (parser.isSet(json)) {
-        QJsonArray list;
-        for (const ToleranceRangeEvaluation &e : range.tolerances)
-            list.append(rangeEvaluationJson(e));
-        return printJson(QJsonObject{{QStringLiteral("file"), file},
-                                     {QStringLiteral("machine_assumption"), assumption},
-                                     {QStringLiteral("machine_is_range"), range.machineIsRange},
-                                     {QStringLiteral("rigid_support_assumed"), range.someSupportRigid},
-                                     {QStringLiteral("notes"), QJsonArray::fromStringList(deviation.inputs->notes)},
-                                     {QStringLiteral("tolerances"), list}},
-                         out, err, QStringLiteral("evaluate"));
+    for (const Tolerance &t : project.tolerances) {
+        if (t.id == id)
+            return &t;
     }
+    return nullptr;
+}
+
+// The verdicts of one set-up as JSON; a tolerance that spans set-ups carries its re-clamping error.
+QJsonObject rangeJson(const Project &project, const RangeEvaluation &range)
+{
+    QJsonArray list;
+    for (const ToleranceRangeEvaluation &e : range.tolerances) {
+        QJsonObject o = rangeEvaluationJson(e);
+        if (const Tolerance *t = toleranceById(project, e.compliant.toleranceId))
+            if (const auto error = reclampingError(project, *t, DataLibrary::builtIn()))
+                o.insert(QStringLiteral("reclamping_max_um"), error->max_um);
+        list.append(o);
+    }
+    return {{QStringLiteral("machine_assumption"), machineAssumptionText(range, DataLibrary::builtIn())},
+            {QStringLiteral("machine_is_range"), range.machineIsRange},
+            {QStringLiteral("rigid_support_assumed"), range.someSupportRigid},
+            {QStringLiteral("notes"), QJsonArray::fromStringList(range.compliant.inputs->notes)},
+            {QStringLiteral("tolerances"), list}};
+}
+
+void printRange(const RangeEvaluation &range, QTextStream &out)
+{
+    const QString assumption = machineAssumptionText(range, DataLibrary::builtIn());
     if (!assumption.isEmpty())
         out << CommandLine::tr("Machine: %1").arg(assumption) << '\n';
     out << CommandLine::tr("tolerance  type                    feature  value [µm]  limit [µm]  use [%]  verdict")
@@ -229,6 +218,81 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
         if (!e.reason.isEmpty())
             out << indent << e.reason << '\n';
     }
+}
+
+} // namespace
+
+int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the verdicts as JSON."));
+    const QCommandLineOption learned(
+        QStringLiteral("learned"),
+        CommandLine::tr("Judge with what was learned of the machine from its measured parts (learn --save)."));
+    const QCommandLineOption store = measurementStoreOption();
+    parser.addOptions({json, learned, store, operationOption()});
+    parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
+                                 QStringLiteral("PROJECT"));
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("evaluate"), args, out, err); stop >= 0)
+        return stop;
+    const QString file = oneProjectFile(parser, QStringLiteral("evaluate"), err);
+    if (file.isEmpty())
+        return kExitUsage;
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
+        return kExitProblems;
+    if (parser.isSet(learned)) { // one prediction of one set-up: --operation, or the first
+        const std::optional<Project> view = selectOperation(*project, parser, QStringLiteral("evaluate"), err);
+        if (!view)
+            return kExitUsage;
+        return evaluateLearned(file, *view, parser.value(store), parser.isSet(json), out, err);
+    }
+    // A project of several operations is judged operation by operation, each on its own set-up
+    // (docs/operations.md); the tolerances that span set-ups carry the error of clamping again.
+    const int count = operationCount(*project);
+    int first = 0;
+    int last = count - 1;
+    if (parser.isSet(QStringLiteral("operation"))) { // one set-up only
+        const std::optional<Project> chosen = selectOperation(*project, parser, QStringLiteral("evaluate"), err);
+        if (!chosen)
+            return kExitUsage;
+        first = last = chosen->scope ? chosen->scope->index : 0;
+    }
+    QJsonArray operations;
+    for (int k = first; k <= last; ++k) {
+        const Project view = operationView(*project, k);
+        RangeEvaluation range = evaluateOverStiffnessRange(view, DataLibrary::builtIn());
+        addReclampingNotes(view, range, DataLibrary::builtIn());
+        const DeviationResult &deviation = range.compliant;
+        for (const Diagnostic &d : deviation.diagnostics)
+            err << file << ": " << (count > 1 ? operationName(*project, k) + QStringLiteral(": ") : QString())
+                << d.toString() << '\n';
+        if (!deviation.inputs)
+            return kExitProblems;
+        if (parser.isSet(json)) {
+            QJsonObject o = rangeJson(view, range);
+            if (count == 1) {
+                o.insert(QStringLiteral("file"), file);
+                return printJson(o, out, err, QStringLiteral("evaluate"));
+            }
+            o.insert(QStringLiteral("name"), operationName(*project, k));
+            o.insert(QStringLiteral("held_end"), keyword(view.clamping.heldEnd));
+            operations.append(o);
+            continue;
+        }
+        if (count > 1)
+            out << (k > 0 ? QStringLiteral("\n") : QString())
+                << CommandLine::tr("%1 (operation %2 of %3): %4, the %5 end held")
+                       .arg(operationName(*project, k))
+                       .arg(k + 1)
+                       .arg(count)
+                       .arg(displayName(view.clamping.method), displayName(view.clamping.heldEnd))
+                << '\n';
+        printRange(range, out);
+    }
+    if (parser.isSet(json))
+        return printJson(QJsonObject{{QStringLiteral("file"), file}, {QStringLiteral("operations"), operations}}, out,
+                         err, QStringLiteral("evaluate"));
     return kExitOk;
 }
 

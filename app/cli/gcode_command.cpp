@@ -67,7 +67,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("learned"),
         GCodeCommand::tr("Compensate with what was learned of the machine from its measured parts (learn --save)."));
     const QCommandLineOption store = measurementStoreOption();
-    parser.addOptions({output, compensated, dialect, nose, learned, store});
+    parser.addOptions({output, compensated, dialect, nose, learned, store, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), GCodeCommand::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, QStringLiteral("gcode"), gcodeSynopsis(), gcodeSummary(), args, out, err);
@@ -96,9 +96,13 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     }
     options.nose = *handling;
     const QString file = parser.positionalArguments().constFirst();
-    const std::optional<Project> project = readProject(file, err);
-    if (!project)
+    const std::optional<Project> whole = readProject(file, err);
+    if (!whole)
         return kExitProblems;
+    // One set-up at a time: the program and the report of the operation --operation names.
+    const std::optional<Project> project = selectOperation(*whole, parser, QStringLiteral("gcode"), err);
+    if (!project)
+        return kExitUsage;
     DeviationResult deviation = computeDeviation(*project, DataLibrary::builtIn(), {});
     if (parser.isSet(learned)) {
         const std::optional<LoadedModel> model =

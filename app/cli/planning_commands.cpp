@@ -136,10 +136,14 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
 }
 
 // Loads a project and builds its planning problem; prints problems and returns null on failure.
-std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, QTextStream &err,
+std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, const QCommandLineParser &parser,
+                                                           const QString &command, QTextStream &err,
                                                            std::optional<Project> *project = nullptr)
 {
-    const std::optional<Project> read = readProject(file, err);
+    const std::optional<Project> whole = readProject(file, err);
+    if (!whole)
+        return nullptr;
+    const std::optional<Project> read = selectOperation(*whole, parser, command, err);
     if (!read)
         return nullptr;
     if (project != nullptr)
@@ -177,7 +181,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("learned"),
         CommandLine::tr("Plan with what was learned of the machine from its measured parts (learn --save)."));
     const QCommandLineOption store = measurementStoreOption();
-    parser.addOptions({json, objective, write, machineEnd, timeLimit, learned, store});
+    parser.addOptions({json, objective, write, machineEnd, timeLimit, learned, store, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("optimize"), args, out, err); stop >= 0)
@@ -230,7 +234,10 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
             return kExitProblems;
         model = std::make_shared<const LoadedModel>(std::move(*loaded));
     }
-    const PlanningProblem::BuildResult built = PlanningProblem::build(*project, DataLibrary::builtIn(), end, model);
+    const std::optional<Project> view = selectOperation(*project, parser, QStringLiteral("optimize"), err);
+    if (!view)
+        return kExitUsage;
+    const PlanningProblem::BuildResult built = PlanningProblem::build(*view, DataLibrary::builtIn(), end, model);
     for (const Diagnostic &d : built.diagnostics) {
         if (d.severity == Severity::Error)
             err << file << ": " << d.toString() << '\n';
@@ -249,18 +256,21 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitProblems;
     if (parser.isSet(write)) {
         const PassConditions rough = roughingOf(plan, *built.problem);
-        project->passes.clear();
+        // The passes of the operation planned, in the project as its file holds it.
+        const int index = view->scope ? view->scope->index : 0;
+        std::vector<CuttingPass> &passes =
+            index == 0 ? project->passes : project->furtherOperations[static_cast<std::size_t>(index - 1)].passes;
+        passes.clear();
         for (int i = 0; i < plan.candidate.roughingPasses; ++i)
-            project->passes.push_back(
-                {PassKind::Roughing, rough.cuttingSpeed_m_min, rough.feed_mm_rev, rough.depthOfCut_mm});
+            passes.push_back({PassKind::Roughing, rough.cuttingSpeed_m_min, rough.feed_mm_rev, rough.depthOfCut_mm});
         const PassConditions &f = plan.candidate.finishing;
-        project->passes.push_back({PassKind::Finishing, f.cuttingSpeed_m_min, f.feed_mm_rev, f.depthOfCut_mm});
+        passes.push_back({PassKind::Finishing, f.cuttingSpeed_m_min, f.feed_mm_rev, f.depthOfCut_mm});
         const WriteResult w = writeProjectFile(file, *project);
         if (!w.ok) {
             err << w.error << '\n';
             return kExitProblems;
         }
-        err << CommandLine::tr("wrote %1: %2 passes").arg(file).arg(project->passes.size()) << '\n';
+        err << CommandLine::tr("wrote %1: %2 passes").arg(file).arg(passes.size()) << '\n';
     }
     return kExitOk;
 }
@@ -273,7 +283,7 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption csv(QStringLiteral("csv"), CommandLine::tr("Print every grid point as CSV."));
     const QCommandLineOption size(QStringLiteral("size"), CommandLine::tr("Points along each axis (default 256)."),
                                   QStringLiteral("N"), QStringLiteral("256"));
-    parser.addOptions({plane, csv, size});
+    parser.addOptions({plane, csv, size, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("window"), args, out, err); stop >= 0)
@@ -288,7 +298,8 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
             << '\n';
         return kExitUsage;
     }
-    const auto problem = loadPlanningProblem(parser.positionalArguments().constFirst(), err);
+    const auto problem =
+        loadPlanningProblem(parser.positionalArguments().constFirst(), parser, QStringLiteral("window"), err);
     if (!problem)
         return kExitProblems;
     const PlanResult plan = optimisePlan(*problem);
@@ -329,7 +340,7 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
 {
     QCommandLineParser parser;
     const QCommandLineOption json(QStringLiteral("json"), CommandLine::tr("Print the ranking as JSON."));
-    parser.addOption(json);
+    parser.addOptions({json, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("advise-clamping"), args, out, err); stop >= 0)
@@ -337,9 +348,12 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
     const QString file = oneProjectFile(parser, QStringLiteral("advise-clamping"), err);
     if (file.isEmpty())
         return kExitUsage;
-    const std::optional<Project> project = readProject(file, err);
-    if (!project)
+    const std::optional<Project> whole = readProject(file, err);
+    if (!whole)
         return kExitProblems;
+    const std::optional<Project> project = selectOperation(*whole, parser, QStringLiteral("advise-clamping"), err);
+    if (!project)
+        return kExitUsage;
     const std::vector<ClampingOption> options = adviseClamping(*project, DataLibrary::builtIn());
     if (parser.isSet(json)) {
         QJsonArray list;

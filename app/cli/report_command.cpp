@@ -55,7 +55,7 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("learned"),
         CommandLine::tr("Base the report on what was learned of the machine from its measured parts (learn --save)."));
     const QCommandLineOption store = measurementStoreOption();
-    parser.addOptions({output, planner, learned, store});
+    parser.addOptions({output, planner, learned, store, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("report"), args, out, err); stop >= 0)
@@ -65,9 +65,13 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
-    const std::optional<Project> project = readProject(file, err);
-    if (!project)
+    const std::optional<Project> whole = readProject(file, err);
+    if (!whole)
         return kExitProblems;
+    // One set-up at a time: the program and the report of the operation --operation names.
+    const std::optional<Project> project = selectOperation(*whole, parser, QStringLiteral("report"), err);
+    if (!project)
+        return kExitUsage;
     ReportHeader header{QFileInfo(file).fileName(), parser.value(planner), nullptr};
     if (parser.isSet(learned)) {
         auto model = loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("report"), err);

@@ -5,6 +5,7 @@
 #include "app/gui/preferences.h"
 #include "app/gui/recent_files.h"
 #include "core/io/project_file.h"
+#include "core/project/operations.h"
 #include "core/project/project_defaults.h"
 #include "widgets/document/project_document.h"
 #include "widgets/report/report_writer.h"
@@ -223,10 +224,10 @@ bool FileController::exportReportTo(const QString &pdfPath)
     // so the report is drawn on this thread, with a progress dialog that can cancel it.
     QGuiApplication::setOverrideCursor(QCursor(Qt::WaitCursor));
     const std::unique_ptr<TaskProgress> progress = m_prompts.startProgress(tr("Writing the report…"));
-    const ReportResult result =
-        writeReport(m_document.project(),
-                    {m_document.displayName(), loadPreferences().planner, m_learnedModel ? m_learnedModel() : nullptr},
-                    pdfPath, [&progress](double f) { return !progress || progress->update(f); });
+    const ReportResult result = writeReport(
+        operationView(m_document.project(), std::min(m_operation, operationCount(m_document.project()) - 1)),
+        {m_document.displayName(), loadPreferences().planner, m_learnedModel ? m_learnedModel() : nullptr}, pdfPath,
+        [&progress](double f) { return !progress || progress->update(f); });
     QGuiApplication::restoreOverrideCursor();
     if (result.cancelled) {
         Q_EMIT statusMessage(tr("Report cancelled; nothing was written."));

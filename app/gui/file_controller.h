@@ -88,6 +88,9 @@ public:
     bool exportReportTo(const QString &pdfPath);
 
     // What was learned of the machine, when the planner uses it: the report then rests on it.
+    // The operation (set-up) the report is of, for a project of several (docs/operations.md).
+    void setOperation(int index) { m_operation = index; }
+
     void setLearnedModelSource(std::function<std::shared_ptr<const LoadedModel>()> source)
     {
         m_learnedModel = std::move(source);
@@ -107,6 +110,7 @@ Q_SIGNALS:
     void openedWithProblems();
 
 private:
+    int m_operation = 0;
     bool loadFrom(const QString &readPath, const QString &documentPath);
 
     ProjectDocument &m_document;

@@ -7,6 +7,7 @@
 #include "app/gui/recent_files.h"
 #include "app/gui/settings_dialog.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/range_verdicts.h"
 #include "resources/bundled.h"
@@ -27,6 +28,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -247,6 +249,18 @@ void MainWindow::createDocks()
     m_toolBar->addAction(fit);
     m_toolBar->addSeparator();
     m_toolBar->addActions({optimise, m_exportReportAction});
+    m_operationBox = new QComboBox(this);
+    m_operationBox->setObjectName(QStringLiteral("operationBox"));
+    m_operationBox->setToolTip(tr("The set-up shown: its part as held, its deflection, verdicts, plan and program"));
+    m_operationAction = m_toolBar->addWidget(m_operationBox);
+    m_operationAction->setVisible(false);
+    connect(m_operationBox, &QComboBox::activated, this, [this](int index) {
+        m_operation = index;
+        m_planning->setOperation(index);
+        m_setup->setOperation(index);
+        m_files->setOperation(index);
+        showProject();
+    });
     view->addSeparator();
     view->addAction(m_toolBar->toggleViewAction());
     view->addAction(setup->toggleViewAction());
@@ -407,23 +421,49 @@ void MainWindow::showProject()
         showProjectWithProblems();
         return;
     }
-    const Project &project = m_document->project();
+    updateOperationChoice();
+    // One set-up at a time: the part as it is held there, its features and tolerances.
+    const Project project = operationView(m_document->project(), m_operation);
     m_profileView->setClamping(project.clamping);
     m_profileView->setProfile(project.part, project.tolerances, project.datums);
-    m_measurements->setProject(&project);
+    m_measurements->setProject(&m_document->project());
     const std::shared_ptr<const LoadedModel> learned = m_measurements->activeModel();
     m_planning->setLearnedModel(learned);
     if (learned) {
         showLearnedPrediction(project, *learned);
     } else {
         RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
-        m_tolerances->showVerdicts(std::move(range.tolerances), machineAssumptionText(range, DataLibrary::builtIn()),
-                                   range.someSupportRigid);
+        addReclampingNotes(project, range, DataLibrary::builtIn());
+        QString assumption = machineAssumptionText(range, DataLibrary::builtIn());
+        if (project.scope)
+            assumption.prepend(tr("%1 (set-up %2 of %3, the %4 end held): ")
+                                   .arg(project.scope->name)
+                                   .arg(project.scope->index + 1)
+                                   .arg(project.scope->count)
+                                   .arg(displayName(project.clamping.heldEnd)));
+        m_tolerances->showVerdicts(std::move(range.tolerances), assumption, range.someSupportRigid);
         m_deflection->showResult(project, std::move(range.compliant), std::move(range.stiff));
     }
     m_planning->projectChanged();
     updateSummary();
     updateTitle();
+}
+
+void MainWindow::updateOperationChoice()
+{
+    const Project &project = m_document->project();
+    const int count = operationCount(project);
+    m_operation = std::min(m_operation, count - 1);
+    m_operationBox->clear();
+    for (int k = 0; k < count; ++k)
+        m_operationBox->addItem(tr("%1: %2, %3 end held")
+                                    .arg(operationName(project, k), displayName(operationClamping(project, k).method),
+                                         displayName(operationClamping(project, k).heldEnd)));
+    m_operationBox->setCurrentIndex(m_operation);
+    m_operationAction->setVisible(count > 1);
+    m_planning->setOperation(m_operation);
+    m_setup->setOperation(m_operation);
+    m_files->setOperation(m_operation);
 }
 
 void MainWindow::showLearnedPrediction(const Project &project, const LoadedModel &model)

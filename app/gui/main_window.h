@@ -7,6 +7,7 @@
 #include <QMainWindow>
 
 class QDockWidget;
+class QComboBox;
 class QLabel;
 class QMenu;
 class QToolBar;
@@ -108,6 +109,8 @@ private:
     void rebuildRecentMenu();
     void updateTitle();
     void showProject();
+    // The set-up shown, of a project of several operations (docs/operations.md).
+    void updateOperationChoice();
     void updateSummary();
     void editPreferences();
 
@@ -127,6 +130,9 @@ private:
     ProblemNavigator *m_problems;
     QMenu *m_recentMenu = nullptr;
     QToolBar *m_toolBar = nullptr;
+    QComboBox *m_operationBox = nullptr;
+    QAction *m_operationAction = nullptr; // the box in the toolbar, shown for several operations
+    int m_operation = 0;
     QLabel *m_summary;
     HelpBrowser *m_help = nullptr;
     QAction *m_saveAction = nullptr;

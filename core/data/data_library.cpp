@@ -176,6 +176,11 @@ void DataLibrary::readMachines(const QString &path)
     m_supports.tailstockRadial = stiffnessRange(r, supports, QStringLiteral("tailstock_radial_N_per_mm"));
     m_supports.centreRadial = stiffnessRange(r, supports, QStringLiteral("centre_radial_N_per_mm"));
     m_supports.notes = supports.value(QStringLiteral("notes")).toString();
+    const QJsonObject reclamping = r.root().value(QStringLiteral("reclamping")).toObject();
+    m_reclamping.concentricity_mm =
+        r.value(reclamping, QStringLiteral("concentricity_mm"), QStringLiteral("reclamping"), false);
+    m_reclamping.axialRunout_mm =
+        r.value(reclamping, QStringLiteral("axial_runout_mm"), QStringLiteral("reclamping"), false);
     const QJsonArray list = r.root().value(QStringLiteral("machines")).toArray();
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QJsonObject o = list.at(i).toObject();

@@ -53,6 +53,13 @@ struct UncharacterisedSupports {
     QString notes;
 };
 
+// What clamping a part again costs features cut in different operations (machines.json
+// "reclamping"): a chuck maker's largest concentricity and axial run-out errors.
+struct ReclampingErrors {
+    std::optional<SourcedValue> concentricity_mm;
+    std::optional<SourcedValue> axialRunout_mm;
+};
+
 // A lathe (resources/data/machines.json): documented limits, keyed by field name
 // ("power_kW", "max_speed_rpm", ...). A measured stiffness is a characterisation of one machine,
 // kept in the project (see Project::characterisation); the data give ranges for the rest.
@@ -144,6 +151,8 @@ public:
 
     [[nodiscard]] const std::vector<BoringBarMaterialData> &boringBarMaterials() const { return m_barMaterials; }
 
+    [[nodiscard]] const ReclampingErrors &reclamping() const { return m_reclamping; }
+
     // Young's modulus of a steel tool shank.
     [[nodiscard]] std::optional<SourcedValue> shankModulus() const { return m_shankModulus; }
 
@@ -167,6 +176,7 @@ private:
     std::optional<SourcedValue> m_negativeSeatInclination;
     std::optional<SourcedValue> m_shankModulus;
     UncharacterisedSupports m_supports;
+    ReclampingErrors m_reclamping;
     std::optional<SourcedValue> m_defaultFeedRatio;
     std::optional<SourcedValue> m_defaultPassiveRatio;
     std::optional<SourcedValue> m_defaultTaylorN;

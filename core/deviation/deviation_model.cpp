@@ -117,7 +117,7 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
 
     // Nodes: supports, profile vertices and every station.
     std::set<double> nodeSet{x0, x1};
-    const SectionAlongZ finished(part);
+    const SectionAlongZ finished(part, 0.0, 0.0, in.stockOuter_mm);
     for (const double z : finished.breakpoints()) {
         if (z > x0 && z < x1)
             nodeSet.insert(z);
@@ -125,6 +125,8 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
         const Contour &contour = side == ContourSide::Outer ? part.outer : part.inner;
         for (const Segment &s : contour.segments) {
+            if (!in.cutFeatures.isEmpty() && !in.cutFeatures.contains(s.id))
+                continue; // another operation cuts it
             FeatureInfluence f{s.id, side, s.kind, {}, {}, {}};
             if (s.isAxial()) {
                 f.z_mm = featureStations(s, x0, x1, stationsPerFeature);
@@ -154,7 +156,7 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
         if (allowance_mm <= 0.0)
             return sweep(index, finishedElements, finishedElements, in);
         const SectionAlongZ uncut(part, side == ContourSide::Outer ? allowance_mm : 0.0,
-                                  side == ContourSide::Inner ? allowance_mm : 0.0);
+                                  side == ContourSide::Inner ? allowance_mm : 0.0, in.stockOuter_mm);
         return sweep(index, buildElements(uncut, in.material, index.nodes), finishedElements, in);
     };
     const Sweeps outer = sweepsFor(ContourSide::Outer);

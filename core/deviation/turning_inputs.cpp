@@ -5,6 +5,7 @@
 #include "core/mechanics/spindle_chuck.h"
 #include "core/part/profile_geometry.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "core/tooling/iso1832.h"
 
 #include <QCoreApplication>
@@ -332,11 +333,15 @@ bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &i
 
 // How deep the boring bar must reach: from the right end face, where it enters, to the deepest
 // inner surface it cuts (not left of the chuck face).
-double boringReach_mm(const PartProfile &part, double supportStart_mm)
+double boringReach_mm(const Project &p, double supportStart_mm)
 {
+    const PartProfile &part = p.part;
     double deepest = part.length_mm();
-    for (const Segment &s : part.inner.segments)
-        deepest = std::min(deepest, std::max(s.from.z_mm, supportStart_mm));
+    for (const Segment &s : part.inner.segments) {
+        // Another operation's bore is not this bar's.
+        if (p.scope ? p.scope->cutFeatures.contains(s.id) : operationOf(p, s.id) == 0)
+            deepest = std::min(deepest, std::max(s.from.z_mm, supportStart_mm));
+    }
     return part.length_mm() - deepest;
 }
 
@@ -375,7 +380,7 @@ std::optional<BoringBar> resolveBar(const Project &p, const DataLibrary &data, c
     BoringBar bar;
     bar.diameter_mm = h->barDiameter_mm->value;
     bar.material = {m->youngsModulus_MPa.value, m->poissonRatio.value, true};
-    const double reach = boringReach_mm(p.part, in.supportStart_mm);
+    const double reach = boringReach_mm(p, in.supportStart_mm);
     bar.overhang_mm = t.overhang_mm.value_or(reach);
     if (bar.overhang_mm + kProfileEpsilon_mm < reach) {
         out.push_back(makeError(QStringLiteral("boring_tool.overhang_mm"),
@@ -603,7 +608,7 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
         if (!in.boring)
             return result;
         noteBar(p, data, *in.boring, in.notes);
-    } else if (!p.part.inner.empty()) {
+    } else if (cutsBores(p)) {
         in.notes << DeviationModel::tr("No boring bar given: the bores are computed as if cut by the turning tool "
                                        "%1, without the bending of a bar, which in a bore is often the largest term.")
                         .arg(p.tool.holderCode);
@@ -620,6 +625,18 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
         in.thermal = p.characterisation.thermal;
         if (!in.thermal)
             in.notes << DeviationModel::tr("Thermal drift not characterised for this machine: taken as zero.");
+    }
+    if (p.scope) {
+        in.cutFeatures = p.scope->cutFeatures;
+        in.stockOuter_mm = p.scope->stockOuter_mm;
+        in.notes << DeviationModel::tr("%1, operation %2 of %3: the part held at its %4 end, z from that end.")
+                        .arg(p.scope->name)
+                        .arg(p.scope->index + 1)
+                        .arg(p.scope->count)
+                        .arg(displayName(p.clamping.heldEnd));
+        if (!in.stockOuter_mm.empty())
+            in.notes << DeviationModel::tr("The outer features later operations turn are still the stock, Ø%1 mm.")
+                            .arg(num(p.part.stockDiameter_mm));
     }
     in.timeSinceStart_min = p.environment.timeSinceStart_min.value_or(0.0);
     in.ambientTemperature_C = p.environment.ambientTemperature_C.value_or(20.0);

@@ -90,7 +90,11 @@ struct TurningInputs {
     std::optional<double> maxSpindleSpeed_rpm;
     std::optional<double> maxPower_kW;
     std::optional<BoringInputs> boring; // the inner contour's tool, when the project names one
-    QStringList notes;                  // assumptions the result depends on, for people
+    // One operation of several (Project::scope): the features it cuts (empty: all) and where the
+    // part still has its stock.
+    QStringList cutFeatures;
+    std::vector<std::pair<double, double>> stockOuter_mm;
+    QStringList notes; // assumptions the result depends on, for people
 
     // The forces on the tool that cuts a contour: the boring bar's in a bore, when there is one.
     [[nodiscard]] const CuttingForces &forcesOn(ContourSide side) const

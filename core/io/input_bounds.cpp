@@ -29,13 +29,19 @@ std::vector<InputBound> makeBounds()
         {QStringLiteral(R"(part\.stock_diameter_mm)"), 2.0 * kMaxRadius_mm, mm},
         {QStringLiteral(R"(part\.(outer|inner)\[\]\.(from|to)\.z_mm)"), kMaxLength_mm, mm},
         {QStringLiteral(R"(part\.(outer|inner)\[\]\.((from|to)\.r_mm|radius_mm))"), kMaxRadius_mm, mm},
-        {QStringLiteral(R"(clamping\.clamped_length_mm|characterisation\.pivot_distance_mm)"), kMaxLength_mm, mm},
-        {QStringLiteral(R"((boring_)?tool\.(overhang|edge_offset)_mm)"), 1000.0, mm},
-        {QStringLiteral(R"((boring_)?tool\.(rake|inclination)_deg)"), 90.0, QStringLiteral("°")},
-        {QStringLiteral(R"((passes\[\]|planning\.ranges)\.cutting_speed_m_min(\.min|\.max)?)"), 2000.0,
-         QStringLiteral("m/min")},
-        {QStringLiteral(R"((passes\[\]|planning\.ranges)\.feed_mm_rev(\.min|\.max)?)"), 5.0, QStringLiteral("mm/rev")},
-        {QStringLiteral(R"((passes\[\]|planning\.ranges)\.depth_of_cut_mm(\.min|\.max)?)"), 50.0, mm},
+        {QStringLiteral(
+             R"((further_operations\[\]\.)?clamping\.clamped_length_mm|characterisation\.pivot_distance_mm)"),
+         kMaxLength_mm, mm},
+        {QStringLiteral(R"((further_operations\[\]\.)?(boring_)?tool\.(overhang|edge_offset)_mm)"), 1000.0, mm},
+        {QStringLiteral(R"((further_operations\[\]\.)?(boring_)?tool\.(rake|inclination)_deg)"), 90.0,
+         QStringLiteral("°")},
+        {QStringLiteral(
+             R"(((further_operations\[\]\.)?passes\[\]|planning\.ranges)\.cutting_speed_m_min(\.min|\.max)?)"),
+         2000.0, QStringLiteral("m/min")},
+        {QStringLiteral(R"(((further_operations\[\]\.)?passes\[\]|planning\.ranges)\.feed_mm_rev(\.min|\.max)?)"), 5.0,
+         QStringLiteral("mm/rev")},
+        {QStringLiteral(R"(((further_operations\[\]\.)?passes\[\]|planning\.ranges)\.depth_of_cut_mm(\.min|\.max)?)"),
+         50.0, mm},
         {QStringLiteral(R"(tolerances\[\]\.(upper|lower|value)_um)"), 100000.0, QStringLiteral("µm")},
         {QStringLiteral(R"(cutting_model\.(feed|passive)_to_cutting_ratio)"), 5.0, QString()},
         {QStringLiteral(R"(cutting_model\.normal_pressure_MPa)"), 100000.0, QStringLiteral("MPa")},
@@ -77,8 +83,10 @@ qsizetype longestList(const QString &path)
     if (path == QLatin1String("part.outer") || path == QLatin1String("part.inner") ||
         path == QLatin1String("tolerances") || path == QLatin1String("datums"))
         return 1000;
-    if (path == QLatin1String("passes"))
+    if (path == QLatin1String("passes") || path.endsWith(QLatin1String(".passes")))
         return 101;
+    if (path == QLatin1String("further_operations"))
+        return 100;
     return 10000;
 }
 

@@ -241,14 +241,16 @@ Environment readEnvironment(const QJsonObject &json, Diagnostics &out)
     return e;
 }
 
-Clamping readClamping(const QJsonObject &json, Diagnostics &out)
+Clamping readClamping(const QJsonObject &json, const QString &path, Diagnostics &out)
 {
-    JsonObjectReader r(json, QStringLiteral("clamping"), out);
+    JsonObjectReader r(json, path, out);
     Clamping c;
     c.method =
         readKeyword<ClampingMethod>(r, QStringLiteral("method"), Presence::Required, ProjectJson::tr("clamping method"))
             .value_or(ClampingMethod::Chuck);
     c.clampedLength_mm = r.number(QStringLiteral("clamped_length_mm"), Presence::Optional).value_or(0.0);
+    c.heldEnd = readKeyword<PartEnd>(r, QStringLiteral("held_end"), Presence::Optional, ProjectJson::tr("part end"))
+                    .value_or(PartEnd::Left);
     r.finish();
     return c;
 }
@@ -284,6 +286,39 @@ CuttingPass readPass(JsonObjectReader &r)
     p.feed_mm_rev = r.number(QStringLiteral("feed_mm_rev"), Presence::Required).value_or(0.0);
     p.depthOfCut_mm = r.number(QStringLiteral("depth_of_cut_mm"), Presence::Required).value_or(0.0);
     return p;
+}
+
+QStringList readTextList(JsonObjectReader &r, const QString &key, Diagnostics &out)
+{
+    QStringList items;
+    const auto json = r.array(key, Presence::Optional);
+    if (!json)
+        return items;
+    for (qsizetype i = 0; i < json->size(); ++i) {
+        if (json->at(i).isString())
+            items << json->at(i).toString();
+        else
+            out.push_back(
+                makeError(elementPath(r.fieldPath(key), i),
+                          ProjectJson::tr("expected a feature id, found %1").arg(describeJsonValue(json->at(i)))));
+    }
+    return items;
+}
+
+// One of "further_operations" (format version 2, docs/project-format.md).
+Operation readOperation(JsonObjectReader &r, Diagnostics &out)
+{
+    Operation op;
+    op.name = r.text(QStringLiteral("name"), Presence::Required).value_or(QString());
+    if (const auto clamping = r.object(QStringLiteral("clamping"), Presence::Required))
+        op.clamping = readClamping(*clamping, r.fieldPath(QStringLiteral("clamping")), out);
+    if (const auto tool = r.object(QStringLiteral("tool"), Presence::Required))
+        op.tool = readTool(*tool, r.fieldPath(QStringLiteral("tool")), out);
+    if (const auto tool = r.object(QStringLiteral("boring_tool"), Presence::Optional))
+        op.boringTool = readTool(*tool, r.fieldPath(QStringLiteral("boring_tool")), out);
+    op.passes = readList<CuttingPass>(r, QStringLiteral("passes"), out, readPass);
+    op.features = readTextList(r, QStringLiteral("features"), out);
+    return op;
 }
 
 Datum readDatum(JsonObjectReader &r)
@@ -344,9 +379,11 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
         return std::nullopt;
     }
     const auto version = r.integer(QStringLiteral("version"), Presence::Required);
-    if (version && *version != kProjectFormatVersion) {
+    // Version 1 is read as it is: a project of one operation, held at its left end (the upgrade,
+    // docs/project-format.md "Versions"); it is written back as version 2.
+    if (version && *version != kProjectFormatVersion && *version != 1) {
         out.push_back(makeError(QStringLiteral("version"),
-                                ProjectJson::tr("unknown format version %1; this TolTurn reads version %2")
+                                ProjectJson::tr("unknown format version %1; this TolTurn reads versions 1 to %2")
                                     .arg(*version)
                                     .arg(kProjectFormatVersion)));
         return std::nullopt;
@@ -364,8 +401,13 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
     if (const auto tool = r.object(QStringLiteral("boring_tool"), Presence::Optional))
         p.boringTool = readTool(*tool, QStringLiteral("boring_tool"), out);
     if (const auto clamping = r.object(QStringLiteral("clamping"), Presence::Required))
-        p.clamping = readClamping(*clamping, out);
+        p.clamping = readClamping(*clamping, QStringLiteral("clamping"), out);
     p.passes = readList<CuttingPass>(r, QStringLiteral("passes"), out, readPass);
+    if (version && *version >= 2) {
+        p.firstOperationName = r.text(QStringLiteral("first_operation_name"), Presence::Optional).value_or(QString());
+        p.furtherOperations = readList<Operation>(r, QStringLiteral("further_operations"), out,
+                                                  [&out](JsonObjectReader &op) { return readOperation(op, out); });
+    }
     p.datums = readList<Datum>(r, QStringLiteral("datums"), out, readDatum);
     if (const auto model = r.object(QStringLiteral("cutting_model"), Presence::Optional))
         p.cuttingModel = readCuttingModel(*model, out);
@@ -459,6 +501,38 @@ QJsonObject toolJson(const Tool &t)
     insertOptional(tool, "inclination_deg", t.inclination_deg);
     insertOptional(tool, "edge_offset_mm", t.edgeOffset_mm);
     return tool;
+}
+
+QJsonObject clampingJson(const Clamping &c)
+{
+    QJsonObject o{{QStringLiteral("method"), keyword(c.method)},
+                  {QStringLiteral("clamped_length_mm"), c.clampedLength_mm}};
+    if (c.heldEnd != PartEnd::Left)
+        o.insert(QStringLiteral("held_end"), keyword(c.heldEnd));
+    return o;
+}
+
+QJsonArray passesJson(const std::vector<CuttingPass> &list)
+{
+    QJsonArray passes;
+    for (const CuttingPass &pass : list)
+        passes.append(QJsonObject{{QStringLiteral("kind"), keyword(pass.kind)},
+                                  {QStringLiteral("cutting_speed_m_min"), pass.cuttingSpeed_m_min},
+                                  {QStringLiteral("feed_mm_rev"), pass.feed_mm_rev},
+                                  {QStringLiteral("depth_of_cut_mm"), pass.depthOfCut_mm}});
+    return passes;
+}
+
+QJsonObject operationJson(const Operation &op)
+{
+    QJsonObject o{{QStringLiteral("name"), op.name},
+                  {QStringLiteral("clamping"), clampingJson(op.clamping)},
+                  {QStringLiteral("tool"), toolJson(op.tool)},
+                  {QStringLiteral("passes"), passesJson(op.passes)},
+                  {QStringLiteral("features"), QJsonArray::fromStringList(op.features)}};
+    if (op.boringTool)
+        o.insert(QStringLiteral("boring_tool"), toolJson(*op.boringTool));
+    return o;
 }
 
 QJsonObject springsJson(const SpindleSprings &s)
@@ -683,12 +757,6 @@ QJsonObject projectJsonObject(const Project &p)
 
     const QJsonObject tool = toolJson(p.tool);
 
-    QJsonArray passes;
-    for (const CuttingPass &pass : p.passes)
-        passes.append(QJsonObject{{QStringLiteral("kind"), keyword(pass.kind)},
-                                  {QStringLiteral("cutting_speed_m_min"), pass.cuttingSpeed_m_min},
-                                  {QStringLiteral("feed_mm_rev"), pass.feed_mm_rev},
-                                  {QStringLiteral("depth_of_cut_mm"), pass.depthOfCut_mm}});
     QJsonArray datums;
     for (const Datum &d : p.datums)
         datums.append(QJsonObject{{QStringLiteral("label"), d.label}, {QStringLiteral("feature"), d.featureId}});
@@ -703,14 +771,21 @@ QJsonObject projectJsonObject(const Project &p)
         {QStringLiteral("material"), p.materialId},
         {QStringLiteral("machine"), p.machineId},
         {QStringLiteral("tool"), tool},
-        {QStringLiteral("clamping"), QJsonObject{{QStringLiteral("method"), keyword(p.clamping.method)},
-                                                 {QStringLiteral("clamped_length_mm"), p.clamping.clampedLength_mm}}},
-        {QStringLiteral("passes"), passes},
+        {QStringLiteral("clamping"), clampingJson(p.clamping)},
+        {QStringLiteral("passes"), passesJson(p.passes)},
         {QStringLiteral("datums"), datums},
         {QStringLiteral("tolerances"), tolerances},
     };
     if (p.boringTool)
         root.insert(QStringLiteral("boring_tool"), toolJson(*p.boringTool));
+    if (!p.firstOperationName.isEmpty())
+        root.insert(QStringLiteral("first_operation_name"), p.firstOperationName);
+    if (!p.furtherOperations.empty()) {
+        QJsonArray operations;
+        for (const Operation &op : p.furtherOperations)
+            operations.append(operationJson(op));
+        root.insert(QStringLiteral("further_operations"), operations);
+    }
     if (p.cuttingModel != CuttingModel{})
         root.insert(QStringLiteral("cutting_model"), cuttingModelJson(p.cuttingModel));
     if (p.characterisation != MachineCharacterisation{})

@@ -13,7 +13,9 @@
 namespace tolturn {
 
 // The project file format (docs/project-format.md): JSON, identified by "format" and "version".
-inline constexpr int kProjectFormatVersion = 1;
+// Version 2 adds operations (set-ups) and the held end of a clamping; version 1 files are read as
+// projects of one operation held at their left end.
+inline constexpr int kProjectFormatVersion = 2;
 inline constexpr char kProjectFormatName[] = "tolturn-project";
 
 struct ProjectParseResult {

@@ -30,11 +30,13 @@ double RoundSection::secondMoment_mm4() const
     return 0.25 * std::numbers::pi * (ro2 * ro2 - ri2 * ri2);
 }
 
-SectionAlongZ::SectionAlongZ(const PartProfile &profile, double outerAllowance_mm, double innerAllowance_mm)
+SectionAlongZ::SectionAlongZ(const PartProfile &profile, double outerAllowance_mm, double innerAllowance_mm,
+                             std::vector<std::pair<double, double>> stockOuter_mm)
     : m_profile(profile)
     , m_outerAllowance_mm(outerAllowance_mm)
     , m_innerAllowance_mm(innerAllowance_mm)
     , m_stockRadius_mm(0.5 * profile.stockDiameter_mm)
+    , m_stockOuter_mm(std::move(stockOuter_mm))
 {
     std::set<double> breaks;
     for (const Contour *c : {&profile.outer, &profile.inner}) {
@@ -53,7 +55,14 @@ RoundSection SectionAlongZ::at(double z_mm) const
     const Approach side = z_mm < m_profile.length_mm() ? Approach::FromRight : Approach::FromLeft;
     RoundSection section;
     section.outerRadius_mm = radiusAt(m_profile.outer, z_mm, side).value_or(0.0);
-    if (m_outerAllowance_mm > 0.0)
+    // Inside a range a later operation turns the part is still the bar; its ends are the
+    // segments' own ends, so an element never spans one (they are breakpoints).
+    const bool stock = std::any_of(m_stockOuter_mm.begin(), m_stockOuter_mm.end(), [&](const auto &r) {
+        return side == Approach::FromRight ? z_mm >= r.first && z_mm < r.second : z_mm > r.first && z_mm <= r.second;
+    });
+    if (stock)
+        section.outerRadius_mm = std::max(section.outerRadius_mm, m_stockRadius_mm);
+    else if (m_outerAllowance_mm > 0.0)
         section.outerRadius_mm =
             std::min(section.outerRadius_mm + m_outerAllowance_mm, std::max(m_stockRadius_mm, section.outerRadius_mm));
     if (const auto bore = radiusAt(m_profile.inner, z_mm, side))

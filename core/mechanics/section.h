@@ -3,6 +3,7 @@
 
 #include "core/part/profile.h"
 
+#include <utility>
 #include <vector>
 
 namespace tolturn {
@@ -39,7 +40,10 @@ struct RoundSection {
 // stock), inner radius from the bore (reduced by an allowance for a bore not yet bored out).
 class SectionAlongZ {
 public:
-    SectionAlongZ(const PartProfile &profile, double outerAllowance_mm = 0.0, double innerAllowance_mm = 0.0);
+    // `stockOuter_mm`: z ranges where the outer radius is still the stock's (features a later
+    // operation turns, docs/operations.md).
+    SectionAlongZ(const PartProfile &profile, double outerAllowance_mm = 0.0, double innerAllowance_mm = 0.0,
+                  std::vector<std::pair<double, double>> stockOuter_mm = {});
 
     [[nodiscard]] RoundSection at(double z_mm) const;
 
@@ -51,6 +55,7 @@ private:
     double m_outerAllowance_mm;
     double m_innerAllowance_mm;
     double m_stockRadius_mm;
+    std::vector<std::pair<double, double>> m_stockOuter_mm;
     std::vector<double> m_breakpoints;
 };
 

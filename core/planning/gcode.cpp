@@ -186,11 +186,19 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     post.tool = options.tool;
     post.spindle = program.spindle;
     post.header << Programs::tr("TolTurn %1: %2").arg(tolturnVersion(), project.part.name)
+
                 << Programs::tr("Material %1, insert %2, holder %3, clamping %4")
                        .arg(project.materialId, project.tool.insertCode, project.tool.holderCode,
                             keyword(project.clamping.method))
                 << Programs::tr("Dialect: %1").arg(program.dialectReason) << compensationSummary(options.compensation)
                 << Programs::tr("Conditions: %1").arg(program.conditions);
+    if (project.scope) // one set-up of several: which, and which end of the drawing is in the chuck
+        post.header.insert(1, Programs::tr("%1, operation %2 of %3: the drawing's %4 end held; the right end face "
+                                           "below is the free end of this set-up")
+                                  .arg(project.scope->name)
+                                  .arg(project.scope->index + 1)
+                                  .arg(project.scope->count)
+                                  .arg(displayName(project.clamping.heldEnd)));
     program.programNumber = options.programNumber;
     program.text = postProcess(program.path, project.part.length_mm(), post);
     program.checksum = QString::fromLatin1(

@@ -4,6 +4,7 @@
 #include "core/cutting/cutting_quantities.h"
 #include "core/deviation/deviation_model.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "core/tooling/iso1832.h"
 
 #include <QCoreApplication>
@@ -61,7 +62,7 @@ void checkLibraryEntries(const Project &p, const DataLibrary &data, Diagnostics 
 void checkBoringTool(const Project &p, const DataLibrary &data, Diagnostics &out)
 {
     if (!p.boringTool) {
-        if (!p.part.inner.empty())
+        if (cutsBores(p))
             out.push_back(makeWarning(QStringLiteral("boring_tool"),
                                       Plausibility::tr("the part has bores but no boring bar is given: they are "
                                                        "computed as if cut by %1, without the bending of a bar")
@@ -94,9 +95,9 @@ void checkBoringTool(const Project &p, const DataLibrary &data, Diagnostics &out
                                     .arg(t.holderCode, t.holderCode.left(1))));
         return;
     }
-    if (p.part.inner.empty())
-        out.push_back(makeWarning(QStringLiteral("boring_tool"),
-                                  Plausibility::tr("a boring bar is given but the part has no bore")));
+    if (!cutsBores(p))
+        out.push_back(
+            makeWarning(QStringLiteral("boring_tool"), Plausibility::tr("a boring bar is given but no bore is cut")));
     if (t.overhang_mm) {
         const double ratio = *t.overhang_mm / bar->barDiameter_mm->value;
         if (ratio > material->maxOverhangRatio.value + 1e-9)
@@ -212,14 +213,36 @@ void checkStockTaken(const Project &p, double smallestDiameter_mm, Diagnostics &
                      num(depth_mm - stock_mm))));
 }
 
+// The findings about one operation's tools and passes, their fields where the file keeps that
+// operation's ("further_operations[0].passes[1].feed_mm_rev"); the project's own (material,
+// machine) only once, with the first.
+void checkOperation(const Project &project, int index, const DataLibrary &data, Diagnostics &out)
+{
+    const Project view = operationView(project, index);
+    Diagnostics found;
+    checkLibraryEntries(view, data, found);
+    checkBoringTool(view, data, found);
+    checkPasses(view, data, found);
+    const QString prefix = QStringLiteral("further_operations[%1].").arg(index - 1);
+    for (Diagnostic &d : found) {
+        const bool ofOperation = d.field.startsWith(QLatin1String("tool")) ||
+                                 d.field.startsWith(QLatin1String("boring_tool")) ||
+                                 d.field.startsWith(QLatin1String("passes"));
+        if (index == 0 || ofOperation) {
+            if (index > 0)
+                d.field.prepend(prefix);
+            out.push_back(d);
+        }
+    }
+}
+
 } // namespace
 
 Diagnostics checkPlausibility(const Project &project, const DataLibrary &data)
 {
     Diagnostics out;
-    checkLibraryEntries(project, data, out);
-    checkBoringTool(project, data, out);
-    checkPasses(project, data, out);
+    for (int k = 0; k < operationCount(project); ++k)
+        checkOperation(project, k, data, out);
     return out;
 }
 

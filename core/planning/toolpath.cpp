@@ -40,6 +40,29 @@ double leftSupport_mm(const Project &project)
     return project.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : project.clamping.clampedLength_mm;
 }
 
+// In one operation of several (docs/operations.md): the left end of the run of features this
+// operation turns from the free end; what lies left of it another operation turns (or turned).
+std::optional<double> operationBoundary_mm(const Project &project)
+{
+    if (!project.scope)
+        return std::nullopt;
+    const std::vector<Segment> &segments = project.part.outer.segments;
+    for (std::size_t i = segments.size(); i-- > 0;) { // clang 14 cannot use views::reverse
+        if (!project.scope->cutFeatures.contains(segments[i].id))
+            return std::max(segments[i].from.z_mm, segments[i].to.z_mm);
+    }
+    return std::nullopt;
+}
+
+// The leftmost z of the nose centre: clear of the jaws (or the driver) by the clearance, and not
+// left of the operation's boundary, where the nose reaches the corner of the last face it turns.
+double toolStop_mm(const Project &project, const ToolpathOptions &options, double noseRadius_mm)
+{
+    const double jaws = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm;
+    const auto boundary = operationBoundary_mm(project);
+    return boundary ? std::max(jaws, *boundary + noseRadius_mm) : jaws;
+}
+
 bool rightEndOnCentre(const Project &project)
 {
     return project.clamping.method != ClampingMethod::Chuck;
@@ -103,6 +126,12 @@ std::vector<PathElement> finishingContour(const Project &project, const Compensa
     return out;
 }
 
+// The chain up to an operation's boundary at z = zb: a face at zb that this operation cuts is the
+// last element (the shoulder it faces down to the surface another one turns), a surface crossing
+// zb ends there.
+std::vector<PathElement> clippedAtBoundary(const std::vector<PathElement> &chain, double zb,
+                                           const QStringList &cutFeatures);
+
 // The point of an element where z = zCut (the element crosses it).
 ProfilePoint pointAtZ(const PathElement &e, double zCut)
 {
@@ -116,6 +145,30 @@ ProfilePoint pointAtZ(const PathElement &e, double zCut)
     const double hi = std::max(e.from.r_mm, e.to.r_mm) + kTiny;
     const double up = e.centre.r_mm + h;
     return {zCut, (up >= lo && up <= hi) ? up : e.centre.r_mm - h};
+}
+
+std::vector<PathElement> clippedAtBoundary(const std::vector<PathElement> &chain, double zb,
+                                           const QStringList &cutFeatures)
+{
+    constexpr double kOnBoundary_mm = 1e-6;
+    std::vector<PathElement> out;
+    for (PathElement e : chain) {
+        const bool face = std::abs(e.from.z_mm - zb) < kOnBoundary_mm && std::abs(e.to.z_mm - zb) < kOnBoundary_mm;
+        if (face) {
+            if (cutFeatures.contains(e.featureId))
+                out.push_back(e);
+            break;
+        }
+        if (e.from.z_mm <= zb + kOnBoundary_mm)
+            break;
+        if (e.to.z_mm < zb) {
+            e.to = pointAtZ(e, zb);
+            out.push_back(e);
+            break;
+        }
+        out.push_back(e);
+    }
+    return out;
 }
 
 // The chain up to where it first passes z = zMin going left.
@@ -174,6 +227,8 @@ void warnWhereTheJawsKeepTheToolOff(const Project &project, double zReached_mm, 
     const double support = leftSupport_mm(project);
     QStringList features;
     for (const Segment &s : project.part.outer.segments) {
+        if (project.scope && !project.scope->cutFeatures.contains(s.id))
+            continue; // another operation turns it
         const double zMin = std::min(s.from.z_mm, s.to.z_mm);
         const double zMax = std::max(s.from.z_mm, s.to.z_mm);
         if (zMax > support + kTiny && zMin < zReached_mm - 1e-6)
@@ -249,7 +304,10 @@ FinishingGeometry finishingGeometry(const Project &project, const ToolpathOption
         if (options.nose == NoseHandling::ControlCompensation)
             chain.front().from.r_mm -= noseRadius_mm;
     }
-    g.contour = clippedAtLeft(chain, leftSupport_mm(project) + options.clearance_mm + noseRadius_mm);
+    const double jaws = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm;
+    const auto boundary = operationBoundary_mm(project);
+    g.contour = boundary && *boundary > jaws ? clippedAtBoundary(chain, *boundary, project.scope->cutFeatures)
+                                             : clippedAtLeft(chain, jaws);
     return g;
 }
 
@@ -379,7 +437,7 @@ std::vector<PassPath> roughingPasses(const Project &project, const std::vector<C
                                      const ToolpathOptions &options, QStringList &warnings)
 {
     const double length = project.part.length_mm();
-    const double zLeft = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm; // nose centre
+    const double zLeft = toolStop_mm(project, options, noseRadius_mm); // nose centre
     const double zRight = length + options.clearance_mm + noseRadius_mm;
     const Contour target = targetContour(project, ContourSide::Outer);
     const Envelope env =
@@ -433,6 +491,10 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
                                        "insert shape): falling contours are not checked.");
     warnWhereTheJawsKeepTheToolOff(project, leftSupport_mm(project) + options.clearance_mm + noseRadius_mm,
                                    options.clearance_mm, path.warnings);
+    if (const auto boundary = operationBoundary_mm(project))
+        path.notes << Toolpaths::tr("%1 turns from the free end to z = %2 mm (from the held end); the rest of the "
+                                    "outer contour is another operation's.")
+                          .arg(project.scope->name, mm(*boundary));
     if (rightEndOnCentre(project))
         path.notes << Toolpaths::tr("The right end face is held by a centre and is not faced: it is faced and "
                                     "centred before the part is set up.");

@@ -42,6 +42,14 @@ struct KeywordTable<ClampingMethod> {
 };
 
 template <>
+struct KeywordTable<PartEnd> {
+    static constexpr std::array<std::pair<PartEnd, const char *>, 2> entries{{
+        {PartEnd::Left, "left"},
+        {PartEnd::Right, "right"},
+    }};
+};
+
+template <>
 struct KeywordTable<PassKind> {
     static constexpr std::array<std::pair<PassKind, const char *>, 2> entries{{
         {PassKind::Roughing, "roughing"},
@@ -110,6 +118,11 @@ QString keyword(ClampingMethod value)
     return keywordOf(value);
 }
 
+QString keyword(PartEnd value)
+{
+    return keywordOf(value);
+}
+
 QString keyword(PassKind value)
 {
     return keywordOf(value);
@@ -144,6 +157,11 @@ struct Names {
     Q_DECLARE_TR_FUNCTIONS(Names)
 };
 } // namespace
+
+QString displayName(PartEnd value)
+{
+    return value == PartEnd::Left ? Names::tr("left") : Names::tr("right");
+}
 
 QString displayName(ClampingMethod value)
 {
@@ -229,6 +247,7 @@ template std::optional<SegmentKind> fromKeyword<SegmentKind>(const QString &);
 template std::optional<ArcDirection> fromKeyword<ArcDirection>(const QString &);
 template std::optional<ClampingMethod> fromKeyword<ClampingMethod>(const QString &);
 template std::optional<PassKind> fromKeyword<PassKind>(const QString &);
+template std::optional<PartEnd> fromKeyword<PartEnd>(const QString &);
 template std::optional<ToleranceType> fromKeyword<ToleranceType>(const QString &);
 template std::optional<ForceModel> fromKeyword<ForceModel>(const QString &);
 template std::optional<PlanningObjective> fromKeyword<PlanningObjective>(const QString &);
@@ -236,6 +255,7 @@ template QStringList allKeywords<SegmentKind>();
 template QStringList allKeywords<ArcDirection>();
 template QStringList allKeywords<ClampingMethod>();
 template QStringList allKeywords<PassKind>();
+template QStringList allKeywords<PartEnd>();
 template QStringList allKeywords<ToleranceType>();
 template QStringList allKeywords<ForceModel>();
 template QStringList allKeywords<PlanningObjective>();

@@ -16,6 +16,7 @@ namespace tolturn {
 [[nodiscard]] QString keyword(SegmentKind value);
 [[nodiscard]] QString keyword(ArcDirection value);
 [[nodiscard]] QString keyword(ClampingMethod value);
+[[nodiscard]] QString keyword(PartEnd value);
 [[nodiscard]] QString keyword(PassKind value);
 [[nodiscard]] QString keyword(ToleranceType value);
 [[nodiscard]] QString keyword(ForceModel value);
@@ -23,6 +24,7 @@ namespace tolturn {
 
 // Names for people, translated: "chuck + tailstock" where the file says "chuck_tailstock".
 [[nodiscard]] QString displayName(ClampingMethod value);
+[[nodiscard]] QString displayName(PartEnd value); // "left", "right", translated
 [[nodiscard]] QString displayName(SegmentKind value);
 [[nodiscard]] QString displayName(ToleranceType value);
 

@@ -4,6 +4,7 @@
 #include "core/part/profile.h"
 
 #include <QJsonValue>
+#include <QMap>
 #include <QString>
 #include <QStringList>
 
@@ -16,11 +17,17 @@ namespace tolturn {
 // How the part is held on the lathe (Valiño et al. 2008, §II: the three methods of the model).
 enum class ClampingMethod { Chuck, BetweenCentres, ChuckTailstock };
 
+// An end of the part: left is z = 0 of the drawing, right is z = length.
+enum class PartEnd { Left, Right };
+
 struct Clamping {
     ClampingMethod method = ClampingMethod::Chuck;
-    // Length of the part held in the jaws, from its left end (z = 0). The chuck face is at
-    // z = clampedLength_mm. Zero between centres.
+    // Length of the part held in the jaws, from the held end. The chuck face is at that distance
+    // from it. Zero between centres.
     double clampedLength_mm = 0.0;
+    // The end the chuck holds (between centres: the end on the headstock centre and driver). An
+    // operation that holds the right end sees the part turned end for end (docs/operations.md).
+    PartEnd heldEnd = PartEnd::Left;
 
     friend bool operator==(const Clamping &, const Clamping &) = default;
 };
@@ -188,6 +195,34 @@ struct PlanningSettings {
     friend bool operator==(const PlanningSettings &, const PlanningSettings &) = default;
 };
 
+// A set-up of the part on the lathe after the first (docs/operations.md): its clamping, tools and
+// passes, and the turned features it cuts. The first operation is the project's own clamping,
+// tool, boring tool and passes, and cuts every feature no later operation names.
+struct Operation {
+    QString name; // as the routing sheet names it: "OP 20"
+    Clamping clamping;
+    Tool tool;
+    std::optional<Tool> boringTool;
+    std::vector<CuttingPass> passes;
+    QStringList features; // ids of the features this operation cuts
+
+    friend bool operator==(const Operation &, const Operation &) = default;
+};
+
+// Set on the project of one operation of a project of several (operationView(),
+// docs/operations.md): which operation it is, the features it cuts, and the outer z ranges where
+// the part still has its stock because a later operation turns them.
+struct OperationScope {
+    QString name;
+    int index = 0;
+    int count = 1;
+    QStringList cutFeatures;
+    QMap<QString, QString> cutElsewhere;                  // feature id -> the operation that cuts it, for the others
+    std::vector<std::pair<double, double>> stockOuter_mm; // [z from, z to] in the operation's frame
+
+    friend bool operator==(const OperationScope &, const OperationScope &) = default;
+};
+
 struct Project {
     PartProfile part;
     QString materialId;
@@ -198,6 +233,9 @@ struct Project {
     std::optional<Tool> boringTool;
     Clamping clamping;
     std::vector<CuttingPass> passes;
+    QString firstOperationName;               // empty: "OP 10"
+    std::vector<Operation> furtherOperations; // the set-ups after the first, in order
+    std::optional<OperationScope> scope;      // set only on a view of one operation, never in a file
     std::vector<Datum> datums;
     std::vector<Tolerance> tolerances;
     CuttingModel cuttingModel;

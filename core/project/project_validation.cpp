@@ -3,6 +3,7 @@
 
 #include "core/part/profile_validation.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -29,16 +30,16 @@ void requireText(const QString &value, const QString &field, const QString &what
         out.push_back(makeError(field, ProjectValidation::tr("%1 is missing (empty)").arg(what)));
 }
 
-void checkClamping(const Project &p, Diagnostics &out)
+// A clamping of the part; `prefix` is where it stands in the file ("", "further_operations[0].").
+void checkClamping(const Clamping &clamping, double length, const QString &prefix, Diagnostics &out)
 {
-    const double clamped = p.clamping.clampedLength_mm;
-    const QString field = QStringLiteral("clamping.clamped_length_mm");
+    const double clamped = clamping.clampedLength_mm;
+    const QString field = prefix + QStringLiteral("clamping.clamped_length_mm");
     if (!std::isfinite(clamped) || clamped < 0.0) {
         out.push_back(makeError(field, ProjectValidation::tr("must be zero or more, but is %1 mm").arg(num(clamped))));
         return;
     }
-    const double length = p.part.length_mm();
-    switch (p.clamping.method) {
+    switch (clamping.method) {
     case ClampingMethod::Chuck:
     case ClampingMethod::ChuckTailstock:
         if (clamped <= 0.0)
@@ -62,11 +63,11 @@ void checkClamping(const Project &p, Diagnostics &out)
     }
 }
 
-void checkPasses(const Project &p, Diagnostics &out)
+void checkPasses(const std::vector<CuttingPass> &passes, const QString &prefix, Diagnostics &out)
 {
-    for (std::size_t i = 0; i < p.passes.size(); ++i) {
-        const CuttingPass &pass = p.passes[i];
-        const QString path = QStringLiteral("passes[%1].").arg(i);
+    for (std::size_t i = 0; i < passes.size(); ++i) {
+        const CuttingPass &pass = passes[i];
+        const QString path = prefix + QStringLiteral("passes[%1].").arg(i);
         const std::pair<const char *, double> values[] = {{"cutting_speed_m_min", pass.cuttingSpeed_m_min},
                                                           {"feed_mm_rev", pass.feed_mm_rev},
                                                           {"depth_of_cut_mm", pass.depthOfCut_mm}};
@@ -399,14 +400,24 @@ Diagnostics validateProject(const Project &project)
     requireText(project.materialId, QStringLiteral("material"), ProjectValidation::tr("the work material"), out);
     requireText(project.machineId, QStringLiteral("machine"), ProjectValidation::tr("the machine"), out);
     requireText(project.tool.insertCode, QStringLiteral("tool.insert"), ProjectValidation::tr("the insert code"), out);
-    checkClamping(project, out);
-    checkPasses(project, out);
+    checkClamping(project.clamping, project.part.length_mm(), QString(), out);
+    checkPasses(project.passes, QString(), out);
+    for (std::size_t i = 0; i < project.furtherOperations.size(); ++i) {
+        const Operation &op = project.furtherOperations[i];
+        const QString prefix = QStringLiteral("further_operations[%1].").arg(i);
+        checkClamping(op.clamping, project.part.length_mm(), prefix, out);
+        checkPasses(op.passes, prefix, out);
+        requireText(op.tool.insertCode, prefix + QStringLiteral("tool.insert"),
+                    ProjectValidation::tr("the insert code"), out);
+    }
     checkDatums(project, out);
     checkTolerances(project, out);
     checkCuttingModel(project, out);
     checkCharacterisation(project, out);
     checkEnvironment(project.environment, out);
     checkPlanning(project, out);
+    const Diagnostics operations = checkOperations(project);
+    out.insert(out.end(), operations.begin(), operations.end());
     return out;
 }
 

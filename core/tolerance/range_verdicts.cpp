@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/tolerance/range_verdicts.h"
 
+#include "core/project/operations.h"
+
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -198,6 +201,24 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
         out.tolerances.push_back(e);
     }
     return out;
+}
+
+void addReclampingNotes(const Project &project, RangeEvaluation &range, const DataLibrary &data)
+{
+    for (ToleranceRangeEvaluation &e : range.tolerances) {
+        const auto t = std::find_if(project.tolerances.begin(), project.tolerances.end(),
+                                    [&e](const Tolerance &x) { return x.id == e.compliant.toleranceId; });
+        if (t == project.tolerances.end())
+            continue;
+        const auto error = reclampingError(project, *t, data);
+        if (!error)
+            continue;
+        const bool predicted = e.compliant.value_um.has_value() && e.compliant.limit_um.has_value();
+        const std::optional<double> value = predicted ? e.compliant.value_um : std::optional<double>(0.0);
+        const std::optional<double> limit = predicted ? e.compliant.limit_um : t->zone_um;
+        const QString text = reclampingText(project, *t, *error, value, limit);
+        e.compliant.reason = e.compliant.reason.isEmpty() ? text : text + QStringLiteral(". ") + e.compliant.reason;
+    }
 }
 
 QString rangeVerdictKeyword(RangeVerdict verdict)

@@ -62,6 +62,12 @@ struct RangeEvaluation {
 [[nodiscard]] RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLibrary &data,
                                                          const DeviationOptions &options = {});
 
+// For the view of one operation of several (docs/operations.md): every tolerance that relates a
+// feature to one cut in another set-up gets, in its reason, the error of clamping the part again
+// and the largest re-clamping error it holds with. Where the deflection predicts nothing of it
+// (coaxiality), the re-clamping error is all there is, against the tolerance's zone.
+void addReclampingNotes(const Project &project, RangeEvaluation &range, const DataLibrary &data);
+
 [[nodiscard]] QString rangeVerdictKeyword(RangeVerdict verdict); // "passes_on_any_machine", ...
 // For people: "passes on any machine in the range", "passes if stiffer than 120 N/µm", ...
 [[nodiscard]] QString rangeVerdictText(const ToleranceRangeEvaluation &e);

@@ -222,6 +222,32 @@ private Q_SLOTS:
         QVERIFY2(text.out.contains(QStringLiteral("Boring bar S25T-PCLNR12 (steel)")), qPrintable(text.out));
     }
 
+    // A bushing bored from both ends in two set-ups: evaluate judges each on its own; the
+    // coaxiality of the two seats, cut in different set-ups, holds only if clamping again costs
+    // less than its 20 µm zone (the deflection predicts none of it).
+    void evaluateOperations()
+    {
+        const Run r = runCli({QStringLiteral("evaluate"), example("bushing-two-setups.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains(QStringLiteral("OP 10 (operation 1 of 2): chuck, the left end held")) &&
+                     r.out.contains(QStringLiteral("OP 20 (operation 2 of 2): chuck, the right end held")),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("datum A on I5 is cut in OP 10, I1 in OP 20")));
+        QVERIFY(r.out.contains(QStringLiteral("it holds only if the re-clamping error stays below 20.0 µm")));
+        const Run json =
+            runCli({QStringLiteral("evaluate"), QStringLiteral("--json"), example("bushing-two-setups.tolturn")});
+        const QJsonArray ops =
+            QJsonDocument::fromJson(json.out.toUtf8()).object().value(QStringLiteral("operations")).toArray();
+        QCOMPARE(ops.size(), 2);
+        QCOMPARE(ops.at(1).toObject().value(QStringLiteral("held_end")).toString(), QStringLiteral("right"));
+        const Run unknown = runCli({QStringLiteral("deflect"), QStringLiteral("--operation"), QStringLiteral("OP 30"),
+                                    example("bushing-two-setups.tolturn")});
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY2(unknown.err.contains(QStringLiteral("--operation: the project has no operation \"OP 30\"; it has: "
+                                                     "OP 10, OP 20")),
+                 qPrintable(unknown.err));
+    }
+
     // An overhang beyond the maker's 4 x D for a steel bar is a warning of check.
     void checkBoringBarOverhang()
     {

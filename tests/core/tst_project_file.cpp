@@ -429,7 +429,7 @@ private Q_SLOTS:
             QTest::newRow(name) << example << edits << QString::fromUtf8(field) << QString::fromUtf8(fragment);
         };
         row("not a TolTurn file", shaft, {QStringLiteral("format=\"cam-job\"")}, "format", "\"cam-job\"");
-        row("unknown version", shaft, {QStringLiteral("version=2")}, "version", "unknown format version 2");
+        row("unknown version", shaft, {QStringLiteral("version=3")}, "version", "unknown format version 3");
         row("version not a number", shaft, {QStringLiteral("version=\"1\"")}, "version", "the text \"1\"");
         row("missing material", shaft, {QStringLiteral("material=<delete>")}, "material", "required but missing");
         row("stock not a number", shaft, {QStringLiteral("part.stock_diameter_mm=\"sixty\"")}, "part.stock_diameter_mm",

@@ -10,6 +10,7 @@
 #include "core/part/profile_geometry.h"
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
+#include "core/project/operations.h"
 #include "core/tolerance/target_contour.h"
 
 #include <QDir>
@@ -370,10 +371,16 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("file");
         QTest::addColumn<int>("nose");
+        QTest::addColumn<int>("operation");
         for (const QString &f : QDir(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples"))
                                     .entryList({QStringLiteral("*.tolturn")}, QDir::Files)) {
-            QTest::addRow("%s G42", qPrintable(f)) << f << static_cast<int>(NoseHandling::ControlCompensation);
-            QTest::addRow("%s tip path", qPrintable(f)) << f << static_cast<int>(NoseHandling::TipPath);
+            // Each set-up of a project of several has its own program.
+            for (int k = 0; k < operationCount(example(f)); ++k) {
+                QTest::addRow("%s op %d G42", qPrintable(f), k + 1)
+                    << f << static_cast<int>(NoseHandling::ControlCompensation) << k;
+                QTest::addRow("%s op %d tip path", qPrintable(f), k + 1)
+                    << f << static_cast<int>(NoseHandling::TipPath) << k;
+            }
         }
     }
 
@@ -386,7 +393,8 @@ private Q_SLOTS:
     {
         QFETCH(QString, file);
         QFETCH(int, nose);
-        const Project p = example(file);
+        QFETCH(int, operation);
+        const Project p = operationView(example(file), operation);
         const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
         QVERIFY(d.inputs);
         const double re = d.inputs->noseRadius_mm;
@@ -420,7 +428,18 @@ private Q_SLOTS:
             for (const ProfilePoint &c : sampled(e, 0.01))
                 closest = std::min(closest, distanceTo(contour, c));
         QVERIFY2(closest >= re - 0.001, qPrintable(QStringLiteral("gouge: %1").arg(closest, 0, 'f', 5)));
-        const double zFrom = support + 2.0 + re;
+        // In one set-up of several the program turns from the free end to where another operation's
+        // outer features begin.
+        double boundary = 0.0;
+        if (p.scope) {
+            for (auto it = p.part.outer.segments.rbegin(); it != p.part.outer.segments.rend(); ++it) {
+                if (!p.scope->cutFeatures.contains(it->id)) {
+                    boundary = std::max(it->from.z_mm, it->to.z_mm);
+                    break;
+                }
+            }
+        }
+        const double zFrom = std::max(support + 2.0 + re, boundary);
         const bool faced = p.clamping.method == ClampingMethod::Chuck;
         // A sharp inner corner keeps the nose radius: contour points within r_e of one are not reached.
         std::vector<ProfilePoint> innerCorners;
@@ -435,13 +454,24 @@ private Q_SLOTS:
             for (const ProfilePoint &q : sampled(e, 0.05)) {
                 const bool nearInnerCorner = std::any_of(innerCorners.begin(), innerCorners.end(),
                                                          [&](ProfilePoint c) { return distance(c, q) < re + 1e-6; });
-                if (q.z_mm < zFrom - 1e-9 || (!faced && std::abs(q.z_mm - length) < 1e-9) ||
+                const bool othersFeature = p.scope && !p.scope->cutFeatures.contains(e.featureId);
+                if (othersFeature || q.z_mm < zFrom - 1e-9 || (!faced && std::abs(q.z_mm - length) < 1e-9) ||
                     (e.from.z_mm < zFrom && e.to.z_mm < zFrom) || nearInnerCorner)
                     continue;
                 farthest = std::max(farthest, distanceTo(centre, q));
             }
         }
         QVERIFY2(farthest <= re + 0.001, qPrintable(QStringLiteral("not reached: %1").arg(farthest, 0, 'f', 5)));
+        // Nor does it touch what another operation turns (or turned): the nose centre stays right
+        // of the boundary.
+        double leftmost = 1e9;
+        for (const PathElement &e : centre)
+            for (const ProfilePoint &c : sampled(e, 0.05))
+                leftmost = std::min(leftmost, c.z_mm);
+        QVERIFY2(leftmost >= boundary - 0.001, qPrintable(QStringLiteral("over another operation's features: z = "
+                                                                         "%1 < %2")
+                                                              .arg(leftmost)
+                                                              .arg(boundary)));
 
         o.dialect = ControlDialect::FanucHaas;
         const QString fanuc = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o).text;

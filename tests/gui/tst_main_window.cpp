@@ -19,9 +19,12 @@
 #include "widgets/profile/profile_view.h"
 #include "widgets/profile/tolerance_frame_item.h"
 #include "widgets/results/deflection_panel.h"
+#include "widgets/tolerances/tolerance_panel.h"
+#include "widgets/tolerances/tolerance_verdict_model.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
@@ -29,6 +32,7 @@
 #include <QGraphicsRectItem>
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -39,6 +43,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolBar>
+#include <QWidgetAction>
 
 using namespace tolturn;
 using tolturn::test::closeNextMessageBox;
@@ -417,8 +422,8 @@ private Q_SLOTS:
         int icons = 0;
         const QList<QAction *> actions = toolBar->actions();
         for (const QAction *action : actions) {
-            if (action->isSeparator())
-                continue;
+            if (action->isSeparator() || qobject_cast<const QWidgetAction *>(action) != nullptr)
+                continue; // a widget in the toolbar (the set-up choice) has no icon
             const QImage image = action->icon().pixmap(QSize(48, 48)).toImage();
             QVERIFY2(!image.isNull() && image.width() == 48, qPrintable(action->text()));
             // Not blank: an SVG that failed to load would give a transparent or empty image.
@@ -443,6 +448,38 @@ private Q_SLOTS:
             QVERIFY2(w.fileController()->openExample(path), qPrintable(path));
             QVERIFY(!itemsOfKind(w, profile_item::kOuterContour).isEmpty());
         }
+    }
+
+    // A project of two set-ups: the toolbar offers them; each shows its own part as held, its
+    // verdicts and its program (docs/operations.md).
+    void operationsAreShownOneAtATime()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("bushing-two-setups.tolturn")));
+        auto *box = w.findChild<QComboBox *>(QStringLiteral("operationBox"));
+        QVERIFY(box);
+        QCOMPARE(box->count(), 2);
+        QVERIFY(box->itemText(1).startsWith(QStringLiteral("OP 20")));
+        // Every tolerance is listed; those of OP 20's features say where they are judged.
+        ToleranceVerdictModel *model = w.tolerancePanel()->model();
+        QCOMPARE(model->rowCount(), 6);
+        QCOMPARE(model->rangeVerdict(0).compliant.verdict == Verdict::CannotEvaluate, false); // T1 on I5: OP 10
+        QVERIFY(model->rangeVerdict(1).compliant.reason.contains(QStringLiteral("I1 is cut in OP 20")));
+        QVERIFY(w.tolerancePanel()->banner()->text().contains(QStringLiteral("OP 10")));
+        box->setCurrentIndex(1);
+        Q_EMIT box->activated(1);
+        QVERIFY(model->rangeVerdict(0).compliant.reason.contains(QStringLiteral("I5 is cut in OP 10")));
+        QCOMPARE(model->rangeVerdict(1).compliant.toleranceId, QStringLiteral("T2"));
+        QVERIFY(model->rangeVerdict(1).compliant.value_um.has_value());
+        QVERIFY(w.tolerancePanel()->banner()->text().contains(QStringLiteral("OP 20")));
+        const DeviationResult &r = w.deflectionPanel()->result();
+        QVERIFY(std::any_of(r.features.begin(), r.features.end(),
+                            [](const FeatureDeviation &f) { return f.featureId == QLatin1String("O2"); }));
+        QVERIFY(std::none_of(r.features.begin(), r.features.end(),
+                             [](const FeatureDeviation &f) { return f.featureId == QLatin1String("O4"); }));
+        QVERIFY2(w.planningPanel()->gcodeText().contains(QStringLiteral("OP 20, OPERATION 2 OF 2")),
+                 qPrintable(w.planningPanel()->gcodeText().left(400)));
+        test::saveScreenshot(w, "operations.png");
     }
 
     // The deflection curves appear for the open part, per contribution, and follow the project.

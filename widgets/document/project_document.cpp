@@ -279,6 +279,43 @@ Diagnostics ProjectDocument::setPasses(const std::vector<CuttingPass> &passes, c
     return editField(&Project::passes, passes, description);
 }
 
+Diagnostics ProjectDocument::setOperationPasses(int index, const std::vector<CuttingPass> &passes,
+                                                const QString &description)
+{
+    if (index <= 0)
+        return setPasses(passes, description);
+    std::vector<Operation> operations = project().furtherOperations;
+    operations.at(static_cast<std::size_t>(index - 1)).passes = passes;
+    return editField(&Project::furtherOperations, operations, description);
+}
+
+Diagnostics ProjectDocument::setOperationTool(int index, const Tool &tool)
+{
+    if (index <= 0)
+        return setTool(tool);
+    std::vector<Operation> operations = project().furtherOperations;
+    operations.at(static_cast<std::size_t>(index - 1)).tool = tool;
+    return editField(&Project::furtherOperations, operations, tr("Change tool"));
+}
+
+Diagnostics ProjectDocument::setOperationBoringTool(int index, const std::optional<Tool> &tool)
+{
+    if (index <= 0)
+        return setBoringTool(tool);
+    std::vector<Operation> operations = project().furtherOperations;
+    operations.at(static_cast<std::size_t>(index - 1)).boringTool = tool;
+    return editField(&Project::furtherOperations, operations, tr("Change boring bar"));
+}
+
+Diagnostics ProjectDocument::setOperationClamping(int index, const Clamping &clamping)
+{
+    if (index <= 0)
+        return setClamping(clamping);
+    std::vector<Operation> operations = project().furtherOperations;
+    operations.at(static_cast<std::size_t>(index - 1)).clamping = clamping;
+    return editField(&Project::furtherOperations, operations, tr("Change clamping"));
+}
+
 Diagnostics ProjectDocument::setMaterial(const QString &materialId)
 {
     return editField(&Project::materialId, materialId, tr("Change material to %1").arg(materialId));

@@ -63,6 +63,12 @@ public:
     Diagnostics setDatum(const Datum &datum);
     Diagnostics setPlanning(const PlanningSettings &planning);
     Diagnostics setPasses(const std::vector<CuttingPass> &passes, const QString &description);
+    // The tool, boring tool and clamping of operation `index` (0: the project's own).
+    Diagnostics setOperationTool(int index, const Tool &tool);
+    Diagnostics setOperationBoringTool(int index, const std::optional<Tool> &tool);
+    Diagnostics setOperationClamping(int index, const Clamping &clamping);
+    // The passes of operation `index` (0: the project's own, docs/operations.md).
+    Diagnostics setOperationPasses(int index, const std::vector<CuttingPass> &passes, const QString &description);
     Diagnostics setMaterial(const QString &materialId);
     Diagnostics setMachine(const QString &machineId);
     Diagnostics setTool(const Tool &tool);

@@ -6,6 +6,7 @@
 #include "core/planning/gcode.h"
 #include "core/planning/planning_problem.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "widgets/common/project_fields.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/common/worker_threads.h"
@@ -340,7 +341,7 @@ void PlanningPanel::optimise()
             poll->deleteLater();
     });
     poll->start(50);
-    const Project project = m_document.project(); // a copy: the worker never touches the document
+    const Project project = operationProject(); // a copy: the worker never touches the document
     m_watcher.setFuture(QtConcurrent::run(
         workerThreads(), [project, options] { return runPlanningJob(project, DataLibrary::builtIn(), options); }));
 }
@@ -356,9 +357,26 @@ void PlanningPanel::applyPlan()
     if (!m_report || !m_report->problem || !m_report->plan.feasible)
         return;
     const std::vector<CuttingPass> passes = m_report->problem->passesOf(m_report->plan.candidate);
-    const Diagnostics problems = m_document.setPasses(passes, tr("Apply optimal passes"));
+    const Diagnostics problems = m_document.setOperationPasses(m_operation, passes, tr("Apply optimal passes"));
     if (!problems.empty())
         QMessageBox::warning(this, tr("Apply to Passes"), problems.front().toString());
+}
+
+void PlanningPanel::setOperation(int index)
+{
+    if (index == m_operation)
+        return;
+    m_operation = index;
+    m_report.reset(); // a plan is of one set-up
+    m_plan->setText(notRunText());
+    m_apply->setEnabled(false);
+    projectChanged();
+}
+
+Project PlanningPanel::operationProject() const
+{
+    const Project &project = m_document.project();
+    return operationView(project, std::min(m_operation, operationCount(project) - 1));
 }
 
 QString PlanningPanel::planText() const
@@ -423,7 +441,7 @@ void PlanningPanel::showPlanPasses()
     m_planPasses->setRowCount(0);
     if (!m_report || !m_report->problem || m_report->cancelled)
         return;
-    Project planned = m_document.project();
+    Project planned = operationProject();
     planned.passes = m_report->problem->passesOf(m_report->plan.candidate);
     const DeviationResult deviation = computeDeviation(planned, DataLibrary::builtIn(), {});
     if (!deviation.inputs)
@@ -502,7 +520,7 @@ void PlanningPanel::showWindow()
         m_map->addMarker(w.base.finishing.feed_mm_rev,
                          speed ? w.base.finishing.cuttingSpeed_m_min : w.base.finishing.depthOfCut_mm, tr("optimum"));
     // The project's own finishing pass, so that the planner sees where the program stands.
-    const std::vector<CuttingPass> &passes = m_document.project().passes;
+    const std::vector<CuttingPass> passes = operationProject().passes;
     if (!passes.empty()) {
         const CuttingPass &programmed = passes.back();
         const double y = speed ? programmed.cuttingSpeed_m_min : programmed.depthOfCut_mm;
@@ -550,7 +568,7 @@ void PlanningPanel::showFinishing()
     if (m_dialect->currentData().isValid())
         options.dialect = static_cast<ControlDialect>(m_dialect->currentData().toInt());
     options.nose = static_cast<NoseHandling>(m_nose->currentData().toInt());
-    const Project &project = m_document.project();
+    const Project project = operationProject();
     m_finishing =
         m_learned
             ? finishingOutputFor(project, DataLibrary::builtIn(),

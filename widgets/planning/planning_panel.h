@@ -59,6 +59,8 @@ public:
 
     // Refreshes what follows the project directly (settings, compensation, G-code).
     void projectChanged();
+    // The operation (set-up) planned, of a project of several (docs/operations.md); 0: the first.
+    void setOperation(int index);
 
     // The currency costs are given in (the preferences); empty: not stated.
     void setCurrency(const QString &currency);
@@ -86,8 +88,11 @@ private:
     void showClamping();
     void showFinishing();
     void showPlanPasses();
+    // The project of the operation planned: what the optimiser, the program and the markers use.
+    [[nodiscard]] Project operationProject() const;
 
     ProjectDocument &m_document;
+    int m_operation = 0;
     std::shared_ptr<const LoadedModel> m_learned;
     QComboBox *m_objective;
     QComboBox *m_plane;

@@ -235,7 +235,9 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const
             DeflectionPanel::addRangeBand(plot, d, *stiff, side, DeflectionPanel::totalRadial_mm, Report::tr("total"));
         if (learned)
             DeflectionPanel::addLearnedTotal(plot, d, *learned, side);
-        plot.setAxisLabels(Report::tr("z from the part's left end [mm]"), Report::tr("deviation [µm]"));
+        plot.setAxisLabels(p.clamping.heldEnd == PartEnd::Right ? Report::tr("z from the held (right) end [mm]")
+                                                                : Report::tr("z from the part's left end [mm]"),
+                           Report::tr("deviation [µm]"));
         plot.rescaleAndReplot();
         l.caption(side == ContourSide::Outer ? Report::tr("Radial deviation of the outer contour (material left)")
                                              : Report::tr("Radial deviation of the bores (material left)"));
@@ -512,8 +514,9 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
     // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
     // and the plan; the plots keep the physics' contributions and add the learned total.
     DeviationResult physics;
-    const RangeEvaluation range =
+    RangeEvaluation range =
         model ? evaluateWithLearned(project, data, *model, &physics) : evaluateOverStiffnessRange(project, data);
+    addReclampingNotes(project, range, data);
     std::optional<LearnedCurves> learned;
     if (model) {
         learned = LearnedCurves{learnedAtStations(project, physics, model->model), model->uncertainty_mm(),
@@ -528,8 +531,14 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
 
     Layout layout;
     titleBlock(layout, project, header);
-    summary(layout, project, range,
-            model ? learnedAssumptionText(*model) : machineAssumptionText(range, DataLibrary::builtIn()));
+    QString assumption = model ? learnedAssumptionText(*model) : machineAssumptionText(range, DataLibrary::builtIn());
+    if (project.scope) // one set-up of several: which, and which end of the drawing it holds
+        assumption.prepend(Report::tr("%1 (set-up %2 of %3, the %4 end held): ")
+                               .arg(project.scope->name)
+                               .arg(project.scope->index + 1)
+                               .arg(project.scope->count)
+                               .arg(displayName(project.clamping.heldEnd)));
+    summary(layout, project, range, assumption);
     drawing(layout, project);
     inputs(layout, project, deviation, finishing);
     if (!step(0.2)) {

@@ -77,6 +77,7 @@ void DeflectionPanel::showResult(const Project &project, DeviationResult result,
     m_result = std::move(result);
     m_stiffEnd = std::move(stiffEnd);
     m_learned = std::move(learned);
+    m_heldAtRight = project.clamping.heldEnd == PartEnd::Right;
     m_plot->setVisible(true);
     m_sideBox->setEnabled(!project.part.inner.empty());
     if (project.part.inner.empty() && m_side == ContourSide::Inner)
@@ -188,8 +189,7 @@ void DeflectionPanel::plotContributions(bool radial)
     if (radial && m_learned)
         addLearnedTotal(*m_plot, m_result, *m_learned, m_side, units);
     m_plot->setTitle(radial ? tr("Radial deviation (material left on the surface)") : tr("Tangential deviation"));
-    m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
-                          tr("deviation [%1]").arg(units.deviationSymbol()));
+    m_plot->setAxisLabels(zAxisLabel(units), tr("deviation [%1]").arg(units.deviationSymbol()));
 }
 
 void DeflectionPanel::plotDiameterError()
@@ -218,8 +218,7 @@ void DeflectionPanel::plotDiameterError()
             [](const Station &st, double learned) { return 2.0 * (st.radiusError_mm + learned); }, 2.0,
             tr("diameter error, physics + learned"), units);
     m_plot->setTitle(tr("Diameter error: machined minus nominal"));
-    m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
-                          tr("diameter error [%1]").arg(units.deviationSymbol()));
+    m_plot->setAxisLabels(zAxisLabel(units), tr("diameter error [%1]").arg(units.deviationSymbol()));
 }
 
 void DeflectionPanel::addLearnedTotal(LinePlot &plot, const DeviationResult &result, const LearnedCurves &learned,
@@ -309,8 +308,15 @@ void DeflectionPanel::plotFaceConicity()
     }
     m_plot->addStems(tr("axial run-out e of each face"), x, y, QColor(0x8c, 0x56, 0x4b));
     m_plot->setTitle(tr("Face conicity: axial run-out of each face"));
-    m_plot->setAxisLabels(tr("z from the part's left end [%1]").arg(units.lengthSymbol()),
-                          tr("axial run-out e [%1]").arg(units.deviationSymbol()));
+    m_plot->setAxisLabels(zAxisLabel(units), tr("axial run-out e [%1]").arg(units.deviationSymbol()));
+}
+
+// z runs from the end the set-up holds: the drawing's left end, or its right end when the part is
+// held turned end for end (docs/operations.md).
+QString DeflectionPanel::zAxisLabel(const DisplayUnits &units) const
+{
+    return m_heldAtRight ? tr("z from the held (right) end [%1]").arg(units.lengthSymbol())
+                         : tr("z from the part's left end [%1]").arg(units.lengthSymbol());
 }
 
 QString DeflectionPanel::summaryText() const

@@ -76,6 +76,7 @@ public:
 
     [[nodiscard]] QString summaryText() const;
     [[nodiscard]] QString boringSummary(const TurningInputs &in) const;
+    [[nodiscard]] QString zAxisLabel(const DisplayUnits &units) const;
 
 private:
     void redraw();
@@ -94,6 +95,7 @@ private:
     std::optional<DeviationResult> m_stiffEnd;
     std::optional<LearnedCurves> m_learned;
     ContourSide m_side = ContourSide::Outer;
+    bool m_heldAtRight = false; // the set-up holds the drawing's right end: z from there
     Quantity m_quantity = Quantity::RadialContributions;
     QComboBox *m_sideBox;
     QComboBox *m_quantityBox;

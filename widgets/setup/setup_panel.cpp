@@ -5,6 +5,7 @@
 #include "core/deviation/stiffness_calibration.h"
 #include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "core/tooling/iso1832.h"
 #include "widgets/common/length_spin_box.h"
 #include "widgets/common/project_fields.h"
@@ -297,8 +298,16 @@ QWidget *SetupPanel::createClampingGroup()
         m_clamping->addItem(displayName(m), static_cast<int>(m));
     m_clamping->setToolTip(tr("Boundary conditions of the workpiece beam: built in at the chuck face, supported "
                               "by the tailstock centre, or by two centres (MODEL.md §3)."));
+    m_heldEnd = new QComboBox;
+    m_heldEnd->setObjectName(QStringLiteral("heldEnd"));
+    m_heldEnd->addItem(tr("left end (as drawn)"), static_cast<int>(PartEnd::Left));
+    m_heldEnd->addItem(tr("right end (turned end for end)"), static_cast<int>(PartEnd::Right));
+    m_heldEnd->setToolTip(tr("The end of the drawing the chuck holds (between centres: the driven end). Held at its "
+                             "right end, the part is computed and programmed turned end for end."));
     form->addRow(tr("&Method:"), m_clamping);
+    form->addRow(tr("Held &end:"), m_heldEnd);
     form->addRow(tr("Clamped &length:"), m_clampedLength);
+    connect(m_heldEnd, &QComboBox::activated, this, &SetupPanel::applyClamping);
     connect(m_clamping, &QComboBox::activated, this, &SetupPanel::applyClamping);
     connect(m_clampedLength, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyClamping);
     return group;
@@ -380,7 +389,7 @@ void SetupPanel::projectChanged()
 void SetupPanel::showValues()
 {
     m_updating = true;
-    const Project &p = m_document.project();
+    const Project p = operationProject();
     m_partName->setText(p.part.name);
     m_drawingNumber->setText(p.part.drawingNumber);
     m_revision->setText(p.part.revision);
@@ -397,6 +406,7 @@ void SetupPanel::showValues()
     m_overhang->setMillimetres(p.tool.overhang_mm.value_or(0.0));
     showBoringTool(p);
     m_clamping->setCurrentIndex(m_clamping->findData(static_cast<int>(p.clamping.method)));
+    m_heldEnd->setCurrentIndex(m_heldEnd->findData(static_cast<int>(p.clamping.heldEnd)));
     m_clampedLength->setMillimetres(p.clamping.clampedLength_mm);
     m_clampedLength->setEnabled(p.clamping.method != ClampingMethod::BetweenCentres);
     if (p.clamping.clampedLength_mm > 0.0)
@@ -471,13 +481,27 @@ void SetupPanel::applyTool()
         showOutcome(insert.diagnostics);
         return;
     }
-    Tool tool = m_document.project().tool;
+    Tool tool = operationProject().tool;
     tool.insertCode = insert.insert->code;
     tool.holderCode = m_holder->currentData().toString();
     // millimetres() keeps a value the box cannot show (a negative one from a file to be repaired).
     const double overhang_mm = m_overhang->millimetres();
     tool.overhang_mm = overhang_mm != 0.0 ? std::optional<double>(overhang_mm) : std::nullopt;
-    showOutcome(m_document.setTool(tool));
+    showOutcome(m_document.setOperationTool(m_operation, tool));
+}
+
+void SetupPanel::setOperation(int index)
+{
+    if (index == m_operation)
+        return;
+    m_operation = index;
+    projectChanged();
+}
+
+Project SetupPanel::operationProject() const
+{
+    const Project &project = m_document.project();
+    return operationView(project, std::min(m_operation, operationCount(project) - 1));
 }
 
 void SetupPanel::showBoringTool(const Project &p)
@@ -518,15 +542,16 @@ void SetupPanel::applyBoringTool()
         return;
     const QString code = m_boringBar->currentData().toString();
     if (code.isEmpty()) {
-        showOutcome(m_document.setBoringTool(std::nullopt));
+        showOutcome(m_document.setOperationBoringTool(m_operation, std::nullopt));
         return;
     }
-    const std::optional<Tool> &before = m_document.project().boringTool;
+    const Project project = operationProject();
+    const std::optional<Tool> &before = project.boringTool;
     Tool tool = before.value_or(Tool{});
     tool.holderCode = code;
     // A new bar starts with the turning tool's insert; the planner changes it where it differs.
     const QString typed = m_boringInsert->text().trimmed();
-    tool.insertCode = typed.isEmpty() ? m_document.project().tool.insertCode : typed;
+    tool.insertCode = typed.isEmpty() ? project.tool.insertCode : typed;
     const InsertParseResult insert = parseInsertCode(tool.insertCode);
     if (!insert.insert) {
         showOutcome(insert.diagnostics);
@@ -539,38 +564,41 @@ void SetupPanel::applyBoringTool()
     tool.edgeOffset_mm = offset_mm != 0.0 ? std::optional<double>(offset_mm) : std::nullopt;
     if (before && tool == *before)
         return;
-    showOutcome(m_document.setBoringTool(tool));
+    showOutcome(m_document.setOperationBoringTool(m_operation, tool));
 }
 
 void SetupPanel::applyClamping()
 {
     if (m_updating)
         return;
-    const Clamping before = m_document.project().clamping;
+    const Project project = operationProject();
+    const Clamping before = project.clamping;
     Clamping clamping;
     clamping.method = static_cast<ClampingMethod>(m_clamping->currentData().toInt());
+    clamping.heldEnd = static_cast<PartEnd>(m_heldEnd->currentData().toInt());
     clamping.clampedLength_mm = m_clampedLength->millimetres();
     if (clamping.method == ClampingMethod::BetweenCentres) {
         clamping.clampedLength_mm = 0.0; // nothing is gripped between centres
     } else if (before.method == ClampingMethod::BetweenCentres) {
         // From centres to a chuck: grip where it gripped before, else the first cylinder.
         clamping.clampedLength_mm =
-            m_lastChuckLength_mm > 0.0 ? m_lastChuckLength_mm : firstCylinderLength(m_document.project().part);
+            m_lastChuckLength_mm > 0.0 ? m_lastChuckLength_mm : firstCylinderLength(project.part);
     }
-    showOutcome(m_document.setClamping(clamping));
+    showOutcome(m_document.setOperationClamping(m_operation, clamping));
 }
 
 // Only the value the user changed: another pass's box may show a value the project holds
 // outside the box's range (a file opened to be repaired), which must not be written back.
 void SetupPanel::applyPassValue(std::size_t pass, int column)
 {
-    if (m_updating || pass >= m_document.project().passes.size())
+    const Project project = operationProject();
+    if (m_updating || pass >= project.passes.size())
         return;
-    std::vector<CuttingPass> passes = m_document.project().passes;
+    std::vector<CuttingPass> passes = project.passes;
     const double value = m_passBoxes[pass][static_cast<std::size_t>(column)]->value();
     CuttingPass &p = passes[pass];
     (column == kSpeed ? p.cuttingSpeed_m_min : column == kFeed ? p.feed_mm_rev : p.depthOfCut_mm) = value;
-    showOutcome(m_document.setPasses(passes, tr("Change cutting conditions")));
+    showOutcome(m_document.setOperationPasses(m_operation, passes, tr("Change cutting conditions")));
 }
 
 void SetupPanel::applyStiffness()

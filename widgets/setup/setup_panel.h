@@ -49,6 +49,11 @@ public:
 
     [[nodiscard]] LengthSpinBox *overhangBox() const { return m_overhang; }
 
+    // The operation (set-up) whose clamping, tools and passes the dock shows and edits.
+    void setOperation(int index);
+
+    [[nodiscard]] QComboBox *heldEndBox() const { return m_heldEnd; }
+
     [[nodiscard]] QComboBox *boringBarBox() const { return m_boringBar; }
 
     [[nodiscard]] QLineEdit *boringInsertEdit() const { return m_boringInsert; }
@@ -93,6 +98,7 @@ private:
     void applyMachine();
     void applyTool();
     void applyBoringTool();
+    [[nodiscard]] Project operationProject() const;
     void showBoringTool(const Project &p);
     QWidget *createBoringGroup();
     void applyClamping();
@@ -118,6 +124,8 @@ private:
     QComboBox *m_clamping;
     LengthSpinBox *m_clampedLength;
     LengthSpinBox *m_overhang;
+    int m_operation = 0;
+    QComboBox *m_heldEnd = nullptr;
     QComboBox *m_boringBar = nullptr;
     QLineEdit *m_boringInsert = nullptr;
     LengthSpinBox *m_boringOverhang = nullptr;

@@ -2,9 +2,12 @@
 #include "widgets/tolerances/tolerance_verdict_model.h"
 
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "widgets/common/display_units.h"
 
 #include <QColor>
+
+#include <algorithm>
 
 namespace tolturn {
 
@@ -39,8 +42,27 @@ void ToleranceVerdictModel::setVerdicts(const Project &project, std::vector<Tole
 {
     beginResetModel();
     m_tolerances = project.tolerances;
-    m_verdicts = std::move(verdicts);
-    m_verdicts.resize(m_tolerances.size());
+    // One row per tolerance of the project, its verdict found by id: a project of several
+    // operations is judged one set-up at a time, and the others' rows say where they are judged.
+    m_verdicts.clear();
+    m_verdicts.reserve(m_tolerances.size());
+    for (const Tolerance &t : m_tolerances) {
+        const auto it = std::find_if(verdicts.begin(), verdicts.end(), [&t](const ToleranceRangeEvaluation &e) {
+            return e.compliant.toleranceId == t.id;
+        });
+        if (it != verdicts.end()) {
+            m_verdicts.push_back(std::move(*it));
+            continue;
+        }
+        ToleranceRangeEvaluation other;
+        other.compliant.toleranceId = t.id;
+        other.compliant.type = t.type;
+        other.compliant.featureId = t.featureId;
+        if (operationCount(project) > 1)
+            other.compliant.reason = tr("%1 is cut in %2: choose that set-up to see its verdict")
+                                         .arg(t.featureId, operationName(project, operationOf(project, t.featureId)));
+        m_verdicts.push_back(std::move(other));
+    }
     endResetModel();
 }
 
