@@ -4869,6 +4869,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1: %2, %3 end held</source>
         <translation>%1: %2, Ende %3 gespannt</translation>
     </message>
+    <message>
+        <source>&amp;Operations…</source>
+        <translation>&amp;Aufspannungen…</translation>
+    </message>
+    <message>
+        <source>The set-ups the part is turned in and the features each cuts</source>
+        <translation>Die Aufspannungen, in denen das Teil gedreht wird, und die Formelemente, die jede bearbeitet</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::MeasuredPartsModel</name>
@@ -5250,6 +5258,41 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the store or the machine changed meanwhile; the model was kept in %1</source>
         <translation>Speicher oder Maschine haben sich inzwischen geändert; das Modell wurde in %1 gespeichert</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::OperationsDialog</name>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>Operations</source>
+        <translation>Aufspannungen</translation>
+    </message>
+    <message>
+        <source>&amp;Add Operation</source>
+        <translation>Aufspannung &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <source>A set-up after the others: the part turned end for end in the chuck, with this project&apos;s tool and passes; tick the features it cuts</source>
+        <translation>Eine Aufspannung nach den anderen: das Teil umgedreht im Spannfutter, mit Werkzeug und Schnitten dieses Projekts; die Formelemente ankreuzen, die sie bearbeitet</translation>
+    </message>
+    <message>
+        <source>Set-ups, in order:</source>
+        <translation>Aufspannungen, der Reihe nach:</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>Features it cuts (the first set-up cuts every feature no other ticks):</source>
+        <translation>Formelemente, die sie bearbeitet (die erste Aufspannung bearbeitet jedes, das keine andere ankreuzt):</translation>
+    </message>
+    <message>
+        <source>Clamping, tools and passes of each set-up are edited in the Set-up dock with the set-up chosen in the toolbar (docs/operations.md).</source>
+        <translation>Spannung, Werkzeuge und Schnitte jeder Aufspannung werden im Einrichten-Fenster bearbeitet, mit der in der Werkzeugleiste gewählten Aufspannung (docs/operations.md).</translation>
     </message>
 </context>
 <context>
@@ -5906,6 +5949,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Change boring bar</source>
         <translation>Bohrstange ändern</translation>
+    </message>
+    <message>
+        <source>Change operations</source>
+        <translation>Aufspannungen ändern</translation>
     </message>
 </context>
 <context>

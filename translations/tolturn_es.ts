@@ -4869,6 +4869,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1: %2, %3 end held</source>
         <translation>%1: %2, extremo %3 sujetado</translation>
     </message>
+    <message>
+        <source>&amp;Operations…</source>
+        <translation>&amp;Operaciones…</translation>
+    </message>
+    <message>
+        <source>The set-ups the part is turned in and the features each cuts</source>
+        <translation>Los montajes en que se tornea la pieza y los elementos que mecaniza cada uno</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::MeasuredPartsModel</name>
@@ -5250,6 +5258,41 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the store or the machine changed meanwhile; the model was kept in %1</source>
         <translation>el almacén o la máquina cambiaron entretanto; el modelo se guardó en %1</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::OperationsDialog</name>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Quitar</translation>
+    </message>
+    <message>
+        <source>Operations</source>
+        <translation>Operaciones</translation>
+    </message>
+    <message>
+        <source>&amp;Add Operation</source>
+        <translation>&amp;Añadir operación</translation>
+    </message>
+    <message>
+        <source>A set-up after the others: the part turned end for end in the chuck, with this project&apos;s tool and passes; tick the features it cuts</source>
+        <translation>Un montaje tras los demás: la pieza volteada en el plato, con la herramienta y las pasadas de este proyecto; marque los elementos que mecaniza</translation>
+    </message>
+    <message>
+        <source>Set-ups, in order:</source>
+        <translation>Montajes, en orden:</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>Features it cuts (the first set-up cuts every feature no other ticks):</source>
+        <translation>Elementos que mecaniza (el primer montaje mecaniza todo elemento que ningún otro marca):</translation>
+    </message>
+    <message>
+        <source>Clamping, tools and passes of each set-up are edited in the Set-up dock with the set-up chosen in the toolbar (docs/operations.md).</source>
+        <translation>La sujeción, las herramientas y las pasadas de cada montaje se editan en el panel de preparación con el montaje elegido en la barra de herramientas (docs/operations.md).</translation>
     </message>
 </context>
 <context>
@@ -5906,6 +5949,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Change boring bar</source>
         <translation>Cambiar barra de mandrinar</translation>
+    </message>
+    <message>
+        <source>Change operations</source>
+        <translation>Cambiar operaciones</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,7 @@
 #include "widgets/profile/profile_scene.h"
 #include "widgets/profile/profile_view.h"
 #include "widgets/results/deflection_panel.h"
+#include "widgets/setup/operations_dialog.h"
 #include "widgets/setup/setup_panel.h"
 #include "widgets/tolerances/tolerance_panel.h"
 
@@ -155,6 +156,11 @@ void MainWindow::createEditMenu()
     connect(deleteFeature, &QAction::triggered, m_feature, &FeaturePanel::deleteFeature);
     connect(m_profileView, &ProfileView::featureSelected, deleteFeature,
             [deleteFeature](const QString &id) { deleteFeature->setEnabled(!id.isEmpty()); });
+    edit->addSeparator();
+    QAction *operations = edit->addAction(tr("&Operations…"));
+    operations->setObjectName(QStringLiteral("operationsAction"));
+    operations->setToolTip(tr("The set-ups the part is turned in and the features each cuts"));
+    connect(operations, &QAction::triggered, this, &MainWindow::editOperations);
     edit->addSeparator();
     QAction *preferences = edit->addAction(actionIcon("preferences"), tr("Pre&ferences…"));
     preferences->setObjectName(QStringLiteral("preferencesAction"));
@@ -447,6 +453,17 @@ void MainWindow::showProject()
     m_planning->projectChanged();
     updateSummary();
     updateTitle();
+}
+
+void MainWindow::editOperations()
+{
+    if (!m_document->hasProject())
+        return;
+    OperationsDialog dialog(
+        m_document->project(),
+        [this](const std::vector<Operation> &operations) { return m_document->setFurtherOperations(operations); },
+        this);
+    dialog.exec();
 }
 
 void MainWindow::updateOperationChoice()

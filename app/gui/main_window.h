@@ -111,6 +111,7 @@ private:
     void showProject();
     // The set-up shown, of a project of several operations (docs/operations.md).
     void updateOperationChoice();
+    void editOperations();
     void updateSummary();
     void editPreferences();
 

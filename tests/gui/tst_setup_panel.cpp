@@ -5,9 +5,11 @@
 
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
+#include "core/project/operations.h"
 #include "widgets/common/length_spin_box.h"
 #include "widgets/document/project_document.h"
 #include "widgets/results/deflection_panel.h"
+#include "widgets/setup/operations_dialog.h"
 #include "widgets/setup/setup_panel.h"
 #include "widgets/setup/stiffness_editor.h"
 
@@ -16,6 +18,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QScrollArea>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -125,6 +128,50 @@ private Q_SLOTS:
         QCOMPARE(w.document()->project().boringTool->overhang_mm, std::optional<double>(95.0));
         QCOMPARE(s->boringBarBox()->currentData().toString(), QStringLiteral("S25T-PCLNR12"));
         QCOMPARE(innerBarDeflection_mm(w.deflectionPanel()->result()), at95);
+    }
+
+    // Operations are made in their dialog: a second set-up turned end for end that cuts the
+    // features ticked for it; without features it is refused with the reason and the dialog stays;
+    // applied, it is one undoable edit and the window offers the two set-ups.
+    void operationsAreAddedInTheirDialog()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        std::vector<Operation> applied;
+        OperationsDialog dialog(w.document()->project(), [&](const std::vector<Operation> &ops) {
+            applied = ops;
+            return w.document()->setFurtherOperations(ops);
+        });
+        QCOMPARE(dialog.operationList()->count(), 1);
+        dialog.addOperation();
+        QCOMPARE(dialog.operationList()->count(), 2);
+        QCOMPARE(dialog.operations().front().clamping.heldEnd, PartEnd::Right);
+        dialog.accept(); // cuts nothing yet
+        QVERIFY2(dialog.messageLabel()->text().contains(QStringLiteral("cuts no feature")),
+                 qPrintable(dialog.messageLabel()->text()));
+        QVERIFY(w.document()->project().furtherOperations.empty());
+        // Tick the left end face and the clamping diameter (O1, O2: in the jaws of OP 10).
+        for (int i = 0; i < dialog.featureList()->count(); ++i) {
+            QListWidgetItem *item = dialog.featureList()->item(i);
+            const QString id = item->data(Qt::UserRole).toString();
+            if (id == QLatin1String("O1") || id == QLatin1String("O2"))
+                item->setCheckState(Qt::Checked);
+        }
+        dialog.nameEdit()->setText(QStringLiteral("OP 20 turn over"));
+        Q_EMIT dialog.nameEdit()->textEdited(dialog.nameEdit()->text());
+        test::saveScreenshot(dialog, "operations-dialog.png");
+        dialog.accept();
+        QVERIFY2(dialog.messageLabel()->text().isEmpty(), qPrintable(dialog.messageLabel()->text()));
+        const Project &p = w.document()->project();
+        QCOMPARE(p.furtherOperations.size(), std::size_t(1));
+        QCOMPARE(p.furtherOperations.front().name, QStringLiteral("OP 20 turn over"));
+        QCOMPARE(p.furtherOperations.front().features, (QStringList{QStringLiteral("O1"), QStringLiteral("O2")}));
+        auto *box = w.findChild<QComboBox *>(QStringLiteral("operationBox"));
+        QVERIFY(box && box->count() == 2);
+        // The first set-up now keeps what no other cuts: not O1 and O2.
+        QVERIFY(!operationFeatures(p, 0).contains(QStringLiteral("O2")));
+        w.document()->undoStack()->undo();
+        QVERIFY(w.document()->project().furtherOperations.empty());
     }
 
     void tailstockChangesTheCurvesAndUndoes()

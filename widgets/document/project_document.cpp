@@ -289,6 +289,11 @@ Diagnostics ProjectDocument::setOperationPasses(int index, const std::vector<Cut
     return editField(&Project::furtherOperations, operations, description);
 }
 
+Diagnostics ProjectDocument::setFurtherOperations(const std::vector<Operation> &operations)
+{
+    return editField(&Project::furtherOperations, operations, tr("Change operations"));
+}
+
 Diagnostics ProjectDocument::setOperationTool(int index, const Tool &tool)
 {
     if (index <= 0)

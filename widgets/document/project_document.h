@@ -63,6 +63,8 @@ public:
     Diagnostics setDatum(const Datum &datum);
     Diagnostics setPlanning(const PlanningSettings &planning);
     Diagnostics setPasses(const std::vector<CuttingPass> &passes, const QString &description);
+    // The operations after the first (docs/operations.md), as one undoable edit.
+    Diagnostics setFurtherOperations(const std::vector<Operation> &operations);
     // The tool, boring tool and clamping of operation `index` (0: the project's own).
     Diagnostics setOperationTool(int index, const Tool &tool);
     Diagnostics setOperationBoringTool(int index, const std::optional<Tool> &tool);
