@@ -522,6 +522,17 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 (operation %2 of %3): %4, the %5 end held</source>
         <translation>%1 (Aufspannung %2 von %3): %4, Ende %5 gespannt</translation>
     </message>
+    <message>
+        <source>%1 (%2, %3 end held)</source>
+        <translation>%1 (%2, Ende %3 gespannt)</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n set-up(s): </source>
+        <translation>
+            <numerusform>; %n Aufspannung: </numerusform>
+            <numerusform>; %n Aufspannungen: </numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

@@ -17,6 +17,13 @@
             <numerusform>%n tolerances</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>; %n set-up(s): </source>
+        <translation>
+            <numerusform>; %n set-up: </numerusform>
+            <numerusform>; %n set-ups: </numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>ImportCommand</name>

@@ -522,6 +522,17 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 (operation %2 of %3): %4, the %5 end held</source>
         <translation>%1 (operación %2 de %3): %4, extremo %5 sujetado</translation>
     </message>
+    <message>
+        <source>%1 (%2, %3 end held)</source>
+        <translation>%1 (%2, extremo %3 sujetado)</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n set-up(s): </source>
+        <translation>
+            <numerusform>; %n montaje: </numerusform>
+            <numerusform>; %n montajes: </numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

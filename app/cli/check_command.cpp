@@ -12,6 +12,7 @@
 #include "core/planning/optimiser.h"
 #include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/iso286.h"
 #include "core/tolerance/range_verdicts.h"
@@ -42,13 +43,24 @@ struct CommandLine {
 
 QString projectSummary(const Project &p)
 {
-    return CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6, %7")
-        .arg(p.part.name)
-        .arg(p.part.length_mm())
-        .arg(p.part.outer.segments.size())
-        .arg(p.part.inner.segments.size())
-        .arg(displayName(p.clamping.method), CommandLine::tr("%n pass(es)", nullptr, static_cast<int>(p.passes.size())),
-             CommandLine::tr("%n tolerance(s)", nullptr, static_cast<int>(p.tolerances.size())));
+    const QString summary =
+        CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6, %7")
+            .arg(p.part.name)
+            .arg(p.part.length_mm())
+            .arg(p.part.outer.segments.size())
+            .arg(p.part.inner.segments.size())
+            .arg(displayName(p.clamping.method),
+                 CommandLine::tr("%n pass(es)", nullptr, static_cast<int>(p.passes.size())),
+                 CommandLine::tr("%n tolerance(s)", nullptr, static_cast<int>(p.tolerances.size())));
+    const int count = operationCount(p);
+    if (count == 1)
+        return summary;
+    QStringList setUps;
+    for (int k = 0; k < count; ++k)
+        setUps << CommandLine::tr("%1 (%2, %3 end held)")
+                      .arg(operationName(p, k), displayName(operationClamping(p, k).method),
+                           displayName(operationClamping(p, k).heldEnd));
+    return summary + CommandLine::tr("; %n set-up(s): ", nullptr, count) + setUps.join(QStringLiteral(", "));
 }
 
 } // namespace
