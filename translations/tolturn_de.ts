@@ -533,6 +533,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>; %n Aufspannungen: </numerusform>
         </translation>
     </message>
+    <message>
+        <source>Split into operations: %1 (Edit &gt; Operations…, or further_operations in the file)</source>
+        <translation>In Aufspannungen aufteilen: %1 (Bearbeiten &gt; Aufspannungen… oder further_operations in der Datei)</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -2025,6 +2029,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>feature %1 is named by two operations</source>
         <translation>Formelement %1 ist in zwei Aufspannungen aufgeführt</translation>
+    </message>
+    <message>
+        <source>the part is not held in a chuck in one set-up</source>
+        <translation>das Teil wird nicht in einer Aufspannung im Spannfutter gehalten</translation>
+    </message>
+    <message>
+        <source>no feature lies in the jaws</source>
+        <translation>kein Formelement liegt in den Spannbacken</translation>
+    </message>
+    <message>
+        <source>there is no outer cylinder to hold the part by at its other end</source>
+        <translation>es gibt keinen Außenzylinder, an dem das Teil am anderen Ende gespannt werden kann</translation>
+    </message>
+    <message>
+        <source>the part, %1 mm long, is too short to be held %2 mm at one end and %3 mm at the other</source>
+        <translation>das Teil, %1 mm lang, ist zu kurz, um an einem Ende %2 mm und am anderen %3 mm gespannt zu werden</translation>
+    </message>
+    <message>
+        <source>the jaws of %2 (%3 mm) cover %1: turn the part end for end and hold it %4 mm on %5 Ø%6, finished in %2, to turn them in %7</source>
+        <translation>die Spannbacken von %2 (%3 mm) decken %1 ab: das Teil umdrehen und %4 mm an %5 Ø%6, fertig in %2, spannen, um sie in %7 zu drehen</translation>
     </message>
 </context>
 <context>
@@ -5858,6 +5882,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The project has problems (listed under Problems): nothing is planned or programmed until they are repaired.</source>
         <translation>Das Projekt hat Probleme (aufgeführt unter Probleme): Bis sie behoben sind, wird nichts geplant oder programmiert.</translation>
+    </message>
+    <message>
+        <source>Make These Operations</source>
+        <translation>Diese Aufspannungen anlegen</translation>
+    </message>
+    <message>
+        <source>Add the proposed set-up to the project (undoable); Edit &gt; Operations… changes it</source>
+        <translation>Die vorgeschlagene Aufspannung dem Projekt hinzufügen (rückgängig zu machen); Bearbeiten &gt; Aufspannungen… ändert sie</translation>
+    </message>
+    <message>
+        <source>Split into operations: %1.</source>
+        <translation>In Aufspannungen aufteilen: %1.</translation>
     </message>
 </context>
 <context>

@@ -533,6 +533,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>; %n montajes: </numerusform>
         </translation>
     </message>
+    <message>
+        <source>Split into operations: %1 (Edit &gt; Operations…, or further_operations in the file)</source>
+        <translation>Dividir en operaciones: %1 (Editar &gt; Operaciones…, o further_operations en el archivo)</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -2025,6 +2029,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>feature %1 is named by two operations</source>
         <translation>el elemento %1 figura en dos operaciones</translation>
+    </message>
+    <message>
+        <source>the part is not held in a chuck in one set-up</source>
+        <translation>la pieza no está sujeta en un plato en un solo montaje</translation>
+    </message>
+    <message>
+        <source>no feature lies in the jaws</source>
+        <translation>ningún elemento queda en las garras</translation>
+    </message>
+    <message>
+        <source>there is no outer cylinder to hold the part by at its other end</source>
+        <translation>no hay un cilindro exterior por el que sujetar la pieza en su otro extremo</translation>
+    </message>
+    <message>
+        <source>the part, %1 mm long, is too short to be held %2 mm at one end and %3 mm at the other</source>
+        <translation>la pieza, de %1 mm de largo, es demasiado corta para sujetarla %2 mm en un extremo y %3 mm en el otro</translation>
+    </message>
+    <message>
+        <source>the jaws of %2 (%3 mm) cover %1: turn the part end for end and hold it %4 mm on %5 Ø%6, finished in %2, to turn them in %7</source>
+        <translation>las garras de %2 (%3 mm) cubren %1: voltee la pieza y sujétela %4 mm por %5 Ø%6, acabado en %2, para tornearlos en %7</translation>
     </message>
 </context>
 <context>
@@ -5858,6 +5882,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The project has problems (listed under Problems): nothing is planned or programmed until they are repaired.</source>
         <translation>El proyecto tiene problemas (listados en Problemas): no se planifica ni se programa nada hasta repararlos.</translation>
+    </message>
+    <message>
+        <source>Make These Operations</source>
+        <translation>Crear estas operaciones</translation>
+    </message>
+    <message>
+        <source>Add the proposed set-up to the project (undoable); Edit &gt; Operations… changes it</source>
+        <translation>Añadir el montaje propuesto al proyecto (se puede deshacer); Editar &gt; Operaciones… lo cambia</translation>
+    </message>
+    <message>
+        <source>Split into operations: %1.</source>
+        <translation>Dividir en operaciones: %1.</translation>
     </message>
 </context>
 <context>

@@ -43,15 +43,14 @@ struct CommandLine {
 
 QString projectSummary(const Project &p)
 {
-    const QString summary =
-        CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6, %7")
-            .arg(p.part.name)
-            .arg(p.part.length_mm())
-            .arg(p.part.outer.segments.size())
-            .arg(p.part.inner.segments.size())
-            .arg(displayName(p.clamping.method),
-                 CommandLine::tr("%n pass(es)", nullptr, static_cast<int>(p.passes.size())),
-                 CommandLine::tr("%n tolerance(s)", nullptr, static_cast<int>(p.tolerances.size())));
+    QString summary = CommandLine::tr("part \"%1\", %2 mm long, %3 outer and %4 inner features, %5, %6, %7")
+                          .arg(p.part.name)
+                          .arg(p.part.length_mm())
+                          .arg(p.part.outer.segments.size())
+                          .arg(p.part.inner.segments.size())
+                          .arg(displayName(p.clamping.method),
+                               CommandLine::tr("%n pass(es)", nullptr, static_cast<int>(p.passes.size())),
+                               CommandLine::tr("%n tolerance(s)", nullptr, static_cast<int>(p.tolerances.size())));
     const int count = operationCount(p);
     if (count == 1)
         return summary;

@@ -13,6 +13,7 @@
 #include "core/planning/optimiser.h"
 #include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/iso286.h"
 #include "core/tolerance/range_verdicts.h"
@@ -355,6 +356,7 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
     if (!project)
         return kExitUsage;
     const std::vector<ClampingOption> options = adviseClamping(*project, DataLibrary::builtIn());
+    const std::optional<SplitProposal> split = proposeSplit(*whole);
     if (parser.isSet(json)) {
         QJsonArray list;
         int rank = 1;
@@ -369,14 +371,26 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
                 entry.insert(QStringLiteral("objective_value"), o.plan.evaluation.objective);
             list.append(entry);
         }
-        return printJson(QJsonObject{{QStringLiteral("file"), file},
-                                     {QStringLiteral("objective"), keyword(project->planning.objective)},
-                                     {QStringLiteral("ranking"), list}},
-                         out, err, QStringLiteral("advise-clamping"));
+        QJsonObject result{{QStringLiteral("file"), file},
+                           {QStringLiteral("objective"), keyword(project->planning.objective)},
+                           {QStringLiteral("ranking"), list}};
+        if (split)
+            result.insert(
+                QStringLiteral("split"),
+                QJsonObject{{QStringLiteral("reason"), split->reason},
+                            {QStringLiteral("name"), split->second.name},
+                            {QStringLiteral("held_end"), keyword(split->second.clamping.heldEnd)},
+                            {QStringLiteral("clamped_length_mm"), split->second.clamping.clampedLength_mm},
+                            {QStringLiteral("features"), QJsonArray::fromStringList(split->second.features)}});
+        return printJson(result, out, err, QStringLiteral("advise-clamping"));
     }
     int rank = 1;
     for (const ClampingOption &o : options)
         out << QStringLiteral("%1. %2: %3").arg(rank++).arg(displayName(o.method), o.reason) << '\n';
+    if (split) // features the jaws cover: the second set-up that turns them (docs/operations.md)
+        out << CommandLine::tr("Split into operations: %1 (Edit > Operations…, or further_operations in the file)")
+                   .arg(split->reason)
+            << '\n';
     return kExitOk;
 }
 

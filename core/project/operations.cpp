@@ -287,6 +287,54 @@ void checkReach(const Project &project, int index, Diagnostics &out)
 
 } // namespace
 
+std::optional<SplitProposal> proposeSplit(const Project &project, QString *why)
+{
+    const auto say = [why](const QString &text) {
+        if (why != nullptr)
+            *why = text;
+        return std::nullopt;
+    };
+    const Clamping &first = project.clamping;
+    if (operationCount(project) > 1 || first.method == ClampingMethod::BetweenCentres || first.clampedLength_mm <= 0.0)
+        return say(Operations::tr("the part is not held in a chuck in one set-up"));
+    const PartProfile held = partAsHeld(project.part, first.heldEnd);
+    const double length = held.length_mm();
+    QStringList inJaws;
+    for (const Segment &s : held.outer.segments) {
+        if (std::min(s.from.z_mm, s.to.z_mm) < first.clampedLength_mm - kProfileEpsilon_mm)
+            inJaws << s.id;
+    }
+    if (inJaws.isEmpty())
+        return say(Operations::tr("no feature lies in the jaws"));
+    // The grip of the second set-up: the outer cylinder nearest the free end of the first.
+    const auto &outer = held.outer.segments;
+    const auto grip =
+        std::find_if(outer.rbegin(), outer.rend(), [](const Segment &s) { return s.kind == SegmentKind::Cylinder; });
+    if (grip == outer.rend())
+        return say(Operations::tr("there is no outer cylinder to hold the part by at its other end"));
+    const double gripLength = std::min(grip->to.z_mm - grip->from.z_mm, length / 3.0);
+    if (length - gripLength < first.clampedLength_mm + kProfileEpsilon_mm)
+        return say(Operations::tr("the part, %1 mm long, is too short to be held %2 mm at one end and %3 mm at the "
+                                  "other")
+                       .arg(formatNumber(length), formatNumber(first.clampedLength_mm), formatNumber(gripLength)));
+    SplitProposal proposal;
+    Operation &op = proposal.second;
+    op.name = QStringLiteral("OP 20");
+    op.clamping = first;
+    op.clamping.heldEnd = first.heldEnd == PartEnd::Left ? PartEnd::Right : PartEnd::Left;
+    op.clamping.clampedLength_mm = gripLength;
+    op.tool = project.tool;
+    op.boringTool = project.boringTool;
+    op.passes = project.passes;
+    op.features = inJaws;
+    proposal.reason =
+        Operations::tr("the jaws of %2 (%3 mm) cover %1: turn the part end for end and hold it %4 mm on "
+                       "%5 Ø%6, finished in %2, to turn them in %7")
+            .arg(inJaws.join(QStringLiteral(", ")), operationName(project, 0), formatNumber(first.clampedLength_mm),
+                 formatNumber(gripLength), grip->id, formatNumber(2.0 * grip->to.r_mm), op.name);
+    return proposal;
+}
+
 Diagnostics checkOperations(const Project &project)
 {
     Diagnostics out;

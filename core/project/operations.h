@@ -63,6 +63,18 @@ struct ReclampingError {
 [[nodiscard]] QString reclampingText(const Project &project, const Tolerance &tolerance, const ReclampingError &error,
                                      std::optional<double> value_um, std::optional<double> limit_um);
 
+// For a part of one set-up held in a chuck, whose jaws cover features no tool reaches there: the
+// second operation proposed (docs/operations.md, "Proposing a split"): the part turned end for end,
+// held on the outer cylinder at its other end (at most a third of the part), cutting the features
+// the first set-up's jaws cover. nullopt where nothing lies in the jaws, with `why` saying so, or
+// where the part is too short to be held at both ends, with `why` naming the lengths.
+struct SplitProposal {
+    Operation second;
+    QString reason;
+};
+
+[[nodiscard]] std::optional<SplitProposal> proposeSplit(const Project &project, QString *why = nullptr);
+
 // Named findings about the operations: names, features that do not exist or are named twice, a
 // feature inside the jaws of the operation that cuts it (no tool reaches it there).
 [[nodiscard]] Diagnostics checkOperations(const Project &project);

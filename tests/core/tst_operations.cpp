@@ -279,6 +279,31 @@ private Q_SLOTS:
         QVERIFY2(circular.reason.contains(QStringLiteral("stays below 20.0 µm")), qPrintable(circular.reason));
     }
 
+    // One set-up held 30 mm at the left end: the jaws cover O1 and O2, so the split proposed turns
+    // the part end for end and holds it on O4, the cylinder at the other end, for a third of the
+    // part (200/3 mm; O4 is 100 mm long), to turn O1 and O2. Applied, the project is sound.
+    void splitIsProposedForFeaturesInTheJaws()
+    {
+        Project p = twoOperationShaft();
+        p.furtherOperations.clear();
+        const auto split = proposeSplit(p);
+        QVERIFY(split.has_value());
+        QCOMPARE(split->second.features, (QStringList{QStringLiteral("O1"), QStringLiteral("O2")}));
+        QCOMPARE(split->second.clamping.heldEnd, PartEnd::Right);
+        QCOMPARE(split->second.clamping.clampedLength_mm, 200.0 / 3.0);
+        QVERIFY2(split->reason.contains(QStringLiteral("on O4 Ø40")), qPrintable(split->reason));
+        p.furtherOperations = {split->second};
+        QVERIFY2(validateProject(p).empty(), qPrintable(dump(validateProject(p))));
+        QVERIFY(!proposeSplit(p)); // already two set-ups
+
+        Project stubby = twoOperationShaft();
+        stubby.furtherOperations.clear();
+        stubby.clamping.clampedLength_mm = 150.0; // 150 + 200/3 > 200
+        QString why;
+        QVERIFY(!proposeSplit(stubby, &why));
+        QVERIFY2(why.contains(QStringLiteral("too short")), qPrintable(why));
+    }
+
     void badOperationsAreNamed()
     {
         Project inJaws = twoOperationShaft();

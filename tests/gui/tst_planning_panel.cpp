@@ -144,6 +144,25 @@ private Q_SLOTS:
         QVERIFY(doc->project().passes == before);
     }
 
+    // The stepped shaft's jaws cover O1 and O2: the Clamping tab proposes a second set-up that
+    // turns them, and one click makes it (undoable); with it, nothing is left to propose.
+    void clampingTabProposesTheSplit()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        PlanningPanel *panel = w.planningPanel();
+        QVERIFY2(panel->splitLabel()->text().contains(QStringLiteral("cover O1, O2")),
+                 qPrintable(panel->splitLabel()->text()));
+        panel->applySplitButton()->click();
+        const Project &p = w.document()->project();
+        QCOMPARE(p.furtherOperations.size(), std::size_t(1));
+        QCOMPARE(p.furtherOperations.front().features, (QStringList{QStringLiteral("O1"), QStringLiteral("O2")}));
+        QVERIFY(panel->splitLabel()->isHidden());
+        w.document()->undoStack()->undo();
+        QVERIFY(w.document()->project().furtherOperations.empty());
+        QVERIFY(!panel->splitLabel()->isHidden());
+    }
+
     void constraintSwitchesEditThePlanningSettings()
     {
         MainWindow w;

@@ -198,7 +198,23 @@ void PlanningPanel::buildControls()
     planLayout->addWidget(m_planPasses, 1);
     m_tabs->addTab(planTab, tr("Plan"));
     m_tabs->addTab(windowTab, tr("Cutting Window"));
-    m_tabs->addTab(m_clamping, tr("Clamping"));
+    // Below the ranking: the split into operations where the jaws cover features (docs/operations.md).
+    auto *clampingTab = new QWidget(this);
+    auto *clampingLayout = new QVBoxLayout(clampingTab);
+    clampingLayout->setContentsMargins(0, 0, 0, 0);
+    clampingLayout->addWidget(m_clamping, 1);
+    m_split = new QLabel(clampingTab);
+    m_split->setObjectName(QStringLiteral("splitProposal"));
+    m_split->setWordWrap(true);
+    m_applySplit = new QPushButton(tr("Make These Operations"), clampingTab);
+    m_applySplit->setObjectName(QStringLiteral("applySplit"));
+    m_applySplit->setToolTip(tr("Add the proposed set-up to the project (undoable); Edit > Operations… changes it"));
+    auto *splitRow = new QHBoxLayout;
+    splitRow->addWidget(m_split, 1);
+    splitRow->addWidget(m_applySplit);
+    clampingLayout->addLayout(splitRow);
+    connect(m_applySplit, &QPushButton::clicked, this, &PlanningPanel::applySplit);
+    m_tabs->addTab(clampingTab, tr("Clamping"));
     m_tabs->addTab(m_compensation, tr("Compensation"));
     m_tabs->addTab(gcodeTab, tr("G-code"));
     constraints->setVerticalSpacing(0);
@@ -247,6 +263,7 @@ void PlanningPanel::projectChanged()
         m_gcode->clear();
         return;
     }
+    showSplit();
     const PlanningSettings &s = m_document.project().planning;
     m_updatingControls = true;
     m_objective->setCurrentIndex(m_objective->findData(static_cast<int>(s.objective)));
@@ -550,6 +567,28 @@ void PlanningPanel::showClamping()
             m_clamping->item(i, c)->setBackground(background);
     }
     m_clamping->resizeColumnsToContents();
+    showSplit();
+}
+
+void PlanningPanel::showSplit()
+{
+    const std::optional<SplitProposal> split =
+        m_document.hasProject() ? proposeSplit(m_document.project()) : std::nullopt;
+    m_split->setText(split ? tr("Split into operations: %1.").arg(split->reason) : QString());
+    m_split->setVisible(split.has_value());
+    m_applySplit->setVisible(split.has_value());
+}
+
+void PlanningPanel::applySplit()
+{
+    if (!m_document.hasProject())
+        return;
+    const std::optional<SplitProposal> split = proposeSplit(m_document.project());
+    if (!split)
+        return;
+    const Diagnostics refused = m_document.setFurtherOperations({split->second});
+    if (!refused.empty())
+        QMessageBox::warning(this, tr("Make These Operations"), refused.front().toString());
 }
 
 void PlanningPanel::setLearnedModel(std::shared_ptr<const LoadedModel> model)

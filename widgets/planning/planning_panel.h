@@ -52,6 +52,10 @@ public:
 
     [[nodiscard]] QTableWidget *clampingTable() const { return m_clamping; }
 
+    [[nodiscard]] QLabel *splitLabel() const { return m_split; }
+
+    [[nodiscard]] QPushButton *applySplitButton() const { return m_applySplit; }
+
     [[nodiscard]] QTableWidget *compensationTable() const { return m_compensation; }
 
     [[nodiscard]] QString gcodeText() const;
@@ -88,6 +92,8 @@ private:
     void showClamping();
     void showFinishing();
     void showPlanPasses();
+    void showSplit();
+    void applySplit();
     // The project of the operation planned: what the optimiser, the program and the markers use.
     [[nodiscard]] Project operationProject() const;
 
@@ -109,6 +115,8 @@ private:
     MapPlot *m_map;
     QLabel *m_legend;
     QTableWidget *m_clamping;
+    QLabel *m_split = nullptr;
+    QPushButton *m_applySplit = nullptr;
     QTableWidget *m_compensation;
     QCheckBox *m_compensated;
     QComboBox *m_dialect;
