@@ -2043,12 +2043,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>es gibt keinen Außenzylinder, an dem das Teil am anderen Ende gespannt werden kann</translation>
     </message>
     <message>
-        <source>the part, %1 mm long, is too short to be held %2 mm at one end and %3 mm at the other</source>
-        <translation>das Teil, %1 mm lang, ist zu kurz, um an einem Ende %2 mm und am anderen %3 mm gespannt zu werden</translation>
-    </message>
-    <message>
         <source>the jaws of %2 (%3 mm) cover %1: turn the part end for end and hold it %4 mm on %5 Ø%6, finished in %2, to turn them in %7</source>
         <translation>die Spannbacken von %2 (%3 mm) decken %1 ab: das Teil umdrehen und %4 mm an %5 Ø%6, fertig in %2, spannen, um sie in %7 zu drehen</translation>
+    </message>
+    <message>
+        <source>%1 cuts no feature: the later operations name them all</source>
+        <translation>%1 bearbeitet kein Formelement: die späteren Aufspannungen nennen sie alle</translation>
     </message>
 </context>
 <context>
@@ -2872,6 +2872,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>thermal drift not measured: taken as zero (optimistic)</source>
         <translation>Wärmedrift nicht gemessen: als null angenommen (optimistisch)</translation>
+    </message>
+    <message>
+        <source>spans set-ups: its error from clamping the part again (where it sits axially in the other set-up) is not known and not in this verdict. </source>
+        <translation>über Aufspannungen hinweg: sein Fehler durch erneutes Spannen (wo das Teil in der anderen Aufspannung axial sitzt) ist nicht bekannt und nicht in dieser Bewertung. </translation>
     </message>
 </context>
 <context>
@@ -6000,6 +6004,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Change operations</source>
         <translation>Aufspannungen ändern</translation>
+    </message>
+    <message>
+        <source>the project has no operation %1 any more</source>
+        <translation>das Projekt hat keine Aufspannung %1 mehr</translation>
     </message>
 </context>
 <context>

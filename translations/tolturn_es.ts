@@ -2043,12 +2043,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no hay un cilindro exterior por el que sujetar la pieza en su otro extremo</translation>
     </message>
     <message>
-        <source>the part, %1 mm long, is too short to be held %2 mm at one end and %3 mm at the other</source>
-        <translation>la pieza, de %1 mm de largo, es demasiado corta para sujetarla %2 mm en un extremo y %3 mm en el otro</translation>
-    </message>
-    <message>
         <source>the jaws of %2 (%3 mm) cover %1: turn the part end for end and hold it %4 mm on %5 Ø%6, finished in %2, to turn them in %7</source>
         <translation>las garras de %2 (%3 mm) cubren %1: voltee la pieza y sujétela %4 mm por %5 Ø%6, acabado en %2, para tornearlos en %7</translation>
+    </message>
+    <message>
+        <source>%1 cuts no feature: the later operations name them all</source>
+        <translation>%1 no mecaniza ningún elemento: las operaciones posteriores los nombran todos</translation>
     </message>
 </context>
 <context>
@@ -2872,6 +2872,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>thermal drift not measured: taken as zero (optimistic)</source>
         <translation>deriva térmica no medida: se toma como cero (optimista)</translation>
+    </message>
+    <message>
+        <source>spans set-ups: its error from clamping the part again (where it sits axially in the other set-up) is not known and not in this verdict. </source>
+        <translation>abarca montajes: su error por volver a sujetar la pieza (dónde se asienta axialmente en el otro montaje) no se conoce y no está en este veredicto. </translation>
     </message>
 </context>
 <context>
@@ -6000,6 +6004,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Change operations</source>
         <translation>Cambiar operaciones</translation>
+    </message>
+    <message>
+        <source>the project has no operation %1 any more</source>
+        <translation>el proyecto ya no tiene la operación %1</translation>
     </message>
 </context>
 <context>

@@ -108,6 +108,14 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_profileView, &ProfileView::featureSelected, m_feature, &FeaturePanel::setFeature);
     connect(m_feature, &FeaturePanel::featureChosen, m_profileView, &ProfileView::selectFeature);
     connect(m_profileView, &ProfileView::vertexDragged, this, [this](ContourSide side, int vertex, ProfilePoint to) {
+        // The drawing shows the set-up as held: turned end for end, its corners count from the
+        // other end and z runs from the right end of the drawing.
+        const Project &project = m_document->project();
+        if (operationClamping(project, std::min(m_operation, operationCount(project) - 1)).heldEnd == PartEnd::Right) {
+            const Contour &contour = side == ContourSide::Outer ? project.part.outer : project.part.inner;
+            vertex = static_cast<int>(contour.segments.size()) - vertex;
+            to.z_mm = project.part.length_mm() - to.z_mm;
+        }
         if (!m_feature->moveVertexTo(side, vertex, to))
             statusBar()->showMessage(m_feature->message(), 8000);
     });
@@ -423,11 +431,11 @@ void MainWindow::showProject()
         return;
     }
     m_problems->update();
+    updateOperationChoice(); // first: the panels must not keep a set-up the project no longer has
     if (m_document->hasProblems()) {
         showProjectWithProblems();
         return;
     }
-    updateOperationChoice();
     // One set-up at a time: the part as it is held there, its features and tolerances.
     const Project project = operationView(m_document->project(), m_operation);
     m_profileView->setClamping(project.clamping);

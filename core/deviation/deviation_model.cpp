@@ -125,7 +125,7 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
         const Contour &contour = side == ContourSide::Outer ? part.outer : part.inner;
         for (const Segment &s : contour.segments) {
-            if (!in.cutFeatures.isEmpty() && !in.cutFeatures.contains(s.id))
+            if (in.scoped && !in.cutFeatures.contains(s.id))
                 continue; // another operation cuts it
             FeatureInfluence f{s.id, side, s.kind, {}, {}, {}};
             if (s.isAxial()) {
@@ -359,8 +359,14 @@ DeviationResult evaluateInfluenceTable(const PartProfile &part, const InfluenceT
     }
     for (const FeatureInfluence &f : table.faces)
         result.faces.push_back(faceUnderFacingCut(*findFeature(part, f.featureId)->segment, f, in));
-    result.theoreticalRa_um = theoreticalRa_um(in.pass.feed_mm_rev, in.noseRadius_mm);
-    result.theoreticalRz_um = theoreticalRz_um(in.pass.feed_mm_rev, in.noseRadius_mm);
+    // The roughness of the worse surface: a bore cut with the boring bar's insert has its nose radius.
+    double noseRadius = in.noseRadius_mm;
+    const bool bores = std::any_of(table.features.begin(), table.features.end(),
+                                   [](const FeatureInfluence &f) { return f.side == ContourSide::Inner; });
+    if (in.boring && bores)
+        noseRadius = std::min(noseRadius, in.boring->noseRadius_mm);
+    result.theoreticalRa_um = theoreticalRa_um(in.pass.feed_mm_rev, noseRadius);
+    result.theoreticalRz_um = theoreticalRz_um(in.pass.feed_mm_rev, noseRadius);
     result.inputs = in;
     return result;
 }

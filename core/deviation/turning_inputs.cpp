@@ -627,6 +627,7 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
             in.notes << DeviationModel::tr("Thermal drift not characterised for this machine: taken as zero.");
     }
     if (p.scope) {
+        in.scoped = true;
         in.cutFeatures = p.scope->cutFeatures;
         in.stockOuter_mm = p.scope->stockOuter_mm;
         in.notes << DeviationModel::tr("%1, operation %2 of %3: the part held at its %4 end, z from that end.")

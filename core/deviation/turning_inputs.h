@@ -90,8 +90,9 @@ struct TurningInputs {
     std::optional<double> maxSpindleSpeed_rpm;
     std::optional<double> maxPower_kW;
     std::optional<BoringInputs> boring; // the inner contour's tool, when the project names one
-    // One operation of several (Project::scope): the features it cuts (empty: all) and where the
-    // part still has its stock.
+    // One operation of a set-up view (Project::scope): the features it cuts and where the part
+    // still has its stock. Without a scope every feature is cut.
+    bool scoped = false;
     QStringList cutFeatures;
     std::vector<std::pair<double, double>> stockOuter_mm;
     QStringList notes; // assumptions the result depends on, for people

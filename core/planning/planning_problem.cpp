@@ -133,6 +133,11 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     // (the smallest depth): the least stiff section, so the tolerance constraints err on the safe side.
     p.m_table = buildInfluenceTable(project.part, p.m_inputs, kStations, p.m_depth.min);
     p.m_targets = programTargets(withPass);
+    // The roughness limit holds for every surface: the bores' with the boring bar's insert.
+    p.m_roughnessNoseRadius_mm = p.m_inputs.noseRadius_mm;
+    if (p.m_inputs.boring && std::any_of(p.m_table.features.begin(), p.m_table.features.end(),
+                                         [](const FeatureInfluence &f) { return f.side == ContourSide::Inner; }))
+        p.m_roughnessNoseRadius_mm = std::min(p.m_roughnessNoseRadius_mm, p.m_inputs.boring->noseRadius_mm);
     p.m_maxPower_kW = s.maxPower_kW ? s.maxPower_kW : p.m_inputs.maxPower_kW;
     p.m_maxTorque_Nm = s.maxTorque_Nm;
     p.m_maxSpeed_rpm = s.maxSpindleSpeed_rpm ? s.maxSpindleSpeed_rpm : p.m_inputs.maxSpindleSpeed_rpm;
@@ -319,11 +324,11 @@ void PlanningProblem::addFinishingLimits(const PassConditions &pass, const Cutti
     if (isEnabled(QStringLiteral("roughness"))) {
         if (s.maxRa_um)
             out.push_back({QStringLiteral("roughness"), QStringLiteral("Ra"),
-                           theoreticalRa_um(pass.feed_mm_rev, m_inputs.noseRadius_mm), *s.maxRa_um,
+                           theoreticalRa_um(pass.feed_mm_rev, m_roughnessNoseRadius_mm), *s.maxRa_um,
                            QStringLiteral("µm")});
         if (s.maxRz_um)
             out.push_back({QStringLiteral("roughness"), QStringLiteral("Rz"),
-                           theoreticalRz_um(pass.feed_mm_rev, m_inputs.noseRadius_mm), *s.maxRz_um,
+                           theoreticalRz_um(pass.feed_mm_rev, m_roughnessNoseRadius_mm), *s.maxRz_um,
                            QStringLiteral("µm")});
     }
     addPassLimits(QStringLiteral("finishing"), pass, f, m_largestCutDiameter_mm, out);

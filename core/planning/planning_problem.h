@@ -145,6 +145,7 @@ private:
     double m_radialStock_mm = 0.0;
     double m_largestCutDiameter_mm = 0.0;
     double m_largestBoreDiameter_mm = 0.0;
+    double m_roughnessNoseRadius_mm = 0.0; // the smaller nose radius of the tools that cut the features
     double m_stockDiameter_mm = 0.0;
     std::optional<double> m_maxPower_kW, m_maxTorque_Nm, m_maxSpeed_rpm;
     QStringList m_notes;

@@ -129,8 +129,8 @@ std::pair<double, double> cutDiameters(const Project &p)
     double smallest = 1e300;
     double largest = 0.0;
     for (const Segment &s : p.part.outer.segments) {
-        if (!s.isAxial() || s.to.z_mm <= chuckFace)
-            continue;
+        if (!s.isAxial() || s.to.z_mm <= chuckFace || (p.scope && !p.scope->cutFeatures.contains(s.id)))
+            continue; // in the jaws, or another set-up's
         for (const double r : {s.from.r_mm, s.to.r_mm}) {
             if (r > 0.0) {
                 smallest = std::min(smallest, 2.0 * r);

@@ -60,9 +60,10 @@ std::vector<std::pair<double, double>> stockRanges(const Project &project, const
     return ranges;
 }
 
-bool allCutIn(const QStringList &cut, const Tolerance &t)
+// A tolerance is judged in the set-up that cuts its feature (a length: its first face).
+bool judgedIn(const QStringList &cut, const Tolerance &t)
 {
-    return cut.contains(t.featureId) && (t.toFeatureId.isEmpty() || cut.contains(t.toFeatureId));
+    return cut.contains(t.featureId);
 }
 
 } // namespace
@@ -118,13 +119,8 @@ PartProfile partAsHeld(const PartProfile &part, PartEnd heldEnd)
 
 Project operationView(const Project &project, int index)
 {
-    if (operationCount(project) == 1) {
-        if (project.clamping.heldEnd == PartEnd::Left)
-            return project;
-        Project turned = project; // one set-up, the part held at its right end
-        turned.part = partAsHeld(project.part, PartEnd::Right);
-        return turned;
-    }
+    if (project.scope || (operationCount(project) == 1 && project.clamping.heldEnd == PartEnd::Left))
+        return project; // a view already, or the project as drawn and held
     Project view = project;
     if (index > 0) {
         const Operation &op = project.furtherOperations.at(static_cast<std::size_t>(index - 1));
@@ -148,7 +144,7 @@ Project operationView(const Project &project, int index)
     scope.stockOuter_mm = stockRanges(project, view.part, index);
     view.tolerances.clear();
     for (const Tolerance &t : project.tolerances) {
-        if (allCutIn(scope.cutFeatures, t))
+        if (judgedIn(scope.cutFeatures, t))
             view.tolerances.push_back(t);
     }
     view.scope = scope;
@@ -308,15 +304,14 @@ std::optional<SplitProposal> proposeSplit(const Project &project, QString *why)
         return say(Operations::tr("no feature lies in the jaws"));
     // The grip of the second set-up: the outer cylinder nearest the free end of the first.
     const auto &outer = held.outer.segments;
-    const auto grip =
-        std::find_if(outer.rbegin(), outer.rend(), [](const Segment &s) { return s.kind == SegmentKind::Cylinder; });
+    const auto grip = std::find_if(outer.rbegin(), outer.rend(), [&inJaws](const Segment &s) {
+        return s.kind == SegmentKind::Cylinder && !inJaws.contains(s.id); // finished in the first set-up
+    });
     if (grip == outer.rend())
         return say(Operations::tr("there is no outer cylinder to hold the part by at its other end"));
+    // The grip lies right of every feature the first set-up's jaws cover, so the second set-up's
+    // jaws leave them free.
     const double gripLength = std::min(grip->to.z_mm - grip->from.z_mm, length / 3.0);
-    if (length - gripLength < first.clampedLength_mm + kProfileEpsilon_mm)
-        return say(Operations::tr("the part, %1 mm long, is too short to be held %2 mm at one end and %3 mm at the "
-                                  "other")
-                       .arg(formatNumber(length), formatNumber(first.clampedLength_mm), formatNumber(gripLength)));
     SplitProposal proposal;
     Operation &op = proposal.second;
     op.name = QStringLiteral("OP 20");
@@ -368,6 +363,10 @@ Diagnostics checkOperations(const Project &project)
     }
     if (hasErrors(out))
         return out;
+    if (operationFeatures(project, 0).isEmpty())
+        out.push_back(makeError(
+            QStringLiteral("further_operations"),
+            Operations::tr("%1 cuts no feature: the later operations name them all").arg(operationName(project, 0))));
     for (int k = 0; k < operationCount(project); ++k)
         checkReach(project, k, out);
     return out;

@@ -66,8 +66,8 @@ struct ReclampingError {
 // For a part of one set-up held in a chuck, whose jaws cover features no tool reaches there: the
 // second operation proposed (docs/operations.md, "Proposing a split"): the part turned end for end,
 // held on the outer cylinder at its other end (at most a third of the part), cutting the features
-// the first set-up's jaws cover. nullopt where nothing lies in the jaws, with `why` saying so, or
-// where the part is too short to be held at both ends, with `why` naming the lengths.
+// the first set-up's jaws cover. nullopt, with `why` saying why, where nothing lies in the jaws or
+// no outer cylinder outside them can hold the part.
 struct SplitProposal {
     Operation second;
     QString reason;

@@ -409,6 +409,13 @@ Diagnostics validateProject(const Project &project)
         checkPasses(op.passes, prefix, out);
         requireText(op.tool.insertCode, prefix + QStringLiteral("tool.insert"),
                     ProjectValidation::tr("the insert code"), out);
+        requirePositive(op.tool.overhang_mm, prefix + QStringLiteral("tool.overhang_mm"), out);
+        if (op.boringTool) {
+            requireText(op.boringTool->insertCode, prefix + QStringLiteral("boring_tool.insert"),
+                        ProjectValidation::tr("the boring bar's insert code"), out);
+            requirePositive(op.boringTool->overhang_mm, prefix + QStringLiteral("boring_tool.overhang_mm"), out);
+            requirePositive(op.boringTool->edgeOffset_mm, prefix + QStringLiteral("boring_tool.edge_offset_mm"), out);
+        }
     }
     checkDatums(project, out);
     checkTolerances(project, out);

@@ -210,9 +210,15 @@ void addReclampingNotes(const Project &project, RangeEvaluation &range, const Da
                                     [&e](const Tolerance &x) { return x.id == e.compliant.toleranceId; });
         if (t == project.tolerances.end())
             continue;
-        const auto error = reclampingError(project, *t, data);
-        if (!error)
+        if (!spansOperations(project, *t))
             continue;
+        const auto error = reclampingError(project, *t, data);
+        if (!error) { // a length between faces of two set-ups: where the part sits axially again
+            e.compliant.reason.prepend(
+                RangeVerdicts::tr("spans set-ups: its error from clamping the part again (where it sits "
+                                  "axially in the other set-up) is not known and not in this verdict. "));
+            continue;
+        }
         const bool predicted = e.compliant.value_um.has_value() && e.compliant.limit_um.has_value();
         const std::optional<double> value = predicted ? e.compliant.value_um : std::optional<double>(0.0);
         const std::optional<double> limit = predicted ? e.compliant.limit_um : t->zone_um;

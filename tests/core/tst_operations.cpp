@@ -193,6 +193,15 @@ private Q_SLOTS:
         QCOMPARE(held.outer.segments[3].id, QStringLiteral("O2"));
         QCOMPARE(held.outer.segments[3].to, (ProfilePoint{200.0, 25.0}));
         QCOMPARE(partAsHeld(held, PartEnd::Right), p.part);
+        // A view is a view: taken again it stays as it is (not mirrored back).
+        const Project op20 = operationView(p, 1);
+        QCOMPARE(operationView(op20, 0), op20);
+        Project single = p;
+        single.furtherOperations.clear();
+        single.clamping.heldEnd = PartEnd::Right;
+        const Project turned = operationView(single, 0);
+        QCOMPARE(turned.part, held);
+        QCOMPARE(operationView(turned, 0), turned);
         QVERIFY(validateProject(operationView(p, 1)).empty());
     }
 
@@ -296,12 +305,17 @@ private Q_SLOTS:
         QVERIFY2(validateProject(p).empty(), qPrintable(dump(validateProject(p))));
         QVERIFY(!proposeSplit(p)); // already two set-ups
 
-        Project stubby = twoOperationShaft();
-        stubby.furtherOperations.clear();
-        stubby.clamping.clampedLength_mm = 150.0; // 150 + 200/3 > 200
-        QString why;
-        QVERIFY(!proposeSplit(stubby, &why));
-        QVERIFY2(why.contains(QStringLiteral("too short")), qPrintable(why));
+        // A plain bar: the only cylinder is in the jaws; it cannot hold the part in the second set-up.
+        Project bar = twoOperationShaft();
+        bar.furtherOperations.clear();
+        bar.tolerances.clear();
+        bar.datums.clear();
+        bar.part.outer.segments = {seg("O1", SegmentKind::Face, {0, 0}, {0, 25}),
+                                   seg("O2", SegmentKind::Cylinder, {0, 25}, {200, 25}),
+                                   seg("O3", SegmentKind::Face, {200, 25}, {200, 0})};
+        QString noGrip;
+        QVERIFY(!proposeSplit(bar, &noGrip));
+        QVERIFY2(noGrip.contains(QStringLiteral("no outer cylinder")), qPrintable(noGrip));
     }
 
     void badOperationsAreNamed()
@@ -333,6 +347,27 @@ private Q_SLOTS:
         d = validateProject(twice);
         QVERIFY(std::any_of(d.begin(), d.end(), [](const Diagnostic &x) {
             return x.message.contains(QLatin1String("named by two operations"));
+        }));
+
+        Project nothingLeft = twoOperationShaft();
+        nothingLeft.furtherOperations.front().features = {QStringLiteral("O1"), QStringLiteral("O2"),
+                                                          QStringLiteral("O3"), QStringLiteral("O4"),
+                                                          QStringLiteral("O5")};
+        d = validateProject(nothingLeft);
+        QVERIFY2(
+            std::any_of(d.begin(), d.end(),
+                        [](const Diagnostic &x) { return x.message.contains(QLatin1String("OP 10 cuts no feature")); }),
+            qPrintable(dump(d)));
+
+        Project badBar = twoOperationShaft();
+        Tool bar;
+        bar.insertCode = QStringLiteral("CNMG 120408");
+        bar.holderCode = QStringLiteral("S25T-PCLNR12");
+        bar.edgeOffset_mm = -8.0;
+        badBar.furtherOperations.front().boringTool = bar;
+        d = validateProject(badBar);
+        QVERIFY(std::any_of(d.begin(), d.end(), [](const Diagnostic &x) {
+            return x.field == QLatin1String("further_operations[0].boring_tool.edge_offset_mm");
         }));
 
         Project noPass = twoOperationShaft();

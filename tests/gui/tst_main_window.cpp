@@ -9,6 +9,7 @@
 #include "app/gui/recent_files.h"
 #include "core/project/project_validation.h"
 #include "resources/bundled.h"
+#include "widgets/common/length_spin_box.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
@@ -19,6 +20,7 @@
 #include "widgets/profile/profile_view.h"
 #include "widgets/profile/tolerance_frame_item.h"
 #include "widgets/results/deflection_panel.h"
+#include "widgets/setup/setup_panel.h"
 #include "widgets/tolerances/tolerance_panel.h"
 #include "widgets/tolerances/tolerance_verdict_model.h"
 
@@ -43,6 +45,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolBar>
+#include <QUndoStack>
 #include <QWidgetAction>
 
 using namespace tolturn;
@@ -480,6 +483,20 @@ private Q_SLOTS:
         QVERIFY2(w.planningPanel()->gcodeText().contains(QStringLiteral("OP 20, OPERATION 2 OF 2")),
                  qPrintable(w.planningPanel()->gcodeText().left(400)));
         test::saveScreenshot(w, "operations.png");
+        // A corner dragged in the set-up turned end for end moves the drawing's corner: the view's
+        // corner 3 at z' = 65 (Ø62 shoulder) is the drawing's corner 2 at z = 120 - 65 = 55.
+        Q_EMIT w.profileView()->vertexDragged(ContourSide::Outer, 3, ProfilePoint{63.0, 31.0});
+        const Project &moved = w.document()->project();
+        QCOMPARE(moved.part.outer.segments[1].to, (ProfilePoint{57.0, 31.0}));
+        QCOMPARE(moved.part.outer.segments[2].from, (ProfilePoint{57.0, 31.0}));
+        // Another file, of one set-up: the set-up chosen before is gone, and the Set-up dock edits
+        // the one there is.
+        w.document()->undoStack()->undo(); // unmodified again: closing asks nothing
+        QVERIFY(w.fileController()->close());
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        QVERIFY(!box->isVisible());
+        w.setupPanel()->clampedLengthBox()->setValue(36.0);
+        QCOMPARE(w.document()->project().clamping.clampedLength_mm, 36.0);
     }
 
     // The deflection curves appear for the open part, per contribution, and follow the project.

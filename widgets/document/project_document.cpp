@@ -279,12 +279,25 @@ Diagnostics ProjectDocument::setPasses(const std::vector<CuttingPass> &passes, c
     return editField(&Project::passes, passes, description);
 }
 
+namespace {
+
+// An edit of a set-up the project does not have (any more): refused, named.
+Diagnostic noSuchOperation(int index)
+{
+    return makeError(QStringLiteral("further_operations"),
+                     ProjectDocument::tr("the project has no operation %1 any more").arg(index + 1));
+}
+
+} // namespace
+
 Diagnostics ProjectDocument::setOperationPasses(int index, const std::vector<CuttingPass> &passes,
                                                 const QString &description)
 {
     if (index <= 0)
         return setPasses(passes, description);
     std::vector<Operation> operations = project().furtherOperations;
+    if (static_cast<std::size_t>(index) > operations.size())
+        return {noSuchOperation(index)};
     operations.at(static_cast<std::size_t>(index - 1)).passes = passes;
     return editField(&Project::furtherOperations, operations, description);
 }
@@ -299,6 +312,8 @@ Diagnostics ProjectDocument::setOperationTool(int index, const Tool &tool)
     if (index <= 0)
         return setTool(tool);
     std::vector<Operation> operations = project().furtherOperations;
+    if (static_cast<std::size_t>(index) > operations.size())
+        return {noSuchOperation(index)};
     operations.at(static_cast<std::size_t>(index - 1)).tool = tool;
     return editField(&Project::furtherOperations, operations, tr("Change tool"));
 }
@@ -308,6 +323,8 @@ Diagnostics ProjectDocument::setOperationBoringTool(int index, const std::option
     if (index <= 0)
         return setBoringTool(tool);
     std::vector<Operation> operations = project().furtherOperations;
+    if (static_cast<std::size_t>(index) > operations.size())
+        return {noSuchOperation(index)};
     operations.at(static_cast<std::size_t>(index - 1)).boringTool = tool;
     return editField(&Project::furtherOperations, operations, tr("Change boring bar"));
 }
@@ -317,6 +334,8 @@ Diagnostics ProjectDocument::setOperationClamping(int index, const Clamping &cla
     if (index <= 0)
         return setClamping(clamping);
     std::vector<Operation> operations = project().furtherOperations;
+    if (static_cast<std::size_t>(index) > operations.size())
+        return {noSuchOperation(index)};
     operations.at(static_cast<std::size_t>(index - 1)).clamping = clamping;
     return editField(&Project::furtherOperations, operations, tr("Change clamping"));
 }

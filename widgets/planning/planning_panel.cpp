@@ -105,9 +105,14 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     m_apply->setObjectName(QStringLiteral("applyPlan"));
     buildControls();
     connect(&m_watcher, &QFutureWatcher<PlanningReport>::finished, this, [this] {
-        m_report = std::make_unique<PlanningReport>(m_watcher.result());
         m_run->setEnabled(!m_document.hasProblems());
         m_cancel->setEnabled(false);
+        if (m_runOperation != m_operation) { // planned for a set-up no longer shown: not this one's
+            m_progress->setValue(0);
+            Q_EMIT finished();
+            return;
+        }
+        m_report = std::make_unique<PlanningReport>(m_watcher.result());
         m_progress->setValue(m_report->cancelled ? 0 : 100);
         showReport();
         Q_EMIT finished();
@@ -339,6 +344,7 @@ void PlanningPanel::optimise()
         return;
     m_fraction = std::make_shared<std::atomic<double>>(0.0);
     m_stop = std::make_shared<std::atomic<bool>>(false);
+    m_runOperation = m_operation;
     PlanningJobOptions options;
     options.plane = static_cast<WindowPlane>(m_plane->currentData().toInt());
     options.learned = m_learned;
@@ -384,6 +390,7 @@ void PlanningPanel::setOperation(int index)
     if (index == m_operation)
         return;
     m_operation = index;
+    cancel();         // a run for the set-up shown before ends, and its result is not shown
     m_report.reset(); // a plan is of one set-up
     m_plan->setText(notRunText());
     m_apply->setEnabled(false);

@@ -99,6 +99,7 @@ private:
 
     ProjectDocument &m_document;
     int m_operation = 0;
+    int m_runOperation = 0; // the set-up the running (or last) optimisation is for
     std::shared_ptr<const LoadedModel> m_learned;
     QComboBox *m_objective;
     QComboBox *m_plane;
