@@ -290,16 +290,20 @@ Diagnostic noSuchOperation(int index)
 
 } // namespace
 
+template <typename T>
+Diagnostics ProjectDocument::editOperation(int index, T Operation::*field, const T &value, const QString &description)
+{
+    std::vector<Operation> operations = project().furtherOperations;
+    if (index < 1 || static_cast<std::size_t>(index) > operations.size())
+        return {noSuchOperation(index)};
+    operations[static_cast<std::size_t>(index - 1)].*field = value;
+    return editField(&Project::furtherOperations, operations, description);
+}
+
 Diagnostics ProjectDocument::setOperationPasses(int index, const std::vector<CuttingPass> &passes,
                                                 const QString &description)
 {
-    if (index <= 0)
-        return setPasses(passes, description);
-    std::vector<Operation> operations = project().furtherOperations;
-    if (static_cast<std::size_t>(index) > operations.size())
-        return {noSuchOperation(index)};
-    operations.at(static_cast<std::size_t>(index - 1)).passes = passes;
-    return editField(&Project::furtherOperations, operations, description);
+    return index <= 0 ? setPasses(passes, description) : editOperation(index, &Operation::passes, passes, description);
 }
 
 Diagnostics ProjectDocument::setFurtherOperations(const std::vector<Operation> &operations)
@@ -309,35 +313,19 @@ Diagnostics ProjectDocument::setFurtherOperations(const std::vector<Operation> &
 
 Diagnostics ProjectDocument::setOperationTool(int index, const Tool &tool)
 {
-    if (index <= 0)
-        return setTool(tool);
-    std::vector<Operation> operations = project().furtherOperations;
-    if (static_cast<std::size_t>(index) > operations.size())
-        return {noSuchOperation(index)};
-    operations.at(static_cast<std::size_t>(index - 1)).tool = tool;
-    return editField(&Project::furtherOperations, operations, tr("Change tool"));
+    return index <= 0 ? setTool(tool) : editOperation(index, &Operation::tool, tool, tr("Change tool"));
 }
 
 Diagnostics ProjectDocument::setOperationBoringTool(int index, const std::optional<Tool> &tool)
 {
-    if (index <= 0)
-        return setBoringTool(tool);
-    std::vector<Operation> operations = project().furtherOperations;
-    if (static_cast<std::size_t>(index) > operations.size())
-        return {noSuchOperation(index)};
-    operations.at(static_cast<std::size_t>(index - 1)).boringTool = tool;
-    return editField(&Project::furtherOperations, operations, tr("Change boring bar"));
+    return index <= 0 ? setBoringTool(tool)
+                      : editOperation(index, &Operation::boringTool, tool, tr("Change boring bar"));
 }
 
 Diagnostics ProjectDocument::setOperationClamping(int index, const Clamping &clamping)
 {
-    if (index <= 0)
-        return setClamping(clamping);
-    std::vector<Operation> operations = project().furtherOperations;
-    if (static_cast<std::size_t>(index) > operations.size())
-        return {noSuchOperation(index)};
-    operations.at(static_cast<std::size_t>(index - 1)).clamping = clamping;
-    return editField(&Project::furtherOperations, operations, tr("Change clamping"));
+    return index <= 0 ? setClamping(clamping)
+                      : editOperation(index, &Operation::clamping, clamping, tr("Change clamping"));
 }
 
 Diagnostics ProjectDocument::setMaterial(const QString &materialId)

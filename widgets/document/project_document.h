@@ -101,6 +101,9 @@ private:
     void setDatums(std::vector<Datum> datums);
     template <typename T>
     Diagnostics editField(T Project::*field, const T &value, const QString &description);
+    // One field of a set-up after the first (index >= 1), as one undoable edit of the operations.
+    template <typename T>
+    Diagnostics editOperation(int index, T Operation::*field, const T &value, const QString &description);
 
     Project m_project;
 
