@@ -844,6 +844,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The outer features later operations turn are still the stock, Ø%1 mm.</source>
         <translation>Die Außenformelemente, die spätere Aufspannungen drehen, sind noch Rohmaterial, Ø%1 mm.</translation>
     </message>
+    <message>
+        <source>The boring bar is taken as held rigidly in the turret: no stiffness of a bar clamp is known, so the bar&apos;s deflection is a lower bound.</source>
+        <translation>Die Bohrstange gilt als starr im Revolver gespannt: keine Steifigkeit einer Stangenaufnahme ist bekannt, die Verformung der Stange ist daher eine untere Grenze.</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>

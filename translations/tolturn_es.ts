@@ -844,6 +844,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The outer features later operations turn are still the stock, Ø%1 mm.</source>
         <translation>Los elementos exteriores que tornean operaciones posteriores siguen en bruto, Ø%1 mm.</translation>
     </message>
+    <message>
+        <source>The boring bar is taken as held rigidly in the turret: no stiffness of a bar clamp is known, so the bar&apos;s deflection is a lower bound.</source>
+        <translation>La barra de mandrinar se toma como sujeta rígidamente en la torreta: no se conoce la rigidez de ningún soporte de barra, así que la flexión de la barra es un límite inferior.</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>

@@ -409,6 +409,8 @@ void noteBar(const Project &p, const DataLibrary &data, const BoringInputs &bi, 
                  .arg(bi.holderCode, bi.barMaterial, num(bi.bar.diameter_mm), num(bi.bar.overhang_mm),
                       QString::number(bi.bar.overhangRatio(), 'f', 1), num(bi.bar.material.youngsModulus_MPa / 1000.0),
                       data.sourceText(m->youngsModulus_MPa.source).section(QLatin1Char(','), 0, 0));
+    notes << DeviationModel::tr("The boring bar is taken as held rigidly in the turret: no stiffness of a bar clamp "
+                                "is known, so the bar's deflection is a lower bound.");
     if (!p.boringTool->overhang_mm)
         notes << DeviationModel::tr("Boring bar overhang not given: taken as the bore's depth, %1 mm, the least that "
                                     "reaches; a longer overhang bends more.")
