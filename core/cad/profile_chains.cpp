@@ -184,12 +184,18 @@ bool collinear(const Segment &s, const Segment &t)
     return std::abs(cross) <= kJoinTolerance_mm * std::max(1.0, segmentLength_mm(s) + segmentLength_mm(t));
 }
 
-// A face split into several (a cylinder cut in two along z by some writers) is one feature.
+bool joined(const Segment &s, const Segment &t)
+{
+    return std::hypot(s.to.z_mm - t.from.z_mm, s.to.r_mm - t.from.r_mm) <= kJoinTolerance_mm;
+}
+
+// A face split into several (a cylinder cut in two along z by some writers) is one feature; the
+// bottoms of a bore from each end are two, with the solid between them.
 void mergeCollinear(std::vector<Segment> &segments)
 {
     std::vector<Segment> out;
     for (const Segment &s : segments) {
-        if (!out.empty() && collinear(out.back(), s))
+        if (!out.empty() && joined(out.back(), s) && collinear(out.back(), s))
             out.back().to = s.to;
         else
             out.push_back(s);
@@ -320,55 +326,6 @@ Bores findBores(const Graph &g, int left, int right, const std::vector<Walk> &fr
     return b;
 }
 
-double depthOf(const Graph &g, const Walk &w, int start)
-{
-    return std::abs(g.vertices[static_cast<std::size_t>(w.endVertex)].z_mm -
-                    g.vertices[static_cast<std::size_t>(start)].z_mm);
-}
-
-// A TolTurn profile has one inner contour. With blind bores at both ends (a bore and a centre
-// hole, or two centre holes) the deeper one is kept; the other end face is drawn closed to the
-// axis, and a warning says so.
-void closeEndFace(std::vector<Segment> &outer, bool atRight)
-{
-    Segment &end = atRight ? outer.back() : outer.front();
-    ProfilePoint &onAxisSide = atRight ? end.to : end.from;
-    if (end.kind == SegmentKind::Face) {
-        onAxisSide.r_mm = 0.0;
-        return;
-    }
-    Segment face;
-    face.kind = SegmentKind::Face;
-    if (atRight) {
-        face.from = end.to;
-        face.to = {end.to.z_mm, 0.0};
-        outer.push_back(face);
-    } else {
-        face.from = {end.from.z_mm, 0.0};
-        face.to = end.from;
-        outer.insert(outer.begin(), face);
-    }
-}
-
-Diagnostic droppedBoreWarning(const Graph &g, const std::vector<SectionPiece> &pieces, const Walk &w, int start,
-                              bool atRight)
-{
-    const SectionPiece &first = pieces[static_cast<std::size_t>(w.steps.front().piece)];
-    const int face = first.faces.empty() ? 0 : first.faces.front();
-    const double z0 = g.vertices[static_cast<std::size_t>(start)].z_mm;
-    const double z1 = g.vertices[static_cast<std::size_t>(w.endVertex)].z_mm;
-    return makeWarning(
-        QStringLiteral("step.face[%1]").arg(face),
-        (atRight ? ProfileChains::tr("the bore at the right end, from z = %1 mm to z = %2 mm (face %3 and the "
-                                     "faces after it), is left out: a profile has one inner contour and the deeper "
-                                     "bore at the left end is kept; the right end face is closed to the axis")
-                 : ProfileChains::tr("the bore at the left end, from z = %1 mm to z = %2 mm (face %3 and the faces "
-                                     "after it), is left out: a profile has one inner contour and the deeper bore "
-                                     "at the right end is kept; the left end face is closed to the axis"))
-            .arg(num(std::min(z0, z1)), num(std::max(z0, z1)))
-            .arg(face));
-}
-
 void reportLeftOver(const std::vector<SectionPiece> &pieces, const std::vector<bool> &used, Diagnostics &out)
 {
     for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -478,22 +435,18 @@ ContourBuild buildContours(const std::vector<SectionPiece> &pieces, double chamf
     }
     markUsed(*outer, used);
     std::vector<Segment> outerSegments = toSegments(g, pieces, outer->steps);
-    Bores bores = findBores(g, left, right, fromLeft, used);
-    if (bores.left && bores.right) {
-        const bool keepLeft = depthOf(g, *bores.left, left) >= depthOf(g, *bores.right, right);
-        const Walk &dropped = keepLeft ? *bores.right : *bores.left;
-        markUsed(dropped, used);
-        out.diagnostics.push_back(droppedBoreWarning(g, pieces, dropped, keepLeft ? right : left, keepLeft));
-        closeEndFace(outerSegments, keepLeft);
-        (keepLeft ? bores.right : bores.left).reset();
-    }
+    // The inner contour: a through bore, or the bore from the left end (closing on the axis) and
+    // then the one from the right end, walked from that end and turned to run left to right.
+    const Bores bores = findBores(g, left, right, fromLeft, used);
     std::vector<Segment> inner;
-    const std::optional<Walk> *kept = bores.through ? &bores.through : (bores.left ? &bores.left : &bores.right);
-    if (kept->has_value()) {
-        markUsed(**kept, used);
-        inner = toSegments(g, pieces, (*kept)->steps);
-        if (kept == &bores.right)
-            reverseChain(inner); // walked from the right end: contours run left to right
+    for (const std::optional<Walk> *bore : {&bores.through, &bores.left, &bores.right}) {
+        if (!bore->has_value())
+            continue;
+        markUsed(**bore, used);
+        std::vector<Segment> chain = toSegments(g, pieces, (*bore)->steps);
+        if (bore == &bores.right)
+            reverseChain(chain);
+        inner.insert(inner.end(), chain.begin(), chain.end());
     }
     out.outer = finishContour(std::move(outerSegments), ContourSide::Outer, chamferMaxLength_mm);
     if (!inner.empty())

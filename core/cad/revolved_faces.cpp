@@ -19,6 +19,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <gp_Lin.hxx>
 
@@ -422,9 +423,40 @@ private:
 
     // The trace of a face whose meridian is a circle (centre, radius rho) in the half-plane: the
     // arc between the face's z extremes, on the half of the circle the middle of the face lies on.
+    // The (z, r) of the face's edges that are circles (or arcs of circles) about the axis: every
+    // point of such an edge has the same z and r. Seams and meridian edges are left out.
+    [[nodiscard]] std::vector<ProfilePoint> boundaryCircles(const TopoDS_Face &face) const
+    {
+        std::vector<ProfilePoint> found;
+        for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+            const TopoDS_Edge &edge = TopoDS::Edge(ex.Current());
+            if (BRep_Tool::Degenerated(edge))
+                continue;
+            const BRepAdaptor_Curve c(edge);
+            std::array<ProfilePoint, 3> at{};
+            for (std::size_t i = 0; i < at.size(); ++i) {
+                const gp_Pnt p = c.Value(c.FirstParameter() +
+                                         (c.LastParameter() - c.FirstParameter()) * 0.5 * static_cast<double>(i));
+                at[i] = {m_frame.z(p), m_frame.r(p)};
+            }
+            const auto same = [](const ProfilePoint &a, const ProfilePoint &b) {
+                return std::hypot(a.z_mm - b.z_mm, a.r_mm - b.r_mm) <= kJoinTolerance_mm;
+            };
+            if (!same(at[0], at[1]) || !same(at[0], at[2]))
+                continue; // not about the axis
+            if (std::none_of(found.begin(), found.end(), [&](const ProfilePoint &q) { return same(q, at[0]); }))
+                found.push_back(at[0]);
+        }
+        return found;
+    }
+
     [[nodiscard]] std::optional<SectionPiece> meridianArc(const TopoDS_Face &face, const ProfilePoint &centre,
                                                           double rho, const Extent &e) const
     {
+        // The ends are where the face's boundary circles about the axis cut the meridian: an
+        // undercut's radius turns back along z and does not end at its z extremes.
+        if (const std::vector<ProfilePoint> ends = boundaryCircles(face); ends.size() == 2)
+            return arc(ends[0], ends[1], centre, rho);
         const double side = m_frame.r(midPoint(face)) >= centre.r_mm ? 1.0 : -1.0;
         const auto at = [&](double z) {
             const double dz = z - centre.z_mm;

@@ -72,7 +72,8 @@ void addLine(BRepBuilderAPI_MakeWire &wire, const ProfilePoint &from, const Prof
 }
 
 // The closed boundary of the half-section: the outer contour from left to right, then back along
-// the axis and the inner contour (reversed) to where the outer contour began.
+// the axis and the inner contour (reversed) to where the outer contour began; between a bore
+// from each end, back along the axis through the solid between them.
 TopoDS_Wire sectionWire(const PartProfile &profile)
 {
     BRepBuilderAPI_MakeWire wire;
@@ -83,9 +84,11 @@ TopoDS_Wire sectionWire(const PartProfile &profile)
         return wire.Wire();
     }
     addLine(wire, profile.outer.back(), profile.inner.back());
-    const std::vector<Segment> backwards(profile.inner.segments.rbegin(), profile.inner.segments.rend());
-    for (const Segment &s : backwards)
-        wire.Add(segmentEdge(s));
+    for (std::size_t i = profile.inner.segments.size(); i-- > 0;) { // clang 14 cannot use views::reverse
+        wire.Add(segmentEdge(profile.inner.segments[i]));
+        if (profile.inner.breaksBefore(i))
+            addLine(wire, profile.inner.segments[i].from, profile.inner.segments[i - 1].to);
+    }
     addLine(wire, profile.inner.front(), profile.outer.front());
     return wire.Wire();
 }

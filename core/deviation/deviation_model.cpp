@@ -117,7 +117,7 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
 
     // Nodes: supports, profile vertices and every station.
     std::set<double> nodeSet{x0, x1};
-    const SectionAlongZ finished(part, 0.0, 0.0, in.stockOuter_mm);
+    const SectionAlongZ finished(part, 0.0, 0.0, in.stockOuter_mm, in.solidInner_mm);
     for (const double z : finished.breakpoints()) {
         if (z > x0 && z < x1)
             nodeSet.insert(z);
@@ -156,7 +156,7 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
         if (allowance_mm <= 0.0)
             return sweep(index, finishedElements, finishedElements, in);
         const SectionAlongZ uncut(part, side == ContourSide::Outer ? allowance_mm : 0.0,
-                                  side == ContourSide::Inner ? allowance_mm : 0.0, in.stockOuter_mm);
+                                  side == ContourSide::Inner ? allowance_mm : 0.0, in.stockOuter_mm, in.solidInner_mm);
         return sweep(index, buildElements(uncut, in.material, index.nodes), finishedElements, in);
     };
     const Sweeps outer = sweepsFor(ContourSide::Outer);

@@ -632,6 +632,7 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
         in.scoped = true;
         in.cutFeatures = p.scope->cutFeatures;
         in.stockOuter_mm = p.scope->stockOuter_mm;
+        in.solidInner_mm = p.scope->solidInner_mm;
         in.notes << DeviationModel::tr("%1, operation %2 of %3: the part held at its %4 end, z from that end.")
                         .arg(p.scope->name)
                         .arg(p.scope->index + 1)
@@ -640,6 +641,9 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
         if (!in.stockOuter_mm.empty())
             in.notes << DeviationModel::tr("The outer features later operations turn are still the stock, Ø%1 mm.")
                             .arg(num(p.part.stockDiameter_mm));
+        if (!in.solidInner_mm.empty())
+            in.notes << DeviationModel::tr("The bores later operations cut are still solid material (no pre-drilled "
+                                           "hole is assumed).");
     }
     in.timeSinceStart_min = p.environment.timeSinceStart_min.value_or(0.0);
     in.ambientTemperature_C = p.environment.ambientTemperature_C.value_or(20.0);

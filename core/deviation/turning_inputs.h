@@ -95,6 +95,7 @@ struct TurningInputs {
     bool scoped = false;
     QStringList cutFeatures;
     std::vector<std::pair<double, double>> stockOuter_mm;
+    std::vector<std::pair<double, double>> solidInner_mm;
     QStringList notes; // assumptions the result depends on, for people
 
     // The forces on the tool that cuts a contour: the boring bar's in a bore, when there is one.

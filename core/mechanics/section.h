@@ -41,9 +41,11 @@ struct RoundSection {
 class SectionAlongZ {
 public:
     // `stockOuter_mm`: z ranges where the outer radius is still the stock's (features a later
-    // operation turns, docs/operations.md).
+    // operation turns, docs/operations.md); `solidInner_mm`: where a later operation bores, the
+    // part is still solid.
     SectionAlongZ(const PartProfile &profile, double outerAllowance_mm = 0.0, double innerAllowance_mm = 0.0,
-                  std::vector<std::pair<double, double>> stockOuter_mm = {});
+                  std::vector<std::pair<double, double>> stockOuter_mm = {},
+                  std::vector<std::pair<double, double>> solidInner_mm = {});
 
     [[nodiscard]] RoundSection at(double z_mm) const;
 
@@ -56,6 +58,7 @@ private:
     double m_innerAllowance_mm;
     double m_stockRadius_mm;
     std::vector<std::pair<double, double>> m_stockOuter_mm;
+    std::vector<std::pair<double, double>> m_solidInner_mm;
     std::vector<double> m_breakpoints;
 };
 

@@ -4,8 +4,42 @@
 #include "core/part/profile_geometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace tolturn {
+
+bool Segment::turnsBack() const
+{
+    if (kind == SegmentKind::Cone || kind == SegmentKind::Chamfer)
+        return to.z_mm < from.z_mm - kProfileEpsilon_mm;
+    if (kind == SegmentKind::Radius) {
+        const auto arc = arcGeometry(*this);
+        return arc && !isMonotoneInZ(*arc);
+    }
+    return false;
+}
+
+bool Contour::breaksBefore(std::size_t i) const
+{
+    if (i == 0 || i >= segments.size())
+        return false;
+    const ProfilePoint &a = segments[i - 1].to;
+    const ProfilePoint &b = segments[i].from;
+    return std::abs(a.z_mm - b.z_mm) > kProfileEpsilon_mm || std::abs(a.r_mm - b.r_mm) > kProfileEpsilon_mm;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> Contour::pieces() const
+{
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    std::size_t start = 0;
+    for (std::size_t i = 1; i <= segments.size(); ++i) {
+        if (i == segments.size() || breaksBefore(i)) {
+            out.emplace_back(start, i);
+            start = i;
+        }
+    }
+    return out;
+}
 
 double PartProfile::gripRadius_mm(double clampedLength_mm) const
 {

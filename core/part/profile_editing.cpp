@@ -70,24 +70,6 @@ void moveEnd(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
         s[i - 1].to = s[i].from;
 }
 
-Segment makeSegment(const QString &id, const QString &name, SegmentKind kind, ProfilePoint from, ProfilePoint to)
-{
-    Segment s;
-    s.id = id;
-    s.name = name;
-    s.kind = kind;
-    s.from = from;
-    s.to = to;
-    return s;
-}
-
-int idNumber(const QString &id)
-{
-    bool ok = false;
-    const int n = id.mid(1).toInt(&ok);
-    return ok ? n : 0;
-}
-
 // Joins two neighbours that became one feature: cylinders at one diameter, faces at one z.
 void mergeAt(std::vector<Segment> &s, std::size_t i)
 {
@@ -115,26 +97,54 @@ std::optional<ProfilePoint> lineIntersection(const Segment &a, const Segment &b)
 
 } // namespace
 
+int featureNumber(const QString &id)
+{
+    bool ok = false;
+    const int n = id.mid(1).toInt(&ok);
+    return ok ? n : 0;
+}
+
+Segment makeFeature(const QString &id, const QString &name, SegmentKind kind, ProfilePoint from, ProfilePoint to)
+{
+    Segment s;
+    s.id = id;
+    s.name = name;
+    s.kind = kind;
+    s.from = from;
+    s.to = to;
+    return s;
+}
+
 QString nextFeatureId(const PartProfile &profile, ContourSide side)
 {
     const Contour &c = side == ContourSide::Outer ? profile.outer : profile.inner;
     int highest = 0;
     for (const Segment &s : c.segments)
-        highest = std::max(highest, idNumber(s.id));
+        highest = std::max(highest, featureNumber(s.id));
     return (side == ContourSide::Outer ? QStringLiteral("O") : QStringLiteral("I")) + QString::number(highest + 1);
 }
 
-ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex, ProfilePoint to)
+ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex, ProfilePoint to, AtBreak atBreak)
 {
     PartProfile result = profile;
-    std::vector<Segment> &s = contourOf(result, side).segments;
+    Contour &contour = contourOf(result, side);
+    std::vector<Segment> &s = contour.segments;
     if (vertex < 0 || vertex > static_cast<int>(s.size()) || s.empty())
         return ProfileEditing::tr("the %1 contour has no vertex %2").arg(contourName(side)).arg(vertex);
     const auto k = static_cast<std::size_t>(vertex);
-    if (k > 0)
+    const bool atTheBreak = contour.breaksBefore(k);
+    if (k > 0 && (!atTheBreak || atBreak == AtBreak::EndOfSegment))
         moveEnd(s, k - 1, to);
-    if (k < s.size())
+    if (k < s.size() && (!atTheBreak || atBreak == AtBreak::StartOfSegment))
         moveStart(s, k, to);
+    // An undercut is drawn on purpose (insertUndercut), never made by dragging a corner.
+    const std::vector<Segment> &before = (side == ContourSide::Outer ? profile.outer : profile.inner).segments;
+    for (std::size_t i = 0; i < s.size() && i < before.size(); ++i) {
+        if (s[i].turnsBack() && !before[i].turnsBack())
+            return ProfileEditing::tr("moving the corner would make %1 turn back along z (an undercut), which "
+                                      "needs an undercut insert; move it less, or insert a DIN 509 undercut")
+                .arg(s[i].id);
+    }
     joinEndFacesToBore(result);
     return result;
 }
@@ -160,12 +170,12 @@ ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, dou
     const ProfilePoint corner{z_mm, r}, stepped{z_mm, r2};
     const QString faceId = nextFeatureId(result, ref->side);
     const QString cylinderId = (ref->side == ContourSide::Outer ? QStringLiteral("O") : QStringLiteral("I")) +
-                               QString::number(idNumber(faceId) + 1);
+                               QString::number(featureNumber(faceId) + 1);
     const ProfilePoint end = s[i].to;
     s[i].to = corner;
-    const Segment face = makeSegment(faceId, ProfileEditing::tr("step face"), SegmentKind::Face, corner, stepped);
+    const Segment face = makeFeature(faceId, ProfileEditing::tr("step face"), SegmentKind::Face, corner, stepped);
     const Segment second =
-        makeSegment(cylinderId, ProfileEditing::tr("step diameter"), SegmentKind::Cylinder, stepped, {end.z_mm, r2});
+        makeFeature(cylinderId, ProfileEditing::tr("step diameter"), SegmentKind::Cylinder, stepped, {end.z_mm, r2});
     s.insert(s.begin() + static_cast<std::ptrdiff_t>(i) + 1, {face, second});
     if (i + 3 < s.size())
         moveStart(s, i + 3, s[i + 2].to);
@@ -202,7 +212,7 @@ ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex
     const ProfilePoint end{corner.z_mm + size_mm * d2z, corner.r_mm + size_mm * d2r};
     before.to = start;
     after.from = end;
-    Segment edge = makeSegment(nextFeatureId(result, side),
+    Segment edge = makeFeature(nextFeatureId(result, side),
                                round ? ProfileEditing::tr("edge round") : ProfileEditing::tr("chamfer"),
                                round ? SegmentKind::Radius : SegmentKind::Chamfer, start, end);
     if (round) {
@@ -249,6 +259,47 @@ ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId)
     return result;
 }
 
+namespace {
+
+// A blind bore from the end face that is still closed, when the part has one from the other end:
+// the inner contour gets its second piece, with solid material between the bottoms.
+ProfileEdit addSecondBore(const PartProfile &profile, bool left, double depth_mm, double r)
+{
+    const Contour &inner = profile.inner;
+    const double length = profile.length_mm();
+    const bool onePiece = inner.pieces().size() == 1;
+    const bool blindFromRight = onePiece && near(inner.front().r_mm, 0.0) && near(inner.back().z_mm, length);
+    const bool blindFromLeft = onePiece && near(inner.front().z_mm, 0.0) && near(inner.back().r_mm, 0.0);
+    if (!(left ? blindFromRight : blindFromLeft))
+        return ProfileEditing::tr("the part is bored from this end already (or through); edit its bore instead");
+    const double bottom = left ? depth_mm : length - depth_mm;
+    const double otherBottom = left ? inner.front().z_mm : inner.back().z_mm;
+    if (left ? bottom >= otherBottom - kProfileEpsilon_mm : bottom <= otherBottom + kProfileEpsilon_mm)
+        return ProfileEditing::tr("a bore %1 mm deep would meet the bore from the other end, whose bottom is at z = "
+                                  "%2 mm: leave solid between them, or make it one through bore")
+            .arg(formatNumber(depth_mm), formatNumber(otherBottom));
+    PartProfile result = profile;
+    const QString boreId = nextFeatureId(profile, ContourSide::Inner);
+    const QString bottomId = QStringLiteral("I") + QString::number(featureNumber(boreId) + 1);
+    std::vector<Segment> &s = result.inner.segments;
+    if (left) {
+        const Segment bore =
+            makeFeature(boreId, ProfileEditing::tr("bore"), SegmentKind::Cylinder, {0.0, r}, {bottom, r});
+        const Segment face =
+            makeFeature(bottomId, ProfileEditing::tr("bore bottom"), SegmentKind::Face, {bottom, r}, {bottom, 0.0});
+        s.insert(s.begin(), {bore, face});
+        result.outer.segments.front().from.r_mm = r;
+    } else {
+        s.push_back(
+            makeFeature(bottomId, ProfileEditing::tr("bore bottom"), SegmentKind::Face, {bottom, 0.0}, {bottom, r}));
+        s.push_back(makeFeature(boreId, ProfileEditing::tr("bore"), SegmentKind::Cylinder, {bottom, r}, {length, r}));
+        result.outer.segments.back().to.r_mm = r;
+    }
+    return result;
+}
+
+} // namespace
+
 ProfileEdit addBore(const PartProfile &profile, const QString &endFaceId, double depth_mm, double diameter_mm)
 {
     const std::vector<Segment> &outer = profile.outer.segments;
@@ -256,29 +307,29 @@ ProfileEdit addBore(const PartProfile &profile, const QString &endFaceId, double
     const bool right = !outer.empty() && outer.back().id == endFaceId;
     if (!left && !right)
         return ProfileEditing::tr("a bore starts at an end face of the part; %1 is not one").arg(endFaceId);
-    if (!profile.inner.empty())
-        return ProfileEditing::tr("the part is bored already; edit its bore instead");
     const double length = profile.length_mm();
     const double r = diameter_mm / 2.0;
     if (!(depth_mm > 0.0) || !(r > 0.0))
         return ProfileEditing::tr("a bore needs a depth and a diameter above zero, but they are %1 and %2 mm")
             .arg(formatNumber(depth_mm), formatNumber(diameter_mm));
+    if (!profile.inner.empty())
+        return addSecondBore(profile, left, depth_mm, r);
     PartProfile result = profile;
     std::vector<Segment> &inner = result.inner.segments;
     const bool through = depth_mm >= length - kProfileEpsilon_mm;
     const double bottom = left ? std::min(depth_mm, length) : std::max(length - depth_mm, 0.0);
     if (through) {
-        inner.push_back(makeSegment(QStringLiteral("I1"), ProfileEditing::tr("bore"), SegmentKind::Cylinder, {0.0, r},
+        inner.push_back(makeFeature(QStringLiteral("I1"), ProfileEditing::tr("bore"), SegmentKind::Cylinder, {0.0, r},
                                     {length, r}));
     } else if (left) {
-        inner.push_back(makeSegment(QStringLiteral("I1"), ProfileEditing::tr("bore"), SegmentKind::Cylinder, {0.0, r},
+        inner.push_back(makeFeature(QStringLiteral("I1"), ProfileEditing::tr("bore"), SegmentKind::Cylinder, {0.0, r},
                                     {bottom, r}));
-        inner.push_back(makeSegment(QStringLiteral("I2"), ProfileEditing::tr("bore bottom"), SegmentKind::Face,
+        inner.push_back(makeFeature(QStringLiteral("I2"), ProfileEditing::tr("bore bottom"), SegmentKind::Face,
                                     {bottom, r}, {bottom, 0.0}));
     } else {
-        inner.push_back(makeSegment(QStringLiteral("I1"), ProfileEditing::tr("bore bottom"), SegmentKind::Face,
+        inner.push_back(makeFeature(QStringLiteral("I1"), ProfileEditing::tr("bore bottom"), SegmentKind::Face,
                                     {bottom, 0.0}, {bottom, r}));
-        inner.push_back(makeSegment(QStringLiteral("I2"), ProfileEditing::tr("bore"), SegmentKind::Cylinder,
+        inner.push_back(makeFeature(QStringLiteral("I2"), ProfileEditing::tr("bore"), SegmentKind::Cylinder,
                                     {bottom, r}, {length, r}));
     }
     if (left || through)

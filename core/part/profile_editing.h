@@ -15,11 +15,16 @@ namespace tolturn {
 // An edit that cannot be made gives the reason instead, naming the feature and the value.
 using ProfileEdit = std::variant<PartProfile, QString>;
 
-// Vertex k of a contour is where segment k-1 ends and segment k starts (0 … n).
-// Moves it to `to`. A neighbouring cylinder keeps its diameter by moving its other end radially,
+// Vertex k of a contour is where segment k-1 ends and segment k starts (0 … n). Where the
+// inner contour breaks (the solid between a bore from each end) these are two points: `atBreak`
+// says which one moves.
+enum class AtBreak { StartOfSegment, EndOfSegment };
+
+// Moves vertex k to `to`. A neighbouring cylinder keeps its diameter by moving its other end radially,
 // a neighbouring face keeps its z by moving its other end axially (with the vertex beyond);
 // cones, chamfers and radii change their slope.
-[[nodiscard]] ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex, ProfilePoint to);
+[[nodiscard]] ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex, ProfilePoint to,
+                                     AtBreak atBreak = AtBreak::StartOfSegment);
 
 // Splits cylinder `featureId` at `z_mm` into a cylinder, a face and a cylinder of diameter
 // `diameter_mm` up to the cylinder's end: a step. The new features get fresh ids.
@@ -53,5 +58,12 @@ using ProfileEdit = std::variant<PartProfile, QString>;
 
 // A feature id not used yet on the contour: "O12", "I4", …
 [[nodiscard]] QString nextFeatureId(const PartProfile &profile, ContourSide side);
+
+// The number of an id made by nextFeatureId() ("O12" → 12; 0 for another id).
+[[nodiscard]] int featureNumber(const QString &id);
+
+// A straight feature (not a Radius) from `from` to `to`.
+[[nodiscard]] Segment makeFeature(const QString &id, const QString &name, SegmentKind kind, ProfilePoint from,
+                                  ProfilePoint to);
 
 } // namespace tolturn

@@ -64,6 +64,19 @@ bool isMonotoneInZ(const ArcGeometry &arc)
     return !sweepContains(arc, 0.0) && !sweepContains(arc, kPi);
 }
 
+std::pair<double, double> zRange(const ArcGeometry &arc)
+{
+    const ProfilePoint a = arc.pointAt(arc.startAngle_rad);
+    const ProfilePoint b = arc.pointAt(arc.startAngle_rad + arc.sweep_rad);
+    double lo = std::min(a.z_mm, b.z_mm);
+    double hi = std::max(a.z_mm, b.z_mm);
+    if (sweepContains(arc, 0.0))
+        hi = arc.centre.z_mm + arc.radius_mm;
+    if (sweepContains(arc, kPi))
+        lo = arc.centre.z_mm - arc.radius_mm;
+    return {lo, hi};
+}
+
 double radiusOnSegment(const Segment &segment, double z_mm)
 {
     const double z0 = segment.from.z_mm;
@@ -122,6 +135,49 @@ std::optional<double> radiusAt(const Contour &contour, double z_mm, Approach app
     if (best == nullptr)
         return std::nullopt;
     return radiusOnSegment(*best, z_mm);
+}
+
+std::vector<double> crossingRadii(const Segment &segment, double z_mm)
+{
+    const double zLo = std::min(segment.from.z_mm, segment.to.z_mm);
+    const double zHi = std::max(segment.from.z_mm, segment.to.z_mm);
+    if (segment.kind == SegmentKind::Face)
+        return {};
+    if (segment.kind != SegmentKind::Radius) {
+        if (z_mm <= zLo + kProfileEpsilon_mm || z_mm >= zHi - kProfileEpsilon_mm)
+            return {};
+        const double t = (z_mm - segment.from.z_mm) / (segment.to.z_mm - segment.from.z_mm);
+        return {segment.from.r_mm + t * (segment.to.r_mm - segment.from.r_mm)};
+    }
+    const auto arc = arcGeometry(segment);
+    if (!arc)
+        return {};
+    const double dz = z_mm - arc->centre.z_mm;
+    if (std::abs(dz) >= arc->radius_mm)
+        return {};
+    std::vector<double> radii;
+    const double angle = std::acos(dz / arc->radius_mm); // of the upper crossing; the lower is -angle
+    for (const double a : {angle, -angle}) {
+        if (sweepContains(*arc, a))
+            radii.push_back(arc->pointAt(a).r_mm);
+    }
+    return radii;
+}
+
+std::optional<double> coreRadiusAt(const Contour &contour, double z_mm, Approach approach, ContourSide side)
+{
+    std::optional<double> r = radiusAt(contour, z_mm, approach);
+    // Where an undercut overhangs z, several segments cover it (the recess's floor and the shoulder
+    // beyond, say); in a contour without undercuts only the one radiusAt() found does.
+    for (const Segment &s : contour.segments) {
+        for (const double c : crossingRadii(s, z_mm)) {
+            if (!r)
+                r = c;
+            else
+                r = side == ContourSide::Outer ? std::min(*r, c) : std::max(*r, c);
+        }
+    }
+    return r;
 }
 
 std::vector<ProfilePoint> samplePoints(const Segment &segment, int arcPoints)

@@ -31,6 +31,9 @@ struct ArcGeometry {
 // of its circle), which a contour turned from left to right requires.
 [[nodiscard]] bool isMonotoneInZ(const ArcGeometry &arc);
 
+// Smallest and largest z an arc reaches (past its end points where it turns back).
+[[nodiscard]] std::pair<double, double> zRange(const ArcGeometry &arc);
+
 // Radius of an axial segment at z, for from.z <= z <= to.z.
 [[nodiscard]] double radiusOnSegment(const Segment &segment, double z_mm);
 
@@ -41,6 +44,17 @@ struct ArcGeometry {
 // face). nullopt where the contour does not cover z.
 enum class Approach { FromLeft, FromRight };
 [[nodiscard]] std::optional<double> radiusAt(const Contour &contour, double z_mm, Approach approach);
+
+// Where a segment (not a face) crosses the line z = const strictly inside its z range: one
+// radius for a straight segment, one or two for an arc (an undercut radius crosses twice).
+[[nodiscard]] std::vector<double> crossingRadii(const Segment &segment, double z_mm);
+
+// The radius of the material's core at z for the beam: radiusAt(), and where an undercut
+// overhangs the line z = const, the smallest crossing of the outer contour or the largest of the
+// inner. The ring of material beyond an undercut's recess is left out (conservative; it spans
+// at most the recess, tenths of a millimetre for DIN 509).
+[[nodiscard]] std::optional<double> coreRadiusAt(const Contour &contour, double z_mm, Approach approach,
+                                                 ContourSide side);
 
 // Points along a segment for drawing: the two end points for straight segments, `arcPoints`
 // points for a Radius.

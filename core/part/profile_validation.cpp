@@ -7,7 +7,10 @@
 #include <QCoreApplication>
 #include <QSet>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <optional>
 #include <set>
 
 namespace tolturn {
@@ -91,12 +94,12 @@ private:
         const double dz = s.to.z_mm - s.from.z_mm;
         const double dr = s.to.r_mm - s.from.r_mm;
         const QString kind = keyword(s.kind);
-        if (dz < -kProfileEpsilon_mm) {
+        if (s.kind == SegmentKind::Cylinder && dz < -kProfileEpsilon_mm) {
             error(path + QStringLiteral(".to.z_mm"),
                   ProfileValidation::tr(
-                      "the %1 runs backwards along z, from z = %2 mm to z = %3 mm: a contour runs from left to "
-                      "right, so this segment overlaps the one before it")
-                      .arg(kind, num(s.from.z_mm), num(s.to.z_mm)));
+                      "the cylinder runs backwards along z, from z = %1 mm to z = %2 mm: a contour runs from left "
+                      "to right, and only an undercut's cones and radii may go back")
+                      .arg(num(s.from.z_mm), num(s.to.z_mm)));
             return;
         }
         switch (s.kind) {
@@ -128,9 +131,9 @@ private:
             break;
         case SegmentKind::Cone:
         case SegmentKind::Chamfer:
-            if (dz <= kProfileEpsilon_mm)
+            if (std::abs(dz) <= kProfileEpsilon_mm)
                 error(path + QStringLiteral(".to.z_mm"),
-                      ProfileValidation::tr("a %1 must advance along z, but it starts and ends at z = %2 mm (a face?)")
+                      ProfileValidation::tr("a %1 must move along z, but it starts and ends at z = %2 mm (a face?)")
                           .arg(kind, num(s.to.z_mm)));
             else if (same(dr, 0.0))
                 error(path + QStringLiteral(".to.r_mm"),
@@ -164,23 +167,33 @@ private:
                     .arg(num(s.arcRadius_mm), num(chord), num(0.5 * chord)));
             return;
         }
-        if (!isMonotoneInZ(*arc))
-            error(path + QStringLiteral(".direction"),
-                  ProfileValidation::tr(
-                      "the %1 arc of radius %2 mm turns back along z (an undercut), which cannot be turned "
-                      "from left to right; try the other direction")
-                      .arg(keyword(s.arcDirection), num(s.arcRadius_mm)));
     }
 
     void checkJoint(const Segment &prev, const Segment &s, std::size_t i, const QString &path)
     {
         const QString prevPath = segmentPath(m_side, i - 1);
         if (!same(prev.to, s.from)) {
+            if (isSolidBetweenBores(prev, s)) {
+                if (++m_breaks > 1)
+                    error(path + QStringLiteral(".from"),
+                          ProfileValidation::tr("the inner contour leaves the axis a second time at z = %1 mm: a "
+                                                "part has at most one bore from each end")
+                              .arg(num(s.from.z_mm)));
+                return;
+            }
             const bool overlap = s.from.z_mm < prev.to.z_mm - kProfileEpsilon_mm;
             error(path + QStringLiteral(".from"),
                   (overlap ? ProfileValidation::tr("overlaps %1: it starts at %2, left of where %1 ends, %3")
                            : ProfileValidation::tr("leaves a gap: it starts at %2, but %1 ends at %3"))
                       .arg(prevPath, pointText(s.from), pointText(prev.to)));
+            return;
+        }
+        if (m_side == ContourSide::Inner && same(s.from.r_mm, 0.0)) {
+            error(path + QStringLiteral(".from"),
+                  ProfileValidation::tr("the bores from both ends meet on the axis at z = %1 mm, leaving no solid "
+                                        "between them: make them one through bore, stepped by a face from r = %2 mm "
+                                        "to r = %3 mm")
+                      .arg(num(s.from.z_mm), num(prev.from.r_mm), num(s.to.r_mm)));
             return;
         }
         const bool bothFaces = prev.kind == SegmentKind::Face && s.kind == SegmentKind::Face;
@@ -189,9 +202,18 @@ private:
                             .arg(prevPath, num(s.from.z_mm)));
     }
 
+    // A bore from the left end closes on the axis and one from the right end starts on it further
+    // right: the inner contour's one allowed break, the solid between them.
+    [[nodiscard]] bool isSolidBetweenBores(const Segment &prev, const Segment &s) const
+    {
+        return m_side == ContourSide::Inner && same(prev.to.r_mm, 0.0) && same(s.from.r_mm, 0.0) &&
+               s.from.z_mm > prev.to.z_mm + kProfileEpsilon_mm;
+    }
+
     const Contour &m_contour;
     ContourSide m_side;
     Diagnostics &m_out;
+    int m_breaks = 0;
 };
 
 // The radius of the inner contour (or the axis, r = 0) where the outer contour must close.
@@ -239,36 +261,43 @@ void checkEnds(const PartProfile &p, Diagnostics &out)
                      num(last.r_mm))));
 }
 
-void checkInnerEnds(const PartProfile &p, Diagnostics &out)
+// Each bore (the inner contour's pieces either side of the solid between two bores) opens at an
+// end of the part and closes on the axis, or runs through.
+void checkBoreEnds(const PartProfile &p, std::size_t firstIndex, std::size_t lastIndex, Diagnostics &out)
 {
-    const ProfilePoint first = p.inner.front();
-    const ProfilePoint last = p.inner.back();
-    const QString lastPath = segmentPath(ContourSide::Inner, p.inner.segments.size() - 1);
+    const ProfilePoint first = p.inner.segments[firstIndex].from;
+    const ProfilePoint last = p.inner.segments[lastIndex].to;
+    const QString firstPath = segmentPath(ContourSide::Inner, firstIndex);
+    const QString lastPath = segmentPath(ContourSide::Inner, lastIndex);
     const bool openLeft = same(first.z_mm, 0.0);
     const bool openRight = same(last.z_mm, p.length_mm());
     if (!openLeft && !same(first.r_mm, 0.0))
-        out.push_back(
-            makeError(QStringLiteral("part.inner[0].from"),
-                      ProfileValidation::tr("the inner contour must start at the left end (z = 0 mm) or on the axis "
-                                            "(r = 0 mm), but starts at %1")
-                          .arg(pointText(first))));
+        out.push_back(makeError(firstPath + QStringLiteral(".from"),
+                                ProfileValidation::tr("the inner contour must start at the left end (z = 0 mm) or on "
+                                                      "the axis (r = 0 mm), but starts at %1")
+                                    .arg(pointText(first))));
     if (!openRight && !same(last.r_mm, 0.0))
-        out.push_back(
-            makeError(lastPath + QStringLiteral(".to"),
-                      ProfileValidation::tr("the inner contour must end at the right end (z = %1 mm) or on the axis "
-                                            "(r = 0 mm), but ends at %2")
-                          .arg(num(p.length_mm()), pointText(last))));
+        out.push_back(makeError(lastPath + QStringLiteral(".to"),
+                                ProfileValidation::tr("the inner contour must end at the right end (z = %1 mm) or on "
+                                                      "the axis (r = 0 mm), but ends at %2")
+                                    .arg(num(p.length_mm()), pointText(last))));
     if (!openLeft && !openRight && same(first.r_mm, 0.0) && same(last.r_mm, 0.0))
-        out.push_back(makeError(
-            QStringLiteral("part.inner"),
-            ProfileValidation::tr("the bore is closed at both ends (a cavity that no tool can reach): it must "
-                                  "open at z = 0 mm or at z = %1 mm")
-                .arg(num(p.length_mm()))));
+        out.push_back(
+            makeError(firstIndex == 0 ? QStringLiteral("part.inner") : firstPath,
+                      ProfileValidation::tr("the bore from z = %1 mm to z = %2 mm is closed at both ends (a cavity "
+                                            "that no tool can reach): it must open at z = 0 mm or at z = %3 mm")
+                          .arg(num(first.z_mm), num(last.z_mm), num(p.length_mm()))));
     if (last.z_mm > p.length_mm() + kProfileEpsilon_mm)
         out.push_back(
             makeError(lastPath + QStringLiteral(".to.z_mm"),
                       ProfileValidation::tr("the bore ends at z = %1 mm, beyond the right end of the part at z = %2 mm")
                           .arg(num(last.z_mm), num(p.length_mm()))));
+}
+
+void checkInnerEnds(const PartProfile &p, Diagnostics &out)
+{
+    for (const auto &[first, end] : p.inner.pieces())
+        checkBoreEnds(p, first, end - 1, out);
 }
 
 // The wall between bore and outside must stay positive. Both contours are straight or circular
@@ -301,6 +330,85 @@ void checkWall(const PartProfile &p, Diagnostics &out)
                             .arg(num(rIn), num(z), num(*rOut))));
                     return;
                 }
+            }
+        }
+    }
+}
+
+// A contour with an undercut can cross itself or the other contour (a recess cut deeper than the
+// wall). Each segment as a polyline (arcs sampled finely enough to see a crossing of a tenth of
+// their radius), compared with every segment that is not its neighbour where their boxes meet.
+struct Polyline {
+    ContourSide side;
+    std::size_t index;
+    std::vector<ProfilePoint> points;
+    double zLo, zHi, rLo, rHi;
+};
+
+std::vector<Polyline> polylines(const Contour &c, ContourSide side)
+{
+    std::vector<Polyline> out;
+    for (std::size_t i = 0; i < c.segments.size(); ++i) {
+        Polyline l{side, i, samplePoints(c.segments[i], 17), HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
+        for (const ProfilePoint &q : l.points) {
+            l.zLo = std::min(l.zLo, q.z_mm);
+            l.zHi = std::max(l.zHi, q.z_mm);
+            l.rLo = std::min(l.rLo, q.r_mm);
+            l.rHi = std::max(l.rHi, q.r_mm);
+        }
+        out.push_back(std::move(l));
+    }
+    return out;
+}
+
+double cross(const ProfilePoint &o, const ProfilePoint &a, const ProfilePoint &b)
+{
+    return (a.z_mm - o.z_mm) * (b.r_mm - o.r_mm) - (a.r_mm - o.r_mm) * (b.z_mm - o.z_mm);
+}
+
+// Where two polylines cross properly (not where they merely touch at an end).
+std::optional<ProfilePoint> crossing(const Polyline &a, const Polyline &b)
+{
+    constexpr double tiny = 1e-12;
+    for (std::size_t i = 1; i < a.points.size(); ++i) {
+        const ProfilePoint &p = a.points[i - 1];
+        const ProfilePoint &q = a.points[i];
+        for (std::size_t j = 1; j < b.points.size(); ++j) {
+            const ProfilePoint &u = b.points[j - 1];
+            const ProfilePoint &v = b.points[j];
+            const double d1 = cross(p, q, u);
+            const double d2 = cross(p, q, v);
+            const double d3 = cross(u, v, p);
+            const double d4 = cross(u, v, q);
+            if (((d1 > tiny && d2 < -tiny) || (d1 < -tiny && d2 > tiny)) &&
+                ((d3 > tiny && d4 < -tiny) || (d3 < -tiny && d4 > tiny))) {
+                const double t = d3 / (d3 - d4);
+                return ProfilePoint{p.z_mm + t * (q.z_mm - p.z_mm), p.r_mm + t * (q.r_mm - p.r_mm)};
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+void checkCrossings(const PartProfile &p, Diagnostics &out)
+{
+    std::vector<Polyline> all = polylines(p.outer, ContourSide::Outer);
+    std::vector<Polyline> inner = polylines(p.inner, ContourSide::Inner);
+    all.insert(all.end(), std::make_move_iterator(inner.begin()), std::make_move_iterator(inner.end()));
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        for (std::size_t j = i + 1; j < all.size(); ++j) {
+            const Polyline &a = all[i];
+            const Polyline &b = all[j];
+            if (a.side == b.side && b.index == a.index + 1)
+                continue; // neighbours share their joint
+            if (a.zHi < b.zLo || b.zHi < a.zLo || a.rHi < b.rLo || b.rHi < a.rLo)
+                continue;
+            if (const auto x = crossing(a, b)) {
+                out.push_back(makeError(segmentPath(a.side, a.index),
+                                        ProfileValidation::tr("crosses %1 at %2: the contour overlaps itself (an "
+                                                              "undercut deeper than the material around it?)")
+                                            .arg(segmentPath(b.side, b.index), pointText(*x))));
+                return;
             }
         }
     }
@@ -352,6 +460,8 @@ Diagnostics validateProfile(const PartProfile &profile)
         if (!hasErrors(out))
             checkWall(profile, out);
     }
+    if (!hasErrors(out))
+        checkCrossings(profile, out);
     const double needed = 2.0 * profile.maxOuterRadius_mm();
     if (profile.stockDiameter_mm < needed - kProfileEpsilon_mm)
         out.push_back(makeError(

@@ -3,6 +3,7 @@
 
 #include "core/cutting/cutting_quantities.h"
 #include "core/deviation/deviation_model.h"
+#include "core/part/undercuts.h"
 #include "core/project/keywords.h"
 #include "core/project/operations.h"
 #include "core/tooling/iso1832.h"
@@ -236,6 +237,44 @@ void checkOperation(const Project &project, int index, const DataLibrary &data, 
     }
 }
 
+// The insert that cuts a feature: the boring insert in a bore (when a boring bar is given), else
+// the turning insert, of the operation that cuts it.
+const Tool &toolFor(const Project &project, const QString &featureId, ContourSide side)
+{
+    const int op = operationOf(project, featureId);
+    const Tool &tool = op == 0 ? project.tool : project.furtherOperations[static_cast<std::size_t>(op - 1)].tool;
+    const std::optional<Tool> &bar =
+        op == 0 ? project.boringTool : project.furtherOperations[static_cast<std::size_t>(op - 1)].boringTool;
+    return side == ContourSide::Inner && bar ? *bar : tool;
+}
+
+// A groove narrower than the insert's nose (2 r_e across) is out of its reach: the nose cannot
+// get to the bottom, and the flanks and bottom are left uncut. Grooving inserts are not in the
+// data, so the width such an insert may have is said instead.
+void checkGrooves(const Project &project, Diagnostics &out)
+{
+    for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
+        const Contour &contour = side == ContourSide::Outer ? project.part.outer : project.part.inner;
+        for (const Groove &g : groovesOf(contour, side)) {
+            const Tool &tool = toolFor(project, g.leftFaceId, side);
+            const InsertParseResult insert = parseInsertCode(tool.insertCode);
+            const auto face = findFeature(project.part, g.leftFaceId);
+            if (!insert.insert || !face)
+                continue; // a bad insert code is an error of its own
+            const double nose = 2.0 * insert.insert->noseRadius_mm;
+            if (g.width_mm >= nose - 1e-9)
+                continue;
+            out.push_back(makeWarning(
+                QStringLiteral("part.%1[%2]").arg(contourName(side)).arg(face->index),
+                Plausibility::tr("the groove between %1 and %2 is %3 mm wide, narrower than the nose of %4 (r_e %5 "
+                                 "mm, %6 mm across): it cannot reach the groove's bottom; cut the groove with a "
+                                 "grooving insert at most %3 mm wide")
+                    .arg(g.leftFaceId, g.rightFaceId, num(g.width_mm), tool.insertCode,
+                         num(insert.insert->noseRadius_mm), num(nose))));
+        }
+    }
+}
+
 } // namespace
 
 Diagnostics checkPlausibility(const Project &project, const DataLibrary &data)
@@ -243,6 +282,7 @@ Diagnostics checkPlausibility(const Project &project, const DataLibrary &data)
     Diagnostics out;
     for (int k = 0; k < operationCount(project); ++k)
         checkOperation(project, k, data, out);
+    checkGrooves(project, out);
     return out;
 }
 

@@ -95,12 +95,59 @@ void joinMovedFeature(std::vector<PathElement> &out, PathElement &next)
         out.push_back(line(out.back().to, next.from, next.featureId));
 }
 
+// The outline a turning insert cuts of a contour with undercuts: each run of elements that go back
+// along z (an undercut's recess under its shoulder) is bridged by the corner the tool reaches from
+// outside, along the recess's floor to the face's z and radially up the face. The recess is the
+// undercut insert's (warnAtUndercuts says so); a concave radius under the shoulder tighter than
+// the nose could not be programmed with G41/G42 in any case.
+Contour withoutUndercuts(Contour contour)
+{
+    std::vector<Segment> &s = contour.segments;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].turnsBack())
+            continue;
+        std::size_t j = i;
+        while (j + 1 < s.size() && s[j + 1].turnsBack())
+            ++j;
+        if (i == 0 || j + 1 >= s.size())
+            continue; // an undercut at an end of the contour: nothing to bridge it to
+        Segment &before = s[i - 1];
+        Segment &after = s[j + 1];
+        const bool faceBefore = before.kind == SegmentKind::Face;
+        Segment &face = faceBefore ? before : after;
+        Segment &floor = faceBefore ? after : before;
+        // The corner: radially from the face's end, axially from the floor's.
+        const ProfilePoint corner =
+            faceBefore ? ProfilePoint{s[i].from.z_mm, s[j].to.r_mm} : ProfilePoint{s[j].to.z_mm, s[i].from.r_mm};
+        std::vector<Segment> bridge;
+        if (face.kind == SegmentKind::Face && floor.kind == SegmentKind::Cylinder) {
+            // Extend the face and the floor themselves: no short collinear pieces, which a control's
+            // nose radius compensation cannot take into a concave corner.
+            (faceBefore ? face.to : face.from) = corner;
+            (faceBefore ? floor.from : floor.to) = corner;
+        } else {
+            Segment radial = face;
+            radial.kind = SegmentKind::Face;
+            Segment axial = floor;
+            axial.kind = SegmentKind::Cylinder;
+            radial.from = faceBefore ? s[i].from : corner;
+            radial.to = faceBefore ? corner : s[j].to;
+            axial.from = faceBefore ? corner : s[i].from;
+            axial.to = faceBefore ? s[j].to : corner;
+            bridge = faceBefore ? std::vector<Segment>{radial, axial} : std::vector<Segment>{axial, radial};
+        }
+        s.erase(s.begin() + static_cast<std::ptrdiff_t>(i), s.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+        s.insert(s.begin() + static_cast<std::ptrdiff_t>(i), bridge.begin(), bridge.end());
+    }
+    return contour;
+}
+
 // The target contour from its right end to its left end with the compensation plan applied: a
 // constant offset moves a feature radially, a profile correction replaces it by its corrected
 // stations; a radial step joins a moved feature to its neighbours.
 std::vector<PathElement> finishingContour(const Project &project, const CompensationPlan *plan)
 {
-    const Contour target = targetContour(project, ContourSide::Outer);
+    const Contour target = withoutUndercuts(targetContour(project, ContourSide::Outer));
     std::vector<PathElement> out;
     for (PathElement e : reversedElements(target.segments)) {
         const FeatureCompensation *c = plan ? plan->find(e.featureId) : nullptr;
@@ -250,6 +297,28 @@ void warnWhereTheJawsKeepTheToolOff(const Project &project, double zReached_mm, 
                     QLatin1Char(' ') + advice;
 }
 
+// An undercut's recess lies behind the shoulder: the program follows it, but a turning insert's
+// body would cut the shoulder (its outline beyond the nose is not modelled).
+void warnAtUndercuts(const Project &project, QStringList &warnings)
+{
+    QStringList features;
+    for (const Segment &s : project.part.outer.segments) {
+        if (s.turnsBack() && (!project.scope || project.scope->cutFeatures.contains(s.id)))
+            features << s.id;
+    }
+    if (features.isEmpty())
+        return;
+    const QString text =
+        features.size() == 1
+            ? Toolpaths::tr("%1 goes back along z (an undercut): the program follows it, but only an undercut or "
+                            "grooving insert that fits the recess can cut it; the insert's outline is not checked "
+                            "against the shoulder.")
+            : Toolpaths::tr("%1 go back along z (an undercut): the program follows them, but only an undercut or "
+                            "grooving insert that fits the recess can cut them; the insert's outline is not checked "
+                            "against the shoulder.");
+    warnings << text.arg(features.join(QStringLiteral(", ")));
+}
+
 ToolMove move(MoveKind kind, ProfilePoint to, const QString &featureId = {})
 {
     ToolMove m;
@@ -277,6 +346,37 @@ double smallestAxialRadius(const std::vector<PathElement> &chain)
         if (std::abs(e.from.z_mm - e.to.z_mm) > kTiny) // a face does not count: G96 is clamped there
             smallest = std::min({smallest, e.from.r_mm, e.to.r_mm});
     return std::isfinite(smallest) ? smallest : 0.0;
+}
+
+// With the control's nose radius compensation a concave arc tighter than the nose is refused (the
+// offset arc would have a negative radius): it is programmed as the corner of its neighbours'
+// lines, which the nose rounds with its own radius. Returns the ids of the arcs so replaced.
+QStringList sharpenTightConcaveArcs(std::vector<PathElement> &chain, double noseRadius_mm)
+{
+    QStringList replaced;
+    for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
+        const PathElement &e = chain[i];
+        if (!e.arc || e.counterClockwise || e.radius_mm > noseRadius_mm + kTiny)
+            continue;
+        PathElement &before = chain[i - 1];
+        PathElement &after = chain[i + 1];
+        if (before.arc || after.arc)
+            continue; // no corner of two lines: left as it is
+        const double d1z = before.to.z_mm - before.from.z_mm, d1r = before.to.r_mm - before.from.r_mm;
+        const double d2z = after.to.z_mm - after.from.z_mm, d2r = after.to.r_mm - after.from.r_mm;
+        const double det = d1z * d2r - d1r * d2z;
+        if (std::abs(det) < 1e-12)
+            continue;
+        const double t =
+            ((after.from.z_mm - before.from.z_mm) * d2r - (after.from.r_mm - before.from.r_mm) * d2z) / det;
+        const ProfilePoint corner{before.from.z_mm + t * d1z, before.from.r_mm + t * d1r};
+        replaced << e.featureId;
+        before.to = corner;
+        after.from = corner;
+        chain.erase(chain.begin() + static_cast<std::ptrdiff_t>(i));
+        --i;
+    }
+    return replaced;
 }
 
 struct FinishingGeometry {
@@ -328,6 +428,12 @@ PassPath finishingPass(const Project &project, const CuttingPass &conditions, co
         for (const QString &id : dropped)
             path.warnings << Toolpaths::tr("%1 is narrower or tighter than the nose radius %2 mm: the nose cannot "
                                            "follow it and leaves it rounded.")
+                                 .arg(id, mm(noseRadius_mm));
+    } else {
+        for (const QString &id : sharpenTightConcaveArcs(programmed, noseRadius_mm))
+            path.warnings << Toolpaths::tr("%1 is tighter than the nose radius %2 mm: it is programmed as the sharp "
+                                           "corner it rounds (a control's compensation cannot follow a concave arc "
+                                           "tighter than the nose), and the nose leaves it rounded to %2 mm.")
                                  .arg(id, mm(noseRadius_mm));
     }
     // The entry move, longer than r_e (a compensation needs that): along -z onto a face that is faced,
@@ -491,6 +597,7 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
                                        "insert shape): falling contours are not checked.");
     warnWhereTheJawsKeepTheToolOff(project, leftSupport_mm(project) + options.clearance_mm + noseRadius_mm,
                                    options.clearance_mm, path.warnings);
+    warnAtUndercuts(project, path.warnings);
     if (const auto boundary = operationBoundary_mm(project))
         path.notes << Toolpaths::tr("%1 turns from the free end to z = %2 mm (from the held end); the rest of the "
                                     "outer contour is another operation's.")

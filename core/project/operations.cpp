@@ -42,12 +42,12 @@ Contour mirrored(const Contour &contour, double length_mm)
     return out;
 }
 
-// The outer z ranges (in the operation's frame) of the turned features later operations cut:
-// there the part still has its stock.
-std::vector<std::pair<double, double>> stockRanges(const Project &project, const PartProfile &held, int index)
+// The z ranges (in the operation's frame) of a contour's turned or bored features that later
+// operations cut: there the part still has its stock outside, its solid material inside.
+std::vector<std::pair<double, double>> laterRanges(const Project &project, const Contour &held, int index)
 {
     std::vector<std::pair<double, double>> ranges;
-    for (const Segment &s : held.outer.segments) {
+    for (const Segment &s : held.segments) {
         if (!s.isAxial() || operationOf(project, s.id) <= index)
             continue;
         const double a = std::min(s.from.z_mm, s.to.z_mm);
@@ -141,7 +141,8 @@ Project operationView(const Project &project, int index)
         if (const int op = operationOf(project, id); op != index)
             scope.cutElsewhere.insert(id, operationName(project, op));
     }
-    scope.stockOuter_mm = stockRanges(project, view.part, index);
+    scope.stockOuter_mm = laterRanges(project, view.part.outer, index);
+    scope.solidInner_mm = laterRanges(project, view.part.inner, index);
     view.tolerances.clear();
     for (const Tolerance &t : project.tolerances) {
         if (judgedIn(scope.cutFeatures, t))
@@ -258,6 +259,37 @@ QString reclampingText(const Project &project, const Tolerance &tolerance, const
 
 namespace {
 
+// A feature the operation that cuts it cannot reach. The first operation cuts what no other names:
+// a feature left to it by default is a warning (on its clamping's field), one an operation names
+// itself an error (on its feature list).
+void sayUnreachable(int index, const QString &firstOperationField, const QString &message, Diagnostics &out)
+{
+    if (index == 0)
+        out.push_back(makeWarning(firstOperationField, message));
+    else
+        out.push_back(makeError(QStringLiteral("further_operations[%1].features").arg(index - 1), message));
+}
+
+// A blind bore that opens at the end the chuck holds is closed to the tool: the jaws and the
+// chuck are in its mouth.
+void checkBoreReach(const Project &project, int index, const PartProfile &held, const QStringList &cut,
+                    Diagnostics &out)
+{
+    const std::vector<Segment> &s = held.inner.segments;
+    for (const auto &[start, end] : held.inner.pieces()) {
+        const bool opensAtHeldEnd = s[start].from.z_mm <= kProfileEpsilon_mm;
+        const bool blind = s[end - 1].to.z_mm < held.length_mm() - kProfileEpsilon_mm;
+        for (std::size_t j = start; j < end && opensAtHeldEnd && blind; ++j) {
+            if (cut.contains(s[j].id))
+                sayUnreachable(index, QStringLiteral("clamping.held_end"),
+                               Operations::tr("feature %1 is in the bore that opens at the end %2 holds: no tool "
+                                              "reaches it there; name it in an operation that holds the other end")
+                                   .arg(s[j].id, operationName(project, index)),
+                               out);
+        }
+    }
+}
+
 // A feature that lies wholly inside the jaws of the operation that cuts it cannot be reached there.
 void checkReach(const Project &project, int index, Diagnostics &out)
 {
@@ -269,16 +301,13 @@ void checkReach(const Project &project, int index, Diagnostics &out)
     for (const Segment &s : held.outer.segments) {
         if (!cut.contains(s.id) || std::max(s.from.z_mm, s.to.z_mm) > c.clampedLength_mm + kProfileEpsilon_mm)
             continue;
-        const QString field = index == 0 ? QStringLiteral("clamping.clamped_length_mm")
-                                         : QStringLiteral("further_operations[%1].features").arg(index - 1);
-        const QString message = Operations::tr("feature %1 lies in the jaws of %2 (%3 mm from its held end): no "
-                                               "tool reaches it there; name it in an operation that holds the "
-                                               "other end")
-                                    .arg(s.id, operationName(project, index), formatNumber(c.clampedLength_mm));
-        // The first operation cuts what no other names: a feature left to it by default is a
-        // warning, one an operation names itself an error.
-        out.push_back(index == 0 ? makeWarning(field, message) : makeError(field, message));
+        sayUnreachable(index, QStringLiteral("clamping.clamped_length_mm"),
+                       Operations::tr("feature %1 lies in the jaws of %2 (%3 mm from its held end): no tool reaches "
+                                      "it there; name it in an operation that holds the other end")
+                           .arg(s.id, operationName(project, index), formatNumber(c.clampedLength_mm)),
+                       out);
     }
+    checkBoreReach(project, index, held, cut, out);
 }
 
 } // namespace

@@ -219,6 +219,7 @@ struct OperationScope {
     QStringList cutFeatures;
     QMap<QString, QString> cutElsewhere;                  // feature id -> the operation that cuts it, for the others
     std::vector<std::pair<double, double>> stockOuter_mm; // [z from, z to] in the operation's frame
+    std::vector<std::pair<double, double>> solidInner_mm; // where a later operation bores: not bored yet
 
     friend bool operator==(const OperationScope &, const OperationScope &) = default;
 };

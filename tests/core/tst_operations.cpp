@@ -8,6 +8,8 @@
 #include "core/deviation/deviation_model.h"
 #include "core/io/project_file.h"
 #include "core/io/project_json.h"
+#include "core/part/undercuts.h"
+#include "core/planning/plausibility.h"
 #include "core/project/operations.h"
 #include "core/project/project_validation.h"
 #include "core/tolerance/evaluation.h"
@@ -248,6 +250,69 @@ private Q_SLOTS:
         for (int z = 1; z < 100; z += 7) // O2: the bar after OP 10, Ø50 after OP 20
             QCOMPARE(after10.at(z).outerRadius_mm, 27.0);
         QCOMPARE(in20.at(150.0).outerRadius_mm, 25.0);
+    }
+
+    // Issue 16: the shaft bored from both ends, Ø20 30 deep from the left (I1, I2) and Ø16 40 deep
+    // from the right (I3, I4), solid between. OP 10 holds the left end, so it bores from the
+    // right; OP 20 holds the right end and bores from the left. While OP 10 runs, the left bore is
+    // still solid; OP 20 starts from the right bore OP 10 left. A bore named for the operation that
+    // holds its open end is an error; one left to OP 10 by default there, a warning.
+    void boresFromBothEndsInTheSetUpsThatReachThem()
+    {
+        Project p = twoOperationShaft();
+        p.part.outer.segments.front().from.r_mm = 10.0;
+        p.part.outer.segments.back().to.r_mm = 8.0;
+        p.part.inner.segments = {
+            seg("I1", SegmentKind::Cylinder, {0, 10}, {30, 10}), seg("I2", SegmentKind::Face, {30, 10}, {30, 0}),
+            seg("I3", SegmentKind::Face, {160, 0}, {160, 8}), seg("I4", SegmentKind::Cylinder, {160, 8}, {200, 8})};
+        p.furtherOperations.front().features << QStringLiteral("I1") << QStringLiteral("I2");
+        Diagnostics d = validateProject(p);
+        QVERIFY2(std::none_of(d.begin(), d.end(),
+                              [](const Diagnostic &x) { return x.message.contains(QLatin1String("bore that opens")); }),
+                 qPrintable(dump(d)));
+        const Project op10 = operationView(p, 0);
+        const Project op20 = operationView(p, 1);
+        const SectionAlongZ in10(op10.part, 0.0, 0.0, op10.scope->stockOuter_mm, op10.scope->solidInner_mm);
+        const SectionAlongZ in20(op20.part, 0.0, 0.0, op20.scope->stockOuter_mm, op20.scope->solidInner_mm);
+        QCOMPARE(in10.at(10.0).innerRadius_mm, 0.0); // the left bore: OP 20's, still solid
+        QCOMPARE(in10.at(180.0).innerRadius_mm, 8.0);
+        QCOMPARE(in20.at(20.0).innerRadius_mm, 8.0); // OP 10's bore, z 180 of the part
+        QCOMPARE(in20.at(100.0).innerRadius_mm, 0.0);
+        QCOMPARE(in20.at(185.0).innerRadius_mm, 10.0);
+
+        Project wrong = p; // OP 20 named for the right bore, the left one left to OP 10
+        wrong.furtherOperations.front().features = {QStringLiteral("O1"), QStringLiteral("O2"), QStringLiteral("I3"),
+                                                    QStringLiteral("I4")};
+        d = validateProject(wrong);
+        const auto said = [&d](Severity severity, const char *text) {
+            return std::any_of(d.begin(), d.end(), [&](const Diagnostic &x) {
+                return x.severity == severity && x.message.contains(QLatin1String(text));
+            });
+        };
+        QVERIFY2(said(Severity::Error, "feature I3 is in the bore that opens at the end OP 20 holds"),
+                 qPrintable(dump(d)));
+        QVERIFY2(said(Severity::Warning, "feature I1 is in the bore that opens at the end OP 10 holds"),
+                 qPrintable(dump(d)));
+    }
+
+    // A groove 1.5 mm wide in O2 (OP 20's) is narrower than the nose of CNMG 120408 (r_e 0.8 mm,
+    // 1.6 mm across, ISO 1832 position 7 "08"): a warning on its left flank names both; 2 mm wide
+    // it is not.
+    void grooveNarrowerThanTheNoseIsNamed()
+    {
+        Project p = twoOperationShaft();
+        p.part = std::get<PartProfile>(insertGroove(p.part, QStringLiteral("O2"), 50.0, 1.5, 1.0));
+        const Diagnostics d = checkPlausibility(p, DataLibrary::builtIn());
+        const auto narrow = std::find_if(d.begin(), d.end(), [](const Diagnostic &x) {
+            return x.message.contains(QLatin1String("1.5 mm wide, narrower than the nose of CNMG 120408"));
+        });
+        QVERIFY2(narrow != d.end(), qPrintable(dump(d)));
+        QCOMPARE(narrow->field, QStringLiteral("part.outer[2]"));
+        QVERIFY(narrow->message.contains(QLatin1String("1.6 mm across")));
+        p.part = std::get<PartProfile>(insertGroove(twoOperationShaft().part, QStringLiteral("O2"), 50.0, 2.0, 1.0));
+        const Diagnostics wide = checkPlausibility(p, DataLibrary::builtIn());
+        QVERIFY(std::none_of(wide.begin(), wide.end(),
+                             [](const Diagnostic &x) { return x.message.contains(QLatin1String("narrower than")); }));
     }
 
     // A run-out of O2 (OP 20) to datum A on O4 (OP 10) spans the two set-ups.

@@ -4,6 +4,7 @@
 #include "core/common/diagnostic.h"
 #include "core/part/profile_editing.h"
 #include "core/part/profile_validation.h"
+#include "core/part/undercuts.h"
 
 #include <QTest>
 
@@ -53,6 +54,19 @@ ProfilePoint pt(double z, double r)
 {
     return {z, r};
 }
+
+// Within 1e-5 mm of the hand calculation (the trigonometry there is taken to 6 decimals).
+bool near(const ProfilePoint &p, double z, double r)
+{
+    return std::abs(p.z_mm - z) < 1e-5 && std::abs(p.r_mm - r) < 1e-5;
+}
+
+QString text(const ProfilePoint &p)
+{
+    return QStringLiteral("(%1, %2)").arg(p.z_mm, 0, 'f', 6).arg(p.r_mm, 0, 'f', 6);
+}
+
+#define QVERIFY_NEAR(point, z, r) QVERIFY2(near(point, z, r), qPrintable(text(point)))
 
 } // namespace
 
@@ -182,7 +196,115 @@ private Q_SLOTS:
         QCOMPARE(through.outer.segments.front().from, pt(0, 8));
         QCOMPARE(through.outer.segments.back().to, pt(100, 8));
         QVERIFY(refusal(addBore(shaft(), QStringLiteral("O3"), 10.0, 16.0)).contains(QStringLiteral("O3")));
-        QVERIFY(!refusal(addBore(blind, QStringLiteral("O1"), 10.0, 10.0)).isEmpty()); // bored already
+        QVERIFY(!refusal(addBore(blind, QStringLiteral("O5"), 10.0, 10.0)).isEmpty()); // bored there already
+        QVERIFY(!refusal(addBore(through, QStringLiteral("O1"), 10.0, 10.0)).isEmpty());
+    }
+
+    // Issue 16: a Ø10 bore 20 deep from the left end into the shaft bored Ø16 40 deep from the
+    // right: the inner contour is I3 (Ø10, z 0 … 20), I4 (its bottom down to the axis), then the
+    // right bore as before; solid from z 20 to 60. A bore that would reach z 60 is refused.
+    void boringFromBothEnds()
+    {
+        const PartProfile blind = edited(addBore(shaft(), QStringLiteral("O5"), 40.0, 16.0));
+        const PartProfile both = edited(addBore(blind, QStringLiteral("O1"), 20.0, 10.0));
+        const auto &in = both.inner.segments;
+        QCOMPARE(in.size(), std::size_t{4});
+        QCOMPARE(in[0].id, QStringLiteral("I3"));
+        QCOMPARE(in[0].from, pt(0, 5));
+        QCOMPARE(in[1].to, pt(20, 0));
+        QCOMPARE(in[2].from, pt(60, 0));
+        QVERIFY(both.inner.breaksBefore(2));
+        QCOMPARE(both.inner.pieces().size(), std::size_t{2});
+        QCOMPARE(both.outer.segments.front().from, pt(0, 5));
+        QVERIFY(refusal(addBore(blind, QStringLiteral("O1"), 60.0, 10.0)).contains(QStringLiteral("z = 60 mm")));
+    }
+
+    // DIN 509 F0.6×0.3 (Ø30 is in the row d > 18 … 80: r 0.6, t1 0.3, f 2.5, t2 0.2, run-out 15°,
+    // flank 8°) in the inside corner O3|O4 (shoulder face at z 50 down to the Ø30 cylinder, which
+    // runs right). By hand, z = 50 + a, r = 15 - b with a along the cylinder, b into it:
+    //   run-out from a = f = 2.5 to a = 2.5 - 0.3 / tan 15° = 1.380385 at b = 0.3;
+    //   bottom to a = r - t2 = 0.4; radius about (0.4, -0.3) to the tangent point of the flank,
+    //   a = 0.4 - 0.6 cos 8° = -0.194161, b = -0.3 - 0.6 sin 8° = -0.383504;
+    //   flank back to the face (a = 0) over 0.194161 / sin 8° = 1.395106 mm, to
+    //   b = -0.383504 - 1.395106 cos 8° = -1.765033.
+    void din509FormFInAShoulder()
+    {
+        const PartProfile p = edited(insertUndercut(shaft(), ContourSide::Outer, 3, UndercutForm::F));
+        const auto &s = p.outer.segments;
+        QCOMPARE(s.size(), std::size_t{9});
+        QCOMPARE(s[2].id, QStringLiteral("O3"));
+        QVERIFY_NEAR(s[2].to, 50.0, 16.765033);
+        QCOMPARE(s[3].kind, SegmentKind::Cone); // the flank, back along z
+        QVERIFY_NEAR(s[3].to, 49.805839, 15.383504);
+        QVERIFY(s[3].turnsBack());
+        QCOMPARE(s[4].kind, SegmentKind::Radius);
+        QCOMPARE(s[4].arcRadius_mm, 0.6);
+        QVERIFY_NEAR(s[4].to, 50.4, 14.7);
+        QVERIFY(s[4].turnsBack()); // it reaches z = 49.8, under the shoulder
+        QVERIFY_NEAR(s[5].to, 51.380385, 14.7);
+        QVERIFY_NEAR(s[6].to, 52.5, 15.0);
+        QCOMPARE(s[7].id, QStringLiteral("O4"));
+        QVERIFY_NEAR(s[7].from, 52.5, 15.0);
+        QVERIFY(s[4].name.contains(QStringLiteral("F0.6×0.3")));
+        QVERIFY(!s[5].turnsBack() && s[5].isAxial());
+    }
+
+    // Form E in the same corner: the radius ends on the face at b = t1 - r = -0.3 (r 15.3) and
+    // runs counter-clockwise (down the face, then along the bottom) to a = r = 0.6 at the depth.
+    void din509FormEInAShoulder()
+    {
+        const PartProfile p = edited(insertUndercut(shaft(), ContourSide::Outer, 3, UndercutForm::E));
+        const auto &s = p.outer.segments;
+        QCOMPARE(s.size(), std::size_t{8});
+        QVERIFY_NEAR(s[2].to, 50.0, 15.3);
+        QCOMPARE(s[3].kind, SegmentKind::Radius);
+        QCOMPARE(s[3].arcDirection, ArcDirection::CounterClockwise);
+        QVERIFY_NEAR(s[3].to, 50.6, 14.7);
+        QVERIFY(!s[3].turnsBack());
+        QVERIFY_NEAR(s[4].to, 51.380385, 14.7);
+        QVERIFY_NEAR(s[5].to, 52.5, 15.0);
+    }
+
+    void undercutRefusals()
+    {
+        // O2|O3 is an outside corner (the face falls from Ø40 to Ø30).
+        QVERIFY(refusal(insertUndercut(shaft(), ContourSide::Outer, 2, UndercutForm::E))
+                    .contains(QStringLiteral("outside")));
+        // O1|O2: a face and a cylinder, but the left end face is not a shoulder above Ø40.
+        QVERIFY(!refusal(insertUndercut(shaft(), ContourSide::Outer, 1, UndercutForm::E)).isEmpty());
+        // A shoulder only 1 mm high cannot take form F's flank, which meets it 1.765 mm up.
+        PartProfile low = shaft();
+        low.outer.segments[1].from.r_mm = low.outer.segments[1].to.r_mm = 16.0;
+        low.outer.segments[0].to.r_mm = 16.0;
+        low.outer.segments[2].from.r_mm = 16.0;
+        QVERIFY(
+            refusal(insertUndercut(low, ContourSide::Outer, 3, UndercutForm::F)).contains(QStringLiteral("too low")));
+        QVERIFY(undercutSizeFor(0.0) == std::nullopt);
+        QCOMPARE(undercutSizeFor(80.0)->radius_mm, 0.6); // d <= 80 is the row above 18
+        QCOMPARE(undercutSizeFor(80.5)->radius_mm, 1.0);
+    }
+
+    // A groove 3 wide and 2 deep in the Ø30 cylinder from z 70: O4 to z 70, a flank down to r 13,
+    // the bottom to z 73, a flank up, the rest of O4; groovesOf() finds it 3 wide, 2 deep.
+    void grooveInACylinder()
+    {
+        const PartProfile p = edited(insertGroove(shaft(), QStringLiteral("O4"), 70.0, 3.0, 2.0));
+        const auto &s = p.outer.segments;
+        QCOMPARE(s.size(), std::size_t{9});
+        QCOMPARE(s[3].to, pt(70, 15));
+        QCOMPARE(s[4].to, pt(70, 13));
+        QCOMPARE(s[5].to, pt(73, 13));
+        QCOMPARE(s[6].to, pt(73, 15));
+        QCOMPARE(s[7].to, pt(100, 15));
+        const std::vector<Groove> grooves = groovesOf(p.outer, ContourSide::Outer);
+        QCOMPARE(grooves.size(), std::size_t{1});
+        QCOMPARE(grooves[0].leftFaceId, s[4].id);
+        QCOMPARE(grooves[0].rightFaceId, s[6].id);
+        QCOMPARE(grooves[0].width_mm, 3.0);
+        QCOMPARE(grooves[0].depth_mm, 2.0);
+        QVERIFY(groovesOf(shaft().outer, ContourSide::Outer).empty()); // a step is not a groove
+        QVERIFY(refusal(insertGroove(shaft(), QStringLiteral("O4"), 98.0, 3.0, 2.0)).contains(QStringLiteral("101")));
+        QVERIFY(refusal(insertGroove(shaft(), QStringLiteral("O4"), 70.0, 3.0, 15.0)).contains(QStringLiteral("axis")));
     }
 
     // A bore is edited like the outside: a through Ø16 bore stepped at z 20 to Ø24 (I1 Ø16 over

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Geometry of profile segments against hand-worked circle and line geometry.
+#include "core/common/diagnostic.h"
+#include "core/mechanics/section.h"
 #include "core/part/profile_geometry.h"
+#include "core/part/profile_validation.h"
+#include "core/part/undercuts.h"
 
 #include <QTest>
 
@@ -30,6 +34,37 @@ Segment arc(ProfilePoint a, ProfilePoint b, double radius, ArcDirection directio
 }
 
 constexpr double kPi = std::numbers::pi;
+
+Segment named(Segment s, const char *id)
+{
+    s.id = QString::fromLatin1(id);
+    return s;
+}
+
+// A bushing Ø40 × 100 bored Ø20 30 deep from the left and Ø16 40 deep from the right, solid
+// from z 30 to z 60 (issue 16).
+PartProfile boredFromBothEnds()
+{
+    using K = SegmentKind;
+    PartProfile p;
+    p.stockDiameter_mm = 45.0;
+    p.outer.segments = {named(line(K::Face, {0, 10}, {0, 20}), "O1"),
+                        named(line(K::Cylinder, {0, 20}, {100, 20}), "O2"),
+                        named(line(K::Face, {100, 20}, {100, 8}), "O3")};
+    p.inner.segments = {named(line(K::Cylinder, {0, 10}, {30, 10}), "I1"),
+                        named(line(K::Face, {30, 10}, {30, 0}), "I2"), named(line(K::Face, {60, 0}, {60, 8}), "I3"),
+                        named(line(K::Cylinder, {60, 8}, {100, 8}), "I4")};
+    return p;
+}
+
+QString firstError(const PartProfile &p)
+{
+    for (const Diagnostic &d : validateProfile(p)) {
+        if (d.severity == Severity::Error)
+            return d.toString();
+    }
+    return {};
+}
 
 } // namespace
 
@@ -121,6 +156,80 @@ private Q_SLOTS:
         QCOMPARE(radiusAt(c, 5.0, Approach::FromRight).value(), 8.0);
         QCOMPARE(radiusAt(c, 9.0, Approach::FromRight).value(), 8.0);
         QVERIFY(!radiusAt(c, 9.5, Approach::FromLeft).has_value());
+    }
+
+    // The bores' section: Ø20 in the left bore, solid between the bottoms, Ø16 in the right bore.
+    void boresFromBothEndsWithSolidBetween()
+    {
+        const PartProfile p = boredFromBothEnds();
+        QVERIFY2(firstError(p).isEmpty(), qPrintable(firstError(p)));
+        QCOMPARE(p.inner.pieces().size(), std::size_t{2});
+        const SectionAlongZ section(p, 0.0, 0.0);
+        QCOMPARE(section.at(10.0).innerRadius_mm, 10.0);
+        QCOMPARE(section.at(45.0).innerRadius_mm, 0.0);
+        QCOMPARE(section.at(45.0).outerRadius_mm, 20.0);
+        QCOMPARE(section.at(80.0).innerRadius_mm, 8.0);
+    }
+
+    void boresThatMeetOrLeaveTheAxisTwiceAreRefused()
+    {
+        PartProfile meeting = boredFromBothEnds(); // the right bore's bottom on the left one's
+        meeting.inner.segments[2].from.z_mm = meeting.inner.segments[2].to.z_mm = 30.0;
+        meeting.inner.segments[3].from.z_mm = 30.0;
+        QVERIFY2(firstError(meeting).contains(QStringLiteral("part.inner[2].from: the bores from both ends meet")),
+                 qPrintable(firstError(meeting)));
+        PartProfile cavity = boredFromBothEnds(); // the left bore starts on the axis
+        cavity.inner.segments[0] = named(line(SegmentKind::Cylinder, {10, 10}, {30, 10}), "I1");
+        cavity.inner.segments.insert(cavity.inner.segments.begin(),
+                                     named(line(SegmentKind::Face, {10, 0}, {10, 10}), "I0"));
+        cavity.outer.segments[0].from.r_mm = 0.0;
+        QVERIFY2(firstError(cavity).contains(QStringLiteral("closed at both ends")), qPrintable(firstError(cavity)));
+        PartProfile three = boredFromBothEnds(); // a third piece: the axis left twice
+        three.inner.segments.insert(three.inner.segments.begin() + 2,
+                                    {named(line(SegmentKind::Face, {40, 0}, {40, 5}), "I5"),
+                                     named(line(SegmentKind::Cylinder, {40, 5}, {45, 5}), "I6"),
+                                     named(line(SegmentKind::Face, {45, 5}, {45, 0}), "I7")});
+        QVERIFY2(firstError(three).contains(QStringLiteral("a second time")), qPrintable(firstError(three)));
+    }
+
+    // DIN 509 F0.6×0.3 under a shoulder at z 50 (Ø40 left of it, Ø30 right): at z 49.9 the beam's
+    // section is the core inside the recess, the lower crossing of the R0.6 about (50.4, 15.3):
+    // 15.3 - sqrt(0.6² - 0.5²) = 14.968338 mm; the ring of the shoulder beyond is left out.
+    void undercutSectionIsTheCore()
+    {
+        using K = SegmentKind;
+        PartProfile shaft;
+        shaft.stockDiameter_mm = 45.0;
+        shaft.outer.segments = {
+            named(line(K::Face, {0, 0}, {0, 20}), "O1"), named(line(K::Cylinder, {0, 20}, {50, 20}), "O2"),
+            named(line(K::Face, {50, 20}, {50, 15}), "O3"), named(line(K::Cylinder, {50, 15}, {100, 15}), "O4"),
+            named(line(K::Face, {100, 15}, {100, 0}), "O5")};
+        const auto edit = insertUndercut(shaft, ContourSide::Outer, 3, UndercutForm::F);
+        const PartProfile p = std::get<PartProfile>(edit);
+        QVERIFY2(firstError(p).isEmpty(), qPrintable(firstError(p)));
+        const SectionAlongZ section(p, 0.0, 0.0);
+        QVERIFY(std::abs(section.at(49.9).outerRadius_mm - (15.3 - std::sqrt(0.36 - 0.25))) < 1e-9);
+        QCOMPARE(section.at(49.0).outerRadius_mm, 20.0); // left of the recess: the Ø40
+        QCOMPARE(section.at(51.0).outerRadius_mm, 14.7); // the bottom
+        const auto &breaks = section.breakpoints();       // the recess's deepest point, z 50 - t2
+        QVERIFY(std::any_of(breaks.begin(), breaks.end(), [](double z) { return std::abs(z - 49.8) < 1e-9; }));
+    }
+
+    // A cone that goes back along z above the cylinder it came from, then a face down through
+    // that cylinder: the contour crosses itself at (z 30, r 20).
+    void contourCrossingItselfIsRefused()
+    {
+        using K = SegmentKind;
+        PartProfile p;
+        p.stockDiameter_mm = 60.0;
+        p.outer.segments = {
+            named(line(K::Face, {0, 0}, {0, 20}), "O1"),         named(line(K::Cylinder, {0, 20}, {50, 20}), "O2"),
+            named(line(K::Cone, {50, 20}, {30, 25}), "O3"),      named(line(K::Face, {30, 25}, {30, 10}), "O4"),
+            named(line(K::Cylinder, {30, 10}, {100, 10}), "O5"), named(line(K::Face, {100, 10}, {100, 0}), "O6")};
+        const QString error = firstError(p);
+        QVERIFY2(error.contains(QStringLiteral("part.outer[1]")) && error.contains(QStringLiteral("part.outer[3]")) &&
+                     error.contains(QStringLiteral("(z 30, r 20)")),
+                 qPrintable(error));
     }
 
     void maxOuterRadiusIncludesArcBulge()

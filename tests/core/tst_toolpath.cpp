@@ -8,6 +8,7 @@
 #include "core/deviation/deviation_model.h"
 #include "core/io/project_file.h"
 #include "core/part/profile_geometry.h"
+#include "core/part/undercuts.h"
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
 #include "core/project/operations.h"
@@ -367,6 +368,31 @@ private Q_SLOTS:
         QCOMPARE(fallWarned, warned);
     }
 
+    // A DIN 509 E0.6×0.3 undercut in the stepped shaft's corner O8|O9: its R0.6 is tighter than the
+    // nose (r_e 0.8 mm), which LinuxCNC's G42 refuses ("Tool radius not less than arc radius with
+    // comp"): the program has the corner instead, the interpreter runs it, and a warning names the
+    // radius.
+    void tightUndercutRadiusIsProgrammedAsItsCorner()
+    {
+        Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        const std::optional<FeatureRef> o9 = findFeature(p.part, QStringLiteral("O9"));
+        QVERIFY(o9);
+        p.part = std::get<PartProfile>(insertUndercut(p.part, ContourSide::Outer, o9->index, UndercutForm::E));
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(d.inputs);
+        GCodeOptions o;
+        o.dialect = ControlDialect::LinuxCnc;
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+        QVERIFY2(
+            std::any_of(program.path.warnings.begin(), program.path.warnings.end(),
+                        [](const QString &w) { return w.startsWith(QStringLiteral("O14 is tighter than the nose")); }),
+            qPrintable(program.path.warnings.join(QLatin1Char('\n'))));
+        Lathe lathe;
+        setUpLathe(lathe, d.inputs->noseRadius_mm);
+        const QString canonical = runInterpreter(lathe, program.text);
+        QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
+    }
+
     void linuxCncReproducesTheProfile_data()
     {
         QTest::addColumn<QString>("file");
@@ -449,11 +475,22 @@ private Q_SLOTS:
             if (a.z_mm * b.r_mm - a.r_mm * b.z_mm < -1e-9)
                 innerCorners.push_back(contour[i].from);
         }
+        // An undercut's recess is the undercut insert's: the turning program bridges it (its floor
+        // to the face's z, then up the face) and the nose radius stays in that corner.
+        std::vector<ProfilePoint> undercut;
+        for (const Segment &s : target.segments) {
+            if (s.turnsBack())
+                for (const ProfilePoint &q : samplePoints(s, 24))
+                    undercut.push_back(q);
+        }
         double farthest = 0.0;
         for (const PathElement &e : contour) {
             for (const ProfilePoint &q : sampled(e, 0.05)) {
-                const bool nearInnerCorner = std::any_of(innerCorners.begin(), innerCorners.end(),
-                                                         [&](ProfilePoint c) { return distance(c, q) < re + 1e-6; });
+                const auto within = [&](const std::vector<ProfilePoint> &points, double reach) {
+                    return std::any_of(points.begin(), points.end(),
+                                       [&](ProfilePoint c) { return distance(c, q) < reach; });
+                };
+                const bool nearInnerCorner = within(innerCorners, re + 1e-6) || within(undercut, 2.0 * re + 1e-6);
                 const bool othersFeature = p.scope && !p.scope->cutFeatures.contains(e.featureId);
                 if (othersFeature || q.z_mm < zFrom - 1e-9 || (!faced && std::abs(q.z_mm - length) < 1e-9) ||
                     (e.from.z_mm < zFrom && e.to.z_mm < zFrom) || nearInnerCorner)
