@@ -848,6 +848,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The boring bar is taken as held rigidly in the turret: no stiffness of a bar clamp is known, so the bar&apos;s deflection is a lower bound.</source>
         <translation>Die Bohrstange gilt als starr im Revolver gespannt: keine Steifigkeit einer Stangenaufnahme ist bekannt, die Verformung der Stange ist daher eine untere Grenze.</translation>
     </message>
+    <message>
+        <source>The bores later operations cut are still solid material (no pre-drilled hole is assumed).</source>
+        <translation>Die Bohrungen, die spätere Aufspannungen bearbeiten, sind noch Vollmaterial (keine Vorbohrung angenommen).</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>
@@ -2054,6 +2058,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 cuts no feature: the later operations name them all</source>
         <translation>%1 bearbeitet kein Formelement: die späteren Aufspannungen nennen sie alle</translation>
     </message>
+    <message>
+        <source>feature %1 is in the bore that opens at the end %2 holds: no tool reaches it there; name it in an operation that holds the other end</source>
+        <translation>Formelement %1 liegt in der Bohrung, die sich an dem Ende öffnet, das %2 spannt: dort erreicht es kein Werkzeug; führen Sie es in einer Aufspannung auf, die das andere Ende spannt</translation>
+    </message>
 </context>
 <context>
     <name>Optimiser</name>
@@ -2154,6 +2162,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>a boring bar is given but no bore is cut</source>
         <translation>eine Bohrstange ist angegeben, aber keine Bohrung wird bearbeitet</translation>
+    </message>
+    <message>
+        <source>the groove between %1 and %2 is %3 mm wide, narrower than the nose of %4 (r_e %5 mm, %6 mm across): it cannot reach the groove&apos;s bottom; cut the groove with a grooving insert at most %3 mm wide</source>
+        <translation>der Einstich zwischen %1 und %2 ist %3 mm breit, schmaler als die Schneidenecke von %4 (r_e %5 mm, %6 mm breit): sie erreicht den Grund des Einstichs nicht; den Einstich mit einer Einstechplatte von höchstens %3 mm Breite bearbeiten</translation>
     </message>
 </context>
 <context>
@@ -2305,14 +2317,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Bohrungsradius R%1</translation>
     </message>
     <message>
-        <source>the bore at the right end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the left end is kept; the right end face is closed to the axis</source>
-        <translation>die Bohrung am rechten Ende, von z = %1 mm bis z = %2 mm (Fläche %3 und die folgenden Flächen), wird weggelassen: ein Profil hat nur eine Innenkontur, und die tiefere Bohrung am linken Ende wird beibehalten; die rechte Stirnfläche wird bis zur Achse geschlossen</translation>
-    </message>
-    <message>
-        <source>the bore at the left end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the right end is kept; the left end face is closed to the axis</source>
-        <translation>die Bohrung am linken Ende, von z = %1 mm bis z = %2 mm (Fläche %3 und die folgenden Flächen), wird weggelassen: ein Profil hat nur eine Innenkontur, und die tiefere Bohrung am rechten Ende wird beibehalten; die linke Stirnfläche wird bis zur Achse geschlossen</translation>
-    </message>
-    <message>
         <source>the revolved face %1 (from z = %2 mm to z = %3 mm, r = %4 to %5 mm) does not join the outer or inner contour (a closed inner cavity, or faces beyond a gap in the section) and is left out of the profile</source>
         <translation>die Rotationsfläche %1 (von z = %2 mm bis z = %3 mm, r = %4 bis %5 mm) schließt weder an die Außen- noch an die Innenkontur an (ein geschlossener innerer Hohlraum oder Flächen jenseits einer Lücke im Längsschnitt) und wird im Profil weggelassen</translation>
     </message>
@@ -2384,10 +2388,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>eine Bohrung beginnt an einer Stirnfläche des Teils; %1 ist keine</translation>
     </message>
     <message>
-        <source>the part is bored already; edit its bore instead</source>
-        <translation>das Teil ist bereits gebohrt; bearbeiten Sie stattdessen seine Bohrung</translation>
-    </message>
-    <message>
         <source>a bore needs a depth and a diameter above zero, but they are %1 and %2 mm</source>
         <translation>eine Bohrung benötigt eine Tiefe und einen Durchmesser größer als null, sie betragen aber %1 und %2 mm</translation>
     </message>
@@ -2415,6 +2415,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>only a chamfer or an edge round changes into the other; %1 is neither</source>
         <translation>nur eine Fase oder eine Kantenrundung lässt sich in die andere umwandeln; %1 ist keines von beiden</translation>
     </message>
+    <message>
+        <source>moving the corner would make %1 turn back along z (an undercut), which needs an undercut insert; move it less, or insert a DIN 509 undercut</source>
+        <translation>das Verschieben der Ecke würde %1 entlang z zurücklaufen lassen (ein Freistich), wofür eine Freistichplatte nötig ist; die Ecke weniger verschieben oder einen Freistich nach DIN 509 einfügen</translation>
+    </message>
+    <message>
+        <source>the part is bored from this end already (or through); edit its bore instead</source>
+        <translation>das Teil ist von diesem Ende aus bereits gebohrt (oder durchgebohrt); stattdessen seine Bohrung ändern</translation>
+    </message>
+    <message>
+        <source>a bore %1 mm deep would meet the bore from the other end, whose bottom is at z = %2 mm: leave solid between them, or make it one through bore</source>
+        <translation>eine Bohrung von %1 mm Tiefe würde auf die Bohrung vom anderen Ende treffen, deren Grund bei z = %2 mm liegt: Material zwischen ihnen stehen lassen oder eine durchgehende Bohrung daraus machen</translation>
+    </message>
 </context>
 <context>
     <name>ProfileValidation</name>
@@ -2425,10 +2437,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>must not be negative, but is %1 mm</source>
         <translation>darf nicht negativ sein, beträgt aber %1 mm</translation>
-    </message>
-    <message>
-        <source>the %1 runs backwards along z, from z = %2 mm to z = %3 mm: a contour runs from left to right, so this segment overlaps the one before it</source>
-        <translation>das Segment vom Typ %1 läuft entlang z rückwärts, von z = %2 mm nach z = %3 mm: eine Kontur verläuft von links nach rechts, daher überlappt dieses Segment das vorherige</translation>
     </message>
     <message>
         <source>a cylinder keeps one radius, but this one goes from r = %1 mm to r = %2 mm (a cone?)</source>
@@ -2451,10 +2459,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>die Planfläche hat die Länge null: sie beginnt und endet bei r = %1 mm</translation>
     </message>
     <message>
-        <source>a %1 must advance along z, but it starts and ends at z = %2 mm (a face?)</source>
-        <translation>ein Segment vom Typ %1 muss entlang z fortschreiten, beginnt und endet aber bei z = %2 mm (eine Planfläche?)</translation>
-    </message>
-    <message>
         <source>a %1 must change radius, but it stays at r = %2 mm (a cylinder?)</source>
         <translation>ein Segment vom Typ %1 muss den Radius ändern, bleibt aber bei r = %2 mm (ein Zylinder?)</translation>
     </message>
@@ -2469,10 +2473,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>a radius of %1 mm cannot join two points %2 mm apart (it needs at least %3 mm)</source>
         <translation>ein Radius von %1 mm kann keine zwei Punkte im Abstand von %2 mm verbinden (er muss mindestens %3 mm betragen)</translation>
-    </message>
-    <message>
-        <source>the %1 arc of radius %2 mm turns back along z (an undercut), which cannot be turned from left to right; try the other direction</source>
-        <translation>der Bogen (Richtung %1) mit Radius %2 mm läuft entlang z zurück (ein Hinterschnitt), was sich nicht von links nach rechts drehen lässt; versuchen Sie die andere Richtung</translation>
     </message>
     <message>
         <source>overlaps %1: it starts at %2, left of where %1 ends, %3</source>
@@ -2519,10 +2519,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>die Innenkontur muss am rechten Ende (z = %1 mm) oder auf der Achse (r = 0 mm) enden, endet aber bei %2</translation>
     </message>
     <message>
-        <source>the bore is closed at both ends (a cavity that no tool can reach): it must open at z = 0 mm or at z = %1 mm</source>
-        <translation>die Bohrung ist an beiden Enden geschlossen (ein Hohlraum, den kein Werkzeug erreicht): sie muss bei z = 0 mm oder bei z = %1 mm offen sein</translation>
-    </message>
-    <message>
         <source>the bore ends at z = %1 mm, beyond the right end of the part at z = %2 mm</source>
         <translation>die Bohrung endet bei z = %1 mm, jenseits des rechten Teilendes bei z = %2 mm</translation>
     </message>
@@ -2549,6 +2545,30 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the stock diameter %1 mm is smaller than the part, whose largest diameter is %2 mm</source>
         <translation>der Rohteildurchmesser %1 mm ist kleiner als das Teil, dessen größter Durchmesser %2 mm beträgt</translation>
+    </message>
+    <message>
+        <source>the cylinder runs backwards along z, from z = %1 mm to z = %2 mm: a contour runs from left to right, and only an undercut&apos;s cones and radii may go back</source>
+        <translation>der Zylinder verläuft entlang z rückwärts, von z = %1 mm bis z = %2 mm: eine Kontur verläuft von links nach rechts, und nur die Kegel und Radien eines Freistichs dürfen zurücklaufen</translation>
+    </message>
+    <message>
+        <source>a %1 must move along z, but it starts and ends at z = %2 mm (a face?)</source>
+        <translation>ein Formelement vom Typ %1 muss entlang z verlaufen, beginnt und endet aber bei z = %2 mm (eine Planfläche?)</translation>
+    </message>
+    <message>
+        <source>the inner contour leaves the axis a second time at z = %1 mm: a part has at most one bore from each end</source>
+        <translation>die Innenkontur verlässt die Achse ein zweites Mal bei z = %1 mm: ein Teil hat höchstens eine Bohrung von jedem Ende</translation>
+    </message>
+    <message>
+        <source>the bores from both ends meet on the axis at z = %1 mm, leaving no solid between them: make them one through bore, stepped by a face from r = %2 mm to r = %3 mm</source>
+        <translation>die Bohrungen von beiden Enden treffen sich auf der Achse bei z = %1 mm, ohne Material dazwischen: eine durchgehende Bohrung daraus machen, abgesetzt durch eine Planfläche von r = %2 mm auf r = %3 mm</translation>
+    </message>
+    <message>
+        <source>the bore from z = %1 mm to z = %2 mm is closed at both ends (a cavity that no tool can reach): it must open at z = 0 mm or at z = %3 mm</source>
+        <translation>die Bohrung von z = %1 mm bis z = %2 mm ist an beiden Enden geschlossen (ein Hohlraum, den kein Werkzeug erreicht): sie muss sich bei z = 0 mm oder bei z = %3 mm öffnen</translation>
+    </message>
+    <message>
+        <source>crosses %1 at %2: the contour overlaps itself (an undercut deeper than the material around it?)</source>
+        <translation>schneidet %1 bei %2: die Kontur überschneidet sich selbst (ein Freistich, der tiefer ist als das umgebende Material?)</translation>
     </message>
 </context>
 <context>
@@ -3919,6 +3939,89 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 turns from the free end to z = %2 mm (from the held end); the rest of the outer contour is another operation&apos;s.</source>
         <translation>%1 dreht vom freien Ende bis z = %2 mm (vom gespannten Ende aus); der Rest der Außenkontur gehört zu einer anderen Aufspannung.</translation>
     </message>
+    <message>
+        <source>%1 goes back along z (an undercut): the program follows it, but only an undercut or grooving insert that fits the recess can cut it; the insert&apos;s outline is not checked against the shoulder.</source>
+        <translation>%1 läuft entlang z zurück (ein Freistich): das Programm folgt dieser Kontur, aber nur eine Freistich- oder Einstechplatte, die in die Aussparung passt, kann sie bearbeiten; der Umriss der Platte wird nicht gegen die Schulter geprüft.</translation>
+    </message>
+    <message>
+        <source>%1 go back along z (an undercut): the program follows them, but only an undercut or grooving insert that fits the recess can cut them; the insert&apos;s outline is not checked against the shoulder.</source>
+        <translation>%1 laufen entlang z zurück (ein Freistich): das Programm folgt diesen Konturen, aber nur eine Freistich- oder Einstechplatte, die in die Aussparung passt, kann sie bearbeiten; der Umriss der Platte wird nicht gegen die Schulter geprüft.</translation>
+    </message>
+    <message>
+        <source>%1 is tighter than the nose radius %2 mm: it is programmed as the sharp corner it rounds (a control&apos;s compensation cannot follow a concave arc tighter than the nose), and the nose leaves it rounded to %2 mm.</source>
+        <translation>%1 ist enger als der Eckenradius %2 mm: programmiert wird die scharfe Ecke, die der Radius verrundet (die Schneidenradiuskorrektur einer Steuerung kann einem konkaven Bogen, der enger als die Schneidenecke ist, nicht folgen), und die Schneidenecke hinterlässt dort eine Rundung mit %2 mm.</translation>
+    </message>
+</context>
+<context>
+    <name>Undercuts</name>
+    <message>
+        <source>undercut %1 run-out</source>
+        <translation>Auslauf von Freistich %1</translation>
+    </message>
+    <message>
+        <source>undercut %1 bottom</source>
+        <translation>Grund von Freistich %1</translation>
+    </message>
+    <message>
+        <source>undercut %1 radius</source>
+        <translation>Radius von Freistich %1</translation>
+    </message>
+    <message>
+        <source>undercut %1 flank</source>
+        <translation>Flanke von Freistich %1</translation>
+    </message>
+    <message>
+        <source>an undercut is cut into a corner between two features; the %1 contour has no such corner %2</source>
+        <translation>ein Freistich wird in eine Ecke zwischen zwei Formelementen eingestochen; die Kontur (%1) hat keine solche Ecke %2</translation>
+    </message>
+    <message>
+        <source>a DIN 509 undercut sits where a cylinder meets a face, but corner %1 joins %2 and %3</source>
+        <translation>ein Freistich nach DIN 509 liegt dort, wo ein Zylinder auf eine Planfläche trifft, aber Ecke %1 verbindet %2 und %3</translation>
+    </message>
+    <message>
+        <source>corner %1 is an outside corner (face %2 falls away from cylinder %3): an undercut sits in the inside corner of a shoulder</source>
+        <translation>Ecke %1 ist eine Außenecke (Planfläche %2 fällt vom Zylinder %3 ab): ein Freistich liegt in der Innenecke einer Schulter</translation>
+    </message>
+    <message>
+        <source>cylinder %1 has no diameter (Ø%2 mm) to size an undercut for</source>
+        <translation>Zylinder %1 hat keinen Durchmesser (Ø%2 mm), nach dem ein Freistich bemessen werden kann</translation>
+    </message>
+    <message>
+        <source>cylinder %1 is %2 mm long, not longer than the width f = %3 mm of undercut %4</source>
+        <translation>Zylinder %1 ist %2 mm lang, nicht länger als die Breite f = %3 mm von Freistich %4</translation>
+    </message>
+    <message>
+        <source>face %1 rises %2 mm above cylinder %3, but undercut %4 meets it %5 mm above: the shoulder is too low for it</source>
+        <translation>Planfläche %1 ragt %2 mm über Zylinder %3 hinaus, aber Freistich %4 trifft erst %5 mm darüber auf sie: die Schulter ist dafür zu niedrig</translation>
+    </message>
+    <message>
+        <source>a groove is cut into a cylinder; %1 is not one</source>
+        <translation>ein Einstich wird in einen Zylinder eingestochen; %1 ist keiner</translation>
+    </message>
+    <message>
+        <source>the groove&apos;s width must be above zero, but is %1 mm</source>
+        <translation>die Breite des Einstichs muss größer als null sein, beträgt aber %1 mm</translation>
+    </message>
+    <message>
+        <source>the groove&apos;s depth must be above zero, but is %1 mm</source>
+        <translation>die Tiefe des Einstichs muss größer als null sein, beträgt aber %1 mm</translation>
+    </message>
+    <message>
+        <source>the groove from z = %1 mm to z = %2 mm must lie inside %3 (z %4 … %5 mm)</source>
+        <translation>der Einstich von z = %1 mm bis z = %2 mm muss innerhalb von %3 liegen (z %4 … %5 mm)</translation>
+    </message>
+    <message>
+        <source>a groove %1 mm deep would reach the axis from Ø%2 mm</source>
+        <translation>ein Einstich von %1 mm Tiefe würde von Ø%2 mm aus die Achse erreichen</translation>
+    </message>
+    <message>
+        <source>groove flank</source>
+        <translation>Einstichflanke</translation>
+    </message>
+    <message>
+        <source>groove bottom Ø%1</source>
+        <translation>Einstichgrund Ø%1</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -4383,6 +4486,62 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Make %1 a chamfer</source>
         <translation>%1 in Fase umwandeln</translation>
+    </message>
+    <message>
+        <source>Where the groove starts, inside the cylinder (its left flank)</source>
+        <translation>Beginn des Einstichs innerhalb des Zylinders (seine linke Flanke)</translation>
+    </message>
+    <message>
+        <source>Width of the groove along z</source>
+        <translation>Breite des Einstichs entlang z</translation>
+    </message>
+    <message>
+        <source>Depth of the groove, radially</source>
+        <translation>Tiefe des Einstichs, radial</translation>
+    </message>
+    <message>
+        <source>Insert &amp;Groove</source>
+        <translation>&amp;Einstich einfügen</translation>
+    </message>
+    <message>
+        <source>Undercut start</source>
+        <translation>Freistichbeginn</translation>
+    </message>
+    <message>
+        <source>Undercut end</source>
+        <translation>Freistichende</translation>
+    </message>
+    <message>
+        <source>Groove and undercut (cylinders)</source>
+        <translation>Einstich und Freistich (Zylinder)</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Breite:</translation>
+    </message>
+    <message>
+        <source>DIN 509 form E (cylinder)</source>
+        <translation>DIN 509 Form E (Zylinder)</translation>
+    </message>
+    <message>
+        <source>DIN 509 form F (cylinder and face)</source>
+        <translation>DIN 509 Form F (Zylinder und Planfläche)</translation>
+    </message>
+    <message>
+        <source>The undercut is sized for the cylinder&apos;s diameter by DIN 509 Table 1 and cut into the corner where the cylinder meets a shoulder</source>
+        <translation>Der Freistich wird nach DIN 509 Tabelle 1 für den Durchmesser des Zylinders bemessen und in die Ecke eingestochen, in der der Zylinder auf eine Schulter trifft</translation>
+    </message>
+    <message>
+        <source>DIN 509 Table 1 for Ø%1 mm: E or F %2 × %3 (r × t1), width f %4 mm, recess into the face t2 %5 mm (form F)</source>
+        <translation>DIN 509 Tabelle 1 für Ø%1 mm: E oder F %2 × %3 (r × t1), Breite f %4 mm, Einstich in die Planfläche t2 %5 mm (Form F)</translation>
+    </message>
+    <message>
+        <source>Insert groove into %1</source>
+        <translation>Einstich in %1 einfügen</translation>
+    </message>
+    <message>
+        <source>Insert DIN 509 undercut at %1</source>
+        <translation>Freistich nach DIN 509 an %1 einfügen</translation>
     </message>
 </context>
 <context>

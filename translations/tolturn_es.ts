@@ -848,6 +848,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The boring bar is taken as held rigidly in the turret: no stiffness of a bar clamp is known, so the bar&apos;s deflection is a lower bound.</source>
         <translation>La barra de mandrinar se toma como sujeta rígidamente en la torreta: no se conoce la rigidez de ningún soporte de barra, así que la flexión de la barra es un límite inferior.</translation>
     </message>
+    <message>
+        <source>The bores later operations cut are still solid material (no pre-drilled hole is assumed).</source>
+        <translation>Los agujeros que mecanizan las operaciones posteriores siguen siendo material macizo (no se supone ningún agujero pretaladrado).</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>
@@ -2054,6 +2058,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 cuts no feature: the later operations name them all</source>
         <translation>%1 no mecaniza ningún elemento: las operaciones posteriores los nombran todos</translation>
     </message>
+    <message>
+        <source>feature %1 is in the bore that opens at the end %2 holds: no tool reaches it there; name it in an operation that holds the other end</source>
+        <translation>el elemento %1 está en el agujero que se abre en el extremo que sujeta %2: ninguna herramienta llega allí; inclúyalo en una operación que sujete el otro extremo</translation>
+    </message>
 </context>
 <context>
     <name>Optimiser</name>
@@ -2154,6 +2162,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>a boring bar is given but no bore is cut</source>
         <translation>se ha indicado una barra de mandrinar, pero no se mecaniza ningún agujero</translation>
+    </message>
+    <message>
+        <source>the groove between %1 and %2 is %3 mm wide, narrower than the nose of %4 (r_e %5 mm, %6 mm across): it cannot reach the groove&apos;s bottom; cut the groove with a grooving insert at most %3 mm wide</source>
+        <translation>la ranura entre %1 y %2 tiene %3 mm de ancho, menos que la punta de %4 (r_e %5 mm, %6 mm de ancho): no puede llegar al fondo de la ranura; mecanice la ranura con una plaquita de ranurar de %3 mm de ancho como máximo</translation>
     </message>
 </context>
 <context>
@@ -2305,14 +2317,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>radio del agujero R%1</translation>
     </message>
     <message>
-        <source>the bore at the right end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the left end is kept; the right end face is closed to the axis</source>
-        <translation>el agujero del extremo derecho, de z = %1 mm a z = %2 mm (cara %3 y las caras siguientes), se excluye: un perfil tiene un único contorno interior y se conserva el agujero más profundo, el del extremo izquierdo; la cara extrema derecha se cierra hasta el eje</translation>
-    </message>
-    <message>
-        <source>the bore at the left end, from z = %1 mm to z = %2 mm (face %3 and the faces after it), is left out: a profile has one inner contour and the deeper bore at the right end is kept; the left end face is closed to the axis</source>
-        <translation>el agujero del extremo izquierdo, de z = %1 mm a z = %2 mm (cara %3 y las caras siguientes), se excluye: un perfil tiene un único contorno interior y se conserva el agujero más profundo, el del extremo derecho; la cara extrema izquierda se cierra hasta el eje</translation>
-    </message>
-    <message>
         <source>the revolved face %1 (from z = %2 mm to z = %3 mm, r = %4 to %5 mm) does not join the outer or inner contour (a closed inner cavity, or faces beyond a gap in the section) and is left out of the profile</source>
         <translation>la cara de revolución %1 (de z = %2 mm a z = %3 mm, r = %4 a %5 mm) no se une al contorno exterior ni al interior (una cavidad interior cerrada, o caras situadas más allá de una interrupción de la sección) y se excluye del perfil</translation>
     </message>
@@ -2384,10 +2388,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>un agujero empieza en una cara extrema de la pieza; %1 no lo es</translation>
     </message>
     <message>
-        <source>the part is bored already; edit its bore instead</source>
-        <translation>la pieza ya tiene un agujero; edite ese agujero</translation>
-    </message>
-    <message>
         <source>a bore needs a depth and a diameter above zero, but they are %1 and %2 mm</source>
         <translation>un agujero necesita una profundidad y un diámetro mayores que cero, pero son %1 y %2 mm</translation>
     </message>
@@ -2415,6 +2415,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>only a chamfer or an edge round changes into the other; %1 is neither</source>
         <translation>solo un chaflán o un redondeo de arista se convierte en el otro; %1 no es ninguno de los dos</translation>
     </message>
+    <message>
+        <source>moving the corner would make %1 turn back along z (an undercut), which needs an undercut insert; move it less, or insert a DIN 509 undercut</source>
+        <translation>mover la esquina haría que %1 retrocediera a lo largo de z (una entalla), lo que requiere una plaquita de entallar; desplácela menos, o inserte una entalla DIN 509</translation>
+    </message>
+    <message>
+        <source>the part is bored from this end already (or through); edit its bore instead</source>
+        <translation>la pieza ya tiene un agujero desde este extremo (o pasante); edite ese agujero en su lugar</translation>
+    </message>
+    <message>
+        <source>a bore %1 mm deep would meet the bore from the other end, whose bottom is at z = %2 mm: leave solid between them, or make it one through bore</source>
+        <translation>un agujero de %1 mm de profundidad se uniría con el agujero del otro extremo, cuyo fondo está en z = %2 mm: deje material macizo entre ambos, o conviértalos en un único agujero pasante</translation>
+    </message>
 </context>
 <context>
     <name>ProfileValidation</name>
@@ -2425,10 +2437,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>must not be negative, but is %1 mm</source>
         <translation>no debe ser negativo, pero es %1 mm</translation>
-    </message>
-    <message>
-        <source>the %1 runs backwards along z, from z = %2 mm to z = %3 mm: a contour runs from left to right, so this segment overlaps the one before it</source>
-        <translation>el segmento %1 retrocede en z, de z = %2 mm a z = %3 mm: un contorno va de izquierda a derecha, así que este segmento se solapa con el anterior</translation>
     </message>
     <message>
         <source>a cylinder keeps one radius, but this one goes from r = %1 mm to r = %2 mm (a cone?)</source>
@@ -2451,10 +2459,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>la cara tiene longitud cero: empieza y termina en r = %1 mm</translation>
     </message>
     <message>
-        <source>a %1 must advance along z, but it starts and ends at z = %2 mm (a face?)</source>
-        <translation>un segmento %1 debe avanzar en z, pero empieza y termina en z = %2 mm (¿una cara?)</translation>
-    </message>
-    <message>
         <source>a %1 must change radius, but it stays at r = %2 mm (a cylinder?)</source>
         <translation>un segmento %1 debe cambiar de radio, pero se mantiene en r = %2 mm (¿un cilindro?)</translation>
     </message>
@@ -2469,10 +2473,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>a radius of %1 mm cannot join two points %2 mm apart (it needs at least %3 mm)</source>
         <translation>un radio de %1 mm no puede unir dos puntos separados %2 mm (necesita al menos %3 mm)</translation>
-    </message>
-    <message>
-        <source>the %1 arc of radius %2 mm turns back along z (an undercut), which cannot be turned from left to right; try the other direction</source>
-        <translation>el arco %1 de radio %2 mm retrocede en z (un destalonado), que no se puede tornear de izquierda a derecha; pruebe el otro sentido</translation>
     </message>
     <message>
         <source>overlaps %1: it starts at %2, left of where %1 ends, %3</source>
@@ -2519,10 +2519,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>el contorno interior debe terminar en el extremo derecho (z = %1 mm) o en el eje (r = 0 mm), pero termina en %2</translation>
     </message>
     <message>
-        <source>the bore is closed at both ends (a cavity that no tool can reach): it must open at z = 0 mm or at z = %1 mm</source>
-        <translation>el agujero está cerrado por ambos extremos (una cavidad a la que no llega ninguna herramienta): debe abrirse en z = 0 mm o en z = %1 mm</translation>
-    </message>
-    <message>
         <source>the bore ends at z = %1 mm, beyond the right end of the part at z = %2 mm</source>
         <translation>el agujero termina en z = %1 mm, más allá del extremo derecho de la pieza en z = %2 mm</translation>
     </message>
@@ -2549,6 +2545,30 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the stock diameter %1 mm is smaller than the part, whose largest diameter is %2 mm</source>
         <translation>el diámetro del bruto, %1 mm, es menor que la pieza, cuyo diámetro máximo es %2 mm</translation>
+    </message>
+    <message>
+        <source>the cylinder runs backwards along z, from z = %1 mm to z = %2 mm: a contour runs from left to right, and only an undercut&apos;s cones and radii may go back</source>
+        <translation>el cilindro va hacia atrás a lo largo de z, de z = %1 mm a z = %2 mm: un contorno va de izquierda a derecha, y solo los conos y radios de una entalla pueden retroceder</translation>
+    </message>
+    <message>
+        <source>a %1 must move along z, but it starts and ends at z = %2 mm (a face?)</source>
+        <translation>un %1 debe avanzar a lo largo de z, pero empieza y termina en z = %2 mm (¿una cara?)</translation>
+    </message>
+    <message>
+        <source>the inner contour leaves the axis a second time at z = %1 mm: a part has at most one bore from each end</source>
+        <translation>el contorno interior se separa del eje por segunda vez en z = %1 mm: una pieza tiene como máximo un agujero desde cada extremo</translation>
+    </message>
+    <message>
+        <source>the bores from both ends meet on the axis at z = %1 mm, leaving no solid between them: make them one through bore, stepped by a face from r = %2 mm to r = %3 mm</source>
+        <translation>los agujeros de ambos extremos se unen en el eje en z = %1 mm, sin dejar material macizo entre ellos: conviértalos en un único agujero pasante, escalonado por una cara de r = %2 mm a r = %3 mm</translation>
+    </message>
+    <message>
+        <source>the bore from z = %1 mm to z = %2 mm is closed at both ends (a cavity that no tool can reach): it must open at z = 0 mm or at z = %3 mm</source>
+        <translation>el agujero de z = %1 mm a z = %2 mm está cerrado por ambos extremos (una cavidad a la que no llega ninguna herramienta): debe abrirse en z = 0 mm o en z = %3 mm</translation>
+    </message>
+    <message>
+        <source>crosses %1 at %2: the contour overlaps itself (an undercut deeper than the material around it?)</source>
+        <translation>cruza %1 en %2: el contorno se solapa consigo mismo (¿una entalla más profunda que el material que la rodea?)</translation>
     </message>
 </context>
 <context>
@@ -3919,6 +3939,89 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 turns from the free end to z = %2 mm (from the held end); the rest of the outer contour is another operation&apos;s.</source>
         <translation>%1 tornea desde el extremo libre hasta z = %2 mm (desde el extremo sujetado); el resto del contorno exterior corresponde a otra operación.</translation>
     </message>
+    <message>
+        <source>%1 goes back along z (an undercut): the program follows it, but only an undercut or grooving insert that fits the recess can cut it; the insert&apos;s outline is not checked against the shoulder.</source>
+        <translation>%1 retrocede a lo largo de z (una entalla): el programa lo sigue, pero solo una plaquita de entallar o de ranurar que quepa en el rebaje puede mecanizarlo; no se comprueba el contorno de la plaquita frente al resalte.</translation>
+    </message>
+    <message>
+        <source>%1 go back along z (an undercut): the program follows them, but only an undercut or grooving insert that fits the recess can cut them; the insert&apos;s outline is not checked against the shoulder.</source>
+        <translation>%1 retroceden a lo largo de z (una entalla): el programa los sigue, pero solo una plaquita de entallar o de ranurar que quepa en el rebaje puede mecanizarlos; no se comprueba el contorno de la plaquita frente al resalte.</translation>
+    </message>
+    <message>
+        <source>%1 is tighter than the nose radius %2 mm: it is programmed as the sharp corner it rounds (a control&apos;s compensation cannot follow a concave arc tighter than the nose), and the nose leaves it rounded to %2 mm.</source>
+        <translation>%1 es más cerrado que el radio de punta %2 mm: se programa como la esquina viva que redondea (la compensación de un control no puede seguir un arco cóncavo más cerrado que la punta), y la punta lo deja redondeado a %2 mm.</translation>
+    </message>
+</context>
+<context>
+    <name>Undercuts</name>
+    <message>
+        <source>undercut %1 run-out</source>
+        <translation>salida de la entalla %1</translation>
+    </message>
+    <message>
+        <source>undercut %1 bottom</source>
+        <translation>fondo de la entalla %1</translation>
+    </message>
+    <message>
+        <source>undercut %1 radius</source>
+        <translation>radio de la entalla %1</translation>
+    </message>
+    <message>
+        <source>undercut %1 flank</source>
+        <translation>flanco de la entalla %1</translation>
+    </message>
+    <message>
+        <source>an undercut is cut into a corner between two features; the %1 contour has no such corner %2</source>
+        <translation>una entalla se mecaniza en una esquina entre dos elementos; el contorno %1 no tiene ninguna esquina %2</translation>
+    </message>
+    <message>
+        <source>a DIN 509 undercut sits where a cylinder meets a face, but corner %1 joins %2 and %3</source>
+        <translation>una entalla DIN 509 se sitúa donde un cilindro se une con una cara, pero la esquina %1 une %2 y %3</translation>
+    </message>
+    <message>
+        <source>corner %1 is an outside corner (face %2 falls away from cylinder %3): an undercut sits in the inside corner of a shoulder</source>
+        <translation>la esquina %1 es una esquina exterior (la cara %2 desciende desde el cilindro %3): una entalla se sitúa en la esquina interior de un resalte</translation>
+    </message>
+    <message>
+        <source>cylinder %1 has no diameter (Ø%2 mm) to size an undercut for</source>
+        <translation>el cilindro %1 no tiene un diámetro (Ø%2 mm) para el que dimensionar una entalla</translation>
+    </message>
+    <message>
+        <source>cylinder %1 is %2 mm long, not longer than the width f = %3 mm of undercut %4</source>
+        <translation>el cilindro %1 mide %2 mm de largo, no más que el ancho f = %3 mm de la entalla %4</translation>
+    </message>
+    <message>
+        <source>face %1 rises %2 mm above cylinder %3, but undercut %4 meets it %5 mm above: the shoulder is too low for it</source>
+        <translation>la cara %1 se eleva %2 mm sobre el cilindro %3, pero la entalla %4 la alcanza %5 mm por encima: el resalte es demasiado bajo para ella</translation>
+    </message>
+    <message>
+        <source>a groove is cut into a cylinder; %1 is not one</source>
+        <translation>una ranura se mecaniza en un cilindro; %1 no lo es</translation>
+    </message>
+    <message>
+        <source>the groove&apos;s width must be above zero, but is %1 mm</source>
+        <translation>el ancho de la ranura debe ser mayor que cero, pero es %1 mm</translation>
+    </message>
+    <message>
+        <source>the groove&apos;s depth must be above zero, but is %1 mm</source>
+        <translation>la profundidad de la ranura debe ser mayor que cero, pero es %1 mm</translation>
+    </message>
+    <message>
+        <source>the groove from z = %1 mm to z = %2 mm must lie inside %3 (z %4 … %5 mm)</source>
+        <translation>la ranura de z = %1 mm a z = %2 mm debe quedar dentro de %3 (z %4 … %5 mm)</translation>
+    </message>
+    <message>
+        <source>a groove %1 mm deep would reach the axis from Ø%2 mm</source>
+        <translation>una ranura de %1 mm de profundidad llegaría al eje desde Ø%2 mm</translation>
+    </message>
+    <message>
+        <source>groove flank</source>
+        <translation>flanco de la ranura</translation>
+    </message>
+    <message>
+        <source>groove bottom Ø%1</source>
+        <translation>fondo de la ranura Ø%1</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -4383,6 +4486,62 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Make %1 a chamfer</source>
         <translation>Convertir %1 en chaflán</translation>
+    </message>
+    <message>
+        <source>Where the groove starts, inside the cylinder (its left flank)</source>
+        <translation>Dónde empieza la ranura, dentro del cilindro (su flanco izquierdo)</translation>
+    </message>
+    <message>
+        <source>Width of the groove along z</source>
+        <translation>Ancho de la ranura a lo largo de z</translation>
+    </message>
+    <message>
+        <source>Depth of the groove, radially</source>
+        <translation>Profundidad de la ranura, en dirección radial</translation>
+    </message>
+    <message>
+        <source>Insert &amp;Groove</source>
+        <translation>Insertar &amp;ranura</translation>
+    </message>
+    <message>
+        <source>Undercut start</source>
+        <translation>Inicio de la entalla</translation>
+    </message>
+    <message>
+        <source>Undercut end</source>
+        <translation>Fin de la entalla</translation>
+    </message>
+    <message>
+        <source>Groove and undercut (cylinders)</source>
+        <translation>Ranura y entalla (cilindros)</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Ancho:</translation>
+    </message>
+    <message>
+        <source>DIN 509 form E (cylinder)</source>
+        <translation>DIN 509 forma E (cilindro)</translation>
+    </message>
+    <message>
+        <source>DIN 509 form F (cylinder and face)</source>
+        <translation>DIN 509 forma F (cilindro y cara)</translation>
+    </message>
+    <message>
+        <source>The undercut is sized for the cylinder&apos;s diameter by DIN 509 Table 1 and cut into the corner where the cylinder meets a shoulder</source>
+        <translation>La entalla se dimensiona según el diámetro del cilindro conforme a DIN 509 tabla 1 y se mecaniza en la esquina donde el cilindro se une con un resalte</translation>
+    </message>
+    <message>
+        <source>DIN 509 Table 1 for Ø%1 mm: E or F %2 × %3 (r × t1), width f %4 mm, recess into the face t2 %5 mm (form F)</source>
+        <translation>DIN 509 tabla 1 para Ø%1 mm: E o F %2 × %3 (r × t1), ancho f %4 mm, rebaje en la cara t2 %5 mm (forma F)</translation>
+    </message>
+    <message>
+        <source>Insert groove into %1</source>
+        <translation>Insertar ranura en %1</translation>
+    </message>
+    <message>
+        <source>Insert DIN 509 undercut at %1</source>
+        <translation>Insertar entalla DIN 509 en %1</translation>
     </message>
 </context>
 <context>

@@ -107,18 +107,22 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_profileView, &ProfileView::featureSelected, m_tolerances, &TolerancePanel::setSelectedFeature);
     connect(m_profileView, &ProfileView::featureSelected, m_feature, &FeaturePanel::setFeature);
     connect(m_feature, &FeaturePanel::featureChosen, m_profileView, &ProfileView::selectFeature);
-    connect(m_profileView, &ProfileView::vertexDragged, this, [this](ContourSide side, int vertex, ProfilePoint to) {
-        // The drawing shows the set-up as held: turned end for end, its corners count from the
-        // other end and z runs from the right end of the drawing.
-        const Project &project = m_document->project();
-        if (operationClamping(project, std::min(m_operation, operationCount(project) - 1)).heldEnd == PartEnd::Right) {
-            const Contour &contour = side == ContourSide::Outer ? project.part.outer : project.part.inner;
-            vertex = static_cast<int>(contour.segments.size()) - vertex;
-            to.z_mm = project.part.length_mm() - to.z_mm;
-        }
-        if (!m_feature->moveVertexTo(side, vertex, to))
-            statusBar()->showMessage(m_feature->message(), 8000);
-    });
+    connect(m_profileView, &ProfileView::vertexDragged, this,
+            [this](ContourSide side, int vertex, ProfilePoint to, bool atSegmentEnd) {
+                // The drawing shows the set-up as held: turned end for end, its corners count from the
+                // other end, z runs from the right end of the drawing and a feature's end is its start.
+                const Project &project = m_document->project();
+                if (operationClamping(project, std::min(m_operation, operationCount(project) - 1)).heldEnd ==
+                    PartEnd::Right) {
+                    const Contour &contour = side == ContourSide::Outer ? project.part.outer : project.part.inner;
+                    vertex = static_cast<int>(contour.segments.size()) - vertex;
+                    to.z_mm = project.part.length_mm() - to.z_mm;
+                    atSegmentEnd = !atSegmentEnd;
+                }
+                if (!m_feature->moveVertexTo(side, vertex, to,
+                                             atSegmentEnd ? AtBreak::EndOfSegment : AtBreak::StartOfSegment))
+                    statusBar()->showMessage(m_feature->message(), 8000);
+            });
     connect(m_tolerances, &TolerancePanel::featureActivated, m_profileView, &ProfileView::selectFeature);
     connect(&DisplaySettings::instance(), &DisplaySettings::unitsChanged, this, &MainWindow::updateSummary);
     rebuildRecentMenu();

@@ -11,6 +11,7 @@
 #include "widgets/profile/profile_view.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QStandardPaths>
@@ -208,6 +209,45 @@ private Q_SLOTS:
         QVERIFY(w.document()->project().part.inner.empty());
     }
 
+    // Issue 16: a DIN 509 F undercut at the start of the Ø50 bearing seat O4, under the Ø56
+    // shoulder at z 35 (Ø50 is in the row d > 18 … 80: f 2.5, so O4 now starts at z 37.5, and
+    // four features are added), and a groove 3 wide, 1 deep in the Ø30 journal from z 130; each
+    // one undoable edit.
+    void grooveAndUndercutFromThePanel()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        if (auto *dock = w.findChild<QDockWidget *>(QStringLiteral("featureDock")))
+            dock->raise();
+        const std::size_t before = w.document()->project().part.outer.segments.size();
+        w.profileView()->selectFeature(QStringLiteral("O4"));
+        w.featurePanel()->undercutFormBox()->setCurrentIndex(1); // form F
+        w.featurePanel()->insertUndercut(false);
+        QVERIFY2(w.featurePanel()->message().isEmpty(), qPrintable(w.featurePanel()->message()));
+        QCOMPARE(w.document()->project().part.outer.segments.size(), before + 4);
+        QCOMPARE(feature(w, "O4").from, pt(37.5, 25));
+        QVERIFY(feature(w, "O14").turnsBack()); // the radius under the shoulder (O12 run-out, O13 bottom)
+        w.profileView()->selectFeature(QStringLiteral("O9"));
+        w.featurePanel()->grooveZBox()->setValue(130.0);
+        w.featurePanel()->grooveWidthBox()->setValue(3.0);
+        w.featurePanel()->grooveDepthBox()->setValue(1.0);
+        w.featurePanel()->insertGroove();
+        QVERIFY2(w.featurePanel()->message().isEmpty(), qPrintable(w.featurePanel()->message()));
+        QCOMPARE(feature(w, "O9").to, pt(130, 15));
+        QCOMPARE(feature(w, "O17").to, pt(133, 14)); // the groove's bottom
+        w.profileView()->selectFeature(QStringLiteral("O9"));
+        QTest::qWait(50);
+        test::saveScreenshot(w, "feature-panel-groove-undercut.png");
+        w.document()->undoStack()->undo();
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->project().part.outer.segments.size(), before);
+        // Form E at the end of O4 is refused: the taper O5 follows, not a shoulder face.
+        w.profileView()->selectFeature(QStringLiteral("O4"));
+        w.featurePanel()->insertUndercut(true);
+        QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("O5")), qPrintable(w.featurePanel()->message()));
+    }
+
     void deleteKeyDeletesTheSelectedFeature()
     {
         MainWindow w;
@@ -236,10 +276,11 @@ private Q_SLOTS:
         w.featurePanel()->insertStep();
         QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("10")), qPrintable(w.featurePanel()->message()));
         QVERIFY(w.document()->project().part == before);
-        // Ø42 on the hub seat would leave the R2 edge round O7 unable to reach r 18 tangentially.
+        // Ø42 on the hub seat would make the R2 edge round O7 bulge past the locating face and
+        // come back: an undercut, which a dragged corner never makes.
         w.profileView()->selectFeature(QStringLiteral("O6"));
         w.featurePanel()->startDiameterBox()->setValue(42.0);
-        QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("part.outer[6]")),
+        QVERIFY2(w.featurePanel()->message().contains(QStringLiteral("O7 turn back along z")),
                  qPrintable(w.featurePanel()->message()));
         QCOMPARE(w.featurePanel()->startDiameterBox()->value(), 40.0);
         QCOMPARE(w.document()->undoStack()->count(), 0);

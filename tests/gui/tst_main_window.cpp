@@ -453,6 +453,34 @@ private Q_SLOTS:
         }
     }
 
+    // Issue 16: the valve body bored from both ends, solid between z 45 and 75. OP 10 bores the
+    // port bore I4 from the right end and judges its H8 (T2); OP 20 the spool bore I1 (T1). The
+    // bottom of the left bore dragged from z 45 to z 50 deepens that bore only: at the break of the
+    // inner contour, the corner is the end of I2, not the start of I3.
+    void boresFromBothEndsAreDrawnAndJudgedPerSetUp()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("valve-body-two-bores.tolturn")));
+        ToleranceVerdictModel *model = w.tolerancePanel()->model();
+        QVERIFY(model->rangeVerdict(1).compliant.value_um.has_value()); // T2 on I4, OP 10
+        QVERIFY(model->rangeVerdict(0).compliant.reason.contains(QStringLiteral("I1 is cut in OP 20")));
+        QTest::qWait(50);
+        test::saveScreenshot(w, "bores-both-ends.png");
+        Q_EMIT w.profileView()->vertexDragged(ContourSide::Inner, 2, ProfilePoint{50.0, 0.0}, true);
+        const Project &deeper = w.document()->project();
+        QCOMPARE(deeper.part.inner.segments[0].to, (ProfilePoint{50.0, 16.0}));
+        QCOMPARE(deeper.part.inner.segments[1].to, (ProfilePoint{50.0, 0.0}));
+        QCOMPARE(deeper.part.inner.segments[2].from, (ProfilePoint{75.0, 0.0}));
+        w.document()->undoStack()->undo();
+        auto *box = w.findChild<QComboBox *>(QStringLiteral("operationBox"));
+        box->setCurrentIndex(1);
+        Q_EMIT box->activated(1);
+        QVERIFY(model->rangeVerdict(0).compliant.value_um.has_value()); // T1 on I1, OP 20
+        QTest::qWait(50);
+        test::saveScreenshot(w, "bores-both-ends-op20.png");
+    }
+
     // A project of two set-ups: the toolbar offers them; each shows its own part as held, its
     // verdicts and its program (docs/operations.md).
     void operationsAreShownOneAtATime()
@@ -485,7 +513,7 @@ private Q_SLOTS:
         test::saveScreenshot(w, "operations.png");
         // A corner dragged in the set-up turned end for end moves the drawing's corner: the view's
         // corner 3 at z' = 65 (Ø62 shoulder) is the drawing's corner 2 at z = 120 - 65 = 55.
-        Q_EMIT w.profileView()->vertexDragged(ContourSide::Outer, 3, ProfilePoint{63.0, 31.0});
+        Q_EMIT w.profileView()->vertexDragged(ContourSide::Outer, 3, ProfilePoint{63.0, 31.0}, false);
         const Project &moved = w.document()->project();
         QCOMPARE(moved.part.outer.segments[1].to, (ProfilePoint{57.0, 31.0}));
         QCOMPARE(moved.part.outer.segments[2].from, (ProfilePoint{57.0, 31.0}));

@@ -2,11 +2,13 @@
 #include "widgets/profile/feature_panel.h"
 
 #include "core/common/diagnostic.h"
+#include "core/part/undercuts.h"
 #include "core/project/keywords.h"
 #include "widgets/common/length_spin_box.h"
 #include "widgets/common/project_fields.h"
 #include "widgets/document/project_document.h"
 
+#include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -60,6 +62,13 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     , m_boreDepth(millimetres(tr("Depth of the bore from this end face; the part's length bores through")))
     , m_boreD(millimetres(tr("Diameter of the bore")))
     , m_bore(new QPushButton(tr("&Bore from This Face")))
+    , m_grooveZ(millimetres(tr("Where the groove starts, inside the cylinder (its left flank)")))
+    , m_grooveWidth(millimetres(tr("Width of the groove along z")))
+    , m_grooveDepth(millimetres(tr("Depth of the groove, radially")))
+    , m_insertGroove(new QPushButton(tr("Insert &Groove")))
+    , m_undercutForm(new QComboBox)
+    , m_undercutStart(new QPushButton(tr("Undercut start")))
+    , m_undercutEnd(new QPushButton(tr("Undercut end")))
     , m_message(new QLabel)
 {
     setObjectName(QStringLiteral("featurePanel"));
@@ -83,6 +92,7 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     layout->addWidget(step);
     layout->addWidget(createCornerRow());
     layout->addWidget(m_changeKind);
+    layout->addWidget(createGrooveGroup());
     layout->addWidget(createBoreGroup());
     layout->addWidget(m_delete);
     layout->addWidget(m_message);
@@ -122,6 +132,32 @@ QWidget *FeaturePanel::createCornerRow()
         connect(button, &QPushButton::clicked, this, [this, c] { breakCorner(c.atEnd, c.round); });
         ++i;
     }
+    return group;
+}
+
+QWidget *FeaturePanel::createGrooveGroup()
+{
+    auto *group = new QGroupBox(tr("Groove and undercut (cylinders)"));
+    auto *grid = new QGridLayout(group);
+    grid->addWidget(new QLabel(tr("At z:")), 0, 0);
+    grid->addWidget(m_grooveZ, 0, 1);
+    grid->addWidget(new QLabel(tr("Width:")), 0, 2);
+    grid->addWidget(m_grooveWidth, 0, 3);
+    grid->addWidget(new QLabel(tr("Depth:")), 1, 0);
+    grid->addWidget(m_grooveDepth, 1, 1);
+    grid->addWidget(m_insertGroove, 1, 2, 1, 2);
+    m_undercutForm->addItem(tr("DIN 509 form E (cylinder)"), static_cast<int>(UndercutForm::E));
+    m_undercutForm->addItem(tr("DIN 509 form F (cylinder and face)"), static_cast<int>(UndercutForm::F));
+    m_undercutForm->setToolTip(tr("The undercut is sized for the cylinder's diameter by DIN 509 Table 1 and cut "
+                                  "into the corner where the cylinder meets a shoulder"));
+    grid->addWidget(m_undercutForm, 2, 0, 1, 4);
+    grid->addWidget(m_undercutStart, 3, 0, 1, 2);
+    grid->addWidget(m_undercutEnd, 3, 2, 1, 2);
+    m_grooveWidth->setMillimetres(3.0);
+    m_grooveDepth->setMillimetres(1.0);
+    connect(m_insertGroove, &QPushButton::clicked, this, &FeaturePanel::insertGroove);
+    connect(m_undercutStart, &QPushButton::clicked, this, [this] { insertUndercut(false); });
+    connect(m_undercutEnd, &QPushButton::clicked, this, [this] { insertUndercut(true); });
     return group;
 }
 
@@ -182,9 +218,21 @@ void FeaturePanel::showFeature()
     const std::vector<Segment> &outer = m_document.project().part.outer.segments;
     const bool endFace =
         ref->side == ContourSide::Outer && (ref->index == 0 || ref->index + 1 == static_cast<int>(outer.size()));
-    m_bore->setEnabled(endFace && m_document.project().part.inner.empty());
+    // An end face still closed to the axis can be bored, though the other end is bored already.
+    const bool closed = ref->index == 0 ? s.from.r_mm <= 0.0 : s.to.r_mm <= 0.0;
+    m_bore->setEnabled(endFace && closed);
+    m_insertGroove->setEnabled(cylinder);
+    m_undercutStart->setEnabled(cylinder);
+    m_undercutEnd->setEnabled(cylinder);
+    if (const auto size = undercutSizeFor(2.0 * s.from.r_mm); cylinder && size)
+        m_undercutForm->setToolTip(tr("DIN 509 Table 1 for Ø%1 mm: E or F %2 × %3 (r × t1), width f %4 mm, recess "
+                                      "into the face t2 %5 mm (form F)")
+                                       .arg(formatNumber(2.0 * s.from.r_mm), formatNumber(size->radius_mm),
+                                            formatNumber(size->depth_mm), formatNumber(size->width_mm),
+                                            formatNumber(size->faceDepth_mm)));
     m_changeKind->setText(kindChangeText(s.kind));
     if (cylinder) {
+        m_grooveZ->setMillimetres(0.5 * (s.from.z_mm + s.to.z_mm));
         m_stepZ->setMillimetres(0.5 * (s.from.z_mm + s.to.z_mm));
         m_stepD->setMillimetres(2.0 * s.from.r_mm - 2.0 * m_cornerSize->millimetres());
     }
@@ -200,13 +248,14 @@ void FeaturePanel::moveCorner(bool atEnd)
         return;
     const ProfilePoint to = atEnd ? ProfilePoint{m_endZ->millimetres(), m_endD->millimetres() / 2.0}
                                   : ProfilePoint{m_startZ->millimetres(), m_startD->millimetres() / 2.0};
-    apply(moveVertex(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0), to),
+    apply(moveVertex(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0), to,
+                     atEnd ? AtBreak::EndOfSegment : AtBreak::StartOfSegment),
           tr("Move corner of %1").arg(m_featureId));
 }
 
-bool FeaturePanel::moveVertexTo(ContourSide side, int vertex, ProfilePoint to)
+bool FeaturePanel::moveVertexTo(ContourSide side, int vertex, ProfilePoint to, AtBreak atBreak)
 {
-    return apply(moveVertex(m_document.project().part, side, vertex, to),
+    return apply(moveVertex(m_document.project().part, side, vertex, to, atBreak),
                  tr("Move corner to z %1, Ø %2").arg(formatNumber(to.z_mm), formatNumber(2.0 * to.r_mm)));
 }
 
@@ -252,6 +301,27 @@ void FeaturePanel::addBore()
 {
     apply(tolturn::addBore(m_document.project().part, m_featureId, m_boreDepth->millimetres(), m_boreD->millimetres()),
           tr("Bore from %1").arg(m_featureId));
+}
+
+void FeaturePanel::insertGroove()
+{
+    const QString cylinder = m_featureId;
+    if (apply(tolturn::insertGroove(m_document.project().part, cylinder, m_grooveZ->millimetres(),
+                                    m_grooveWidth->millimetres(), m_grooveDepth->millimetres()),
+              tr("Insert groove into %1").arg(cylinder)))
+        Q_EMIT featureChosen(cylinder);
+}
+
+void FeaturePanel::insertUndercut(bool atEnd)
+{
+    const std::optional<FeatureRef> ref = findFeature(m_document.project().part, m_featureId);
+    if (!ref)
+        return;
+    const auto form = static_cast<UndercutForm>(m_undercutForm->currentData().toInt());
+    const QString cylinder = m_featureId;
+    if (apply(tolturn::insertUndercut(m_document.project().part, ref->side, ref->index + (atEnd ? 1 : 0), form),
+              tr("Insert DIN 509 undercut at %1").arg(cylinder)))
+        Q_EMIT featureChosen(cylinder);
 }
 
 void FeaturePanel::deleteFeature()

@@ -5,6 +5,7 @@
 
 #include <QWidget>
 
+class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -49,13 +50,27 @@ public:
 
     [[nodiscard]] LengthSpinBox *boreDiameterBox() const { return m_boreD; }
 
+    [[nodiscard]] LengthSpinBox *grooveZBox() const { return m_grooveZ; }
+
+    [[nodiscard]] LengthSpinBox *grooveWidthBox() const { return m_grooveWidth; }
+
+    [[nodiscard]] LengthSpinBox *grooveDepthBox() const { return m_grooveDepth; }
+
+    [[nodiscard]] QComboBox *undercutFormBox() const { return m_undercutForm; }
+
     // Moves corner `vertex` of a contour (a drag in the drawing ends here).
-    bool moveVertexTo(ContourSide side, int vertex, ProfilePoint to);
+    bool moveVertexTo(ContourSide side, int vertex, ProfilePoint to, AtBreak atBreak = AtBreak::StartOfSegment);
     void insertStep();
     void breakCorner(bool atEnd, bool round);
     void deleteFeature();
-    // Bores the solid part from the selected end face.
+    // Bores the solid part from the selected end face (or, when the part is bored from the other
+    // end only, adds a bore from this one with solid between).
     void addBore();
+    // Cuts a square groove into the selected cylinder (groove z, width and depth fields).
+    void insertGroove();
+    // Cuts a DIN 509 undercut of the chosen form into the corner at the start or end of the
+    // selected cylinder, where it meets a shoulder face.
+    void insertUndercut(bool atEnd);
     // Changes the feature's kind: a cylinder becomes a cone, a cone of one diameter a cylinder;
     // a chamfer becomes an edge round of the same size, a round a chamfer.
     void changeKind();
@@ -67,6 +82,7 @@ Q_SIGNALS:
 private:
     QWidget *createCornerRow();
     QWidget *createBoreGroup();
+    QWidget *createGrooveGroup();
     void showFeature();
     void moveCorner(bool atEnd);
     // Applies an edit: the new part to the document, or the refusal to the message line.
@@ -89,6 +105,13 @@ private:
     LengthSpinBox *m_boreDepth;
     LengthSpinBox *m_boreD;
     QPushButton *m_bore;
+    LengthSpinBox *m_grooveZ;
+    LengthSpinBox *m_grooveWidth;
+    LengthSpinBox *m_grooveDepth;
+    QPushButton *m_insertGroove;
+    QComboBox *m_undercutForm;
+    QPushButton *m_undercutStart;
+    QPushButton *m_undercutEnd;
     QLabel *m_message;
 };
 

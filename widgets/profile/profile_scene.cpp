@@ -171,28 +171,53 @@ QString sizeSuffix(const std::vector<Tolerance> &tolerances, const QString &feat
     return {};
 }
 
-void addDiameterDimensions(QGraphicsScene &scene, const Contour &contour, double where, double arrow,
-                           const std::vector<Tolerance> &tolerances, const DisplayUnits &units)
+// Where along a cylinder its Ø is lettered: of the fractions `where`, the one furthest from the
+// z of any dimension already drawn (a bore's Ø clear of the outside's).
+double dimensionZ(const Segment &s, const std::vector<double> &where, const std::vector<double> &taken)
 {
+    double best = s.from.z_mm + where.front() * (s.to.z_mm - s.from.z_mm);
+    double bestGap = -1.0;
+    for (const double f : where) {
+        const double z = s.from.z_mm + f * (s.to.z_mm - s.from.z_mm);
+        double gap = HUGE_VAL;
+        for (const double t : taken)
+            gap = std::min(gap, std::abs(z - t));
+        if (gap > bestGap + 1e-9) {
+            best = z;
+            bestGap = gap;
+        }
+    }
+    return best;
+}
+
+// Returns the z of the dimensions it drew.
+std::vector<double> addDiameterDimensions(QGraphicsScene &scene, const Contour &contour,
+                                          const std::vector<double> &where, const std::vector<double> &taken,
+                                          double arrow, const std::vector<Tolerance> &tolerances,
+                                          const DisplayUnits &units)
+{
+    std::vector<double> drawn;
     for (const Segment &s : contour.segments) {
         if (s.kind != SegmentKind::Cylinder)
             continue;
-        const double z = s.from.z_mm + where * (s.to.z_mm - s.from.z_mm);
+        const double z = dimensionZ(s, where, taken);
+        drawn.push_back(z);
         addDimension(scene, scenePoint({z, s.from.r_mm}, -1.0), scenePoint({z, s.from.r_mm}), 0.0,
                      QStringLiteral("Ø") + units.lengthText(2.0 * s.from.r_mm) + sizeSuffix(tolerances, s.id, units),
                      arrow, 0.3);
     }
+    return drawn;
 }
 
 // Positions along z that the length chain dimensions: the faces and the ends of cones of the outer
-// contour (the functional positions; chamfers and edge radii are not chained), and both ends,
-// less any closer than `minSpan` to the one kept before.
+// contour (the functional positions; chamfers, edge radii and an undercut's flank under its
+// shoulder are not chained), and both ends, less any closer than `minSpan` to the one kept before.
 std::vector<double> chainStations(const PartProfile &profile, double minSpan)
 {
     const double length = profile.length_mm();
     std::set<double> all{0.0, length};
     for (const Segment &s : profile.outer.segments) {
-        if (s.kind == SegmentKind::Face || s.kind == SegmentKind::Cone) {
+        if ((s.kind == SegmentKind::Face || s.kind == SegmentKind::Cone) && !s.turnsBack()) {
             all.insert(s.from.z_mm);
             all.insert(s.to.z_mm);
         }
@@ -378,8 +403,9 @@ void buildProfileScene(QGraphicsScene &scene, const PartProfile &profile, const 
     addContourItems(scene, profile.inner, profile_item::kInnerContour, units);
     addOutsideView(scene, profile);
     addAxis(scene, length);
-    addDiameterDimensions(scene, profile.outer, 0.5, arrow, tolerances, units);
-    addDiameterDimensions(scene, profile.inner, 0.3, arrow, tolerances, units);
+    const std::vector<double> outside =
+        addDiameterDimensions(scene, profile.outer, {0.5}, {}, arrow, tolerances, units);
+    addDiameterDimensions(scene, profile.inner, {0.3, 0.7}, outside, arrow, tolerances, units);
     addLengthDimensions(scene, profile, arrow, units, rowPitch_mm);
     addToleratedLengths(scene, profile, tolerances, arrow, units, rowPitch_mm);
     addToleranceFrames(scene, profile, tolerances, units);

@@ -18,6 +18,7 @@ enum ProfileItemData : int {
     kDefaultPenData = 2, // QPen the item is drawn with when not selected
     kVertexData = 3,     // int, vertex index on its contour (vertex handles)
     kSideData = 4,       // int, ContourSide of a vertex handle
+    kSegmentEndData = 5, // bool, a vertex handle at the end (not the start) of its feature
 };
 
 namespace profile_item {

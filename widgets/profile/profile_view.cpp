@@ -117,6 +117,7 @@ void ProfileView::showVertexHandles()
         handle->setData(kItemKindData, profile_item::kVertexHandle);
         handle->setData(kVertexData, vertex);
         handle->setData(kSideData, static_cast<int>(ref->side));
+        handle->setData(kSegmentEndData, vertex != ref->index);
     }
 }
 
@@ -165,11 +166,12 @@ void ProfileView::mouseReleaseEvent(QMouseEvent *event)
     }
     const auto side = static_cast<ContourSide>(m_dragged->data(kSideData).toInt());
     const int vertex = m_dragged->data(kVertexData).toInt();
+    const bool atSegmentEnd = m_dragged->data(kSegmentEndData).toBool();
     m_dragged = nullptr;
     QToolTip::hideText();
     event->accept();
-    Q_EMIT vertexDragged(side, vertex, m_dragTo); // the document redraws the part, or refuses
-    showVertexHandles();                          // a refused drag puts the handle back
+    Q_EMIT vertexDragged(side, vertex, m_dragTo, atSegmentEnd); // the document redraws the part, or refuses
+    showVertexHandles();                                        // a refused drag puts the handle back
 }
 
 QString ProfileView::featureAt(const QPoint &viewPoint, double pixels) const

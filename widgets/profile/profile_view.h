@@ -45,7 +45,9 @@ public:
 Q_SIGNALS:
     void featureSelected(const QString &featureId);
     // A corner of the selected feature was dragged to `to` (snapped); one edit per drag.
-    void vertexDragged(tolturn::ContourSide side, int vertex, tolturn::ProfilePoint to);
+    // atSegmentEnd: the handle is the end of the selected feature (at the solid between two
+    // bores, vertex k is two points).
+    void vertexDragged(tolturn::ContourSide side, int vertex, tolturn::ProfilePoint to, bool atSegmentEnd);
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
