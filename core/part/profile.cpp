@@ -13,8 +13,14 @@ bool Segment::turnsBack() const
     if (kind == SegmentKind::Cone || kind == SegmentKind::Chamfer)
         return to.z_mm < from.z_mm - kProfileEpsilon_mm;
     if (kind == SegmentKind::Radius) {
+        // Past its end points by more than the profile's tolerance: a fillet whose end lies a
+        // rounding error beyond its tangent point (as read from a STEP file) is not an undercut.
         const auto arc = arcGeometry(*this);
-        return arc && !isMonotoneInZ(*arc);
+        if (!arc)
+            return false;
+        const auto [lo, hi] = zRange(*arc);
+        return lo < std::min(from.z_mm, to.z_mm) - kProfileEpsilon_mm ||
+               hi > std::max(from.z_mm, to.z_mm) + kProfileEpsilon_mm;
     }
     return false;
 }

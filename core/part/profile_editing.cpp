@@ -41,10 +41,17 @@ void joinEndFacesToBore(PartProfile &p)
         p.outer.segments.back().to.r_mm = last.to.r_mm;
 }
 
+bool samePoint(const ProfilePoint &a, const ProfilePoint &b)
+{
+    return near(a.z_mm, b.z_mm) && near(a.r_mm, b.r_mm);
+}
+
 // Moves the start of segment i to `to`; a cylinder or face keeps its kind by moving its other
 // end too, and so the start of the segment after it.
 void moveStart(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
 {
+    // Nothing is carried across the inner contour's break (the solid between two bores).
+    const bool joined = i + 1 < s.size() && samePoint(s[i].to, s[i + 1].from);
     s[i].from = to;
     if (s[i].kind == SegmentKind::Cylinder)
         s[i].to.r_mm = to.r_mm;
@@ -52,13 +59,14 @@ void moveStart(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
         s[i].to.z_mm = to.z_mm;
     else
         return;
-    if (i + 1 < s.size())
+    if (joined)
         s[i + 1].from = s[i].to;
 }
 
 // The mirror of moveStart for the end of segment i and the segment before it.
 void moveEnd(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
 {
+    const bool joined = i > 0 && samePoint(s[i - 1].to, s[i].from);
     s[i].to = to;
     if (s[i].kind == SegmentKind::Cylinder)
         s[i].from.r_mm = to.r_mm;
@@ -66,7 +74,7 @@ void moveEnd(std::vector<Segment> &s, std::size_t i, ProfilePoint to)
         s[i].from.z_mm = to.z_mm;
     else
         return;
-    if (i > 0)
+    if (joined)
         s[i - 1].to = s[i].from;
 }
 
@@ -235,9 +243,10 @@ ProfileEdit makeCone(const PartProfile &profile, const QString &featureId, doubl
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
+    const bool joined = i + 1 < s.size() && samePoint(s[i].to, s[i + 1].from);
     s[i].kind = SegmentKind::Cone;
     s[i].to.r_mm = endDiameter_mm / 2.0;
-    if (i + 1 < s.size())
+    if (joined)
         moveStart(s, i + 1, s[i].to);
     joinEndFacesToBore(result);
     return result;
@@ -251,9 +260,10 @@ ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId)
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
+    const bool joined = i + 1 < s.size() && samePoint(s[i].to, s[i + 1].from);
     s[i].kind = SegmentKind::Cylinder;
     s[i].to.r_mm = s[i].from.r_mm;
-    if (i + 1 < s.size())
+    if (joined)
         moveStart(s, i + 1, s[i].to);
     joinEndFacesToBore(result);
     return result;
@@ -373,9 +383,14 @@ ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
     PartProfile result = profile;
     std::vector<Segment> &s = contourOf(result, ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
-    if (i == 0 || i + 1 >= s.size())
-        return ProfileEditing::tr("%1 is an end of the %2 contour; move it instead of deleting it")
+    const Contour &original = ref->side == ContourSide::Outer ? profile.outer : profile.inner;
+    if (i == 0 || i + 1 >= s.size() || original.breaksBefore(i) || original.breaksBefore(i + 1))
+        return ProfileEditing::tr("%1 is an end of the %2 contour (or of a bore); move it instead of deleting it")
             .arg(featureId, contourName(ref->side));
+    // The end (exclusive, after the erase below) of the run of features joined to it.
+    std::size_t pieceEnd = i;
+    while (pieceEnd + 1 < original.segments.size() && !original.breaksBefore(pieceEnd + 1))
+        ++pieceEnd;
     const Segment removed = s[i];
     s.erase(s.begin() + static_cast<std::ptrdiff_t>(i));
     Segment &before = s[i - 1];
@@ -392,7 +407,7 @@ ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
     } else {
         // Close the gap: the rest of the contour shifts by the removed feature's extent.
         const double dz = removed.to.z_mm - removed.from.z_mm, dr = removed.to.r_mm - removed.from.r_mm;
-        for (std::size_t j = i; j < s.size(); ++j) {
+        for (std::size_t j = i; j < pieceEnd; ++j) {
             s[j].from = {s[j].from.z_mm - dz, s[j].from.r_mm - dr};
             s[j].to = {s[j].to.z_mm - dz, s[j].to.r_mm - dr};
         }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/toolpath.h"
 
+#include "core/part/profile_geometry.h"
 #include "core/planning/path_geometry.h"
 #include "core/tolerance/target_contour.h"
 
@@ -63,9 +64,24 @@ double toolStop_mm(const Project &project, const ToolpathOptions &options, doubl
     return boundary ? std::max(jaws, *boundary + noseRadius_mm) : jaws;
 }
 
+// What holds the left end, as the program's notes name it.
+QString supportName(ClampingMethod method)
+{
+    switch (method) {
+    case ClampingMethod::BetweenCentres:
+        return Toolpaths::tr("left centre and driver");
+    case ClampingMethod::Collet:
+        return Toolpaths::tr("collet");
+    case ClampingMethod::Chuck:
+    case ClampingMethod::ChuckTailstock:
+        break;
+    }
+    return Toolpaths::tr("chuck jaws");
+}
+
 bool rightEndOnCentre(const Project &project)
 {
-    return project.clamping.method != ClampingMethod::Chuck;
+    return !holdsOneEndOnly(project.clamping.method);
 }
 
 PathElement line(ProfilePoint from, ProfilePoint to, const QString &featureId)
@@ -95,12 +111,13 @@ void joinMovedFeature(std::vector<PathElement> &out, PathElement &next)
         out.push_back(line(out.back().to, next.from, next.featureId));
 }
 
-// The outline a turning insert cuts of a contour with undercuts: each run of elements that go back
-// along z (an undercut's recess under its shoulder) is bridged by the corner the tool reaches from
-// outside, along the recess's floor to the face's z and radially up the face. The recess is the
-// undercut insert's (warnAtUndercuts says so); a concave radius under the shoulder tighter than
-// the nose could not be programmed with G41/G42 in any case.
-Contour withoutUndercuts(Contour contour)
+// The outline a turning insert cuts of a contour with undercuts: a run of elements that go back
+// along z between a face and the floor beside it (an undercut's recess under its shoulder) is
+// bridged: the face runs on to where the recess's radius crosses its z, and the part of that radius
+// from there to the floor stays (without such a radius, the face and the floor meet at a corner).
+// The recess is the undercut insert's; warnAtUndercuts says so. Other runs are followed as drawn.
+// `bridged` gets the ids of the elements left out.
+Contour withoutUndercuts(Contour contour, QStringList *bridged = nullptr)
 {
     std::vector<Segment> &s = contour.segments;
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -109,35 +126,36 @@ Contour withoutUndercuts(Contour contour)
         std::size_t j = i;
         while (j + 1 < s.size() && s[j + 1].turnsBack())
             ++j;
-        if (i == 0 || j + 1 >= s.size())
-            continue; // an undercut at an end of the contour: nothing to bridge it to
-        Segment &before = s[i - 1];
-        Segment &after = s[j + 1];
-        const bool faceBefore = before.kind == SegmentKind::Face;
-        Segment &face = faceBefore ? before : after;
-        Segment &floor = faceBefore ? after : before;
-        // The corner: radially from the face's end, axially from the floor's.
-        const ProfilePoint corner =
-            faceBefore ? ProfilePoint{s[i].from.z_mm, s[j].to.r_mm} : ProfilePoint{s[j].to.z_mm, s[i].from.r_mm};
-        std::vector<Segment> bridge;
-        if (face.kind == SegmentKind::Face && floor.kind == SegmentKind::Cylinder) {
-            // Extend the face and the floor themselves: no short collinear pieces, which a control's
-            // nose radius compensation cannot take into a concave corner.
-            (faceBefore ? face.to : face.from) = corner;
-            (faceBefore ? floor.from : floor.to) = corner;
-        } else {
-            Segment radial = face;
-            radial.kind = SegmentKind::Face;
-            Segment axial = floor;
-            axial.kind = SegmentKind::Cylinder;
-            radial.from = faceBefore ? s[i].from : corner;
-            radial.to = faceBefore ? corner : s[j].to;
-            axial.from = faceBefore ? corner : s[i].from;
-            axial.to = faceBefore ? s[j].to : corner;
-            bridge = faceBefore ? std::vector<Segment>{radial, axial} : std::vector<Segment>{axial, radial};
+        const bool faceBefore =
+            i > 0 && j + 1 < s.size() && s[i - 1].kind == SegmentKind::Face && s[j + 1].kind == SegmentKind::Cylinder;
+        const bool faceAfter =
+            i > 0 && j + 1 < s.size() && s[i - 1].kind == SegmentKind::Cylinder && s[j + 1].kind == SegmentKind::Face;
+        if (!faceBefore && !faceAfter) {
+            i = j; // no face and floor to bridge between: followed as drawn
+            continue;
         }
+        Segment &face = faceBefore ? s[i - 1] : s[j + 1];
+        Segment &floor = faceBefore ? s[j + 1] : s[i - 1];
+        const double zFace = face.from.z_mm;
+        const Segment &floorSide = faceBefore ? s[j] : s[i];
+        std::vector<Segment> kept;
+        ProfilePoint rim{zFace, floor.from.r_mm};
+        const std::vector<double> crossing =
+            floorSide.kind == SegmentKind::Radius ? crossingRadii(floorSide, zFace) : std::vector<double>{};
+        if (crossing.size() == 1) {
+            rim.r_mm = crossing.front();
+            Segment part = floorSide; // the same circle, from the rim to the floor
+            (faceBefore ? part.from : part.to) = rim;
+            kept.push_back(part);
+        } else {
+            (faceBefore ? floor.from : floor.to) = rim;
+        }
+        (faceBefore ? face.to : face.from) = rim;
+        for (std::size_t k = i; k <= j && bridged != nullptr; ++k)
+            *bridged << s[k].id;
         s.erase(s.begin() + static_cast<std::ptrdiff_t>(i), s.begin() + static_cast<std::ptrdiff_t>(j) + 1);
-        s.insert(s.begin() + static_cast<std::ptrdiff_t>(i), bridge.begin(), bridge.end());
+        s.insert(s.begin() + static_cast<std::ptrdiff_t>(i), kept.begin(), kept.end());
+        i += kept.size();
     }
     return contour;
 }
@@ -297,26 +315,34 @@ void warnWhereTheJawsKeepTheToolOff(const Project &project, double zReached_mm, 
                     QLatin1Char(' ') + advice;
 }
 
-// An undercut's recess lies behind the shoulder: the program follows it, but a turning insert's
-// body would cut the shoulder (its outline beyond the nose is not modelled).
+// An undercut's recess lies behind its shoulder: the program bridges it (withoutUndercuts), and
+// an undercut or grooving insert cuts it; one without a face beside it is followed as drawn, but
+// a turning insert's body would cut what overhangs it (its outline is not modelled).
 void warnAtUndercuts(const Project &project, QStringList &warnings)
 {
-    QStringList features;
-    for (const Segment &s : project.part.outer.segments) {
-        if (s.turnsBack() && (!project.scope || project.scope->cutFeatures.contains(s.id)))
-            features << s.id;
+    QStringList bridged;
+    const Contour outline = withoutUndercuts(project.part.outer, &bridged);
+    QStringList followed;
+    for (const Segment &s : outline.segments) {
+        if (s.turnsBack())
+            followed << s.id;
     }
-    if (features.isEmpty())
-        return;
-    const QString text =
-        features.size() == 1
-            ? Toolpaths::tr("%1 goes back along z (an undercut): the program follows it, but only an undercut or "
-                            "grooving insert that fits the recess can cut it; the insert's outline is not checked "
-                            "against the shoulder.")
-            : Toolpaths::tr("%1 go back along z (an undercut): the program follows them, but only an undercut or "
-                            "grooving insert that fits the recess can cut them; the insert's outline is not checked "
-                            "against the shoulder.");
-    warnings << text.arg(features.join(QStringLiteral(", ")));
+    const auto cutHere = [&](QStringList ids) {
+        ids.removeIf([&](const QString &id) { return project.scope && !project.scope->cutFeatures.contains(id); });
+        return ids;
+    };
+    bridged = cutHere(bridged);
+    followed = cutHere(followed);
+    if (!bridged.isEmpty())
+        warnings << Toolpaths::tr("%1: the recess of an undercut under its shoulder is not in this program (it "
+                                  "turns the face down to the recess and the floor up to it): cut the recess with "
+                                  "an undercut or grooving insert in a program of its own.")
+                        .arg(bridged.join(QStringLiteral(", ")));
+    if (!followed.isEmpty())
+        warnings << Toolpaths::tr("%1: goes back along z (an undercut) without a face and a floor beside it: the "
+                                  "program follows it, but only an insert that fits under the overhang can cut it; "
+                                  "the insert's outline is not checked.")
+                        .arg(followed.join(QStringLiteral(", ")));
 }
 
 ToolMove move(MoveKind kind, ProfilePoint to, const QString &featureId = {})
@@ -606,9 +632,7 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
         path.notes << Toolpaths::tr("The right end face is held by a centre and is not faced: it is faced and "
                                     "centred before the part is set up.");
     path.notes << Toolpaths::tr("The tool stops %1 mm short of the %2; the stock there is not turned.")
-                      .arg(mm(options.clearance_mm), project.clamping.method == ClampingMethod::BetweenCentres
-                                                         ? Toolpaths::tr("left centre and driver")
-                                                         : Toolpaths::tr("chuck jaws"));
+                      .arg(mm(options.clearance_mm), supportName(project.clamping.method));
     if (!project.part.inner.empty())
         path.notes << Toolpaths::tr("The bore is not in this program (outer contour only).");
     const double radialStock = 0.5 * project.part.stockDiameter_mm -

@@ -5,6 +5,7 @@
 #include "core/tolerance/iso286.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 namespace tolturn {
@@ -37,15 +38,18 @@ struct Reach {
 };
 
 // Walks from segment `start` in direction `step` over chamfers, cones and edge rounds to the
-// cylinder whose chain they belong to.
-std::optional<Reach> chainCylinder(const std::vector<Segment> &segments, const std::vector<double> &shift, int start,
-                                   int step)
+// cylinder whose chain they belong to, never across the solid between two bores.
+std::optional<Reach> chainCylinder(const Contour &contour, const std::vector<double> &shift, int start, int step)
 {
+    const std::vector<Segment> &segments = contour.segments;
     for (int i = start, steps = 0; i >= 0 && i < static_cast<int>(segments.size()); i += step, ++steps) {
         const Segment &s = segments[static_cast<std::size_t>(i)];
         if (s.kind == SegmentKind::Cylinder)
             return Reach{steps, shift[static_cast<std::size_t>(i)]};
         if (!joinsWithCylinder(s.kind))
+            return std::nullopt;
+        const int next = i + step;
+        if (contour.breaksBefore(static_cast<std::size_t>(std::max(i, next))))
             return std::nullopt;
     }
     return std::nullopt;
@@ -95,20 +99,26 @@ Contour targetContour(const Project &project, ContourSide side)
         if (segments[i].kind == SegmentKind::Cylinder && it != radialShift_mm.end())
             shift[i] = it->second;
     }
-    // Vertex v sits between segments v-1 and v.
+    // Vertex v sits between segments v-1 and v; where the inner contour breaks these are two
+    // points, each moved with its own bore.
     const int n = static_cast<int>(segments.size());
-    std::vector<double> vertexShift(segments.size() + 1, 0.0);
+    std::vector<double> endShift(segments.size() + 1, 0.0);   // of segment v-1's end
+    std::vector<double> startShift(segments.size() + 1, 0.0); // of segment v's start
+    const Reach none{std::numeric_limits<int>::max(), 0.0};   // no cylinder that way: no shift
     for (int v = 0; v <= n; ++v) {
-        const auto left = v > 0 ? chainCylinder(segments, shift, v - 1, -1) : std::nullopt;
-        const auto right = v < n ? chainCylinder(segments, shift, v, +1) : std::nullopt;
-        if (left && (!right || left->steps <= right->steps))
-            vertexShift[static_cast<std::size_t>(v)] = left->shift_mm;
-        else if (right)
-            vertexShift[static_cast<std::size_t>(v)] = right->shift_mm;
+        const Reach left = v > 0 ? chainCylinder(contour, shift, v - 1, -1).value_or(none) : none;
+        const Reach right = v < n ? chainCylinder(contour, shift, v, +1).value_or(none) : none;
+        const auto k = static_cast<std::size_t>(v);
+        if (contour.breaksBefore(k)) {
+            endShift[k] = left.shift_mm;
+            startShift[k] = right.shift_mm;
+        } else {
+            endShift[k] = startShift[k] = left.steps <= right.steps ? left.shift_mm : right.shift_mm;
+        }
     }
     for (std::size_t i = 0; i < segments.size(); ++i) {
-        segments[i].from.r_mm += vertexShift[i];
-        segments[i].to.r_mm += vertexShift[i + 1];
+        segments[i].from.r_mm += startShift[i];
+        segments[i].to.r_mm += endShift[i + 1];
     }
     return contour;
 }

@@ -217,6 +217,20 @@ private Q_SLOTS:
         QCOMPARE(both.inner.pieces().size(), std::size_t{2});
         QCOMPARE(both.outer.segments.front().from, pt(0, 5));
         QVERIFY(refusal(addBore(blind, QStringLiteral("O1"), 60.0, 10.0)).contains(QStringLiteral("z = 60 mm")));
+        // The left bore's bottom corner to Ø12: I3 and its bottom I4 follow; the right bore's
+        // bottom, beyond the solid, stays where it is.
+        const PartProfile wider = edited(moveVertex(both, ContourSide::Inner, 1, pt(20, 6)));
+        QCOMPARE(wider.inner.segments[0].to, pt(20, 6));
+        QCOMPARE(wider.inner.segments[1].from, pt(20, 6));
+        QCOMPARE(wider.inner.segments[1].to, pt(20, 0));
+        QCOMPARE(wider.inner.segments[2].from, pt(60, 0));
+        QCOMPARE(wider.inner.segments[2].to, pt(60, 8));
+        // The right bore deeper from its bottom corner: the left bore does not move.
+        const PartProfile deeper = edited(moveVertex(both, ContourSide::Inner, 3, pt(50, 8)));
+        QCOMPARE(deeper.inner.segments[2].from, pt(50, 0));
+        QCOMPARE(deeper.inner.segments[1].to, pt(20, 0));
+        // A bore's bottom is an end of its piece: deleting it is refused.
+        QVERIFY(refusal(deleteFeature(both, QStringLiteral("I4"))).contains(QStringLiteral("I4")));
     }
 
     // DIN 509 F0.6×0.3 (Ø30 is in the row d > 18 … 80: r 0.6, t1 0.3, f 2.5, t2 0.2, run-out 15°,

@@ -211,8 +211,21 @@ private Q_SLOTS:
         QVERIFY(std::abs(section.at(49.9).outerRadius_mm - (15.3 - std::sqrt(0.36 - 0.25))) < 1e-9);
         QCOMPARE(section.at(49.0).outerRadius_mm, 20.0); // left of the recess: the Ø40
         QCOMPARE(section.at(51.0).outerRadius_mm, 14.7); // the bottom
-        const auto &breaks = section.breakpoints();       // the recess's deepest point, z 50 - t2
+        const auto &breaks = section.breakpoints();      // the recess's deepest point, z 50 - t2
         QVERIFY(std::any_of(breaks.begin(), breaks.end(), [](double z) { return std::abs(z - 49.8) < 1e-9; }));
+    }
+
+    // An edge round R2 about (118, 18) from the top of a cylinder (118, 20) clockwise to just past
+    // the circle's rightmost point (120, 18), as a STEP file can give it: 1e-5 rad past, it comes
+    // back 2 (1 - cos 1e-5) = 1e-10 mm along z, a rounding error, not an undercut; 0.1 rad past,
+    // 2 (1 - cos 0.1) = 0.00999 mm, an undercut.
+    void filletEndingARoundingErrorPastItsTangentIsNoUndercut()
+    {
+        const auto endAt = [](double below) {
+            return ProfilePoint{118 + 2 * std::cos(below), 18 - 2 * std::sin(below)};
+        };
+        QVERIFY(!arc({118, 20}, endAt(1e-5), 2.0, ArcDirection::Clockwise).turnsBack());
+        QVERIFY(arc({118, 20}, endAt(0.1), 2.0, ArcDirection::Clockwise).turnsBack());
     }
 
     // A cone that goes back along z above the cylinder it came from, then a face down through

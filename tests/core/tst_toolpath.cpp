@@ -398,16 +398,24 @@ private Q_SLOTS:
         QTest::addColumn<QString>("file");
         QTest::addColumn<int>("nose");
         QTest::addColumn<int>("operation");
+        QTest::addColumn<QString>("insert"); // instead of the project's, when given
         for (const QString &f : QDir(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples"))
                                     .entryList({QStringLiteral("*.tolturn")}, QDir::Files)) {
             // Each set-up of a project of several has its own program.
             for (int k = 0; k < operationCount(example(f)); ++k) {
                 QTest::addRow("%s op %d G42", qPrintable(f), k + 1)
-                    << f << static_cast<int>(NoseHandling::ControlCompensation) << k;
+                    << f << static_cast<int>(NoseHandling::ControlCompensation) << k << QString();
                 QTest::addRow("%s op %d tip path", qPrintable(f), k + 1)
-                    << f << static_cast<int>(NoseHandling::TipPath) << k;
+                    << f << static_cast<int>(NoseHandling::TipPath) << k << QString();
             }
         }
+        // A nose (r_e 0.2 mm) smaller than the DIN 509 F undercut's R0.6: bridging the recess at the
+        // corner of its face and floor would cut 0.15 mm into that radius (a gouge).
+        const QString undercut = QStringLiteral("shaft-din509-undercut.tolturn");
+        QTest::addRow("undercut r_e 0.2 G42")
+            << undercut << static_cast<int>(NoseHandling::ControlCompensation) << 0 << QStringLiteral("CNMG 120402");
+        QTest::addRow("undercut r_e 0.2 tip path")
+            << undercut << static_cast<int>(NoseHandling::TipPath) << 0 << QStringLiteral("CNMG 120402");
     }
 
     // The program run through LinuxCNC's interpreter: the nose centre (canonical tip + r_e, r_e) of
@@ -420,7 +428,10 @@ private Q_SLOTS:
         QFETCH(QString, file);
         QFETCH(int, nose);
         QFETCH(int, operation);
-        const Project p = operationView(example(file), operation);
+        QFETCH(QString, insert);
+        Project p = operationView(example(file), operation);
+        if (!insert.isEmpty())
+            p.tool.insertCode = insert;
         const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
         QVERIFY(d.inputs);
         const double re = d.inputs->noseRadius_mm;
@@ -475,13 +486,18 @@ private Q_SLOTS:
             if (a.z_mm * b.r_mm - a.r_mm * b.z_mm < -1e-9)
                 innerCorners.push_back(contour[i].from);
         }
-        // An undercut's recess is the undercut insert's: the turning program bridges it (its floor
-        // to the face's z, then up the face) and the nose radius stays in that corner.
-        std::vector<ProfilePoint> undercut;
+        // An undercut's recess is the undercut insert's: the turning program bridges it (the face
+        // down to where the recess's radius crosses its z, that radius to the floor).
+        // Its radius, tighter than a large nose, leaves the nose's radius in the corner: points of
+        // the face and floor within r_e of it are not reached.
+        QStringList undercut;
+        std::vector<ProfilePoint> undercutPoints;
         for (const Segment &s : target.segments) {
-            if (s.turnsBack())
-                for (const ProfilePoint &q : samplePoints(s, 24))
-                    undercut.push_back(q);
+            if (!s.turnsBack())
+                continue;
+            undercut << s.id;
+            for (const ProfilePoint &q : samplePoints(s, 24))
+                undercutPoints.push_back(q);
         }
         double farthest = 0.0;
         for (const PathElement &e : contour) {
@@ -490,8 +506,9 @@ private Q_SLOTS:
                     return std::any_of(points.begin(), points.end(),
                                        [&](ProfilePoint c) { return distance(c, q) < reach; });
                 };
-                const bool nearInnerCorner = within(innerCorners, re + 1e-6) || within(undercut, 2.0 * re + 1e-6);
-                const bool othersFeature = p.scope && !p.scope->cutFeatures.contains(e.featureId);
+                const bool nearInnerCorner = within(innerCorners, re + 1e-6) || within(undercutPoints, re + 1e-6);
+                const bool othersFeature =
+                    (p.scope && !p.scope->cutFeatures.contains(e.featureId)) || undercut.contains(e.featureId);
                 if (othersFeature || q.z_mm < zFrom - 1e-9 || (!faced && std::abs(q.z_mm - length) < 1e-9) ||
                     (e.from.z_mm < zFrom && e.to.z_mm < zFrom) || nearInnerCorner)
                     continue;
