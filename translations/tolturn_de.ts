@@ -537,6 +537,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Split into operations: %1 (Edit &gt; Operations…, or further_operations in the file)</source>
         <translation>In Aufspannungen aufteilen: %1 (Bearbeiten &gt; Aufspannungen… oder further_operations in der Datei)</translation>
     </message>
+    <message>
+        <source>collet stiffness needed: %1</source>
+        <translation>nötige Steifigkeit der Spannzange: %1</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -851,6 +855,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The bores later operations cut are still solid material (no pre-drilled hole is assumed).</source>
         <translation>Die Bohrungen, die spätere Aufspannungen bearbeiten, sind noch Vollmaterial (keine Vorbohrung angenommen).</translation>
+    </message>
+    <message>
+        <source>Collet: no published stiffness of a collet or of the spindle holding one was found, so it is taken as rigid at the collet&apos;s face, which is optimistic. The verdicts give the stiffness each tolerance needs of it.</source>
+        <translation>Spannzange: Für eine Spannzange oder die Spindel mit Spannzange wurde keine veröffentlichte Steifigkeit gefunden; sie wird an ihrer Stirnseite als starr angenommen, was optimistisch ist. Die Bewertungen nennen die Steifigkeit, die jede Toleranz von ihr braucht.</translation>
     </message>
 </context>
 <context>
@@ -1979,6 +1987,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>right</source>
         <translation>rechts</translation>
     </message>
+    <message>
+        <source>collet</source>
+        <translation>Spannzange</translation>
+    </message>
 </context>
 <context>
     <name>Operations</name>
@@ -2061,6 +2073,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>feature %1 is in the bore that opens at the end %2 holds: no tool reaches it there; name it in an operation that holds the other end</source>
         <translation>Formelement %1 liegt in der Bohrung, die sich an dem Ende öffnet, das %2 spannt: dort erreicht es kein Werkzeug; führen Sie es in einer Aufspannung auf, die das andere Ende spannt</translation>
+    </message>
+    <message>
+        <source>, a chuck&apos;s figure: no collet maker&apos;s is in the data</source>
+        <translation>, ein Wert für Futter: kein Wert eines Spannzangenherstellers ist in den Daten</translation>
     </message>
 </context>
 <context>
@@ -2404,10 +2420,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>es gibt kein Formelement %1</translation>
     </message>
     <message>
-        <source>%1 is an end of the %2 contour; move it instead of deleting it</source>
-        <translation>%1 ist ein Ende der Kontur %2; verschieben Sie es, statt es zu löschen</translation>
-    </message>
-    <message>
         <source>the features beside %1 are parallel: there is no corner to give back</source>
         <translation>die Formelemente neben %1 sind parallel: es gibt keine Ecke, die wiederhergestellt werden kann</translation>
     </message>
@@ -2426,6 +2438,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>a bore %1 mm deep would meet the bore from the other end, whose bottom is at z = %2 mm: leave solid between them, or make it one through bore</source>
         <translation>eine Bohrung von %1 mm Tiefe würde auf die Bohrung vom anderen Ende treffen, deren Grund bei z = %2 mm liegt: Material zwischen ihnen stehen lassen oder eine durchgehende Bohrung daraus machen</translation>
+    </message>
+    <message>
+        <source>%1 is an end of the %2 contour (or of a bore); move it instead of deleting it</source>
+        <translation>%1 ist ein Ende der Kontur (%2) oder einer Bohrung; verschieben statt löschen</translation>
     </message>
 </context>
 <context>
@@ -2900,6 +2916,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>spans set-ups: its error from clamping the part again (where it sits axially in the other set-up) is not known and not in this verdict. </source>
         <translation>über Aufspannungen hinweg: sein Fehler durch erneutes Spannen (wo das Teil in der anderen Aufspannung axial sitzt) ist nicht bekannt und nicht in dieser Bewertung. </translation>
+    </message>
+    <message>
+        <source>collet not measured and no published stiffness: taken as rigid (optimistic); see the stiffness each tolerance needs</source>
+        <translation>Spannzange nicht gemessen und keine veröffentlichte Steifigkeit: als starr angenommen (optimistisch); siehe die Steifigkeit, die jede Toleranz braucht</translation>
     </message>
 </context>
 <context>
@@ -3474,6 +3494,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>passes %1</source>
         <translation>Schnitte %1</translation>
     </message>
+    <message>
+        <source>collet: %1 mm held</source>
+        <translation>Spannzange: %1 mm gespannt</translation>
+    </message>
 </context>
 <context>
     <name>SpindleCalibration</name>
@@ -3940,16 +3964,20 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>%1 dreht vom freien Ende bis z = %2 mm (vom gespannten Ende aus); der Rest der Außenkontur gehört zu einer anderen Aufspannung.</translation>
     </message>
     <message>
-        <source>%1 goes back along z (an undercut): the program follows it, but only an undercut or grooving insert that fits the recess can cut it; the insert&apos;s outline is not checked against the shoulder.</source>
-        <translation>%1 läuft entlang z zurück (ein Freistich): das Programm folgt dieser Kontur, aber nur eine Freistich- oder Einstechplatte, die in die Aussparung passt, kann sie bearbeiten; der Umriss der Platte wird nicht gegen die Schulter geprüft.</translation>
-    </message>
-    <message>
-        <source>%1 go back along z (an undercut): the program follows them, but only an undercut or grooving insert that fits the recess can cut them; the insert&apos;s outline is not checked against the shoulder.</source>
-        <translation>%1 laufen entlang z zurück (ein Freistich): das Programm folgt diesen Konturen, aber nur eine Freistich- oder Einstechplatte, die in die Aussparung passt, kann sie bearbeiten; der Umriss der Platte wird nicht gegen die Schulter geprüft.</translation>
-    </message>
-    <message>
         <source>%1 is tighter than the nose radius %2 mm: it is programmed as the sharp corner it rounds (a control&apos;s compensation cannot follow a concave arc tighter than the nose), and the nose leaves it rounded to %2 mm.</source>
         <translation>%1 ist enger als der Eckenradius %2 mm: programmiert wird die scharfe Ecke, die der Radius verrundet (die Schneidenradiuskorrektur einer Steuerung kann einem konkaven Bogen, der enger als die Schneidenecke ist, nicht folgen), und die Schneidenecke hinterlässt dort eine Rundung mit %2 mm.</translation>
+    </message>
+    <message>
+        <source>collet</source>
+        <translation>Spannzange</translation>
+    </message>
+    <message>
+        <source>%1: the recess of an undercut under its shoulder is not in this program (it turns the face down to the recess and the floor up to it): cut the recess with an undercut or grooving insert in a program of its own.</source>
+        <translation>%1: Die Aussparung eines Freistichs unter seiner Schulter ist nicht in diesem Programm (es dreht die Planfläche bis zur Aussparung und den Grund bis an sie heran): die Aussparung mit einer Freistich- oder Einstechplatte in einem eigenen Programm schneiden.</translation>
+    </message>
+    <message>
+        <source>%1: goes back along z (an undercut) without a face and a floor beside it: the program follows it, but only an insert that fits under the overhang can cut it; the insert&apos;s outline is not checked.</source>
+        <translation>%1: läuft entlang z zurück (eine Hinterschneidung) ohne Planfläche und Grund daneben: das Programm folgt ihr, aber nur eine Platte, die unter den Überhang passt, kann sie schneiden; die Umrisslinie der Platte wird nicht geprüft.</translation>
     </message>
 </context>
 <context>
@@ -6351,10 +6379,6 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
         <translation>Aufspannung</translation>
     </message>
     <message>
-        <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3).</source>
-        <translation>Randbedingungen des Werkstückbalkens: eingespannt an der Futterstirnfläche, abgestützt durch die Reitstockspitze oder durch zwei Spitzen (MODEL.md §3).</translation>
-    </message>
-    <message>
         <source>&amp;Method:</source>
         <translation>&amp;Spannart:</translation>
     </message>
@@ -6593,6 +6617,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Held &amp;end:</source>
         <translation>&amp;Gespanntes Ende:</translation>
+    </message>
+    <message>
+        <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3); a collet is built in at its face, its stiffness not published (taken as rigid, said in the verdicts).</source>
+        <translation>Randbedingungen des Werkstückbalkens: an der Futterstirnseite eingespannt, von der Reitstockspitze gestützt oder zwischen zwei Spitzen (MODEL.md §3); eine Spannzange spannt an ihrer Stirnseite ein, ihre Steifigkeit ist nicht veröffentlicht (als starr angenommen, in den Bewertungen genannt).</translation>
     </message>
 </context>
 <context>
@@ -6885,6 +6913,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>%1 is cut in %2: choose that set-up to see its verdict</source>
         <translation>%1 wird in %2 bearbeitet: wählen Sie diese Aufspannung, um ihre Bewertung zu sehen</translation>
+    </message>
+    <message>
+        <source>collet %1</source>
+        <translation>Spannzange %1</translation>
     </message>
 </context>
 </TS>

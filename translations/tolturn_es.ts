@@ -537,6 +537,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Split into operations: %1 (Edit &gt; Operations…, or further_operations in the file)</source>
         <translation>Dividir en operaciones: %1 (Editar &gt; Operaciones…, o further_operations en el archivo)</translation>
     </message>
+    <message>
+        <source>collet stiffness needed: %1</source>
+        <translation>rigidez necesaria de la pinza: %1</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -851,6 +855,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The bores later operations cut are still solid material (no pre-drilled hole is assumed).</source>
         <translation>Los agujeros que mecanizan las operaciones posteriores siguen siendo material macizo (no se supone ningún agujero pretaladrado).</translation>
+    </message>
+    <message>
+        <source>Collet: no published stiffness of a collet or of the spindle holding one was found, so it is taken as rigid at the collet&apos;s face, which is optimistic. The verdicts give the stiffness each tolerance needs of it.</source>
+        <translation>Pinza: no se encontró ninguna rigidez publicada de una pinza ni del husillo que la sujeta, así que se toma como rígida en la cara de la pinza, lo que es optimista. Los veredictos dan la rigidez que cada tolerancia necesita de ella.</translation>
     </message>
 </context>
 <context>
@@ -1979,6 +1987,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>right</source>
         <translation>derecho</translation>
     </message>
+    <message>
+        <source>collet</source>
+        <translation>pinza</translation>
+    </message>
 </context>
 <context>
     <name>Operations</name>
@@ -2061,6 +2073,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>feature %1 is in the bore that opens at the end %2 holds: no tool reaches it there; name it in an operation that holds the other end</source>
         <translation>el elemento %1 está en el agujero que se abre en el extremo que sujeta %2: ninguna herramienta llega allí; inclúyalo en una operación que sujete el otro extremo</translation>
+    </message>
+    <message>
+        <source>, a chuck&apos;s figure: no collet maker&apos;s is in the data</source>
+        <translation>, un valor de plato: no hay ninguno de un fabricante de pinzas en los datos</translation>
     </message>
 </context>
 <context>
@@ -2404,10 +2420,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no existe el elemento %1</translation>
     </message>
     <message>
-        <source>%1 is an end of the %2 contour; move it instead of deleting it</source>
-        <translation>%1 es un extremo del contorno %2; muévalo en lugar de eliminarlo</translation>
-    </message>
-    <message>
         <source>the features beside %1 are parallel: there is no corner to give back</source>
         <translation>los elementos contiguos a %1 son paralelos: no hay ninguna esquina que restituir</translation>
     </message>
@@ -2426,6 +2438,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>a bore %1 mm deep would meet the bore from the other end, whose bottom is at z = %2 mm: leave solid between them, or make it one through bore</source>
         <translation>un agujero de %1 mm de profundidad se uniría con el agujero del otro extremo, cuyo fondo está en z = %2 mm: deje material macizo entre ambos, o conviértalos en un único agujero pasante</translation>
+    </message>
+    <message>
+        <source>%1 is an end of the %2 contour (or of a bore); move it instead of deleting it</source>
+        <translation>%1 es un extremo del contorno %2 (o de un agujero); muévalo en lugar de borrarlo</translation>
     </message>
 </context>
 <context>
@@ -2900,6 +2916,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>spans set-ups: its error from clamping the part again (where it sits axially in the other set-up) is not known and not in this verdict. </source>
         <translation>abarca montajes: su error por volver a sujetar la pieza (dónde se asienta axialmente en el otro montaje) no se conoce y no está en este veredicto. </translation>
+    </message>
+    <message>
+        <source>collet not measured and no published stiffness: taken as rigid (optimistic); see the stiffness each tolerance needs</source>
+        <translation>pinza no medida y sin rigidez publicada: tomada como rígida (optimista); vea la rigidez que necesita cada tolerancia</translation>
     </message>
 </context>
 <context>
@@ -3474,6 +3494,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>passes %1</source>
         <translation>pasadas %1</translation>
     </message>
+    <message>
+        <source>collet: %1 mm held</source>
+        <translation>pinza: %1 mm sujetos</translation>
+    </message>
 </context>
 <context>
     <name>SpindleCalibration</name>
@@ -3940,16 +3964,20 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>%1 tornea desde el extremo libre hasta z = %2 mm (desde el extremo sujetado); el resto del contorno exterior corresponde a otra operación.</translation>
     </message>
     <message>
-        <source>%1 goes back along z (an undercut): the program follows it, but only an undercut or grooving insert that fits the recess can cut it; the insert&apos;s outline is not checked against the shoulder.</source>
-        <translation>%1 retrocede a lo largo de z (una entalla): el programa lo sigue, pero solo una plaquita de entallar o de ranurar que quepa en el rebaje puede mecanizarlo; no se comprueba el contorno de la plaquita frente al resalte.</translation>
-    </message>
-    <message>
-        <source>%1 go back along z (an undercut): the program follows them, but only an undercut or grooving insert that fits the recess can cut them; the insert&apos;s outline is not checked against the shoulder.</source>
-        <translation>%1 retroceden a lo largo de z (una entalla): el programa los sigue, pero solo una plaquita de entallar o de ranurar que quepa en el rebaje puede mecanizarlos; no se comprueba el contorno de la plaquita frente al resalte.</translation>
-    </message>
-    <message>
         <source>%1 is tighter than the nose radius %2 mm: it is programmed as the sharp corner it rounds (a control&apos;s compensation cannot follow a concave arc tighter than the nose), and the nose leaves it rounded to %2 mm.</source>
         <translation>%1 es más cerrado que el radio de punta %2 mm: se programa como la esquina viva que redondea (la compensación de un control no puede seguir un arco cóncavo más cerrado que la punta), y la punta lo deja redondeado a %2 mm.</translation>
+    </message>
+    <message>
+        <source>collet</source>
+        <translation>pinza</translation>
+    </message>
+    <message>
+        <source>%1: the recess of an undercut under its shoulder is not in this program (it turns the face down to the recess and the floor up to it): cut the recess with an undercut or grooving insert in a program of its own.</source>
+        <translation>%1: el rebaje de una entalla bajo su resalte no está en este programa (tornea la cara hasta el rebaje y el fondo hasta él): corte el rebaje con una plaquita de entalla o de ranurar en un programa propio.</translation>
+    </message>
+    <message>
+        <source>%1: goes back along z (an undercut) without a face and a floor beside it: the program follows it, but only an insert that fits under the overhang can cut it; the insert&apos;s outline is not checked.</source>
+        <translation>%1: retrocede a lo largo de z (una entalla) sin una cara y un fondo a su lado: el programa lo sigue, pero solo una plaquita que quepa bajo el voladizo puede cortarlo; no se comprueba el contorno de la plaquita.</translation>
     </message>
 </context>
 <context>
@@ -6351,10 +6379,6 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
         <translation>Sujeción</translation>
     </message>
     <message>
-        <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3).</source>
-        <translation>Condiciones de contorno de la viga de la pieza: empotrada en la cara del plato, apoyada en el punto del contrapunto o entre dos puntos (MODEL.md §3).</translation>
-    </message>
-    <message>
         <source>&amp;Method:</source>
         <translation>Mé&amp;todo:</translation>
     </message>
@@ -6593,6 +6617,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Held &amp;end:</source>
         <translation>&amp;Extremo sujetado:</translation>
+    </message>
+    <message>
+        <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3); a collet is built in at its face, its stiffness not published (taken as rigid, said in the verdicts).</source>
+        <translation>Condiciones de contorno de la viga de la pieza: empotrada en la cara del plato, apoyada en el punto del contrapunto o entre dos puntos (MODEL.md §3); una pinza la empotra en su cara, sin rigidez publicada (tomada como rígida, indicado en los veredictos).</translation>
     </message>
 </context>
 <context>
@@ -6885,6 +6913,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>%1 is cut in %2: choose that set-up to see its verdict</source>
         <translation>%1 se mecaniza en %2: elija ese montaje para ver su veredicto</translation>
+    </message>
+    <message>
+        <source>collet %1</source>
+        <translation>pinza %1</translation>
     </message>
 </context>
 </TS>

@@ -209,7 +209,11 @@ void printRange(const RangeEvaluation &range, QTextStream &out)
         if (r.range != RangeVerdict::NoRange && r.range != RangeVerdict::NotDecided)
             out << indent << CommandLine::tr("at the compliant end: %1").arg(verdictName(e.verdict)) << '\n';
         if (r.chuck)
-            out << indent << CommandLine::tr("chuck stiffness needed: %1").arg(requiredStiffnessText(*r.chuck)) << '\n';
+            out << indent
+                << (r.collet ? CommandLine::tr("collet stiffness needed: %1")
+                             : CommandLine::tr("chuck stiffness needed: %1"))
+                       .arg(requiredStiffnessText(*r.chuck))
+                << '\n';
         if (r.tailstock)
             out << indent << CommandLine::tr("tailstock stiffness needed: %1").arg(requiredStiffnessText(*r.tailstock))
                 << '\n';

@@ -230,6 +230,25 @@ void resolveChuck(const Project &p, const DataLibrary &data, const DeviationOpti
     }
 }
 
+// A collet: no published stiffness of a collet (or of the spindle with one) was found, and the
+// spindle–chuck measurement is of the chuck. A value tried by the caller (the stiffness each
+// tolerance needs is searched so), else rigid, which the notes and the banner say.
+void resolveCollet(const DeviationOptions &options, TurningInputs &in)
+{
+    in.collet = true;
+    if (options.chuckStiffness_N_per_mm) {
+        in.chuck.basis = SupportBasis::Given;
+        in.chuck.stiffness_N_per_mm = *options.chuckStiffness_N_per_mm;
+        in.radialLeft = in.tangentialLeft = chuckFamilySupport(in.chuck.stiffness_N_per_mm);
+        return;
+    }
+    in.chuck.basis = SupportBasis::RigidNoData;
+    in.radialLeft = in.tangentialLeft = EndSupport::clamped();
+    in.notes << DeviationModel::tr("Collet: no published stiffness of a collet or of the spindle holding one was "
+                                   "found, so it is taken as rigid at the collet's face, which is optimistic. The "
+                                   "verdicts give the stiffness each tolerance needs of it.");
+}
+
 // A centre or the tailstock: a value tried by the caller, the measured stiffness, the end of a
 // published range, or (none found, docs/model.md §2) a rigid pin, which the notes say.
 EndSupport resolveCentre(const std::optional<SupportStiffness> &measured, const std::optional<StiffnessRange> &range,
@@ -269,13 +288,14 @@ void resolveSupports(const Project &p, const DataLibrary &data, const DeviationO
     in.supportEnd_mm = p.part.length_mm();
     if (options.workpieceOnly) {
         in.radialLeft = in.tangentialLeft = chuck ? EndSupport::clamped() : EndSupport::pinned();
-        in.radialRight = in.tangentialRight =
-            method == ClampingMethod::Chuck ? EndSupport::free() : EndSupport::pinned();
+        in.radialRight = in.tangentialRight = holdsOneEndOnly(method) ? EndSupport::free() : EndSupport::pinned();
         in.notes << DeviationModel::tr("Workpiece only: machine supports rigid, no toolpost or thermal term.");
         return;
     }
     const UncharacterisedSupports &ranges = data.uncharacterisedSupports();
-    if (chuck) {
+    if (method == ClampingMethod::Collet) {
+        resolveCollet(options, in);
+    } else if (chuck) {
         resolveChuck(p, data, options, in);
     } else {
         // The headstock centre; what the verdicts report is the tailstock's basis (both centres
@@ -286,7 +306,7 @@ void resolveSupports(const Project &p, const DataLibrary &data, const DeviationO
             resolveCentre(c.centres, ranges.centreRadial, options, in.headstockCentre, true, name, in.notes);
         in.tangentialLeft = resolveCentre(c.centres, ranges.centreRadial, options, tangential, false, name, in.notes);
     }
-    if (method == ClampingMethod::Chuck) {
+    if (holdsOneEndOnly(method)) {
         in.radialRight = in.tangentialRight = EndSupport::free();
     } else {
         const QString name = DeviationModel::tr("Tailstock");
@@ -336,13 +356,21 @@ bool resolveMaterial(const Project &p, const DataLibrary &data, TurningInputs &i
 double boringReach_mm(const Project &p, double supportStart_mm)
 {
     const PartProfile &part = p.part;
-    double deepest = part.length_mm();
-    for (const Segment &s : part.inner.segments) {
-        // Another operation's bore is not this bar's.
-        if (p.scope ? p.scope->cutFeatures.contains(s.id) : operationOf(p, s.id) == 0)
-            deepest = std::min(deepest, std::max(s.from.z_mm, supportStart_mm));
+    const double length = part.length_mm();
+    double deepest = length;
+    for (const auto &[first, end] : part.inner.pieces()) {
+        // Only a bore open at the free end is reached from there (one from the held end is not
+        // this set-up's, checkOperations says so).
+        if (part.inner.segments[end - 1].to.z_mm < length - kProfileEpsilon_mm)
+            continue;
+        for (std::size_t i = first; i < end; ++i) {
+            const Segment &s = part.inner.segments[i];
+            // Another operation's bore is not this bar's.
+            if (p.scope ? p.scope->cutFeatures.contains(s.id) : operationOf(p, s.id) == 0)
+                deepest = std::min(deepest, std::max(std::min(s.from.z_mm, s.to.z_mm), supportStart_mm));
+        }
     }
-    return part.length_mm() - deepest;
+    return length - deepest;
 }
 
 // Diagnostics of the boring tool's view of the project name the project's "boring_tool" fields.

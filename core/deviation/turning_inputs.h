@@ -81,7 +81,8 @@ struct TurningInputs {
     double supportEnd_mm = 0.0;   // right end of the part
     EndSupport radialLeft, radialRight, tangentialLeft, tangentialRight;
     bool spindleCharacterised = false;
-    SupportStiffnessUsed chuck;           // chuck face (chuck and chuck + tailstock)
+    SupportStiffnessUsed chuck;           // chuck face (chuck and chuck + tailstock), or the collet's
+    bool collet = false;                  // `chuck` is a collet's
     SupportStiffnessUsed tailstock;       // tailstock, or both centres between centres
     SupportStiffnessUsed headstockCentre; // between centres: the left centre on its own
     std::optional<ThermalDrift> thermal;

@@ -34,10 +34,11 @@ struct KeywordTable<ArcDirection> {
 
 template <>
 struct KeywordTable<ClampingMethod> {
-    static constexpr std::array<std::pair<ClampingMethod, const char *>, 3> entries{{
+    static constexpr std::array<std::pair<ClampingMethod, const char *>, 4> entries{{
         {ClampingMethod::Chuck, "chuck"},
         {ClampingMethod::BetweenCentres, "centres"},
         {ClampingMethod::ChuckTailstock, "chuck_tailstock"},
+        {ClampingMethod::Collet, "collet"},
     }};
 };
 
@@ -172,6 +173,8 @@ QString displayName(ClampingMethod value)
         return Names::tr("between centres");
     case ClampingMethod::ChuckTailstock:
         return Names::tr("chuck + tailstock");
+    case ClampingMethod::Collet:
+        return Names::tr("collet");
     }
     return keyword(value);
 }

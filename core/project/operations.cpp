@@ -246,6 +246,10 @@ QString reclampingText(const Project &project, const Tolerance &tolerance, const
     QString text =
         Operations::tr("spans set-ups: %1, %2 in %3; clamping again adds 0–%4 µm (%5)")
             .arg(others.join(QStringLiteral("; ")), tolerance.featureId, own, formatNumber(error.max_um), error.source);
+    const Clamping &held =
+        project.scope ? project.clamping : operationClamping(project, operationOf(project, tolerance.featureId));
+    if (held.method == ClampingMethod::Collet)
+        text += Operations::tr(", a chuck's figure: no collet maker's is in the data");
     if (value_um && limit_um) {
         const double room = *limit_um - *value_um;
         text += room >= error.max_um

@@ -14,8 +14,15 @@
 
 namespace tolturn {
 
-// How the part is held on the lathe (Valiño et al. 2008, §II: the three methods of the model).
-enum class ClampingMethod { Chuck, BetweenCentres, ChuckTailstock };
+// How the part is held on the lathe (Valiño et al. 2008, §II: the three methods of the model), and
+// in a collet: built in at the collet's face like a chuck, its own stiffness (docs/model.md §2).
+enum class ClampingMethod { Chuck, BetweenCentres, ChuckTailstock, Collet };
+
+// Held at one end only, in a chuck or a collet: the other end is free.
+[[nodiscard]] constexpr bool holdsOneEndOnly(ClampingMethod m)
+{
+    return m == ClampingMethod::Chuck || m == ClampingMethod::Collet;
+}
 
 // An end of the part: left is z = 0 of the drawing, right is z = length.
 enum class PartEnd { Left, Right };

@@ -42,6 +42,7 @@ void checkClamping(const Clamping &clamping, double length, const QString &prefi
     switch (clamping.method) {
     case ClampingMethod::Chuck:
     case ClampingMethod::ChuckTailstock:
+    case ClampingMethod::Collet:
         if (clamped <= 0.0)
             out.push_back(makeError(
                 field, ProjectValidation::tr("a part held in a chuck needs a clamped length above zero, but it "

@@ -161,7 +161,7 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
     // The project is resolved once; the searches vary only the support they are about.
     const ClampingMethod method = project.clamping.method;
     const ProgramTargets targets = programTargets(project);
-    if (method == ClampingMethod::Chuck && !options.workpieceOnly) {
+    if (holdsOneEndOnly(method) && !options.workpieceOnly) {
         const DeviationResult base = deviationFor(project.part, withChuckStiffness(in, gridStiffness(0)), compliant);
         chuck = searchRequired(
             [&](double k) {
@@ -173,7 +173,7 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
         chuck = searchRequired(
             [&](double k) { return verdictsWith(project, withChuckStiffness(in, k), compliant, targets); }, n);
     }
-    if (method != ClampingMethod::Chuck && !options.workpieceOnly)
+    if (!holdsOneEndOnly(method) && !options.workpieceOnly)
         tailstock = searchRequired(
             [&](double k) { return verdictsWith(project, withTailstockStiffness(in, k, method), compliant, targets); },
             n);
@@ -184,6 +184,7 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
             e.stiff = atStiff[i];
         if (i < chuck.size() && decided(e.compliant))
             e.chuck = chuck[i];
+        e.collet = in.collet;
         if (i < tailstock.size() && decided(e.compliant))
             e.tailstock = tailstock[i];
         if (!decided(e.compliant))
@@ -299,6 +300,9 @@ QString machineAssumptionText(const RangeEvaluation &r, const DataLibrary &data)
                           perMicrometre(in.chuck.range->stiff_N_per_mm.value), sourceShort(data, *in.chuck.range));
     else if (in.chuck.basis == SupportBasis::Measured)
         parts << RangeVerdicts::tr("spindle–chuck as measured");
+    else if (in.chuck.basis == SupportBasis::RigidNoData && in.collet)
+        parts << RangeVerdicts::tr("collet not measured and no published stiffness: taken as rigid (optimistic); "
+                                   "see the stiffness each tolerance needs");
     else if (in.chuck.basis == SupportBasis::RigidNoData)
         parts << RangeVerdicts::tr("chuck neither measured nor published: taken as rigid (optimistic)");
     if (in.tailstock.basis == SupportBasis::RigidNoData)

@@ -43,8 +43,9 @@ struct ToleranceRangeEvaluation {
     ToleranceEvaluation compliant;            // at the compliant end (or as measured)
     std::optional<ToleranceEvaluation> stiff; // at the stiff end, where a range applies
     RangeVerdict range = RangeVerdict::NoRange;
-    std::optional<RequiredStiffness> chuck;     // chuck and chuck + tailstock
+    std::optional<RequiredStiffness> chuck;     // chuck and chuck + tailstock, or the collet
     std::optional<RequiredStiffness> tailstock; // tailstock, or both centres between centres
+    bool collet = false;                        // `chuck` is what a collet needs
 };
 
 struct RangeEvaluation {

@@ -14,6 +14,7 @@
 #include "core/project/project_validation.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/range_verdicts.h"
+#include "core/tolerance/target_contour.h"
 
 #include <QDir>
 #include <QTest>
@@ -293,6 +294,80 @@ private Q_SLOTS:
                  qPrintable(dump(d)));
         QVERIFY2(said(Severity::Warning, "feature I1 is in the bore that opens at the end OP 10 holds"),
                  qPrintable(dump(d)));
+    }
+
+    // The shaft of one set-up (held left) with a Ø20 bore 30 deep and a 90° drill point from the
+    // left, and a Ø16 bore from the right whose drill point starts on the axis at z 155. The H7 of
+    // the left bore moves its target, not the right bore's tip, which stays on the axis. The
+    // boring bar's default overhang is the reach of the bore open at the free end: 200 - 155 mm
+    // (the left bore opens in the jaws and is not this set-up's).
+    void eachBoreKeepsItsOwnTargetAndReach()
+    {
+        Project p = twoOperationShaft();
+        p.furtherOperations.clear();
+        p.tolerances.clear();
+        p.part.outer.segments.front().from.r_mm = 10.0;
+        p.part.outer.segments.back().to.r_mm = 8.0;
+        p.part.inner.segments = {
+            seg("I1", SegmentKind::Cylinder, {0, 10}, {30, 10}), seg("I2", SegmentKind::Cone, {30, 10}, {40, 0}),
+            seg("I3", SegmentKind::Cone, {155, 0}, {160, 8}), seg("I4", SegmentKind::Cylinder, {160, 8}, {200, 8})};
+        Tolerance h7;
+        h7.id = QStringLiteral("T1");
+        h7.type = ToleranceType::Diameter;
+        h7.featureId = QStringLiteral("I1");
+        h7.iso286Class = QStringLiteral("H7");
+        p.tolerances = {h7};
+        const Contour target = targetContour(p, ContourSide::Inner);
+        QVERIFY(target.segments[0].from.r_mm > 10.0); // the H7 zone's middle, above Ø20
+        QCOMPARE(target.segments[2].from.r_mm, 0.0);
+        Tool bar;
+        bar.insertCode = QStringLiteral("CCMT 09T304");
+        bar.holderCode = QStringLiteral("E16R-SCLCR09");
+        p.boringTool = bar;
+        const DeviationResult r = computeDeviation(p, DataLibrary::builtIn());
+        QVERIFY(r.inputs && r.inputs->boring);
+        QCOMPARE(r.inputs->boring->bar.overhang_mm, 45.0);
+    }
+
+    // Issue 16: the shaft held 30 mm in a collet. No stiffness of a collet is published: it is
+    // rigid at its face (no spindle–chuck motion), which the notes and the machine banner say, and
+    // the beam is the stepped cantilever from z 30: Ø50 over 70 mm, then Ø40 over 100 mm, whose
+    // tip deflection under 100 N is the closed form with shear. Each tolerance gives the stiffness
+    // it needs of the collet; the file keeps "collet".
+    void colletIsRigidUntilMeasuredAndSaysSo()
+    {
+        Project p = twoOperationShaft();
+        p.furtherOperations.clear();
+        p.clamping = {ClampingMethod::Collet, 30.0, PartEnd::Left};
+        DeviationOptions o;
+        o.inProcessSection = false;
+        o.loadOverride = CuttingForces{0.0, 0.0, 100.0};
+        const DeviationResult r = computeDeviation(p, DataLibrary::builtIn(), o);
+        QVERIFY2(r.inputs, qPrintable(dump(r.diagnostics)));
+        QVERIFY(r.inputs->collet);
+        QCOMPARE(r.inputs->chuck.basis, SupportBasis::RigidNoData);
+        QVERIFY(r.inputs->notes.join(QLatin1Char(' ')).contains(QStringLiteral("Collet: no published stiffness")));
+        const FeatureDeviation *o4 = feature(r, "O4");
+        QVERIFY(o4 != nullptr);
+        const Station &tip = o4->stations.back();
+        QCOMPARE(tip.z_mm, 200.0);
+        QCOMPARE(tip.radial.spindleChuck_mm, 0.0);
+        const double expected = steppedCantileverTip(100.0, 70.0, 25.0, 100.0, 20.0);
+        QVERIFY2(near(tip.radial.workpiece_mm, expected, 1e-6),
+                 qPrintable(QStringLiteral("%1 vs %2").arg(tip.radial.workpiece_mm).arg(expected)));
+        const RangeEvaluation range = evaluateOverStiffnessRange(p, DataLibrary::builtIn());
+        QVERIFY(machineAssumptionText(range, DataLibrary::builtIn()).contains(QStringLiteral("collet not measured")));
+        QVERIFY(!range.tolerances.empty() && range.tolerances.front().collet && range.tolerances.front().chuck);
+        QVERIFY(!range.tolerances.front().tailstock);
+        const QJsonObject json = projectJsonObject(p);
+        QCOMPARE(json.value(QStringLiteral("clamping")).toObject().value(QStringLiteral("method")).toString(),
+                 QStringLiteral("collet"));
+        Project noLength = p;
+        noLength.clamping.clampedLength_mm = 0.0;
+        const Diagnostics d = validateProject(noLength);
+        QVERIFY(std::any_of(d.begin(), d.end(), [](const Diagnostic &x) {
+            return x.field == QLatin1String("clamping.clamped_length_mm") && x.severity == Severity::Error;
+        }));
     }
 
     // A groove 1.5 mm wide in O2 (OP 20's) is narrower than the nose of CNMG 120408 (r_e 0.8 mm,

@@ -12,6 +12,7 @@
 #include "widgets/setup/operations_dialog.h"
 #include "widgets/setup/setup_panel.h"
 #include "widgets/setup/stiffness_editor.h"
+#include "widgets/tolerances/tolerance_panel.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -195,6 +196,26 @@ private Q_SLOTS:
         QCOMPARE(w.document()->project().clamping.method, ClampingMethod::Chuck);
         QCOMPARE(s->clampingBox()->currentData().toInt(), static_cast<int>(ClampingMethod::Chuck));
         QCOMPARE(journalEndDeflection_mm(w.deflectionPanel()->result()), inChuck);
+    }
+
+    // A collet (issue 16) holds the part like the chuck, over the same length, but its stiffness
+    // is not published: rigid at its face, the spindle–chuck range no longer applies, so the part
+    // deflects less than at the chuck's compliant end, and the banner says the collet is rigid.
+    void colletIsOfferedAndSaysItIsTakenAsRigid()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        const double inChuck = journalEndDeflection_mm(w.deflectionPanel()->result());
+        choose(s->clampingBox(), static_cast<int>(ClampingMethod::Collet));
+        QCOMPARE(w.document()->project().clamping.method, ClampingMethod::Collet);
+        QCOMPARE(w.document()->project().clamping.clampedLength_mm, 35.0);
+        QVERIFY(s->clampedLengthBox()->isEnabled());
+        const double inCollet = journalEndDeflection_mm(w.deflectionPanel()->result());
+        QVERIFY2(inCollet > 0.0 && inCollet < inChuck,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(inCollet).arg(inChuck)));
+        QVERIFY2(w.tolerancePanel()->banner()->text().contains(QStringLiteral("collet not measured")),
+                 qPrintable(w.tolerancePanel()->banner()->text()));
     }
 
     void betweenCentresReleasesTheJawsAndBack()

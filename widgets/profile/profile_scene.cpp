@@ -382,7 +382,7 @@ void addClamping(QGraphicsScene &scene, const PartProfile &profile, const Clampi
     };
     if (clamping.method == ClampingMethod::BetweenCentres)
         centre(0.0, 1.0); // its body left of the part
-    if (clamping.method != ClampingMethod::Chuck)
+    if (!holdsOneEndOnly(clamping.method))
         centre(length, -1.0); // right of it
 }
 

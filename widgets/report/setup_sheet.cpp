@@ -107,14 +107,16 @@ void drawClamping(QPainter &painter, const QRectF &rect, const Project &project)
             painter.drawRect(QRectF(at(0.0, side * (gripRadius + jaw)), at(grip, side * gripRadius)).normalized());
         painter.setBrush(QColor(0xbb, 0xbb, 0xbb));
         painter.drawRect(QRectF(at(-margin * 0.6, 1.5 * radius), at(0.0, -1.5 * radius)).normalized()); // chuck body
-        painter.drawText(QRectF(at(-margin, -1.55 * radius), QSizeF(rect.width() / 2.0, 12)),
-                         Qt::AlignLeft | Qt::AlignTop, SetupSheet::tr("chuck: %1 mm in the jaws").arg(num(grip, 1)));
+        painter.drawText(
+            QRectF(at(-margin, -1.55 * radius), QSizeF(rect.width() / 2.0, 12)), Qt::AlignLeft | Qt::AlignTop,
+            method == ClampingMethod::Collet ? SetupSheet::tr("collet: %1 mm held").arg(num(grip, 1))
+                                             : SetupSheet::tr("chuck: %1 mm in the jaws").arg(num(grip, 1)));
     } else {
         drawCentre(painter, at(0.0, 0.0), 0.35 * margin * scale, true);
         painter.drawText(QRectF(at(-margin, -1.1 * radius), QSizeF(scale * 2.0 * margin, 12)), Qt::AlignLeft,
                          SetupSheet::tr("centre and driver"));
     }
-    if (method != ClampingMethod::Chuck) {
+    if (!holdsOneEndOnly(method)) {
         drawCentre(painter, at(length, 0.0), 0.35 * margin * scale, false);
         painter.drawText(
             QRectF(at(length - 0.5 * margin, -1.1 * radius), QSizeF(scale * 1.5 * margin, 12)), Qt::AlignRight,

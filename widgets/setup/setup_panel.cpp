@@ -293,11 +293,12 @@ QWidget *SetupPanel::createClampingGroup()
 {
     auto *group = new QGroupBox(tr("Clamping"));
     auto *form = new QFormLayout(group);
-    for (const ClampingMethod m :
-         {ClampingMethod::Chuck, ClampingMethod::ChuckTailstock, ClampingMethod::BetweenCentres})
+    for (const ClampingMethod m : {ClampingMethod::Chuck, ClampingMethod::ChuckTailstock,
+                                   ClampingMethod::BetweenCentres, ClampingMethod::Collet})
         m_clamping->addItem(displayName(m), static_cast<int>(m));
     m_clamping->setToolTip(tr("Boundary conditions of the workpiece beam: built in at the chuck face, supported "
-                              "by the tailstock centre, or by two centres (MODEL.md §3)."));
+                              "by the tailstock centre, or by two centres (MODEL.md §3); a collet is built in at "
+                              "its face, its stiffness not published (taken as rigid, said in the verdicts)."));
     m_heldEnd = new QComboBox;
     m_heldEnd->setObjectName(QStringLiteral("heldEnd"));
     m_heldEnd->addItem(tr("left end (as drawn)"), static_cast<int>(PartEnd::Left));

@@ -70,7 +70,7 @@ QString ToleranceVerdictModel::requiredText(const ToleranceRangeEvaluation &e)
 {
     QStringList parts;
     if (e.chuck)
-        parts << tr("chuck %1").arg(requiredStiffnessText(*e.chuck));
+        parts << (e.collet ? tr("collet %1") : tr("chuck %1")).arg(requiredStiffnessText(*e.chuck));
     if (e.tailstock)
         parts << tr("tailstock %1").arg(requiredStiffnessText(*e.tailstock));
     return parts.isEmpty() ? QStringLiteral("—") : parts.join(QStringLiteral(" · "));
