@@ -34,6 +34,8 @@ SectionAlongZ::SectionAlongZ(const PartProfile &profile, double outerAllowance_m
                              std::vector<std::pair<double, double>> stockOuter_mm,
                              std::vector<std::pair<double, double>> solidInner_mm)
     : m_profile(profile)
+    , m_outer(profile.outer)
+    , m_inner(profile.inner)
     , m_outerAllowance_mm(outerAllowance_mm)
     , m_innerAllowance_mm(innerAllowance_mm)
     , m_stockRadius_mm(0.5 * profile.stockDiameter_mm)
@@ -64,7 +66,7 @@ RoundSection SectionAlongZ::at(double z_mm) const
     // that starts at z when z is a vertex, FromLeft at the right end.
     const Approach side = z_mm < m_profile.length_mm() ? Approach::FromRight : Approach::FromLeft;
     RoundSection section;
-    section.outerRadius_mm = coreRadiusAt(m_profile.outer, z_mm, side, ContourSide::Outer).value_or(0.0);
+    section.outerRadius_mm = m_outer.coreRadiusAt(z_mm, side, ContourSide::Outer).value_or(0.0);
     // Inside a range a later operation turns the part is still the bar; its ends are the
     // segments' own ends, so an element never spans one (they are breakpoints).
     const auto inRange = [&](const std::pair<double, double> &r) {
@@ -77,7 +79,7 @@ RoundSection SectionAlongZ::at(double z_mm) const
         section.outerRadius_mm =
             std::min(section.outerRadius_mm + m_outerAllowance_mm, std::max(m_stockRadius_mm, section.outerRadius_mm));
     const bool solid = std::any_of(m_solidInner_mm.begin(), m_solidInner_mm.end(), inRange);
-    if (const auto bore = coreRadiusAt(m_profile.inner, z_mm, side, ContourSide::Inner); bore && !solid)
+    if (const auto bore = m_inner.coreRadiusAt(z_mm, side, ContourSide::Inner); bore && !solid)
         section.innerRadius_mm = std::max(0.0, *bore - m_innerAllowance_mm);
     return section;
 }

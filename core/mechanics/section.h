@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/part/profile.h"
+#include "core/part/profile_geometry.h"
 
 #include <utility>
 #include <vector>
@@ -54,6 +55,8 @@ public:
 
 private:
     const PartProfile &m_profile;
+    AxialSegments m_outer;
+    AxialSegments m_inner;
     double m_outerAllowance_mm;
     double m_innerAllowance_mm;
     double m_stockRadius_mm;

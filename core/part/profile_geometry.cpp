@@ -111,12 +111,18 @@ std::pair<double, double> radiusRange(const Segment &segment)
     return {lo, hi};
 }
 
-std::optional<double> radiusAt(const Contour &contour, double z_mm, Approach approach)
+namespace {
+
+// Of the axial segments (in contour order) the one covering z; at a shared end point the approach
+// decides which. `knownAxial`: the caller passes axial segments only (isAxial() costs an arc's
+// geometry).
+template <class Segments, class Get>
+const Segment *coveringSegment(const Segments &segments, Get get, double z_mm, Approach approach, bool knownAxial)
 {
-    // Pick the axial segment covering z; at a shared end point the approach decides which.
     const Segment *best = nullptr;
-    for (const Segment &s : contour.segments) {
-        if (!s.isAxial())
+    for (const auto &item : segments) {
+        const Segment &s = get(item);
+        if (!knownAxial && !s.isAxial())
             continue;
         const double z0 = s.from.z_mm;
         const double z1 = s.to.z_mm;
@@ -132,9 +138,46 @@ std::optional<double> radiusAt(const Contour &contour, double z_mm, Approach app
         if (best == nullptr)
             best = &s;
     }
-    if (best == nullptr)
-        return std::nullopt;
-    return radiusOnSegment(*best, z_mm);
+    return best;
+}
+
+} // namespace
+
+std::optional<double> radiusAt(const Contour &contour, double z_mm, Approach approach)
+{
+    const Segment *s = coveringSegment(
+        contour.segments, [](const Segment &x) -> const Segment & { return x; }, z_mm, approach, false);
+    return s ? std::optional<double>(radiusOnSegment(*s, z_mm)) : std::nullopt;
+}
+
+AxialSegments::AxialSegments(const Contour &contour)
+{
+    for (const Segment &s : contour.segments) {
+        if (s.kind == SegmentKind::Face)
+            continue;
+        m_undercut = m_undercut || s.turnsBack();
+        if (!s.turnsBack())
+            m_axial.push_back(&s);
+        m_crossing.push_back(&s);
+    }
+}
+
+std::optional<double> AxialSegments::coreRadiusAt(double z_mm, Approach approach, ContourSide side) const
+{
+    const Segment *s = coveringSegment(
+        m_axial, [](const Segment *x) -> const Segment & { return *x; }, z_mm, approach, true);
+    std::optional<double> r = s ? std::optional<double>(radiusOnSegment(*s, z_mm)) : std::nullopt;
+    if (!m_undercut)
+        return r;
+    for (const Segment *c : m_crossing) {
+        for (const double x : crossingRadii(*c, z_mm)) {
+            if (!r)
+                r = x;
+            else
+                r = side == ContourSide::Outer ? std::min(*r, x) : std::max(*r, x);
+        }
+    }
+    return r;
 }
 
 std::vector<double> crossingRadii(const Segment &segment, double z_mm)
@@ -166,18 +209,7 @@ std::vector<double> crossingRadii(const Segment &segment, double z_mm)
 
 std::optional<double> coreRadiusAt(const Contour &contour, double z_mm, Approach approach, ContourSide side)
 {
-    std::optional<double> r = radiusAt(contour, z_mm, approach);
-    // Where an undercut overhangs z, several segments cover it (the recess's floor and the shoulder
-    // beyond, say); in a contour without undercuts only the one radiusAt() found does.
-    for (const Segment &s : contour.segments) {
-        for (const double c : crossingRadii(s, z_mm)) {
-            if (!r)
-                r = c;
-            else
-                r = side == ContourSide::Outer ? std::min(*r, c) : std::max(*r, c);
-        }
-    }
-    return r;
+    return AxialSegments(contour).coreRadiusAt(z_mm, approach, side);
 }
 
 std::vector<ProfilePoint> samplePoints(const Segment &segment, int arcPoints)

@@ -56,6 +56,20 @@ enum class Approach { FromLeft, FromRight };
 [[nodiscard]] std::optional<double> coreRadiusAt(const Contour &contour, double z_mm, Approach approach,
                                                  ContourSide side);
 
+// coreRadiusAt() for many z of one contour (the beam's sections): which segments are axial, and
+// whether the contour has an undercut at all, worked out once. Keeps pointers into the contour.
+class AxialSegments {
+public:
+    explicit AxialSegments(const Contour &contour);
+
+    [[nodiscard]] std::optional<double> coreRadiusAt(double z_mm, Approach approach, ContourSide side) const;
+
+private:
+    std::vector<const Segment *> m_axial;    // in contour order
+    std::vector<const Segment *> m_crossing; // every segment but faces
+    bool m_undercut = false;
+};
+
 // Points along a segment for drawing: the two end points for straight segments, `arcPoints`
 // points for a Radius.
 [[nodiscard]] std::vector<ProfilePoint> samplePoints(const Segment &segment, int arcPoints = 24);
