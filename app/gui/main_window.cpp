@@ -114,7 +114,7 @@ MainWindow::MainWindow(QWidget *parent)
                 const Project &project = m_document->project();
                 if (operationClamping(project, std::min(m_operation, operationCount(project) - 1)).heldEnd ==
                     PartEnd::Right) {
-                    const Contour &contour = side == ContourSide::Outer ? project.part.outer : project.part.inner;
+                    const Contour &contour = project.part.contour(side);
                     vertex = static_cast<int>(contour.segments.size()) - vertex;
                     to.z_mm = project.part.length_mm() - to.z_mm;
                     atSegmentEnd = !atSegmentEnd;

@@ -123,7 +123,7 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
             nodeSet.insert(z);
     }
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
-        const Contour &contour = side == ContourSide::Outer ? part.outer : part.inner;
+        const Contour &contour = part.contour(side);
         for (const Segment &s : contour.segments) {
             if (in.scoped && !in.cutFeatures.contains(s.id))
                 continue; // another operation cuts it

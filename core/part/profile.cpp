@@ -68,7 +68,7 @@ double PartProfile::maxOuterRadius_mm() const
 std::optional<FeatureRef> findFeature(const PartProfile &profile, const QString &id)
 {
     for (ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
-        const Contour &contour = side == ContourSide::Outer ? profile.outer : profile.inner;
+        const Contour &contour = profile.contour(side);
         for (std::size_t i = 0; i < contour.segments.size(); ++i) {
             if (contour.segments[i].id == id)
                 return FeatureRef{&contour.segments[i], side, static_cast<int>(i)};

@@ -87,6 +87,10 @@ struct PartProfile {
 
     [[nodiscard]] double maxOuterRadius_mm() const;
 
+    [[nodiscard]] const Contour &contour(ContourSide side) const { return side == ContourSide::Outer ? outer : inner; }
+
+    [[nodiscard]] Contour &contour(ContourSide side) { return side == ContourSide::Outer ? outer : inner; }
+
     // The largest radius of the outer contour left of z: where chuck jaws gripping that length hold it.
     [[nodiscard]] double gripRadius_mm(double clampedLength_mm) const;
 };

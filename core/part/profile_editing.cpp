@@ -17,11 +17,6 @@ struct ProfileEditing {
     Q_DECLARE_TR_FUNCTIONS(ProfileEditing)
 };
 
-Contour &contourOf(PartProfile &p, ContourSide side)
-{
-    return side == ContourSide::Outer ? p.outer : p.inner;
-}
-
 bool near(double a, double b)
 {
     return std::abs(a - b) <= kProfileEpsilon_mm;
@@ -125,7 +120,7 @@ Segment makeFeature(const QString &id, const QString &name, SegmentKind kind, Pr
 
 QString nextFeatureId(const PartProfile &profile, ContourSide side)
 {
-    const Contour &c = side == ContourSide::Outer ? profile.outer : profile.inner;
+    const Contour &c = profile.contour(side);
     int highest = 0;
     for (const Segment &s : c.segments)
         highest = std::max(highest, featureNumber(s.id));
@@ -135,7 +130,7 @@ QString nextFeatureId(const PartProfile &profile, ContourSide side)
 ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex, ProfilePoint to, AtBreak atBreak)
 {
     PartProfile result = profile;
-    Contour &contour = contourOf(result, side);
+    Contour &contour = result.contour(side);
     std::vector<Segment> &s = contour.segments;
     if (vertex < 0 || vertex > static_cast<int>(s.size()) || s.empty())
         return ProfileEditing::tr("the %1 contour has no vertex %2").arg(contourName(side)).arg(vertex);
@@ -146,7 +141,7 @@ ProfileEdit moveVertex(const PartProfile &profile, ContourSide side, int vertex,
     if (k < s.size() && (!atTheBreak || atBreak == AtBreak::StartOfSegment))
         moveStart(s, k, to);
     // An undercut is drawn on purpose (insertUndercut), never made by dragging a corner.
-    const std::vector<Segment> &before = (side == ContourSide::Outer ? profile.outer : profile.inner).segments;
+    const std::vector<Segment> &before = profile.contour(side).segments;
     for (std::size_t i = 0; i < s.size() && i < before.size(); ++i) {
         if (s[i].turnsBack() && !before[i].turnsBack())
             return ProfileEditing::tr("moving the corner would make %1 turn back along z (an undercut), which "
@@ -172,7 +167,7 @@ ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, dou
         return ProfileEditing::tr("the step's diameter must differ from Ø%1 mm and be above zero, but is %2 mm")
             .arg(formatNumber(2.0 * cylinder.from.r_mm), formatNumber(diameter_mm));
     PartProfile result = profile;
-    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    std::vector<Segment> &s = result.contour(ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
     const double r = cylinder.from.r_mm, r2 = diameter_mm / 2.0;
     const ProfilePoint corner{z_mm, r}, stepped{z_mm, r2};
@@ -194,7 +189,7 @@ ProfileEdit insertStep(const PartProfile &profile, const QString &featureId, dou
 ProfileEdit breakCorner(const PartProfile &profile, ContourSide side, int vertex, double size_mm, bool round)
 {
     PartProfile result = profile;
-    std::vector<Segment> &s = contourOf(result, side).segments;
+    std::vector<Segment> &s = result.contour(side).segments;
     if (vertex <= 0 || vertex >= static_cast<int>(s.size()))
         return ProfileEditing::tr("vertex %1 of the %2 contour is not a corner between two features")
             .arg(vertex)
@@ -241,7 +236,7 @@ ProfileEdit makeCone(const PartProfile &profile, const QString &featureId, doubl
         return ProfileEditing::tr("the cone's end needs a diameter other than Ø%1 mm, but it is %2 mm")
             .arg(formatNumber(2.0 * ref->segment->from.r_mm), formatNumber(endDiameter_mm));
     PartProfile result = profile;
-    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    std::vector<Segment> &s = result.contour(ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
     const bool joined = i + 1 < s.size() && samePoint(s[i].to, s[i + 1].from);
     s[i].kind = SegmentKind::Cone;
@@ -258,7 +253,7 @@ ProfileEdit makeCylinder(const PartProfile &profile, const QString &featureId)
     if (!ref || ref->segment->kind != SegmentKind::Cone)
         return ProfileEditing::tr("a cylinder is made from a cone; %1 is not one").arg(featureId);
     PartProfile result = profile;
-    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    std::vector<Segment> &s = result.contour(ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
     const bool joined = i + 1 < s.size() && samePoint(s[i].to, s[i + 1].from);
     s[i].kind = SegmentKind::Cylinder;
@@ -369,7 +364,7 @@ ProfileEdit swapCornerBreak(const PartProfile &profile, const QString &featureId
     ProfileEdit swapped = breakCorner(std::get<PartProfile>(sharp), ref->side, ref->index, size_mm, toRound);
     if (auto *part = std::get_if<PartProfile>(&swapped)) {
         // The break keeps its id, so that tolerances on it stay attached.
-        Segment &made = contourOf(*part, ref->side).segments[static_cast<std::size_t>(ref->index)];
+        Segment &made = part->contour(ref->side).segments[static_cast<std::size_t>(ref->index)];
         made.id = old.id;
     }
     return swapped;
@@ -381,9 +376,9 @@ ProfileEdit deleteFeature(const PartProfile &profile, const QString &featureId)
     if (!ref)
         return ProfileEditing::tr("there is no feature %1").arg(featureId);
     PartProfile result = profile;
-    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    std::vector<Segment> &s = result.contour(ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
-    const Contour &original = ref->side == ContourSide::Outer ? profile.outer : profile.inner;
+    const Contour &original = profile.contour(ref->side);
     if (i == 0 || i + 1 >= s.size() || original.breaksBefore(i) || original.breaksBefore(i + 1))
         return ProfileEditing::tr("%1 is an end of the %2 contour (or of a bore); move it instead of deleting it")
             .arg(featureId, contourName(ref->side));

@@ -207,11 +207,6 @@ std::vector<double> crossingRadii(const Segment &segment, double z_mm)
     return radii;
 }
 
-std::optional<double> coreRadiusAt(const Contour &contour, double z_mm, Approach approach, ContourSide side)
-{
-    return AxialSegments(contour).coreRadiusAt(z_mm, approach, side);
-}
-
 std::vector<ProfilePoint> samplePoints(const Segment &segment, int arcPoints)
 {
     if (segment.kind != SegmentKind::Radius)

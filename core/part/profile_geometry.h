@@ -52,12 +52,9 @@ enum class Approach { FromLeft, FromRight };
 // The radius of the material's core at z for the beam: radiusAt(), and where an undercut
 // overhangs the line z = const, the smallest crossing of the outer contour or the largest of the
 // inner. The ring of material beyond an undercut's recess is left out (conservative; it spans
-// at most the recess, tenths of a millimetre for DIN 509).
-[[nodiscard]] std::optional<double> coreRadiusAt(const Contour &contour, double z_mm, Approach approach,
-                                                 ContourSide side);
-
-// coreRadiusAt() for many z of one contour (the beam's sections): which segments are axial, and
-// whether the contour has an undercut at all, worked out once. Keeps pointers into the contour.
+// at most the recess, tenths of a millimetre for DIN 509). Which segments are axial, and whether
+// the contour has an undercut at all, is worked out once for the many z of a beam's sections.
+// Keeps pointers into the contour.
 class AxialSegments {
 public:
     explicit AxialSegments(const Contour &contour);

@@ -418,7 +418,7 @@ void checkIds(const PartProfile &p, Diagnostics &out)
 {
     QSet<QString> seen;
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
-        const Contour &c = side == ContourSide::Outer ? p.outer : p.inner;
+        const Contour &c = p.contour(side);
         for (std::size_t i = 0; i < c.segments.size(); ++i) {
             const QString field = segmentPath(side, i) + QStringLiteral(".id");
             const QString &id = c.segments[i].id;

@@ -40,11 +40,6 @@ double degrees(double deg)
     return deg * std::numbers::pi / 180.0;
 }
 
-Contour &contourOf(PartProfile &p, ContourSide side)
-{
-    return side == ContourSide::Outer ? p.outer : p.inner;
-}
-
 // Fresh ids for n new features of a contour: the next free number and those after it.
 QStringList freshIds(const PartProfile &profile, ContourSide side, int n)
 {
@@ -173,7 +168,7 @@ std::optional<UndercutSize> undercutSizeFor(double diameter_mm)
 ProfileEdit insertUndercut(const PartProfile &profile, ContourSide side, int vertex, UndercutForm form)
 {
     PartProfile result = profile;
-    Contour &contour = contourOf(result, side);
+    Contour &contour = result.contour(side);
     std::vector<Segment> &s = contour.segments;
     const auto k = static_cast<std::size_t>(std::max(vertex, 0));
     if (vertex <= 0 || k >= s.size() || contour.breaksBefore(k))
@@ -244,7 +239,7 @@ ProfileEdit insertGroove(const PartProfile &profile, const QString &featureId, d
     if (bottom <= kProfileEpsilon_mm)
         return Undercuts::tr("a groove %1 mm deep would reach the axis from Ø%2 mm").arg(mm(depth_mm), mm(2.0 * r));
     PartProfile result = profile;
-    std::vector<Segment> &s = contourOf(result, ref->side).segments;
+    std::vector<Segment> &s = result.contour(ref->side).segments;
     const auto i = static_cast<std::size_t>(ref->index);
     const QStringList ids = freshIds(profile, ref->side, 4);
     const Segment rest = makeFeature(ids[3], cylinder.name, SegmentKind::Cylinder, {zEnd, r}, {z1, r});

@@ -254,7 +254,7 @@ const Tool &toolFor(const Project &project, const QString &featureId, ContourSid
 void checkGrooves(const Project &project, Diagnostics &out)
 {
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
-        const Contour &contour = side == ContourSide::Outer ? project.part.outer : project.part.inner;
+        const Contour &contour = project.part.contour(side);
         for (const Groove &g : groovesOf(contour, side)) {
             const Tool &tool = toolFor(project, g.leftFaceId, side);
             const InsertParseResult insert = parseInsertCode(tool.insertCode);

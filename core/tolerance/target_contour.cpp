@@ -86,7 +86,7 @@ std::vector<DiameterTarget> diameterTargets(const Project &project)
 
 Contour targetContour(const Project &project, ContourSide side)
 {
-    Contour contour = side == ContourSide::Outer ? project.part.outer : project.part.inner;
+    Contour contour = project.part.contour(side);
     std::vector<Segment> &segments = contour.segments;
     if (segments.empty())
         return contour;

@@ -71,7 +71,7 @@ OperationsDialog::OperationsDialog(const Project &project, Apply apply, QWidget 
     layout->addWidget(m_message);
     layout->addWidget(box);
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
-        for (const Segment &s : (side == ContourSide::Outer ? project.part.outer : project.part.inner).segments) {
+        for (const Segment &s : project.part.contour(side).segments) {
             auto *item = new QListWidgetItem(featureText(s, side), m_features);
             item->setData(Qt::UserRole, s.id);
             item->setCheckState(Qt::Unchecked);
