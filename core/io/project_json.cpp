@@ -403,11 +403,11 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
     if (const auto clamping = r.object(QStringLiteral("clamping"), Presence::Required))
         p.clamping = readClamping(*clamping, QStringLiteral("clamping"), out);
     p.passes = readList<CuttingPass>(r, QStringLiteral("passes"), out, readPass);
-    if (version && *version >= 2) {
-        p.firstOperationName = r.text(QStringLiteral("first_operation_name"), Presence::Optional).value_or(QString());
-        p.furtherOperations = readList<Operation>(r, QStringLiteral("further_operations"), out,
-                                                  [&out](JsonObjectReader &op) { return readOperation(op, out); });
-    }
+    // Read in a version-1 file too (a hand-edited one): left unknown there, they would be written
+    // back as version 2, where they mean something, and the project would change on its reload.
+    p.firstOperationName = r.text(QStringLiteral("first_operation_name"), Presence::Optional).value_or(QString());
+    p.furtherOperations = readList<Operation>(r, QStringLiteral("further_operations"), out,
+                                              [&out](JsonObjectReader &op) { return readOperation(op, out); });
     p.datums = readList<Datum>(r, QStringLiteral("datums"), out, readDatum);
     if (const auto model = r.object(QStringLiteral("cutting_model"), Presence::Optional))
         p.cuttingModel = readCuttingModel(*model, out);

@@ -389,6 +389,23 @@ private Q_SLOTS:
                  QStringLiteral("flood"));
     }
 
+    // A version-1 file that holds fields of version 2 (edited by hand) reads them as version 2 does:
+    // left unknown, they were written back into a version-2 file, where they mean something, and
+    // the project changed on its next reload (found by fuzz_project).
+    void versionTwoFieldsInAVersionOneFileSurviveTheUpgrade()
+    {
+        const QByteArray json = edited(exampleJson(QStringLiteral("stepped-shaft-chuck.tolturn")),
+                                       {QStringLiteral("first_operation_name=\"OP 100\"")});
+        QVERIFY(json.contains("\"version\": 1"));
+        const ProjectParseResult first = parseProjectJson(json);
+        QVERIFY(first.project);
+        QCOMPARE(first.project->firstOperationName, QStringLiteral("OP 100"));
+        QVERIFY(first.project->unknownFields.empty());
+        const ProjectParseResult again = parseProjectJson(serializeProjectJson(*first.project));
+        QVERIFY(again.project);
+        QVERIFY(*again.project == *first.project);
+    }
+
     // A project that would not open again is not written (issue 14: calibrate-forces --write
     // saved a negative K_f, and the project no longer opened); the file on disk stays as it was.
     void invalidProjectIsNotWritten()
