@@ -529,11 +529,14 @@ private Q_SLOTS:
         QVERIFY2(back.project, qPrintable(dump(back.diagnostics)));
         QCOMPARE(back.project->furtherOperations, p.furtherOperations);
         QCOMPARE(back.project->clamping, p.clamping);
-        // Version 1 has no operations: a version-1 file that names them is read as version 1 says.
+        // Version 1 has no operations, but a version-1 file that names them (edited by hand) has
+        // them read as version 2 reads them: ignored, they were kept as unknown fields and written
+        // back into version 2, and the project changed on its reload (fuzz_project).
         QByteArray v1 = json;
         v1.replace("\"version\": 2", "\"version\": 1");
         const ProjectParseResult old = parseProjectJson(v1);
-        QVERIFY(!old.project || old.project->furtherOperations.empty());
+        QVERIFY2(old.project, qPrintable(dump(old.diagnostics)));
+        QCOMPARE(old.project->furtherOperations, p.furtherOperations);
     }
 };
 
