@@ -105,7 +105,50 @@ StationInfluence stationInfluence(const Sweeps &s, std::size_t node, double z, d
     return si;
 }
 
+// Nodes closer than a micrometre merged (a station on a vertex).
+NodeIndex mergedNodes(const std::set<double> &nodeSet)
+{
+    NodeIndex index;
+    for (const double z : nodeSet) {
+        if (index.nodes.empty() || z - index.nodes.back() > 1e-6)
+            index.nodes.push_back(z);
+    }
+    return index;
+}
+
+// The supports and profile vertices inside them: the nodes every beam of the part has.
+std::set<double> supportAndVertexNodes(const SectionAlongZ &section, const TurningInputs &in)
+{
+    std::set<double> nodeSet{in.supportStart_mm, in.supportEnd_mm};
+    for (const double z : section.breakpoints()) {
+        if (z > in.supportStart_mm && z < in.supportEnd_mm)
+            nodeSet.insert(z);
+    }
+    return nodeSet;
+}
+
+bool heldByChuck(const TurningInputs &in)
+{
+    return in.radialLeft.fixedRotation || in.radialLeft.stiffness(1, 1) > 0.0;
+}
+
 } // namespace
+
+std::vector<StationInfluence> influenceAt(const PartProfile &part, const TurningInputs &in,
+                                          const std::vector<double> &z_mm, const std::vector<double> &contactRadius_mm)
+{
+    const SectionAlongZ finished(part, 0.0, 0.0, in.stockOuter_mm, in.solidInner_mm);
+    std::set<double> nodeSet = supportAndVertexNodes(finished, in);
+    nodeSet.insert(z_mm.begin(), z_mm.end());
+    const NodeIndex index = mergedNodes(nodeSet);
+    const std::vector<BeamElementStiffness> elements = buildElements(finished, in.material, index.nodes);
+    const Sweeps sweeps = sweep(index, elements, elements, in);
+    std::vector<StationInfluence> out;
+    for (std::size_t i = 0; i < z_mm.size(); ++i)
+        out.push_back(
+            stationInfluence(sweeps, index.at(z_mm[i]), z_mm[i], contactRadius_mm[i], true, in, heldByChuck(in)));
+    return out;
+}
 
 InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs &in, int stationsPerFeature,
                                    double allowance_mm)
@@ -116,12 +159,8 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
     const double x1 = in.supportEnd_mm;
 
     // Nodes: supports, profile vertices and every station.
-    std::set<double> nodeSet{x0, x1};
     const SectionAlongZ finished(part, 0.0, 0.0, in.stockOuter_mm, in.solidInner_mm);
-    for (const double z : finished.breakpoints()) {
-        if (z > x0 && z < x1)
-            nodeSet.insert(z);
-    }
+    std::set<double> nodeSet = supportAndVertexNodes(finished, in);
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
         const Contour &contour = part.contour(side);
         for (const Segment &s : contour.segments) {
@@ -143,15 +182,9 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
                 nodeSet.insert(z);
         }
     }
-    // Merge nodes closer than a micrometre (a station on a vertex).
-    NodeIndex index;
-    for (const double z : nodeSet) {
-        if (index.nodes.empty() || z - index.nodes.back() > 1e-6)
-            index.nodes.push_back(z);
-    }
-
+    const NodeIndex index = mergedNodes(nodeSet);
     const std::vector<BeamElementStiffness> finishedElements = buildElements(finished, in.material, index.nodes);
-    const bool chuck = in.radialLeft.fixedRotation || in.radialLeft.stiffness(1, 1) > 0.0;
+    const bool chuck = heldByChuck(in);
     auto sweepsFor = [&](ContourSide side) {
         if (allowance_mm <= 0.0)
             return sweep(index, finishedElements, finishedElements, in);

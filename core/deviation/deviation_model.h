@@ -114,6 +114,13 @@ struct InfluenceTable {
 [[nodiscard]] InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs &inputs,
                                                  int stationsPerFeature, double allowance_mm);
 
+// The influence of unit loads on the outer surface at the given tool positions, on the finished
+// section: what buildInfluenceTable() gives at a feature's stations, at any z (the solid check,
+// docs/solid-fe.md).
+[[nodiscard]] std::vector<StationInfluence> influenceAt(const PartProfile &part, const TurningInputs &inputs,
+                                                        const std::vector<double> &z_mm,
+                                                        const std::vector<double> &contactRadius_mm);
+
 // The deviation for the forces and pass in `inputs`, from an influence table built for the same
 // part and supports: what computeDeviation() does after building the table, for callers that
 // evaluate many cutting conditions on one table.

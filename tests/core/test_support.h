@@ -6,9 +6,11 @@
 #include "core/common/diagnostic.h"
 #include "core/part/profile.h"
 
+#include <QByteArray>
 #include <QFile>
 #include <QString>
 #include <QStringList>
+#include <QtGlobal>
 
 #include <sys/stat.h>
 
@@ -30,6 +32,20 @@ inline Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoin
     s.to = b;
     return s;
 }
+
+// Sets an environment variable for the life of the object.
+class ScopedEnv {
+public:
+    ScopedEnv(const char *name, const QByteArray &value) : m_name(name) { qputenv(name, value); }
+
+    ~ScopedEnv() { qunsetenv(m_name); }
+
+    ScopedEnv(const ScopedEnv &) = delete;
+    ScopedEnv &operator=(const ScopedEnv &) = delete;
+
+private:
+    const char *m_name;
+};
 
 // Every finding, one a line, for a failing test's message.
 inline QString dump(const Diagnostics &d)
