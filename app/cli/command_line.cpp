@@ -14,6 +14,7 @@
 #include "app/cli/planning_commands.h"
 #include "app/cli/report_command.h"
 #include "app/cli/stiffness_command.h"
+#include "app/cli/verify_fe_command.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -143,6 +144,7 @@ const std::vector<Command> &commands()
          runReport},
         {QStringLiteral("import"), importSynopsis(), importSummary(), runImport},
         {QStringLiteral("export-step"), exportStepSynopsis(), exportStepSummary(), runExportStep},
+        {QStringLiteral("verify-fe"), verifyFeSynopsis(), verifyFeSummary(), runVerifyFe},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
         {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
          CommandLine::tr(

@@ -628,6 +628,68 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 2);
         QVERIFY(r.err.contains(QStringLiteral("no project file given")));
     }
+
+    // verify-fe (issue 17): the solid check from the command line on a coarse mesh. Its accuracy
+    // is tested in tst_solid_fe; here the command: its table, its JSON and its errors.
+    void verifyFeComparesBeamAndSolid()
+    {
+        const Run r = runCli({QStringLiteral("verify-fe"), QStringLiteral("--json"), QStringLiteral("--stations"),
+                              QStringLiteral("2"), QStringLiteral("--mesh-size"), QStringLiteral("8"),
+                              example("stepped-shaft-chuck.tolturn")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonArray stations = json.value(QStringLiteral("stations")).toArray();
+        QCOMPARE(stations.size(), 2);
+        for (const QJsonValue &v : stations) {
+            const double beam = v.toObject().value(QStringLiteral("beam_radial_um")).toDouble();
+            const double solid = v.toObject().value(QStringLiteral("solid_radial_um")).toDouble();
+            QVERIFY2(beam > 0.0 && solid > 0.0 && std::abs(beam / solid - 1.0) < 0.3,
+                     qPrintable(QStringLiteral("beam %1 µm, solid %2 µm").arg(beam).arg(solid)));
+            QCOMPARE(v.toObject().value(QStringLiteral("radial_difference_pct")).toDouble(),
+                     100.0 * (beam - solid) / solid);
+        }
+        const QJsonObject mesh = json.value(QStringLiteral("mesh")).toObject();
+        QCOMPARE(mesh.value(QStringLiteral("size_mm")).toDouble(), 8.0);
+        QVERIFY(mesh.value(QStringLiteral("degrees_of_freedom")).toInt() <
+                3 * mesh.value(QStringLiteral("nodes")).toInt());
+        const Run table =
+            runCli({QStringLiteral("verify-fe"), QStringLiteral("--stations"), QStringLiteral("1"),
+                    QStringLiteral("--mesh-size"), QStringLiteral("8"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(table.exitCode, 0);
+        QVERIFY(table.out.contains(QStringLiteral("beam-solid [%]")));
+    }
+
+    void verifyFeRefusesBadOptions_data()
+    {
+        QTest::addColumn<QStringList>("options");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("no stations") << QStringList{QStringLiteral("--stations"), QStringLiteral("0")}
+                                     << QStringLiteral("--stations: \"0\"");
+        QTest::newRow("mesh size text") << QStringList{QStringLiteral("--mesh-size"), QStringLiteral("fine")}
+                                        << QStringLiteral("--mesh-size: \"fine\"");
+        QTest::newRow("bad load") << QStringList{QStringLiteral("--load"), QStringLiteral("1,2")}
+                                  << QStringLiteral("--load: \"1,2\"");
+    }
+
+    void verifyFeRefusesBadOptions()
+    {
+        QFETCH(QStringList, options);
+        QFETCH(QString, message);
+        const Run r = runCli(QStringList{QStringLiteral("verify-fe")} + options +
+                             QStringList{example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    }
+
+    void verifyFeWithoutCalculixSaysHowToInstallIt()
+    {
+        qputenv("TOLTURN_CCX", "/nonexistent/ccx");
+        const Run r = runCli({QStringLiteral("verify-fe"), example("stepped-shaft-chuck.tolturn")});
+        qunsetenv("TOLTURN_CCX");
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("sudo apt install calculix-ccx")), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)
