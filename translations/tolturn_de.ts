@@ -28,6 +28,13 @@
     </message>
 </context>
 <context>
+    <name>CalculixText</name>
+    <message>
+        <source>CalculiX wrote displacements for %1 of the %2 load cases</source>
+        <translation>CalculiX hat Verschiebungen für %1 der %2 Lastfälle geschrieben</translation>
+    </message>
+</context>
+<context>
     <name>ClampingAdvice</name>
     <message>
         <source>meets every constraint: %1 %2 per part</source>
@@ -886,6 +893,21 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the drive reading lacks the number &quot;%1&quot;</source>
         <translation>den Antriebsmesswerten fehlt die Zahl „%1“</translation>
+    </message>
+</context>
+<context>
+    <name>ExternalTools</name>
+    <message>
+        <source>&quot;%1&quot; is not on the PATH</source>
+        <translation>„%1“ ist nicht im PATH</translation>
+    </message>
+    <message>
+        <source>%1 is set to &quot;%2&quot;, which is not an executable file</source>
+        <translation>%1 ist auf „%2“ gesetzt; das ist keine ausführbare Datei</translation>
+    </message>
+    <message>
+        <source>%1 was not found: %2. Install it with: sudo apt install %3 (or run tools/bootstrap.sh), or set %4 to its executable.</source>
+        <translation>%1 wurde nicht gefunden: %2. Installieren Sie es mit: sudo apt install %3 (oder führen Sie tools/bootstrap.sh aus), oder setzen Sie %4 auf seine ausführbare Datei.</translation>
     </message>
 </context>
 <context>
@@ -3500,6 +3522,101 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>SolidCheck</name>
+    <message>
+        <source>the solid check was cancelled; the project is unchanged</source>
+        <translation>die Prüfung mit dem Volumenmodell wurde abgebrochen; das Projekt ist unverändert</translation>
+    </message>
+    <message>
+        <source>could not write the mesh script in %1</source>
+        <translation>das Vernetzungsskript konnte nicht in %1 geschrieben werden</translation>
+    </message>
+    <message>
+        <source>meshing with gmsh</source>
+        <translation>Vernetzung mit gmsh</translation>
+    </message>
+    <message>
+        <source>gmsh could not mesh the part with elements of %1 mm (exit code %2): %3</source>
+        <translation>gmsh konnte das Teil nicht mit Elementen von %1 mm vernetzen (Exit-Code %2): %3</translation>
+    </message>
+    <message>
+        <source>could not write the CalculiX input in %1</source>
+        <translation>die CalculiX-Eingabedatei konnte nicht in %1 geschrieben werden</translation>
+    </message>
+    <message>
+        <source>solving with CalculiX: load case %1 of %2</source>
+        <translation>Lösen mit CalculiX: Lastfall %1 von %2</translation>
+    </message>
+    <message>
+        <source>it wrote no results</source>
+        <translation>es wurden keine Ergebnisse geschrieben</translation>
+    </message>
+    <message>
+        <source>CalculiX failed (exit code %1): %2</source>
+        <translation>CalculiX ist fehlgeschlagen (Exit-Code %1): %2</translation>
+    </message>
+    <message>
+        <source>CalculiX moved the part by %1 mm, more than its length: the clamping does not hold the solid</source>
+        <translation>CalculiX hat das Teil um %1 mm verschoben, mehr als seine Länge: die Einspannung hält das Volumenmodell nicht</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s supports are rigid in both models: the check is of the part&apos;s own deflection.</source>
+        <translation>Die Abstützungen der Maschine sind in beiden Modellen starr: geprüft wird die Durchbiegung des Teils selbst.</translation>
+    </message>
+    <message>
+        <source>Solid: quadratic tetrahedra (C3D10) of at most %1 mm; %2 nodes, %3 free degrees of freedom.</source>
+        <translation>Volumenmodell: quadratische Tetraeder (C3D10) von höchstens %1 mm; %2 Knoten, %3 freie Freiheitsgrade.</translation>
+    </message>
+    <message>
+        <source>The force is a uniform traction on a %1 mm square patch of the turned surface; the solid&apos;s deflection is the area mean of the displacement of its section under the load.</source>
+        <translation>Die Kraft ist eine gleichmäßige Flächenlast auf einem quadratischen Feld von %1 mm der gedrehten Fläche; die Durchbiegung des Volumenmodells ist der Flächenmittelwert der Verschiebung seines Querschnitts unter der Last.</translation>
+    </message>
+    <message>
+        <source>A centre holds the end face within 3.35 mm of the axis (DIN 332-1 form A, d2 = 6.7 mm), or 1.78 mm of a bore&apos;s edge.</source>
+        <translation>Eine Spitze hält die Stirnfläche innerhalb von 3,35 mm um die Achse (DIN 332-1 Form A, d2 = 6,7 mm) oder innerhalb von 1,78 mm um die Kante einer Bohrung.</translation>
+    </message>
+    <message>
+        <source>A chuck or collet holds the turned surface of its clamped length rigidly.</source>
+        <translation>Ein Spannfutter oder eine Spannzange hält die gedrehte Fläche auf der Spannlänge starr.</translation>
+    </message>
+    <message>
+        <source>The part is checked as finished: stock a later set-up removes is not in either model.</source>
+        <translation>Das Teil wird im Fertigzustand geprüft: Material, das eine spätere Aufspannung abträgt, ist in keinem der beiden Modelle enthalten.</translation>
+    </message>
+    <message>
+        <source>operation %1 does not exist; the project has %2</source>
+        <translation>Aufspannung %1 existiert nicht; das Projekt hat %2</translation>
+    </message>
+    <message>
+        <source>the mesh size must be a positive length in mm, not %1</source>
+        <translation>die Netzgröße muss eine positive Länge in mm sein, nicht %1</translation>
+    </message>
+    <message>
+        <source>could not make a temporary folder: %1</source>
+        <translation>es konnte kein temporärer Ordner angelegt werden: %1</translation>
+    </message>
+    <message>
+        <source>Files kept in %1 (TOLTURN_FE_KEEP).</source>
+        <translation>Dateien in %1 aufbewahrt (TOLTURN_FE_KEEP).</translation>
+    </message>
+    <message>
+        <source>writing the solid</source>
+        <translation>Schreiben des Volumenmodells</translation>
+    </message>
+    <message>
+        <source>setting up the load cases</source>
+        <translation>Aufstellen der Lastfälle</translation>
+    </message>
+    <message>
+        <source>no turned cylinder or cone between the supports is long enough to load</source>
+        <translation>kein gedrehter Zylinder oder Kegel zwischen den Abstützungen ist lang genug, um ihn zu belasten</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>fertig</translation>
+    </message>
+</context>
+<context>
     <name>SpindleCalibration</name>
     <message>
         <source>the %1 fit gives %2 = %3, which is not a spring (it must be above zero): the measured deviation does not grow from the chuck as a spindle–chuck held by springs would. Check the measurement, the forces, Lc and that the bar is held in the chuck only</source>
@@ -3779,6 +3896,21 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>TetMeshText</name>
+    <message>
+        <source>line %1 of the mesh is not a list of numbers: &quot;%2&quot;</source>
+        <translation>Zeile %1 des Netzes ist keine Liste von Zahlen: „%2“</translation>
+    </message>
+    <message>
+        <source>the mesh has no quadratic tetrahedra (C3D10)</source>
+        <translation>das Netz enthält keine quadratischen Tetraeder (C3D10)</translation>
+    </message>
+    <message>
+        <source>an element of the mesh uses node %1, which it does not define</source>
+        <translation>ein Element des Netzes verwendet Knoten %1, den das Netz nicht definiert</translation>
+    </message>
+</context>
+<context>
     <name>ToleranceVerdicts</name>
     <message>
         <source>feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported length), so no deviation is predicted for it</source>
@@ -4049,6 +4181,69 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>groove bottom Ø%1</source>
         <translation>Einstichgrund Ø%1</translation>
+    </message>
+</context>
+<context>
+    <name>VerifyFeCommand</name>
+    <message>
+        <source>Solid check of %1 (%2): E = %3 MPa, nu = %4</source>
+        <translation>Prüfung mit Volumenmodell von %1 (%2): E = %3 MPa, nu = %4</translation>
+    </message>
+    <message>
+        <source>Force at each station: Fr = %1 N, Ft = %2 N, Fa = %3 N</source>
+        <translation>Kraft an jeder Station: Fr = %1 N, Ft = %2 N, Fa = %3 N</translation>
+    </message>
+    <message>
+        <source>Mesh: C3D10 of at most %1 mm, %2 nodes, %3 elements, %4 degrees of freedom; gmsh %5 s, CalculiX %6 s, beam %7 ms</source>
+        <translation>Netz: C3D10 von höchstens %1 mm, %2 Knoten, %3 Elemente, %4 Freiheitsgrade; gmsh %5 s, CalculiX %6 s, Balken %7 ms</translation>
+    </message>
+    <message>
+        <source>  z [mm]   D [mm]   radial deflection [um]: beam    solid   beam-solid [%]   tangential [um]: beam    solid</source>
+        <translation>  z [mm]   D [mm]  Durchbiegung rad. [um]: Balken  Volumen  Balken-Vol. [%]  tangential [um]: Balken  Volumen</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>Check the beam against a solid model: the part meshed in quadratic tetrahedra with gmsh, held as its clamping holds it, loaded at N tool positions and solved with CalculiX; beam and solid deflection per station with the difference, the mesh size and degrees of freedom.</source>
+        <translation>Den Balken mit einem Volumenmodell prüfen: das Teil mit gmsh in quadratische Tetraeder vernetzt, so gehalten, wie seine Einspannung es hält, an N Werkzeugpositionen belastet und mit CalculiX gelöst; Durchbiegung von Balken und Volumenmodell je Station mit der Differenz, die Netzgröße und die Freiheitsgrade.</translation>
+    </message>
+    <message>
+        <source>Print the result as JSON.</source>
+        <translation>Das Ergebnis als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>Tool positions along the part, 1 to %1 (default 5).</source>
+        <translation>Werkzeugpositionen entlang des Teils, 1 bis %1 (Standard 5).</translation>
+    </message>
+    <message>
+        <source>Largest element edge in mm (default: a fifth of the smallest turned diameter, at least 1 mm).</source>
+        <translation>Größte Elementkante in mm (Standard: ein Fünftel des kleinsten gedrehten Durchmessers, mindestens 1 mm).</translation>
+    </message>
+    <message>
+        <source>Forces radial, tangential, axial in N instead of the pass&apos;s.</source>
+        <translation>Kräfte radial, tangential, axial in N statt der Kräfte des Schnitts.</translation>
+    </message>
+    <message>
+        <source>Report the progress on standard error, as lines &quot;progress F&quot; with F from 0 to 1.</source>
+        <translation>Den Fortschritt auf der Standardfehlerausgabe melden, als Zeilen „progress F“ mit F von 0 bis 1.</translation>
+    </message>
+    <message>
+        <source>The project file.</source>
+        <translation>Die Projektdatei.</translation>
+    </message>
+    <message>
+        <source>--stations: &quot;%1&quot; is not a whole number from 1 to %2</source>
+        <translation>--stations: „%1“ ist keine ganze Zahl von 1 bis %2</translation>
+    </message>
+    <message>
+        <source>--mesh-size: &quot;%1&quot; is not a length from 0.2 to 100 mm</source>
+        <translation>--mesh-size: „%1“ ist keine Länge von 0,2 bis 100 mm</translation>
+    </message>
+    <message>
+        <source>--load: &quot;%1&quot; is not three forces Fr,Ft,Fa in N</source>
+        <translation>--load: „%1“ sind keine drei Kräfte Fr,Ft,Fa in N</translation>
     </message>
 </context>
 <context>
@@ -5106,6 +5301,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The set-ups the part is turned in and the features each cuts</source>
         <translation>Die Aufspannungen, in denen das Teil gedreht wird, und die Formelemente, die jede bearbeitet</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>E&amp;xtras</translation>
+    </message>
+    <message>
+        <source>Check with &amp;Solid FE…</source>
+        <translation>Mit &amp;FE-Volumenmodell prüfen…</translation>
+    </message>
+    <message>
+        <source>Check the beam&apos;s deflection of the part against a solid model meshed with gmsh and solved with CalculiX</source>
+        <translation>Die Verformung des Teils im Balkenmodell mit einem Volumenmodell prüfen, vernetzt mit gmsh und gelöst mit CalculiX</translation>
     </message>
 </context>
 <context>
@@ -6621,6 +6828,172 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3); a collet is built in at its face, its stiffness not published (taken as rigid, said in the verdicts).</source>
         <translation>Randbedingungen des Werkstückbalkens: an der Futterstirnseite eingespannt, von der Reitstockspitze gestützt oder zwischen zwei Spitzen (MODEL.md §3); eine Spannzange spannt an ihrer Stirnseite ein, ihre Steifigkeit ist nicht veröffentlicht (als starr angenommen, in den Bewertungen genannt).</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::SolidCheckDialog</name>
+    <message>
+        <source>The largest edge of the tetrahedra gmsh meshes the part with: smaller is more exact and slower</source>
+        <translation>Die größte Kantenlänge der Tetraeder, mit denen gmsh das Teil vernetzt: kleiner ist genauer und langsamer</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Check with Solid FE</source>
+        <translation>Mit FE-Volumenmodell prüfen</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3 end held</source>
+        <translation>%1: %2, Ende %3 gespannt</translation>
+    </message>
+    <message>
+        <source>The part of the set-up is meshed in quadratic tetrahedra with gmsh, held as its clamping holds it, loaded by the cutting force at each station and solved with CalculiX; its deflection is compared with the beam&apos;s. A coarse mesh takes seconds, a fine one minutes. The project is not changed.</source>
+        <translation>Das Teil der Aufspannung wird mit gmsh in quadratische Tetraeder vernetzt, so gehalten, wie seine Aufspannung es hält, an jeder Station mit der Schnittkraft belastet und mit CalculiX gelöst; seine Verformung wird mit der des Balkens verglichen. Ein grobes Netz braucht Sekunden, ein feines Minuten. Das Projekt wird nicht geändert.</translation>
+    </message>
+    <message>
+        <source>The set-up checked: its part as held and its finishing pass&apos;s force</source>
+        <translation>Die geprüfte Aufspannung: ihr Teil wie gespannt und die Kraft ihres Schlichtschnitts</translation>
+    </message>
+    <message>
+        <source>Tool positions, evenly along the supported length: one load case of CalculiX each</source>
+        <translation>Werkzeugstellungen, gleichmäßig über die abgestützte Länge verteilt: je ein Lastfall für CalculiX</translation>
+    </message>
+    <message>
+        <source>Operation:</source>
+        <translation>Aufspannung:</translation>
+    </message>
+    <message>
+        <source>Stations:</source>
+        <translation>Stationen:</translation>
+    </message>
+    <message>
+        <source>Mesh size:</source>
+        <translation>Netzgröße:</translation>
+    </message>
+    <message>
+        <source>default %1 %2: a fifth of the smallest outer diameter between the supports</source>
+        <translation>Standard %1 %2: ein Fünftel des kleinsten Außendurchmessers zwischen den Abstützungen</translation>
+    </message>
+    <message>
+        <source>Choose a mesh size of at least %1 %2: a finer mesh of a whole part takes gmsh and CalculiX hours and more memory than the computer has.</source>
+        <translation>Wählen Sie eine Netzgröße von mindestens %1 %2: Ein feineres Netz eines ganzen Teils kostet gmsh und CalculiX Stunden und mehr Speicher, als der Rechner hat.</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>Prüfung läuft…</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+    <message>
+        <source>done — %p%</source>
+        <translation>fertig — %p%</translation>
+    </message>
+    <message>
+        <source>Checked in %1 s. The beam&apos;s radial deflection differs from the solid&apos;s by at most %2 %.</source>
+        <translation>Geprüft in %1 s. Die radiale Verformung des Balkens weicht von der des Volumenmodells um höchstens %2 % ab.</translation>
+    </message>
+    <message>
+        <source>The project cannot be checked:</source>
+        <translation>Das Projekt kann nicht geprüft werden:</translation>
+    </message>
+    <message>
+        <source>The check needs gmsh and CalculiX, and one of them is missing:</source>
+        <translation>Die Prüfung braucht gmsh und CalculiX, und eines davon fehlt:</translation>
+    </message>
+    <message>
+        <source>Meshing the part failed:</source>
+        <translation>Das Vernetzen des Teils ist fehlgeschlagen:</translation>
+    </message>
+    <message>
+        <source>Solving failed:</source>
+        <translation>Das Lösen ist fehlgeschlagen:</translation>
+    </message>
+    <message>
+        <source>The check was cancelled; the project is unchanged.</source>
+        <translation>Die Prüfung wurde abgebrochen; das Projekt ist unverändert.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::SolidCheckView</name>
+    <message>
+        <source>z [%1]</source>
+        <translation>z [%1]</translation>
+    </message>
+    <message>
+        <source>Ø [%1]</source>
+        <translation>Ø [%1]</translation>
+    </message>
+    <message>
+        <source>beam radial [%1]</source>
+        <translation>Balken radial [%1]</translation>
+    </message>
+    <message>
+        <source>solid radial [%1]</source>
+        <translation>Volumen radial [%1]</translation>
+    </message>
+    <message>
+        <source>beam − solid [%]</source>
+        <translation>Balken − Volumen [%]</translation>
+    </message>
+    <message>
+        <source>beam tangential [%1]</source>
+        <translation>Balken tangential [%1]</translation>
+    </message>
+    <message>
+        <source>solid tangential [%1]</source>
+        <translation>Volumen tangential [%1]</translation>
+    </message>
+    <message>
+        <source>The tool position, from the end the set-up holds</source>
+        <translation>Die Werkzeugstellung, vom Ende aus, das die Aufspannung hält</translation>
+    </message>
+    <message>
+        <source>(beam − solid) / solid of the radial deflection: positive where the beam is the softer</source>
+        <translation>(Balken − Volumen) / Volumen der radialen Verformung: positiv, wo der Balken der weichere ist</translation>
+    </message>
+    <message>
+        <source>Radial deflection of the part under the cutting force</source>
+        <translation>Radiale Verformung des Teils unter der Schnittkraft</translation>
+    </message>
+    <message>
+        <source>z from the held end [%1]</source>
+        <translation>z vom gespannten Ende [%1]</translation>
+    </message>
+    <message>
+        <source>radial deflection [%1]</source>
+        <translation>radiale Verformung [%1]</translation>
+    </message>
+    <message>
+        <source>beam</source>
+        <translation>Balken</translation>
+    </message>
+    <message>
+        <source>solid (CalculiX)</source>
+        <translation>Volumenmodell (CalculiX)</translation>
+    </message>
+    <message>
+        <source>Mesh: C3D10 tetrahedra of at most %1 %2, %3 nodes, %4 elements, %5 degrees of freedom · gmsh %6 s, CalculiX %7 s</source>
+        <translation>Netz: C3D10-Tetraeder von höchstens %1 %2, %3 Knoten, %4 Elemente, %5 Freiheitsgrade · gmsh %6 s, CalculiX %7 s</translation>
+    </message>
+    <message>
+        <source>Held: %1 · E = %2 MPa, ν = %3 · force at each station: Fc %4 N, Ff %5 N, Fp %6 N</source>
+        <translation>Gespannt: %1 · E = %2 MPa, ν = %3 · Kraft an jeder Station: Fc %4 N, Ff %5 N, Fp %6 N</translation>
     </message>
 </context>
 <context>

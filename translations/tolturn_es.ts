@@ -28,6 +28,13 @@
     </message>
 </context>
 <context>
+    <name>CalculixText</name>
+    <message>
+        <source>CalculiX wrote displacements for %1 of the %2 load cases</source>
+        <translation>CalculiX escribió desplazamientos para %1 de los %2 casos de carga</translation>
+    </message>
+</context>
+<context>
     <name>ClampingAdvice</name>
     <message>
         <source>meets every constraint: %1 %2 per part</source>
@@ -886,6 +893,21 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the drive reading lacks the number &quot;%1&quot;</source>
         <translation>a la lectura de los accionamientos le falta el número «%1»</translation>
+    </message>
+</context>
+<context>
+    <name>ExternalTools</name>
+    <message>
+        <source>&quot;%1&quot; is not on the PATH</source>
+        <translation>«%1» no está en el PATH</translation>
+    </message>
+    <message>
+        <source>%1 is set to &quot;%2&quot;, which is not an executable file</source>
+        <translation>%1 tiene el valor «%2», que no es un archivo ejecutable</translation>
+    </message>
+    <message>
+        <source>%1 was not found: %2. Install it with: sudo apt install %3 (or run tools/bootstrap.sh), or set %4 to its executable.</source>
+        <translation>No se ha encontrado %1: %2. Instálelo con: sudo apt install %3 (o ejecute tools/bootstrap.sh), o asigne a %4 la ruta de su ejecutable.</translation>
     </message>
 </context>
 <context>
@@ -3500,6 +3522,101 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>SolidCheck</name>
+    <message>
+        <source>the solid check was cancelled; the project is unchanged</source>
+        <translation>la comprobación con el sólido se ha cancelado; el proyecto no ha cambiado</translation>
+    </message>
+    <message>
+        <source>could not write the mesh script in %1</source>
+        <translation>no se ha podido escribir el script de mallado en %1</translation>
+    </message>
+    <message>
+        <source>meshing with gmsh</source>
+        <translation>mallando con gmsh</translation>
+    </message>
+    <message>
+        <source>gmsh could not mesh the part with elements of %1 mm (exit code %2): %3</source>
+        <translation>gmsh no ha podido mallar la pieza con elementos de %1 mm (código de salida %2): %3</translation>
+    </message>
+    <message>
+        <source>could not write the CalculiX input in %1</source>
+        <translation>no se ha podido escribir la entrada de CalculiX en %1</translation>
+    </message>
+    <message>
+        <source>solving with CalculiX: load case %1 of %2</source>
+        <translation>resolviendo con CalculiX: caso de carga %1 de %2</translation>
+    </message>
+    <message>
+        <source>it wrote no results</source>
+        <translation>no escribió ningún resultado</translation>
+    </message>
+    <message>
+        <source>CalculiX failed (exit code %1): %2</source>
+        <translation>CalculiX ha fallado (código de salida %1): %2</translation>
+    </message>
+    <message>
+        <source>CalculiX moved the part by %1 mm, more than its length: the clamping does not hold the solid</source>
+        <translation>CalculiX ha desplazado la pieza %1 mm, más que su longitud: la sujeción no retiene el sólido</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s supports are rigid in both models: the check is of the part&apos;s own deflection.</source>
+        <translation>Los apoyos de la máquina son rígidos en ambos modelos: se comprueba la deflexión propia de la pieza.</translation>
+    </message>
+    <message>
+        <source>Solid: quadratic tetrahedra (C3D10) of at most %1 mm; %2 nodes, %3 free degrees of freedom.</source>
+        <translation>Sólido: tetraedros cuadráticos (C3D10) de como mucho %1 mm; %2 nodos, %3 grados de libertad libres.</translation>
+    </message>
+    <message>
+        <source>The force is a uniform traction on a %1 mm square patch of the turned surface; the solid&apos;s deflection is the area mean of the displacement of its section under the load.</source>
+        <translation>La fuerza es una carga superficial uniforme sobre una zona cuadrada de %1 mm de la superficie torneada; la deflexión del sólido es la media sobre el área del desplazamiento de su sección bajo la carga.</translation>
+    </message>
+    <message>
+        <source>A centre holds the end face within 3.35 mm of the axis (DIN 332-1 form A, d2 = 6.7 mm), or 1.78 mm of a bore&apos;s edge.</source>
+        <translation>Un punto sujeta la cara frontal a menos de 3,35 mm del eje (DIN 332-1 forma A, d2 = 6,7 mm), o a menos de 1,78 mm del borde de un agujero.</translation>
+    </message>
+    <message>
+        <source>A chuck or collet holds the turned surface of its clamped length rigidly.</source>
+        <translation>Un plato o una pinza sujeta rígidamente la superficie torneada de su longitud de sujeción.</translation>
+    </message>
+    <message>
+        <source>The part is checked as finished: stock a later set-up removes is not in either model.</source>
+        <translation>La pieza se comprueba acabada: el material que retira un montaje posterior no está en ninguno de los dos modelos.</translation>
+    </message>
+    <message>
+        <source>operation %1 does not exist; the project has %2</source>
+        <translation>la operación %1 no existe; el proyecto tiene %2</translation>
+    </message>
+    <message>
+        <source>the mesh size must be a positive length in mm, not %1</source>
+        <translation>el tamaño de malla debe ser una longitud positiva en mm, no %1</translation>
+    </message>
+    <message>
+        <source>could not make a temporary folder: %1</source>
+        <translation>no se ha podido crear una carpeta temporal: %1</translation>
+    </message>
+    <message>
+        <source>Files kept in %1 (TOLTURN_FE_KEEP).</source>
+        <translation>Archivos conservados en %1 (TOLTURN_FE_KEEP).</translation>
+    </message>
+    <message>
+        <source>writing the solid</source>
+        <translation>escribiendo el sólido</translation>
+    </message>
+    <message>
+        <source>setting up the load cases</source>
+        <translation>preparando los casos de carga</translation>
+    </message>
+    <message>
+        <source>no turned cylinder or cone between the supports is long enough to load</source>
+        <translation>ningún cilindro o cono torneado entre los apoyos es lo bastante largo para cargarlo</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>terminado</translation>
+    </message>
+</context>
+<context>
     <name>SpindleCalibration</name>
     <message>
         <source>the %1 fit gives %2 = %3, which is not a spring (it must be above zero): the measured deviation does not grow from the chuck as a spindle–chuck held by springs would. Check the measurement, the forces, Lc and that the bar is held in the chuck only</source>
@@ -3779,6 +3896,21 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>TetMeshText</name>
+    <message>
+        <source>line %1 of the mesh is not a list of numbers: &quot;%2&quot;</source>
+        <translation>la línea %1 de la malla no es una lista de números: «%2»</translation>
+    </message>
+    <message>
+        <source>the mesh has no quadratic tetrahedra (C3D10)</source>
+        <translation>la malla no contiene tetraedros cuadráticos (C3D10)</translation>
+    </message>
+    <message>
+        <source>an element of the mesh uses node %1, which it does not define</source>
+        <translation>un elemento de la malla usa el nodo %1, que la malla no define</translation>
+    </message>
+</context>
+<context>
     <name>ToleranceVerdicts</name>
     <message>
         <source>feature %1 is not cut in this set-up (it lies in the chuck jaws or outside the supported length), so no deviation is predicted for it</source>
@@ -4049,6 +4181,69 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>groove bottom Ø%1</source>
         <translation>fondo de la ranura Ø%1</translation>
+    </message>
+</context>
+<context>
+    <name>VerifyFeCommand</name>
+    <message>
+        <source>Solid check of %1 (%2): E = %3 MPa, nu = %4</source>
+        <translation>Comprobación con sólido de %1 (%2): E = %3 MPa, nu = %4</translation>
+    </message>
+    <message>
+        <source>Force at each station: Fr = %1 N, Ft = %2 N, Fa = %3 N</source>
+        <translation>Fuerza en cada estación: Fr = %1 N, Ft = %2 N, Fa = %3 N</translation>
+    </message>
+    <message>
+        <source>Mesh: C3D10 of at most %1 mm, %2 nodes, %3 elements, %4 degrees of freedom; gmsh %5 s, CalculiX %6 s, beam %7 ms</source>
+        <translation>Malla: C3D10 de como mucho %1 mm, %2 nodos, %3 elementos, %4 grados de libertad; gmsh %5 s, CalculiX %6 s, viga %7 ms</translation>
+    </message>
+    <message>
+        <source>  z [mm]   D [mm]   radial deflection [um]: beam    solid   beam-solid [%]   tangential [um]: beam    solid</source>
+        <translation>  z [mm]   D [mm]     deflexión radial [um]: viga   sólido  viga-sólido [%]    tangencial [um]: viga   sólido</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>nota: %1</translation>
+    </message>
+    <message>
+        <source>Check the beam against a solid model: the part meshed in quadratic tetrahedra with gmsh, held as its clamping holds it, loaded at N tool positions and solved with CalculiX; beam and solid deflection per station with the difference, the mesh size and degrees of freedom.</source>
+        <translation>Comprobar la viga con un modelo sólido: la pieza mallada en tetraedros cuadráticos con gmsh, sujeta tal como la sostiene su sujeción, cargada en N posiciones de la herramienta y resuelta con CalculiX; deflexión de la viga y del sólido por estación con la diferencia, el tamaño de malla y los grados de libertad.</translation>
+    </message>
+    <message>
+        <source>Print the result as JSON.</source>
+        <translation>Imprimir el resultado como JSON.</translation>
+    </message>
+    <message>
+        <source>Tool positions along the part, 1 to %1 (default 5).</source>
+        <translation>Posiciones de la herramienta a lo largo de la pieza, de 1 a %1 (por defecto 5).</translation>
+    </message>
+    <message>
+        <source>Largest element edge in mm (default: a fifth of the smallest turned diameter, at least 1 mm).</source>
+        <translation>Arista de elemento más larga en mm (por defecto: una quinta parte del menor diámetro torneado, como mínimo 1 mm).</translation>
+    </message>
+    <message>
+        <source>Forces radial, tangential, axial in N instead of the pass&apos;s.</source>
+        <translation>Fuerzas radial, tangencial y axial en N en lugar de las de la pasada.</translation>
+    </message>
+    <message>
+        <source>Report the progress on standard error, as lines &quot;progress F&quot; with F from 0 to 1.</source>
+        <translation>Informar del progreso en la salida de error estándar, como líneas «progress F» con F de 0 a 1.</translation>
+    </message>
+    <message>
+        <source>The project file.</source>
+        <translation>Archivo de proyecto.</translation>
+    </message>
+    <message>
+        <source>--stations: &quot;%1&quot; is not a whole number from 1 to %2</source>
+        <translation>--stations: «%1» no es un número entero de 1 a %2</translation>
+    </message>
+    <message>
+        <source>--mesh-size: &quot;%1&quot; is not a length from 0.2 to 100 mm</source>
+        <translation>--mesh-size: «%1» no es una longitud de 0,2 a 100 mm</translation>
+    </message>
+    <message>
+        <source>--load: &quot;%1&quot; is not three forces Fr,Ft,Fa in N</source>
+        <translation>--load: «%1» no son tres fuerzas Fr,Ft,Fa en N</translation>
     </message>
 </context>
 <context>
@@ -5106,6 +5301,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The set-ups the part is turned in and the features each cuts</source>
         <translation>Los montajes en que se tornea la pieza y los elementos que mecaniza cada uno</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Herramientas</translation>
+    </message>
+    <message>
+        <source>Check with &amp;Solid FE…</source>
+        <translation>Comprobar con &amp;sólido FE…</translation>
+    </message>
+    <message>
+        <source>Check the beam&apos;s deflection of the part against a solid model meshed with gmsh and solved with CalculiX</source>
+        <translation>Comprobar la flexión de la pieza según la viga con un modelo sólido mallado con gmsh y resuelto con CalculiX</translation>
     </message>
 </context>
 <context>
@@ -6621,6 +6828,172 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3); a collet is built in at its face, its stiffness not published (taken as rigid, said in the verdicts).</source>
         <translation>Condiciones de contorno de la viga de la pieza: empotrada en la cara del plato, apoyada en el punto del contrapunto o entre dos puntos (MODEL.md §3); una pinza la empotra en su cara, sin rigidez publicada (tomada como rígida, indicado en los veredictos).</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::SolidCheckDialog</name>
+    <message>
+        <source>The largest edge of the tetrahedra gmsh meshes the part with: smaller is more exact and slower</source>
+        <translation>La arista más larga de los tetraedros con los que gmsh malla la pieza: más pequeña es más exacta y más lenta</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ejecutar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Check with Solid FE</source>
+        <translation>Comprobar con sólido FE</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3 end held</source>
+        <translation>%1: %2, extremo %3 sujetado</translation>
+    </message>
+    <message>
+        <source>The part of the set-up is meshed in quadratic tetrahedra with gmsh, held as its clamping holds it, loaded by the cutting force at each station and solved with CalculiX; its deflection is compared with the beam&apos;s. A coarse mesh takes seconds, a fine one minutes. The project is not changed.</source>
+        <translation>La pieza del montaje se malla en tetraedros cuadráticos con gmsh, sujetada como la sujeta su sujeción, cargada con la fuerza de corte en cada estación y resuelta con CalculiX; su flexión se compara con la de la viga. Una malla gruesa tarda segundos, una fina minutos. El proyecto no se modifica.</translation>
+    </message>
+    <message>
+        <source>The set-up checked: its part as held and its finishing pass&apos;s force</source>
+        <translation>El montaje comprobado: su pieza tal como está sujetada y la fuerza de su pasada de acabado</translation>
+    </message>
+    <message>
+        <source>Tool positions, evenly along the supported length: one load case of CalculiX each</source>
+        <translation>Posiciones de la herramienta, repartidas por igual a lo largo de la longitud apoyada: un caso de carga de CalculiX cada una</translation>
+    </message>
+    <message>
+        <source>Operation:</source>
+        <translation>Operación:</translation>
+    </message>
+    <message>
+        <source>Stations:</source>
+        <translation>Estaciones:</translation>
+    </message>
+    <message>
+        <source>Mesh size:</source>
+        <translation>Tamaño de malla:</translation>
+    </message>
+    <message>
+        <source>default %1 %2: a fifth of the smallest outer diameter between the supports</source>
+        <translation>por defecto %1 %2: una quinta parte del menor diámetro exterior entre los apoyos</translation>
+    </message>
+    <message>
+        <source>Choose a mesh size of at least %1 %2: a finer mesh of a whole part takes gmsh and CalculiX hours and more memory than the computer has.</source>
+        <translation>Elija un tamaño de malla de al menos %1 %2: una malla más fina de una pieza entera lleva a gmsh y CalculiX horas y más memoria de la que tiene el ordenador.</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>Comprobando…</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Cancelando…</translation>
+    </message>
+    <message>
+        <source>done — %p%</source>
+        <translation>terminado — %p%</translation>
+    </message>
+    <message>
+        <source>Checked in %1 s. The beam&apos;s radial deflection differs from the solid&apos;s by at most %2 %.</source>
+        <translation>Comprobado en %1 s. La flexión radial de la viga difiere de la del sólido como mucho un %2 %.</translation>
+    </message>
+    <message>
+        <source>The project cannot be checked:</source>
+        <translation>El proyecto no se puede comprobar:</translation>
+    </message>
+    <message>
+        <source>The check needs gmsh and CalculiX, and one of them is missing:</source>
+        <translation>La comprobación necesita gmsh y CalculiX, y falta uno de ellos:</translation>
+    </message>
+    <message>
+        <source>Meshing the part failed:</source>
+        <translation>El mallado de la pieza ha fallado:</translation>
+    </message>
+    <message>
+        <source>Solving failed:</source>
+        <translation>La resolución ha fallado:</translation>
+    </message>
+    <message>
+        <source>The check was cancelled; the project is unchanged.</source>
+        <translation>La comprobación se ha cancelado; el proyecto no ha cambiado.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelada</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fallida</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::SolidCheckView</name>
+    <message>
+        <source>z [%1]</source>
+        <translation>z [%1]</translation>
+    </message>
+    <message>
+        <source>Ø [%1]</source>
+        <translation>Ø [%1]</translation>
+    </message>
+    <message>
+        <source>beam radial [%1]</source>
+        <translation>viga radial [%1]</translation>
+    </message>
+    <message>
+        <source>solid radial [%1]</source>
+        <translation>sólido radial [%1]</translation>
+    </message>
+    <message>
+        <source>beam − solid [%]</source>
+        <translation>viga − sólido [%]</translation>
+    </message>
+    <message>
+        <source>beam tangential [%1]</source>
+        <translation>viga tangencial [%1]</translation>
+    </message>
+    <message>
+        <source>solid tangential [%1]</source>
+        <translation>sólido tangencial [%1]</translation>
+    </message>
+    <message>
+        <source>The tool position, from the end the set-up holds</source>
+        <translation>La posición de la herramienta, desde el extremo que sujeta el montaje</translation>
+    </message>
+    <message>
+        <source>(beam − solid) / solid of the radial deflection: positive where the beam is the softer</source>
+        <translation>(viga − sólido) / sólido de la flexión radial: positivo donde la viga es la más flexible</translation>
+    </message>
+    <message>
+        <source>Radial deflection of the part under the cutting force</source>
+        <translation>Flexión radial de la pieza bajo la fuerza de corte</translation>
+    </message>
+    <message>
+        <source>z from the held end [%1]</source>
+        <translation>z desde el extremo sujetado [%1]</translation>
+    </message>
+    <message>
+        <source>radial deflection [%1]</source>
+        <translation>flexión radial [%1]</translation>
+    </message>
+    <message>
+        <source>beam</source>
+        <translation>viga</translation>
+    </message>
+    <message>
+        <source>solid (CalculiX)</source>
+        <translation>sólido (CalculiX)</translation>
+    </message>
+    <message>
+        <source>Mesh: C3D10 tetrahedra of at most %1 %2, %3 nodes, %4 elements, %5 degrees of freedom · gmsh %6 s, CalculiX %7 s</source>
+        <translation>Malla: tetraedros C3D10 de como mucho %1 %2, %3 nodos, %4 elementos, %5 grados de libertad · gmsh %6 s, CalculiX %7 s</translation>
+    </message>
+    <message>
+        <source>Held: %1 · E = %2 MPa, ν = %3 · force at each station: Fc %4 N, Ff %5 N, Fp %6 N</source>
+        <translation>Sujeción: %1 · E = %2 MPa, ν = %3 · fuerza en cada estación: Fc %4 N, Ff %5 N, Fp %6 N</translation>
     </message>
 </context>
 <context>

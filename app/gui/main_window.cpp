@@ -16,6 +16,7 @@
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
+#include "widgets/fe/solid_check_dialog.h"
 #include "widgets/measurements/measurements_panel.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/profile/feature_panel.h"
@@ -143,6 +144,7 @@ void MainWindow::createActions()
     createFileMenu();
     createEditMenu();
     createDocks();
+    createToolsMenu();
     createHelpMenu();
 }
 
@@ -356,6 +358,24 @@ void MainWindow::createFileMenu()
     connect(quit, &QAction::triggered, this, &QWidget::close);
 }
 
+void MainWindow::createToolsMenu()
+{
+    QMenu *tools = menuBar()->addMenu(tr("&Tools"));
+    m_solidCheckAction = tools->addAction(tr("Check with &Solid FE…"));
+    m_solidCheckAction->setObjectName(QStringLiteral("solidCheckAction"));
+    m_solidCheckAction->setToolTip(
+        tr("Check the beam's deflection of the part against a solid model meshed with gmsh and solved with CalculiX"));
+    connect(m_solidCheckAction, &QAction::triggered, this, &MainWindow::checkWithSolidFe);
+}
+
+void MainWindow::checkWithSolidFe()
+{
+    if (!m_document->hasProject() || m_document->hasProblems())
+        return;
+    SolidCheckDialog dialog(m_document->project(), m_operation, this);
+    dialog.exec();
+}
+
 // The guide's page for where the focus is: the dock that holds it, or the drawing.
 void MainWindow::showUserGuide()
 {
@@ -418,6 +438,7 @@ void MainWindow::updateTitle()
     m_saveAsAction->setEnabled(has);
     m_exportReportAction->setEnabled(computable);
     m_exportStepAction->setEnabled(computable);
+    m_solidCheckAction->setEnabled(computable);
     setWindowModified(m_document->isModified());
     setWindowTitle(has ? tr("%1[*] — TolTurn").arg(m_document->displayName()) : QStringLiteral("TolTurn"));
 }

@@ -95,7 +95,10 @@ private:
     void createActions();
     void createFileMenu();
     void createEditMenu();
+    void createToolsMenu();
     void createHelpMenu();
+    // Tools > Check with Solid FE…: the set-up shown, checked against a solid model.
+    void checkWithSolidFe();
     void showUserGuide();
     void createDocks();
     void createImportDock();
@@ -140,6 +143,7 @@ private:
     QAction *m_exportReportAction = nullptr;
     QAction *m_saveAsAction = nullptr;
     QAction *m_exportStepAction = nullptr;
+    QAction *m_solidCheckAction = nullptr;
     QDockWidget *m_importDock = nullptr;
     QDockWidget *m_problemsDock = nullptr;
 };

@@ -104,6 +104,16 @@ void LinePlot::addPoints(const QString &name, const QVector<double> &x, const QV
     graph->setData(x, y, false);
 }
 
+void LinePlot::addMarkedCurve(const QString &name, const QVector<double> &x, const QVector<double> &y,
+                              const QColor &color)
+{
+    QCPGraph *graph = m_plot->addGraph();
+    graph->setName(name);
+    graph->setPen(QPen(color, 1.5));
+    graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, color, color, 7));
+    graph->setData(x, y, false);
+}
+
 void LinePlot::rescaleAndReplot()
 {
     m_plot->rescaleAxes();
@@ -111,6 +121,12 @@ void LinePlot::rescaleAndReplot()
     y.expand(0.0);
     const double pad = 0.08 * std::max(y.size(), 1e-12);
     m_plot->yAxis->setRange(y.lower - pad, y.upper + pad);
+    m_plot->replot();
+}
+
+void LinePlot::setXRange(double lower, double upper)
+{
+    m_plot->xAxis->setRange(lower, upper);
     m_plot->replot();
 }
 

@@ -33,8 +33,13 @@ public:
     void addStems(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color);
     // Values measured at separate positions (points of a measured part): a marker each, no line.
     void addPoints(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color);
+    // Values computed at separate positions and joined for the eye: a line through a dot at each.
+    void addMarkedCurve(const QString &name, const QVector<double> &x, const QVector<double> &y, const QColor &color);
     // Fits the axes to the data (y always includes zero) and redraws.
     void rescaleAndReplot();
+    // Shows x from `lower` to `upper` (the whole part, say, where the data are at a few stations)
+    // and redraws; call after rescaleAndReplot().
+    void setXRange(double lower, double upper);
 
     [[nodiscard]] int curveCount() const;
     [[nodiscard]] QString curveName(int index) const;
