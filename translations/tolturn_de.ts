@@ -4245,6 +4245,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>--load: &quot;%1&quot; is not three forces Fr,Ft,Fa in N</source>
         <translation>--load: „%1“ sind keine drei Kräfte Fr,Ft,Fa in N</translation>
     </message>
+    <message>
+        <source>Largest radial difference: %1 % of the largest deflection</source>
+        <translation>Größte radiale Abweichung: %1 % der größten Durchbiegung</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -6897,10 +6901,6 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
         <translation>fertig — %p%</translation>
     </message>
     <message>
-        <source>Checked in %1 s. The beam&apos;s radial deflection differs from the solid&apos;s by at most %2 %.</source>
-        <translation>Geprüft in %1 s. Die radiale Verformung des Balkens weicht von der des Volumenmodells um höchstens %2 % ab.</translation>
-    </message>
-    <message>
         <source>The project cannot be checked:</source>
         <translation>Das Projekt kann nicht geprüft werden:</translation>
     </message>
@@ -6927,6 +6927,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Checked in %1 s. The beam&apos;s radial deflection differs from the solid&apos;s by at most %2 % of the largest deflection.</source>
+        <translation>Geprüft in %1 s. Die radiale Verformung des Balkens weicht von der des Volumenmodells um höchstens %2 % der größten Durchbiegung ab.</translation>
     </message>
 </context>
 <context>

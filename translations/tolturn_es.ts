@@ -4245,6 +4245,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>--load: &quot;%1&quot; is not three forces Fr,Ft,Fa in N</source>
         <translation>--load: «%1» no son tres fuerzas Fr,Ft,Fa en N</translation>
     </message>
+    <message>
+        <source>Largest radial difference: %1 % of the largest deflection</source>
+        <translation>Mayor diferencia radial: %1 % de la mayor deflexión</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -6897,10 +6901,6 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
         <translation>terminado — %p%</translation>
     </message>
     <message>
-        <source>Checked in %1 s. The beam&apos;s radial deflection differs from the solid&apos;s by at most %2 %.</source>
-        <translation>Comprobado en %1 s. La flexión radial de la viga difiere de la del sólido como mucho un %2 %.</translation>
-    </message>
-    <message>
         <source>The project cannot be checked:</source>
         <translation>El proyecto no se puede comprobar:</translation>
     </message>
@@ -6927,6 +6927,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>failed</source>
         <translation>fallida</translation>
+    </message>
+    <message>
+        <source>Checked in %1 s. The beam&apos;s radial deflection differs from the solid&apos;s by at most %2 % of the largest deflection.</source>
+        <translation>Comprobado en %1 s. La deflexión radial de la viga difiere de la del sólido como máximo en un %2 % de la mayor deflexión.</translation>
     </message>
 </context>
 <context>

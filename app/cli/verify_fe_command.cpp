@@ -50,6 +50,7 @@ QJsonObject resultJson(const QString &file, const SolidCheckResult &r)
             {QStringLiteral("seconds"), QJsonObject{{QStringLiteral("mesh"), r.meshSeconds},
                                                     {QStringLiteral("solve"), r.solveSeconds},
                                                     {QStringLiteral("beam"), r.beamSeconds}}},
+            {QStringLiteral("largest_radial_difference_pct"), r.largestRadialDifference_pct()},
             {QStringLiteral("notes"), QJsonArray::fromStringList(r.notes)},
             {QStringLiteral("stations"), stations}};
 }
@@ -88,6 +89,9 @@ void printTable(const QString &file, const SolidCheckResult &r, QTextStream &out
                    .arg(s.radialDifference_pct(), 16, 'f', 2)
                    .arg(s.beamTangential_mm * kUmPerMm, 24, 'f', 3)
                    .arg(s.solidTangential_mm * kUmPerMm, 8, 'f', 3);
+    out << VerifyFeCommand::tr("Largest radial difference: %1 % of the largest deflection")
+               .arg(r.largestRadialDifference_pct(), 0, 'f', 2)
+        << '\n';
     for (const QString &note : r.notes)
         out << VerifyFeCommand::tr("note: %1").arg(note) << '\n';
 }

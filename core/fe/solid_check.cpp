@@ -416,6 +416,17 @@ double SolidCheckStation::radialDifference_pct() const
     return solidRadial_mm != 0.0 ? 100.0 * (beamRadial_mm - solidRadial_mm) / solidRadial_mm : 0.0;
 }
 
+double SolidCheckResult::largestRadialDifference_pct() const
+{
+    double largest = 0.0;
+    double difference = 0.0;
+    for (const SolidCheckStation &s : stations) {
+        largest = std::max(largest, std::abs(s.solidRadial_mm));
+        difference = std::max(difference, std::abs(s.beamRadial_mm - s.solidRadial_mm));
+    }
+    return largest > 0.0 ? 100.0 * difference / largest : 0.0;
+}
+
 double defaultMeshSize(const PartProfile &part)
 {
     double smallest = std::numeric_limits<double>::infinity();

@@ -65,6 +65,11 @@ struct SolidCheckResult {
     QStringList notes; // what the comparison rests on, for people
 
     [[nodiscard]] bool ok() const { return failure == SolidCheckFailure::None; }
+
+    // The largest |beam - solid| radial deflection over the stations as a share of the largest
+    // solid deflection, in per cent: what a form error sees (near a support both are small, and
+    // their ratio says little). 0 without stations.
+    [[nodiscard]] double largestRadialDifference_pct() const;
 };
 
 // Called with the per cent done and what is being done; returning false cancels the run.

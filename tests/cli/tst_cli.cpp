@@ -640,7 +640,7 @@ private Q_SLOTS:
         const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
         const QJsonArray stations = json.value(QStringLiteral("stations")).toArray();
         QCOMPARE(stations.size(), 2);
-        for (const QJsonValue &v : stations) {
+        for (const auto &v : stations) {
             const double beam = v.toObject().value(QStringLiteral("beam_radial_um")).toDouble();
             const double solid = v.toObject().value(QStringLiteral("solid_radial_um")).toDouble();
             QVERIFY2(beam > 0.0 && solid > 0.0 && std::abs(beam / solid - 1.0) < 0.3,

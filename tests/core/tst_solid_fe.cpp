@@ -202,6 +202,17 @@ private Q_SLOTS:
         QVERIFY(!parseCalculixDisplacements(dat, 2, 3).error.isEmpty());
     }
 
+    // Beam 10 and 2 µm against solid 12 and 1 µm: the largest difference, 2 µm, is 1/6 of the
+    // largest deflection, 12 µm (the 100 % at the second station is not what a form error sees).
+    void largestDifferenceIsAShareOfTheLargestDeflection()
+    {
+        SolidCheckResult r;
+        QCOMPARE(r.largestRadialDifference_pct(), 0.0);
+        r.stations = {{100.0, 10.0, 0.010, 0.012, 0.0, 0.0}, {20.0, 10.0, 0.002, 0.001, 0.0, 0.0}};
+        QCOMPARE(r.largestRadialDifference_pct(), 100.0 / 6.0);
+        QCOMPARE(r.stations[1].radialDifference_pct(), 100.0);
+    }
+
     // The set-up: a slender uniform bar (20 mm x 300 mm, L/d = 15) between centres, 1 kN at a
     // quarter, the middle and three quarters of its length. Timoshenko, simply supported, load P
     // at a (b = L - a): w(a) = P a^2 b^2 / (3 E I L) + P a b / (kappa G A L). Within 2 %.
