@@ -984,6 +984,42 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1, operation %2 of %3: the drawing&apos;s %4 end held; the right end face below is the free end of this set-up</source>
         <translation>%1, Aufspannung %2 von %3: Ende %4 der Zeichnung gespannt; die rechte Stirnfläche im folgenden Programm ist das freie Ende dieser Aufspannung</translation>
     </message>
+    <message>
+        <source>bore pass %1</source>
+        <translation>Bohrschnitt %1</translation>
+    </message>
+    <message>
+        <source>bore passes %1-%2</source>
+        <translation>Bohrschnitte %1-%2</translation>
+    </message>
+    <message>
+        <source>bore pass %1 finishing %2</source>
+        <translation>Bohrschnitt %1 Schlichten %2</translation>
+    </message>
+    <message>
+        <source>boring, roughing</source>
+        <translation>Bohren, Schruppen</translation>
+    </message>
+    <message>
+        <source>boring, finishing</source>
+        <translation>Bohren, Schlichten</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>Schruppen</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>Schlichten</translation>
+    </message>
+    <message>
+        <source>The bores are not in this program: the set-up has no boring bar (Set-up dock, Boring bar).</source>
+        <translation>Die Bohrungen sind nicht in diesem Programm: Die Aufspannung hat keine Bohrstange (Dock Aufspannung, Bohrstange).</translation>
+    </message>
+    <message>
+        <source>Tool %1: boring bar %2 (D%3 mm, overhang %4 mm), insert %5</source>
+        <translation>Werkzeug %1: Bohrstange %2 (D%3 mm, Auskraglänge %4 mm), Wendeschneidplatte %5</translation>
+    </message>
 </context>
 <context>
     <name>GCodeCommand</name>
@@ -1008,8 +1044,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Steuerungsdialekt: fanuc (auch Haas), sinumerik oder linuxcnc. Standard: die Steuerung der Maschine.</translation>
     </message>
     <message>
-        <source>Nose radius: &apos;control&apos; programs the contour with G42 (the control compensates), &apos;tip-path&apos; the path of the imaginary tool tip computed by TolTurn. Default: control.</source>
-        <translation>Eckenradius: &apos;control&apos; programmiert die Kontur mit G42 (die Steuerung kompensiert), &apos;tip-path&apos; die von TolTurn berechnete Bahn der theoretischen Schneidenspitze. Standard: control.</translation>
+        <source>Nose radius: &apos;control&apos; programs the contour with G42, the bore with G41 (the control compensates), &apos;tip-path&apos; the path of the imaginary tool tip computed by TolTurn. Default: control.</source>
+        <translation>Eckenradius: &apos;control&apos; programmiert die Kontur mit G42, die Bohrung mit G41 (die Steuerung kompensiert), &apos;tip-path&apos; die von TolTurn berechnete Bahn der theoretischen Schneidenspitze. Standard: control.</translation>
     </message>
     <message>
         <source>Project file.</source>
@@ -2295,6 +2331,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
+    <message>
+        <source>Boring bar: path of the imaginary tool tip for nose radius %1 mm (tip 2), computed by TolTurn: no G41/G42; set the nose radius to 0 in its tool offsets</source>
+        <translation>Bohrstange: Bahn der theoretischen Schneidenspitze für Eckenradius %1 mm (Schneidenlage 2), von TolTurn berechnet: kein G41/G42; Eckenradius in ihren Werkzeugkorrekturen auf 0 setzen</translation>
+    </message>
+    <message>
+        <source>G41 nose radius compensation: tool edge D1 with radius %1 mm, cutting edge position 2</source>
+        <translation>G41 Schneidenradiuskorrektur: Schneide D1 mit Radius %1 mm, Schneidenlage 2</translation>
+    </message>
+    <message>
+        <source>G41 nose radius compensation: tool table diameter D%1, orientation Q3</source>
+        <translation>G41 Schneidenradiuskorrektur: Werkzeugtabelle Durchmesser D%1, Orientierung Q3</translation>
+    </message>
+    <message>
+        <source>G41 nose radius compensation: radius %1 mm and tip 2 in the tool geometry offset</source>
+        <translation>G41 Schneidenradiuskorrektur: Radius %1 mm und Schneidenlage 2 in der Werkzeuggeometrie</translation>
+    </message>
+    <message>
+        <source>Bore pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</source>
+        <translation>Bohrschnitt %1, %2: vc %3 m/min, f %4 mm/U, ap %5 mm</translation>
+    </message>
 </context>
 <context>
     <name>ProfileChains</name>
@@ -2860,6 +2916,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the boring bar</source>
         <translation>die Bohrstange</translation>
+    </message>
+    <message>
+        <source>only a boring bar starts from a pilot hole: give it in boring_tool</source>
+        <translation>nur eine Bohrstange beginnt an einer Vorbohrung: geben Sie sie in boring_tool an</translation>
     </message>
 </context>
 <context>
@@ -3477,14 +3537,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Zeit [min]</translation>
     </message>
     <message>
-        <source>roughing</source>
-        <translation>Schruppen</translation>
-    </message>
-    <message>
-        <source>finishing</source>
-        <translation>Schlichten</translation>
-    </message>
-    <message>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -4084,10 +4136,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>den Spannbacken</translation>
     </message>
     <message>
-        <source>The bore is not in this program (outer contour only).</source>
-        <translation>Die Bohrung ist nicht in diesem Programm (nur Außenkontur).</translation>
-    </message>
-    <message>
         <source>No roughing pass is planned: the finishing pass would cut up to %1 mm more than its depth of cut.</source>
         <translation>Kein Schruppschnitt geplant: der Schlichtschnitt müsste bis zu %1 mm mehr als seine Schnitttiefe abnehmen.</translation>
     </message>
@@ -4110,6 +4158,54 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1: goes back along z (an undercut) without a face and a floor beside it: the program follows it, but only an insert that fits under the overhang can cut it; the insert&apos;s outline is not checked.</source>
         <translation>%1: läuft entlang z zurück (eine Hinterschneidung) ohne Planfläche und Grund daneben: das Programm folgt ihr, aber nur eine Platte, die unter den Überhang passt, kann sie schneiden; die Umrisslinie der Platte wird nicht geprüft.</translation>
+    </message>
+    <message>
+        <source>No roughing pass is planned: the finishing pass would bore up to %1 mm more than its depth of cut from the pilot hole.</source>
+        <translation>Kein Schruppschnitt ist geplant: Der Schlichtschnitt würde von der Vorbohrung aus bis zu %1 mm mehr als seine Schnitttiefe ausbohren.</translation>
+    </message>
+    <message>
+        <source>The bore needs more than %1 roughing levels at the planned depths of cut: the program stops there.</source>
+        <translation>Die Bohrung braucht bei den geplanten Schnitttiefen mehr als %1 Schruppebenen: Das Programm endet dort.</translation>
+    </message>
+    <message>
+        <source>The boring levels leave up to %1 mm more than the finishing allowance of %2 mm: the finishing pass would cut it.</source>
+        <translation>Die Bohrebenen lassen bis zu %1 mm mehr als das Schlichtaufmaß von %2 mm stehen: Der Schlichtschnitt würde es abtragen.</translation>
+    </message>
+    <message>
+        <source>The trailing edge angle of the boring bar is not known (bar entering angle and insert shape): falling contours of the bore are not checked.</source>
+        <translation>Der Nebenschneidenwinkel der Bohrstange ist nicht bekannt (Einstellwinkel der Stange und Plattenform): Fallende Konturen der Bohrung werden nicht geprüft.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 reaches z = %2 mm with its overhang of %3 mm: the bore from z = %4 mm to there is not bored. Set a longer overhang.</source>
+        <translation>Bohrstange %1 reicht mit ihrer Auskraglänge von %3 mm bis z = %2 mm: Die Bohrung von z = %4 mm bis dorthin wird nicht gebohrt. Stellen Sie eine größere Auskraglänge ein.</translation>
+    </message>
+    <message>
+        <source>The pilot hole is not given (Set-up dock, Boring bar): the bore is taken as roughed to Ø%1 mm, its finishing allowance, before this program, and only its finishing pass is programmed.</source>
+        <translation>Die Vorbohrung ist nicht angegeben (Dock Aufspannung, Bohrstange): Die Bohrung gilt als vor diesem Programm auf Ø%1 mm, ihr Schlichtaufmaß, vorgeschruppt, und nur ihr Schlichtschnitt wird programmiert.</translation>
+    </message>
+    <message>
+        <source>The pilot hole Ø%1 mm is wider than the bore less its finishing allowance (Ø%2 mm): the finishing pass cuts less than its depth of cut.</source>
+        <translation>Die Vorbohrung Ø%1 mm ist größer als die Bohrung abzüglich ihres Schlichtaufmaßes (Ø%2 mm): Der Schlichtschnitt schneidet weniger als seine Schnitttiefe.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 (Ø%2 mm, edge %3 mm from its axis) does not fit in the Ø%4 mm hole it enters: it needs a hole of Ø%5 mm or more.</source>
+        <translation>Bohrstange %1 (Ø%2 mm, Schneide %3 mm von ihrer Achse) passt nicht in die Bohrung Ø%4 mm, in die sie einfährt: Sie braucht eine Bohrung von Ø%5 mm oder mehr.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 faces %2 only down to Ø%3 mm (further in, it would touch the opposite wall).</source>
+        <translation>Bohrstange %1 plandreht %2 nur bis Ø%3 mm (weiter innen würde sie die gegenüberliegende Wand berühren).</translation>
+    </message>
+    <message>
+        <source>The bottom of the bore inside the pilot hole, Ø%1 mm, is the drill&apos;s: it is not bored.</source>
+        <translation>Der Bohrungsgrund innerhalb der Vorbohrung, Ø%1 mm, bleibt vom Bohrer: Er wird nicht ausgedreht.</translation>
+    </message>
+    <message>
+        <source>The bar bores through to the held end: the chuck&apos;s or collet&apos;s bore must be free behind it.</source>
+        <translation>Die Stange bohrt bis zum gespannten Ende durch: Die Bohrung des Futters oder der Spannzange muss dahinter frei sein.</translation>
+    </message>
+    <message>
+        <source>The bore is bored from the free end with boring bar %1.</source>
+        <translation>Die Bohrung wird vom freien Ende aus mit Bohrstange %1 ausgedreht.</translation>
     </message>
 </context>
 <context>
@@ -6198,8 +6294,8 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Die Steuerung, für die das Programm geschrieben wird</translation>
     </message>
     <message>
-        <source>Nose radius: G42 by the control</source>
-        <translation>Eckenradius: G42 durch die Steuerung</translation>
+        <source>Nose radius: G41/G42 by the control</source>
+        <translation>Eckenradius: G41/G42 durch die Steuerung</translation>
     </message>
     <message>
         <source>Nose radius: tip path by TolTurn</source>
@@ -6272,14 +6368,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 (no currency set in Preferences)</source>
         <translation>%1 (keine Währung in den Einstellungen)</translation>
-    </message>
-    <message>
-        <source>roughing</source>
-        <translation>Schruppen</translation>
-    </message>
-    <message>
-        <source>finishing</source>
-        <translation>Schlichten</translation>
     </message>
     <message>
         <source>—</source>
@@ -6832,6 +6920,18 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3); a collet is built in at its face, its stiffness not published (taken as rigid, said in the verdicts).</source>
         <translation>Randbedingungen des Werkstückbalkens: an der Futterstirnseite eingespannt, von der Reitstockspitze gestützt oder zwischen zwei Spitzen (MODEL.md §3); eine Spannzange spannt an ihrer Stirnseite ein, ihre Steifigkeit ist nicht veröffentlicht (als starr angenommen, in den Bewertungen genannt).</translation>
+    </message>
+    <message>
+        <source>Diameter of the hole drilled (or cored) before the bar starts: the program roughs the bore from it. &apos;not given&apos; takes the bore as roughed to its finishing allowance before the program.</source>
+        <translation>Durchmesser der Bohrung, die vor der Stange gebohrt (oder vorgegossen) wird: Das Programm schruppt die Bohrung von ihr aus. „nicht angegeben“ nimmt die Bohrung als vor dem Programm auf ihr Schlichtaufmaß vorgeschruppt an.</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <source>Pilot &amp;hole Ø:</source>
+        <translation>&amp;Vorbohrung Ø:</translation>
     </message>
 </context>
 <context>

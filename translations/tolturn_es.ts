@@ -984,6 +984,42 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1, operation %2 of %3: the drawing&apos;s %4 end held; the right end face below is the free end of this set-up</source>
         <translation>%1, operación %2 de %3: extremo %4 del plano sujetado; la cara frontal derecha del programa siguiente es el extremo libre de este montaje</translation>
     </message>
+    <message>
+        <source>bore pass %1</source>
+        <translation>pasada de mandrinado %1</translation>
+    </message>
+    <message>
+        <source>bore passes %1-%2</source>
+        <translation>pasadas de mandrinado %1-%2</translation>
+    </message>
+    <message>
+        <source>bore pass %1 finishing %2</source>
+        <translation>pasada de mandrinado %1 acabado %2</translation>
+    </message>
+    <message>
+        <source>boring, roughing</source>
+        <translation>mandrinado, desbaste</translation>
+    </message>
+    <message>
+        <source>boring, finishing</source>
+        <translation>mandrinado, acabado</translation>
+    </message>
+    <message>
+        <source>roughing</source>
+        <translation>desbaste</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>acabado</translation>
+    </message>
+    <message>
+        <source>The bores are not in this program: the set-up has no boring bar (Set-up dock, Boring bar).</source>
+        <translation>Los agujeros no están en este programa: la preparación no tiene barra de mandrinar (panel Preparación, Barra de mandrinar).</translation>
+    </message>
+    <message>
+        <source>Tool %1: boring bar %2 (D%3 mm, overhang %4 mm), insert %5</source>
+        <translation>Herramienta %1: barra de mandrinar %2 (D%3 mm, voladizo %4 mm), plaquita %5</translation>
+    </message>
 </context>
 <context>
     <name>GCodeCommand</name>
@@ -1008,8 +1044,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Dialecto del control: fanuc (también Haas), sinumerik o linuxcnc. Por defecto: el control de la máquina.</translation>
     </message>
     <message>
-        <source>Nose radius: &apos;control&apos; programs the contour with G42 (the control compensates), &apos;tip-path&apos; the path of the imaginary tool tip computed by TolTurn. Default: control.</source>
-        <translation>Radio de punta: &apos;control&apos; programa el contorno con G42 (compensa el control), &apos;tip-path&apos; la trayectoria de la punta teórica calculada por TolTurn. Por defecto: control.</translation>
+        <source>Nose radius: &apos;control&apos; programs the contour with G42, the bore with G41 (the control compensates), &apos;tip-path&apos; the path of the imaginary tool tip computed by TolTurn. Default: control.</source>
+        <translation>Radio de punta: &apos;control&apos; programa el contorno con G42, el agujero con G41 (compensa el control), &apos;tip-path&apos; la trayectoria de la punta teórica calculada por TolTurn. Por defecto: control.</translation>
     </message>
     <message>
         <source>Project file.</source>
@@ -2295,6 +2331,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Warning: %1</source>
         <translation>Aviso: %1</translation>
     </message>
+    <message>
+        <source>Boring bar: path of the imaginary tool tip for nose radius %1 mm (tip 2), computed by TolTurn: no G41/G42; set the nose radius to 0 in its tool offsets</source>
+        <translation>Barra de mandrinar: trayectoria de la punta teórica de la herramienta para radio de punta %1 mm (punta 2), calculada por TolTurn: sin G41/G42; ponga el radio de punta a 0 en sus correctores</translation>
+    </message>
+    <message>
+        <source>G41 nose radius compensation: tool edge D1 with radius %1 mm, cutting edge position 2</source>
+        <translation>Compensación de radio de punta G41: filo D1 con radio %1 mm, posición de filo 2</translation>
+    </message>
+    <message>
+        <source>G41 nose radius compensation: tool table diameter D%1, orientation Q3</source>
+        <translation>Compensación de radio de punta G41: tabla de herramientas diámetro D%1, orientación Q3</translation>
+    </message>
+    <message>
+        <source>G41 nose radius compensation: radius %1 mm and tip 2 in the tool geometry offset</source>
+        <translation>Compensación de radio de punta G41: radio %1 mm y punta 2 en el corrector de geometría</translation>
+    </message>
+    <message>
+        <source>Bore pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</source>
+        <translation>Pasada de mandrinado %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</translation>
+    </message>
 </context>
 <context>
     <name>ProfileChains</name>
@@ -2860,6 +2916,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the boring bar</source>
         <translation>la barra de mandrinar</translation>
+    </message>
+    <message>
+        <source>only a boring bar starts from a pilot hole: give it in boring_tool</source>
+        <translation>solo una barra de mandrinar parte de un agujero previo: indíquelo en boring_tool</translation>
     </message>
 </context>
 <context>
@@ -3477,14 +3537,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Tiempo [min]</translation>
     </message>
     <message>
-        <source>roughing</source>
-        <translation>desbaste</translation>
-    </message>
-    <message>
-        <source>finishing</source>
-        <translation>acabado</translation>
-    </message>
-    <message>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -4084,10 +4136,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>las garras del plato</translation>
     </message>
     <message>
-        <source>The bore is not in this program (outer contour only).</source>
-        <translation>El taladro no está en este programa (solo contorno exterior).</translation>
-    </message>
-    <message>
         <source>No roughing pass is planned: the finishing pass would cut up to %1 mm more than its depth of cut.</source>
         <translation>No hay pasada de desbaste planificada: la pasada de acabado cortaría hasta %1 mm más que su profundidad de corte.</translation>
     </message>
@@ -4110,6 +4158,54 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1: goes back along z (an undercut) without a face and a floor beside it: the program follows it, but only an insert that fits under the overhang can cut it; the insert&apos;s outline is not checked.</source>
         <translation>%1: retrocede a lo largo de z (una entalla) sin una cara y un fondo a su lado: el programa lo sigue, pero solo una plaquita que quepa bajo el voladizo puede cortarlo; no se comprueba el contorno de la plaquita.</translation>
+    </message>
+    <message>
+        <source>No roughing pass is planned: the finishing pass would bore up to %1 mm more than its depth of cut from the pilot hole.</source>
+        <translation>No hay pasadas de desbaste planificadas: la pasada de acabado mandrinaría desde el agujero previo hasta %1 mm más que su profundidad de corte.</translation>
+    </message>
+    <message>
+        <source>The bore needs more than %1 roughing levels at the planned depths of cut: the program stops there.</source>
+        <translation>El agujero necesita más de %1 niveles de desbaste con las profundidades de corte planificadas: el programa se detiene ahí.</translation>
+    </message>
+    <message>
+        <source>The boring levels leave up to %1 mm more than the finishing allowance of %2 mm: the finishing pass would cut it.</source>
+        <translation>Los niveles de mandrinado dejan hasta %1 mm más que la creces de acabado de %2 mm: la pasada de acabado lo cortaría.</translation>
+    </message>
+    <message>
+        <source>The trailing edge angle of the boring bar is not known (bar entering angle and insert shape): falling contours of the bore are not checked.</source>
+        <translation>No se conoce el ángulo del filo secundario de la barra de mandrinar (ángulo de posición de la barra y forma de la plaquita): no se comprueban los contornos descendentes del agujero.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 reaches z = %2 mm with its overhang of %3 mm: the bore from z = %4 mm to there is not bored. Set a longer overhang.</source>
+        <translation>La barra de mandrinar %1 llega a z = %2 mm con su voladizo de %3 mm: el agujero desde z = %4 mm hasta ahí no se mandrina. Ajuste un voladizo mayor.</translation>
+    </message>
+    <message>
+        <source>The pilot hole is not given (Set-up dock, Boring bar): the bore is taken as roughed to Ø%1 mm, its finishing allowance, before this program, and only its finishing pass is programmed.</source>
+        <translation>No se indica el agujero previo (panel Preparación, Barra de mandrinar): se toma el agujero como desbastado a Ø%1 mm, su creces de acabado, antes de este programa, y solo se programa su pasada de acabado.</translation>
+    </message>
+    <message>
+        <source>The pilot hole Ø%1 mm is wider than the bore less its finishing allowance (Ø%2 mm): the finishing pass cuts less than its depth of cut.</source>
+        <translation>El agujero previo Ø%1 mm es mayor que el agujero menos su creces de acabado (Ø%2 mm): la pasada de acabado corta menos que su profundidad de corte.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 (Ø%2 mm, edge %3 mm from its axis) does not fit in the Ø%4 mm hole it enters: it needs a hole of Ø%5 mm or more.</source>
+        <translation>La barra de mandrinar %1 (Ø%2 mm, filo a %3 mm de su eje) no cabe en el agujero de Ø%4 mm en que entra: necesita un agujero de Ø%5 mm o más.</translation>
+    </message>
+    <message>
+        <source>Boring bar %1 faces %2 only down to Ø%3 mm (further in, it would touch the opposite wall).</source>
+        <translation>La barra de mandrinar %1 refrenta %2 solo hasta Ø%3 mm (más adentro tocaría la pared opuesta).</translation>
+    </message>
+    <message>
+        <source>The bottom of the bore inside the pilot hole, Ø%1 mm, is the drill&apos;s: it is not bored.</source>
+        <translation>El fondo del agujero dentro del agujero previo, Ø%1 mm, es el de la broca: no se mandrina.</translation>
+    </message>
+    <message>
+        <source>The bar bores through to the held end: the chuck&apos;s or collet&apos;s bore must be free behind it.</source>
+        <translation>La barra mandrina de lado a lado hasta el extremo sujeto: el paso del plato o de la pinza debe estar libre detrás.</translation>
+    </message>
+    <message>
+        <source>The bore is bored from the free end with boring bar %1.</source>
+        <translation>El agujero se mandrina desde el extremo libre con la barra de mandrinar %1.</translation>
     </message>
 </context>
 <context>
@@ -6198,8 +6294,8 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>El control para el que se escribe el programa</translation>
     </message>
     <message>
-        <source>Nose radius: G42 by the control</source>
-        <translation>Radio de punta: G42 por el control</translation>
+        <source>Nose radius: G41/G42 by the control</source>
+        <translation>Radio de punta: G41/G42 por el control</translation>
     </message>
     <message>
         <source>Nose radius: tip path by TolTurn</source>
@@ -6272,14 +6368,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 (no currency set in Preferences)</source>
         <translation>%1 (sin moneda en las preferencias)</translation>
-    </message>
-    <message>
-        <source>roughing</source>
-        <translation>desbaste</translation>
-    </message>
-    <message>
-        <source>finishing</source>
-        <translation>acabado</translation>
     </message>
     <message>
         <source>—</source>
@@ -6832,6 +6920,18 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Boundary conditions of the workpiece beam: built in at the chuck face, supported by the tailstock centre, or by two centres (MODEL.md §3); a collet is built in at its face, its stiffness not published (taken as rigid, said in the verdicts).</source>
         <translation>Condiciones de contorno de la viga de la pieza: empotrada en la cara del plato, apoyada en el punto del contrapunto o entre dos puntos (MODEL.md §3); una pinza la empotra en su cara, sin rigidez publicada (tomada como rígida, indicado en los veredictos).</translation>
+    </message>
+    <message>
+        <source>Diameter of the hole drilled (or cored) before the bar starts: the program roughs the bore from it. &apos;not given&apos; takes the bore as roughed to its finishing allowance before the program.</source>
+        <translation>Diámetro del agujero taladrado (o de fundición) antes de que empiece la barra: el programa desbasta el agujero desde él. «no indicado» toma el agujero como desbastado a su creces de acabado antes del programa.</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>no indicado</translation>
+    </message>
+    <message>
+        <source>Pilot &amp;hole Ø:</source>
+        <translation>Agujero &amp;previo Ø:</translation>
     </message>
 </context>
 <context>

@@ -58,11 +58,12 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("dialect"),
         GCodeCommand::tr("Control dialect: fanuc (also Haas), sinumerik or linuxcnc. Default: the machine's control."),
         QStringLiteral("DIALECT"));
-    const QCommandLineOption nose(QStringLiteral("nose"),
-                                  GCodeCommand::tr("Nose radius: 'control' programs the contour with G42 (the control "
-                                                   "compensates), 'tip-path' the path of the imaginary tool tip "
-                                                   "computed by TolTurn. Default: control."),
-                                  QStringLiteral("HANDLING"), QStringLiteral("control"));
+    const QCommandLineOption nose(
+        QStringLiteral("nose"),
+        GCodeCommand::tr("Nose radius: 'control' programs the contour with G42, the bore "
+                         "with G41 (the control compensates), 'tip-path' the path of the imaginary tool tip "
+                         "computed by TolTurn. Default: control."),
+        QStringLiteral("HANDLING"), QStringLiteral("control"));
     const QCommandLineOption learned(
         QStringLiteral("learned"),
         GCodeCommand::tr("Compensate with what was learned of the machine from its measured parts (learn --save)."));
@@ -128,7 +129,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
                .arg(program.programNumber)
                .arg(program.checksum)
         << '\n';
-    for (const QString &w : program.path.warnings)
+    for (const QString &w : program.warnings())
         err << file << ": " << GCodeCommand::tr("warning: %1").arg(w) << '\n';
     if (parser.isSet(compensated))
         printCompensation(finishing.compensation, err);

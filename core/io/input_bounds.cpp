@@ -33,6 +33,8 @@ std::vector<InputBound> makeBounds()
              R"((further_operations\[\]\.)?clamping\.clamped_length_mm|characterisation\.pivot_distance_mm)"),
          kMaxLength_mm, mm},
         {QStringLiteral(R"((further_operations\[\]\.)?(boring_)?tool\.(overhang|edge_offset)_mm)"), 1000.0, mm},
+        {QStringLiteral(R"((further_operations\[\]\.)?(boring_)?tool\.pilot_hole_diameter_mm)"), 2.0 * kMaxRadius_mm,
+         mm},
         {QStringLiteral(R"((further_operations\[\]\.)?(boring_)?tool\.(rake|inclination)_deg)"), 90.0,
          QStringLiteral("°")},
         {QStringLiteral(

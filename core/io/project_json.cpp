@@ -101,6 +101,7 @@ Tool readTool(const QJsonObject &json, const QString &path, Diagnostics &out)
     tool.rake_deg = r.number(QStringLiteral("rake_deg"), Presence::Optional);
     tool.inclination_deg = r.number(QStringLiteral("inclination_deg"), Presence::Optional);
     tool.edgeOffset_mm = r.number(QStringLiteral("edge_offset_mm"), Presence::Optional);
+    tool.pilotHoleDiameter_mm = r.number(QStringLiteral("pilot_hole_diameter_mm"), Presence::Optional);
     r.finish();
     return tool;
 }
@@ -500,6 +501,7 @@ QJsonObject toolJson(const Tool &t)
     insertOptional(tool, "rake_deg", t.rake_deg);
     insertOptional(tool, "inclination_deg", t.inclination_deg);
     insertOptional(tool, "edge_offset_mm", t.edgeOffset_mm);
+    insertOptional(tool, "pilot_hole_diameter_mm", t.pilotHoleDiameter_mm);
     return tool;
 }
 

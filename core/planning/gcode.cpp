@@ -2,6 +2,7 @@
 #include "core/planning/gcode.h"
 
 #include "core/common/library_info.h"
+#include "core/planning/boring_toolpath.h"
 #include "core/planning/path_geometry.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
@@ -27,8 +28,6 @@ QString compensationSummary(const CompensationPlan *plan)
         return Programs::tr("No compensation: toleranced diameters at the middle of their zone");
     QStringList parts;
     for (const FeatureCompensation &f : plan->features) {
-        if (f.side != ContourSide::Outer)
-            continue;
         if (f.action == CompensationAction::ConstantOffset)
             parts << Programs::tr("%1 offset %2 um on diameter").arg(f.featureId, QString::number(f.offset_um, 'f', 1));
         else if (f.action == CompensationAction::ProfileCorrection)
@@ -40,12 +39,12 @@ QString compensationSummary(const CompensationPlan *plan)
 
 // kappa' = 180° - kappa_r - epsilon_r: the minor (trailing) cutting edge angle from the tool
 // cutting edge angle of the holder and the corner angle of the insert (ISO 3002-1 tool angles).
-std::optional<double> trailingEdgeAngle_deg(const Project &project, const TurningInputs &inputs)
+std::optional<double> trailingEdgeAngle_deg(const Tool &tool, double enteringAngle_deg)
 {
-    const InsertParseResult insert = parseInsertCode(project.tool.insertCode);
-    if (!insert.insert || insert.insert->includedAngle_deg <= 0.0 || inputs.enteringAngle_deg <= 0.0)
+    const InsertParseResult insert = parseInsertCode(tool.insertCode);
+    if (!insert.insert || insert.insert->includedAngle_deg <= 0.0 || enteringAngle_deg <= 0.0)
         return std::nullopt;
-    return 180.0 - inputs.enteringAngle_deg - insert.insert->includedAngle_deg;
+    return 180.0 - enteringAngle_deg - insert.insert->includedAngle_deg;
 }
 
 std::vector<CuttingPass> roughingPasses(const Project &project)
@@ -64,21 +63,25 @@ QString passConditions(const CuttingPass &p)
              QString::number(p.depthOfCut_mm, 'f', 3));
 }
 
-// The passes in words, equal roughing passes together: "passes 1-8 roughing vc …; pass 9 finishing …".
+// The passes in words, equal roughing passes together: "passes 1-8 roughing vc …; pass 9 finishing …";
+// a boring path's as "bore passes 10-12 roughing …".
 QString conditionsText(const Toolpath &path)
 {
+    const bool bore = path.side == ContourSide::Inner;
     QStringList parts;
     for (std::size_t i = 0; i < path.roughing.size();) {
         std::size_t j = i;
         while (j + 1 < path.roughing.size() && path.roughing[j + 1].conditions == path.roughing[i].conditions)
             ++j;
         const QString numbers =
-            i == j ? Programs::tr("pass %1").arg(path.roughing[i].number)
-                   : Programs::tr("passes %1-%2").arg(path.roughing[i].number).arg(path.roughing[j].number);
+            i == j ? (bore ? Programs::tr("bore pass %1") : Programs::tr("pass %1")).arg(path.roughing[i].number)
+                   : (bore ? Programs::tr("bore passes %1-%2") : Programs::tr("passes %1-%2"))
+                         .arg(path.roughing[i].number)
+                         .arg(path.roughing[j].number);
         parts << Programs::tr("%1 roughing %2").arg(numbers, passConditions(path.roughing[i].conditions));
         i = j + 1;
     }
-    parts << Programs::tr("pass %1 finishing %2")
+    parts << (bore ? Programs::tr("bore pass %1 finishing %2") : Programs::tr("pass %1 finishing %2"))
                  .arg(path.finishing.number)
                  .arg(passConditions(path.finishing.conditions));
     return parts.join(QStringLiteral("; "));
@@ -92,10 +95,11 @@ double spindleSpeed_rpm(double cuttingSpeed_m_min, double r_mm, double limit_rpm
     return std::min(limit_rpm, 1000.0 * cuttingSpeed_m_min / (2.0 * std::numbers::pi * r_mm));
 }
 
-PassSummary summarise(const PassPath &pass, double limit_rpm)
+PassSummary summarise(const PassPath &pass, ContourSide side, double limit_rpm)
 {
     PassSummary s;
     s.number = pass.number;
+    s.side = side;
     s.kind = pass.conditions.kind;
     s.conditions = pass.conditions;
     s.lowestSpeed_rpm = limit_rpm;
@@ -131,13 +135,29 @@ PassSummary summarise(const PassPath &pass, double limit_rpm)
 
 } // namespace
 
+QStringList TurningProgram::warnings() const
+{
+    QStringList all = path.warnings;
+    if (boring)
+        all << boring->warnings;
+    return all;
+}
+
+QString passKindText(const PassSummary &pass)
+{
+    const bool roughing = pass.kind == PassKind::Roughing;
+    if (pass.side == ContourSide::Inner)
+        return roughing ? Programs::tr("boring, roughing") : Programs::tr("boring, finishing");
+    return roughing ? Programs::tr("roughing") : Programs::tr("finishing");
+}
+
 std::vector<PassSummary> passSummaries(const Toolpath &path, const SpindleLimit &limit,
                                        const std::optional<ForceFunction> &forces)
 {
     std::vector<PassSummary> out;
     for (const PassPath &p : path.roughing)
-        out.push_back(summarise(p, limit.speed_rpm));
-    out.push_back(summarise(path.finishing, limit.speed_rpm));
+        out.push_back(summarise(p, path.side, limit.speed_rpm));
+    out.push_back(summarise(path.finishing, path.side, limit.speed_rpm));
     if (forces) {
         for (PassSummary &s : out) // P = F_c v_c / 60 000 [kW] (F_c in N, v_c in m/min)
             s.power_kW = (*forces)(s.conditions.feed_mm_rev, s.conditions.depthOfCut_mm).tangential_N *
@@ -151,6 +171,76 @@ std::optional<ControlDialect> machineDialect(const DataLibrary &data, const QStr
     const MachineData *m = data.machine(machineId);
     return m ? controlDialectFromKeyword(m->control) : std::nullopt;
 }
+
+namespace {
+
+// The boring bar as the path needs it: its section and reach from the resolved inputs, the pilot
+// hole from the project.
+BoringBarGeometry boringBarGeometry(const Project &project, const BoringInputs &boring)
+{
+    BoringBarGeometry bar;
+    bar.holderCode = boring.holderCode;
+    bar.barDiameter_mm = boring.bar.diameter_mm;
+    bar.edgeOffset_mm = boring.bar.edgeOffset_mm;
+    bar.overhang_mm = boring.bar.overhang_mm;
+    bar.noseRadius_mm = boring.noseRadius_mm;
+    bar.trailingEdgeAngle_deg = trailingEdgeAngle_deg(*project.boringTool, boring.enteringAngle_deg);
+    bar.pilotHoleDiameter_mm = project.boringTool->pilotHoleDiameter_mm;
+    return bar;
+}
+
+// The boring path of the set-up, numbered after the turning passes; a bore without a bar is a note.
+std::optional<Toolpath> boringPath(const Project &project, const TurningInputs &inputs, const ToolpathOptions &options,
+                                   Toolpath &turning)
+{
+    if (!project.boringTool || !inputs.boring) {
+        if (!project.part.inner.empty())
+            turning.notes << Programs::tr("The bores are not in this program: the set-up has no boring bar (Set-up "
+                                          "dock, Boring bar).");
+        return std::nullopt;
+    }
+    std::optional<Toolpath> boring = boringToolpath(project, inputs.pass, roughingPasses(project),
+                                                    boringBarGeometry(project, *inputs.boring), options);
+    if (!boring)
+        return std::nullopt;
+    int number = turning.finishing.number + 1;
+    for (PassPath &p : boring->roughing)
+        p.number = number++;
+    boring->finishing.number = number;
+    return boring;
+}
+
+// The forces of the boring bar's insert (the project seen with it as the tool).
+std::optional<ForceFunction> boringForceModel(const Project &project, const DataLibrary &data)
+{
+    if (!project.boringTool)
+        return std::nullopt;
+    Project view = project;
+    view.tool = *project.boringTool;
+    Diagnostics ignored; // the deviation model has reported them already
+    return projectForceModel(view, data, ignored);
+}
+
+QStringList programHeader(const Project &project, const TurningProgram &program, const GCodeOptions &options)
+{
+    QStringList header;
+    header << Programs::tr("TolTurn %1: %2").arg(tolturnVersion(), project.part.name)
+           << Programs::tr("Material %1, insert %2, holder %3, clamping %4")
+                  .arg(project.materialId, project.tool.insertCode, project.tool.holderCode,
+                       keyword(project.clamping.method))
+           << Programs::tr("Dialect: %1").arg(program.dialectReason) << compensationSummary(options.compensation)
+           << Programs::tr("Conditions: %1").arg(program.conditions);
+    if (project.scope) // one set-up of several: which, and which end of the drawing is in the chuck
+        header.insert(1, Programs::tr("%1, operation %2 of %3: the drawing's %4 end held; the right end face "
+                                      "below is the free end of this set-up")
+                             .arg(project.scope->name)
+                             .arg(project.scope->index + 1)
+                             .arg(project.scope->count)
+                             .arg(displayName(project.clamping.heldEnd)));
+    return header;
+}
+
+} // namespace
 
 TurningProgram turningProgram(const Project &project, const DataLibrary &data, const TurningInputs &inputs,
                               const GCodeOptions &options)
@@ -174,37 +264,43 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     pathOptions.compensation = options.compensation;
     pathOptions.clearance_mm = options.clearance_mm;
     program.path = turningToolpath(project, inputs.pass, roughingPasses(project), inputs.noseRadius_mm,
-                                   trailingEdgeAngle_deg(project, inputs), pathOptions);
+                                   trailingEdgeAngle_deg(project.tool, inputs.enteringAngle_deg), pathOptions);
+    program.boring = boringPath(project, inputs, pathOptions, program.path);
     const std::optional<double> machineLimit =
         project.planning.maxSpindleSpeed_rpm ? project.planning.maxSpindleSpeed_rpm : inputs.maxSpindleSpeed_rpm;
-    program.spindle = spindleLimit(program.path, machineLimit);
+    std::vector<const Toolpath *> paths{&program.path};
+    if (program.boring)
+        paths.push_back(&*program.boring);
+    program.spindle = spindleLimit(paths, machineLimit);
     program.conditions = conditionsText(program.path);
+    if (program.boring)
+        program.conditions += QStringLiteral("; ") + conditionsText(*program.boring);
 
     PostOptions post;
     post.dialect = program.dialect;
     post.programNumber = options.programNumber;
     post.tool = options.tool;
+    post.boringTool = options.boringTool;
     post.spindle = program.spindle;
-    post.header << Programs::tr("TolTurn %1: %2").arg(tolturnVersion(), project.part.name)
-
-                << Programs::tr("Material %1, insert %2, holder %3, clamping %4")
-                       .arg(project.materialId, project.tool.insertCode, project.tool.holderCode,
-                            keyword(project.clamping.method))
-                << Programs::tr("Dialect: %1").arg(program.dialectReason) << compensationSummary(options.compensation)
-                << Programs::tr("Conditions: %1").arg(program.conditions);
-    if (project.scope) // one set-up of several: which, and which end of the drawing is in the chuck
-        post.header.insert(1, Programs::tr("%1, operation %2 of %3: the drawing's %4 end held; the right end face "
-                                           "below is the free end of this set-up")
-                                  .arg(project.scope->name)
-                                  .arg(project.scope->index + 1)
-                                  .arg(project.scope->count)
-                                  .arg(displayName(project.clamping.heldEnd)));
+    post.header = programHeader(project, program, options);
+    if (program.boring)
+        post.boringToolLine =
+            Programs::tr("Tool %1: boring bar %2 (D%3 mm, overhang %4 mm), insert %5")
+                .arg(options.boringTool)
+                .arg(inputs.boring->holderCode, QString::number(inputs.boring->bar.diameter_mm, 'f', 1),
+                     QString::number(inputs.boring->bar.overhang_mm, 'f', 1), project.boringTool->insertCode);
     program.programNumber = options.programNumber;
-    program.text = postProcess(program.path, project.part.length_mm(), post);
+    program.text =
+        postProcess(program.path, program.boring ? &*program.boring : nullptr, project.part.length_mm(), post);
     program.checksum = QString::fromLatin1(
         QCryptographicHash::hash(program.text.toUtf8(), QCryptographicHash::Sha256).toHex().left(16));
     Diagnostics ignored; // the deviation model has reported them already
     program.passes = passSummaries(program.path, program.spindle, projectForceModel(project, data, ignored));
+    if (program.boring) {
+        const std::vector<PassSummary> bore =
+            passSummaries(*program.boring, program.spindle, boringForceModel(project, data));
+        program.passes.insert(program.passes.end(), bore.begin(), bore.end());
+    }
     return program;
 }
 

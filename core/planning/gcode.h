@@ -20,6 +20,7 @@ struct GCodeOptions {
     NoseHandling nose = NoseHandling::ControlCompensation;
     const CompensationPlan *compensation = nullptr; // nullptr: the target contour as it is
     int tool = 1;
+    int boringTool = 2; // the boring bar's, when the set-up bores
     int programNumber = 1000;
     double clearance_mm = 2.0;
 };
@@ -29,12 +30,16 @@ struct GCodeOptions {
 struct PassSummary {
     int number = 0;
     PassKind kind = PassKind::Finishing;
+    ContourSide side = ContourSide::Outer; // inner: a pass of the boring bar
     CuttingPass conditions;
     double lowestSpeed_rpm = 0.0;
     double highestSpeed_rpm = 0.0;
     std::optional<double> power_kW; // F_c v_c / 60 000; unset when the forces cannot be formed
     double time_min = 0.0;          // every feed move: length / (f n(r)), n = min(1000 v_c / (2 pi r), limit)
 };
+
+// A pass as the set-up sheet names it: "roughing", "finishing", "boring, roughing", "boring, finishing".
+[[nodiscard]] QString passKindText(const PassSummary &pass);
 
 [[nodiscard]] std::vector<PassSummary> passSummaries(const Toolpath &path, const SpindleLimit &limit,
                                                      const std::optional<ForceFunction> &forces);
@@ -46,13 +51,18 @@ struct TurningProgram {
     ControlDialect dialect = ControlDialect::FanucHaas;
     QString dialectReason; // the machine's control, the caller's choice, or the default
     Toolpath path;
+    std::optional<Toolpath> boring; // the boring bar's passes, when the set-up bores (boring_toolpath.h)
     SpindleLimit spindle;
     QString conditions; // the passes the program cuts, in words (for the G-code tab and the report)
     std::vector<PassSummary> passes;
+
+    // What a planner must resolve before running it: the turning path's warnings, then the boring path's.
+    [[nodiscard]] QStringList warnings() const;
 };
 
 // The program that turns a project's part on its machine: the roughing passes the project plans
-// (project.passes, kind roughing) and the finishing pass, along the contour the verdicts assume
+// (project.passes, kind roughing) and the finishing pass, then the same passes of the boring bar in
+// the bore open at the free end (when the project has a boring bar), along the contour the verdicts assume
 // (targetContour(): every toleranced diameter at the middle of its zone, MODEL §3), corrected
 // where the compensation plan says, in the dialect of the machine's control. `inputs` are the
 // project resolved against the data (nose radius, entering angle, finishing pass, spindle limit).

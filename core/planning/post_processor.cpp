@@ -28,8 +28,9 @@ QString asciiText(const QString &text)
 {
     QString t = text;
     const std::pair<const char16_t *, const char *> spelled[] = {
-        {u"\u00b0", " deg"}, {u"\u00b5", "u"},  {u"\u00e4", "ae"}, {u"\u00f6", "oe"}, {u"\u00fc", "ue"},
-        {u"\u00c4", "Ae"},   {u"\u00d6", "Oe"}, {u"\u00dc", "Ue"}, {u"\u00df", "ss"}, {u"\u2013", "-"}};
+        {u"\u00b0", " deg"}, {u"\u00b5", "u"},  {u"\u00e4", "ae"}, {u"\u00f6", "oe"},
+        {u"\u00fc", "ue"},   {u"\u00c4", "Ae"}, {u"\u00d6", "Oe"}, {u"\u00dc", "Ue"},
+        {u"\u00df", "ss"},   {u"\u2013", "-"},  {u"\u00d8", "D"},  {u"\u2300", "D"}}; // Ø, the diameter sign
     for (const auto &[from, to] : spelled)
         t.replace(QString::fromUtf16(from), QLatin1String(to));
     t = t.normalized(QString::NormalizationForm_KD);
@@ -46,7 +47,7 @@ struct Dialect {
     bool parenthesisComments = true; // ( … ) or ; …
     QString setup;                   // modal state at the start
     QString rapid, feed, clockwise, counterClockwise, arcRadiusWord;
-    QString compensationRight, compensationOff;
+    QString compensationLeft, compensationRight, compensationOff;
     QString programEnd;
 };
 
@@ -62,6 +63,7 @@ Dialect dialect(ControlDialect id)
                 QStringLiteral("G2"),
                 QStringLiteral("G3"),
                 QStringLiteral("CR="),
+                QStringLiteral("G41"),
                 QStringLiteral("G42"),
                 QStringLiteral("G40"),
                 QStringLiteral("M30")};
@@ -74,6 +76,7 @@ Dialect dialect(ControlDialect id)
                 QStringLiteral("G2"),
                 QStringLiteral("G3"),
                 QStringLiteral("R"),
+                QStringLiteral("G41"),
                 QStringLiteral("G42"),
                 QStringLiteral("G40"),
                 QStringLiteral("M2")};
@@ -88,6 +91,7 @@ Dialect dialect(ControlDialect id)
             QStringLiteral("G02"),
             QStringLiteral("G03"),
             QStringLiteral("R"),
+            QStringLiteral("G41"),
             QStringLiteral("G42"),
             QStringLiteral("G40"),
             QStringLiteral("M30")};
@@ -138,8 +142,11 @@ public:
         return QStringLiteral("X%1 Z%2").arg(coordinate(2.0 * p.r_mm), coordinate(p.z_mm - m_length));
     }
 
-    void moves(const PassPath &pass)
+    // The moves of a pass; the nose is compensated to the right of the travel on an outer contour
+    // (G42) and to the left in a bore (G41).
+    void moves(const PassPath &pass, ContourSide side)
     {
+        const QString &compensationOn = side == ContourSide::Inner ? m_d.compensationLeft : m_d.compensationRight;
         bool feedStated = false;
         for (const ToolMove &m : pass.moves) {
             const bool stays =
@@ -163,7 +170,7 @@ public:
                 break;
             }
             if (m.startsNoseCompensation)
-                word = m_d.compensationRight + QLatin1Char(' ') + word;
+                word = compensationOn + QLatin1Char(' ') + word;
             if (m.endsNoseCompensation)
                 word = m_d.compensationOff + QLatin1Char(' ') + word;
             QString text = word + QLatin1Char(' ') + xz(m.to);
@@ -223,13 +230,35 @@ QString constantSurfaceSpeed(const Dialect &d, double vc, long limit, bool first
     return QStringLiteral("G96 S%1%2").arg(std::lround(vc)).arg(start);
 }
 
+// The imaginary tool tip of an outer turning tool is r_e below and r_e left of the nose centre
+// (Z to the right, X up): tip 3 on Fanuc-style controls and cutting edge position 3 on Sinumerik,
+// orientation 2 in LinuxCNC's tool table. A boring bar's is r_e above and r_e left: tip 2, cutting
+// edge position 2, LinuxCNC orientation 3 (the orientations of LinuxCNC's lathe tool table are
+// read back by its interpreter in tst_toolpath).
 QString noseLine(const Toolpath &path, ControlDialect d)
 {
     const QString r = coordinate(path.noseRadius_mm);
+    if (path.nose == NoseHandling::TipPath && path.side == ContourSide::Inner)
+        return Post::tr("Boring bar: path of the imaginary tool tip for nose radius %1 mm (tip 2), computed by "
+                        "TolTurn: no G41/G42; set the nose radius to 0 in its tool offsets")
+            .arg(r);
     if (path.nose == NoseHandling::TipPath)
         return Post::tr("Path of the imaginary tool tip for nose radius %1 mm, computed by TolTurn: no G41/G42; set "
                         "the nose radius to 0 in the tool offsets")
             .arg(r);
+    if (path.side == ContourSide::Inner) {
+        switch (d) {
+        case ControlDialect::Sinumerik:
+            return Post::tr("G41 nose radius compensation: tool edge D1 with radius %1 mm, cutting edge position 2")
+                .arg(r);
+        case ControlDialect::LinuxCnc:
+            return Post::tr("G41 nose radius compensation: tool table diameter D%1, orientation Q3")
+                .arg(coordinate(2.0 * path.noseRadius_mm));
+        case ControlDialect::FanucHaas:
+            break;
+        }
+        return Post::tr("G41 nose radius compensation: radius %1 mm and tip 2 in the tool geometry offset").arg(r);
+    }
     switch (d) {
     case ControlDialect::Sinumerik:
         return Post::tr("G42 nose radius compensation: tool edge D1 with radius %1 mm, cutting edge position 3").arg(r);
@@ -242,10 +271,11 @@ QString noseLine(const Toolpath &path, ControlDialect d)
     return Post::tr("G42 nose radius compensation: radius %1 mm and tip 3 in the tool geometry offset").arg(r);
 }
 
-QString passLine(const PassPath &pass, bool finishing)
+QString passLine(const PassPath &pass, bool finishing, ContourSide side)
 {
-    return Post::tr("Pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm")
-        .arg(pass.number)
+    const QString text = side == ContourSide::Inner ? Post::tr("Bore pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm")
+                                                    : Post::tr("Pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm");
+    return text.arg(pass.number)
         .arg(finishing ? Post::tr("finishing") : Post::tr("roughing"))
         .arg(QString::number(pass.conditions.cuttingSpeed_m_min, 'f', 0),
              QString::number(pass.conditions.feed_mm_rev, 'f', 3),
@@ -292,7 +322,7 @@ QString displayName(ControlDialect dialect)
     return Post::tr("Fanuc / Haas");
 }
 
-SpindleLimit spindleLimit(const Toolpath &path, std::optional<double> machineLimit_rpm)
+SpindleLimit spindleLimit(const std::vector<const Toolpath *> &paths, std::optional<double> machineLimit_rpm)
 {
     double needed = 0.0;
     double atDiameter = 0.0;
@@ -307,9 +337,11 @@ SpindleLimit spindleLimit(const Toolpath &path, std::optional<double> machineLim
             atSpeed = p.conditions.cuttingSpeed_m_min;
         }
     };
-    for (const PassPath &p : path.roughing)
-        consider(p);
-    consider(path.finishing);
+    for (const Toolpath *path : paths) {
+        for (const PassPath &p : path->roughing)
+            consider(p);
+        consider(path->finishing);
+    }
     SpindleLimit limit;
     limit.speed_rpm = std::ceil(needed);
     limit.reason = Post::tr("Highest speed the plan needs: vc %1 m/min on D%2 mm")
@@ -327,7 +359,7 @@ SpindleLimit spindleLimit(const Toolpath &path, std::optional<double> machineLim
     return limit;
 }
 
-QString postProcess(const Toolpath &path, double partLength_mm, const PostOptions &options)
+QString postProcess(const Toolpath &path, const Toolpath *boring, double partLength_mm, const PostOptions &options)
 {
     const Dialect d = dialect(options.dialect);
     QString text;
@@ -340,11 +372,15 @@ QString postProcess(const Toolpath &path, double partLength_mm, const PostOption
     for (const QString &h : options.header)
         w.commentLine(h);
     w.commentLine(noseLine(path, options.dialect));
+    if (boring != nullptr)
+        w.commentLine(noseLine(*boring, options.dialect));
     w.commentLine(Post::tr("Z0 at the right end face, X on diameter, G02/G03 seen with Z to the right and X up"));
-    for (const QString &n : path.notes)
-        w.commentLine(n);
-    for (const QString &warning : path.warnings)
-        w.commentLine(Post::tr("Warning: %1").arg(warning));
+    for (const Toolpath *p : {&path, boring}) {
+        for (const QString &n : p != nullptr ? p->notes : QStringList())
+            w.commentLine(n);
+        for (const QString &warning : p != nullptr ? p->warnings : QStringList())
+            w.commentLine(Post::tr("Warning: %1").arg(warning));
+    }
     w.line(d.setup);
     w.line(toolCall(d, options.tool));
     const long limit = std::lround(options.spindle.speed_rpm);
@@ -353,17 +389,24 @@ QString postProcess(const Toolpath &path, double partLength_mm, const PostOption
     else
         w.commentLine(options.spindle.reason);
     bool first = true;
-    auto cut = [&](const PassPath &pass, bool finishing) {
+    auto cut = [&](const PassPath &pass, bool finishing, ContourSide side) {
         if (pass.moves.empty())
             return;
-        w.commentLine(passLine(pass, finishing));
+        w.commentLine(passLine(pass, finishing, side));
         w.line(constantSurfaceSpeed(d, pass.conditions.cuttingSpeed_m_min, limit, first));
         first = false;
-        w.moves(pass);
+        w.moves(pass, side);
     };
     for (const PassPath &p : path.roughing)
-        cut(p, false);
-    cut(path.finishing, true);
+        cut(p, false, path.side);
+    cut(path.finishing, true, path.side);
+    if (boring != nullptr) {
+        w.commentLine(options.boringToolLine);
+        w.line(toolCall(d, options.boringTool));
+        for (const PassPath &p : boring->roughing)
+            cut(p, false, boring->side);
+        cut(boring->finishing, true, boring->side);
+    }
     w.line(d.id == ControlDialect::Sinumerik ? QStringLiteral("M5") : QStringLiteral("M05"));
     w.line(d.programEnd);
     if (d.id != ControlDialect::Sinumerik)

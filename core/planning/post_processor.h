@@ -23,6 +23,7 @@
 #include <QStringList>
 
 #include <optional>
+#include <vector>
 
 namespace tolturn {
 
@@ -40,16 +41,22 @@ struct SpindleLimit {
     QString reason; // how it was formed, for the program header and people
 };
 
-[[nodiscard]] SpindleLimit spindleLimit(const Toolpath &path, std::optional<double> machineLimit_rpm);
+[[nodiscard]] SpindleLimit spindleLimit(const std::vector<const Toolpath *> &paths,
+                                        std::optional<double> machineLimit_rpm);
 
 struct PostOptions {
     ControlDialect dialect = ControlDialect::FanucHaas;
     int programNumber = 1000;
     int tool = 1;
+    int boringTool = 2;     // the boring bar's tool number, when there is a boring path
+    QString boringToolLine; // the comment that names the boring bar before its tool call
     SpindleLimit spindle;
     QStringList header; // lines for the comment block at the top (part, material, tool, compensation, conditions)
 };
 
-[[nodiscard]] QString postProcess(const Toolpath &path, double partLength_mm, const PostOptions &options);
+// The program: the turning path with the tool `tool`, then the boring path, if any, with the tool
+// `boringTool` (its own nose handling, G41).
+[[nodiscard]] QString postProcess(const Toolpath &path, const Toolpath *boring, double partLength_mm,
+                                  const PostOptions &options);
 
 } // namespace tolturn

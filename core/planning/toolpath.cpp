@@ -3,6 +3,7 @@
 
 #include "core/part/profile_geometry.h"
 #include "core/planning/path_geometry.h"
+#include "core/planning/toolpath_detail.h"
 #include "core/tolerance/target_contour.h"
 
 #include <QCoreApplication>
@@ -22,7 +23,6 @@ struct Toolpaths {
 };
 
 constexpr double kTiny = 1e-9;
-constexpr double kEnvelopeStep_mm = 0.02; // grid of the roughing envelope; roughing needs no finer
 
 QString mm(double value)
 {
@@ -32,56 +32,6 @@ QString mm(double value)
 double radiansToDegrees(double a)
 {
     return a * 180.0 / std::numbers::pi;
-}
-
-// The left end of the region the tool may cut: the chuck face or the left centre, plus the
-// clearance the nose keeps from the jaws or the driver.
-double leftSupport_mm(const Project &project)
-{
-    return project.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : project.clamping.clampedLength_mm;
-}
-
-// In one operation of several (docs/operations.md): the left end of the run of features this
-// operation turns from the free end; what lies left of it another operation turns (or turned).
-std::optional<double> operationBoundary_mm(const Project &project)
-{
-    if (!project.scope)
-        return std::nullopt;
-    const std::vector<Segment> &segments = project.part.outer.segments;
-    for (std::size_t i = segments.size(); i-- > 0;) { // clang 14 cannot use views::reverse
-        if (!project.scope->cutFeatures.contains(segments[i].id))
-            return std::max(segments[i].from.z_mm, segments[i].to.z_mm);
-    }
-    return std::nullopt;
-}
-
-// The leftmost z of the nose centre: clear of the jaws (or the driver) by the clearance, and not
-// left of the operation's boundary, where the nose reaches the corner of the last face it turns.
-double toolStop_mm(const Project &project, const ToolpathOptions &options, double noseRadius_mm)
-{
-    const double jaws = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm;
-    const auto boundary = operationBoundary_mm(project);
-    return boundary ? std::max(jaws, *boundary + noseRadius_mm) : jaws;
-}
-
-// What holds the left end, as the program's notes name it.
-QString supportName(ClampingMethod method)
-{
-    switch (method) {
-    case ClampingMethod::BetweenCentres:
-        return Toolpaths::tr("left centre and driver");
-    case ClampingMethod::Collet:
-        return Toolpaths::tr("collet");
-    case ClampingMethod::Chuck:
-    case ClampingMethod::ChuckTailstock:
-        break;
-    }
-    return Toolpaths::tr("chuck jaws");
-}
-
-bool rightEndOnCentre(const Project &project)
-{
-    return !holdsOneEndOnly(project.clamping.method);
 }
 
 PathElement line(ProfilePoint from, ProfilePoint to, const QString &featureId)
@@ -111,240 +61,6 @@ void joinMovedFeature(std::vector<PathElement> &out, PathElement &next)
         out.push_back(line(out.back().to, next.from, next.featureId));
 }
 
-// The outline a turning insert cuts of a contour with undercuts: a run of elements that go back
-// along z between a face and the floor beside it (an undercut's recess under its shoulder) is
-// bridged: the face runs on to where the recess's radius crosses its z, and the part of that radius
-// from there to the floor stays (without such a radius, the face and the floor meet at a corner).
-// The recess is the undercut insert's; warnAtUndercuts says so. Other runs are followed as drawn.
-// `bridged` gets the ids of the elements left out.
-Contour withoutUndercuts(Contour contour, QStringList *bridged = nullptr)
-{
-    std::vector<Segment> &s = contour.segments;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (!s[i].turnsBack())
-            continue;
-        std::size_t j = i;
-        while (j + 1 < s.size() && s[j + 1].turnsBack())
-            ++j;
-        const bool faceBefore =
-            i > 0 && j + 1 < s.size() && s[i - 1].kind == SegmentKind::Face && s[j + 1].kind == SegmentKind::Cylinder;
-        const bool faceAfter =
-            i > 0 && j + 1 < s.size() && s[i - 1].kind == SegmentKind::Cylinder && s[j + 1].kind == SegmentKind::Face;
-        if (!faceBefore && !faceAfter) {
-            i = j; // no face and floor to bridge between: followed as drawn
-            continue;
-        }
-        Segment &face = faceBefore ? s[i - 1] : s[j + 1];
-        Segment &floor = faceBefore ? s[j + 1] : s[i - 1];
-        const double zFace = face.from.z_mm;
-        const Segment &floorSide = faceBefore ? s[j] : s[i];
-        std::vector<Segment> kept;
-        ProfilePoint rim{zFace, floor.from.r_mm};
-        const std::vector<double> crossing =
-            floorSide.kind == SegmentKind::Radius ? crossingRadii(floorSide, zFace) : std::vector<double>{};
-        if (crossing.size() == 1) {
-            rim.r_mm = crossing.front();
-            Segment part = floorSide; // the same circle, from the rim to the floor
-            (faceBefore ? part.from : part.to) = rim;
-            kept.push_back(part);
-        } else {
-            (faceBefore ? floor.from : floor.to) = rim;
-        }
-        (faceBefore ? face.to : face.from) = rim;
-        for (std::size_t k = i; k <= j && bridged != nullptr; ++k)
-            *bridged << s[k].id;
-        s.erase(s.begin() + static_cast<std::ptrdiff_t>(i), s.begin() + static_cast<std::ptrdiff_t>(j) + 1);
-        s.insert(s.begin() + static_cast<std::ptrdiff_t>(i), kept.begin(), kept.end());
-        i += kept.size();
-    }
-    return contour;
-}
-
-// The target contour from its right end to its left end with the compensation plan applied: a
-// constant offset moves a feature radially, a profile correction replaces it by its corrected
-// stations; a radial step joins a moved feature to its neighbours.
-std::vector<PathElement> finishingContour(const Project &project, const CompensationPlan *plan)
-{
-    const Contour target = withoutUndercuts(targetContour(project, ContourSide::Outer));
-    std::vector<PathElement> out;
-    for (PathElement e : reversedElements(target.segments)) {
-        const FeatureCompensation *c = plan ? plan->find(e.featureId) : nullptr;
-        std::vector<PathElement> pieces;
-        if (c && c->action == CompensationAction::ProfileCorrection && c->correctedPath.size() >= 2) {
-            for (std::size_t j = c->correctedPath.size() - 1; j > 0; --j)
-                pieces.push_back(line(c->correctedPath[j], c->correctedPath[j - 1], e.featureId));
-        } else {
-            if (c && c->action == CompensationAction::ConstantOffset) {
-                const double shift = 0.5e-3 * c->offset_um;
-                e.from.r_mm += shift;
-                e.to.r_mm += shift;
-                e.centre.r_mm += shift;
-            }
-            pieces.push_back(e);
-        }
-        for (PathElement p : pieces) {
-            if (!out.empty() && std::hypot(out.back().to.z_mm - p.from.z_mm, out.back().to.r_mm - p.from.r_mm) > kTiny)
-                joinMovedFeature(out, p);
-            out.push_back(p);
-        }
-    }
-    return out;
-}
-
-// The chain up to an operation's boundary at z = zb: a face at zb that this operation cuts is the
-// last element (the shoulder it faces down to the surface another one turns), a surface crossing
-// zb ends there.
-std::vector<PathElement> clippedAtBoundary(const std::vector<PathElement> &chain, double zb,
-                                           const QStringList &cutFeatures);
-
-// The point of an element where z = zCut (the element crosses it).
-ProfilePoint pointAtZ(const PathElement &e, double zCut)
-{
-    if (!e.arc) {
-        const double t = (zCut - e.from.z_mm) / (e.to.z_mm - e.from.z_mm);
-        return {zCut, e.from.r_mm + t * (e.to.r_mm - e.from.r_mm)};
-    }
-    const double dz = zCut - e.centre.z_mm;
-    const double h = std::sqrt(std::max(e.radius_mm * e.radius_mm - dz * dz, 0.0));
-    const double lo = std::min(e.from.r_mm, e.to.r_mm) - kTiny;
-    const double hi = std::max(e.from.r_mm, e.to.r_mm) + kTiny;
-    const double up = e.centre.r_mm + h;
-    return {zCut, (up >= lo && up <= hi) ? up : e.centre.r_mm - h};
-}
-
-std::vector<PathElement> clippedAtBoundary(const std::vector<PathElement> &chain, double zb,
-                                           const QStringList &cutFeatures)
-{
-    constexpr double kOnBoundary_mm = 1e-6;
-    std::vector<PathElement> out;
-    for (PathElement e : chain) {
-        const bool face = std::abs(e.from.z_mm - zb) < kOnBoundary_mm && std::abs(e.to.z_mm - zb) < kOnBoundary_mm;
-        if (face) {
-            if (cutFeatures.contains(e.featureId))
-                out.push_back(e);
-            break;
-        }
-        if (e.from.z_mm <= zb + kOnBoundary_mm)
-            break;
-        if (e.to.z_mm < zb) {
-            e.to = pointAtZ(e, zb);
-            out.push_back(e);
-            break;
-        }
-        out.push_back(e);
-    }
-    return out;
-}
-
-// The chain up to where it first passes z = zMin going left.
-std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin)
-{
-    std::vector<PathElement> out;
-    for (PathElement e : chain) {
-        if (e.from.z_mm <= zMin + kTiny)
-            break;
-        if (e.to.z_mm < zMin) {
-            e.to = pointAtZ(e, zMin);
-            out.push_back(e);
-            break;
-        }
-        out.push_back(e);
-    }
-    return out;
-}
-
-// A tool whose trailing (minor) edge makes kappa' = 180° - kappa_r - epsilon_r with the axis
-// (ISO 3002-1, tool cutting edge angle and minor cutting edge angle; the corner angle of the insert
-// between them) can follow a contour that falls, in its feed direction, no steeper than kappa'.
-// A steeper fall no higher than r_e (1 - sin kappa') stays within the corner radius, which cuts it
-// (the arc of the corner rises that far before the trailing edge begins): the micrometre steps of
-// a compensated path, say. Consecutive steep elements count as one fall.
-void warnWhereTheTrailingEdgeCannotFollow(const std::vector<PathElement> &chain, double trailing_deg,
-                                          double noseRadius_mm, QStringList &warnings)
-{
-    const double withinCorner_mm = noseRadius_mm * (1.0 - std::sin(trailing_deg * std::numbers::pi / 180.0));
-    std::set<QString> named;
-    double fall_mm = 0.0; // of the steep elements in a row so far
-    for (const PathElement &e : chain) {
-        double steepest_deg = 0.0;
-        for (const ProfilePoint d : {startTangent(e), endTangent(e)}) {
-            if (d.r_mm < -1e-9)
-                steepest_deg = std::max(steepest_deg, radiansToDegrees(std::atan2(-d.r_mm, -d.z_mm)));
-        }
-        if (steepest_deg <= trailing_deg + 1e-6) {
-            fall_mm = 0.0;
-            continue;
-        }
-        fall_mm += std::max(0.0, e.from.r_mm - e.to.r_mm);
-        if (fall_mm > withinCorner_mm && named.insert(e.featureId).second)
-            warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing "
-                                      "edge (%3°): it cannot be turned towards the chuck with this tool without "
-                                      "damaging it; turn it from the other side or with a neutral tool.")
-                            .arg(e.featureId, QString::number(steepest_deg, 'f', 1),
-                                 QString::number(trailing_deg, 'f', 1));
-    }
-}
-
-// Features outside the jaws (or the driver) that reach closer to them than the tool goes.
-void warnWhereTheJawsKeepTheToolOff(const Project &project, double zReached_mm, double clearance_mm,
-                                    QStringList &warnings)
-{
-    const double support = leftSupport_mm(project);
-    QStringList features;
-    for (const Segment &s : project.part.outer.segments) {
-        if (project.scope && !project.scope->cutFeatures.contains(s.id))
-            continue; // another operation turns it
-        const double zMin = std::min(s.from.z_mm, s.to.z_mm);
-        const double zMax = std::max(s.from.z_mm, s.to.z_mm);
-        if (zMax > support + kTiny && zMin < zReached_mm - 1e-6)
-            features << s.id;
-    }
-    if (features.isEmpty())
-        return;
-    const bool centres = project.clamping.method == ClampingMethod::BetweenCentres;
-    const QString where = centres ? Toolpaths::tr("left centre") : Toolpaths::tr("chuck face");
-    const QString text =
-        features.size() == 1
-            ? Toolpaths::tr("%1 reaches within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): "
-                            "it is not turned there.")
-            : Toolpaths::tr("%1 reach within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): "
-                            "they are not turned there.");
-    const QString advice = centres ? Toolpaths::tr("Turn that end with the part turned end for end.")
-                                   : Toolpaths::tr("Grip the part shorter, or turn that end in another set-up.");
-    warnings << text.arg(features.join(QStringLiteral(", ")), mm(zReached_mm - support), where, mm(clearance_mm)) +
-                    QLatin1Char(' ') + advice;
-}
-
-// An undercut's recess lies behind its shoulder: the program bridges it (withoutUndercuts), and
-// an undercut or grooving insert cuts it; one without a face beside it is followed as drawn, but
-// a turning insert's body would cut what overhangs it (its outline is not modelled).
-void warnAtUndercuts(const Project &project, QStringList &warnings)
-{
-    QStringList bridged;
-    const Contour outline = withoutUndercuts(project.part.outer, &bridged);
-    QStringList followed;
-    for (const Segment &s : outline.segments) {
-        if (s.turnsBack())
-            followed << s.id;
-    }
-    const auto cutHere = [&](QStringList ids) {
-        ids.removeIf([&](const QString &id) { return project.scope && !project.scope->cutFeatures.contains(id); });
-        return ids;
-    };
-    bridged = cutHere(bridged);
-    followed = cutHere(followed);
-    if (!bridged.isEmpty())
-        warnings << Toolpaths::tr("%1: the recess of an undercut under its shoulder is not in this program (it "
-                                  "turns the face down to the recess and the floor up to it): cut the recess with "
-                                  "an undercut or grooving insert in a program of its own.")
-                        .arg(bridged.join(QStringLiteral(", ")));
-    if (!followed.isEmpty())
-        warnings << Toolpaths::tr("%1: goes back along z (an undercut) without a face and a floor beside it: the "
-                                  "program follows it, but only an insert that fits under the overhang can cut it; "
-                                  "the insert's outline is not checked.")
-                        .arg(followed.join(QStringLiteral(", ")));
-}
-
 ToolMove move(MoveKind kind, ProfilePoint to, const QString &featureId = {})
 {
     ToolMove m;
@@ -363,15 +79,6 @@ ToolMove moveAlong(const PathElement &e)
         m.radius_mm = e.radius_mm;
     }
     return m;
-}
-
-double smallestAxialRadius(const std::vector<PathElement> &chain)
-{
-    double smallest = std::numeric_limits<double>::infinity();
-    for (const PathElement &e : chain)
-        if (std::abs(e.from.z_mm - e.to.z_mm) > kTiny) // a face does not count: G96 is clamped there
-            smallest = std::min({smallest, e.from.r_mm, e.to.r_mm});
-    return std::isfinite(smallest) ? smallest : 0.0;
 }
 
 // With the control's nose radius compensation a concave arc tighter than the nose is refused (the
@@ -403,88 +110,6 @@ QStringList sharpenTightConcaveArcs(std::vector<PathElement> &chain, double nose
         --i;
     }
     return replaced;
-}
-
-struct FinishingGeometry {
-    std::vector<PathElement> contour; // what is programmed (control) or offset (tip path)
-    bool faced = false;
-};
-
-FinishingGeometry finishingGeometry(const Project &project, const ToolpathOptions &options, double noseRadius_mm)
-{
-    FinishingGeometry g;
-    std::vector<PathElement> chain = finishingContour(project, options.compensation);
-    const double length = project.part.length_mm();
-    // The right end face: the leading elements at z = length that run up from the axis or the bore.
-    std::size_t face = 0;
-    while (face < chain.size() && std::abs(chain[face].from.z_mm - length) < kTiny &&
-           std::abs(chain[face].to.z_mm - length) < kTiny)
-        ++face;
-    if (face > 0 && rightEndOnCentre(project)) {
-        chain.erase(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(face));
-    } else if (face > 0) {
-        g.faced = true;
-        // Programmed past the axis or the bore edge by r_e, so that the nose centre reaches it and
-        // no pip is left (with the control's compensation the nose centre follows the line r_e off
-        // the programmed face, from the programmed start).
-        if (options.nose == NoseHandling::ControlCompensation)
-            chain.front().from.r_mm -= noseRadius_mm;
-    }
-    const double jaws = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm;
-    const auto boundary = operationBoundary_mm(project);
-    g.contour = boundary && *boundary > jaws ? clippedAtBoundary(chain, *boundary, project.scope->cutFeatures)
-                                             : clippedAtLeft(chain, jaws);
-    return g;
-}
-
-PassPath finishingPass(const Project &project, const CuttingPass &conditions, const ToolpathOptions &options,
-                       double noseRadius_mm, double safeRadius, Toolpath &path)
-{
-    PassPath pass;
-    pass.conditions = conditions;
-    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm);
-    path.endFaceFaced = g.faced;
-    if (g.contour.empty())
-        return pass;
-    pass.smallestDiameter_mm = 2.0 * smallestAxialRadius(g.contour);
-    std::vector<PathElement> programmed = g.contour;
-    if (options.nose == NoseHandling::TipPath) {
-        QStringList dropped;
-        programmed = translated(offsetToTheRight(g.contour, noseRadius_mm, &dropped), -noseRadius_mm, -noseRadius_mm);
-        for (const QString &id : dropped)
-            path.warnings << Toolpaths::tr("%1 is narrower or tighter than the nose radius %2 mm: the nose cannot "
-                                           "follow it and leaves it rounded.")
-                                 .arg(id, mm(noseRadius_mm));
-    } else {
-        for (const QString &id : sharpenTightConcaveArcs(programmed, noseRadius_mm))
-            path.warnings << Toolpaths::tr("%1 is tighter than the nose radius %2 mm: it is programmed as the sharp "
-                                           "corner it rounds (a control's compensation cannot follow a concave arc "
-                                           "tighter than the nose), and the nose leaves it rounded to %2 mm.")
-                                 .arg(id, mm(noseRadius_mm));
-    }
-    // The entry move, longer than r_e (a compensation needs that): along -z onto a face that is faced,
-    // else along the first element's own line, so that a control's G42 starts with the nose square to
-    // it and the element is turned from its first point.
-    const double entryLength = options.clearance_mm + 2.0 * noseRadius_mm;
-    const double zApproach = project.part.length_mm() + entryLength;
-    const ProfilePoint start = programmed.front().from;
-    ProfilePoint entryFrom{zApproach, start.r_mm};
-    if (options.nose == NoseHandling::ControlCompensation && !g.faced) {
-        const ProfilePoint t = startTangent(programmed.front());
-        entryFrom = {start.z_mm - entryLength * t.z_mm, start.r_mm - entryLength * t.r_mm};
-    }
-    pass.moves.push_back(move(MoveKind::Rapid, {entryFrom.z_mm, safeRadius}));
-    pass.moves.push_back(move(MoveKind::Rapid, entryFrom));
-    ToolMove entry = move(MoveKind::Feed, start);
-    entry.startsNoseCompensation = options.nose == NoseHandling::ControlCompensation;
-    pass.moves.push_back(entry);
-    for (const PathElement &e : programmed)
-        pass.moves.push_back(moveAlong(e));
-    ToolMove exit = move(MoveKind::Feed, {programmed.back().to.z_mm, safeRadius});
-    exit.endsNoseCompensation = options.nose == NoseHandling::ControlCompensation;
-    pass.moves.push_back(exit);
-    pass.moves.push_back(move(MoveKind::Rapid, {std::max(zApproach, entryFrom.z_mm), safeRadius}));
-    return pass;
 }
 
 // The envelope from index i in direction `step` until it first reaches `level`: the points passed
@@ -564,6 +189,450 @@ void roughLevel(PassPath &pass, const Envelope &env, double level, double levelA
     }
 }
 
+} // namespace
+
+namespace toolpath_detail {
+
+// The outline a turning insert cuts of a contour with undercuts: a run of elements that go back
+// along z between a face and the floor beside it (an undercut's recess under its shoulder) is
+// bridged: the face runs on to where the recess's radius crosses its z, and the part of that radius
+// from there to the floor stays (without such a radius, the face and the floor meet at a corner).
+// The recess is the undercut insert's; warnAtUndercuts says so. Other runs are followed as drawn.
+// `bridged` gets the ids of the elements left out.
+Contour withoutUndercuts(Contour contour, QStringList *bridged)
+{
+    std::vector<Segment> &s = contour.segments;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].turnsBack())
+            continue;
+        std::size_t j = i;
+        while (j + 1 < s.size() && s[j + 1].turnsBack())
+            ++j;
+        const bool faceBefore =
+            i > 0 && j + 1 < s.size() && s[i - 1].kind == SegmentKind::Face && s[j + 1].kind == SegmentKind::Cylinder;
+        const bool faceAfter =
+            i > 0 && j + 1 < s.size() && s[i - 1].kind == SegmentKind::Cylinder && s[j + 1].kind == SegmentKind::Face;
+        if (!faceBefore && !faceAfter) {
+            i = j; // no face and floor to bridge between: followed as drawn
+            continue;
+        }
+        Segment &face = faceBefore ? s[i - 1] : s[j + 1];
+        Segment &floor = faceBefore ? s[j + 1] : s[i - 1];
+        const double zFace = face.from.z_mm;
+        const Segment &floorSide = faceBefore ? s[j] : s[i];
+        std::vector<Segment> kept;
+        ProfilePoint rim{zFace, floor.from.r_mm};
+        const std::vector<double> crossing =
+            floorSide.kind == SegmentKind::Radius ? crossingRadii(floorSide, zFace) : std::vector<double>{};
+        if (crossing.size() == 1) {
+            rim.r_mm = crossing.front();
+            Segment part = floorSide; // the same circle, from the rim to the floor
+            (faceBefore ? part.from : part.to) = rim;
+            kept.push_back(part);
+        } else {
+            (faceBefore ? floor.from : floor.to) = rim;
+        }
+        (faceBefore ? face.to : face.from) = rim;
+        for (std::size_t k = i; k <= j && bridged != nullptr; ++k)
+            *bridged << s[k].id;
+        s.erase(s.begin() + static_cast<std::ptrdiff_t>(i), s.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+        s.insert(s.begin() + static_cast<std::ptrdiff_t>(i), kept.begin(), kept.end());
+        i += kept.size();
+    }
+    return contour;
+}
+
+std::vector<PathElement> compensatedChain(const Contour &target, const CompensationPlan *plan)
+{
+    std::vector<PathElement> out;
+    for (PathElement e : reversedElements(withoutUndercuts(target).segments)) {
+        const FeatureCompensation *c = plan ? plan->find(e.featureId) : nullptr;
+        std::vector<PathElement> pieces;
+        if (c && c->action == CompensationAction::ProfileCorrection && c->correctedPath.size() >= 2) {
+            for (std::size_t j = c->correctedPath.size() - 1; j > 0; --j)
+                pieces.push_back(line(c->correctedPath[j], c->correctedPath[j - 1], e.featureId));
+        } else {
+            if (c && c->action == CompensationAction::ConstantOffset) {
+                const double shift = 0.5e-3 * c->offset_um;
+                e.from.r_mm += shift;
+                e.to.r_mm += shift;
+                e.centre.r_mm += shift;
+            }
+            pieces.push_back(e);
+        }
+        for (PathElement p : pieces) {
+            if (!out.empty() && std::hypot(out.back().to.z_mm - p.from.z_mm, out.back().to.r_mm - p.from.r_mm) > kTiny)
+                joinMovedFeature(out, p);
+            out.push_back(p);
+        }
+    }
+    return out;
+}
+
+// The point of an element where z = zCut (the element crosses it).
+ProfilePoint pointAtZ(const PathElement &e, double zCut)
+{
+    if (!e.arc) {
+        const double t = (zCut - e.from.z_mm) / (e.to.z_mm - e.from.z_mm);
+        return {zCut, e.from.r_mm + t * (e.to.r_mm - e.from.r_mm)};
+    }
+    const double dz = zCut - e.centre.z_mm;
+    const double h = std::sqrt(std::max(e.radius_mm * e.radius_mm - dz * dz, 0.0));
+    const double lo = std::min(e.from.r_mm, e.to.r_mm) - kTiny;
+    const double hi = std::max(e.from.r_mm, e.to.r_mm) + kTiny;
+    const double up = e.centre.r_mm + h;
+    return {zCut, (up >= lo && up <= hi) ? up : e.centre.r_mm - h};
+}
+
+// The chain up to where it first passes z = zMin going left.
+std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin)
+{
+    std::vector<PathElement> out;
+    for (PathElement e : chain) {
+        if (e.from.z_mm <= zMin + kTiny)
+            break;
+        if (e.to.z_mm < zMin) {
+            e.to = pointAtZ(e, zMin);
+            out.push_back(e);
+            break;
+        }
+        out.push_back(e);
+    }
+    return out;
+}
+
+double smallestAxialRadius(const std::vector<PathElement> &chain)
+{
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const PathElement &e : chain)
+        if (std::abs(e.from.z_mm - e.to.z_mm) > kTiny) // a face does not count: G96 is clamped there
+            smallest = std::min({smallest, e.from.r_mm, e.to.r_mm});
+    return std::isfinite(smallest) ? smallest : 0.0;
+}
+
+// A tool whose trailing (minor) edge makes kappa' = 180° - kappa_r - epsilon_r with the axis
+// (ISO 3002-1, tool cutting edge angle and minor cutting edge angle; the corner angle of the insert
+// between them) can follow a contour that falls, in its feed direction, no steeper than kappa'.
+// A steeper fall no higher than r_e (1 - sin kappa') stays within the corner radius, which cuts it
+// (the arc of the corner rises that far before the trailing edge begins): the micrometre steps of
+// a compensated path, say. Consecutive steep elements count as one fall.
+void warnWhereTheTrailingEdgeCannotFollow(const std::vector<PathElement> &chain, double trailing_deg,
+                                          double noseRadius_mm, QStringList &warnings)
+{
+    const double withinCorner_mm = noseRadius_mm * (1.0 - std::sin(trailing_deg * std::numbers::pi / 180.0));
+    std::set<QString> named;
+    double fall_mm = 0.0; // of the steep elements in a row so far
+    for (const PathElement &e : chain) {
+        double steepest_deg = 0.0;
+        for (const ProfilePoint d : {startTangent(e), endTangent(e)}) {
+            if (d.r_mm < -1e-9)
+                steepest_deg = std::max(steepest_deg, radiansToDegrees(std::atan2(-d.r_mm, -d.z_mm)));
+        }
+        if (steepest_deg <= trailing_deg + 1e-6) {
+            fall_mm = 0.0;
+            continue;
+        }
+        fall_mm += std::max(0.0, e.from.r_mm - e.to.r_mm);
+        if (fall_mm > withinCorner_mm && named.insert(e.featureId).second)
+            warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing "
+                                      "edge (%3°): it cannot be turned towards the chuck with this tool without "
+                                      "damaging it; turn it from the other side or with a neutral tool.")
+                            .arg(e.featureId, QString::number(steepest_deg, 'f', 1),
+                                 QString::number(trailing_deg, 'f', 1));
+    }
+}
+
+std::vector<PathElement> mirrored(std::vector<PathElement> chain)
+{
+    for (PathElement &e : chain) {
+        e.from.r_mm = -e.from.r_mm;
+        e.to.r_mm = -e.to.r_mm;
+        e.centre.r_mm = -e.centre.r_mm;
+        e.counterClockwise = !e.counterClockwise;
+    }
+    return chain;
+}
+
+std::vector<Segment> mirrored(std::vector<Segment> segments)
+{
+    for (Segment &s : segments) {
+        s.from.r_mm = -s.from.r_mm;
+        s.to.r_mm = -s.to.r_mm;
+        s.arcDirection =
+            s.arcDirection == ArcDirection::Clockwise ? ArcDirection::CounterClockwise : ArcDirection::Clockwise;
+    }
+    return segments;
+}
+
+ToolMove mirrored(ToolMove move)
+{
+    move.to.r_mm = -move.to.r_mm;
+    move.centre.r_mm = -move.centre.r_mm;
+    if (move.kind == MoveKind::ArcClockwise)
+        move.kind = MoveKind::ArcCounterClockwise;
+    else if (move.kind == MoveKind::ArcCounterClockwise)
+        move.kind = MoveKind::ArcClockwise;
+    return move;
+}
+
+PassPath contourPass(const std::vector<PathElement> &contour, bool faced, const CuttingPass &conditions,
+                     const ToolpathOptions &options, double noseRadius_mm, double safeRadius, double partLength_mm,
+                     QStringList &warnings)
+{
+    PassPath pass;
+    pass.conditions = conditions;
+    if (contour.empty())
+        return pass;
+    pass.smallestDiameter_mm = 2.0 * smallestAxialRadius(contour);
+    std::vector<PathElement> programmed = contour;
+    if (options.nose == NoseHandling::TipPath) {
+        QStringList dropped;
+        programmed = translated(offsetToTheRight(contour, noseRadius_mm, &dropped), -noseRadius_mm, -noseRadius_mm);
+        for (const QString &id : dropped)
+            warnings << Toolpaths::tr("%1 is narrower or tighter than the nose radius %2 mm: the nose cannot "
+                                      "follow it and leaves it rounded.")
+                            .arg(id, mm(noseRadius_mm));
+    } else {
+        for (const QString &id : sharpenTightConcaveArcs(programmed, noseRadius_mm))
+            warnings << Toolpaths::tr("%1 is tighter than the nose radius %2 mm: it is programmed as the sharp "
+                                      "corner it rounds (a control's compensation cannot follow a concave arc "
+                                      "tighter than the nose), and the nose leaves it rounded to %2 mm.")
+                            .arg(id, mm(noseRadius_mm));
+    }
+    // The entry move, longer than r_e (a compensation needs that): along -z onto a face that is faced,
+    // else along the first element's own line, so that a control's G42 starts with the nose square to
+    // it and the element is turned from its first point.
+    const double entryLength = options.clearance_mm + 2.0 * noseRadius_mm;
+    const double zApproach = partLength_mm + entryLength;
+    const ProfilePoint start = programmed.front().from;
+    ProfilePoint entryFrom{zApproach, start.r_mm};
+    if (options.nose == NoseHandling::ControlCompensation && !faced) {
+        const ProfilePoint t = startTangent(programmed.front());
+        entryFrom = {start.z_mm - entryLength * t.z_mm, start.r_mm - entryLength * t.r_mm};
+    }
+    pass.moves.push_back(move(MoveKind::Rapid, {entryFrom.z_mm, safeRadius}));
+    pass.moves.push_back(move(MoveKind::Rapid, entryFrom));
+    ToolMove entry = move(MoveKind::Feed, start);
+    entry.startsNoseCompensation = options.nose == NoseHandling::ControlCompensation;
+    pass.moves.push_back(entry);
+    for (const PathElement &e : programmed)
+        pass.moves.push_back(moveAlong(e));
+    ToolMove exit = move(MoveKind::Feed, {programmed.back().to.z_mm, safeRadius});
+    exit.endsNoseCompensation = options.nose == NoseHandling::ControlCompensation;
+    pass.moves.push_back(exit);
+    pass.moves.push_back(move(MoveKind::Rapid, {std::max(zApproach, entryFrom.z_mm), safeRadius}));
+    return pass;
+}
+
+double roughLevels(std::vector<PassPath> &passes, const std::vector<CuttingPass> &roughing, const Envelope &env,
+                   double stockLevel, double safeRadius, double noseRadius_mm, double clearance_mm)
+{
+    double levelAbove = stockLevel;
+    for (const CuttingPass &conditions : roughing) {
+        PassPath pass;
+        pass.conditions = conditions;
+        const double level = levelAbove - conditions.depthOfCut_mm;
+        roughLevel(pass, env, level, levelAbove, safeRadius, noseRadius_mm, clearance_mm);
+        pass.smallestDiameter_mm = 2.0 * (level - noseRadius_mm);
+        passes.push_back(std::move(pass));
+        levelAbove = level;
+    }
+    return levelAbove;
+}
+
+double stockLeftAboveAllowance(const Envelope &env, double lastLevel, double partLength_mm)
+{
+    double left = 0.0;
+    for (std::size_t i = 0; i < env.r_mm.size(); ++i)
+        if (env.z(i) <= partLength_mm && std::isfinite(env.r_mm[i]) && env.r_mm[i] < lastLevel)
+            left = std::max(left, lastLevel - env.r_mm[i]);
+    return left;
+}
+
+} // namespace toolpath_detail
+
+namespace {
+
+using namespace toolpath_detail;
+
+// The left end of the region the tool may cut: the chuck face or the left centre, plus the
+// clearance the nose keeps from the jaws or the driver.
+double leftSupport_mm(const Project &project)
+{
+    return project.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : project.clamping.clampedLength_mm;
+}
+
+// In one operation of several (docs/operations.md): the left end of the run of features this
+// operation turns from the free end; what lies left of it another operation turns (or turned).
+std::optional<double> operationBoundary_mm(const Project &project)
+{
+    if (!project.scope)
+        return std::nullopt;
+    const std::vector<Segment> &segments = project.part.outer.segments;
+    for (std::size_t i = segments.size(); i-- > 0;) { // clang 14 cannot use views::reverse
+        if (!project.scope->cutFeatures.contains(segments[i].id))
+            return std::max(segments[i].from.z_mm, segments[i].to.z_mm);
+    }
+    return std::nullopt;
+}
+
+// The leftmost z of the nose centre: clear of the jaws (or the driver) by the clearance, and not
+// left of the operation's boundary, where the nose reaches the corner of the last face it turns.
+double toolStop_mm(const Project &project, const ToolpathOptions &options, double noseRadius_mm)
+{
+    const double jaws = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm;
+    const auto boundary = operationBoundary_mm(project);
+    return boundary ? std::max(jaws, *boundary + noseRadius_mm) : jaws;
+}
+
+// What holds the left end, as the program's notes name it.
+QString supportName(ClampingMethod method)
+{
+    switch (method) {
+    case ClampingMethod::BetweenCentres:
+        return Toolpaths::tr("left centre and driver");
+    case ClampingMethod::Collet:
+        return Toolpaths::tr("collet");
+    case ClampingMethod::Chuck:
+    case ClampingMethod::ChuckTailstock:
+        break;
+    }
+    return Toolpaths::tr("chuck jaws");
+}
+
+bool rightEndOnCentre(const Project &project)
+{
+    return !holdsOneEndOnly(project.clamping.method);
+}
+
+// The chain up to an operation's boundary at z = zb: a face at zb that this operation cuts is the
+// last element (the shoulder it faces down to the surface another one turns), a surface crossing
+// zb ends there.
+std::vector<PathElement> clippedAtBoundary(const std::vector<PathElement> &chain, double zb,
+                                           const QStringList &cutFeatures)
+{
+    constexpr double kOnBoundary_mm = 1e-6;
+    std::vector<PathElement> out;
+    for (PathElement e : chain) {
+        const bool face = std::abs(e.from.z_mm - zb) < kOnBoundary_mm && std::abs(e.to.z_mm - zb) < kOnBoundary_mm;
+        if (face) {
+            if (cutFeatures.contains(e.featureId))
+                out.push_back(e);
+            break;
+        }
+        if (e.from.z_mm <= zb + kOnBoundary_mm)
+            break;
+        if (e.to.z_mm < zb) {
+            e.to = pointAtZ(e, zb);
+            out.push_back(e);
+            break;
+        }
+        out.push_back(e);
+    }
+    return out;
+}
+
+// Features outside the jaws (or the driver) that reach closer to them than the tool goes.
+void warnWhereTheJawsKeepTheToolOff(const Project &project, double zReached_mm, double clearance_mm,
+                                    QStringList &warnings)
+{
+    const double support = leftSupport_mm(project);
+    QStringList features;
+    for (const Segment &s : project.part.outer.segments) {
+        if (project.scope && !project.scope->cutFeatures.contains(s.id))
+            continue; // another operation turns it
+        const double zMin = std::min(s.from.z_mm, s.to.z_mm);
+        const double zMax = std::max(s.from.z_mm, s.to.z_mm);
+        if (zMax > support + kTiny && zMin < zReached_mm - 1e-6)
+            features << s.id;
+    }
+    if (features.isEmpty())
+        return;
+    const bool centres = project.clamping.method == ClampingMethod::BetweenCentres;
+    const QString where = centres ? Toolpaths::tr("left centre") : Toolpaths::tr("chuck face");
+    const QString text =
+        features.size() == 1
+            ? Toolpaths::tr("%1 reaches within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): "
+                            "it is not turned there.")
+            : Toolpaths::tr("%1 reach within %2 mm of the %3, where the tool does not go (it keeps %4 mm from it): "
+                            "they are not turned there.");
+    const QString advice = centres ? Toolpaths::tr("Turn that end with the part turned end for end.")
+                                   : Toolpaths::tr("Grip the part shorter, or turn that end in another set-up.");
+    warnings << text.arg(features.join(QStringLiteral(", ")), mm(zReached_mm - support), where, mm(clearance_mm)) +
+                    QLatin1Char(' ') + advice;
+}
+
+// An undercut's recess lies behind its shoulder: the program bridges it (withoutUndercuts), and
+// an undercut or grooving insert cuts it; one without a face beside it is followed as drawn, but
+// a turning insert's body would cut what overhangs it (its outline is not modelled).
+void warnAtUndercuts(const Project &project, QStringList &warnings)
+{
+    QStringList bridged;
+    const Contour outline = withoutUndercuts(project.part.outer, &bridged);
+    QStringList followed;
+    for (const Segment &s : outline.segments) {
+        if (s.turnsBack())
+            followed << s.id;
+    }
+    const auto cutHere = [&](QStringList ids) {
+        ids.removeIf([&](const QString &id) { return project.scope && !project.scope->cutFeatures.contains(id); });
+        return ids;
+    };
+    bridged = cutHere(bridged);
+    followed = cutHere(followed);
+    if (!bridged.isEmpty())
+        warnings << Toolpaths::tr("%1: the recess of an undercut under its shoulder is not in this program (it "
+                                  "turns the face down to the recess and the floor up to it): cut the recess with "
+                                  "an undercut or grooving insert in a program of its own.")
+                        .arg(bridged.join(QStringLiteral(", ")));
+    if (!followed.isEmpty())
+        warnings << Toolpaths::tr("%1: goes back along z (an undercut) without a face and a floor beside it: the "
+                                  "program follows it, but only an insert that fits under the overhang can cut it; "
+                                  "the insert's outline is not checked.")
+                        .arg(followed.join(QStringLiteral(", ")));
+}
+
+struct FinishingGeometry {
+    std::vector<PathElement> contour; // what is programmed (control) or offset (tip path)
+    bool faced = false;
+};
+
+FinishingGeometry finishingGeometry(const Project &project, const ToolpathOptions &options, double noseRadius_mm)
+{
+    FinishingGeometry g;
+    std::vector<PathElement> chain = compensatedChain(targetContour(project, ContourSide::Outer), options.compensation);
+    const double length = project.part.length_mm();
+    // The right end face: the leading elements at z = length that run up from the axis or the bore.
+    std::size_t face = 0;
+    while (face < chain.size() && std::abs(chain[face].from.z_mm - length) < kTiny &&
+           std::abs(chain[face].to.z_mm - length) < kTiny)
+        ++face;
+    if (face > 0 && rightEndOnCentre(project)) {
+        chain.erase(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(face));
+    } else if (face > 0) {
+        g.faced = true;
+        // Programmed past the axis or the bore edge by r_e, so that the nose centre reaches it and
+        // no pip is left (with the control's compensation the nose centre follows the line r_e off
+        // the programmed face, from the programmed start).
+        if (options.nose == NoseHandling::ControlCompensation)
+            chain.front().from.r_mm -= noseRadius_mm;
+    }
+    const double jaws = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm;
+    const auto boundary = operationBoundary_mm(project);
+    g.contour = boundary && *boundary > jaws ? clippedAtBoundary(chain, *boundary, project.scope->cutFeatures)
+                                             : clippedAtLeft(chain, jaws);
+    return g;
+}
+
+PassPath finishingPass(const Project &project, const CuttingPass &conditions, const ToolpathOptions &options,
+                       double noseRadius_mm, double safeRadius, Toolpath &path)
+{
+    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm);
+    path.endFaceFaced = g.faced;
+    return contourPass(g.contour, g.faced, conditions, options, noseRadius_mm, safeRadius, project.part.length_mm(),
+                       path.warnings);
+}
+
 std::vector<PassPath> roughingPasses(const Project &project, const std::vector<CuttingPass> &roughing,
                                      double allowance_mm, double noseRadius_mm, double safeRadius,
                                      const ToolpathOptions &options, QStringList &warnings)
@@ -576,20 +645,9 @@ std::vector<PassPath> roughingPasses(const Project &project, const std::vector<C
         widenedEnvelope(target.segments, allowance_mm + noseRadius_mm, zLeft, zRight, kEnvelopeStep_mm);
     const double stockRadius = 0.5 * project.part.stockDiameter_mm;
     std::vector<PassPath> passes;
-    double levelAbove = stockRadius + noseRadius_mm;
-    for (const CuttingPass &conditions : roughing) {
-        PassPath pass;
-        pass.conditions = conditions;
-        const double level = levelAbove - conditions.depthOfCut_mm;
-        roughLevel(pass, env, level, levelAbove, safeRadius, noseRadius_mm, options.clearance_mm);
-        pass.smallestDiameter_mm = 2.0 * (level - noseRadius_mm);
-        passes.push_back(std::move(pass));
-        levelAbove = level;
-    }
-    double left = 0.0; // stock above the allowance that no level reaches (on the part, not beyond it)
-    for (std::size_t i = 0; i < env.r_mm.size(); ++i)
-        if (env.z(i) <= length && std::isfinite(env.r_mm[i]) && env.r_mm[i] < levelAbove)
-            left = std::max(left, levelAbove - env.r_mm[i]);
+    const double lastLevel = roughLevels(passes, roughing, env, stockRadius + noseRadius_mm, safeRadius, noseRadius_mm,
+                                         options.clearance_mm);
+    const double left = stockLeftAboveAllowance(env, lastLevel, length);
     if (left > std::max(0.01, 0.1 * allowance_mm)) // within 10 % of the allowance the finishing pass takes it
         warnings << Toolpaths::tr("The planned roughing leaves up to %1 mm more than the finishing allowance of "
                                   "%2 mm: the finishing pass would cut it.")
@@ -633,8 +691,6 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
                                     "centred before the part is set up.");
     path.notes << Toolpaths::tr("The tool stops %1 mm short of the %2; the stock there is not turned.")
                       .arg(mm(options.clearance_mm), supportName(project.clamping.method));
-    if (!project.part.inner.empty())
-        path.notes << Toolpaths::tr("The bore is not in this program (outer contour only).");
     const double radialStock = 0.5 * project.part.stockDiameter_mm -
                                0.5 * std::max(path.finishing.smallestDiameter_mm, 0.0) - finishing.depthOfCut_mm;
     if (roughing.empty() && radialStock > 1e-3)

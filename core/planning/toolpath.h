@@ -56,6 +56,7 @@ struct ToolpathOptions {
 };
 
 struct Toolpath {
+    ContourSide side = ContourSide::Outer; // inner: a boring path (boring_toolpath.h), the nose left of the travel
     std::vector<PassPath> roughing;
     PassPath finishing;
     double noseRadius_mm = 0.0;

@@ -47,6 +47,9 @@ struct Tool {
     std::optional<double> inclination_deg;
     // A boring bar's cutting edge from the bar's axis, the maker's functional dimension f [mm].
     std::optional<double> edgeOffset_mm;
+    // A boring bar's: the hole drilled (or cored) before the bar starts, which its roughing levels
+    // widen to the bore. Unset: the bore is taken as roughed to its finishing allowance before.
+    std::optional<double> pilotHoleDiameter_mm;
 
     friend bool operator==(const Tool &, const Tool &) = default;
 };

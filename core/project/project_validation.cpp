@@ -276,15 +276,26 @@ void checkCuttingModel(const Project &p, Diagnostics &out)
             QStringLiteral("cutting_model"),
             ProjectValidation::tr("the li_du force model needs normal_pressure_MPa (K_n) and friction_ratio (K_f); "
                                   "fit them from measured forces with 'tolturn-cli calibrate-forces'")));
-    requirePositive(p.tool.overhang_mm, QStringLiteral("tool.overhang_mm"), out);
-    if (p.boringTool) {
-        requireText(p.boringTool->insertCode, QStringLiteral("boring_tool.insert"),
-                    ProjectValidation::tr("the boring bar's insert code"), out);
-        requireText(p.boringTool->holderCode, QStringLiteral("boring_tool.holder"),
-                    ProjectValidation::tr("the boring bar"), out);
-        requirePositive(p.boringTool->overhang_mm, QStringLiteral("boring_tool.overhang_mm"), out);
-        requirePositive(p.boringTool->edgeOffset_mm, QStringLiteral("boring_tool.edge_offset_mm"), out);
-    }
+}
+
+// The tools of a set-up (prefix "" for the project's own, "further_operations[i]." for the others).
+void checkTools(const Tool &tool, const std::optional<Tool> &boringTool, const QString &prefix, Diagnostics &out)
+{
+    requirePositive(tool.overhang_mm, prefix + QStringLiteral("tool.overhang_mm"), out);
+    if (tool.pilotHoleDiameter_mm)
+        out.push_back(makeError(prefix + QStringLiteral("tool.pilot_hole_diameter_mm"),
+                                ProjectValidation::tr("only a boring bar starts from a pilot hole: give it in "
+                                                      "boring_tool")));
+    if (!boringTool)
+        return;
+    requireText(boringTool->insertCode, prefix + QStringLiteral("boring_tool.insert"),
+                ProjectValidation::tr("the boring bar's insert code"), out);
+    requireText(boringTool->holderCode, prefix + QStringLiteral("boring_tool.holder"),
+                ProjectValidation::tr("the boring bar"), out);
+    requirePositive(boringTool->overhang_mm, prefix + QStringLiteral("boring_tool.overhang_mm"), out);
+    requirePositive(boringTool->edgeOffset_mm, prefix + QStringLiteral("boring_tool.edge_offset_mm"), out);
+    requirePositive(boringTool->pilotHoleDiameter_mm, prefix + QStringLiteral("boring_tool.pilot_hole_diameter_mm"),
+                    out);
 }
 
 void checkSprings(const std::optional<SpindleSprings> &s, const QString &path, Diagnostics &out)
@@ -403,6 +414,7 @@ Diagnostics validateProject(const Project &project)
     requireText(project.tool.insertCode, QStringLiteral("tool.insert"), ProjectValidation::tr("the insert code"), out);
     checkClamping(project.clamping, project.part.length_mm(), QString(), out);
     checkPasses(project.passes, QString(), out);
+    checkTools(project.tool, project.boringTool, QString(), out);
     for (std::size_t i = 0; i < project.furtherOperations.size(); ++i) {
         const Operation &op = project.furtherOperations[i];
         const QString prefix = QStringLiteral("further_operations[%1].").arg(i);
@@ -410,13 +422,7 @@ Diagnostics validateProject(const Project &project)
         checkPasses(op.passes, prefix, out);
         requireText(op.tool.insertCode, prefix + QStringLiteral("tool.insert"),
                     ProjectValidation::tr("the insert code"), out);
-        requirePositive(op.tool.overhang_mm, prefix + QStringLiteral("tool.overhang_mm"), out);
-        if (op.boringTool) {
-            requireText(op.boringTool->insertCode, prefix + QStringLiteral("boring_tool.insert"),
-                        ProjectValidation::tr("the boring bar's insert code"), out);
-            requirePositive(op.boringTool->overhang_mm, prefix + QStringLiteral("boring_tool.overhang_mm"), out);
-            requirePositive(op.boringTool->edgeOffset_mm, prefix + QStringLiteral("boring_tool.edge_offset_mm"), out);
-        }
+        checkTools(op.tool, op.boringTool, prefix, out);
     }
     checkDatums(project, out);
     checkTolerances(project, out);

@@ -257,6 +257,15 @@ private Q_SLOTS:
         Project negative = bushing();
         negative.boringTool->edgeOffset_mm = -3.0;
         QVERIFY(hasField(validateProject(negative), "boring_tool.edge_offset_mm", Severity::Error));
+
+        // The pilot hole is the boring bar's start: above zero, and no turning tool's.
+        Project noHole = bushing();
+        noHole.boringTool->pilotHoleDiameter_mm = 0.0;
+        QVERIFY(hasField(validateProject(noHole), "boring_tool.pilot_hole_diameter_mm", Severity::Error));
+        Project turningToolsHole = bushing();
+        turningToolsHole.tool.pilotHoleDiameter_mm = 24.0;
+        QVERIFY(hasField(validateProject(turningToolsHole), "tool.pilot_hole_diameter_mm", Severity::Error));
+        QVERIFY(!hasField(validateProject(bushing()), "tool.pilot_hole_diameter_mm", Severity::Error));
     }
 
     // The maker's longest overhang (WIDIA: 4 x D for steel shank bars): 120 mm on Ø25 is 4.8 x D,
@@ -301,12 +310,14 @@ private Q_SLOTS:
     {
         Project p = bushing();
         p.boringTool->edgeOffset_mm = 17.0;
+        p.boringTool->pilotHoleDiameter_mm = 24.5;
         const QByteArray json = serializeProjectJson(p);
         const ProjectParseResult back = parseProjectJson(json);
         QVERIFY2(back.project, qPrintable(dump(back.diagnostics)));
         QCOMPARE(back.project->boringTool, p.boringTool);
         QVERIFY(json.contains("\"boring_tool\""));
         QVERIFY(json.contains("\"edge_offset_mm\": 17"));
+        QVERIFY(json.contains("\"pilot_hole_diameter_mm\": 24.5"));
     }
 };
 

@@ -4,6 +4,8 @@
 // interpreter (rs274, package linuxcnc-uspace), whose canonical moves must reproduce the profile
 // with the nose radius to 1 µm. The Fanuc/Haas and Sinumerik programs must carry the same path.
 
+#include "tests/core/test_support.h"
+
 #include "core/data/data_library.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/project_file.h"
@@ -11,6 +13,7 @@
 #include "core/part/undercuts.h"
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
+#include "core/planning/toolpath_detail.h"
 #include "core/project/operations.h"
 #include "core/tolerance/target_contour.h"
 
@@ -26,6 +29,7 @@
 #include <numbers>
 
 using namespace tolturn;
+using tolturn::test::dump;
 
 namespace {
 
@@ -93,6 +97,7 @@ double distanceTo(const std::vector<PathElement> &chain, ProfilePoint p)
 // half-section (z from the part's left end, r), with the pass each belongs to (the comments).
 struct CanonicalPass {
     bool finishing = false;
+    bool bore = false; // a pass of the boring bar (its comment says "BORE PASS")
     std::vector<PathElement> moves;
 };
 
@@ -109,8 +114,9 @@ std::vector<CanonicalPass> readCanonical(const QString &text, double length_mm)
                 v.push_back(a.trimmed().toDouble());
             return v;
         };
-        if (line.contains(QStringLiteral("COMMENT(\"PASS "))) {
-            passes.push_back({line.contains(QStringLiteral("FINISHING")), {}});
+        if (line.contains(QStringLiteral("COMMENT(\"PASS ")) || line.contains(QStringLiteral("COMMENT(\"BORE PASS "))) {
+            passes.push_back(
+                {line.contains(QStringLiteral("FINISHING")), line.contains(QStringLiteral("BORE PASS")), {}});
         } else if (line.contains(QStringLiteral("STRAIGHT_TRAVERSE("))) {
             const auto v = values(QStringLiteral("STRAIGHT_TRAVERSE"));
             at = {v[2] + length_mm, v[0]};
@@ -142,8 +148,9 @@ struct Lathe {
 
 // A LinuxCNC lathe for the standalone interpreter: X and Z, millimetres, tool 1 with the nose
 // radius and orientation 2 (the tip r_e below and r_e left of the nose centre with Z to the right
-// and X up). The standalone interpreter reads the tool table in inches.
-void setUpLathe(Lathe &lathe, double noseRadius_mm)
+// and X up), tool 2, the boring bar, with its nose radius and orientation 3 (the tip r_e above and
+// r_e left of the nose centre). The standalone interpreter reads the tool table in inches.
+void setUpLathe(Lathe &lathe, double noseRadius_mm, double boringNoseRadius_mm = 0.4)
 {
     lathe.ini = lathe.dir.filePath(QStringLiteral("lathe.ini"));
     lathe.tools = lathe.dir.filePath(QStringLiteral("tools.tbl"));
@@ -153,7 +160,10 @@ void setUpLathe(Lathe &lathe, double noseRadius_mm)
               "ANGULAR_UNITS = degree\n[EMCIO]\nTOOL_TABLE = tools.tbl\n");
     QFile tools(lathe.tools);
     QVERIFY(tools.open(QIODevice::WriteOnly));
-    tools.write(QStringLiteral("T1 P1 D%1 Q2 ;nose\n").arg(2.0 * noseRadius_mm / 25.4, 0, 'f', 10).toUtf8());
+    tools.write(QStringLiteral("T1 P1 D%1 Q2 ;nose\nT2 P2 D%2 Q3 ;boring bar\n")
+                    .arg(2.0 * noseRadius_mm / 25.4, 0, 'f', 10)
+                    .arg(2.0 * boringNoseRadius_mm / 25.4, 0, 'f', 10)
+                    .toUtf8());
     QFile var(lathe.dir.filePath(QStringLiteral("rs274.var")));
     QVERIFY(var.open(QIODevice::WriteOnly));
 }
@@ -205,6 +215,29 @@ QStringList programmedMoves(const QString &program)
             moves << words.join(QLatin1Char(' '));
     }
     return moves;
+}
+
+// The bushing with its H7 bore (Ø32, through, 110 mm) bored from a Ø24 pilot hole with the carbide
+// bar E16R-SCLCR09 (Ø16, edge offset taken as the bar's radius, 8 mm) and a CCMT 09T304 insert
+// (r_e 0.4 mm), at 115 mm overhang, so that it reaches through.
+Project bushingFromPilotHole()
+{
+    Project p = example(QStringLiteral("bushing-bore-h7.tolturn"));
+    p.boringTool->holderCode = QStringLiteral("E16R-SCLCR09");
+    p.boringTool->insertCode = QStringLiteral("CCMT 09T304");
+    p.boringTool->overhang_mm = 115.0;
+    p.boringTool->pilotHoleDiameter_mm = 24.0;
+    return p;
+}
+
+// The segments of the bore open at the free end of a contour (z = length), left to right.
+std::vector<Segment> boreAtFreeEnd(const Contour &inner, double length)
+{
+    for (const auto &[first, end] : inner.pieces())
+        if (std::abs(inner.segments[end - 1].to.z_mm - length) < 1e-6)
+            return {inner.segments.begin() + static_cast<std::ptrdiff_t>(first),
+                    inner.segments.begin() + static_cast<std::ptrdiff_t>(end)};
+    return {};
 }
 
 } // namespace
@@ -393,6 +426,231 @@ private Q_SLOTS:
         QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
     }
 
+    // The H7 bushing from a Ø24 pilot hole, by hand. The target is the middle of H7 (0 / +25 µm on
+    // Ø32): r = 16.00625 mm; roughed to it less the finishing allowance of 0.5 mm, 15.50625 mm, less
+    // the 1 µm the last level stays off it. From r 12 the roughing pass's 1.5 mm give levels (the
+    // top of the nose, which cuts the bore) at r 13.5 and 15.0, and the rest, 0.50525 mm, a third at
+    // 15.50525. The finishing pass runs along the bore at 16.00625 to the left end (the bar reaches
+    // 110 + 2 - 115 = -3 mm). The smallest diameter bored, 27 mm at 220 m/min, sets the spindle limit:
+    // 1000 x 220 / (pi x 27) = 2593.6, so 2594 rpm. In the program: tool 2 and G41.
+    void boringLevelsByHand()
+    {
+        const Project p = bushingFromPilotHole();
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY2(d.inputs && d.inputs->boring, qPrintable(dump(d.diagnostics)));
+        GCodeOptions o;
+        o.dialect = ControlDialect::FanucHaas;
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+        QVERIFY(program.boring);
+        const Toolpath &bore = *program.boring;
+        QVERIFY2(bore.warnings.isEmpty(), qPrintable(bore.warnings.join(QLatin1Char('\n'))));
+        const std::vector<double> levels{13.5, 15.0, 16.00625 - 0.5 - 0.001};
+        QCOMPARE(bore.roughing.size(), levels.size());
+        for (std::size_t k = 0; k < levels.size(); ++k) {
+            double highest = -1.0;
+            for (const ToolMove &m : bore.roughing[k].moves)
+                if (m.kind == MoveKind::Feed)
+                    highest = std::max(highest, m.to.r_mm);
+            QVERIFY2(std::abs(highest - levels[k]) < 1e-9, qPrintable(QString::number(highest, 'f', 6)));
+        }
+        QCOMPARE(bore.roughing.front().smallestDiameter_mm, 27.0);
+        const auto along = std::find_if(bore.finishing.moves.begin(), bore.finishing.moves.end(),
+                                        [](const ToolMove &m) { return m.featureId == QLatin1String("I1"); });
+        QVERIFY(along != bore.finishing.moves.end());
+        QVERIFY(std::abs(along->to.r_mm - 16.00625) < 1e-9 && std::abs(along->to.z_mm) < 1e-9);
+        QCOMPARE(program.spindle.speed_rpm, 2594.0);
+        QCOMPARE(program.passes.size(), program.path.roughing.size() + 1 + levels.size() + 1);
+        QCOMPARE(program.passes.back().side, ContourSide::Inner);
+        QCOMPARE(passKindText(program.passes.back()), QStringLiteral("boring, finishing"));
+        QVERIFY(program.text.contains(QStringLiteral("T0202")));
+        QVERIFY(program.text.contains(QStringLiteral("G41 G01")));
+        QCOMPARE(program.text.count(QStringLiteral("(BORE PASS ")), 4);
+    }
+
+    // What the bar cannot do is said: a bar too thick for the pilot hole, an overhang that does not
+    // reach the bottom, a bore without a pilot hole, a bottom face the bar cannot reach to the axis.
+    void boringLimitsAreWarnings()
+    {
+        Project tooThick = bushingFromPilotHole();
+        tooThick.boringTool->pilotHoleDiameter_mm = 15.0; // a Ø16 bar in a Ø15 hole
+        const DeviationResult d1 = computeDeviation(tooThick, DataLibrary::builtIn(), {});
+        QVERIFY(d1.inputs);
+        const TurningProgram p1 = turningProgram(tooThick, DataLibrary::builtIn(), *d1.inputs, {});
+        QVERIFY2(p1.boring && p1.boring->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("does not fit")),
+                 qPrintable(p1.warnings().join(QLatin1Char('\n'))));
+
+        Project shortBar = bushingFromPilotHole();
+        shortBar.boringTool->overhang_mm = 100.0; // reaches z = 110 + 2 - 100 = 12
+        const DeviationResult d2 = computeDeviation(shortBar, DataLibrary::builtIn(), {});
+        QVERIFY(d2.inputs);
+        const TurningProgram p2 = turningProgram(shortBar, DataLibrary::builtIn(), *d2.inputs, {});
+        QVERIFY(p2.boring && p2.boring->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("reaches z = 12.000")));
+        double leftmost = 1e9;
+        for (const PassPath *pass : {&p2.boring->roughing.front(), &p2.boring->finishing})
+            for (const ToolMove &m : pass->moves)
+                leftmost = std::min(leftmost, m.to.z_mm);
+        QVERIFY2(leftmost >= 12.0 - 0.4 - 1e-9, qPrintable(QString::number(leftmost))); // tip r_e left of the nose
+
+        Project noPilot = bushingFromPilotHole();
+        noPilot.boringTool->pilotHoleDiameter_mm.reset();
+        const DeviationResult d3 = computeDeviation(noPilot, DataLibrary::builtIn(), {});
+        const TurningProgram p3 = turningProgram(noPilot, DataLibrary::builtIn(), *d3.inputs, {});
+        QVERIFY(p3.boring && p3.boring->roughing.empty());
+        QVERIFY(p3.boring->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("pilot hole is not given")));
+
+        // The valve body's bore from the right end, blind, with its bottom on the axis at z 75: the
+        // Ø16 bar, edge 8 mm from its axis, in the Ø25 bore touches the opposite wall when its edge
+        // is nearer the axis than 8 + 8 - 12.508 25 = 3.491 75 mm (the bore at the middle of its H8
+        // zone, Ø25.0165: IT8 is 33 µm from 18 to 30 mm, ISO 286-1 table 1). With the Ø19 pilot hole
+        // the bottom inside it is the drill's; without one the bar faces down to Ø6.9835 and says so.
+        Project valve = operationView(example(QStringLiteral("valve-body-two-bores.tolturn")), 0);
+        const DeviationResult d4 = computeDeviation(valve, DataLibrary::builtIn(), {});
+        QVERIFY(d4.inputs);
+        const TurningProgram p4 = turningProgram(valve, DataLibrary::builtIn(), *d4.inputs, {});
+        QVERIFY(p4.boring);
+        QVERIFY(!p4.boring->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("only down to")));
+        QVERIFY(p4.boring->notes.join(QLatin1Char(' ')).contains(QStringLiteral("pilot hole, Ø19.000 mm")));
+        valve.boringTool->pilotHoleDiameter_mm.reset();
+        const TurningProgram p4b = turningProgram(valve, DataLibrary::builtIn(), *d4.inputs, {});
+        QVERIFY2(p4b.boring->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("I3 only down to Ø6.98")),
+                 qPrintable(p4b.boring->warnings.join(QLatin1Char('\n'))));
+        double innermost = 1e9; // the G41 contour: the bar's edge stops where it reaches
+        for (const ToolMove &m : p4b.boring->finishing.moves)
+            innermost = std::min(innermost, m.to.r_mm);
+        QVERIFY2(std::abs(innermost - 3.49175) < 1e-6, qPrintable(QString::number(innermost, 'f', 6)));
+
+        Project noBar = example(QStringLiteral("bushing-bore-h7.tolturn"));
+        noBar.boringTool.reset();
+        const DeviationResult d5 = computeDeviation(noBar, DataLibrary::builtIn(), {});
+        const TurningProgram p5 = turningProgram(noBar, DataLibrary::builtIn(), *d5.inputs, {});
+        QVERIFY(!p5.boring);
+        QVERIFY(p5.path.notes.join(QLatin1Char(' ')).contains(QStringLiteral("no boring bar")));
+    }
+
+    void linuxCncBoresTheBore_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("operation");
+        QTest::addColumn<int>("nose");
+        QTest::addColumn<double>("pilot"); // 0: as in the file, -1: none
+        for (const QString &f : QDir(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples"))
+                                    .entryList({QStringLiteral("*.tolturn")}, QDir::Files)) {
+            for (int k = 0; k < operationCount(example(f)); ++k) {
+                const Project view = operationView(example(f), k);
+                if (!view.boringTool || boreAtFreeEnd(view.part.inner, view.part.length_mm()).empty())
+                    continue;
+                QTest::addRow("%s op %d G41", qPrintable(f), k + 1)
+                    << f << k << static_cast<int>(NoseHandling::ControlCompensation) << 0.0;
+                QTest::addRow("%s op %d tip path", qPrintable(f), k + 1)
+                    << f << k << static_cast<int>(NoseHandling::TipPath) << 0.0;
+            }
+        }
+        // Without a pilot hole: the finishing pass only.
+        const QString valve = QStringLiteral("valve-body-two-bores.tolturn");
+        QTest::addRow("valve body op 1 without a pilot hole")
+            << valve << 0 << static_cast<int>(NoseHandling::ControlCompensation) << -1.0;
+        QTest::addRow("valve body op 2 without a pilot hole")
+            << valve << 1 << static_cast<int>(NoseHandling::TipPath) << -1.0;
+    }
+
+    // The boring bar's program through LinuxCNC's interpreter. The nose centre of the bar (canonical
+    // tip + (r_e, -r_e): its imaginary tip is r_e above and r_e left of the centre) in the finishing
+    // pass keeps at least r_e - 1 µm from the bore (no gouge), and every point of the bore this
+    // set-up cuts is within r_e + 1 µm of it (the bore is reproduced), except what the bar cannot
+    // reach: left of its overhang's reach, the bottom inside the pilot hole or nearer the axis than
+    // the bar's edge offset plus its radius less the bore's (where its far side would touch the
+    // wall), and the nose's own radius in an inner corner. Every roughing nose centre keeps the
+    // finishing allowance plus r_e (less the 2 µm of the path's simplification).
+    void linuxCncBoresTheBore()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, operation);
+        QFETCH(int, nose);
+        QFETCH(double, pilot);
+        Project p = operationView(example(file), operation);
+        if (pilot < 0.0)
+            p.boringTool->pilotHoleDiameter_mm.reset();
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY2(d.inputs && d.inputs->boring, qPrintable(dump(d.diagnostics)));
+        const BoringInputs &bar = *d.inputs->boring;
+        const double re = bar.noseRadius_mm;
+        GCodeOptions o;
+        o.nose = static_cast<NoseHandling>(nose);
+        o.dialect = ControlDialect::LinuxCnc;
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+        QVERIFY(program.boring);
+        Lathe lathe;
+        setUpLathe(lathe, d.inputs->noseRadius_mm, re);
+        const QString canonical = runInterpreter(lathe, program.text);
+        QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
+        const double length = p.part.length_mm();
+        std::vector<PathElement> centre;
+        std::vector<PathElement> roughingCentre;
+        for (const CanonicalPass &pass : readCanonical(canonical, length)) {
+            if (!pass.bore)
+                continue;
+            for (const PathElement &m : pass.moves)
+                (pass.finishing ? centre : roughingCentre).push_back(translated({m}, re, -re).front());
+        }
+        QVERIFY(!centre.empty());
+        QCOMPARE(!roughingCentre.empty(), p.boringTool->pilotHoleDiameter_mm.has_value());
+        const std::vector<Segment> boreSegments = boreAtFreeEnd(targetContour(p, ContourSide::Inner), length);
+        const std::vector<PathElement> bore = reversedElements(boreSegments);
+        double closest = 1e9;
+        for (const PathElement &e : centre)
+            for (const ProfilePoint &c : sampled(e, 0.01))
+                closest = std::min(closest, distanceTo(bore, c));
+        QVERIFY2(closest >= re - 0.001, qPrintable(QStringLiteral("gouge: %1").arg(closest, 0, 'f', 5)));
+        double roughClosest = 1e9;
+        for (const PathElement &e : roughingCentre)
+            for (const ProfilePoint &c : sampled(e, 0.01))
+                roughClosest = std::min(roughClosest, distanceTo(bore, c));
+        const double allowance = d.inputs->pass.depthOfCut_mm;
+        QVERIFY2(roughingCentre.empty() || roughClosest >= allowance + re - 0.002,
+                 qPrintable(QStringLiteral("into the allowance: %1").arg(roughClosest, 0, 'f', 5)));
+
+        const double reach = length + 2.0 - bar.bar.overhang_mm;
+        const double halfBar = 0.5 * bar.bar.diameter_mm;
+        // Inner corners of the bore as the bar sees them: mirrored about the axis, where the bore is
+        // an outer contour, a corner turning right.
+        const std::vector<PathElement> seen = toolpath_detail::mirrored(bore);
+        std::vector<ProfilePoint> innerCorners;
+        for (std::size_t i = 1; i < seen.size(); ++i) {
+            const ProfilePoint a = endTangent(seen[i - 1]);
+            const ProfilePoint b = startTangent(seen[i]);
+            if (a.z_mm * b.r_mm - a.r_mm * b.z_mm < -1e-9)
+                innerCorners.push_back({bore[i].from.z_mm, bore[i].from.r_mm});
+        }
+        double farthest = 0.0;
+        bool otherSetUp = false; // from the first feature another set-up cuts on, nothing is this one's
+        for (const PathElement &e : bore) {
+            otherSetUp = otherSetUp || (p.scope && !p.scope->cutFeatures.contains(e.featureId));
+            if (otherSetUp)
+                break;
+            const bool face = std::abs(e.from.z_mm - e.to.z_mm) < 1e-9;
+            const bool bottom = face && e.to.r_mm < 1e-9;
+            const double drilled =
+                bottom && p.boringTool->pilotHoleDiameter_mm ? 0.5 * *p.boringTool->pilotHoleDiameter_mm : 0.0;
+            const double barReach = face ? bar.bar.edgeOffset_mm + halfBar - e.from.r_mm : 0.0;
+            for (const ProfilePoint &q : sampled(e, 0.05)) {
+                const bool nearCorner = std::any_of(innerCorners.begin(), innerCorners.end(),
+                                                    [&](ProfilePoint c) { return distance(c, q) < re + 1e-6; });
+                if (q.z_mm < reach - 1e-9 || (face && q.r_mm < std::max(drilled, barReach) - 1e-9) || nearCorner)
+                    continue;
+                farthest = std::max(farthest, distanceTo(centre, q));
+            }
+        }
+        QVERIFY2(farthest <= re + 0.001, qPrintable(QStringLiteral("not reached: %1").arg(farthest, 0, 'f', 5)));
+
+        o.dialect = ControlDialect::FanucHaas;
+        const QString fanuc = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o).text;
+        QCOMPARE(programmedMoves(fanuc), programmedMoves(program.text));
+        QVERIFY(fanuc.contains(QStringLiteral("T0202")));
+        QCOMPARE(fanuc.contains(QStringLiteral("G41 ")), o.nose == NoseHandling::ControlCompensation);
+        QCOMPARE(fanuc.contains(QStringLiteral("BORING BAR: PATH OF THE IMAGINARY TOOL TIP")),
+                 o.nose == NoseHandling::TipPath);
+    }
+
     void linuxCncReproducesTheProfile_data()
     {
         QTest::addColumn<QString>("file");
@@ -442,7 +700,7 @@ private Q_SLOTS:
         QVERIFY(linuxcnc.text.contains(QStringLiteral("G96 D")) && linuxcnc.text.contains(QStringLiteral("G95")) &&
                 linuxcnc.text.contains(QStringLiteral("G7")));
         Lathe lathe;
-        setUpLathe(lathe, re);
+        setUpLathe(lathe, re, d.inputs->boring ? d.inputs->boring->noseRadius_mm : 0.4);
         const QString canonical = runInterpreter(lathe, linuxcnc.text);
         QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
         const double length = p.part.length_mm();
@@ -450,6 +708,8 @@ private Q_SLOTS:
         const double support = p.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : p.clamping.clampedLength_mm;
         std::vector<PathElement> centre;
         for (const CanonicalPass &pass : passes) {
+            if (pass.bore)
+                continue; // the boring bar's (linuxCncBoresTheBore)
             for (const PathElement &m : pass.moves) {
                 for (const ProfilePoint &tip : sampled(m, 0.05))
                     QVERIFY2(tip.z_mm >= support + 2.0 - 1e-6, qPrintable(QString::number(tip.z_mm)));

@@ -8,6 +8,7 @@
 #include "core/project/operations.h"
 #include "widgets/common/length_spin_box.h"
 #include "widgets/document/project_document.h"
+#include "widgets/planning/planning_panel.h"
 #include "widgets/results/deflection_panel.h"
 #include "widgets/setup/operations_dialog.h"
 #include "widgets/setup/setup_panel.h"
@@ -15,6 +16,7 @@
 #include "widgets/tolerances/tolerance_panel.h"
 
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
@@ -22,6 +24,7 @@
 #include <QListWidget>
 #include <QScrollArea>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -105,6 +108,34 @@ private Q_SLOTS:
         s->resize(460, 700);
         s->findChild<QScrollArea *>()->ensureWidgetVisible(s->boringBarSummary());
         test::saveScreenshot(*s, "setup-boring-bar.png");
+        // The pilot hole the program bores from: with it the G-code has the bar's roughing passes;
+        // 'not given' leaves the finishing pass and says why; one undoable edit.
+        QCOMPARE(s->pilotHoleBox()->millimetres(), 28.0);
+        QVERIFY(w.planningPanel()->gcodeText().contains(QStringLiteral("(BORE PASS 3, ROUGHING")));
+        QVERIFY(w.planningPanel()->gcodeText().contains(QStringLiteral("T0202")));
+        // The warnings under the conditions, one per line, as rich text: no escaped breaks.
+        const QString about = w.planningPanel()->findChild<QLabel *>(QStringLiteral("gcodeConditions"))->text();
+        QVERIFY2(about.contains(QStringLiteral("<br>")) && !about.contains(QStringLiteral("&lt;br&gt;")),
+                 qPrintable(about));
+        if (!qEnvironmentVariableIsEmpty("TOLTURN_SCREENSHOTS")) {
+            auto *tabs = w.planningPanel()->findChild<QTabWidget *>();
+            for (int i = 0; i < tabs->count(); ++i)
+                if (tabs->tabText(i).remove(QLatin1Char('&')) == QStringLiteral("G-code"))
+                    tabs->setCurrentIndex(i);
+            w.findChild<QDockWidget *>(QStringLiteral("planningDock"))->raise();
+            w.resize(1366, 768);
+            w.show();
+            QTest::qWait(50);
+            test::saveScreenshot(w, "gcode-boring.png");
+        }
+        s->pilotHoleBox()->setMillimetres(0.0);
+        QVERIFY(!w.document()->project().boringTool->pilotHoleDiameter_mm);
+        QVERIFY(!w.planningPanel()->gcodeText().contains(QStringLiteral("(BORE PASS 3, ROUGHING")));
+        QVERIFY(w.planningPanel()->gcodeText().contains(QStringLiteral("(BORE PASS 3, FINISHING")));
+        QVERIFY(w.planningPanel()->gcodeText().contains(QStringLiteral("PILOT HOLE IS NOT GIVEN")));
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->project().boringTool->pilotHoleDiameter_mm, std::optional<double>(28.0));
+        QCOMPARE(s->pilotHoleBox()->millimetres(), 28.0);
         const double at95 = innerBarDeflection_mm(w.deflectionPanel()->result());
         QVERIFY(at95 > 0.0);
         w.deflectionPanel()->setSide(ContourSide::Inner);

@@ -177,7 +177,7 @@ void PlanningPanel::buildControls()
         m_dialect->addItem(displayName(d), static_cast<int>(d));
     m_dialect->setToolTip(tr("The control the program is written for"));
     m_nose->setObjectName(QStringLiteral("gcodeNose"));
-    m_nose->addItem(tr("Nose radius: G42 by the control"), static_cast<int>(NoseHandling::ControlCompensation));
+    m_nose->addItem(tr("Nose radius: G41/G42 by the control"), static_cast<int>(NoseHandling::ControlCompensation));
     m_nose->addItem(tr("Nose radius: tip path by TolTurn"), static_cast<int>(NoseHandling::TipPath));
     m_nose->setToolTip(tr("G42: the program is the contour and the control offsets it by the nose radius in its "
                           "tool data. Tip path: TolTurn offsets it, for controls without compensation."));
@@ -188,6 +188,7 @@ void PlanningPanel::buildControls()
     gcodeTop->addWidget(m_export);
     m_gcodeConditions->setObjectName(QStringLiteral("gcodeConditions"));
     m_gcodeConditions->setWordWrap(true);
+    m_gcodeConditions->setTextFormat(Qt::RichText);
     gcodeLayout->addLayout(gcodeTop);
     gcodeLayout->addWidget(m_gcodeConditions);
     gcodeLayout->addWidget(m_gcode);
@@ -476,7 +477,7 @@ void PlanningPanel::showPlanPasses()
         const PassSummary &p = program.passes[static_cast<std::size_t>(i)];
         const QStringList cells{
             QString::number(p.number),
-            p.kind == PassKind::Roughing ? tr("roughing") : tr("finishing"),
+            passKindText(p),
             QStringLiteral("%1–%2").arg(number(p.lowestSpeed_rpm, 0), number(p.highestSpeed_rpm, 0)),
             number(p.conditions.cuttingSpeed_m_min, 0),
             number(p.conditions.feed_mm_rev, 3),
@@ -644,9 +645,13 @@ void PlanningPanel::showFinishing()
                         .arg(program.conditions, program.dialectReason)
                         .arg(program.programNumber)
                         .arg(program.checksum);
-    if (!program.path.warnings.isEmpty())
-        about += QStringLiteral("<br><span style='color:#a50f15'>") +
-                 program.path.warnings.join(QStringLiteral("<br>")).toHtmlEscaped() + QStringLiteral("</span>");
+    about = about.toHtmlEscaped();
+    QStringList warnings = program.warnings();
+    for (QString &w : warnings)
+        w = w.toHtmlEscaped(); // each line escaped, the breaks between them not
+    if (!warnings.isEmpty())
+        about += QStringLiteral("<br><span style='color:#a50f15'>") + warnings.join(QStringLiteral("<br>")) +
+                 QStringLiteral("</span>");
     m_gcodeConditions->setText(about);
     m_gcode->setPlainText(program.text);
 }

@@ -135,8 +135,7 @@ void setupSheet(Layout &l, const Project &p, const FinishingOutput &finishing)
                                    SetupSheet::tr("Time [min]")}};
     double total = 0.0;
     for (const PassSummary &s : program.passes) {
-        rows.push_back({QString::number(s.number),
-                        s.kind == PassKind::Roughing ? SetupSheet::tr("roughing") : SetupSheet::tr("finishing"),
+        rows.push_back({QString::number(s.number), passKindText(s),
                         QStringLiteral("%1–%2").arg(num(s.lowestSpeed_rpm, 0), num(s.highestSpeed_rpm, 0)),
                         num(s.conditions.cuttingSpeed_m_min, 0), num(s.conditions.feed_mm_rev, 3),
                         num(s.conditions.depthOfCut_mm, 3), s.power_kW ? num(*s.power_kW, 2) : SetupSheet::tr("—"),
@@ -155,7 +154,7 @@ void setupSheet(Layout &l, const Project &p, const FinishingOutput &finishing)
                     .arg(num(program.spindle.speed_rpm, 0), program.spindle.reason, program.checksum,
                          finishing.compensated.checksum),
                 8.5);
-    for (const QString &w : program.path.warnings)
+    for (const QString &w : program.warnings())
         l.paragraph(SetupSheet::tr("Program warning: %1").arg(w), 8.5);
 }
 

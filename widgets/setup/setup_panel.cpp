@@ -270,6 +270,11 @@ QWidget *SetupPanel::createBoringGroup()
                   "that twists the bar. 'bar radius' takes the least it can be."));
     m_boringEdgeOffset->setObjectName(QStringLiteral("boringEdgeOffset"));
     m_boringEdgeOffset->setSpecialValueText(tr("bar radius"));
+    m_pilotHole = new LengthSpinBox(
+        2000.0, tr("Diameter of the hole drilled (or cored) before the bar starts: the program roughs the bore from "
+                   "it. 'not given' takes the bore as roughed to its finishing allowance before the program."));
+    m_pilotHole->setObjectName(QStringLiteral("pilotHole"));
+    m_pilotHole->setSpecialValueText(tr("not given"));
     m_boringSummary = new QLabel;
     m_boringSummary->setObjectName(QStringLiteral("boringSummary"));
     m_boringSummary->setWordWrap(true);
@@ -277,15 +282,18 @@ QWidget *SetupPanel::createBoringGroup()
     form->addRow(tr("Insert (ISO 1832):"), m_boringInsert);
     form->addRow(tr("Bar o&verhang:"), m_boringOverhang);
     form->addRow(tr("Edge offset f:"), m_boringEdgeOffset);
+    form->addRow(tr("Pilot &hole Ø:"), m_pilotHole);
     form->addRow(QString(), m_boringSummary);
     setProjectField(*m_boringBar, QStringLiteral("boring_tool.holder"));
     setProjectField(*m_boringInsert, QStringLiteral("boring_tool.insert"));
     setProjectField(*m_boringOverhang, QStringLiteral("boring_tool.overhang_mm"));
     setProjectField(*m_boringEdgeOffset, QStringLiteral("boring_tool.edge_offset_mm"));
+    setProjectField(*m_pilotHole, QStringLiteral("boring_tool.pilot_hole_diameter_mm"));
     connect(m_boringBar, &QComboBox::activated, this, &SetupPanel::applyBoringTool);
     connect(m_boringInsert, &QLineEdit::editingFinished, this, &SetupPanel::applyBoringTool);
     connect(m_boringOverhang, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
     connect(m_boringEdgeOffset, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
+    connect(m_pilotHole, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
     return group;
 }
 
@@ -512,7 +520,9 @@ void SetupPanel::showBoringTool(const Project &p)
     m_boringInsert->setText(bar ? p.boringTool->insertCode : QString());
     m_boringOverhang->setMillimetres(bar ? p.boringTool->overhang_mm.value_or(0.0) : 0.0);
     m_boringEdgeOffset->setMillimetres(bar ? p.boringTool->edgeOffset_mm.value_or(0.0) : 0.0);
-    for (QWidget *w : std::initializer_list<QWidget *>{m_boringInsert, m_boringOverhang, m_boringEdgeOffset})
+    m_pilotHole->setMillimetres(bar ? p.boringTool->pilotHoleDiameter_mm.value_or(0.0) : 0.0);
+    for (QWidget *w :
+         std::initializer_list<QWidget *>{m_boringInsert, m_boringOverhang, m_boringEdgeOffset, m_pilotHole})
         w->setEnabled(bar);
     const DataLibrary &library = DataLibrary::builtIn();
     const HolderData *h = bar ? library.holder(p.boringTool->holderCode) : nullptr;
@@ -563,6 +573,8 @@ void SetupPanel::applyBoringTool()
     tool.overhang_mm = overhang_mm != 0.0 ? std::optional<double>(overhang_mm) : std::nullopt;
     const double offset_mm = m_boringEdgeOffset->millimetres();
     tool.edgeOffset_mm = offset_mm != 0.0 ? std::optional<double>(offset_mm) : std::nullopt;
+    const double pilot_mm = m_pilotHole->millimetres();
+    tool.pilotHoleDiameter_mm = pilot_mm != 0.0 ? std::optional<double>(pilot_mm) : std::nullopt;
     if (before && tool == *before)
         return;
     showOutcome(m_document.setOperationBoringTool(m_operation, tool));

@@ -62,6 +62,8 @@ public:
 
     [[nodiscard]] LengthSpinBox *boringEdgeOffsetBox() const { return m_boringEdgeOffset; }
 
+    [[nodiscard]] LengthSpinBox *pilotHoleBox() const { return m_pilotHole; }
+
     [[nodiscard]] QLabel *boringBarSummary() const { return m_boringSummary; }
 
     [[nodiscard]] StiffnessEditor *stiffnessEditor() const { return m_stiffness; }
@@ -130,6 +132,7 @@ private:
     QLineEdit *m_boringInsert = nullptr;
     LengthSpinBox *m_boringOverhang = nullptr;
     LengthSpinBox *m_boringEdgeOffset = nullptr;
+    LengthSpinBox *m_pilotHole = nullptr;
     QLabel *m_boringSummary = nullptr;
     QGridLayout *m_passGrid = nullptr;
     std::vector<std::vector<QDoubleSpinBox *>> m_passBoxes;
