@@ -548,6 +548,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>collet stiffness needed: %1</source>
         <translation>nötige Steifigkeit der Spannzange: %1</translation>
     </message>
+    <message>
+        <source>Plain Timoshenko beam: without the corrections for the root in the jaws and the shoulders identified from solid FE.</source>
+        <translation>Reiner Timoshenko-Balken: ohne die aus Volumen-FE ermittelten Korrekturen für die Einspannung in den Backen und die Absätze.</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -866,6 +870,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Collet: no published stiffness of a collet or of the spindle holding one was found, so it is taken as rigid at the collet&apos;s face, which is optimistic. The verdicts give the stiffness each tolerance needs of it.</source>
         <translation>Spannzange: Für eine Spannzange oder die Spindel mit Spannzange wurde keine veröffentlichte Steifigkeit gefunden; sie wird an ihrer Stirnseite als starr angenommen, was optimistisch ist. Die Bewertungen nennen die Steifigkeit, die jede Toleranz von ihr braucht.</translation>
+    </message>
+    <message>
+        <source>Workpiece beam without the corrections for the root in the jaws and the shoulders: plain Timoshenko theory, up to about 10 % stiffer than a solid model where a chuck holds the part (docs/solid-fe.md).</source>
+        <translation>Werkstückbalken ohne die Korrekturen für die Einspannung in den Backen und die Absätze: reine Timoshenko-Theorie, bis etwa 10 % steifer als ein Volumenmodell, wo ein Futter das Teil spannt (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>Workpiece beam corrected from solid FE: built in %1 of its diameter inside the jaws, a hinge at each shoulder (docs/solid-fe.md).</source>
+        <translation>Werkstückbalken nach Volumen-FE korrigiert: um das %1-Fache seines Durchmessers innerhalb der Backen eingespannt, ein Gelenk an jedem Absatz (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>Workpiece beam corrected from solid FE: a hinge at each shoulder (docs/solid-fe.md).</source>
+        <translation>Werkstückbalken nach Volumen-FE korrigiert: ein Gelenk an jedem Absatz (docs/solid-fe.md).</translation>
     </message>
 </context>
 <context>
@@ -3667,6 +3683,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>done</source>
         <translation>fertig</translation>
     </message>
+    <message>
+        <source>The beam carries its corrections from solid FE (the root in the jaws, a hinge at each shoulder); Timoshenko is the beam without them (docs/solid-fe.md).</source>
+        <translation>Der Balken trägt seine Korrekturen aus Volumen-FE (die Einspannung in den Backen, ein Gelenk an jedem Absatz); Timoshenko ist der Balken ohne sie (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>The beam is plain Timoshenko, without its corrections.</source>
+        <translation>Der Balken ist reiner Timoshenko, ohne seine Korrekturen.</translation>
+    </message>
 </context>
 <context>
     <name>SpindleCalibration</name>
@@ -4294,10 +4318,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Netz: C3D10 von höchstens %1 mm, %2 Knoten, %3 Elemente, %4 Freiheitsgrade; gmsh %5 s, CalculiX %6 s, Balken %7 ms</translation>
     </message>
     <message>
-        <source>  z [mm]   D [mm]   radial deflection [um]: beam    solid   beam-solid [%]   tangential [um]: beam    solid</source>
-        <translation>  z [mm]   D [mm]  Durchbiegung rad. [um]: Balken  Volumen  Balken-Vol. [%]  tangential [um]: Balken  Volumen</translation>
-    </message>
-    <message>
         <source>note: %1</source>
         <translation>Hinweis: %1</translation>
     </message>
@@ -4344,6 +4364,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Largest radial difference: %1 % of the largest deflection</source>
         <translation>Größte radiale Abweichung: %1 % der größten Durchbiegung</translation>
+    </message>
+    <message>
+        <source>Beam: corrected for the root in the jaws and the shoulders (docs/solid-fe.md); Timoshenko: without the corrections</source>
+        <translation>Balken: korrigiert für die Einspannung in den Backen und die Absätze (docs/solid-fe.md); Timoshenko: ohne die Korrekturen</translation>
+    </message>
+    <message>
+        <source>Beam: Timoshenko, without the corrections (--uncorrected-beam)</source>
+        <translation>Balken: Timoshenko, ohne die Korrekturen (--uncorrected-beam)</translation>
+    </message>
+    <message>
+        <source>  z [mm]   D [mm]   radial deflection [um]: beam    solid   beam-solid [%]   tangential [um]: beam    solid   Timoshenko radial [um]</source>
+        <translation>  z [mm]   D [mm]  Durchbiegung rad. [um]: Balken  Volumen  Balken-Vol. [%]  tangential [um]: Balken  Volumen   Timoshenko radial [um]</translation>
+    </message>
+    <message>
+        <source>Compare the beam without its corrections for the root in the jaws and the shoulders.</source>
+        <translation>Den Balken ohne seine Korrekturen für die Einspannung in den Backen und die Absätze vergleichen.</translation>
     </message>
 </context>
 <context>
@@ -7098,6 +7134,22 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Held: %1 · E = %2 MPa, ν = %3 · force at each station: Fc %4 N, Ff %5 N, Fp %6 N</source>
         <translation>Gespannt: %1 · E = %2 MPa, ν = %3 · Kraft an jeder Station: Fc %4 N, Ff %5 N, Fp %6 N</translation>
+    </message>
+    <message>
+        <source>Timoshenko radial [%1]</source>
+        <translation>Timoshenko radial [%1]</translation>
+    </message>
+    <message>
+        <source>The beam without its corrections for the root in the jaws and the shoulders (docs/solid-fe.md)</source>
+        <translation>Der Balken ohne seine Korrekturen für die Einspannung in den Backen und die Absätze (docs/solid-fe.md)</translation>
+    </message>
+    <message>
+        <source>beam without corrections</source>
+        <translation>Balken ohne Korrekturen</translation>
+    </message>
+    <message>
+        <source>beam (corrected)</source>
+        <translation>Balken (korrigiert)</translation>
     </message>
 </context>
 <context>

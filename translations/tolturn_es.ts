@@ -548,6 +548,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>collet stiffness needed: %1</source>
         <translation>rigidez necesaria de la pinza: %1</translation>
     </message>
+    <message>
+        <source>Plain Timoshenko beam: without the corrections for the root in the jaws and the shoulders identified from solid FE.</source>
+        <translation>Viga de Timoshenko sin más: sin las correcciones del empotramiento en las garras y de los resaltes identificadas con EF sólidos.</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -866,6 +870,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Collet: no published stiffness of a collet or of the spindle holding one was found, so it is taken as rigid at the collet&apos;s face, which is optimistic. The verdicts give the stiffness each tolerance needs of it.</source>
         <translation>Pinza: no se encontró ninguna rigidez publicada de una pinza ni del husillo que la sujeta, así que se toma como rígida en la cara de la pinza, lo que es optimista. Los veredictos dan la rigidez que cada tolerancia necesita de ella.</translation>
+    </message>
+    <message>
+        <source>Workpiece beam without the corrections for the root in the jaws and the shoulders: plain Timoshenko theory, up to about 10 % stiffer than a solid model where a chuck holds the part (docs/solid-fe.md).</source>
+        <translation>Viga de la pieza sin las correcciones del empotramiento en las garras y de los resaltes: teoría de Timoshenko sin más, hasta un 10 % más rígida que un modelo sólido donde un plato sujeta la pieza (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>Workpiece beam corrected from solid FE: built in %1 of its diameter inside the jaws, a hinge at each shoulder (docs/solid-fe.md).</source>
+        <translation>Viga de la pieza corregida con EF sólidos: empotrada %1 veces su diámetro dentro de las garras, una articulación en cada resalte (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>Workpiece beam corrected from solid FE: a hinge at each shoulder (docs/solid-fe.md).</source>
+        <translation>Viga de la pieza corregida con EF sólidos: una articulación en cada resalte (docs/solid-fe.md).</translation>
     </message>
 </context>
 <context>
@@ -3667,6 +3683,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>done</source>
         <translation>terminado</translation>
     </message>
+    <message>
+        <source>The beam carries its corrections from solid FE (the root in the jaws, a hinge at each shoulder); Timoshenko is the beam without them (docs/solid-fe.md).</source>
+        <translation>La viga lleva sus correcciones de EF sólidos (el empotramiento en las garras, una articulación en cada resalte); Timoshenko es la viga sin ellas (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>The beam is plain Timoshenko, without its corrections.</source>
+        <translation>La viga es Timoshenko sin más, sin sus correcciones.</translation>
+    </message>
 </context>
 <context>
     <name>SpindleCalibration</name>
@@ -4294,10 +4318,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Malla: C3D10 de como mucho %1 mm, %2 nodos, %3 elementos, %4 grados de libertad; gmsh %5 s, CalculiX %6 s, viga %7 ms</translation>
     </message>
     <message>
-        <source>  z [mm]   D [mm]   radial deflection [um]: beam    solid   beam-solid [%]   tangential [um]: beam    solid</source>
-        <translation>  z [mm]   D [mm]     deflexión radial [um]: viga   sólido  viga-sólido [%]    tangencial [um]: viga   sólido</translation>
-    </message>
-    <message>
         <source>note: %1</source>
         <translation>nota: %1</translation>
     </message>
@@ -4344,6 +4364,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Largest radial difference: %1 % of the largest deflection</source>
         <translation>Mayor diferencia radial: %1 % de la mayor deflexión</translation>
+    </message>
+    <message>
+        <source>Beam: corrected for the root in the jaws and the shoulders (docs/solid-fe.md); Timoshenko: without the corrections</source>
+        <translation>Viga: corregida por el empotramiento en las garras y los resaltes (docs/solid-fe.md); Timoshenko: sin las correcciones</translation>
+    </message>
+    <message>
+        <source>Beam: Timoshenko, without the corrections (--uncorrected-beam)</source>
+        <translation>Viga: Timoshenko, sin las correcciones (--uncorrected-beam)</translation>
+    </message>
+    <message>
+        <source>  z [mm]   D [mm]   radial deflection [um]: beam    solid   beam-solid [%]   tangential [um]: beam    solid   Timoshenko radial [um]</source>
+        <translation>  z [mm]   D [mm]     deflexión radial [um]: viga   sólido  viga-sólido [%]    tangencial [um]: viga   sólido   Timoshenko radial [um]</translation>
+    </message>
+    <message>
+        <source>Compare the beam without its corrections for the root in the jaws and the shoulders.</source>
+        <translation>Comparar la viga sin sus correcciones del empotramiento en las garras y de los resaltes.</translation>
     </message>
 </context>
 <context>
@@ -7098,6 +7134,22 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Held: %1 · E = %2 MPa, ν = %3 · force at each station: Fc %4 N, Ff %5 N, Fp %6 N</source>
         <translation>Sujeción: %1 · E = %2 MPa, ν = %3 · fuerza en cada estación: Fc %4 N, Ff %5 N, Fp %6 N</translation>
+    </message>
+    <message>
+        <source>Timoshenko radial [%1]</source>
+        <translation>Timoshenko radial [%1]</translation>
+    </message>
+    <message>
+        <source>The beam without its corrections for the root in the jaws and the shoulders (docs/solid-fe.md)</source>
+        <translation>La viga sin sus correcciones del empotramiento en las garras y de los resaltes (docs/solid-fe.md)</translation>
+    </message>
+    <message>
+        <source>beam without corrections</source>
+        <translation>viga sin correcciones</translation>
+    </message>
+    <message>
+        <source>beam (corrected)</source>
+        <translation>viga (corregida)</translation>
     </message>
 </context>
 <context>

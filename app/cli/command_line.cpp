@@ -99,7 +99,8 @@ const std::vector<Command> &commands()
          CommandLine::tr("Validate project files: report every problem with the field and value; exit 1 on errors."),
          runCheck},
         {QStringLiteral("deflect"),
-         QStringLiteral("deflect [--json] [--load Fr,Ft,Fa] [--workpiece-only] [--stations N] [--pass N] PROJECT"),
+         QStringLiteral("deflect [--json] [--load Fr,Ft,Fa] [--workpiece-only] [--uncorrected-beam] [--stations N] "
+                        "[--pass N] PROJECT"),
          CommandLine::tr(
              "Predict the deviation at each tool position along every turned feature: radial and tangential, total "
              "and per contribution (spindle–chuck, toolpost, workpiece, thermal), with the forces used."),

@@ -278,11 +278,16 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
                                   QStringLiteral("N"));
     const QCommandLineOption noInProcess(QStringLiteral("no-in-process"),
                                          CommandLine::tr("Ignore the stock still on the uncut side of the tool."));
+    const QCommandLineOption uncorrected(
+        QStringLiteral("uncorrected-beam"),
+        CommandLine::tr("Plain Timoshenko beam: without the corrections for the root in the jaws and the shoulders "
+                        "identified from solid FE."));
     const QCommandLineOption learned(
         QStringLiteral("learned"),
         CommandLine::tr("Add what was learned of the machine from its measured parts (learn --save)."));
     const QCommandLineOption store = measurementStoreOption();
-    parser.addOptions({json, load, workpieceOnly, stations, pass, noInProcess, learned, store, operationOption()});
+    parser.addOptions(
+        {json, load, workpieceOnly, stations, pass, noInProcess, uncorrected, learned, store, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), CommandLine::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("deflect"), args, out, err); stop >= 0)
@@ -293,6 +298,7 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     DeviationOptions options;
     options.workpieceOnly = parser.isSet(workpieceOnly);
     options.inProcessSection = !parser.isSet(noInProcess);
+    options.beamCorrections = !parser.isSet(uncorrected);
     bool ok = true;
     options.stationsPerFeature = parser.value(stations).toInt(&ok);
     if (!ok || options.stationsPerFeature < 2 || options.stationsPerFeature > 100000) {

@@ -33,9 +33,11 @@ QJsonObject resultJson(const QString &file, const SolidCheckResult &r)
                                     {QStringLiteral("solid_radial_um"), s.solidRadial_mm * kUmPerMm},
                                     {QStringLiteral("radial_difference_pct"), s.radialDifference_pct()},
                                     {QStringLiteral("beam_tangential_um"), s.beamTangential_mm * kUmPerMm},
-                                    {QStringLiteral("solid_tangential_um"), s.solidTangential_mm * kUmPerMm}});
+                                    {QStringLiteral("solid_tangential_um"), s.solidTangential_mm * kUmPerMm},
+                                    {QStringLiteral("timoshenko_radial_um"), s.timoshenkoRadial_mm * kUmPerMm}});
     return {{QStringLiteral("file"), file},
             {QStringLiteral("clamping"), r.clamping},
+            {QStringLiteral("beam_corrections"), r.beamCorrections},
             {QStringLiteral("youngs_modulus_MPa"), r.youngsModulus_MPa},
             {QStringLiteral("poisson_ratio"), r.poissonRatio},
             {QStringLiteral("forces_N"), QJsonObject{{QStringLiteral("tangential"), r.forces.tangential_N},
@@ -77,18 +79,23 @@ void printTable(const QString &file, const SolidCheckResult &r, QTextStream &out
                .arg(r.solveSeconds, 0, 'f', 1)
                .arg(r.beamSeconds * 1000.0, 0, 'f', 2)
         << '\n';
+    out << (r.beamCorrections ? VerifyFeCommand::tr("Beam: corrected for the root in the jaws and the shoulders "
+                                                    "(docs/solid-fe.md); Timoshenko: without the corrections")
+                              : VerifyFeCommand::tr("Beam: Timoshenko, without the corrections (--uncorrected-beam)"))
+        << '\n';
     out << VerifyFeCommand::tr("  z [mm]   D [mm]   radial deflection [um]: beam    solid   beam-solid [%]   "
-                               "tangential [um]: beam    solid")
+                               "tangential [um]: beam    solid   Timoshenko radial [um]")
         << '\n';
     for (const SolidCheckStation &s : r.stations)
-        out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7\n")
+        out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8\n")
                    .arg(s.z_mm, 8, 'f', 2)
                    .arg(2.0 * s.contactRadius_mm, 8, 'f', 2)
                    .arg(s.beamRadial_mm * kUmPerMm, 31, 'f', 3)
                    .arg(s.solidRadial_mm * kUmPerMm, 8, 'f', 3)
                    .arg(s.radialDifference_pct(), 16, 'f', 2)
                    .arg(s.beamTangential_mm * kUmPerMm, 24, 'f', 3)
-                   .arg(s.solidTangential_mm * kUmPerMm, 8, 'f', 3);
+                   .arg(s.solidTangential_mm * kUmPerMm, 8, 'f', 3)
+                   .arg(s.timoshenkoRadial_mm * kUmPerMm, 24, 'f', 3);
     out << VerifyFeCommand::tr("Largest radial difference: %1 % of the largest deflection")
                .arg(r.largestRadialDifference_pct(), 0, 'f', 2)
         << '\n';
@@ -100,8 +107,8 @@ void printTable(const QString &file, const SolidCheckResult &r, QTextStream &out
 
 QString verifyFeSynopsis()
 {
-    return QStringLiteral("verify-fe [--json] [--stations N] [--mesh-size MM] [--load Fr,Ft,Fa] [--operation NAME] "
-                          "[--progress] PROJECT");
+    return QStringLiteral("verify-fe [--json] [--stations N] [--mesh-size MM] [--load Fr,Ft,Fa] [--uncorrected-beam] "
+                          "[--operation NAME] [--progress] PROJECT");
 }
 
 QString verifyFeSummary()
@@ -130,7 +137,10 @@ int runVerifyFe(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption progress(
         QStringLiteral("progress"),
         VerifyFeCommand::tr("Report the progress on standard error, as lines \"progress F\" with F from 0 to 1."));
-    parser.addOptions({json, stations, meshSize, load, operationOption(), progress});
+    const QCommandLineOption uncorrected(
+        QStringLiteral("uncorrected-beam"),
+        VerifyFeCommand::tr("Compare the beam without its corrections for the root in the jaws and the shoulders."));
+    parser.addOptions({json, stations, meshSize, load, uncorrected, operationOption(), progress});
     parser.addPositionalArgument(QStringLiteral("project"), VerifyFeCommand::tr("The project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("verify-fe"), args, out, err); stop >= 0)
@@ -140,6 +150,7 @@ int runVerifyFe(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
 
     SolidCheckOptions options;
+    options.beamCorrections = !parser.isSet(uncorrected);
     bool ok = false;
     options.stations = parser.value(stations).toInt(&ok);
     if (!ok || options.stations < 1 || options.stations > kMaxStations) {

@@ -132,6 +132,19 @@ bool heldByChuck(const TurningInputs &in)
     return in.radialLeft.fixedRotation || in.radialLeft.stiffness(1, 1) > 0.0;
 }
 
+// The beam's corrections (docs/solid-fe.md): the root at the chuck's or collet's face, a hinge at
+// every shoulder.
+BeamCorrections correctionsOf(const TurningInputs &in)
+{
+    BeamCorrections c;
+    if (!in.beamCorrections)
+        return c;
+    c.shoulders = true;
+    if (heldByChuck(in))
+        c.builtInAt_mm = in.supportStart_mm;
+    return c;
+}
+
 } // namespace
 
 std::vector<StationInfluence> influenceAt(const PartProfile &part, const TurningInputs &in,
@@ -141,7 +154,8 @@ std::vector<StationInfluence> influenceAt(const PartProfile &part, const Turning
     std::set<double> nodeSet = supportAndVertexNodes(finished, in);
     nodeSet.insert(z_mm.begin(), z_mm.end());
     const NodeIndex index = mergedNodes(nodeSet);
-    const std::vector<BeamElementStiffness> elements = buildElements(finished, in.material, index.nodes);
+    const std::vector<BeamElementStiffness> elements =
+        buildElements(finished, in.material, index.nodes, correctionsOf(in));
     const Sweeps sweeps = sweep(index, elements, elements, in);
     std::vector<StationInfluence> out;
     for (std::size_t i = 0; i < z_mm.size(); ++i)
@@ -183,14 +197,15 @@ InfluenceTable buildInfluenceTable(const PartProfile &part, const TurningInputs 
         }
     }
     const NodeIndex index = mergedNodes(nodeSet);
-    const std::vector<BeamElementStiffness> finishedElements = buildElements(finished, in.material, index.nodes);
+    const std::vector<BeamElementStiffness> finishedElements =
+        buildElements(finished, in.material, index.nodes, correctionsOf(in));
     const bool chuck = heldByChuck(in);
     auto sweepsFor = [&](ContourSide side) {
         if (allowance_mm <= 0.0)
             return sweep(index, finishedElements, finishedElements, in);
         const SectionAlongZ uncut(part, side == ContourSide::Outer ? allowance_mm : 0.0,
                                   side == ContourSide::Inner ? allowance_mm : 0.0, in.stockOuter_mm, in.solidInner_mm);
-        return sweep(index, buildElements(uncut, in.material, index.nodes), finishedElements, in);
+        return sweep(index, buildElements(uncut, in.material, index.nodes, correctionsOf(in)), finishedElements, in);
     };
     const Sweeps outer = sweepsFor(ContourSide::Outer);
     const Sweeps inner = part.inner.empty() ? outer : sweepsFor(ContourSide::Inner);

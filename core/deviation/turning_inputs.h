@@ -34,6 +34,7 @@ struct DeviationOptions {
     std::optional<double> tailstockStiffness_N_per_mm;
     bool workpieceOnly = false;   // rigid machine supports, no toolpost or thermal term
     bool inProcessSection = true; // the pass's own stock still on, left of the tool
+    bool beamCorrections = true;  // the root in the jaws and the shoulders (docs/solid-fe.md)
     int stationsPerFeature = 21;
     int passIndex = -1; // -1: the last finishing pass (or the last pass)
 };
@@ -83,6 +84,7 @@ struct TurningInputs {
     bool spindleCharacterised = false;
     SupportStiffnessUsed chuck;           // chuck face (chuck and chuck + tailstock), or the collet's
     bool collet = false;                  // `chuck` is a collet's
+    bool beamCorrections = false;         // the root in the jaws and the shoulders (docs/solid-fe.md)
     SupportStiffnessUsed tailstock;       // tailstock, or both centres between centres
     SupportStiffnessUsed headstockCentre; // between centres: the left centre on its own
     std::optional<ThermalDrift> thermal;

@@ -397,6 +397,10 @@ QStringList checkNotes(const Project &project, const SolidCheckResult &r)
         SolidCheck::tr("The force is a uniform traction on a %1 mm square patch of the turned surface; the solid's "
                        "deflection is the area mean of the displacement of its section under the load.")
             .arg(r.loadPatch_mm, 0, 'g', 3)};
+    notes << (r.beamCorrections ? SolidCheck::tr("The beam carries its corrections from solid FE (the root in the "
+                                                 "jaws, a hinge at each shoulder); Timoshenko is the beam without "
+                                                 "them (docs/solid-fe.md).")
+                                : SolidCheck::tr("The beam is plain Timoshenko, without its corrections."));
     if (project.clamping.method == ClampingMethod::BetweenCentres ||
         project.clamping.method == ClampingMethod::ChuckTailstock)
         notes << SolidCheck::tr("A centre holds the end face within 3.35 mm of the axis (DIN 332-1 form A, d2 = "
@@ -452,6 +456,7 @@ SolidCheckResult checkWithSolidFe(const Project &project, const DataLibrary &dat
     deviationOptions.workpieceOnly = true;
     deviationOptions.inProcessSection = false;
     deviationOptions.loadOverride = options.load;
+    deviationOptions.beamCorrections = options.beamCorrections;
     InputsResult resolved = resolveTurningInputs(view, data, deviationOptions);
     if (!resolved.inputs) {
         result.failure = SolidCheckFailure::Project;
@@ -463,6 +468,7 @@ SolidCheckResult checkWithSolidFe(const Project &project, const DataLibrary &dat
     in.solidInner_mm.clear();
     result.forces = in.forces;
     result.clamping = keyword(view.clamping.method);
+    result.beamCorrections = options.beamCorrections;
     result.youngsModulus_MPa = in.material.youngsModulus_MPa;
     result.poissonRatio = in.material.poissonRatio;
     result.meshSize_mm = options.meshSize_mm.value_or(defaultMeshSize(view.part));
@@ -544,6 +550,9 @@ SolidCheckResult checkWithSolidFe(const Project &project, const DataLibrary &dat
     }
     const std::vector<StationInfluence> beam = influenceAt(view.part, in, z, radius);
     result.beamSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+    TurningInputs plain = in;
+    plain.beamCorrections = false;
+    const std::vector<StationInfluence> timoshenko = influenceAt(view.part, plain, z, radius);
     const SectionAlongZ finished(view.part);
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const RoundSection section = finished.at(z[i]);
@@ -554,7 +563,9 @@ SolidCheckResult checkWithSolidFe(const Project &project, const DataLibrary &dat
         result.stations.push_back(
             {z[i], radius[i],
              in.forces.radial_N * b.radialPerRadial_mm_per_N + in.forces.axial_N * b.radialPerAxial_mm_per_N, -u.x(),
-             in.forces.tangential_N * b.tangentialPerTangential_mm_per_N, -u.y()});
+             in.forces.tangential_N * b.tangentialPerTangential_mm_per_N, -u.y(),
+             in.forces.radial_N * timoshenko[i].radialPerRadial_mm_per_N +
+                 in.forces.axial_N * timoshenko[i].radialPerAxial_mm_per_N});
     }
     run.report(100, SolidCheck::tr("done"));
     result.notes = checkNotes(view, result) + result.notes;

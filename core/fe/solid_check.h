@@ -27,6 +27,7 @@ struct SolidCheckOptions {
     std::optional<double> meshSize_mm; // largest element edge; default: defaultMeshSize()
     int operation = 0;                 // which set-up (0: the first)
     std::optional<CuttingForces> load; // instead of the forces of the project's pass
+    bool beamCorrections = true;       // the beam compared with its corrections (docs/solid-fe.md)
 };
 
 // Why a check gave no result; its diagnostic names the cause.
@@ -41,6 +42,7 @@ struct SolidCheckStation {
     double solidRadial_mm = 0.0;
     double beamTangential_mm = 0.0;
     double solidTangential_mm = 0.0;
+    double timoshenkoRadial_mm = 0.0; // the beam without its corrections, for comparison
 
     // (beam - solid) / solid, in per cent: positive where the beam is the softer.
     [[nodiscard]] double radialDifference_pct() const;
@@ -50,8 +52,9 @@ struct SolidCheckResult {
     SolidCheckFailure failure = SolidCheckFailure::None;
     Diagnostics diagnostics;
     std::vector<SolidCheckStation> stations;
-    CuttingForces forces; // at every station, of the pass the beam uses
-    QString clamping;     // keyword of the operation's clamping
+    CuttingForces forces;        // at every station, of the pass the beam uses
+    QString clamping;            // keyword of the operation's clamping
+    bool beamCorrections = true; // beamRadial_mm with the beam's corrections
     double youngsModulus_MPa = 0.0;
     double poissonRatio = 0.0;
     double meshSize_mm = 0.0;

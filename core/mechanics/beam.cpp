@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/mechanics/beam.h"
 
+#include "core/mechanics/beam_corrections.h"
+
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
@@ -65,14 +67,17 @@ EndSupport EndSupport::translationSpring(double k_N_per_mm)
 }
 
 std::vector<BeamElementStiffness> buildElements(const SectionAlongZ &section, const ElasticMaterial &material,
-                                                const std::vector<double> &nodes_mm)
+                                                const std::vector<double> &nodes_mm, const BeamCorrections &corrections)
 {
     std::vector<BeamElementStiffness> elements;
     elements.reserve(nodes_mm.size());
     for (std::size_t i = 0; i + 1 < nodes_mm.size(); ++i) {
         const double z0 = nodes_mm[i];
         const double z1 = nodes_mm[i + 1];
-        elements.push_back(elementStiffness(elementFlexibility(section, material, z0, z1), z1 - z0));
+        Matrix2 f = elementFlexibility(section, material, z0, z1);
+        if (corrections.any())
+            f += correctionFlexibility(section, material, corrections, z0, z1);
+        elements.push_back(elementStiffness(f, z1 - z0));
     }
     return elements;
 }

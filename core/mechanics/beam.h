@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace tolturn {
@@ -56,9 +57,22 @@ struct BeamModel {
     EndSupport right;
 };
 
-// Builds the elements of a beam over `section` with the given nodes (sorted, unique).
-[[nodiscard]] std::vector<BeamElementStiffness>
-buildElements(const SectionAlongZ &section, const ElasticMaterial &material, const std::vector<double> &nodes_mm);
+// Corrections of the Timoshenko beam for what plane sections cannot see: the part is not built in
+// at the chuck face but a little inside the jaws, and a shoulder lets the thin section turn more
+// than the beam says (beam_corrections.h, docs/solid-fe.md "Corrections").
+struct BeamCorrections {
+    std::optional<double> builtInAt_mm; // the chuck's or collet's face: the root correction there
+    bool shoulders = false;             // a hinge at every step of the outer diameter
+
+    [[nodiscard]] bool any() const { return builtInAt_mm.has_value() || shoulders; }
+};
+
+// Builds the elements of a beam over `section` with the given nodes (sorted, unique), with the
+// corrections of the root and the shoulders (beam_corrections.h) where asked.
+[[nodiscard]] std::vector<BeamElementStiffness> buildElements(const SectionAlongZ &section,
+                                                              const ElasticMaterial &material,
+                                                              const std::vector<double> &nodes_mm,
+                                                              const BeamCorrections &corrections = {});
 
 // Static solution of a beam under nodal loads (force and moment at each node): displacements
 // (w, theta) at every node. Dense LDLT: for checks and full deflection lines, not for sweeps.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // docs/model.md §8, row by row as the doc states it: `tolturn-cli deflect --json --workpiece-only
-// --no-in-process --load 100,0,0` on the part described, against its closed form (E = 210 000 MPa,
+// --no-in-process --uncorrected-beam --load 100,0,0` on the part described, against its closed form (E = 210 000 MPa,
 // nu = 0.3, Cowper's shear coefficient). The references are written here from the formulas; the
 // doc's table gives the same numbers.
 #include "tests/cli/cli_runner.h"
@@ -185,9 +185,9 @@ private Q_SLOTS:
         const QString path = dir.filePath(QStringLiteral("bar.tolturn"));
         QVERIFY(writeFile(path, QJsonDocument(project).toJson()));
 
-        const Run r =
-            runCli({QStringLiteral("deflect"), QStringLiteral("--json"), QStringLiteral("--workpiece-only"),
-                    QStringLiteral("--no-in-process"), QStringLiteral("--load"), QStringLiteral("100,0,0"), path});
+        const Run r = runCli({QStringLiteral("deflect"), QStringLiteral("--json"), QStringLiteral("--workpiece-only"),
+                              QStringLiteral("--no-in-process"), QStringLiteral("--uncorrected-beam"),
+                              QStringLiteral("--load"), QStringLiteral("100,0,0"), path});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         std::optional<double> computed;
         for (const QJsonValue f :

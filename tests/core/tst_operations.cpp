@@ -112,6 +112,7 @@ const FeatureDeviation *feature(const DeviationResult &r, const char *id)
 DeviationOptions beamUnder(double radial_N)
 {
     DeviationOptions o;
+    o.beamCorrections = false; // the closed form is plain Timoshenko theory
     o.workpieceOnly = true;
     o.inProcessSection = false;
     o.loadOverride = CuttingForces{0.0, 0.0, radial_N};
@@ -340,6 +341,7 @@ private Q_SLOTS:
         p.furtherOperations.clear();
         p.clamping = {ClampingMethod::Collet, 30.0, PartEnd::Left};
         DeviationOptions o;
+        o.beamCorrections = false; // the closed form is plain Timoshenko theory
         o.inProcessSection = false;
         o.loadOverride = CuttingForces{0.0, 0.0, 100.0};
         const DeviationResult r = computeDeviation(p, DataLibrary::builtIn(), o);

@@ -78,7 +78,7 @@ SolidCheckDialog::SolidCheckDialog(const Project &project, int operation, QWidge
     m_poll.setInterval(100);
     operationChosen();
     setRunning(false);
-    resize(900, 650);
+    resize(1040, 650); // the eight columns of the table without scrolling, on a 1366 x 768 screen
 }
 
 SolidCheckDialog::~SolidCheckDialog()

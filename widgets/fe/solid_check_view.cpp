@@ -121,14 +121,16 @@ void SolidCheckView::fillTable(const DisplayUnits &units)
     const QString length = units.lengthSymbol();
     const QString deflection = units.deviationSymbol();
     m_table->clear();
-    m_table->setColumnCount(7);
-    m_table->setHorizontalHeaderLabels({tr("z [%1]").arg(length), tr("Ø [%1]").arg(length),
-                                        tr("beam radial [%1]").arg(deflection), tr("solid radial [%1]").arg(deflection),
-                                        tr("beam − solid [%]"), tr("beam tangential [%1]").arg(deflection),
-                                        tr("solid tangential [%1]").arg(deflection)});
+    m_table->setColumnCount(8);
+    m_table->setHorizontalHeaderLabels(
+        {tr("z [%1]").arg(length), tr("Ø [%1]").arg(length), tr("beam radial [%1]").arg(deflection),
+         tr("solid radial [%1]").arg(deflection), tr("beam − solid [%]"), tr("beam tangential [%1]").arg(deflection),
+         tr("solid tangential [%1]").arg(deflection), tr("Timoshenko radial [%1]").arg(deflection)});
     m_table->horizontalHeaderItem(0)->setToolTip(tr("The tool position, from the end the set-up holds"));
     m_table->horizontalHeaderItem(4)->setToolTip(
         tr("(beam − solid) / solid of the radial deflection: positive where the beam is the softer"));
+    m_table->horizontalHeaderItem(7)->setToolTip(
+        tr("The beam without its corrections for the root in the jaws and the shoulders (docs/solid-fe.md)"));
     const std::vector<SolidCheckStation> stations = m_result ? m_result->stations : std::vector<SolidCheckStation>{};
     m_table->setRowCount(static_cast<int>(stations.size()));
     const int decimals = deflectionDecimals(stations, units);
@@ -137,10 +139,14 @@ void SolidCheckView::fillTable(const DisplayUnits &units)
     };
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const SolidCheckStation &s = stations[static_cast<std::size_t>(row)];
-        const QStringList texts{
-            units.lengthText(s.z_mm),   units.lengthText(2.0 * s.contactRadius_mm),        shown(s.beamRadial_mm),
-            shown(s.solidRadial_mm),    QString::number(s.radialDifference_pct(), 'f', 1), shown(s.beamTangential_mm),
-            shown(s.solidTangential_mm)};
+        const QStringList texts{units.lengthText(s.z_mm),
+                                units.lengthText(2.0 * s.contactRadius_mm),
+                                shown(s.beamRadial_mm),
+                                shown(s.solidRadial_mm),
+                                QString::number(s.radialDifference_pct(), 'f', 1),
+                                shown(s.beamTangential_mm),
+                                shown(s.solidTangential_mm),
+                                shown(s.timoshenkoRadial_mm)};
         for (int column = 0; column < texts.size(); ++column)
             m_table->setItem(row, column, cell(texts[column]));
     }
@@ -180,15 +186,19 @@ void SolidCheckView::drawPlot(const DisplayUnits &units)
     QVector<double> z;
     QVector<double> beam;
     QVector<double> solid;
+    QVector<double> timoshenko;
     for (const SolidCheckStation &s : m_result->stations) {
         z << units.lengthFromMm(s.z_mm);
         beam << units.deviationFromUm(s.beamRadial_mm * kUmPerMm);
         solid << units.deviationFromUm(s.solidRadial_mm * kUmPerMm);
+        timoshenko << units.deviationFromUm(s.timoshenkoRadial_mm * kUmPerMm);
     }
     m_plot->setTitle(tr("Radial deflection of the part under the cutting force"));
     m_plot->setAxisLabels(tr("z from the held end [%1]").arg(units.lengthSymbol()),
                           tr("radial deflection [%1]").arg(units.deviationSymbol()));
-    m_plot->addMarkedCurve(tr("beam"), z, beam, kBeamColor);
+    if (m_result->beamCorrections)
+        m_plot->addCurve(tr("beam without corrections"), z, timoshenko, kBeamColor, Qt::DashLine, 1.0);
+    m_plot->addMarkedCurve(m_result->beamCorrections ? tr("beam (corrected)") : tr("beam"), z, beam, kBeamColor);
     m_plot->addPoints(tr("solid (CalculiX)"), z, solid, kSolidColor);
     m_plot->rescaleAndReplot();
     if (m_partLength_mm > 0.0) // the stations on the whole part, none at the plot's edge
