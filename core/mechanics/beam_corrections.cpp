@@ -16,12 +16,22 @@ namespace {
 constexpr std::array<std::pair<double, double>, 4> kShoulderHinge{
     {{1.0, 0.0}, {1.25, 0.057}, {1.6, 0.126}, {2.0, 0.171}}};
 
-// A step of the outer radius smaller than this is none (a profile's rounding, not a shoulder).
-constexpr double kStepTolerance_mm = 1e-4;
+// A jump of the outer radius smaller than this is none: over kSide_mm on each side of a vertex a
+// cone would have to be steeper than 50:1 to count.
+constexpr double kStepTolerance_mm = 1e-3;
 
-// Looked at this far on each side of a node for the section's jump: a thousand times the
-// profile's own tolerance (kProfileEpsilon_mm), within which both sides are the vertex.
-constexpr double kSide_mm = 1e-3;
+// Looked at this far on each side of a vertex for the section's jump: ten times the profile's own
+// tolerance (kProfileEpsilon_mm), within which both sides are the vertex itself.
+constexpr double kSide_mm = 1e-5;
+
+// A shoulder is a jump of the section at a vertex of the profile; a node that is no vertex (a tool
+// position a micrometre from the step, say) has none, so no step is counted twice.
+bool atVertex(const SectionAlongZ &section, double z_mm)
+{
+    const std::vector<double> &v = section.breakpoints();
+    const auto it = std::lower_bound(v.begin(), v.end(), z_mm - kProfileEpsilon_mm);
+    return it != v.end() && *it <= z_mm + kProfileEpsilon_mm;
+}
 
 } // namespace
 
@@ -70,9 +80,11 @@ Matrix2 correctionFlexibility(const SectionAlongZ &section, const ElasticMateria
 {
     Matrix2 c = Matrix2::Zero();
     const RoundSection right = section.at(z0_mm + kSide_mm);
-    if (corrections.builtInAt_mm && std::abs(z0_mm - *corrections.builtInAt_mm) < kProfileEpsilon_mm)
+    const bool builtIn = corrections.builtInAt_mm && std::abs(z0_mm - *corrections.builtInAt_mm) < kProfileEpsilon_mm;
+    if (builtIn)
         c += rootFlexibility(right, material);
-    if (corrections.shoulders) {
+    // A shoulder at the chuck face is in the jaws' hold: the root is its correction, not a hinge.
+    if (corrections.shoulders && !builtIn && atVertex(section, z0_mm)) {
         const RoundSection left = section.at(z0_mm - kSide_mm);
         if (std::abs(left.outerRadius_mm - right.outerRadius_mm) > kStepTolerance_mm &&
             std::min(left.outerRadius_mm, right.outerRadius_mm) > 0.0) {
