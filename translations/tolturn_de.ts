@@ -836,10 +836,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Bohrstange %1: %2, Ø%3 mm, %4 mm Auskraglänge (L/D %5), E = %6 GPa (%7).</translation>
     </message>
     <message>
-        <source>Boring bar overhang not given: taken as the bore&apos;s depth, %1 mm, the least that reaches; a longer overhang bends more.</source>
-        <translation>Auskraglänge der Bohrstange nicht angegeben: als Tiefe der Bohrung angenommen, %1 mm, das Mindeste, das hinreicht; eine längere Auskraglänge biegt sich stärker.</translation>
-    </message>
-    <message>
         <source>The cutting edge&apos;s offset from the bar axis (the maker&apos;s f) not given: taken as the bar&apos;s radius, %1 mm, the least it can be; the twist of the bar and the moment of the feed force grow with it.</source>
         <translation>Versatz der Schneide von der Stangenachse (Maß f des Herstellers) nicht angegeben: als Radius der Stange angenommen, %1 mm, das Kleinstmögliche; die Verdrehung der Stange und das Moment der Vorschubkraft wachsen damit.</translation>
     </message>
@@ -882,6 +878,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Workpiece beam corrected from solid FE: a hinge at each shoulder (docs/solid-fe.md).</source>
         <translation>Werkstückbalken nach Volumen-FE korrigiert: ein Gelenk an jedem Absatz (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>Boring bar overhang not given: taken as the bore&apos;s depth and the program&apos;s clearance off the end face, %1 mm, the least that reaches; a longer overhang bends more.</source>
+        <translation>Auskraglänge der Bohrstange nicht angegeben: als Tiefe der Bohrung und der Abstand des Programms von der Stirnfläche angenommen, %1 mm, das Mindeste, das hinreicht; eine größere Auskraglänge biegt sich stärker.</translation>
     </message>
 </context>
 <context>
@@ -1035,6 +1035,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Tool %1: boring bar %2 (D%3 mm, overhang %4 mm), insert %5</source>
         <translation>Werkzeug %1: Bohrstange %2 (D%3 mm, Auskraglänge %4 mm), Wendeschneidplatte %5</translation>
+    </message>
+    <message>
+        <source>The bores are not in this program: a centre holds the set-up&apos;s free end, so the boring bar cannot enter it. Bore them in a set-up held in the chuck alone.</source>
+        <translation>Die Bohrungen sind nicht in diesem Programm: Eine Spitze hält das freie Ende der Aufspannung, die Bohrstange kann dort nicht einfahren. Bohren Sie sie in einer Aufspannung nur im Futter.</translation>
     </message>
 </context>
 <context>
@@ -2366,6 +2370,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Bore pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</source>
         <translation>Bohrschnitt %1, %2: vc %3 m/min, f %4 mm/U, ap %5 mm</translation>
+    </message>
+    <message>
+        <source>Clear of the part for the tool change: the boring bar&apos;s overhang and the clearance off the end face, above the turning path (or the machine&apos;s own tool-change position)</source>
+        <translation>Frei vom Teil für den Werkzeugwechsel: Auskraglänge der Bohrstange und Abstand von der Stirnfläche, über der Drehbahn (oder die Werkzeugwechselposition der Maschine)</translation>
     </message>
 </context>
 <context>
@@ -4230,6 +4238,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The bore is bored from the free end with boring bar %1.</source>
         <translation>Die Bohrung wird vom freien Ende aus mit Bohrstange %1 ausgedreht.</translation>
+    </message>
+    <message>
+        <source>The bottom of the bore, %1, is a cone or a radius down to the axis: the program finishes it to the axis, without the pilot hole&apos;s and the bar&apos;s limits of a flat bottom. Check that the bar clears the opposite wall there.</source>
+        <translation>Der Bohrungsgrund %1 ist ein Kegel oder Radius bis zur Achse: Das Programm schlichtet ihn bis zur Achse, ohne die Grenzen von Vorbohrung und Stange wie bei einem ebenen Grund. Prüfen Sie, dass die Stange dort die gegenüberliegende Wand nicht berührt.</translation>
     </message>
 </context>
 <context>
@@ -6886,10 +6898,6 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
         <translation>ISO-1832-Bezeichnung der Wendeschneidplatte der Bohrstange: ihr Eckenradius und der Einstellwinkel der Stange ergeben die Kräfte in den Bohrungen.</translation>
     </message>
     <message>
-        <source>Length of the bar out of its clamping to the cutting edge. &apos;bore depth&apos; takes the least that reaches the deepest bore, from the right end face.</source>
-        <translation>Länge der Stange von ihrer Einspannung bis zur Schneide. &apos;Bohrungstiefe&apos; nimmt das Mindeste, das die tiefste Bohrung von der rechten Stirnfläche aus erreicht.</translation>
-    </message>
-    <message>
         <source>bore depth</source>
         <translation>Bohrungstiefe</translation>
     </message>
@@ -6968,6 +6976,10 @@ Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
     <message>
         <source>Pilot &amp;hole Ø:</source>
         <translation>&amp;Vorbohrung Ø:</translation>
+    </message>
+    <message>
+        <source>Length of the bar out of its clamping to the cutting edge. &apos;bore depth&apos; takes the least that reaches the deepest bore from the right end face, with the turret 2 mm off it.</source>
+        <translation>Länge der Stange von ihrer Einspannung bis zur Schneide. &apos;Bohrungstiefe&apos; nimmt das Mindeste, das die tiefste Bohrung von der rechten Stirnfläche aus erreicht, mit dem Revolver 2 mm davor.</translation>
     </message>
 </context>
 <context>

@@ -836,10 +836,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Barra de mandrinar %1: %2, Ø%3 mm, %4 mm de voladizo (L/D %5), E = %6 GPa (%7).</translation>
     </message>
     <message>
-        <source>Boring bar overhang not given: taken as the bore&apos;s depth, %1 mm, the least that reaches; a longer overhang bends more.</source>
-        <translation>Voladizo de la barra de mandrinar no indicado: se toma la profundidad del agujero, %1 mm, el mínimo que llega; un voladizo mayor flexa más.</translation>
-    </message>
-    <message>
         <source>The cutting edge&apos;s offset from the bar axis (the maker&apos;s f) not given: taken as the bar&apos;s radius, %1 mm, the least it can be; the twist of the bar and the moment of the feed force grow with it.</source>
         <translation>Desplazamiento del filo respecto al eje de la barra (la cota f del fabricante) no indicado: se toma el radio de la barra, %1 mm, el mínimo posible; la torsión de la barra y el momento de la fuerza de avance crecen con él.</translation>
     </message>
@@ -882,6 +878,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Workpiece beam corrected from solid FE: a hinge at each shoulder (docs/solid-fe.md).</source>
         <translation>Viga de la pieza corregida con EF sólidos: una articulación en cada resalte (docs/solid-fe.md).</translation>
+    </message>
+    <message>
+        <source>Boring bar overhang not given: taken as the bore&apos;s depth and the program&apos;s clearance off the end face, %1 mm, the least that reaches; a longer overhang bends more.</source>
+        <translation>Voladizo de la barra de mandrinar no indicado: se toma la profundidad del agujero más la distancia del programa a la cara frontal, %1 mm, lo mínimo que alcanza; un voladizo mayor flecta más.</translation>
     </message>
 </context>
 <context>
@@ -1035,6 +1035,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Tool %1: boring bar %2 (D%3 mm, overhang %4 mm), insert %5</source>
         <translation>Herramienta %1: barra de mandrinar %2 (D%3 mm, voladizo %4 mm), plaquita %5</translation>
+    </message>
+    <message>
+        <source>The bores are not in this program: a centre holds the set-up&apos;s free end, so the boring bar cannot enter it. Bore them in a set-up held in the chuck alone.</source>
+        <translation>Los agujeros no están en este programa: un punto sujeta el extremo libre de la preparación y la barra de mandrinar no puede entrar. Mandrínelos en una preparación sujeta solo en el plato.</translation>
     </message>
 </context>
 <context>
@@ -2366,6 +2370,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Bore pass %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</source>
         <translation>Pasada de mandrinado %1, %2: vc %3 m/min, f %4 mm/rev, ap %5 mm</translation>
+    </message>
+    <message>
+        <source>Clear of the part for the tool change: the boring bar&apos;s overhang and the clearance off the end face, above the turning path (or the machine&apos;s own tool-change position)</source>
+        <translation>Libre de la pieza para el cambio de herramienta: el voladizo de la barra de mandrinar y la distancia a la cara frontal, por encima de la trayectoria de torneado (o la posición de cambio de la máquina)</translation>
     </message>
 </context>
 <context>
@@ -4230,6 +4238,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The bore is bored from the free end with boring bar %1.</source>
         <translation>El agujero se mandrina desde el extremo libre con la barra de mandrinar %1.</translation>
+    </message>
+    <message>
+        <source>The bottom of the bore, %1, is a cone or a radius down to the axis: the program finishes it to the axis, without the pilot hole&apos;s and the bar&apos;s limits of a flat bottom. Check that the bar clears the opposite wall there.</source>
+        <translation>El fondo del agujero, %1, es un cono o un radio hasta el eje: el programa lo acaba hasta el eje, sin los límites del agujero previo y de la barra de un fondo plano. Compruebe que la barra no toca la pared opuesta ahí.</translation>
     </message>
 </context>
 <context>
@@ -6886,10 +6898,6 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
         <translation>Designación ISO 1832 de la plaquita de la barra de mandrinar: su radio de punta y el ángulo de posición de la barra dan las fuerzas en los agujeros.</translation>
     </message>
     <message>
-        <source>Length of the bar out of its clamping to the cutting edge. &apos;bore depth&apos; takes the least that reaches the deepest bore, from the right end face.</source>
-        <translation>Longitud de la barra desde su amarre hasta el filo. &apos;profundidad del agujero&apos; toma el mínimo que llega al agujero más profundo, desde la cara frontal derecha.</translation>
-    </message>
-    <message>
         <source>bore depth</source>
         <translation>profundidad del agujero</translation>
     </message>
@@ -6968,6 +6976,10 @@ Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
     <message>
         <source>Pilot &amp;hole Ø:</source>
         <translation>Agujero &amp;previo Ø:</translation>
+    </message>
+    <message>
+        <source>Length of the bar out of its clamping to the cutting edge. &apos;bore depth&apos; takes the least that reaches the deepest bore from the right end face, with the turret 2 mm off it.</source>
+        <translation>Longitud de la barra desde su sujeción hasta el filo. &apos;profundidad del agujero&apos; toma lo mínimo que alcanza el agujero más profundo desde la cara frontal derecha, con la torreta a 2 mm de ella.</translation>
     </message>
 </context>
 <context>

@@ -429,7 +429,7 @@ std::optional<BoringBar> resolveBar(const Project &p, const DataLibrary &data, c
     bar.diameter_mm = h->barDiameter_mm->value;
     bar.material = {m->youngsModulus_MPa.value, m->poissonRatio.value, true};
     const double reach = boringReach_mm(p, in.supportStart_mm);
-    bar.overhang_mm = t.overhang_mm.value_or(reach);
+    bar.overhang_mm = t.overhang_mm.value_or(reach + kToolClearance_mm);
     if (bar.overhang_mm + kProfileEpsilon_mm < reach) {
         out.push_back(makeError(QStringLiteral("boring_tool.overhang_mm"),
                                 DeviationModel::tr("an overhang of %1 mm does not reach the bottom of the bore, %2 mm "
@@ -460,8 +460,9 @@ void noteBar(const Project &p, const DataLibrary &data, const BoringInputs &bi, 
     notes << DeviationModel::tr("The boring bar is taken as held rigidly in the turret: no stiffness of a bar clamp "
                                 "is known, so the bar's deflection is a lower bound.");
     if (!p.boringTool->overhang_mm)
-        notes << DeviationModel::tr("Boring bar overhang not given: taken as the bore's depth, %1 mm, the least that "
-                                    "reaches; a longer overhang bends more.")
+        notes << DeviationModel::tr("Boring bar overhang not given: taken as the bore's depth and the program's "
+                                    "clearance off the end face, %1 mm, the least that reaches; a longer overhang "
+                                    "bends more.")
                      .arg(num(bi.bar.overhang_mm));
     if (!p.boringTool->edgeOffset_mm)
         notes << DeviationModel::tr("The cutting edge's offset from the bar axis (the maker's f) not given: taken as "

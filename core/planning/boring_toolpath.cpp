@@ -211,6 +211,8 @@ std::optional<Toolpath> boringToolpath(const Project &project, const CuttingPass
         path.warnings << Toolpaths::tr("Boring bar %1 reaches z = %2 mm with its overhang of %3 mm: the bore from "
                                        "z = %4 mm to there is not bored. Set a longer overhang.")
                              .arg(bar.holderCode, mm(reach), mm(bar.overhang_mm), mm(boreBottom));
+        if (f.chain.empty())
+            return path; // the bar does not reach into the part: nothing to bore, said above
     }
     const double smallestBore = smallestAxialRadius(f.chain);
     f.rHole = bar.pilotHoleDiameter_mm ? 0.5 * *bar.pilotHoleDiameter_mm : smallestBore - allowance;
@@ -251,6 +253,11 @@ std::optional<Toolpath> boringToolpath(const Project &project, const CuttingPass
                                         "not bored.")
                               .arg(mm(2.0 * f.rHole));
         stopBottomFaceAt(f.chain, rStop);
+    } else if (f.chain.back().to.r_mm < kTiny) {
+        path.warnings << Toolpaths::tr("The bottom of the bore, %1, is a cone or a radius down to the axis: the "
+                                       "program finishes it to the axis, without the pilot hole's and the bar's "
+                                       "limits of a flat bottom. Check that the bar clears the opposite wall there.")
+                             .arg(f.chain.back().featureId);
     } else if (boreBottom < kTiny && reach <= kTiny) {
         path.notes << Toolpaths::tr("The bar bores through to the held end: the chuck's or collet's bore must be "
                                     "free behind it.");

@@ -199,10 +199,20 @@ std::optional<Toolpath> boringPath(const Project &project, const TurningInputs &
                                           "dock, Boring bar).");
         return std::nullopt;
     }
+    if (!holdsOneEndOnly(project.clamping.method)) {
+        turning.warnings << Programs::tr("The bores are not in this program: a centre holds the set-up's free end, "
+                                         "so the boring bar cannot enter it. Bore them in a set-up held in the chuck "
+                                         "alone.");
+        return std::nullopt;
+    }
     std::optional<Toolpath> boring = boringToolpath(project, inputs.pass, roughingPasses(project),
                                                     boringBarGeometry(project, *inputs.boring), options);
     if (!boring)
         return std::nullopt;
+    if (boring->roughing.empty() && boring->finishing.moves.empty()) {
+        turning.warnings << boring->warnings; // why nothing is bored
+        return std::nullopt;
+    }
     int number = turning.finishing.number + 1;
     for (PassPath &p : boring->roughing)
         p.number = number++;
@@ -283,12 +293,15 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     post.boringTool = options.boringTool;
     post.spindle = program.spindle;
     post.header = programHeader(project, program, options);
-    if (program.boring)
+    if (program.boring) {
+        post.toolChangeAt = {project.part.length_mm() + inputs.boring->bar.overhang_mm + options.clearance_mm,
+                             0.5 * program.path.safeDiameter_mm};
         post.boringToolLine =
             Programs::tr("Tool %1: boring bar %2 (D%3 mm, overhang %4 mm), insert %5")
                 .arg(options.boringTool)
                 .arg(inputs.boring->holderCode, QString::number(inputs.boring->bar.diameter_mm, 'f', 1),
                      QString::number(inputs.boring->bar.overhang_mm, 'f', 1), project.boringTool->insertCode);
+    }
     program.programNumber = options.programNumber;
     program.text =
         postProcess(program.path, program.boring ? &*program.boring : nullptr, project.part.length_mm(), post);

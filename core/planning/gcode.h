@@ -22,7 +22,7 @@ struct GCodeOptions {
     int tool = 1;
     int boringTool = 2; // the boring bar's, when the set-up bores
     int programNumber = 1000;
-    double clearance_mm = 2.0;
+    double clearance_mm = kToolClearance_mm;
 };
 
 // What a machinist's set-up sheet gives for a pass of the program: the spindle speed range it

@@ -142,6 +142,14 @@ public:
         return QStringLiteral("X%1 Z%2").arg(coordinate(2.0 * p.r_mm), coordinate(p.z_mm - m_length));
     }
 
+    // A rapid retract to `to`, along x first and then along z (the tool leaves the part first).
+    void retract(ProfilePoint to)
+    {
+        line(m_d.rapid + QStringLiteral(" X") + coordinate(2.0 * to.r_mm));
+        line(m_d.rapid + QStringLiteral(" Z") + coordinate(to.z_mm - m_length));
+        m_at = to;
+    }
+
     // The moves of a pass; the nose is compensated to the right of the travel on an outer contour
     // (G42) and to the left in a bore (G41).
     void moves(const PassPath &pass, ContourSide side)
@@ -401,6 +409,10 @@ QString postProcess(const Toolpath &path, const Toolpath *boring, double partLen
         cut(p, false, path.side);
     cut(path.finishing, true, path.side);
     if (boring != nullptr) {
+        w.commentLine(Post::tr("Clear of the part for the tool change: the boring bar's overhang and the clearance "
+                               "off the end face, above the turning path (or the machine's own tool-change "
+                               "position)"));
+        w.retract(options.toolChangeAt);
         w.commentLine(options.boringToolLine);
         w.line(toolCall(d, options.boringTool));
         for (const PassPath &p : boring->roughing)

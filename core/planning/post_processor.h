@@ -50,6 +50,10 @@ struct PostOptions {
     int tool = 1;
     int boringTool = 2;     // the boring bar's tool number, when there is a boring path
     QString boringToolLine; // the comment that names the boring bar before its tool call
+    // Where the turret goes before the boring bar is indexed (z from the left end, r): above the
+    // turning path's safe diameter and the bar's overhang plus the clearance off the end face, so
+    // that neither tool sweeps the part as the turret turns.
+    ProfilePoint toolChangeAt;
     SpindleLimit spindle;
     QStringList header; // lines for the comment block at the top (part, material, tool, compensation, conditions)
 };

@@ -52,7 +52,7 @@ struct ToolpathOptions {
     const CompensationPlan *compensation = nullptr; // nullptr: the target contour as it is
     // Distance kept from the stock, the end face and the jaws in air moves, and the shortest
     // distance of the tool from the chuck jaws [mm]. A setting of the program, not a datum.
-    double clearance_mm = 2.0;
+    double clearance_mm = kToolClearance_mm;
 };
 
 struct Toolpath {

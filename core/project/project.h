@@ -39,6 +39,11 @@ struct Clamping {
     friend bool operator==(const Clamping &, const Clamping &) = default;
 };
 
+// How far the program keeps a tool, and the turret face, off the part in its approach and retract
+// moves (a programming convention, not a datum): the default boring-bar overhang adds it, so the
+// bar's edge reaches the bottom of its bore with the turret this far off the end face.
+inline constexpr double kToolClearance_mm = 2.0;
+
 struct Tool {
     QString insertCode;                // ISO 1832, e.g. "CNMG 120408"
     QString holderCode;                // ISO 5608, e.g. "PCLNR 2525M12"

@@ -11,6 +11,7 @@
 #include "core/io/project_file.h"
 #include "core/part/profile_geometry.h"
 #include "core/part/undercuts.h"
+#include "core/planning/boring_toolpath.h"
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
 #include "core/planning/toolpath_detail.h"
@@ -465,6 +466,18 @@ private Q_SLOTS:
         QVERIFY(program.text.contains(QStringLiteral("T0202")));
         QVERIFY(program.text.contains(QStringLiteral("G41 G01")));
         QCOMPARE(program.text.count(QStringLiteral("(BORE PASS ")), 4);
+        // Before the turret indexes the bar it goes clear of the part: up to the turning path's
+        // safe diameter, then out along z by the bar's overhang and the clearance, 115 + 2 mm.
+        QStringList blocks;
+        for (const QString &line : program.text.split(QLatin1Char('\n')))
+            if (!line.startsWith(QLatin1Char('(')))
+                blocks << line;
+        const auto call = std::find_if(blocks.begin(), blocks.end(),
+                                       [](const QString &b) { return b.contains(QStringLiteral("T0202")); });
+        QVERIFY(call != blocks.end() && call - blocks.begin() >= 2);
+        QVERIFY2(call[-1].endsWith(QStringLiteral("G00 Z117.000")), qPrintable(call[-1]));
+        QVERIFY2(call[-2].endsWith(QStringLiteral("G00 X") + QString::number(program.path.safeDiameter_mm, 'f', 3)),
+                 qPrintable(call[-2]));
     }
 
     // What the bar cannot do is said: a bar too thick for the pilot hole, an overhang that does not
@@ -518,6 +531,24 @@ private Q_SLOTS:
         for (const ToolMove &m : p4b.boring->finishing.moves)
             innermost = std::min(innermost, m.to.r_mm);
         QVERIFY2(std::abs(innermost - 3.49175) < 1e-6, qPrintable(QString::number(innermost, 'f', 6)));
+
+        // A centre in the free end: no bar can enter it.
+        Project centre = bushingFromPilotHole();
+        centre.clamping.method = ClampingMethod::ChuckTailstock;
+        const DeviationResult d6 = computeDeviation(centre, DataLibrary::builtIn(), {});
+        QVERIFY2(d6.inputs, qPrintable(dump(d6.diagnostics)));
+        const TurningProgram p6 = turningProgram(centre, DataLibrary::builtIn(), *d6.inputs, {});
+        QVERIFY(!p6.boring && !p6.text.contains(QStringLiteral("T0202")));
+        QVERIFY(p6.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("a centre holds the set-up's free end")));
+
+        // A bar that does not reach into the part (overhang 1 mm, less than the clearance) bores
+        // nothing and says why.
+        BoringBarGeometry stub{QStringLiteral("E16R-SCLCR09"), 16.0, 8.0, 1.0, 0.4, std::nullopt, 24.0};
+        const Project bushing = bushingFromPilotHole();
+        const std::optional<Toolpath> none =
+            boringToolpath(bushing, bushing.passes.back(), {}, stub, ToolpathOptions{});
+        QVERIFY(none && none->roughing.empty() && none->finishing.moves.empty());
+        QVERIFY(none->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("reaches z = 111.000")));
 
         Project noBar = example(QStringLiteral("bushing-bore-h7.tolturn"));
         noBar.boringTool.reset();

@@ -262,7 +262,7 @@ QWidget *SetupPanel::createBoringGroup()
                                   "entering angle give the forces in the bores."));
     m_boringOverhang = new LengthSpinBox(
         2000.0, tr("Length of the bar out of its clamping to the cutting edge. 'bore depth' takes the least "
-                   "that reaches the deepest bore, from the right end face."));
+                   "that reaches the deepest bore from the right end face, with the turret 2 mm off it."));
     m_boringOverhang->setObjectName(QStringLiteral("boringOverhang"));
     m_boringOverhang->setSpecialValueText(tr("bore depth"));
     m_boringEdgeOffset = new LengthSpinBox(
