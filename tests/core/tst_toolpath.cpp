@@ -550,6 +550,23 @@ private Q_SLOTS:
         QVERIFY(none && none->roughing.empty() && none->finishing.moves.empty());
         QVERIFY(none->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("reaches z = 111.000")));
 
+        // A through bore corrected station by station: the stations end at the chuck face (z 25), the
+        // bore runs on to z 0 inside the jaws, where it is bored as drawn.
+        FeatureCompensation corrected;
+        corrected.featureId = QStringLiteral("I1");
+        corrected.side = ContourSide::Inner;
+        corrected.action = CompensationAction::ProfileCorrection;
+        corrected.correctedPath = {{25.0, 16.012}, {67.5, 16.015}, {110.0, 16.012}};
+        CompensationPlan plan;
+        plan.features.push_back(corrected);
+        const std::vector<PathElement> chain =
+            toolpath_detail::compensatedChain(targetContour(bushing, ContourSide::Inner), &plan);
+        double deepest = 1e9;
+        for (const PathElement &e : chain)
+            if (e.featureId == QLatin1String("I1"))
+                deepest = std::min({deepest, e.from.z_mm, e.to.z_mm});
+        QCOMPARE(deepest, 0.0);
+
         Project noBar = example(QStringLiteral("bushing-bore-h7.tolturn"));
         noBar.boringTool.reset();
         const DeviationResult d5 = computeDeviation(noBar, DataLibrary::builtIn(), {});
