@@ -221,6 +221,16 @@ QStringList programmedMoves(const QString &program)
 // The bushing with its H7 bore (Ø32, through, 110 mm) bored from a Ø24 pilot hole with the carbide
 // bar E16R-SCLCR09 (Ø16, edge offset taken as the bar's radius, 8 mm) and a CCMT 09T304 insert
 // (r_e 0.4 mm), at 115 mm overhang, so that it reaches through.
+// The least distance of the nose-centre path `centre` from `contour`, sampled every 0.01 mm.
+double closestApproach(const std::vector<PathElement> &centre, const std::vector<PathElement> &contour)
+{
+    double closest = 1e9;
+    for (const PathElement &e : centre)
+        for (const ProfilePoint &c : sampled(e, 0.01))
+            closest = std::min(closest, distanceTo(contour, c));
+    return closest;
+}
+
 Project bushingFromPilotHole()
 {
     Project p = example(QStringLiteral("bushing-bore-h7.tolturn"));
@@ -644,10 +654,7 @@ private Q_SLOTS:
         QCOMPARE(!roughingCentre.empty(), p.boringTool->pilotHoleDiameter_mm.has_value());
         const std::vector<Segment> boreSegments = boreAtFreeEnd(targetContour(p, ContourSide::Inner), length);
         const std::vector<PathElement> bore = reversedElements(boreSegments);
-        double closest = 1e9;
-        for (const PathElement &e : centre)
-            for (const ProfilePoint &c : sampled(e, 0.01))
-                closest = std::min(closest, distanceTo(bore, c));
+        const double closest = closestApproach(centre, bore);
         QVERIFY2(closest >= re - 0.001, qPrintable(QStringLiteral("gouge: %1").arg(closest, 0, 'f', 5)));
         double roughClosest = 1e9;
         for (const PathElement &e : roughingCentre)
@@ -768,10 +775,7 @@ private Q_SLOTS:
         QVERIFY(!centre.empty());
         const Contour target = targetContour(p, ContourSide::Outer);
         const std::vector<PathElement> contour = reversedElements(target.segments);
-        double closest = 1e9;
-        for (const PathElement &e : centre)
-            for (const ProfilePoint &c : sampled(e, 0.01))
-                closest = std::min(closest, distanceTo(contour, c));
+        const double closest = closestApproach(centre, contour);
         QVERIFY2(closest >= re - 0.001, qPrintable(QStringLiteral("gouge: %1").arg(closest, 0, 'f', 5)));
         // In one set-up of several the program turns from the free end to where another operation's
         // outer features begin.
