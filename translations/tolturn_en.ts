@@ -2,6 +2,16 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>AdaptiveControl</name>
+    <message numerus="yes">
+        <source>pass %1 does not exist: the plan has %n pass(es)</source>
+        <translation>
+            <numerusform>pass %1 does not exist: the plan has %n pass</numerusform>
+            <numerusform>pass %1 does not exist: the plan has %n passes</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message numerus="yes">
         <source>%n pass(es)</source>
@@ -66,6 +76,16 @@
         <translation>
             <numerusform>%n point</numerusform>
             <numerusform>%n points</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ModelFiles</name>
+    <message numerus="yes">
+        <source>a %1 model does not take %n coefficient(s)</source>
+        <translation>
+            <numerusform>a %1 model does not take %n coefficient</numerusform>
+            <numerusform>a %1 model does not take %n coefficients</numerusform>
         </translation>
     </message>
 </context>

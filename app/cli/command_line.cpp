@@ -3,6 +3,7 @@
 
 #include "app/cli/check_command.h"
 #include "app/cli/cli_common.h"
+#include "app/cli/control_command.h"
 #include "app/cli/deflect_command.h"
 #include "app/cli/evaluate_command.h"
 #include "app/cli/forces_command.h"
@@ -146,6 +147,7 @@ const std::vector<Command> &commands()
         {QStringLiteral("import"), importSynopsis(), importSummary(), runImport},
         {QStringLiteral("export-step"), exportStepSynopsis(), exportStepSummary(), runExportStep},
         {QStringLiteral("verify-fe"), verifyFeSynopsis(), verifyFeSummary(), runVerifyFe},
+        {QStringLiteral("simulate-control"), simulateControlSynopsis(), simulateControlSummary(), runSimulateControl},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
         {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
          CommandLine::tr(

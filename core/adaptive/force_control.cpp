@@ -52,6 +52,8 @@ struct Loop {
         double actual = 1.0;
         std::optional<double> gain; // K in F = K f^x, estimated on line
         ControlRun out;
+        const double ceiling =
+            std::min(settings.maxOverride, process.maxFeed_mm_rev.value_or(settings.maxOverride * f0) / f0);
         double z = pass.z_mm.front();
         const double zEnd = pass.z_mm.back();
         out.smallestDeviation_um = 1e300;
@@ -73,7 +75,7 @@ struct Loop {
                 gain = gain ? (1.0 - settings.estimatorGain) * *gain + settings.estimatorGain * estimate : estimate;
                 // The feed at which the estimated process gives the set force.
                 command = std::clamp(std::pow(setForce_N / *gain, 1.0 / exponent) / f0, settings.minOverride,
-                                     settings.maxOverride);
+                                     std::max(ceiling, settings.minOverride));
             }
             s.commandedFeed_mm_rev = f0 * command;
             s.ra_um = theoreticalRa_um(s.feed_mm_rev, process.noseRadius_mm);

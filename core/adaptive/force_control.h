@@ -42,6 +42,9 @@ struct PassProcess {
     double cuttingSpeed_m_min = 0.0; // G96 constant surface speed
     std::optional<double> maxSpindleSpeed_rpm;
     double noseRadius_mm = 0.0; // the kinematic roughness
+    // The largest feed the pass may run at whatever the force allows [mm/rev]: the insert's range,
+    // the roughness a finished surface must have. None: the override's limit alone.
+    std::optional<double> maxFeed_mm_rev;
 };
 
 struct ControlSample {

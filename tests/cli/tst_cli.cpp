@@ -629,6 +629,66 @@ private Q_SLOTS:
         QVERIFY(r.err.contains(QStringLiteral("no project file given")));
     }
 
+    // simulate-control (issue 18) on the stepped shaft: stock Ø60, chuck over 35 mm, so the tool
+    // runs from z 150 to 37 (2 mm clear of the jaws). Pass 1 (a_p 1.9375 mm, f 0.3, vc 200) cuts
+    // Ø56.125 over the whole 113 mm: n = 200000 / (π 56.125) = 1134.3 1/min, 113 / (0.3 · 1134.3)
+    // min = 19.92 s, at its nominal depth throughout, so the loop has nothing to change. The
+    // finishing pass (f 0.1, vc 250 at the contour's diameter) takes 60 π Σ D Δz / (1000 · 250 · 0.1)
+    // with Σ D Δz = 43·50 + 10·45 + 28·40 + 2 (2·18 + π) + 29·30 + 1·29 = 4697.28 mm²: 35.41 s; its
+    // feed may not pass √(32 · 0.8 mm · 1.6 µm) = 0.202 mm/rev (Ra 1.6 µm).
+    void simulateControlOnTheSteppedShaft()
+    {
+        const Run r = runCli(
+            {QStringLiteral("simulate-control"), QStringLiteral("--json"), example("stepped-shaft-chuck.tolturn")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonArray passes = json.value(QStringLiteral("passes")).toArray();
+        QCOMPARE(passes.size(), 9);
+        const QJsonObject first = passes.first().toObject();
+        for (const char *run : {"constant_feed", "adaptive"})
+            QVERIFY(std::abs(first.value(QLatin1String(run)).toObject().value(QStringLiteral("time_s")).toDouble() -
+                             19.92) < 0.04);
+        const QJsonObject finishing = passes.last().toObject();
+        QCOMPARE(finishing.value(QStringLiteral("kind")).toString(), QStringLiteral("finishing"));
+        const double finishingTime =
+            finishing.value(QStringLiteral("constant_feed")).toObject().value(QStringLiteral("time_s")).toDouble();
+        QVERIFY2(std::abs(finishingTime - 35.41) < 0.04, qPrintable(QString::number(finishingTime)));
+        for (const QJsonValue &p : passes) {
+            const QJsonObject o = p.toObject();
+            // Set at the programmed feed's force at the nominal depth, and no pass cuts deeper.
+            QVERIFY(o.value(QStringLiteral("time_saved_pct")).toDouble() >= 0.0);
+            QVERIFY(o.value(QStringLiteral("adaptive")).toObject().value(QStringLiteral("peak_force_N")).toDouble() <=
+                    1.001 * o.value(QStringLiteral("set_force_N")).toDouble());
+        }
+        const QString notes = json.value(QStringLiteral("notes")).toVariant().toStringList().join(QLatin1Char('\n'));
+        QVERIFY2(notes.contains(QStringLiteral("Pass 9: the feed is held at or below 0.202 mm/rev for Ra 1.6 µm")),
+                 qPrintable(notes));
+        QVERIFY(notes.contains(QStringLiteral("Machine noise: none")));
+    }
+
+    void simulateControlCsvAndErrors()
+    {
+        const Run csv = runCli({QStringLiteral("simulate-control"), QStringLiteral("--csv"), QStringLiteral("--pass"),
+                                QStringLiteral("1"), QStringLiteral("--noise"), QStringLiteral("3"),
+                                example("stepped-shaft-chuck.tolturn")});
+        QVERIFY2(csv.exitCode == 0, qPrintable(csv.err));
+        const QStringList lines = csv.out.trimmed().split(QLatin1Char('\n'));
+        QVERIFY(lines.first().startsWith(QStringLiteral("run,pass,t_s,z_mm,depth_mm,")));
+        // 19.92 s at 20 ms a period, both runs.
+        QVERIFY2(std::abs(static_cast<double>(lines.size() - 1) - 2 * 19.92 / 0.02) < 6,
+                 qPrintable(QString::number(lines.size())));
+        const Run badPass = runCli({QStringLiteral("simulate-control"), QStringLiteral("--pass"), QStringLiteral("10"),
+                                    example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(badPass.exitCode, 1);
+        QVERIFY2(badPass.err.contains(QStringLiteral("passes: pass 10 does not exist: the plan has 9 passes")),
+                 qPrintable(badPass.err));
+        const Run badNoise = runCli({QStringLiteral("simulate-control"), QStringLiteral("--noise"),
+                                     QStringLiteral("lots"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(badNoise.exitCode, 2);
+        QVERIFY2(badNoise.err.contains(QStringLiteral("--noise: \"lots\" is not a number from 0 to 50")),
+                 qPrintable(badNoise.err));
+    }
+
     // verify-fe (issue 17): the solid check from the command line on a coarse mesh. Its accuracy
     // is tested in tst_solid_fe; here the command: its table, its JSON and its errors.
     void verifyFeComparesBeamAndSolid()

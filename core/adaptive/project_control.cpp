@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/adaptive/project_control.h"
+
+#include "core/adaptive/pass_depth.h"
+#include "core/deviation/deviation_model.h"
+#include "core/mechanics/section.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tolturn {
+
+namespace {
+
+struct AdaptiveControl {
+    Q_DECLARE_TR_FUNCTIONS(AdaptiveControl)
+};
+
+constexpr double kInfluenceStep_mm = 1.0; // the influence coefficients change slowly along z
+
+// Fr (c_r + c_tp) + Fa c_a at z (deviation_model.cpp, sweepFormErrors), the coefficients
+// interpolated between stations 1 mm apart on the finished section.
+struct DeviationAlongZ {
+    std::vector<double> z;
+    std::vector<double> perRadial;
+    std::vector<double> perAxial;
+
+    double operator()(double at, const CuttingForces &f) const
+    {
+        const auto it = std::lower_bound(z.begin(), z.end(), at);
+        const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(it - z.begin(), 1, std::ssize(z) - 1));
+        const double t = std::clamp((at - z[i - 1]) / (z[i] - z[i - 1]), 0.0, 1.0);
+        const auto lerp = [&](const std::vector<double> &v) { return v[i - 1] + t * (v[i] - v[i - 1]); };
+        return f.radial_N * lerp(perRadial) + f.axial_N * lerp(perAxial);
+    }
+};
+
+DeviationAlongZ deviationAlongZ(const Project &project, const TurningInputs &in, double left, double right)
+{
+    DeviationAlongZ d;
+    const auto n = static_cast<int>(std::ceil((right - left) / kInfluenceStep_mm));
+    std::vector<double> radius;
+    const SectionAlongZ section(project.part);
+    for (int i = 0; i <= std::max(n, 1); ++i) {
+        const double z = std::min(right, left + i * kInfluenceStep_mm);
+        d.z.push_back(z);
+        radius.push_back(section.at(std::clamp(z, left + 1e-6, right - 1e-6)).outerRadius_mm);
+    }
+    for (const StationInfluence &s : influenceAt(project.part, in, d.z, radius)) {
+        d.perRadial.push_back(s.radialPerRadial_mm_per_N + in.toolpostCompliance_mm_per_N);
+        d.perAxial.push_back(s.radialPerAxial_mm_per_N);
+    }
+    return d;
+}
+
+// The largest feed a pass may run at: the top of the plan's feed range (the insert maker's), and
+// for the finishing pass the roughness the drawing asks for, by the kinematic roughness
+// Ra = f² / (32 r_e), Rz = f² / (8 r_e) (cutting_quantities.h) solved for f. `reasons` gets the
+// roughness limits that bind below the range.
+std::optional<double> feedCeiling(const Project &project, const CuttingPass &pass, double noseRadius_mm,
+                                  QStringList &reasons)
+{
+    const PlanningSettings &s = project.planning;
+    std::optional<double> ceiling;
+    if (s.feed_mm_rev)
+        ceiling = s.feed_mm_rev->max;
+    const auto lower = [&](double f, const QString &why) {
+        if (ceiling && f >= *ceiling)
+            return;
+        ceiling = f;
+        reasons << why;
+    };
+    if (pass.kind == PassKind::Finishing && noseRadius_mm > 0.0) {
+        if (s.maxRa_um)
+            lower(std::sqrt(32.0 * noseRadius_mm * *s.maxRa_um / 1000.0),
+                  AdaptiveControl::tr("Ra %1 µm").arg(QString::number(*s.maxRa_um)));
+        if (s.maxRz_um)
+            lower(std::sqrt(8.0 * noseRadius_mm * *s.maxRz_um / 1000.0),
+                  AdaptiveControl::tr("Rz %1 µm").arg(QString::number(*s.maxRz_um)));
+    }
+    return ceiling;
+}
+
+QString feedRangeNote(const Project &project, const ForceControlSettings &control)
+{
+    const PlanningSettings &s = project.planning;
+    if (!s.feed_mm_rev)
+        return AdaptiveControl::tr("No feed limit known (the plan's settings give no feed range): the override's "
+                                   "%1 % alone bounds the feed.")
+            .arg(100.0 * control.maxOverride);
+    return AdaptiveControl::tr("The feed is held at or below %1 mm/rev, the top of the plan's feed range (%2).")
+        .arg(QString::number(s.feed_mm_rev->max, 'f', 3),
+             s.rangesSource.isEmpty() ? AdaptiveControl::tr("no source given") : s.rangesSource);
+}
+
+QStringList notesFor(const ProjectControlOptions &options, const TurningInputs &in)
+{
+    QStringList notes;
+    const ForceControlSettings &c = options.control;
+    notes << AdaptiveControl::tr("Forces from the project's %1 model; feed drive 1/(%2 s² + %3 s + 1) (Čuš & Župerl "
+                                 "eq. 1), control period %4 ms, feed override %5–%6 %.")
+                 .arg(forceModelName(in.forceModel), QString::number(c.drive.a_s2), QString::number(c.drive.b_s),
+                      QString::number(1000.0 * c.period_s), QString::number(100.0 * c.minOverride),
+                      QString::number(100.0 * c.maxOverride));
+    notes << (c.forceNoise > 0.0
+                  ? AdaptiveControl::tr("Machine noise: %1 % of the force (standard deviation), seed %2.")
+                        .arg(QString::number(100.0 * c.forceNoise))
+                        .arg(c.noiseSeed)
+                  : AdaptiveControl::tr("Machine noise: none (the force is measured exactly)."));
+    notes += in.notes;
+    return notes;
+}
+
+} // namespace
+
+ProjectControlResult simulateProjectControl(const Project &project, const DataLibrary &data,
+                                            const ProjectControlOptions &options)
+{
+    ProjectControlResult result;
+    if (options.passIndex && (*options.passIndex < 0 || *options.passIndex >= std::ssize(project.passes))) {
+        result.diagnostics.push_back(
+            makeError(QStringLiteral("passes"), AdaptiveControl::tr("pass %1 does not exist: the plan has %n pass(es)",
+                                                                    nullptr, static_cast<int>(project.passes.size()))
+                                                    .arg(*options.passIndex + 1)));
+        return result;
+    }
+    const std::optional<ForceFunction> forces = projectForceModel(project, data, result.diagnostics);
+    DeviationOptions deviation;
+    deviation.stiffnessEnd = options.stiffnessEnd;
+    deviation.passIndex = options.passIndex.value_or(-1);
+    InputsResult inputs = resolveTurningInputs(project, data, deviation);
+    result.diagnostics.insert(result.diagnostics.end(), inputs.diagnostics.begin(), inputs.diagnostics.end());
+    if (!forces || !inputs.inputs || hasErrors(result.diagnostics))
+        return result;
+    const TurningInputs &in = *inputs.inputs;
+    const double left = in.supportStart_mm + kToolClearance_mm;
+    const double right = project.part.length_mm();
+    if (right <= left) {
+        result.diagnostics.push_back(makeError(QStringLiteral("clamping.clamped_length_mm"),
+                                               AdaptiveControl::tr("the tool cannot reach the part: it is held "
+                                                                   "over its whole length")));
+        return result;
+    }
+    PassProcess process;
+    process.forces = *forces;
+    const DeviationAlongZ along = deviationAlongZ(project, in, left, right);
+    process.radialDeviation_mm = along;
+    process.maxSpindleSpeed_rpm = in.maxSpindleSpeed_rpm;
+    process.noseRadius_mm = in.noseRadius_mm;
+    for (const PassDepthProfile &pass : passDepthProfiles(project, left, options.depthStep_mm)) {
+        if (options.passIndex && pass.passIndex != *options.passIndex)
+            continue;
+        process.cuttingSpeed_m_min = pass.conditions.cuttingSpeed_m_min;
+        QStringList reasons;
+        process.maxFeed_mm_rev = feedCeiling(project, pass.conditions, in.noseRadius_mm, reasons);
+        if (!reasons.isEmpty())
+            result.notes << AdaptiveControl::tr(
+                                "Pass %1: the feed is held at or below %2 mm/rev for %3 (f² / (32 r_e), "
+                                "f² / (8 r_e)).")
+                                .arg(pass.passIndex + 1)
+                                .arg(QString::number(*process.maxFeed_mm_rev, 'f', 3),
+                                     reasons.join(QStringLiteral(", ")));
+        result.passes.push_back(simulatePassControl(pass, process, options.control));
+    }
+    result.notes = notesFor(options, in) + QStringList{feedRangeNote(project, options.control)} + result.notes;
+    return result;
+}
+
+} // namespace tolturn
