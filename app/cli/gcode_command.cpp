@@ -5,6 +5,7 @@
 #include "app/cli/command_line.h"
 #include "app/cli/learn_command.h"
 #include "core/deviation/deviation_model.h"
+#include "core/planning/feed_schedule.h"
 #include "core/planning/gcode.h"
 #include "core/planning/planning_report.h"
 
@@ -31,12 +32,69 @@ void printCompensation(const CompensationPlan &plan, QTextStream &err)
     }
 }
 
+// The feed schedule of the project's finishing pass, with the problem's errors printed.
+std::optional<FeedSchedule> finishingFeedSchedule(const Project &project, std::shared_ptr<const LoadedModel> model,
+                                                  const QString &file, QTextStream &err)
+{
+    const auto finishing = std::find_if(project.passes.rbegin(), project.passes.rend(),
+                                        [](const CuttingPass &p) { return p.kind == PassKind::Finishing; });
+    if (finishing == project.passes.rend()) {
+        err << file << ": " << GCodeCommand::tr("--feed-schedule: the plan has no finishing pass") << '\n';
+        return std::nullopt;
+    }
+    const PlanningProblem::BuildResult built =
+        PlanningProblem::build(project, DataLibrary::builtIn(), StiffnessEnd::Compliant, std::move(model));
+    for (const Diagnostic &d : built.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!built.problem)
+        return std::nullopt;
+    FeedSchedule schedule = scheduleFinishingFeeds(*built.problem, *finishing);
+    for (const Diagnostic &d : schedule.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!schedule.ok())
+        return std::nullopt;
+    return schedule;
+}
+
+double finishingTime_min(const std::vector<PassSummary> &passes)
+{
+    double t = 0.0;
+    for (const PassSummary &p : passes)
+        if (p.kind == PassKind::Finishing && p.side == ContourSide::Outer)
+            t += p.time_min;
+    return t;
+}
+
+void printSchedule(const FeedSchedule &schedule, const std::vector<PassSummary> &constant,
+                   const std::vector<PassSummary> &scheduled, const QString &file, QTextStream &err)
+{
+    for (const ScheduledFeed &f : schedule.features)
+        err << file << ": "
+            << (f.held ? GCodeCommand::tr("feed schedule: %1 kept at the programmed %2 mm/rev: %3 is not held at any "
+                                          "feed of the range (a case for compensation)")
+                             .arg(f.featureId, QString::number(f.feed_mm_rev, 'f', 3), f.limitedBy)
+                       : GCodeCommand::tr("feed schedule: %1 at %2 mm/rev (programmed %3), limited by %4")
+                             .arg(f.featureId, QString::number(f.feed_mm_rev, 'f', 3),
+                                  QString::number(schedule.programmedFeed_mm_rev, 'f', 3), f.limitedBy))
+            << '\n';
+    const double before = 60.0 * finishingTime_min(constant);
+    const double after = 60.0 * finishingTime_min(scheduled);
+    err << file << ": "
+        << GCodeCommand::tr("feed schedule: finishing pass %1 s at the programmed feed, %2 s scheduled (%3 %)")
+               .arg(QString::number(before, 'f', 1), QString::number(after, 'f', 1),
+                    QString::number(before > 0.0 ? 100.0 * (after - before) / before : 0.0, 'f', 1))
+        << '\n';
+    for (const QString &note : schedule.notes)
+        err << file << ": " << GCodeCommand::tr("note: %1").arg(note) << '\n';
+}
+
 } // namespace
 
 QString gcodeSynopsis()
 {
-    return QStringLiteral("gcode [--compensated] [--dialect fanuc|sinumerik|linuxcnc] [--nose control|tip-path] "
-                          "-o FILE|- PROJECT");
+    return QStringLiteral(
+        "gcode [--compensated|--feed-schedule] [--dialect fanuc|sinumerik|linuxcnc] [--nose control|tip-path] "
+        "-o FILE|- PROJECT");
 }
 
 QString gcodeSummary()
@@ -68,7 +126,11 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringLiteral("learned"),
         GCodeCommand::tr("Compensate with what was learned of the machine from its measured parts (learn --save)."));
     const QCommandLineOption store = measurementStoreOption();
-    parser.addOptions({output, compensated, dialect, nose, learned, store, operationOption()});
+    const QCommandLineOption feedSchedule(
+        QStringLiteral("feed-schedule"),
+        GCodeCommand::tr("Cut each feature of the finishing pass at its own feed: the largest in the plan's feed "
+                         "range that holds its tolerances and the pass's limits."));
+    parser.addOptions({output, compensated, dialect, nose, learned, store, feedSchedule, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), GCodeCommand::tr("Project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseCommand(parser, QStringLiteral("gcode"), gcodeSynopsis(), gcodeSummary(), args, out, err);
@@ -105,12 +167,28 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!project)
         return kExitUsage;
     DeviationResult deviation = computeDeviation(*project, DataLibrary::builtIn(), {});
+    std::shared_ptr<const LoadedModel> model;
     if (parser.isSet(learned)) {
-        const std::optional<LoadedModel> model =
+        std::optional<LoadedModel> loaded =
             loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("gcode"), err);
-        if (!model)
+        if (!loaded)
             return kExitProblems;
+        model = std::make_shared<const LoadedModel>(std::move(*loaded));
         deviation = withLearnedResidual(*project, std::move(deviation), model->model, model->provenance());
+    }
+    std::optional<FeedSchedule> schedule;
+    if (parser.isSet(feedSchedule) && parser.isSet(compensated)) {
+        err << programName() << " gcode: "
+            << GCodeCommand::tr("--feed-schedule and --compensated: the compensation is computed at the programmed "
+                                "feed; a scheduled program is not compensated yet")
+            << '\n';
+        return kExitUsage;
+    }
+    if (parser.isSet(feedSchedule)) {
+        schedule = finishingFeedSchedule(*project, model, file, err);
+        if (!schedule)
+            return kExitProblems;
+        options.finishingFeeds_mm_rev = schedule->feedByFeature();
     }
     const FinishingOutput finishing =
         finishingOutputFor(*project, DataLibrary::builtIn(), std::move(deviation), options);
@@ -133,6 +211,14 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         err << file << ": " << GCodeCommand::tr("warning: %1").arg(w) << '\n';
     if (parser.isSet(compensated))
         printCompensation(finishing.compensation, err);
+    if (schedule) {
+        GCodeOptions constant = options;
+        constant.finishingFeeds_mm_rev.clear();
+        const FinishingOutput plain =
+            finishingOutputFor(*project, DataLibrary::builtIn(), finishing.deviation, constant);
+        printSchedule(*schedule, (parser.isSet(compensated) ? plain.compensated : plain.nominal).passes, program.passes,
+                      file, err);
+    }
     return kExitOk;
 }
 

@@ -120,7 +120,7 @@ PassSummary summarise(const PassPath &pass, ContourSide side, double limit_rpm)
                     std::hypot(points[i].z_mm - points[i - 1].z_mm, points[i].r_mm - points[i - 1].r_mm);
                 const double r = 0.5 * (points[i].r_mm + points[i - 1].r_mm);
                 const double n = spindleSpeed_rpm(pass.conditions.cuttingSpeed_m_min, r, limit_rpm);
-                s.time_min += length / (pass.conditions.feed_mm_rev * n);
+                s.time_min += length / (m.feed_mm_rev.value_or(pass.conditions.feed_mm_rev) * n);
             }
             for (const ProfilePoint &q : points) {
                 const double n = spindleSpeed_rpm(pass.conditions.cuttingSpeed_m_min, q.r_mm, limit_rpm);
@@ -240,6 +240,13 @@ QStringList programHeader(const Project &project, const TurningProgram &program,
                        keyword(project.clamping.method))
            << Programs::tr("Dialect: %1").arg(program.dialectReason) << compensationSummary(options.compensation)
            << Programs::tr("Conditions: %1").arg(program.conditions);
+    if (!options.finishingFeeds_mm_rev.isEmpty()) {
+        QStringList feeds;
+        for (auto it = options.finishingFeeds_mm_rev.cbegin(); it != options.finishingFeeds_mm_rev.cend(); ++it)
+            feeds << QStringLiteral("%1 F%2").arg(it.key(), QString::number(it.value(), 'f', 3));
+        header << Programs::tr("Finishing feed scheduled by feature (TolTurn feed schedule): %1")
+                      .arg(feeds.join(QStringLiteral(", ")));
+    }
     if (project.scope) // one set-up of several: which, and which end of the drawing is in the chuck
         header.insert(1, Programs::tr("%1, operation %2 of %3: the drawing's %4 end held; the right end face "
                                       "below is the free end of this set-up")
@@ -275,6 +282,9 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     pathOptions.clearance_mm = options.clearance_mm;
     program.path = turningToolpath(project, inputs.pass, roughingPasses(project), inputs.noseRadius_mm,
                                    trailingEdgeAngle_deg(project.tool, inputs.enteringAngle_deg), pathOptions);
+    for (ToolMove &m : program.path.finishing.moves)
+        if (m.kind != MoveKind::Rapid && options.finishingFeeds_mm_rev.contains(m.featureId))
+            m.feed_mm_rev = options.finishingFeeds_mm_rev.value(m.featureId);
     program.boring = boringPath(project, inputs, pathOptions, program.path);
     const std::optional<double> machineLimit =
         project.planning.maxSpindleSpeed_rpm ? project.planning.maxSpindleSpeed_rpm : inputs.maxSpindleSpeed_rpm;

@@ -8,6 +8,7 @@
 #include "core/planning/toolpath.h"
 #include "core/project/project.h"
 
+#include <QMap>
 #include <QString>
 #include <QStringList>
 
@@ -23,6 +24,9 @@ struct GCodeOptions {
     int boringTool = 2; // the boring bar's, when the set-up bores
     int programNumber = 1000;
     double clearance_mm = kToolClearance_mm;
+    // The finishing pass's feed feature by feature (feed_schedule.h): each feature's moves are cut
+    // at its feed, the moves between them at the pass's. Empty: the pass's feed throughout.
+    QMap<QString, double> finishingFeeds_mm_rev;
 };
 
 // What a machinist's set-up sheet gives for a pass of the program: the spindle speed range it

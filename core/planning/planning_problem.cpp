@@ -294,12 +294,22 @@ void PlanningProblem::addPassLimits(const QString &subject, const PassConditions
 
 std::vector<ConstraintValue> PlanningProblem::toleranceConstraints(const PassConditions &pass) const
 {
-    std::vector<ConstraintValue> out;
     if (!isEnabled(QStringLiteral("tolerances")) || m_project.tolerances.empty())
-        return out;
-    const CuttingForces f = forces(pass.feed_mm_rev, pass.depthOfCut_mm);
+        return {};
+    return toleranceConstraintsOf(finishingDeviation(pass));
+}
+
+std::shared_ptr<const PlanningProblem> PlanningProblem::forFinishingDepth(double depth_mm) const
+{
+    std::shared_ptr<PlanningProblem> p(new PlanningProblem(*this));
+    p->m_table = buildInfluenceTable(m_project.part, m_inputs, DeviationOptions{}.stationsPerFeature, depth_mm);
+    return p;
+}
+
+DeviationResult PlanningProblem::finishingDeviation(const PassConditions &pass) const
+{
     TurningInputs in = m_inputs;
-    in.forces = f;
+    in.forces = forces(pass.feed_mm_rev, pass.depthOfCut_mm);
     if (in.boring && m_boringForceModel)
         in.boring->forces = m_boringForceModel(pass.feed_mm_rev, pass.depthOfCut_mm);
     in.pass.cuttingSpeed_m_min = pass.cuttingSpeed_m_min;
@@ -308,12 +318,27 @@ std::vector<ConstraintValue> PlanningProblem::toleranceConstraints(const PassCon
     DeviationResult deviation = evaluateInfluenceTable(m_project.part, m_table, in);
     if (m_learned)
         addLearnedResidual(m_project, deviation, m_learned->model, m_targets);
+    return deviation;
+}
+
+std::vector<ConstraintValue> PlanningProblem::toleranceConstraintsOf(const DeviationResult &deviation) const
+{
+    std::vector<ConstraintValue> out;
+    if (!isEnabled(QStringLiteral("tolerances")))
+        return out;
     for (const ToleranceEvaluation &e :
          evaluateTolerances(m_project, deviation, EvaluationDetail::ValuesOnly, &m_targets)) {
         if (e.value_um && e.limit_um && *e.limit_um > 0.0)
             out.push_back(
                 {QStringLiteral("tolerances"), e.toleranceId, *e.value_um, *e.limit_um, QStringLiteral("µm")});
     }
+    return out;
+}
+
+std::vector<ConstraintValue> PlanningProblem::finishingLimits(const PassConditions &pass) const
+{
+    std::vector<ConstraintValue> out;
+    addFinishingLimits(pass, forces(pass.feed_mm_rev, pass.depthOfCut_mm), out);
     return out;
 }
 

@@ -97,6 +97,19 @@ public:
                                                const std::vector<ConstraintValue> *tolerances = nullptr) const;
     // The tolerance constraints of a finishing pass (the deviation it leaves against each tolerance).
     [[nodiscard]] std::vector<ConstraintValue> toleranceConstraints(const PassConditions &pass) const;
+    // The same problem for a finishing pass of a fixed depth, its deviation on the stations and the
+    // in-process section the verdicts use (computeDeviation): the optimiser's table is built for the
+    // smallest depth of the range, which is safe while the depth is searched but not what a given
+    // pass leaves. For a feed schedule of the plan's own finishing pass.
+    [[nodiscard]] std::shared_ptr<const PlanningProblem> forFinishingDepth(double depth_mm) const;
+    // The deviation a finishing pass at these conditions leaves (with what was learned of the
+    // machine, when there is a model), and the tolerance constraints of any such deviation: a feed
+    // schedule evaluates deviations put together feature by feature from several feeds.
+    [[nodiscard]] DeviationResult finishingDeviation(const PassConditions &pass) const;
+    [[nodiscard]] std::vector<ConstraintValue> toleranceConstraintsOf(const DeviationResult &deviation) const;
+    // The limits of the finishing pass itself at these conditions (roughness, power, torque, force,
+    // spindle speed, tool life, the boring bar's): what evaluate() adds to the tolerances.
+    [[nodiscard]] std::vector<ConstraintValue> finishingLimits(const PassConditions &pass) const;
 
     // The cutting passes of a plan, as a project holds them: the roughing passes, equal, taking
     // the stock above the finishing allowance, then the finishing pass.

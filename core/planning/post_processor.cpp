@@ -155,7 +155,7 @@ public:
     void moves(const PassPath &pass, ContourSide side)
     {
         const QString &compensationOn = side == ContourSide::Inner ? m_d.compensationLeft : m_d.compensationRight;
-        bool feedStated = false;
+        std::optional<double> feedStated;
         for (const ToolMove &m : pass.moves) {
             const bool stays =
                 m_at && std::abs(m_at->z_mm - m.to.z_mm) < 5e-4 && std::abs(m_at->r_mm - m.to.r_mm) < 5e-4;
@@ -184,9 +184,10 @@ public:
             QString text = word + QLatin1Char(' ') + xz(m.to);
             if (m.kind == MoveKind::ArcClockwise || m.kind == MoveKind::ArcCounterClockwise)
                 text += QLatin1Char(' ') + m_d.arcRadiusWord + coordinate(m.radius_mm);
-            if (m.kind != MoveKind::Rapid && !feedStated) {
-                text += QStringLiteral(" F") + QString::number(pass.conditions.feed_mm_rev, 'f', 3);
-                feedStated = true;
+            const double feed = m.feed_mm_rev.value_or(pass.conditions.feed_mm_rev);
+            if (m.kind != MoveKind::Rapid && (!feedStated || std::abs(*feedStated - feed) > 5e-4)) {
+                text += QStringLiteral(" F") + QString::number(feed, 'f', 3);
+                feedStated = feed;
             }
             line(text);
         }

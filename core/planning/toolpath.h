@@ -29,6 +29,7 @@ struct ToolMove {
     QString featureId;                   // the feature the move finishes; empty for roughing and air moves
     bool startsNoseCompensation = false; // the entry move of G42 (control compensates)
     bool endsNoseCompensation = false;   // the exit move of G40
+    std::optional<double> feed_mm_rev;   // a feed of its own (feed_schedule.h); unset: the pass's
 };
 
 // How the nose radius r_e is taken into account in the finishing pass.

@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/feed_schedule.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace tolturn {
+
+namespace {
+
+struct FeedScheduleText {
+    Q_DECLARE_TR_FUNCTIONS(FeedScheduleText)
+};
+
+constexpr double kFeedStep_mm_rev = 0.001; // a program states the feed to three decimals
+constexpr double kSlack = 1e-9;
+
+// The limits of the finishing pass that change with the feed.
+bool feedLimitsHold(const PlanningProblem &problem, const PassConditions &pass, QString *failing)
+{
+    static const QStringList feedDependent{QStringLiteral("roughness"), QStringLiteral("power"),
+                                           QStringLiteral("torque"), QStringLiteral("force")};
+    for (const ConstraintValue &c : problem.finishingLimits(pass)) {
+        if (feedDependent.contains(c.name) && c.violation() > kSlack) {
+            if (failing)
+                *failing = c.label();
+            return false;
+        }
+    }
+    return true;
+}
+
+// A turned feature or face of the outer contour the schedule gives its own feed.
+struct Unit {
+    QString featureId;
+    bool face = false;
+    std::size_t index = 0; // in DeviationResult::features or ::faces
+};
+
+// The features a tolerance's value depends on: its own, the second face of a length, its datums'.
+QStringList featuresOf(const Project &project, const QString &toleranceId)
+{
+    QStringList out;
+    for (const Tolerance &t : project.tolerances) {
+        if (t.id != toleranceId)
+            continue;
+        out << t.featureId;
+        if (!t.toFeatureId.isEmpty())
+            out << t.toFeatureId;
+        for (const Datum &d : project.datums)
+            if (t.datums.contains(d.label))
+                out << d.featureId;
+    }
+    return out;
+}
+
+class Scheduler {
+public:
+    Scheduler(const PlanningProblem &problem, const CuttingPass &finishing) : m_problem(problem)
+    {
+        const ValueRange &range = problem.feedRange();
+        std::set<double> feeds{finishing.feed_mm_rev};
+        for (double f = range.min; f <= range.max + 1e-12; f += kFeedStep_mm_rev)
+            feeds.insert(std::round(f / kFeedStep_mm_rev) * kFeedStep_mm_rev);
+        m_feeds.assign(feeds.begin(), feeds.end());
+        m_programmed = static_cast<std::size_t>(std::find(m_feeds.begin(), m_feeds.end(), finishing.feed_mm_rev) -
+                                                m_feeds.begin());
+        for (const double f : m_feeds) {
+            const PassConditions pass{finishing.cuttingSpeed_m_min, f, finishing.depthOfCut_mm};
+            m_deviations.push_back(problem.finishingDeviation(pass));
+            m_limitsHold.push_back(feedLimitsHold(problem, pass, nullptr));
+        }
+        const DeviationResult &d = m_deviations.front();
+        for (std::size_t i = 0; i < d.features.size(); ++i)
+            if (d.features[i].side == ContourSide::Outer)
+                m_units.push_back({d.features[i].featureId, false, i});
+        for (std::size_t i = 0; i < d.faces.size(); ++i)
+            if (d.faces[i].side == ContourSide::Outer)
+                m_units.push_back({d.faces[i].featureId, true, i});
+    }
+
+    FeedSchedule run(const CuttingPass &finishing)
+    {
+        FeedSchedule s;
+        s.programmedFeed_mm_rev = finishing.feed_mm_rev;
+        m_index.assign(m_units.size(), 0);
+        m_limitedBy.assign(m_units.size(), QString());
+        m_pinned.assign(m_units.size(), false);
+        chooseConstraints();
+        std::size_t top = 0;
+        for (std::size_t c = 0; c < m_feeds.size(); ++c)
+            if (m_limitsHold[c])
+                top = c;
+        for (std::size_t u = 0; u < m_units.size(); ++u)
+            if (!m_pinned[u])
+                m_index[u] = largestAlone(u, top, finishing);
+        lowerWhereCoupled();
+        s.tolerances = m_problem.toleranceConstraintsOf(spliced(m_index));
+        for (std::size_t u = 0; u < m_units.size(); ++u)
+            s.features.push_back({m_units[u].featureId, m_feeds[m_index[u]], m_limitedBy[u], m_pinned[u]});
+        return s;
+    }
+
+private:
+    // The tolerances the schedule keeps: those the pass holds with every feature at the lowest
+    // feed. The features of the others keep the programmed feed (their compensation, if any, is
+    // computed at it).
+    void chooseConstraints()
+    {
+        for (const ConstraintValue &c : m_problem.toleranceConstraintsOf(spliced(m_index))) {
+            if (c.violation() <= kSlack) {
+                m_kept.push_back(c.subject);
+                continue;
+            }
+            const QStringList touched = featuresOf(m_problem.project(), c.subject);
+            for (std::size_t u = 0; u < m_units.size(); ++u) {
+                if (touched.contains(m_units[u].featureId) && !m_pinned[u]) {
+                    m_pinned[u] = true;
+                    m_index[u] = m_programmed;
+                    m_limitedBy[u] = c.label();
+                }
+            }
+        }
+    }
+
+    [[nodiscard]] DeviationResult spliced(const std::vector<std::size_t> &index) const
+    {
+        DeviationResult d = m_deviations[m_programmed];
+        for (std::size_t u = 0; u < m_units.size(); ++u) {
+            const DeviationResult &from = m_deviations[index[u]];
+            if (m_units[u].face)
+                d.faces[m_units[u].index] = from.faces[m_units[u].index];
+            else
+                d.features[m_units[u].index] = from.features[m_units[u].index];
+        }
+        return d;
+    }
+
+    // The first kept tolerance that fails on this deviation and depends on unit u (any unit: -1).
+    [[nodiscard]] std::optional<ConstraintValue> failingKept(const DeviationResult &d, std::ptrdiff_t u) const
+    {
+        for (const ConstraintValue &c : m_problem.toleranceConstraintsOf(d)) {
+            if (!m_kept.contains(c.subject) || c.violation() <= kSlack)
+                continue;
+            if (u < 0 ||
+                featuresOf(m_problem.project(), c.subject).contains(m_units[static_cast<std::size_t>(u)].featureId))
+                return c;
+        }
+        return std::nullopt;
+    }
+
+    // The largest feed of unit u, the others at their lowest, that holds its tolerances (bisection:
+    // a larger feed deflects more).
+    std::size_t largestAlone(std::size_t u, std::size_t top, const CuttingPass &finishing)
+    {
+        std::vector<std::size_t> index(m_units.size(), 0);
+        for (std::size_t v = 0; v < m_units.size(); ++v)
+            if (m_pinned[v])
+                index[v] = m_programmed;
+        const auto holds = [&](std::size_t c) {
+            index[u] = c;
+            return !failingKept(spliced(index), static_cast<std::ptrdiff_t>(u));
+        };
+        if (holds(top)) {
+            QString failing;
+            if (top + 1 < m_feeds.size())
+                (void)feedLimitsHold(
+                    m_problem, {finishing.cuttingSpeed_m_min, m_feeds[top + 1], finishing.depthOfCut_mm}, &failing);
+            m_limitedBy[u] = failing.isEmpty() ? FeedScheduleText::tr("top of the feed range") : failing;
+            return top;
+        }
+        std::size_t lo = 0;
+        std::size_t hi = top; // holds(lo), !holds(hi)
+        while (hi - lo > 1) {
+            const std::size_t mid = (lo + hi) / 2;
+            (holds(mid) ? lo : hi) = mid;
+        }
+        index[u] = hi;
+        m_limitedBy[u] = failingKept(spliced(index), static_cast<std::ptrdiff_t>(u))->label();
+        return lo;
+    }
+
+    // A tolerance over several features (coaxiality, run-out, a profile) may fail with each at its
+    // own largest feed: lower the fastest of its features a step at a time until it holds.
+    void lowerWhereCoupled()
+    {
+        for (std::size_t guard = 0; guard < m_units.size() * m_feeds.size(); ++guard) {
+            const std::optional<ConstraintValue> failing = failingKept(spliced(m_index), -1);
+            if (!failing)
+                return;
+            const QStringList touched = featuresOf(m_problem.project(), failing->subject);
+            std::size_t fastest = 0;
+            for (std::size_t u = 0; u < m_units.size(); ++u)
+                if (!m_pinned[u] && touched.contains(m_units[u].featureId))
+                    fastest = std::max(fastest, m_index[u]);
+            if (fastest == 0)
+                return; // cannot happen: every kept tolerance holds at the lowest feeds
+            for (std::size_t u = 0; u < m_units.size(); ++u) {
+                if (!m_pinned[u] && touched.contains(m_units[u].featureId) && m_index[u] == fastest) {
+                    --m_index[u];
+                    m_limitedBy[u] = failing->label();
+                }
+            }
+        }
+    }
+
+    const PlanningProblem &m_problem;
+    std::vector<double> m_feeds; // candidates, ascending
+    std::size_t m_programmed = 0;
+    std::vector<DeviationResult> m_deviations;
+    std::vector<bool> m_limitsHold;
+    std::vector<Unit> m_units;
+    std::vector<std::size_t> m_index;
+    std::vector<QString> m_limitedBy;
+    std::vector<bool> m_pinned;
+    QStringList m_kept;
+};
+
+} // namespace
+
+QMap<QString, double> FeedSchedule::feedByFeature() const
+{
+    QMap<QString, double> out;
+    for (const ScheduledFeed &f : features)
+        out.insert(f.featureId, f.feed_mm_rev);
+    return out;
+}
+
+FeedSchedule scheduleFinishingFeeds(const PlanningProblem &problem, const CuttingPass &finishing)
+{
+    if (!(finishing.feed_mm_rev > 0.0)) {
+        FeedSchedule s;
+        s.diagnostics.push_back(
+            makeError(QStringLiteral("passes"), FeedScheduleText::tr("the plan has no finishing pass")));
+        return s;
+    }
+    const std::shared_ptr<const PlanningProblem> pass = problem.forFinishingDepth(finishing.depthOfCut_mm);
+    Scheduler scheduler(*pass, finishing);
+    FeedSchedule s = scheduler.run(finishing);
+    s.notes << FeedScheduleText::tr("Feeds from %1 to %2 mm/rev in steps of %3 mm/rev (the plan's feed range), each "
+                                    "feature's the largest that holds its tolerances and the finishing pass's limits; "
+                                    "the bores keep the programmed feed.")
+                   .arg(QString::number(problem.feedRange().min, 'f', 3),
+                        QString::number(problem.feedRange().max, 'f', 3), QString::number(kFeedStep_mm_rev, 'f', 3));
+    return s;
+}
+
+} // namespace tolturn

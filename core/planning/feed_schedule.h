@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// A feed schedule for the finishing pass (docs/adaptive.md §5): one feed per turned feature of the
+// outer contour, the largest in the plan's feed range that keeps every tolerance the pass can hold
+// inside its limit, with the finishing pass's own limits (roughness, power, torque, force). The
+// deflection at a station depends on the force while the tool is there, so the deviation of a
+// scheduled pass is that of each feature's own feed, feature by feature.
+
+#include "core/common/diagnostic.h"
+#include "core/planning/planning_problem.h"
+
+#include <QMap>
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace tolturn {
+
+struct ScheduledFeed {
+    QString featureId;
+    double feed_mm_rev = 0.0;
+    QString limitedBy; // what stops a larger feed: a tolerance's label, a limit's, or the feed range
+    bool held = false; // kept at the programmed feed: `limitedBy` is a tolerance no feed in the range holds
+};
+
+struct FeedSchedule {
+    double programmedFeed_mm_rev = 0.0;
+    std::vector<ScheduledFeed> features;     // outer features and faces, in the order of the contour
+    std::vector<ConstraintValue> tolerances; // of the scheduled pass
+    QStringList notes;
+    Diagnostics diagnostics;
+
+    [[nodiscard]] bool ok() const { return !hasErrors(diagnostics); }
+
+    [[nodiscard]] QMap<QString, double> feedByFeature() const;
+};
+
+// `finishing` is the plan's finishing pass (its cutting speed and depth are kept).
+[[nodiscard]] FeedSchedule scheduleFinishingFeeds(const PlanningProblem &problem, const CuttingPass &finishing);
+
+} // namespace tolturn

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The feed schedule of the finishing pass (issue 18, docs/adaptive.md §5): every feature at the
+// largest feed of the range that holds its tolerances, checked through the verdicts' own path
+// (computeDeviation at that feed) and through the program it writes.
+#include "tests/core/test_support.h"
+
+#include "core/io/project_file.h"
+#include "core/planning/feed_schedule.h"
+#include "core/planning/planning_report.h"
+#include "core/tolerance/evaluation.h"
+
+#include <QTest>
+
+#include <algorithm>
+
+using namespace tolturn;
+
+namespace {
+
+// The slender pin example (Ø30 pin out of a chuck, T1 Ø h9 and T2 cylindricity on O4, feed range
+// 0.170–0.399 mm/rev) without its Ra requirement, so that only the tolerances and the range bound
+// the feed, and with T2's zone as given.
+Project slenderPin(double cylindricity_um)
+{
+    const ProjectParseResult read =
+        readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/slender-pin-chuck.tolturn"));
+    Q_ASSERT(read.project);
+    Project p = *read.project;
+    p.planning.maxRa_um.reset();
+    p.planning.maxRz_um.reset();
+    for (Tolerance &t : p.tolerances)
+        if (t.id == QLatin1String("T2"))
+            t.zone_um = cylindricity_um;
+    return p;
+}
+
+CuttingPass &finishingPass(Project &p)
+{
+    return *std::find_if(p.passes.begin(), p.passes.end(),
+                         [](const CuttingPass &c) { return c.kind == PassKind::Finishing; });
+}
+
+// T2's predicted cylindricity with the whole finishing pass at feed f, the way the verdicts
+// compute it (its stations are O4's alone, so only O4's feed matters).
+double cylindricityAt(Project p, double feed)
+{
+    finishingPass(p).feed_mm_rev = feed;
+    const DeviationResult d = computeDeviation(p, DataLibrary::builtIn());
+    for (const ToleranceEvaluation &e : evaluateTolerances(p, d))
+        if (e.toleranceId == QLatin1String("T2"))
+            return e.value_um.value_or(-1.0);
+    return -1.0;
+}
+
+FeedSchedule scheduleOf(const Project &p)
+{
+    const PlanningProblem::BuildResult built = PlanningProblem::build(p, DataLibrary::builtIn());
+    Q_ASSERT(built.problem);
+    Project copy = p;
+    return scheduleFinishingFeeds(*built.problem, finishingPass(copy));
+}
+
+const ScheduledFeed &feedOf(const FeedSchedule &s, const char *feature)
+{
+    return *std::find_if(s.features.begin(), s.features.end(),
+                         [&](const ScheduledFeed &f) { return f.featureId == QLatin1String(feature); });
+}
+
+double finishingMinutes(const TurningProgram &program)
+{
+    double t = 0.0;
+    for (const PassSummary &p : program.passes)
+        if (p.kind == PassKind::Finishing)
+            t += p.time_min;
+    return t;
+}
+
+} // namespace
+
+class TestFeedSchedule : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+
+    // T2 at 8 µm binds inside the range on O4 (7.3 µm at the programmed 0.25 mm/rev); the other
+    // features carry no tolerance and go to the top of the range.
+    void everyFeatureAtTheLargestFeedItsTolerancesHold()
+    {
+        const Project p = slenderPin(8.0);
+        const FeedSchedule s = scheduleOf(p);
+        QVERIFY2(s.ok(), qPrintable(test::dump(s.diagnostics)));
+        const ScheduledFeed &o4 = feedOf(s, "O4");
+        QVERIFY2(o4.feed_mm_rev > 0.25 && o4.feed_mm_rev < 0.399, qPrintable(QString::number(o4.feed_mm_rev)));
+        QVERIFY(!o4.held);
+        QVERIFY2(o4.limitedBy.contains(QLatin1String("T2")), qPrintable(o4.limitedBy));
+        // Through the verdicts: inside at the scheduled feed, outside a program step (0.001) above.
+        QVERIFY2(cylindricityAt(p, o4.feed_mm_rev) <= 8.0,
+                 qPrintable(QString::number(cylindricityAt(p, o4.feed_mm_rev))));
+        QVERIFY2(cylindricityAt(p, o4.feed_mm_rev + 0.001) > 8.0,
+                 qPrintable(QString::number(cylindricityAt(p, o4.feed_mm_rev + 0.001))));
+        for (const ScheduledFeed &f : s.features)
+            if (f.featureId != QLatin1String("O4"))
+                QCOMPARE(f.feed_mm_rev, 0.399);
+    }
+
+    // The program cuts O4 at its feed and the rest at theirs, and, every scheduled feed being
+    // above the programmed one, its finishing pass takes less time than the constant-feed one.
+    void theProgramCutsTheSchedule()
+    {
+        const Project p = slenderPin(8.0);
+        const FeedSchedule s = scheduleOf(p);
+        GCodeOptions options;
+        options.finishingFeeds_mm_rev = s.feedByFeature();
+        const TurningProgram scheduled = finishingOutput(p, DataLibrary::builtIn(), options).nominal;
+        const TurningProgram constant = finishingOutput(p, DataLibrary::builtIn()).nominal;
+        const double o4 = feedOf(s, "O4").feed_mm_rev;
+        int o4Moves = 0;
+        for (const ToolMove &m : scheduled.path.finishing.moves) {
+            if (m.featureId == QLatin1String("O4")) {
+                QCOMPARE(m.feed_mm_rev.value_or(-1.0), o4);
+                ++o4Moves;
+            }
+        }
+        QVERIFY(o4Moves > 0);
+        QVERIFY(scheduled.text.contains(QStringLiteral(" F%1\n").arg(o4, 0, 'f', 3)));
+        QVERIFY(scheduled.text.contains(QStringLiteral(" F0.399\n")));
+        QVERIFY(!constant.text.contains(QStringLiteral(" F0.399\n")));
+        QVERIFY2(
+            finishingMinutes(scheduled) < finishingMinutes(constant),
+            qPrintable(QStringLiteral("%1 vs %2").arg(finishingMinutes(scheduled)).arg(finishingMinutes(constant))));
+    }
+
+    // T2 at 4 µm is not held at any feed of the range (5.4 µm at 0.17): O4 keeps the programmed
+    // feed, which its compensation is computed at, and says why.
+    void aToleranceNoFeedHoldsKeepsTheProgrammedFeed()
+    {
+        const Project p = slenderPin(4.0);
+        QVERIFY(cylindricityAt(p, 0.17) > 4.0);
+        const FeedSchedule s = scheduleOf(p);
+        const ScheduledFeed &o4 = feedOf(s, "O4");
+        QVERIFY(o4.held);
+        QCOMPARE(o4.feed_mm_rev, 0.25);
+        QVERIFY(o4.limitedBy.contains(QLatin1String("T2")));
+        QCOMPARE(feedOf(s, "O5").feed_mm_rev, 0.399);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFeedSchedule)
+#include "tst_feed_schedule.moc"
