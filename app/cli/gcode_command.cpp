@@ -32,39 +32,6 @@ void printCompensation(const CompensationPlan &plan, QTextStream &err)
     }
 }
 
-// The feed schedule of the project's finishing pass, with the problem's errors printed.
-std::optional<FeedSchedule> finishingFeedSchedule(const Project &project, std::shared_ptr<const LoadedModel> model,
-                                                  const QString &file, QTextStream &err)
-{
-    const auto finishing = std::find_if(project.passes.rbegin(), project.passes.rend(),
-                                        [](const CuttingPass &p) { return p.kind == PassKind::Finishing; });
-    if (finishing == project.passes.rend()) {
-        err << file << ": " << GCodeCommand::tr("--feed-schedule: the plan has no finishing pass") << '\n';
-        return std::nullopt;
-    }
-    const PlanningProblem::BuildResult built =
-        PlanningProblem::build(project, DataLibrary::builtIn(), StiffnessEnd::Compliant, std::move(model));
-    for (const Diagnostic &d : built.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!built.problem)
-        return std::nullopt;
-    FeedSchedule schedule = scheduleFinishingFeeds(*built.problem, *finishing);
-    for (const Diagnostic &d : schedule.diagnostics)
-        err << file << ": " << d.toString() << '\n';
-    if (!schedule.ok())
-        return std::nullopt;
-    return schedule;
-}
-
-double finishingTime_min(const std::vector<PassSummary> &passes)
-{
-    double t = 0.0;
-    for (const PassSummary &p : passes)
-        if (p.kind == PassKind::Finishing && p.side == ContourSide::Outer)
-            t += p.time_min;
-    return t;
-}
-
 void printSchedule(const FeedSchedule &schedule, const std::vector<PassSummary> &constant,
                    const std::vector<PassSummary> &scheduled, const QString &file, QTextStream &err)
 {
@@ -77,8 +44,8 @@ void printSchedule(const FeedSchedule &schedule, const std::vector<PassSummary> 
                              .arg(f.featureId, QString::number(f.feed_mm_rev, 'f', 3),
                                   QString::number(schedule.programmedFeed_mm_rev, 'f', 3), f.limitedBy))
             << '\n';
-    const double before = 60.0 * finishingTime_min(constant);
-    const double after = 60.0 * finishingTime_min(scheduled);
+    const double before = 60.0 * outerFinishingTime_min(constant);
+    const double after = 60.0 * outerFinishingTime_min(scheduled);
     err << file << ": "
         << GCodeCommand::tr("feed schedule: finishing pass %1 s at the programmed feed, %2 s scheduled (%3 %)")
                .arg(QString::number(before, 'f', 1), QString::number(after, 'f', 1),
@@ -185,8 +152,10 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     if (parser.isSet(feedSchedule)) {
-        schedule = finishingFeedSchedule(*project, model, file, err);
-        if (!schedule)
+        schedule = scheduleProjectFinishingFeeds(*project, DataLibrary::builtIn(), model);
+        for (const Diagnostic &d : schedule->diagnostics)
+            err << file << ": " << d.toString() << '\n';
+        if (!schedule->ok())
             return kExitProblems;
         options.finishingFeeds_mm_rev = schedule->feedByFeature();
     }

@@ -59,13 +59,20 @@ struct Loop {
         out.smallestDeviation_um = 1e300;
         out.largestDeviation_um = -1e300;
         for (std::size_t k = 0; z > zEnd && k < kMaxPeriods; ++k) {
+            // Where the pass has nothing to cut the program moves on in rapid (toolpath.h): no
+            // period passes, and the drive keeps its state.
+            if (pass.depthAt(z) <= kAirDepth_mm) {
+                z = pass.nextCut_mm(z, kAirDepth_mm);
+                if (!(z > zEnd))
+                    break;
+            }
             ControlSample s;
             s.time_s = static_cast<double>(k) * settings.period_s;
             s.z_mm = z;
             s.depth_mm = pass.depthAt(z);
             s.spindle_rpm = spindle_rpm(z);
             s.feed_mm_rev = f0 * actual;
-            const bool cutting = s.depth_mm > kAirDepth_mm;
+            const bool cutting = s.depth_mm > kAirDepth_mm; // false only at the very end
             const CuttingForces f = cutting ? process.forces(s.feed_mm_rev, s.depth_mm) : CuttingForces{};
             s.force_N = resultant_N(f);
             s.radialForce_N = f.radial_N;

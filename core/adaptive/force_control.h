@@ -63,7 +63,7 @@ struct ControlSample {
 
 struct ControlRun {
     std::vector<ControlSample> samples;
-    double time_s = 0.0;      // in the cut, from the right end to the left end of the pass
+    double time_s = 0.0;      // in the cut (the program crosses what a pass does not cut in rapid)
     double peakForce_N = 0.0; // largest resultant while cutting
     double largestDeviation_um = 0.0;
     double smallestDeviation_um = 0.0;

@@ -39,6 +39,14 @@ double PassDepthProfile::cutDiameterAt(double z) const
     return interpolate(z_mm, cutDiameter_mm, z);
 }
 
+double PassDepthProfile::nextCut_mm(double z, double air_mm) const
+{
+    for (std::size_t i = 0; i < z_mm.size(); ++i)
+        if (z_mm[i] < z && depth_mm[i] > air_mm)
+            return z_mm[i];
+    return z_mm.empty() ? z : z_mm.back();
+}
+
 std::vector<PassDepthProfile> passDepthProfiles(const Project &project, double leftEnd_mm, double step_mm)
 {
     const PartProfile &part = project.part;

@@ -27,6 +27,8 @@ struct PassDepthProfile {
 
     [[nodiscard]] double depthAt(double z) const;
     [[nodiscard]] double cutDiameterAt(double z) const;
+    // The first sample left of z with more than `air_mm` to cut; the left end when there is none.
+    [[nodiscard]] double nextCut_mm(double z, double air_mm) const;
 };
 
 // One profile per pass of the project's plan (roughing passes in order, then the finishing pass),

@@ -248,4 +248,35 @@ FeedSchedule scheduleFinishingFeeds(const PlanningProblem &problem, const Cuttin
     return s;
 }
 
+FeedSchedule scheduleProjectFinishingFeeds(const Project &project, const DataLibrary &data,
+                                           std::shared_ptr<const LoadedModel> learned)
+{
+    FeedSchedule s;
+    const auto finishing = std::find_if(project.passes.rbegin(), project.passes.rend(),
+                                        [](const CuttingPass &p) { return p.kind == PassKind::Finishing; });
+    if (finishing == project.passes.rend()) {
+        s.diagnostics.push_back(
+            makeError(QStringLiteral("passes"), FeedScheduleText::tr("the plan has no finishing pass")));
+        return s;
+    }
+    PlanningProblem::BuildResult built =
+        PlanningProblem::build(project, data, StiffnessEnd::Compliant, std::move(learned));
+    if (!built.problem) {
+        s.diagnostics = std::move(built.diagnostics);
+        return s;
+    }
+    s = scheduleFinishingFeeds(*built.problem, *finishing);
+    s.diagnostics.insert(s.diagnostics.begin(), built.diagnostics.begin(), built.diagnostics.end());
+    return s;
+}
+
+double outerFinishingTime_min(const std::vector<PassSummary> &passes)
+{
+    double t = 0.0;
+    for (const PassSummary &p : passes)
+        if (p.kind == PassKind::Finishing && p.side == ContourSide::Outer)
+            t += p.time_min;
+    return t;
+}
+
 } // namespace tolturn

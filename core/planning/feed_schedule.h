@@ -8,6 +8,7 @@
 // scheduled pass is that of each feature's own feed, feature by feature.
 
 #include "core/common/diagnostic.h"
+#include "core/planning/gcode.h"
 #include "core/planning/planning_problem.h"
 
 #include <QMap>
@@ -39,5 +40,12 @@ struct FeedSchedule {
 
 // `finishing` is the plan's finishing pass (its cutting speed and depth are kept).
 [[nodiscard]] FeedSchedule scheduleFinishingFeeds(const PlanningProblem &problem, const CuttingPass &finishing);
+// The schedule of the project's own (last) finishing pass, the planning problem built at the
+// compliant end of the machine's range and with what was learned of it, when given.
+[[nodiscard]] FeedSchedule scheduleProjectFinishingFeeds(const Project &project, const DataLibrary &data,
+                                                         std::shared_ptr<const LoadedModel> learned = nullptr);
+
+// The time of the outer finishing passes of a program's summary [min].
+[[nodiscard]] double outerFinishingTime_min(const std::vector<PassSummary> &passes);
 
 } // namespace tolturn

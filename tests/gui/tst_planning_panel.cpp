@@ -7,8 +7,10 @@
 #include "app/gui/main_window.h"
 #include "core/data/data_library.h"
 #include "widgets/document/project_document.h"
+#include "widgets/planning/adaptive_tab.h"
 #include "widgets/planning/planning_data_dialog.h"
 #include "widgets/planning/planning_panel.h"
+#include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
 
 #include <QAbstractItemModelTester>
@@ -312,6 +314,48 @@ private Q_SLOTS:
         // Cancelled, not finished: no plan to apply (a cancel that did nothing shows the plan).
         QCOMPARE(panel->planText(), QStringLiteral("Cancelled."));
         QVERIFY(!panel->findChild<QPushButton *>(QStringLiteral("applyPlan"))->isEnabled());
+    }
+
+    // The Adaptive tab (issue 18) on the stepped shaft: every pass of the plan under constant-force
+    // control against the programmed feed, and the finishing pass's feed schedule. Its features
+    // carry no tolerance the feed binds, so each goes to √(32 · 0.8 mm · 1.6 µm) = 0.202 mm/rev, the
+    // drawing's Ra 1.6; the G-code tab programs it on request, and not together with compensation.
+    void adaptiveTabShowsTheLoopAndTheSchedule()
+    {
+        MainWindow w;
+        w.resize(1500, 950);
+        w.show();
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        PlanningPanel *panel = w.planningPanel();
+        AdaptiveTab *tab = panel->adaptiveTab();
+        QCOMPARE(tab->passChoice()->count(), 9);
+        QCOMPARE(tab->passChoice()->itemText(8), QStringLiteral("Pass 9 (finishing)"));
+        QCOMPARE(tab->plot()->curveCount(), 2);
+        QVERIFY2(tab->controlSummary()->text().contains(QStringLiteral("Set force 1339 N")),
+                 qPrintable(tab->controlSummary()->text()));
+        tab->passChoice()->setCurrentIndex(5);
+        tab->quantityChoice()->setCurrentIndex(1); // feed
+        QCOMPARE(tab->plot()->curveName(1), QStringLiteral("adaptive"));
+        QTableWidget *schedule = tab->scheduleTable();
+        QCOMPARE(schedule->rowCount(), 9);
+        for (int r = 0; r < schedule->rowCount(); ++r) {
+            QCOMPARE(schedule->item(r, 1)->text(), QStringLiteral("0.202"));
+            QCOMPARE(schedule->item(r, 3)->text(), QStringLiteral("roughness (Ra)"));
+        }
+        QVERIFY2(tab->scheduleSummary()->text().contains(QStringLiteral("scheduled (-")),
+                 qPrintable(tab->scheduleSummary()->text()));
+        QVERIFY(!panel->gcodeText().contains(QStringLiteral("F0.202")));
+        panel->feedScheduleBox()->setChecked(true);
+        QVERIFY(panel->gcodeText().contains(QStringLiteral(" F0.202\n")));
+        auto *compensated = panel->findChild<QCheckBox *>(QStringLiteral("gcodeCompensated"));
+        compensated->setChecked(true);
+        QVERIFY(!panel->feedScheduleBox()->isChecked());
+        QVERIFY(!panel->gcodeText().contains(QStringLiteral(" F0.202\n")));
+        compensated->setChecked(false);
+        panel->findChild<QTabWidget *>()->setCurrentWidget(tab);
+        w.findChild<QDockWidget *>(QStringLiteral("planningDock"))->raise();
+        QTest::qWait(50);
+        saveScreenshot(w, "adaptive.png");
     }
 
     void exportWritesThePreview()

@@ -11,6 +11,7 @@
 #include "widgets/common/table_copy.h"
 #include "widgets/common/worker_threads.h"
 #include "widgets/document/project_document.h"
+#include "widgets/planning/adaptive_tab.h"
 #include "widgets/planning/planning_data_dialog.h"
 #include "widgets/plot/map_plot.h"
 
@@ -95,6 +96,8 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     , m_clamping(new QTableWidget(this))
     , m_compensation(new QTableWidget(this))
     , m_compensated(new QCheckBox(tr("Compensated"), this))
+    , m_scheduled(new QCheckBox(tr("Feed schedule"), this))
+    , m_adaptive(new AdaptiveTab(this))
     , m_dialect(new QComboBox(this))
     , m_nose(new QComboBox(this))
     , m_gcodeConditions(new QLabel(this))
@@ -181,7 +184,13 @@ void PlanningPanel::buildControls()
     m_nose->addItem(tr("Nose radius: tip path by TolTurn"), static_cast<int>(NoseHandling::TipPath));
     m_nose->setToolTip(tr("G42: the program is the contour and the control offsets it by the nose radius in its "
                           "tool data. Tip path: TolTurn offsets it, for controls without compensation."));
+    m_compensated->setObjectName(QStringLiteral("gcodeCompensated"));
     gcodeTop->addWidget(m_compensated);
+    m_scheduled->setObjectName(QStringLiteral("gcodeFeedSchedule"));
+    m_scheduled->setToolTip(tr("Cut each feature of the finishing pass at its feed of the Adaptive tab's schedule "
+                               "(not with the compensated program: its correction is computed at the programmed "
+                               "feed)"));
+    gcodeTop->addWidget(m_scheduled);
     gcodeTop->addWidget(m_dialect);
     gcodeTop->addWidget(m_nose);
     gcodeTop->addStretch();
@@ -222,6 +231,7 @@ void PlanningPanel::buildControls()
     connect(m_applySplit, &QPushButton::clicked, this, &PlanningPanel::applySplit);
     m_tabs->addTab(clampingTab, tr("Clamping"));
     m_tabs->addTab(m_compensation, tr("Compensation"));
+    m_tabs->addTab(m_adaptive, tr("Adaptive"));
     m_tabs->addTab(gcodeTab, tr("G-code"));
     constraints->setVerticalSpacing(0);
     auto *layout = new QVBoxLayout(this);
@@ -239,7 +249,16 @@ void PlanningPanel::buildControls()
                           "works with"));
     connect(m_data, &QPushButton::clicked, this, &PlanningPanel::editPlanningData);
     connect(m_objective, &QComboBox::currentIndexChanged, this, &PlanningPanel::settingsEdited);
-    connect(m_compensated, &QCheckBox::toggled, this, &PlanningPanel::showFinishing);
+    connect(m_compensated, &QCheckBox::toggled, this, [this](bool on) {
+        if (on)
+            m_scheduled->setChecked(false); // one or the other: the correction is computed at the programmed feed
+        showFinishing();
+    });
+    connect(m_scheduled, &QCheckBox::toggled, this, [this](bool on) {
+        if (on)
+            m_compensated->setChecked(false);
+        showFinishing();
+    });
     connect(m_dialect, &QComboBox::currentIndexChanged, this, &PlanningPanel::showFinishing);
     connect(m_nose, &QComboBox::currentIndexChanged, this, &PlanningPanel::showFinishing);
     connect(m_export, &QPushButton::clicked, this, [this] {
@@ -267,6 +286,7 @@ void PlanningPanel::projectChanged()
         m_compensation->setRowCount(0);
         m_gcodeConditions->setText(problemsText());
         m_gcode->clear();
+        m_adaptive->clear(problemsText());
         return;
     }
     showSplit();
@@ -290,6 +310,7 @@ void PlanningPanel::projectChanged()
     m_updatingControls = false;
     if (!m_report && !isRunning())
         m_plan->setText(notRunText());
+    m_adaptive->setProject(operationProject(), m_learned);
     showFinishing();
 }
 
@@ -604,6 +625,8 @@ void PlanningPanel::setLearnedModel(std::shared_ptr<const LoadedModel> model)
     if (model == m_learned)
         return;
     m_learned = std::move(model);
+    if (m_document.hasProject() && !m_document.hasProblems())
+        m_adaptive->setProject(operationProject(), m_learned);
     showFinishing();
 }
 
@@ -615,6 +638,8 @@ void PlanningPanel::showFinishing()
     if (m_dialect->currentData().isValid())
         options.dialect = static_cast<ControlDialect>(m_dialect->currentData().toInt());
     options.nose = static_cast<NoseHandling>(m_nose->currentData().toInt());
+    if (m_scheduled->isChecked() && m_adaptive->schedule().ok())
+        options.finishingFeeds_mm_rev = m_adaptive->schedule().feedByFeature();
     const Project project = operationProject();
     m_finishing =
         m_learned

@@ -21,13 +21,15 @@ class QTabWidget;
 
 namespace tolturn {
 
+class AdaptiveTab;
 class MapPlot;
 class ProjectDocument;
 
 // Planning for the open project: the objective and the constraints switched on, the optimisation
 // run off the GUI thread with progress and cancel, and its results: the plan (which can be applied
 // to the project's passes), the cutting window with labelled boundaries and the optimum, the
-// clamping ranking, the compensation of the finishing pass feature by feature, and its G-code.
+// clamping ranking, the compensation of the finishing pass feature by feature, the constant-force
+// control and the feed schedule (Adaptive), and its G-code.
 class PlanningPanel : public QWidget {
     Q_OBJECT
 public:
@@ -57,6 +59,10 @@ public:
     [[nodiscard]] QPushButton *applySplitButton() const { return m_applySplit; }
 
     [[nodiscard]] QTableWidget *compensationTable() const { return m_compensation; }
+
+    [[nodiscard]] AdaptiveTab *adaptiveTab() const { return m_adaptive; }
+
+    [[nodiscard]] QCheckBox *feedScheduleBox() const { return m_scheduled; }
 
     [[nodiscard]] QString gcodeText() const;
     [[nodiscard]] QString planText() const;
@@ -120,6 +126,8 @@ private:
     QPushButton *m_applySplit = nullptr;
     QTableWidget *m_compensation;
     QCheckBox *m_compensated;
+    QCheckBox *m_scheduled; // the finishing pass cut at the Adaptive tab's feed schedule
+    AdaptiveTab *m_adaptive;
     QComboBox *m_dialect;
     QComboBox *m_nose;
     QLabel *m_gcodeConditions;
