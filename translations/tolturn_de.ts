@@ -2,6 +2,56 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>AdaptiveControl</name>
+    <message>
+        <source>Ra %1 µm</source>
+        <translation>Ra %1 µm</translation>
+    </message>
+    <message>
+        <source>Rz %1 µm</source>
+        <translation>Rz %1 µm</translation>
+    </message>
+    <message>
+        <source>No feed limit known (the plan&apos;s settings give no feed range): the override&apos;s %1 % alone bounds the feed.</source>
+        <translation>Keine Vorschubgrenze bekannt (die Planungsdaten nennen keinen Vorschubbereich): nur die %1 % des Overrides begrenzen den Vorschub.</translation>
+    </message>
+    <message>
+        <source>The feed is held at or below %1 mm/rev, the top of the plan&apos;s feed range (%2).</source>
+        <translation>Der Vorschub bleibt bei höchstens %1 mm/U, dem oberen Ende des Vorschubbereichs der Planung (%2).</translation>
+    </message>
+    <message>
+        <source>no source given</source>
+        <translation>keine Quelle angegeben</translation>
+    </message>
+    <message>
+        <source>Forces from the project&apos;s %1 model; feed drive 1/(%2 s² + %3 s + 1) (Čuš &amp; Župerl eq. 1), control period %4 ms, feed override %5–%6 %.</source>
+        <translation>Kräfte aus dem %1-Modell des Projekts; Vorschubantrieb 1/(%2 s² + %3 s + 1) (Čuš &amp; Župerl Gl. 1), Regeltakt %4 ms, Vorschub-Override %5–%6 %.</translation>
+    </message>
+    <message>
+        <source>Machine noise: %1 % of the force (standard deviation), seed %2.</source>
+        <translation>Maschinenrauschen: %1 % der Kraft (Standardabweichung), Startwert %2.</translation>
+    </message>
+    <message>
+        <source>Machine noise: none (the force is measured exactly).</source>
+        <translation>Maschinenrauschen: keines (die Kraft wird exakt gemessen).</translation>
+    </message>
+    <message numerus="yes">
+        <source>pass %1 does not exist: the plan has %n pass(es)</source>
+        <translation>
+            <numerusform>Schnitt %1 gibt es nicht: der Plan hat %n Schnitt</numerusform>
+            <numerusform>Schnitt %1 gibt es nicht: der Plan hat %n Schnitte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the tool cannot reach the part: it is held over its whole length</source>
+        <translation>das Werkzeug erreicht das Teil nicht: es ist auf seiner ganzen Länge gespannt</translation>
+    </message>
+    <message>
+        <source>Pass %1: the feed is held at or below %2 mm/rev for %3 (f² / (32 r_e), f² / (8 r_e)).</source>
+        <translation>Schnitt %1: der Vorschub bleibt bei höchstens %2 mm/U für %3 (f² / (32 r_e), f² / (8 r_e)).</translation>
+    </message>
+</context>
+<context>
     <name>AtomicFile</name>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
@@ -561,6 +611,101 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>ControlCommand</name>
+    <message>
+        <source>roughing</source>
+        <translation>Schruppen</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>Schlichten</translation>
+    </message>
+    <message>
+        <source>%1: constant-force control, adaptive against the programmed feed</source>
+        <translation>%1: Konstantkraftregelung, adaptiv gegen den programmierten Vorschub</translation>
+    </message>
+    <message>
+        <source>Pass %1 (%2): f %3 mm/rev, a_p %4 mm, vc %5 m/min; set force %6 N (F ∝ f^%7)</source>
+        <translation>Schnitt %1 (%2): f %3 mm/U, a_p %4 mm, vc %5 m/min; Sollkraft %6 N (F ∝ f^%7)</translation>
+    </message>
+    <message>
+        <source>constant feed</source>
+        <translation>konstanter Vorschub</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptiv</translation>
+    </message>
+    <message>
+        <source>time in cut [s]</source>
+        <translation>Zeit im Schnitt [s]</translation>
+    </message>
+    <message>
+        <source>%1 (%2 %)</source>
+        <translation>%1 (%2 %)</translation>
+    </message>
+    <message>
+        <source>peak force [N]</source>
+        <translation>Spitzenkraft [N]</translation>
+    </message>
+    <message>
+        <source>feed [mm/rev]</source>
+        <translation>Vorschub [mm/U]</translation>
+    </message>
+    <message>
+        <source>deviation [µm]</source>
+        <translation>Abweichung [µm]</translation>
+    </message>
+    <message>
+        <source>largest Ra [µm]</source>
+        <translation>größtes Ra [µm]</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
+        <translation>--%1: „%2“ ist keine Zahl von %3 bis %4</translation>
+    </message>
+    <message>
+        <source>Constant-force adaptive control of the plan&apos;s passes (Čuš &amp; Župerl): the feed override commanded every 20 ms through the feed drive&apos;s dynamics, against the programmed feed: time, peak force, feed, deviation and roughness along the pass.</source>
+        <translation>Adaptive Konstantkraftregelung der Schnitte des Plans (Čuš &amp; Župerl): der Vorschub-Override alle 20 ms über die Dynamik des Vorschubantriebs vorgegeben, gegen den programmierten Vorschub: Zeit, Spitzenkraft, Vorschub, Abweichung und Rauheit entlang des Schnitts.</translation>
+    </message>
+    <message>
+        <source>Print a summary per pass as JSON.</source>
+        <translation>Eine Zusammenfassung je Schnitt als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>Print every control period of both runs as CSV.</source>
+        <translation>Jeden Regeltakt beider Läufe als CSV ausgeben.</translation>
+    </message>
+    <message>
+        <source>Only pass N of the plan (1, 2, …).</source>
+        <translation>Nur Schnitt N des Plans (1, 2, …).</translation>
+    </message>
+    <message>
+        <source>The resultant force to hold in N (default: the programmed feed&apos;s at the pass&apos;s depth).</source>
+        <translation>Die zu haltende resultierende Kraft in N (Vorgabe: die des programmierten Vorschubs bei der Schnitttiefe des Schnitts).</translation>
+    </message>
+    <message>
+        <source>Machine noise: standard deviation of the measured force in % (default 0).</source>
+        <translation>Maschinenrauschen: Standardabweichung der gemessenen Kraft in % (Vorgabe 0).</translation>
+    </message>
+    <message>
+        <source>Seed of the noise (default 1).</source>
+        <translation>Startwert des Rauschens (Vorgabe 1).</translation>
+    </message>
+    <message>
+        <source>The project file.</source>
+        <translation>Die Projektdatei.</translation>
+    </message>
+    <message>
+        <source>give --json or --csv, not both</source>
+        <translation>--json oder --csv angeben, nicht beides</translation>
+    </message>
+</context>
+<context>
     <name>CurrentForces</name>
     <message>
         <source>%1 = %2 is outside the range %3 to %4 of the calibration cuts: the network extrapolates</source>
@@ -927,6 +1072,21 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>FeedScheduleText</name>
+    <message>
+        <source>top of the feed range</source>
+        <translation>oberes Ende des Vorschubbereichs</translation>
+    </message>
+    <message>
+        <source>the plan has no finishing pass</source>
+        <translation>der Plan hat keinen Schlichtschnitt</translation>
+    </message>
+    <message>
+        <source>Feeds from %1 to %2 mm/rev in steps of %3 mm/rev (the plan&apos;s feed range), each feature&apos;s the largest that holds its tolerances and the finishing pass&apos;s limits; the bores keep the programmed feed.</source>
+        <translation>Vorschübe von %1 bis %2 mm/U in Schritten von %3 mm/U (der Vorschubbereich der Planung), für jedes Formelement der größte, der seine Toleranzen und die Grenzen des Schlichtschnitts hält; die Bohrungen behalten den programmierten Vorschub.</translation>
+    </message>
+</context>
+<context>
     <name>GCode</name>
     <message>
         <source>No compensation: toleranced diameters at the middle of their zone</source>
@@ -1040,6 +1200,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The bores are not in this program: a centre holds the set-up&apos;s free end, so the boring bar cannot enter it. Bore them in a set-up held in the chuck alone.</source>
         <translation>Die Bohrungen sind nicht in diesem Programm: Eine Spitze hält das freie Ende der Aufspannung, die Bohrstange kann dort nicht einfahren. Bohren Sie sie in einer Aufspannung nur im Futter.</translation>
     </message>
+    <message>
+        <source>Finishing feed scheduled by feature (TolTurn feed schedule): %1</source>
+        <translation>Schlichtvorschub je Formelement (TolTurn-Vorschubplan): %1</translation>
+    </message>
 </context>
 <context>
     <name>GCodeCommand</name>
@@ -1098,6 +1262,30 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Mit dem kompensieren, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
+    </message>
+    <message>
+        <source>feed schedule: %1 kept at the programmed %2 mm/rev: %3 is not held at any feed of the range (a case for compensation)</source>
+        <translation>Vorschubplan: %1 bleibt beim programmierten Vorschub %2 mm/U: %3 wird bei keinem Vorschub des Bereichs gehalten (ein Fall für die Kompensation)</translation>
+    </message>
+    <message>
+        <source>feed schedule: %1 at %2 mm/rev (programmed %3), limited by %4</source>
+        <translation>Vorschubplan: %1 mit %2 mm/U (programmiert %3), begrenzt durch %4</translation>
+    </message>
+    <message>
+        <source>feed schedule: finishing pass %1 s at the programmed feed, %2 s scheduled (%3 %)</source>
+        <translation>Vorschubplan: Schlichtschnitt %1 s beim programmierten Vorschub, %2 s nach Plan (%3 %)</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits.</source>
+        <translation>Jedes Formelement des Schlichtschnitts mit eigenem Vorschub schneiden: dem größten des Vorschubbereichs der Planung, der seine Toleranzen und die Grenzen des Schnitts hält.</translation>
+    </message>
+    <message>
+        <source>--feed-schedule and --compensated: the compensation is computed at the programmed feed; a scheduled program is not compensated yet</source>
+        <translation>--feed-schedule und --compensated: die Kompensation ist für den programmierten Vorschub berechnet; ein Programm nach Vorschubplan wird noch nicht kompensiert</translation>
     </message>
 </context>
 <context>
@@ -1973,6 +2161,40 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The spindle and feed drives&apos; readings during the finishing cut (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</source>
         <translation>Die Messwerte von Spindel- und Vorschubantrieb während des Schlichtschnitts (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</translation>
+    </message>
+</context>
+<context>
+    <name>ModelFiles</name>
+    <message>
+        <source>model form</source>
+        <translation>Modellform</translation>
+    </message>
+    <message>
+        <source>a coefficient must be a number, not %1</source>
+        <translation>ein Koeffizient muss eine Zahl sein, nicht %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>a %1 model does not take %n coefficient(s)</source>
+        <translation>
+            <numerusform>ein %1-Modell nimmt nicht %n Koeffizienten</numerusform>
+            <numerusform>ein %1-Modell nimmt nicht %n Koeffizienten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>file format</source>
+        <translation>Dateiformat</translation>
+    </message>
+    <message>
+        <source>version %1 is not one this TolTurn reads (1)</source>
+        <translation>Version %1 kann dieses TolTurn nicht lesen (1)</translation>
+    </message>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>not a valid JSON object: %1</source>
+        <translation>kein gültiges JSON-Objekt: %1</translation>
     </message>
 </context>
 <context>
@@ -4433,6 +4655,109 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>tolturn::AdaptiveTab</name>
+    <message>
+        <source>The pass of the plan simulated under constant-force control</source>
+        <translation>Der unter Konstantkraftregelung simulierte Schnitt des Plans</translation>
+    </message>
+    <message>
+        <source>Force [N]</source>
+        <translation>Kraft [N]</translation>
+    </message>
+    <message>
+        <source>Feed [mm/rev]</source>
+        <translation>Vorschub [mm/U]</translation>
+    </message>
+    <message>
+        <source>Deviation [µm]</source>
+        <translation>Abweichung [µm]</translation>
+    </message>
+    <message>
+        <source>Roughness Ra [µm]</source>
+        <translation>Rauheit Ra [µm]</translation>
+    </message>
+    <message>
+        <source>Depth of cut [mm]</source>
+        <translation>Schnitttiefe [mm]</translation>
+    </message>
+    <message>
+        <source>Machine noise (Čuš &amp; Župerl §2.4): the standard deviation of the measured force. The paper states no level; none unless given.</source>
+        <translation>Maschinenrauschen (Čuš &amp; Župerl §2.4): die Standardabweichung der gemessenen Kraft. Der Aufsatz nennt keine Höhe; keines, wenn nicht angegeben.</translation>
+    </message>
+    <message>
+        <source>Machine noise:</source>
+        <translation>Maschinenrauschen:</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>Formelement</translation>
+    </message>
+    <message>
+        <source>Scheduled f [mm/rev]</source>
+        <translation>f nach Plan [mm/U]</translation>
+    </message>
+    <message>
+        <source>Programmed f [mm/rev]</source>
+        <translation>f programmiert [mm/U]</translation>
+    </message>
+    <message>
+        <source>Limited by</source>
+        <translation>Begrenzt durch</translation>
+    </message>
+    <message>
+        <source>The finishing pass feature by feature: the largest feed of the plan&apos;s feed range that holds the feature&apos;s tolerances and the pass&apos;s roughness, power and force limits</source>
+        <translation>Der Schlichtschnitt Formelement für Formelement: der größte Vorschub des Vorschubbereichs der Planung, der die Toleranzen des Formelements und die Rauheits-, Leistungs- und Kraftgrenzen des Schnitts hält</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Feed schedule of the finishing pass&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Vorschubplan des Schlichtschnitts&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Pass %1 (roughing)</source>
+        <translation>Schnitt %1 (Schruppen)</translation>
+    </message>
+    <message>
+        <source>Pass %1 (finishing)</source>
+        <translation>Schnitt %1 (Schlichten)</translation>
+    </message>
+    <message>
+        <source>No pass to simulate.</source>
+        <translation>Kein Schnitt zu simulieren.</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>depth of cut</source>
+        <translation>Schnitttiefe</translation>
+    </message>
+    <message>
+        <source>programmed feed</source>
+        <translation>programmierter Vorschub</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptiv</translation>
+    </message>
+    <message>
+        <source>Set force %1 N (the programmed feed&apos;s at a_p %2 mm). In the cut %3 s at the programmed feed, %4 s adaptive (%5 % saved); peak force %6 N and %7 N; deviation %8–%9 µm and %10–%11 µm.</source>
+        <translation>Sollkraft %1 N (die des programmierten Vorschubs bei a_p %2 mm). Im Schnitt %3 s beim programmierten Vorschub, %4 s adaptiv (%5 % gespart); Spitzenkraft %6 N und %7 N; Abweichung %8–%9 µm und %10–%11 µm.</translation>
+    </message>
+    <message>
+        <source>No feed schedule: %1</source>
+        <translation>Kein Vorschubplan: %1</translation>
+    </message>
+    <message>
+        <source>kept: %1 is not held at any feed of the range</source>
+        <translation>beibehalten: %1 wird bei keinem Vorschub des Bereichs gehalten</translation>
+    </message>
+    <message>
+        <source>Finishing pass: %1 s at the programmed feed, %2 s scheduled (%3 %). Tick Feed schedule on the G-code tab to program it.</source>
+        <translation>Schlichtschnitt: %1 s beim programmierten Vorschub, %2 s nach Plan (%3 %). Vorschubplan im Reiter G-Code ankreuzen, um ihn zu programmieren.</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::CadFileController</name>
     <message>
         <source>Reading %1…</source>
@@ -6436,6 +6761,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Split into operations: %1.</source>
         <translation>In Aufspannungen aufteilen: %1.</translation>
+    </message>
+    <message>
+        <source>Feed schedule</source>
+        <translation>Vorschubplan</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (not with the compensated program: its correction is computed at the programmed feed)</source>
+        <translation>Jedes Formelement des Schlichtschnitts mit seinem Vorschub aus dem Plan des Reiters Adaptiv schneiden (nicht mit dem kompensierten Programm: dessen Korrektur ist für den programmierten Vorschub berechnet)</translation>
+    </message>
+    <message>
+        <source>Adaptive</source>
+        <translation>Adaptiv</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,56 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es">
 <context>
+    <name>AdaptiveControl</name>
+    <message>
+        <source>Ra %1 µm</source>
+        <translation>Ra %1 µm</translation>
+    </message>
+    <message>
+        <source>Rz %1 µm</source>
+        <translation>Rz %1 µm</translation>
+    </message>
+    <message>
+        <source>No feed limit known (the plan&apos;s settings give no feed range): the override&apos;s %1 % alone bounds the feed.</source>
+        <translation>No se conoce límite de avance (los datos de planificación no dan un rango de avance): solo el %1 % del override limita el avance.</translation>
+    </message>
+    <message>
+        <source>The feed is held at or below %1 mm/rev, the top of the plan&apos;s feed range (%2).</source>
+        <translation>El avance se mantiene en %1 mm/rev como máximo, el extremo superior del rango de avance de la planificación (%2).</translation>
+    </message>
+    <message>
+        <source>no source given</source>
+        <translation>sin fuente</translation>
+    </message>
+    <message>
+        <source>Forces from the project&apos;s %1 model; feed drive 1/(%2 s² + %3 s + 1) (Čuš &amp; Župerl eq. 1), control period %4 ms, feed override %5–%6 %.</source>
+        <translation>Fuerzas del modelo %1 del proyecto; accionamiento de avance 1/(%2 s² + %3 s + 1) (Čuš &amp; Župerl ec. 1), periodo de control %4 ms, override de avance %5–%6 %.</translation>
+    </message>
+    <message>
+        <source>Machine noise: %1 % of the force (standard deviation), seed %2.</source>
+        <translation>Ruido de máquina: %1 % de la fuerza (desviación típica), semilla %2.</translation>
+    </message>
+    <message>
+        <source>Machine noise: none (the force is measured exactly).</source>
+        <translation>Ruido de máquina: ninguno (la fuerza se mide exactamente).</translation>
+    </message>
+    <message numerus="yes">
+        <source>pass %1 does not exist: the plan has %n pass(es)</source>
+        <translation>
+            <numerusform>la pasada %1 no existe: el plan tiene %n pasada</numerusform>
+            <numerusform>la pasada %1 no existe: el plan tiene %n pasadas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the tool cannot reach the part: it is held over its whole length</source>
+        <translation>la herramienta no alcanza la pieza: está sujeta en toda su longitud</translation>
+    </message>
+    <message>
+        <source>Pass %1: the feed is held at or below %2 mm/rev for %3 (f² / (32 r_e), f² / (8 r_e)).</source>
+        <translation>Pasada %1: el avance se mantiene en %2 mm/rev como máximo por %3 (f² / (32 r_e), f² / (8 r_e)).</translation>
+    </message>
+</context>
+<context>
     <name>AtomicFile</name>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
@@ -561,6 +611,101 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>ControlCommand</name>
+    <message>
+        <source>roughing</source>
+        <translation>desbaste</translation>
+    </message>
+    <message>
+        <source>finishing</source>
+        <translation>acabado</translation>
+    </message>
+    <message>
+        <source>%1: constant-force control, adaptive against the programmed feed</source>
+        <translation>%1: control de fuerza constante, adaptativo frente al avance programado</translation>
+    </message>
+    <message>
+        <source>Pass %1 (%2): f %3 mm/rev, a_p %4 mm, vc %5 m/min; set force %6 N (F ∝ f^%7)</source>
+        <translation>Pasada %1 (%2): f %3 mm/rev, a_p %4 mm, vc %5 m/min; fuerza de consigna %6 N (F ∝ f^%7)</translation>
+    </message>
+    <message>
+        <source>constant feed</source>
+        <translation>avance constante</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptativo</translation>
+    </message>
+    <message>
+        <source>time in cut [s]</source>
+        <translation>tiempo en corte [s]</translation>
+    </message>
+    <message>
+        <source>%1 (%2 %)</source>
+        <translation>%1 (%2 %)</translation>
+    </message>
+    <message>
+        <source>peak force [N]</source>
+        <translation>fuerza máxima [N]</translation>
+    </message>
+    <message>
+        <source>feed [mm/rev]</source>
+        <translation>avance [mm/rev]</translation>
+    </message>
+    <message>
+        <source>deviation [µm]</source>
+        <translation>desviación [µm]</translation>
+    </message>
+    <message>
+        <source>largest Ra [µm]</source>
+        <translation>Ra máxima [µm]</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>nota: %1</translation>
+    </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
+        <translation>--%1: «%2» no es un número de %3 a %4</translation>
+    </message>
+    <message>
+        <source>Constant-force adaptive control of the plan&apos;s passes (Čuš &amp; Župerl): the feed override commanded every 20 ms through the feed drive&apos;s dynamics, against the programmed feed: time, peak force, feed, deviation and roughness along the pass.</source>
+        <translation>Control adaptativo de fuerza constante de las pasadas del plan (Čuš &amp; Župerl): el override de avance ordenado cada 20 ms a través de la dinámica del accionamiento de avance, frente al avance programado: tiempo, fuerza máxima, avance, desviación y rugosidad a lo largo de la pasada.</translation>
+    </message>
+    <message>
+        <source>Print a summary per pass as JSON.</source>
+        <translation>Imprimir un resumen por pasada en JSON.</translation>
+    </message>
+    <message>
+        <source>Print every control period of both runs as CSV.</source>
+        <translation>Imprimir cada periodo de control de ambas simulaciones en CSV.</translation>
+    </message>
+    <message>
+        <source>Only pass N of the plan (1, 2, …).</source>
+        <translation>Solo la pasada N del plan (1, 2, …).</translation>
+    </message>
+    <message>
+        <source>The resultant force to hold in N (default: the programmed feed&apos;s at the pass&apos;s depth).</source>
+        <translation>La fuerza resultante a mantener en N (por defecto: la del avance programado a la profundidad de la pasada).</translation>
+    </message>
+    <message>
+        <source>Machine noise: standard deviation of the measured force in % (default 0).</source>
+        <translation>Ruido de máquina: desviación típica de la fuerza medida en % (por defecto 0).</translation>
+    </message>
+    <message>
+        <source>Seed of the noise (default 1).</source>
+        <translation>Semilla del ruido (por defecto 1).</translation>
+    </message>
+    <message>
+        <source>The project file.</source>
+        <translation>El archivo de proyecto.</translation>
+    </message>
+    <message>
+        <source>give --json or --csv, not both</source>
+        <translation>indique --json o --csv, no ambos</translation>
+    </message>
+</context>
+<context>
     <name>CurrentForces</name>
     <message>
         <source>%1 = %2 is outside the range %3 to %4 of the calibration cuts: the network extrapolates</source>
@@ -927,6 +1072,21 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>FeedScheduleText</name>
+    <message>
+        <source>top of the feed range</source>
+        <translation>extremo superior del rango de avance</translation>
+    </message>
+    <message>
+        <source>the plan has no finishing pass</source>
+        <translation>el plan no tiene pasada de acabado</translation>
+    </message>
+    <message>
+        <source>Feeds from %1 to %2 mm/rev in steps of %3 mm/rev (the plan&apos;s feed range), each feature&apos;s the largest that holds its tolerances and the finishing pass&apos;s limits; the bores keep the programmed feed.</source>
+        <translation>Avances de %1 a %2 mm/rev en pasos de %3 mm/rev (el rango de avance de la planificación), para cada elemento el mayor que mantiene sus tolerancias y los límites de la pasada de acabado; los taladros conservan el avance programado.</translation>
+    </message>
+</context>
+<context>
     <name>GCode</name>
     <message>
         <source>No compensation: toleranced diameters at the middle of their zone</source>
@@ -1040,6 +1200,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The bores are not in this program: a centre holds the set-up&apos;s free end, so the boring bar cannot enter it. Bore them in a set-up held in the chuck alone.</source>
         <translation>Los agujeros no están en este programa: un punto sujeta el extremo libre de la preparación y la barra de mandrinar no puede entrar. Mandrínelos en una preparación sujeta solo en el plato.</translation>
     </message>
+    <message>
+        <source>Finishing feed scheduled by feature (TolTurn feed schedule): %1</source>
+        <translation>Avance de acabado por elemento (programa de avances de TolTurn): %1</translation>
+    </message>
 </context>
 <context>
     <name>GCodeCommand</name>
@@ -1098,6 +1262,30 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Compensar con lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
+    </message>
+    <message>
+        <source>feed schedule: %1 kept at the programmed %2 mm/rev: %3 is not held at any feed of the range (a case for compensation)</source>
+        <translation>programa de avances: %1 se mantiene en el avance programado de %2 mm/rev: %3 no se cumple con ningún avance del rango (un caso para la compensación)</translation>
+    </message>
+    <message>
+        <source>feed schedule: %1 at %2 mm/rev (programmed %3), limited by %4</source>
+        <translation>programa de avances: %1 a %2 mm/rev (programado %3), limitado por %4</translation>
+    </message>
+    <message>
+        <source>feed schedule: finishing pass %1 s at the programmed feed, %2 s scheduled (%3 %)</source>
+        <translation>programa de avances: pasada de acabado %1 s con el avance programado, %2 s según el programa (%3 %)</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>nota: %1</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits.</source>
+        <translation>Cortar cada elemento de la pasada de acabado con su propio avance: el mayor del rango de avance de la planificación que mantiene sus tolerancias y los límites de la pasada.</translation>
+    </message>
+    <message>
+        <source>--feed-schedule and --compensated: the compensation is computed at the programmed feed; a scheduled program is not compensated yet</source>
+        <translation>--feed-schedule y --compensated: la compensación está calculada para el avance programado; un programa con avances por elemento aún no se compensa</translation>
     </message>
 </context>
 <context>
@@ -1973,6 +2161,40 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The spindle and feed drives&apos; readings during the finishing cut (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</source>
         <translation>Las lecturas de los accionamientos del husillo y de avance durante el corte de acabado (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</translation>
+    </message>
+</context>
+<context>
+    <name>ModelFiles</name>
+    <message>
+        <source>model form</source>
+        <translation>forma del modelo</translation>
+    </message>
+    <message>
+        <source>a coefficient must be a number, not %1</source>
+        <translation>un coeficiente debe ser un número, no %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>a %1 model does not take %n coefficient(s)</source>
+        <translation>
+            <numerusform>un modelo %1 no admite %n coeficiente</numerusform>
+            <numerusform>un modelo %1 no admite %n coeficientes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>file format</source>
+        <translation>formato de archivo</translation>
+    </message>
+    <message>
+        <source>version %1 is not one this TolTurn reads (1)</source>
+        <translation>esta versión de TolTurn no lee la versión %1 (1)</translation>
+    </message>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>no se puede leer: %1</translation>
+    </message>
+    <message>
+        <source>not a valid JSON object: %1</source>
+        <translation>no es un objeto JSON válido: %1</translation>
     </message>
 </context>
 <context>
@@ -4433,6 +4655,109 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>tolturn::AdaptiveTab</name>
+    <message>
+        <source>The pass of the plan simulated under constant-force control</source>
+        <translation>La pasada del plan simulada con control de fuerza constante</translation>
+    </message>
+    <message>
+        <source>Force [N]</source>
+        <translation>Fuerza [N]</translation>
+    </message>
+    <message>
+        <source>Feed [mm/rev]</source>
+        <translation>Avance [mm/rev]</translation>
+    </message>
+    <message>
+        <source>Deviation [µm]</source>
+        <translation>Desviación [µm]</translation>
+    </message>
+    <message>
+        <source>Roughness Ra [µm]</source>
+        <translation>Rugosidad Ra [µm]</translation>
+    </message>
+    <message>
+        <source>Depth of cut [mm]</source>
+        <translation>Profundidad de corte [mm]</translation>
+    </message>
+    <message>
+        <source>Machine noise (Čuš &amp; Župerl §2.4): the standard deviation of the measured force. The paper states no level; none unless given.</source>
+        <translation>Ruido de máquina (Čuš &amp; Župerl §2.4): la desviación típica de la fuerza medida. El artículo no da un nivel; ninguno si no se indica.</translation>
+    </message>
+    <message>
+        <source>Machine noise:</source>
+        <translation>Ruido de máquina:</translation>
+    </message>
+    <message>
+        <source>Feature</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <source>Scheduled f [mm/rev]</source>
+        <translation>f programada por elemento [mm/rev]</translation>
+    </message>
+    <message>
+        <source>Programmed f [mm/rev]</source>
+        <translation>f programada [mm/rev]</translation>
+    </message>
+    <message>
+        <source>Limited by</source>
+        <translation>Limitado por</translation>
+    </message>
+    <message>
+        <source>The finishing pass feature by feature: the largest feed of the plan&apos;s feed range that holds the feature&apos;s tolerances and the pass&apos;s roughness, power and force limits</source>
+        <translation>La pasada de acabado elemento por elemento: el mayor avance del rango de la planificación que mantiene las tolerancias del elemento y los límites de rugosidad, potencia y fuerza de la pasada</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Feed schedule of the finishing pass&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Programa de avances de la pasada de acabado&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Pass %1 (roughing)</source>
+        <translation>Pasada %1 (desbaste)</translation>
+    </message>
+    <message>
+        <source>Pass %1 (finishing)</source>
+        <translation>Pasada %1 (acabado)</translation>
+    </message>
+    <message>
+        <source>No pass to simulate.</source>
+        <translation>No hay pasada que simular.</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>depth of cut</source>
+        <translation>profundidad de corte</translation>
+    </message>
+    <message>
+        <source>programmed feed</source>
+        <translation>avance programado</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptativo</translation>
+    </message>
+    <message>
+        <source>Set force %1 N (the programmed feed&apos;s at a_p %2 mm). In the cut %3 s at the programmed feed, %4 s adaptive (%5 % saved); peak force %6 N and %7 N; deviation %8–%9 µm and %10–%11 µm.</source>
+        <translation>Fuerza de consigna %1 N (la del avance programado con a_p %2 mm). En corte %3 s con el avance programado, %4 s adaptativo (%5 % ahorrado); fuerza máxima %6 N y %7 N; desviación %8–%9 µm y %10–%11 µm.</translation>
+    </message>
+    <message>
+        <source>No feed schedule: %1</source>
+        <translation>Sin programa de avances: %1</translation>
+    </message>
+    <message>
+        <source>kept: %1 is not held at any feed of the range</source>
+        <translation>conservado: %1 no se cumple con ningún avance del rango</translation>
+    </message>
+    <message>
+        <source>Finishing pass: %1 s at the programmed feed, %2 s scheduled (%3 %). Tick Feed schedule on the G-code tab to program it.</source>
+        <translation>Pasada de acabado: %1 s con el avance programado, %2 s según el programa (%3 %). Marque Programa de avances en la pestaña Código G para programarlo.</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::CadFileController</name>
     <message>
         <source>Reading %1…</source>
@@ -6436,6 +6761,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Split into operations: %1.</source>
         <translation>Dividir en operaciones: %1.</translation>
+    </message>
+    <message>
+        <source>Feed schedule</source>
+        <translation>Programa de avances</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (not with the compensated program: its correction is computed at the programmed feed)</source>
+        <translation>Cortar cada elemento de la pasada de acabado con su avance del programa de la pestaña Adaptativo (no con el programa compensado: su corrección está calculada para el avance programado)</translation>
+    </message>
+    <message>
+        <source>Adaptive</source>
+        <translation>Adaptativo</translation>
     </message>
 </context>
 <context>
