@@ -3632,6 +3632,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>z from the held (right) end [mm]</source>
         <translation>z vom gespannten (rechten) Ende [mm]</translation>
     </message>
+    <message>
+        <source>Feed schedule of the finishing pass [8]: each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
+        <translation>Vorschubplan des Schlichtschnitts [8]: jedes Formelement mit dem größten Vorschub des Bereichs, der seine Toleranzen und die Grenzen des Schnitts hält; %1 s beim programmierten Vorschub %2 mm/U, %3 s nach Plan (%4 %). Nur auf Wunsch programmiert (gcode --feed-schedule, Reiter G-Code).</translation>
+    </message>
+    <message>
+        <source>Feed [mm/rev]</source>
+        <translation>Vorschub [mm/U]</translation>
+    </message>
+    <message>
+        <source>Limited by</source>
+        <translation>Begrenzt durch</translation>
+    </message>
+    <message>
+        <source>kept: %1 is not held at any feed of the range</source>
+        <translation>beibehalten: %1 wird bei keinem Vorschub des Bereichs gehalten</translation>
+    </message>
+    <message>
+        <source>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (University of Maribor, 2013). Used: eq. 1 (feed drive), §2 (20 ms constant-force loop with feed override); TolTurn&apos;s feed schedule holds the tolerances feature by feature.</source>
+        <translation>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (Universität Maribor, 2013). Verwendet: Gl. 1 (Vorschubantrieb), §2 (Konstantkraftregelung im 20-ms-Takt mit Vorschub-Override); der Vorschubplan von TolTurn hält die Toleranzen Formelement für Formelement.</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>

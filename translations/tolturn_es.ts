@@ -3632,6 +3632,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>z from the held (right) end [mm]</source>
         <translation>z desde el extremo sujetado (derecho) [mm]</translation>
     </message>
+    <message>
+        <source>Feed schedule of the finishing pass [8]: each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
+        <translation>Programa de avances de la pasada de acabado [8]: cada elemento con el mayor avance del rango que mantiene sus tolerancias y los límites de la pasada; %1 s con el avance programado de %2 mm/rev, %3 s según el programa (%4 %). Solo se programa si se pide (gcode --feed-schedule, pestaña Código G).</translation>
+    </message>
+    <message>
+        <source>Feed [mm/rev]</source>
+        <translation>Avance [mm/rev]</translation>
+    </message>
+    <message>
+        <source>Limited by</source>
+        <translation>Limitado por</translation>
+    </message>
+    <message>
+        <source>kept: %1 is not held at any feed of the range</source>
+        <translation>conservado: %1 no se cumple con ningún avance del rango</translation>
+    </message>
+    <message>
+        <source>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (University of Maribor, 2013). Used: eq. 1 (feed drive), §2 (20 ms constant-force loop with feed override); TolTurn&apos;s feed schedule holds the tolerances feature by feature.</source>
+        <translation>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (Universidad de Maribor, 2013). Usado: ec. 1 (accionamiento de avance), §2 (lazo de fuerza constante cada 20 ms con override de avance); el programa de avances de TolTurn mantiene las tolerancias elemento por elemento.</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>

@@ -3,6 +3,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/library_info.h"
+#include "core/planning/feed_schedule.h"
 #include "core/planning/planning_report.h"
 #include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
@@ -400,6 +401,34 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing,
     l.table(rows, {70, 90, 90, 120, 120});
 }
 
+// The finishing pass's feed schedule (docs/adaptive.md §5): each feature's largest feed that holds
+// its tolerances and the pass's limits, and the time it saves against the programmed feed.
+void feedSchedule(Layout &l, const Project &p, const std::shared_ptr<const LoadedModel> &learned)
+{
+    if (!p.planning.feed_mm_rev)
+        return; // no feed range: nothing to schedule within (the plan section says why)
+    const FeedSchedule s = scheduleProjectFinishingFeeds(p, DataLibrary::builtIn(), learned);
+    if (!s.ok())
+        return;
+    GCodeOptions options;
+    const double before =
+        60.0 * outerFinishingTime_min(finishingOutput(p, DataLibrary::builtIn(), options).nominal.passes);
+    options.finishingFeeds_mm_rev = s.feedByFeature();
+    const double after =
+        60.0 * outerFinishingTime_min(finishingOutput(p, DataLibrary::builtIn(), options).nominal.passes);
+    l.paragraph(Report::tr("Feed schedule of the finishing pass [8]: each feature at the largest feed of the range "
+                           "that holds its tolerances and the pass's limits; %1 s at the programmed %2 mm/rev, %3 s "
+                           "scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).")
+                    .arg(num(before, 1), num(s.programmedFeed_mm_rev, 3), num(after, 1),
+                         QString::asprintf("%+.1f", before > 0.0 ? 100.0 * (after - before) / before : 0.0)));
+    std::vector<QStringList> rows{{Report::tr("Feature"), Report::tr("Feed [mm/rev]"), Report::tr("Limited by")}};
+    for (const ScheduledFeed &f : s.features)
+        rows.push_back(
+            {f.featureId, num(f.feed_mm_rev, 3),
+             f.held ? Report::tr("kept: %1 is not held at any feed of the range").arg(f.limitedBy) : f.limitedBy});
+    l.table(rows, {70, 90, kWidth - 160});
+}
+
 void assumptions(Layout &l, const DeviationResult &d)
 {
     l.heading(Report::tr("6  Assumptions"));
@@ -427,6 +456,9 @@ void literature(Layout &l)
         Report::tr("[5] ISO 286-1 and ISO 286-2: limits and fits (tolerance grades, fundamental deviations)."),
         Report::tr("[6] ISO 1101: geometrical tolerancing (form, orientation, location and run-out)."),
         Report::tr("[7] ISO 3002-1: basic quantities in cutting (entering and trailing edge angles)."),
+        Report::tr("[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling "
+                   "cutting forces (University of Maribor, 2013). Used: eq. 1 (feed drive), §2 (20 ms constant-force "
+                   "loop with feed override); TolTurn's feed schedule holds the tolerances feature by feature."),
         Report::tr("The equations as implemented, the corrections of printing errors and the validation against "
                    "closed forms: docs/model.md of TolTurn.")};
     for (const QString &reference : references)
@@ -552,6 +584,7 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
         return rendered;
     }
     plan(layout, project, finishing, header.learned);
+    feedSchedule(layout, project, header.learned);
     if (!step(0.8)) {
         rendered.cancelled = true;
         return rendered;
