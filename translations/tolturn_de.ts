@@ -1204,6 +1204,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Finishing feed scheduled by feature (TolTurn feed schedule): %1</source>
         <translation>Schlichtvorschub je Formelement (TolTurn-Vorschubplan): %1</translation>
     </message>
+    <message>
+        <source>Roughing feed raised where a level cuts less than its depth, to the planned force (TolTurn feed schedule)</source>
+        <translation>Schruppvorschub erhöht, wo eine Ebene weniger als ihre Schnitttiefe schneidet, bis zur geplanten Kraft (TolTurn-Vorschubplan)</translation>
+    </message>
+    <message>
+        <source>Roughing feed not scheduled: the plan&apos;s settings give no feed range to stay within.</source>
+        <translation>Schruppvorschub nicht geplant: die Planungsdaten nennen keinen Vorschubbereich, in dem er bleiben müsste.</translation>
+    </message>
 </context>
 <context>
     <name>GCodeCommand</name>
@@ -1286,6 +1294,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--feed-schedule and --compensated: the compensation is computed at the programmed feed; a scheduled program is not compensated yet</source>
         <translation>--feed-schedule und --compensated: die Kompensation ist für den programmierten Vorschub berechnet; ein Programm nach Vorschubplan wird noch nicht kompensiert</translation>
+    </message>
+    <message>
+        <source>feed schedule: roughing passes %1 s at the programmed feed, %2 s scheduled (%3 %)</source>
+        <translation>Vorschubplan: Schruppschnitte %1 s beim programmierten Vorschub, %2 s nach Plan (%3 %)</translation>
     </message>
 </context>
 <context>

@@ -1204,6 +1204,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Finishing feed scheduled by feature (TolTurn feed schedule): %1</source>
         <translation>Avance de acabado por elemento (programa de avances de TolTurn): %1</translation>
     </message>
+    <message>
+        <source>Roughing feed raised where a level cuts less than its depth, to the planned force (TolTurn feed schedule)</source>
+        <translation>Avance de desbaste aumentado donde un nivel corta menos que su profundidad, hasta la fuerza planificada (programa de avances de TolTurn)</translation>
+    </message>
+    <message>
+        <source>Roughing feed not scheduled: the plan&apos;s settings give no feed range to stay within.</source>
+        <translation>Avance de desbaste no programado: los datos de planificación no dan un rango de avance que respetar.</translation>
+    </message>
 </context>
 <context>
     <name>GCodeCommand</name>
@@ -1286,6 +1294,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--feed-schedule and --compensated: the compensation is computed at the programmed feed; a scheduled program is not compensated yet</source>
         <translation>--feed-schedule y --compensated: la compensación está calculada para el avance programado; un programa con avances por elemento aún no se compensa</translation>
+    </message>
+    <message>
+        <source>feed schedule: roughing passes %1 s at the programmed feed, %2 s scheduled (%3 %)</source>
+        <translation>programa de avances: pasadas de desbaste %1 s con el avance programado, %2 s según el programa (%3 %)</translation>
     </message>
 </context>
 <context>

@@ -51,6 +51,14 @@ void printSchedule(const FeedSchedule &schedule, const std::vector<PassSummary> 
                .arg(QString::number(before, 'f', 1), QString::number(after, 'f', 1),
                     QString::number(before > 0.0 ? 100.0 * (after - before) / before : 0.0, 'f', 1))
         << '\n';
+    const double roughingBefore = 60.0 * outerRoughingTime_min(constant);
+    const double roughingAfter = 60.0 * outerRoughingTime_min(scheduled);
+    err << file << ": "
+        << GCodeCommand::tr("feed schedule: roughing passes %1 s at the programmed feed, %2 s scheduled (%3 %)")
+               .arg(QString::number(roughingBefore, 'f', 1), QString::number(roughingAfter, 'f', 1),
+                    QString::number(
+                        roughingBefore > 0.0 ? 100.0 * (roughingAfter - roughingBefore) / roughingBefore : 0.0, 'f', 1))
+        << '\n';
     for (const QString &note : schedule.notes)
         err << file << ": " << GCodeCommand::tr("note: %1").arg(note) << '\n';
 }
@@ -158,6 +166,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         if (!schedule->ok())
             return kExitProblems;
         options.finishingFeeds_mm_rev = schedule->feedByFeature();
+        options.roughingFeedSchedule = true;
     }
     const FinishingOutput finishing =
         finishingOutputFor(*project, DataLibrary::builtIn(), std::move(deviation), options);
@@ -183,6 +192,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     if (schedule) {
         GCodeOptions constant = options;
         constant.finishingFeeds_mm_rev.clear();
+        constant.roughingFeedSchedule = false;
         const FinishingOutput plain =
             finishingOutputFor(*project, DataLibrary::builtIn(), finishing.deviation, constant);
         printSchedule(*schedule, (parser.isSet(compensated) ? plain.compensated : plain.nominal).passes, program.passes,

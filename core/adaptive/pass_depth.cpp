@@ -61,6 +61,7 @@ std::vector<PassDepthProfile> passDepthProfiles(const Project &project, double l
     // diameter the tool turns there, not as the face.
     const SectionAlongZ section(part);
     std::vector<double> contour;
+    contour.reserve(z.size());
     for (const double zi : z)
         contour.push_back(section.at(std::clamp(zi, leftEnd_mm + 1e-6, length - 1e-6)).outerRadius_mm);
 

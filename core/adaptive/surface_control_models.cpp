@@ -84,8 +84,8 @@ double ProcessModel::evaluate(double x, double y) const
     switch (form) {
     case ProcessModelForm::Polynomial: {
         double sum = 0.0; // Horner
-        for (auto it = c.rbegin(); it != c.rend(); ++it)
-            sum = sum * x + *it;
+        for (std::size_t i = c.size(); i-- > 0;)
+            sum = sum * x + c[i];
         return sum;
     }
     case ProcessModelForm::Exponential:

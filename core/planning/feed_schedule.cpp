@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/feed_schedule.h"
 
+#include "core/adaptive/pass_depth.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -63,8 +65,9 @@ public:
     {
         const ValueRange &range = problem.feedRange();
         std::set<double> feeds{finishing.feed_mm_rev};
-        for (double f = range.min; f <= range.max + 1e-12; f += kFeedStep_mm_rev)
-            feeds.insert(std::round(f / kFeedStep_mm_rev) * kFeedStep_mm_rev);
+        const auto steps = static_cast<int>(std::floor((range.max - range.min) / kFeedStep_mm_rev + 1e-9));
+        for (int i = 0; i <= steps; ++i)
+            feeds.insert(std::round((range.min + i * kFeedStep_mm_rev) / kFeedStep_mm_rev) * kFeedStep_mm_rev);
         m_feeds.assign(feeds.begin(), feeds.end());
         m_programmed = static_cast<std::size_t>(std::find(m_feeds.begin(), m_feeds.end(), finishing.feed_mm_rev) -
                                                 m_feeds.begin());
@@ -277,6 +280,86 @@ double outerFinishingTime_min(const std::vector<PassSummary> &passes)
         if (p.kind == PassKind::Finishing && p.side == ContourSide::Outer)
             t += p.time_min;
     return t;
+}
+
+double outerRoughingTime_min(const std::vector<PassSummary> &passes)
+{
+    double t = 0.0;
+    for (const PassSummary &p : passes)
+        if (p.kind == PassKind::Roughing && p.side == ContourSide::Outer)
+            t += p.time_min;
+    return t;
+}
+
+namespace {
+
+// The largest depth a pass cuts between z0 and z1 (its samples and the ends).
+double deepestCut(const PassDepthProfile &pass, double z0, double z1)
+{
+    const double lo = std::min(z0, z1);
+    const double hi = std::max(z0, z1);
+    double deepest = std::max(pass.depthAt(lo), pass.depthAt(hi));
+    for (std::size_t i = 0; i < pass.z_mm.size(); ++i)
+        if (pass.z_mm[i] > lo && pass.z_mm[i] < hi)
+            deepest = std::max(deepest, pass.depth_mm[i]);
+    return deepest;
+}
+
+// The largest feed in [f0, fMax] at which the resultant force at depth a is at most `force_N`.
+double feedForForce(const ForceFunction &forces, double a, double force_N, double f0, double fMax)
+{
+    const auto resultant = [&](double f) {
+        const CuttingForces c = forces(f, a);
+        return std::sqrt(c.tangential_N * c.tangential_N + c.axial_N * c.axial_N + c.radial_N * c.radial_N);
+    };
+    if (resultant(fMax) <= force_N)
+        return fMax;
+    double lo = f0;
+    double hi = fMax;
+    for (int i = 0; i < 40; ++i)
+        (resultant(0.5 * (lo + hi)) <= force_N ? lo : hi) = 0.5 * (lo + hi);
+    return lo;
+}
+
+} // namespace
+
+int scheduleRoughingFeeds(const Project &project, const ForceFunction &forces, double maxFeed_mm_rev,
+                          std::vector<PassPath> &roughing)
+{
+    constexpr double kShortestMove_mm = 0.1; // shorter moves along z are corners, not cuts
+    const std::vector<PassDepthProfile> depths = passDepthProfiles(project, 0.0, 0.05);
+    int scheduled = 0;
+    std::size_t profile = 0;
+    for (PassPath &pass : roughing) {
+        while (profile < depths.size() && depths[profile].conditions.kind != PassKind::Roughing)
+            ++profile;
+        if (profile >= depths.size())
+            break;
+        const PassDepthProfile &depth = depths[profile++];
+        const double f0 = pass.conditions.feed_mm_rev;
+        if (!(maxFeed_mm_rev > f0))
+            continue;
+        const CuttingForces planned = forces(f0, pass.conditions.depthOfCut_mm);
+        const double force = std::sqrt(planned.tangential_N * planned.tangential_N + planned.axial_N * planned.axial_N +
+                                       planned.radial_N * planned.radial_N);
+        std::optional<ProfilePoint> at;
+        for (ToolMove &m : pass.moves) {
+            const std::optional<ProfilePoint> from = at;
+            at = m.to;
+            if (m.kind != MoveKind::Feed || !from || std::abs(m.to.z_mm - from->z_mm) < kShortestMove_mm)
+                continue;
+            const double a = deepestCut(depth, from->z_mm, m.to.z_mm);
+            if (a >= pass.conditions.depthOfCut_mm - 1e-9)
+                continue; // the full depth: the programmed feed
+            const double f = a > 1e-6 ? feedForForce(forces, a, force, f0, maxFeed_mm_rev) : maxFeed_mm_rev;
+            const double rounded = std::floor(f / kFeedStep_mm_rev + 1e-9) * kFeedStep_mm_rev;
+            if (rounded > f0 + 1e-9) {
+                m.feed_mm_rev = rounded;
+                ++scheduled;
+            }
+        }
+    }
+    return scheduled;
 }
 
 } // namespace tolturn

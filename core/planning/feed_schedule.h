@@ -45,7 +45,17 @@ struct FeedSchedule {
 [[nodiscard]] FeedSchedule scheduleProjectFinishingFeeds(const Project &project, const DataLibrary &data,
                                                          std::shared_ptr<const LoadedModel> learned = nullptr);
 
-// The time of the outer finishing passes of a program's summary [min].
+// The roughing passes' feed move by move: where a level cuts less than its depth (over a shoulder
+// it meets the allowance, or the stock the level above left), the move runs at the feed at which the
+// resultant force is the programmed feed's at the full depth, up to `maxFeed_mm_rev` (the top of the
+// plan's feed range), rounded down to 0.001 mm/rev. The plan's limits (power, torque, force) were
+// checked at that force, so none is passed. Moves along z only; plunges and climbs keep the pass's
+// feed. The depth along each pass is that of pass_depth.h. Returns the moves given a feed.
+int scheduleRoughingFeeds(const Project &project, const ForceFunction &forces, double maxFeed_mm_rev,
+                          std::vector<PassPath> &roughing);
+
+// The time of the outer finishing passes, and of the outer roughing passes, of a program's summary [min].
 [[nodiscard]] double outerFinishingTime_min(const std::vector<PassSummary> &passes);
+[[nodiscard]] double outerRoughingTime_min(const std::vector<PassSummary> &passes);
 
 } // namespace tolturn

@@ -3,6 +3,7 @@
 
 #include "core/common/library_info.h"
 #include "core/planning/boring_toolpath.h"
+#include "core/planning/feed_schedule.h"
 #include "core/planning/path_geometry.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
@@ -247,6 +248,9 @@ QStringList programHeader(const Project &project, const TurningProgram &program,
         header << Programs::tr("Finishing feed scheduled by feature (TolTurn feed schedule): %1")
                       .arg(feeds.join(QStringLiteral(", ")));
     }
+    if (options.roughingFeedSchedule)
+        header << Programs::tr("Roughing feed raised where a level cuts less than its depth, to the planned force "
+                               "(TolTurn feed schedule)");
     if (project.scope) // one set-up of several: which, and which end of the drawing is in the chuck
         header.insert(1, Programs::tr("%1, operation %2 of %3: the drawing's %4 end held; the right end face "
                                       "below is the free end of this set-up")
@@ -285,6 +289,15 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     for (ToolMove &m : program.path.finishing.moves)
         if (m.kind != MoveKind::Rapid && options.finishingFeeds_mm_rev.contains(m.featureId))
             m.feed_mm_rev = options.finishingFeeds_mm_rev.value(m.featureId);
+    if (options.roughingFeedSchedule) {
+        Diagnostics ignored; // the deviation model has reported them already
+        const std::optional<ForceFunction> forces = projectForceModel(project, data, ignored);
+        if (forces && project.planning.feed_mm_rev)
+            (void)scheduleRoughingFeeds(project, *forces, project.planning.feed_mm_rev->max, program.path.roughing);
+        else
+            program.path.notes << Programs::tr("Roughing feed not scheduled: the plan's settings give no feed range "
+                                               "to stay within.");
+    }
     program.boring = boringPath(project, inputs, pathOptions, program.path);
     const std::optional<double> machineLimit =
         project.planning.maxSpindleSpeed_rpm ? project.planning.maxSpindleSpeed_rpm : inputs.maxSpindleSpeed_rpm;

@@ -27,6 +27,9 @@ struct GCodeOptions {
     // The finishing pass's feed feature by feature (feed_schedule.h): each feature's moves are cut
     // at its feed, the moves between them at the pass's. Empty: the pass's feed throughout.
     QMap<QString, double> finishingFeeds_mm_rev;
+    // The roughing moves that cut less than their pass's depth at the feed that keeps the planned
+    // force (feed_schedule.h), up to the top of the plan's feed range.
+    bool roughingFeedSchedule = false;
 };
 
 // What a machinist's set-up sheet gives for a pass of the program: the spindle speed range it

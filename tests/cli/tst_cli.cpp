@@ -653,7 +653,7 @@ private Q_SLOTS:
         const double finishingTime =
             finishing.value(QStringLiteral("constant_feed")).toObject().value(QStringLiteral("time_s")).toDouble();
         QVERIFY2(std::abs(finishingTime - 35.41) < 0.04, qPrintable(QString::number(finishingTime)));
-        for (const QJsonValue &p : passes) {
+        for (const auto &p : passes) {
             const QJsonObject o = p.toObject();
             // Set at the programmed feed's force at the nominal depth, and no pass cuts deeper.
             QVERIFY(o.value(QStringLiteral("time_saved_pct")).toDouble() >= 0.0);

@@ -143,6 +143,48 @@ private Q_SLOTS:
         QVERIFY(o4.limitedBy.contains(QLatin1String("T2")));
         QCOMPARE(feedOf(s, "O5").feed_mm_rev, 0.399);
     }
+
+    // The stepped shaft's third roughing level (r 30 − 3 · 1.9375 = 24.1875) meets the allowance of
+    // the Ø50 seat (r 25 + 0.5) over z 37–80, where the level above left r 26.125: it cuts
+    // 0.625 mm there instead of 1.9375. Kienzle (F ∝ a f^(1 − m), m ≈ 0.2) puts the feed of the
+    // planned force at about 0.3 · 3.1^1.25 = 1.2 mm/rev, so the top of the range, 0.399, holds it;
+    // from the right end to the cone (z 82) the level cuts its full depth and keeps 0.3.
+    void roughingRunsFasterWhereALevelCutsLess()
+    {
+        const ProjectParseResult read =
+            readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/stepped-shaft-chuck.tolturn"));
+        QVERIFY(read.project);
+        GCodeOptions options;
+        options.roughingFeedSchedule = true;
+        const TurningProgram scheduled = finishingOutput(*read.project, DataLibrary::builtIn(), options).nominal;
+        const TurningProgram constant = finishingOutput(*read.project, DataLibrary::builtIn()).nominal;
+        const PassPath &third = scheduled.path.roughing.at(2);
+        int seat = 0;
+        int full = 0;
+        std::optional<ProfilePoint> at;
+        for (const ToolMove &m : third.moves) {
+            const std::optional<ProfilePoint> from = at;
+            at = m.to;
+            if (m.kind != MoveKind::Feed || !from || std::abs(m.to.z_mm - from->z_mm) < 1.0)
+                continue;
+            const double lo = std::min(from->z_mm, m.to.z_mm);
+            const double hi = std::max(from->z_mm, m.to.z_mm);
+            if (lo >= 37.0 && hi <= 80.0) {
+                QCOMPARE(m.feed_mm_rev.value_or(-1.0), 0.399);
+                ++seat;
+            } else if (lo > 81.0) { // from the right end face to where the level meets the cone
+                QVERIFY(!m.feed_mm_rev);
+                ++full;
+            }
+        }
+        QCOMPARE(seat, 1);
+        QVERIFY(full >= 1);
+        QVERIFY(scheduled.text.contains(QStringLiteral(" F0.399\n")));
+        QVERIFY(outerRoughingTime_min(scheduled.passes) < outerRoughingTime_min(constant.passes));
+        for (const PassPath &pass : scheduled.path.roughing)
+            for (const ToolMove &m : pass.moves)
+                QVERIFY(!m.feed_mm_rev || (*m.feed_mm_rev > 0.3 && *m.feed_mm_rev <= 0.399));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestFeedSchedule)

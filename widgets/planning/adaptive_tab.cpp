@@ -62,14 +62,15 @@ void addRun(LinePlot &plot, const QString &name, const ControlRun &run, Quantity
     z.reserve(static_cast<qsizetype>(run.samples.size()));
     y.reserve(static_cast<qsizetype>(run.samples.size()));
     double previous = std::numeric_limits<double>::quiet_NaN();
-    for (auto it = run.samples.rbegin(); it != run.samples.rend(); ++it) { // z ascending
-        if (it->z_mm - previous > 0.5) {                                   // a stretch crossed in rapid
-            z << 0.5 * (it->z_mm + previous);
+    for (std::size_t i = run.samples.size(); i-- > 0;) { // z ascending
+        const ControlSample &s = run.samples[i];
+        if (s.z_mm - previous > 0.5) { // a stretch crossed in rapid
+            z << 0.5 * (s.z_mm + previous);
             y << std::numeric_limits<double>::quiet_NaN();
         }
-        z << it->z_mm;
-        y << valueOf(*it, q);
-        previous = it->z_mm;
+        z << s.z_mm;
+        y << valueOf(s, q);
+        previous = s.z_mm;
     }
     plot.addCurve(name, z, y, color, style);
 }

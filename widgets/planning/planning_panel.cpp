@@ -638,8 +638,10 @@ void PlanningPanel::showFinishing()
     if (m_dialect->currentData().isValid())
         options.dialect = static_cast<ControlDialect>(m_dialect->currentData().toInt());
     options.nose = static_cast<NoseHandling>(m_nose->currentData().toInt());
-    if (m_scheduled->isChecked() && m_adaptive->schedule().ok())
+    if (m_scheduled->isChecked() && m_adaptive->schedule().ok()) {
         options.finishingFeeds_mm_rev = m_adaptive->schedule().feedByFeature();
+        options.roughingFeedSchedule = true;
+    }
     const Project project = operationProject();
     m_finishing =
         m_learned
