@@ -50,6 +50,10 @@
         <source>Pass %1: the feed is held at or below %2 mm/rev for %3 (f² / (32 r_e), f² / (8 r_e)).</source>
         <translation>Schnitt %1: der Vorschub bleibt bei höchstens %2 mm/U für %3 (f² / (32 r_e), f² / (8 r_e)).</translation>
     </message>
+    <message>
+        <source>pass %1: the adaptive run was stopped after %2 h of cutting short of the end of the pass: the set force asks for a feed the pass hardly advances at</source>
+        <translation>Schnitt %1: der adaptive Lauf wurde nach %2 h Schnittzeit vor dem Ende des Schnitts abgebrochen: die Sollkraft verlangt einen Vorschub, bei dem der Schnitt kaum vorankommt</translation>
+    </message>
 </context>
 <context>
     <name>AtomicFile</name>

@@ -50,6 +50,10 @@
         <source>Pass %1: the feed is held at or below %2 mm/rev for %3 (f² / (32 r_e), f² / (8 r_e)).</source>
         <translation>Pasada %1: el avance se mantiene en %2 mm/rev como máximo por %3 (f² / (32 r_e), f² / (8 r_e)).</translation>
     </message>
+    <message>
+        <source>pass %1: the adaptive run was stopped after %2 h of cutting short of the end of the pass: the set force asks for a feed the pass hardly advances at</source>
+        <translation>pasada %1: la simulación adaptativa se detuvo tras %2 h de corte antes del final de la pasada: la fuerza de consigna exige un avance con el que la pasada apenas progresa</translation>
+    </message>
 </context>
 <context>
     <name>AtomicFile</name>

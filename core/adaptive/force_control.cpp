@@ -12,8 +12,8 @@ namespace tolturn {
 
 namespace {
 
-constexpr double kAirDepth_mm = 1e-4;         // below this the tool is taken as cutting air
-constexpr std::size_t kMaxPeriods = 20000000; // 111 hours at 20 ms: a pass that never ends is a bug
+constexpr double kAirDepth_mm = 1e-4;        // below this the tool is taken as cutting air
+constexpr std::size_t kMaxPeriods = 1000000; // 5.6 hours at 20 ms: a set force the feed cannot reach
 
 // x in F ∝ f^x, the local slope of the force model in logarithms at the nominal conditions: for
 // Kienzle's law without a nose radius x = 1 − m_c exactly.
@@ -77,7 +77,7 @@ struct Loop {
             s.force_N = resultant_N(f);
             s.radialForce_N = f.radial_N;
             s.measuredForce_N = s.force_N * (1.0 + settings.forceNoise * noise(noiseSource));
-            if (adaptive && cutting && s.measuredForce_N > 0.0 && actual > 1e-3) {
+            if (adaptive && cutting && s.measuredForce_N > 0.0 && s.feed_mm_rev > 1e-9) {
                 const double estimate = s.measuredForce_N / std::pow(s.feed_mm_rev, exponent);
                 gain = gain ? (1.0 - settings.estimatorGain) * *gain + settings.estimatorGain * estimate : estimate;
                 // The feed at which the estimated process gives the set force.
@@ -100,6 +100,7 @@ struct Loop {
             z -= 0.5 * (before + actual) * f0 * s.spindle_rpm * settings.period_s / 60.0;
         }
         out.time_s = static_cast<double>(out.samples.size()) * settings.period_s;
+        out.cutShort = z > zEnd && out.samples.size() >= kMaxPeriods;
         if (out.largestDeviation_um < out.smallestDeviation_um)
             out.smallestDeviation_um = out.largestDeviation_um = 0.0;
         return out;

@@ -67,6 +67,7 @@ struct ControlRun {
     double peakForce_N = 0.0; // largest resultant while cutting
     double largestDeviation_um = 0.0;
     double smallestDeviation_um = 0.0;
+    bool cutShort = false; // stopped after its longest simulated time before the end of the pass
 };
 
 struct PassControlResult {

@@ -163,6 +163,14 @@ ProjectControlResult simulateProjectControl(const Project &project, const DataLi
                                 .arg(QString::number(*process.maxFeed_mm_rev, 'f', 3),
                                      reasons.join(QStringLiteral(", ")));
         result.passes.push_back(simulatePassControl(pass, process, options.control));
+        if (result.passes.back().adaptive.cutShort)
+            result.diagnostics.push_back(
+                makeWarning(QStringLiteral("passes"),
+                            AdaptiveControl::tr(
+                                "pass %1: the adaptive run was stopped after %2 h of cutting short of the end of the "
+                                "pass: the set force asks for a feed the pass hardly advances at")
+                                .arg(pass.passIndex + 1)
+                                .arg(result.passes.back().adaptive.time_s / 3600.0, 0, 'f', 1)));
     }
     result.notes = notesFor(options, in) + QStringList{feedRangeNote(project, options.control)} + result.notes;
     return result;

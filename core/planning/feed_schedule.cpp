@@ -110,20 +110,28 @@ public:
 private:
     // The tolerances the schedule keeps: those the pass holds with every feature at the lowest
     // feed. The features of the others keep the programmed feed (their compensation, if any, is
-    // computed at it).
+    // computed at it); a feature kept there can break another tolerance it takes part in (a datum
+    // of a run-out), so the choice is made again until it no longer keeps a feature back. Every
+    // kept tolerance then holds with the kept-back features at the programmed feed and the others
+    // at the lowest, which the search below starts from.
     void chooseConstraints()
     {
-        for (const ConstraintValue &c : m_problem.toleranceConstraintsOf(spliced(m_index))) {
-            if (c.violation() <= kSlack) {
-                m_kept.push_back(c.subject);
-                continue;
-            }
-            const QStringList touched = featuresOf(m_problem.project(), c.subject);
-            for (std::size_t u = 0; u < m_units.size(); ++u) {
-                if (touched.contains(m_units[u].featureId) && !m_pinned[u]) {
-                    m_pinned[u] = true;
-                    m_index[u] = m_programmed;
-                    m_limitedBy[u] = c.label();
+        for (bool keptBack = true; keptBack;) {
+            keptBack = false;
+            m_kept.clear();
+            for (const ConstraintValue &c : m_problem.toleranceConstraintsOf(spliced(m_index))) {
+                if (c.violation() <= kSlack) {
+                    m_kept.push_back(c.subject);
+                    continue;
+                }
+                const QStringList touched = featuresOf(m_problem.project(), c.subject);
+                for (std::size_t u = 0; u < m_units.size(); ++u) {
+                    if (touched.contains(m_units[u].featureId) && !m_pinned[u]) {
+                        m_pinned[u] = true;
+                        m_index[u] = m_programmed;
+                        m_limitedBy[u] = c.label();
+                        keptBack = true;
+                    }
                 }
             }
         }
@@ -200,7 +208,7 @@ private:
                 if (!m_pinned[u] && touched.contains(m_units[u].featureId))
                     fastest = std::max(fastest, m_index[u]);
             if (fastest == 0)
-                return; // cannot happen: every kept tolerance holds at the lowest feeds
+                return; // cannot happen: every kept tolerance holds at the lowest feeds (chooseConstraints)
             for (std::size_t u = 0; u < m_units.size(); ++u) {
                 if (!m_pinned[u] && touched.contains(m_units[u].featureId) && m_index[u] == fastest) {
                     --m_index[u];
@@ -346,7 +354,9 @@ int scheduleRoughingFeeds(const Project &project, const ForceFunction &forces, d
         for (ToolMove &m : pass.moves) {
             const std::optional<ProfilePoint> from = at;
             at = m.to;
-            if (m.kind != MoveKind::Feed || !from || std::abs(m.to.z_mm - from->z_mm) < kShortestMove_mm)
+            // Along z only: a plunge or a climb (up a cone, over a radius) starts in the full corner.
+            if (m.kind != MoveKind::Feed || !from || std::abs(m.to.z_mm - from->z_mm) < kShortestMove_mm ||
+                std::abs(m.to.r_mm - from->r_mm) > 1e-3)
                 continue;
             const double a = deepestCut(depth, from->z_mm, m.to.z_mm);
             if (a >= pass.conditions.depthOfCut_mm - 1e-9)

@@ -289,14 +289,17 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     for (ToolMove &m : program.path.finishing.moves)
         if (m.kind != MoveKind::Rapid && options.finishingFeeds_mm_rev.contains(m.featureId))
             m.feed_mm_rev = options.finishingFeeds_mm_rev.value(m.featureId);
+    GCodeOptions headerOptions = options; // the header names the roughing schedule only where it raised a feed
     if (options.roughingFeedSchedule) {
         Diagnostics ignored; // the deviation model has reported them already
         const std::optional<ForceFunction> forces = projectForceModel(project, data, ignored);
+        int raised = 0;
         if (forces && project.planning.feed_mm_rev)
-            (void)scheduleRoughingFeeds(project, *forces, project.planning.feed_mm_rev->max, program.path.roughing);
+            raised = scheduleRoughingFeeds(project, *forces, project.planning.feed_mm_rev->max, program.path.roughing);
         else
             program.path.notes << Programs::tr("Roughing feed not scheduled: the plan's settings give no feed range "
                                                "to stay within.");
+        headerOptions.roughingFeedSchedule = raised > 0;
     }
     program.boring = boringPath(project, inputs, pathOptions, program.path);
     const std::optional<double> machineLimit =
@@ -315,7 +318,7 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     post.tool = options.tool;
     post.boringTool = options.boringTool;
     post.spindle = program.spindle;
-    post.header = programHeader(project, program, options);
+    post.header = programHeader(project, program, headerOptions);
     if (program.boring) {
         post.toolChangeAt = {project.part.length_mm() + inputs.boring->bar.overhang_mm + options.clearance_mm,
                              0.5 * program.path.safeDiameter_mm};

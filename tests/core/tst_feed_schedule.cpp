@@ -185,6 +185,54 @@ private Q_SLOTS:
             for (const ToolMove &m : pass.moves)
                 QVERIFY(!m.feed_mm_rev || (*m.feed_mm_rev > 0.3 && *m.feed_mm_rev <= 0.399));
     }
+
+    void everyKeptToleranceHoldsOnTheExamples_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<bool>("withRa");
+        for (const char *name : {"stepped-shaft-chuck", "long-shaft-centres", "slender-pin-chuck",
+                                 "hollow-sleeve-tailstock", "thin-pin-compensation"}) {
+            QTest::addRow("%s", name) << QString::fromLatin1(name) << true;
+            QTest::addRow("%s without Ra", name) << QString::fromLatin1(name) << false;
+        }
+    }
+
+    // Whatever binds, the scheduled pass holds every tolerance whose features it schedules: a
+    // tolerance that fails on it must have a feature kept at the programmed feed (the case for
+    // compensation).
+    void everyKeptToleranceHoldsOnTheExamples()
+    {
+        QFETCH(QString, file);
+        QFETCH(bool, withRa);
+        const ProjectParseResult read =
+            readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/%1.tolturn").arg(file));
+        QVERIFY(read.project);
+        Project p = *read.project;
+        if (!withRa) {
+            p.planning.maxRa_um.reset();
+            p.planning.maxRz_um.reset();
+        }
+        const FeedSchedule s = scheduleOf(p);
+        QVERIFY2(s.ok(), qPrintable(test::dump(s.diagnostics)));
+        QVERIFY(!s.features.empty());
+        for (const ConstraintValue &c : s.tolerances) {
+            if (c.violation() <= 1e-9)
+                continue;
+            QStringList features; // the tolerance's own, a length's second face, its datums'
+            for (const Tolerance &t : p.tolerances) {
+                if (t.id != c.subject)
+                    continue;
+                features << t.featureId << t.toFeatureId;
+                for (const Datum &d : p.datums)
+                    if (t.datums.contains(d.label))
+                        features << d.featureId;
+            }
+            bool held = false;
+            for (const ScheduledFeed &f : s.features)
+                held = held || (f.held && features.contains(f.featureId));
+            QVERIFY2(held, qPrintable(c.label()));
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestFeedSchedule)
