@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/feed_schedule.h"
 
+#include "core/adaptive/force_control.h"
 #include "core/adaptive/pass_depth.h"
 
 #include <QCoreApplication>
@@ -316,10 +317,7 @@ double deepestCut(const PassDepthProfile &pass, double z0, double z1)
 // The largest feed in [f0, fMax] at which the resultant force at depth a is at most `force_N`.
 double feedForForce(const ForceFunction &forces, double a, double force_N, double f0, double fMax)
 {
-    const auto resultant = [&](double f) {
-        const CuttingForces c = forces(f, a);
-        return std::sqrt(c.tangential_N * c.tangential_N + c.axial_N * c.axial_N + c.radial_N * c.radial_N);
-    };
+    const auto resultant = [&](double f) { return resultant_N(forces(f, a)); };
     if (resultant(fMax) <= force_N)
         return fMax;
     double lo = f0;
@@ -348,8 +346,7 @@ int scheduleRoughingFeeds(const Project &project, const ForceFunction &forces, d
         if (!(maxFeed_mm_rev > f0))
             continue;
         const CuttingForces planned = forces(f0, pass.conditions.depthOfCut_mm);
-        const double force = std::sqrt(planned.tangential_N * planned.tangential_N + planned.axial_N * planned.axial_N +
-                                       planned.radial_N * planned.radial_N);
+        const double force = resultant_N(planned);
         std::optional<ProfilePoint> at;
         for (ToolMove &m : pass.moves) {
             const std::optional<ProfilePoint> from = at;
