@@ -148,6 +148,7 @@ const std::vector<Command> &commands()
         {QStringLiteral("export-step"), exportStepSynopsis(), exportStepSummary(), runExportStep},
         {QStringLiteral("verify-fe"), verifyFeSynopsis(), verifyFeSummary(), runVerifyFe},
         {QStringLiteral("simulate-control"), simulateControlSynopsis(), simulateControlSummary(), runSimulateControl},
+        {QStringLiteral("tune-control"), tuneControlSynopsis(), tuneControlSummary(), runTuneControl},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
         {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
          CommandLine::tr(

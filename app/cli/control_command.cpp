@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "core/adaptive/controller_tuning.h"
 #include "core/adaptive/project_control.h"
 #include "core/common/csv.h"
 
@@ -150,25 +151,58 @@ void printTable(const QString &file, const ProjectControlResult &r, QTextStream 
 
 // A number option in [lo, hi]; nullopt (with the message printed) when it is not one.
 std::optional<double> numberOption(const QCommandLineParser &parser, const QCommandLineOption &option, double lo,
-                                   double hi, QTextStream &err)
+                                   double hi, const QString &command, QTextStream &err)
 {
     bool ok = false;
     const double v = parser.value(option).toDouble(&ok);
     if (ok && v >= lo && v <= hi)
         return v;
-    err << programName() << " simulate-control: "
+    err << programName() << ' ' << command << ": "
         << ControlCommand::tr("--%1: \"%2\" is not a number from %3 to %4")
                .arg(option.names().constFirst(), parser.value(option), QString::number(lo), QString::number(hi))
         << '\n';
     return std::nullopt;
 }
 
+// The options both commands take: the pass, the machine noise and its seed, the controller's gains.
+struct LoopOptions {
+    QCommandLineOption pass{QStringLiteral("pass"), ControlCommand::tr("Only pass N of the plan (1, 2, …)."),
+                            QStringLiteral("N")};
+    QCommandLineOption noise{
+        QStringLiteral("noise"),
+        ControlCommand::tr("Machine noise: standard deviation of the measured force in % (default 0)."),
+        QStringLiteral("PCT"), QStringLiteral("0")};
+    QCommandLineOption seed{QStringLiteral("seed"), ControlCommand::tr("Seed of the noise (default 1)."),
+                            QStringLiteral("N"), QStringLiteral("1")};
+
+    [[nodiscard]] QList<QCommandLineOption> all() const { return {pass, noise, seed}; }
+
+    // Into `options`; false (with the message printed) on a bad value.
+    [[nodiscard]] bool read(const QCommandLineParser &parser, const QString &command, ProjectControlOptions &options,
+                            QTextStream &err) const
+    {
+        if (parser.isSet(pass)) {
+            const std::optional<double> n = numberOption(parser, pass, 1, 1000, command, err);
+            if (!n || *n != std::floor(*n))
+                return false;
+            options.passIndex = static_cast<int>(*n) - 1;
+        }
+        const std::optional<double> noisePct = numberOption(parser, noise, 0.0, 50.0, command, err);
+        const std::optional<double> seedValue = numberOption(parser, seed, 0, 4294967295.0, command, err);
+        if (!noisePct || !seedValue)
+            return false;
+        options.control.forceNoise = *noisePct / 100.0;
+        options.control.noiseSeed = static_cast<unsigned>(*seedValue);
+        return true;
+    }
+};
+
 } // namespace
 
 QString simulateControlSynopsis()
 {
-    return QStringLiteral(
-        "simulate-control [--pass N] [--set-force N] [--noise PCT] [--seed N] [--json|--csv] PROJECT");
+    return QStringLiteral("simulate-control [--pass N] [--set-force N] [--noise PCT] [--seed N] [--estimator-gain G] "
+                          "[--command-gain G] [--json|--csv] PROJECT");
 }
 
 QString simulateControlSummary()
@@ -185,19 +219,26 @@ int runSimulateControl(const QStringList &args, QTextStream &out, QTextStream &e
     const QCommandLineOption json(QStringLiteral("json"), ControlCommand::tr("Print a summary per pass as JSON."));
     const QCommandLineOption csv(QStringLiteral("csv"),
                                  ControlCommand::tr("Print every control period of both runs as CSV."));
-    const QCommandLineOption pass(QStringLiteral("pass"), ControlCommand::tr("Only pass N of the plan (1, 2, …)."),
-                                  QStringLiteral("N"));
+    const LoopOptions loop;
     const QCommandLineOption setForce(
         QStringLiteral("set-force"),
         ControlCommand::tr("The resultant force to hold in N (default: the programmed feed's at the pass's depth)."),
         QStringLiteral("N"));
-    const QCommandLineOption noise(
-        QStringLiteral("noise"),
-        ControlCommand::tr("Machine noise: standard deviation of the measured force in % (default 0)."),
-        QStringLiteral("PCT"), QStringLiteral("0"));
-    const QCommandLineOption seed(QStringLiteral("seed"), ControlCommand::tr("Seed of the noise (default 1)."),
-                                  QStringLiteral("N"), QStringLiteral("1"));
-    parser.addOptions({json, csv, pass, setForce, noise, seed});
+    const QCommandLineOption estimatorGain(
+        QStringLiteral("estimator-gain"),
+        ControlCommand::tr("Weight of each period's estimate of the process gain, %1–%2 (default 1; tune-control "
+                           "finds it).")
+            .arg(kLowestGains.estimatorGain)
+            .arg(kHighestGains.estimatorGain),
+        QStringLiteral("G"), QStringLiteral("1"));
+    const QCommandLineOption commandGain(
+        QStringLiteral("command-gain"),
+        ControlCommand::tr("Share of the step to the set force's feed commanded each period, %1–%2 (default 1).")
+            .arg(kLowestGains.commandGain)
+            .arg(kHighestGains.commandGain),
+        QStringLiteral("G"), QStringLiteral("1"));
+    parser.addOptions({json, csv, setForce, estimatorGain, commandGain});
+    parser.addOptions(loop.all());
     parser.addPositionalArgument(QStringLiteral("project"), ControlCommand::tr("The project file."),
                                  QStringLiteral("PROJECT"));
     if (const int stop = parseNamedCommand(parser, QStringLiteral("simulate-control"), args, out, err); stop >= 0)
@@ -209,25 +250,24 @@ int runSimulateControl(const QStringList &args, QTextStream &out, QTextStream &e
         err << programName() << " simulate-control: " << ControlCommand::tr("give --json or --csv, not both") << '\n';
         return kExitUsage;
     }
+    const QString command = QStringLiteral("simulate-control");
     ProjectControlOptions options;
-    if (parser.isSet(pass)) {
-        const std::optional<double> n = numberOption(parser, pass, 1, 1000, err);
-        if (!n || *n != std::floor(*n))
-            return kExitUsage;
-        options.passIndex = static_cast<int>(*n) - 1;
-    }
+    if (!loop.read(parser, command, options, err))
+        return kExitUsage;
     if (parser.isSet(setForce)) {
-        const std::optional<double> f = numberOption(parser, setForce, 1.0, 1e6, err);
+        const std::optional<double> f = numberOption(parser, setForce, 1.0, 1e6, command, err);
         if (!f)
             return kExitUsage;
         options.control.setForce_N = *f;
     }
-    const std::optional<double> noisePct = numberOption(parser, noise, 0.0, 50.0, err);
-    const std::optional<double> seedValue = numberOption(parser, seed, 0, 4294967295.0, err);
-    if (!noisePct || !seedValue)
+    const std::optional<double> lambda =
+        numberOption(parser, estimatorGain, kLowestGains.estimatorGain, kHighestGains.estimatorGain, command, err);
+    const std::optional<double> gain =
+        numberOption(parser, commandGain, kLowestGains.commandGain, kHighestGains.commandGain, command, err);
+    if (!lambda || !gain)
         return kExitUsage;
-    options.control.forceNoise = *noisePct / 100.0;
-    options.control.noiseSeed = static_cast<unsigned>(*seedValue);
+    options.control.estimatorGain = *lambda;
+    options.control.commandGain = *gain;
 
     const std::optional<Project> project = readProject(file, err);
     if (!project)
@@ -243,6 +283,149 @@ int runSimulateControl(const QStringList &args, QTextStream &out, QTextStream &e
         printCsv(result, out);
     else
         printTable(file, result, out);
+    return kExitOk;
+}
+
+namespace {
+
+QJsonObject tuningJson(const QString &file, const PassSetup &pass, double untuned,
+                       const std::vector<TuningResult> &results, const QStringList &notes)
+{
+    QJsonArray methods;
+    for (const TuningResult &r : results)
+        methods.append(QJsonObject{{QStringLiteral("method"), tuningMethodName(r.method)},
+                                   {QStringLiteral("library"), tuningMethodLibrary(r.method)},
+                                   {QStringLiteral("estimator_gain"), r.gains.estimatorGain},
+                                   {QStringLiteral("command_gain"), r.gains.commandGain},
+                                   {QStringLiteral("rms_force_error"), r.objective},
+                                   {QStringLiteral("evaluations"), r.evaluations},
+                                   {QStringLiteral("time_s"), r.wallTime_s}});
+    return {{QStringLiteral("file"), file},
+            {QStringLiteral("pass"), pass.pass.passIndex + 1},
+            {QStringLiteral("untuned_rms_force_error"), untuned},
+            {QStringLiteral("methods"), methods},
+            {QStringLiteral("notes"), QJsonArray::fromStringList(notes)}};
+}
+
+void printTuning(const QString &file, const PassSetup &pass, double untuned, const std::vector<TuningResult> &results,
+                 const QStringList &notes, QTextStream &out)
+{
+    out << ControlCommand::tr("%1: controller tuning on pass %2, RMS of F / F_set − 1 over the cut")
+               .arg(file)
+               .arg(pass.pass.passIndex + 1)
+        << '\n'
+        << ControlCommand::tr("untuned (both gains 1): %1 %").arg(100.0 * untuned, 0, 'f', 3) << "\n\n";
+    out << QStringLiteral("%1 %2 %3 %4 %5 %6")
+               .arg(ControlCommand::tr("method"), -26)
+               .arg(ControlCommand::tr("estimator"), 10)
+               .arg(ControlCommand::tr("command"), 10)
+               .arg(ControlCommand::tr("RMS [%]"), 10)
+               .arg(ControlCommand::tr("evaluations"), 12)
+               .arg(ControlCommand::tr("time [s]"), 10)
+        << '\n';
+    for (const TuningResult &r : results)
+        out << QStringLiteral("%1 %2 %3 %4 %5 %6")
+                   .arg(tuningMethodLibrary(r.method), -26)
+                   .arg(r.gains.estimatorGain, 10, 'f', 3)
+                   .arg(r.gains.commandGain, 10, 'f', 3)
+                   .arg(100.0 * r.objective, 10, 'f', 3)
+                   .arg(r.evaluations, 12)
+                   .arg(r.wallTime_s, 10, 'f', 2)
+            << '\n';
+    out << '\n';
+    for (const QString &note : notes)
+        out << ControlCommand::tr("note: %1").arg(note) << '\n';
+}
+
+// The methods named in a comma-separated list; empty (with the message printed) on an unknown one.
+std::vector<TuningMethod> methodsNamed(const QString &list, QTextStream &err)
+{
+    std::vector<TuningMethod> methods;
+    for (const QString &name : list.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const std::vector<TuningMethod> all = allTuningMethods();
+        const auto it =
+            std::find_if(all.begin(), all.end(), [&](TuningMethod m) { return tuningMethodName(m) == name.trimmed(); });
+        if (it == all.end()) {
+            QStringList known;
+            for (const TuningMethod m : all)
+                known << tuningMethodName(m);
+            err << programName() << " tune-control: "
+                << ControlCommand::tr("--methods: \"%1\" is not a method (%2)")
+                       .arg(name, known.join(QStringLiteral(", ")))
+                << '\n';
+            return {};
+        }
+        methods.push_back(*it);
+    }
+    return methods;
+}
+
+} // namespace
+
+QString tuneControlSynopsis()
+{
+    return QStringLiteral("tune-control [--pass N] [--noise PCT] [--seed N] [--evaluations N] [--methods LIST] "
+                          "[--json] PROJECT");
+}
+
+QString tuneControlSummary()
+{
+    return ControlCommand::tr(
+        "Tune the constant-force controller on a pass of the plan (the estimator's and the command's gains): "
+        "particle swarm (Čuš & Župerl's method, pagmo2) against NLopt's algorithms on the same objective.");
+}
+
+int runTuneControl(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption json(QStringLiteral("json"), ControlCommand::tr("Print the comparison as JSON."));
+    const LoopOptions loop;
+    const QCommandLineOption evaluations(
+        QStringLiteral("evaluations"),
+        ControlCommand::tr("Simulations of the pass each method may ask for (default 400)."), QStringLiteral("N"),
+        QStringLiteral("400"));
+    QStringList names;
+    for (const TuningMethod m : allTuningMethods())
+        names << tuningMethodName(m);
+    const QCommandLineOption methods(
+        QStringLiteral("methods"),
+        ControlCommand::tr("Comma-separated methods (default all: %1).").arg(names.join(QStringLiteral(","))),
+        QStringLiteral("LIST"), names.join(QLatin1Char(',')));
+    parser.addOptions({json, evaluations, methods});
+    parser.addOptions(loop.all());
+    parser.addPositionalArgument(QStringLiteral("project"), ControlCommand::tr("The project file."),
+                                 QStringLiteral("PROJECT"));
+    const QString command = QStringLiteral("tune-control");
+    if (const int stop = parseNamedCommand(parser, command, args, out, err); stop >= 0)
+        return stop;
+    const QString file = oneProjectFile(parser, command, err);
+    if (file.isEmpty())
+        return kExitUsage;
+    ProjectControlOptions options;
+    options.passIndex = 0;
+    if (!loop.read(parser, command, options, err))
+        return kExitUsage;
+    const std::optional<double> budget = numberOption(parser, evaluations, 20, 100000, command, err);
+    const std::vector<TuningMethod> chosen = methodsNamed(parser.value(methods), err);
+    if (!budget || chosen.empty())
+        return kExitUsage;
+
+    const std::optional<Project> project = readProject(file, err);
+    if (!project)
+        return kExitProblems;
+    const ProjectControlSetup setup = prepareProjectControl(*project, DataLibrary::builtIn(), options);
+    for (const Diagnostic &d : setup.diagnostics)
+        err << file << ": " << d.toString() << '\n';
+    if (!setup.ok())
+        return kExitProblems;
+    const PassSetup &pass = setup.passes.front();
+    const double untuned = forceTrackingError(pass.pass, pass.process, options.control, {1.0, 1.0});
+    std::vector<TuningResult> results;
+    for (const TuningMethod m : chosen)
+        results.push_back(tuneController(pass.pass, pass.process, options.control, m, static_cast<int>(*budget)));
+    if (parser.isSet(json))
+        return printJson(tuningJson(file, pass, untuned, results, setup.notes), out, err, command);
+    printTuning(file, pass, untuned, results, setup.notes, out);
     return kExitOk;
 }
 

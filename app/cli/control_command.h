@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// tolturn-cli simulate-control (docs/cli.md, docs/adaptive.md).
+// tolturn-cli simulate-control and tune-control (docs/cli.md, docs/adaptive.md).
 #pragma once
 
 #include <QString>
@@ -12,5 +12,9 @@ namespace tolturn {
 [[nodiscard]] QString simulateControlSynopsis();
 [[nodiscard]] QString simulateControlSummary();
 int runSimulateControl(const QStringList &args, QTextStream &out, QTextStream &err);
+
+[[nodiscard]] QString tuneControlSynopsis();
+[[nodiscard]] QString tuneControlSummary();
+int runTuneControl(const QStringList &args, QTextStream &out, QTextStream &err);
 
 } // namespace tolturn

@@ -80,8 +80,10 @@ struct Loop {
             if (adaptive && cutting && s.measuredForce_N > 0.0 && s.feed_mm_rev > 1e-9) {
                 const double estimate = s.measuredForce_N / std::pow(s.feed_mm_rev, exponent);
                 gain = gain ? (1.0 - settings.estimatorGain) * *gain + settings.estimatorGain * estimate : estimate;
-                // The feed at which the estimated process gives the set force.
-                command = std::clamp(std::pow(setForce_N / *gain, 1.0 / exponent) / f0, settings.minOverride,
+                // The feed at which the estimated process gives the set force, approached by the
+                // command gain's share of the step.
+                const double target = std::pow(setForce_N / *gain, 1.0 / exponent) / f0;
+                command = std::clamp(command + settings.commandGain * (target - command), settings.minOverride,
                                      std::max(ceiling, settings.minOverride));
             }
             s.commandedFeed_mm_rev = f0 * command;
@@ -115,7 +117,7 @@ double resultant_N(const CuttingForces &f)
 }
 
 PassControlResult simulatePassControl(const PassDepthProfile &pass, const PassProcess &process,
-                                      const ForceControlSettings &settings)
+                                      const ForceControlSettings &settings, ControlRuns runs)
 {
     PassControlResult result;
     result.pass = pass;
@@ -127,7 +129,8 @@ PassControlResult simulatePassControl(const PassDepthProfile &pass, const PassPr
     result.setForce_N = settings.setForce_N.value_or(resultant_N(process.forces(f0, a0)));
     const Loop loop{pass, process, settings, result.setForce_N, result.feedExponent};
     result.adaptive = loop.run(true);
-    result.constantFeed = loop.run(false);
+    if (runs == ControlRuns::AdaptiveAndConstantFeed)
+        result.constantFeed = loop.run(false);
     return result;
 }
 

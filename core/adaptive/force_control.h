@@ -25,6 +25,10 @@ struct ForceControlSettings {
     // Weight of each period's estimate of the process gain (1: the last measurement alone; less
     // smooths noise at the price of a slower answer). A setting of the controller, not a datum.
     double estimatorGain = 1.0;
+    // Share of the step from the last command to the feed of the set force taken each period
+    // (1: the whole step; more overdrives the feed drive's lag, less damps the answer). A setting
+    // of the controller, not a datum: controller_tuning.h finds it with the estimator's gain.
+    double commandGain = 1.0;
     // Machine noise (004 §2.4): relative standard deviation of the measured force, Gaussian, with
     // a fixed seed so that a run can be repeated. 004 states no level: none unless given.
     double forceNoise = 0.0;
@@ -78,10 +82,14 @@ struct PassControlResult {
     ControlRun constantFeed; // the programmed feed throughout, the same noise
 };
 
+enum class ControlRuns { AdaptiveAndConstantFeed, AdaptiveOnly };
+
 // The pass simulated twice on the same depth profile and noise: with the adaptive loop and at the
-// programmed feed. The tool starts at the right end at the programmed feed, in steady state.
+// programmed feed (or the adaptive run alone, for tuning). The tool starts at the right end at the
+// programmed feed, in steady state.
 [[nodiscard]] PassControlResult simulatePassControl(const PassDepthProfile &pass, const PassProcess &process,
-                                                    const ForceControlSettings &settings);
+                                                    const ForceControlSettings &settings,
+                                                    ControlRuns runs = ControlRuns::AdaptiveAndConstantFeed);
 
 // The resultant of the three force components.
 [[nodiscard]] double resultant_N(const CuttingForces &f);

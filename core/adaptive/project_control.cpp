@@ -115,40 +115,40 @@ QStringList notesFor(const ProjectControlOptions &options, const TurningInputs &
 
 } // namespace
 
-ProjectControlResult simulateProjectControl(const Project &project, const DataLibrary &data,
-                                            const ProjectControlOptions &options)
+ProjectControlSetup prepareProjectControl(const Project &project, const DataLibrary &data,
+                                          const ProjectControlOptions &options)
 {
-    ProjectControlResult result;
+    ProjectControlSetup setup;
     if (options.passIndex && (*options.passIndex < 0 || *options.passIndex >= std::ssize(project.passes))) {
-        result.diagnostics.push_back(
+        setup.diagnostics.push_back(
             makeError(QStringLiteral("passes"), AdaptiveControl::tr("pass %1 does not exist: the plan has %n pass(es)",
                                                                     nullptr, static_cast<int>(project.passes.size()))
                                                     .arg(*options.passIndex + 1)));
-        return result;
+        return setup;
     }
-    const std::optional<ForceFunction> forces = projectForceModel(project, data, result.diagnostics);
+    const std::optional<ForceFunction> forces = projectForceModel(project, data, setup.diagnostics);
     DeviationOptions deviation;
     deviation.stiffnessEnd = options.stiffnessEnd;
     deviation.passIndex = options.passIndex.value_or(-1);
     InputsResult inputs = resolveTurningInputs(project, data, deviation);
-    result.diagnostics.insert(result.diagnostics.end(), inputs.diagnostics.begin(), inputs.diagnostics.end());
-    if (!forces || !inputs.inputs || hasErrors(result.diagnostics))
-        return result;
+    setup.diagnostics.insert(setup.diagnostics.end(), inputs.diagnostics.begin(), inputs.diagnostics.end());
+    if (!forces || !inputs.inputs || hasErrors(setup.diagnostics))
+        return setup;
     const TurningInputs &in = *inputs.inputs;
     const double left = in.supportStart_mm + kToolClearance_mm;
     const double right = project.part.length_mm();
     if (right <= left) {
-        result.diagnostics.push_back(makeError(QStringLiteral("clamping.clamped_length_mm"),
-                                               AdaptiveControl::tr("the tool cannot reach the part: it is held "
-                                                                   "over its whole length")));
-        return result;
+        setup.diagnostics.push_back(makeError(QStringLiteral("clamping.clamped_length_mm"),
+                                              AdaptiveControl::tr("the tool cannot reach the part: it is held "
+                                                                  "over its whole length")));
+        return setup;
     }
     PassProcess process;
     process.forces = *forces;
-    const DeviationAlongZ along = deviationAlongZ(project, in, left, right);
-    process.radialDeviation_mm = along;
+    process.radialDeviation_mm = deviationAlongZ(project, in, left, right);
     process.maxSpindleSpeed_rpm = in.maxSpindleSpeed_rpm;
     process.noseRadius_mm = in.noseRadius_mm;
+    QStringList ceilings;
     for (const PassDepthProfile &pass : passDepthProfiles(project, left, options.depthStep_mm)) {
         if (options.passIndex && pass.passIndex != *options.passIndex)
             continue;
@@ -156,23 +156,36 @@ ProjectControlResult simulateProjectControl(const Project &project, const DataLi
         QStringList reasons;
         process.maxFeed_mm_rev = feedCeiling(project, pass.conditions, in.noseRadius_mm, reasons);
         if (!reasons.isEmpty())
-            result.notes << AdaptiveControl::tr(
-                                "Pass %1: the feed is held at or below %2 mm/rev for %3 (f² / (32 r_e), "
-                                "f² / (8 r_e)).")
-                                .arg(pass.passIndex + 1)
-                                .arg(QString::number(*process.maxFeed_mm_rev, 'f', 3),
-                                     reasons.join(QStringLiteral(", ")));
-        result.passes.push_back(simulatePassControl(pass, process, options.control));
+            ceilings << AdaptiveControl::tr("Pass %1: the feed is held at or below %2 mm/rev for %3 (f² / (32 r_e), "
+                                            "f² / (8 r_e)).")
+                            .arg(pass.passIndex + 1)
+                            .arg(QString::number(*process.maxFeed_mm_rev, 'f', 3), reasons.join(QStringLiteral(", ")));
+        setup.passes.push_back({pass, process});
+    }
+    setup.notes = notesFor(options, in) + QStringList{feedRangeNote(project, options.control)} + ceilings;
+    return setup;
+}
+
+ProjectControlResult simulateProjectControl(const Project &project, const DataLibrary &data,
+                                            const ProjectControlOptions &options)
+{
+    ProjectControlSetup setup = prepareProjectControl(project, data, options);
+    ProjectControlResult result;
+    result.diagnostics = std::move(setup.diagnostics);
+    result.notes = std::move(setup.notes);
+    if (hasErrors(result.diagnostics))
+        return result;
+    for (const PassSetup &p : setup.passes) {
+        result.passes.push_back(simulatePassControl(p.pass, p.process, options.control));
         if (result.passes.back().adaptive.cutShort)
             result.diagnostics.push_back(
                 makeWarning(QStringLiteral("passes"),
                             AdaptiveControl::tr(
                                 "pass %1: the adaptive run was stopped after %2 h of cutting short of the end of the "
                                 "pass: the set force asks for a feed the pass hardly advances at")
-                                .arg(pass.passIndex + 1)
+                                .arg(p.pass.passIndex + 1)
                                 .arg(result.passes.back().adaptive.time_s / 3600.0, 0, 'f', 1)));
     }
-    result.notes = notesFor(options, in) + QStringList{feedRangeNote(project, options.control)} + result.notes;
     return result;
 }
 

@@ -34,6 +34,25 @@ struct ProjectControlResult {
     [[nodiscard]] bool ok() const { return !hasErrors(diagnostics) && !passes.empty(); }
 };
 
+// A pass of the project ready for the loop: its depth of cut along z and the process it meets.
+struct PassSetup {
+    PassDepthProfile pass;
+    PassProcess process;
+};
+
+struct ProjectControlSetup {
+    std::vector<PassSetup> passes;
+    Diagnostics diagnostics;
+    QStringList notes;
+
+    [[nodiscard]] bool ok() const { return !hasErrors(diagnostics) && !passes.empty(); }
+};
+
+// The passes (options.passIndex, or all) resolved once against the data library, for
+// simulateProjectControl and for tuning the controller on them (controller_tuning.h).
+[[nodiscard]] ProjectControlSetup prepareProjectControl(const Project &project, const DataLibrary &data,
+                                                        const ProjectControlOptions &options);
+
 [[nodiscard]] ProjectControlResult simulateProjectControl(const Project &project, const DataLibrary &data,
                                                           const ProjectControlOptions &options);
 

@@ -689,6 +689,43 @@ private Q_SLOTS:
                  qPrintable(badNoise.err));
     }
 
+    // tune-control (issue 18): pass 3 of the stepped shaft with 5 % noise. The methods' accuracy is
+    // tested in tst_controller_tuning; here the command: every method named keeps to its budget,
+    // finds gains inside the bounds that do better than the untuned loop, and bad options are named.
+    void tuneControlComparesTheMethods()
+    {
+        const Run r = runCli(
+            {QStringLiteral("tune-control"), QStringLiteral("--json"), QStringLiteral("--pass"), QStringLiteral("3"),
+             QStringLiteral("--noise"), QStringLiteral("5"), QStringLiteral("--methods"), QStringLiteral("pso,cobyla"),
+             QStringLiteral("--evaluations"), QStringLiteral("100"), example("stepped-shaft-chuck.tolturn")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(json.value(QStringLiteral("pass")).toInt(), 3);
+        const double untuned = json.value(QStringLiteral("untuned_rms_force_error")).toDouble();
+        const QJsonArray methods = json.value(QStringLiteral("methods")).toArray();
+        QCOMPARE(methods.size(), 2);
+        QCOMPARE(methods[0].toObject().value(QStringLiteral("library")).toString(), QStringLiteral("pagmo2 pso"));
+        QCOMPARE(methods[1].toObject().value(QStringLiteral("library")).toString(), QStringLiteral("NLopt LN_COBYLA"));
+        for (const auto &m : methods) {
+            const QJsonObject o = m.toObject();
+            QVERIFY(o.value(QStringLiteral("evaluations")).toInt() <= 100);
+            QVERIFY(o.value(QStringLiteral("rms_force_error")).toDouble() < untuned);
+            const double lambda = o.value(QStringLiteral("estimator_gain")).toDouble();
+            const double g = o.value(QStringLiteral("command_gain")).toDouble();
+            QVERIFY(lambda >= 0.02 && lambda <= 1.0 && g >= 0.1 && g <= 2.0);
+        }
+        const Run badMethod = runCli({QStringLiteral("tune-control"), QStringLiteral("--methods"),
+                                      QStringLiteral("pso,genetic"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(badMethod.exitCode, 2);
+        QVERIFY2(badMethod.err.contains(QStringLiteral("--methods: \"genetic\" is not a method (pso, cobyla,")),
+                 qPrintable(badMethod.err));
+        const Run badGain = runCli({QStringLiteral("simulate-control"), QStringLiteral("--command-gain"),
+                                    QStringLiteral("3"), example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(badGain.exitCode, 2);
+        QVERIFY2(badGain.err.contains(QStringLiteral("--command-gain: \"3\" is not a number from 0.1 to 2")),
+                 qPrintable(badGain.err));
+    }
+
     // verify-fe (issue 17): the solid check from the command line on a coarse mesh. Its accuracy
     // is tested in tst_solid_fe; here the command: its table, its JSON and its errors.
     void verifyFeComparesBeamAndSolid()
