@@ -606,6 +606,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Plain Timoshenko beam: without the corrections for the root in the jaws and the shoulders identified from solid FE.</source>
         <translation>Reiner Timoshenko-Balken: ohne die aus Volumen-FE ermittelten Korrekturen für die Einspannung in den Backen und die Absätze.</translation>
     </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
+        <translation>--%1: „%2“ ist keine Zahl von %3 bis %4</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -669,10 +673,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Hinweis: %1</translation>
     </message>
     <message>
-        <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
-        <translation>--%1: „%2“ ist keine Zahl von %3 bis %4</translation>
-    </message>
-    <message>
         <source>Constant-force adaptive control of the plan&apos;s passes (Čuš &amp; Župerl): the feed override commanded every 20 ms through the feed drive&apos;s dynamics, against the programmed feed: time, peak force, feed, deviation and roughness along the pass.</source>
         <translation>Adaptive Konstantkraftregelung der Schnitte des Plans (Čuš &amp; Župerl): der Vorschub-Override alle 20 ms über die Dynamik des Vorschubantriebs vorgegeben, gegen den programmierten Vorschub: Zeit, Spitzenkraft, Vorschub, Abweichung und Rauheit entlang des Schnitts.</translation>
     </message>
@@ -707,6 +707,160 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>give --json or --csv, not both</source>
         <translation>--json oder --csv angeben, nicht beides</translation>
+    </message>
+    <message>
+        <source>Weight of each period&apos;s estimate of the process gain, %1–%2 (default 1; tune-control finds it).</source>
+        <translation>Gewicht der Schätzung der Prozessverstärkung je Takt, %1–%2 (Vorgabe 1; tune-control ermittelt es).</translation>
+    </message>
+    <message>
+        <source>Share of the step to the set force&apos;s feed commanded each period, %1–%2 (default 1).</source>
+        <translation>Anteil des Schritts zum Vorschub der Sollkraft, der je Takt vorgegeben wird, %1–%2 (Vorgabe 1).</translation>
+    </message>
+    <message>
+        <source>%1: controller tuning on pass %2, RMS of F / F_set − 1 over the cut</source>
+        <translation>%1: Reglerabstimmung an Schnitt %2, Effektivwert von F / F_soll − 1 über den Schnitt</translation>
+    </message>
+    <message>
+        <source>untuned (both gains 1): %1 %</source>
+        <translation>nicht abgestimmt (beide Verstärkungen 1): %1 %</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>estimator</source>
+        <translation>Schätzer</translation>
+    </message>
+    <message>
+        <source>command</source>
+        <translation>Vorgabe</translation>
+    </message>
+    <message>
+        <source>RMS [%]</source>
+        <translation>Effektivwert [%]</translation>
+    </message>
+    <message>
+        <source>evaluations</source>
+        <translation>Auswertungen</translation>
+    </message>
+    <message>
+        <source>time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <source>--methods: &quot;%1&quot; is not a method (%2)</source>
+        <translation>--methods: „%1“ ist kein Verfahren (%2)</translation>
+    </message>
+    <message>
+        <source>Tune the constant-force controller on a pass of the plan (the estimator&apos;s and the command&apos;s gains): particle swarm (Čuš &amp; Župerl&apos;s method, pagmo2) against NLopt&apos;s algorithms on the same objective.</source>
+        <translation>Den Konstantkraftregler an einem Schnitt des Plans abstimmen (Verstärkung des Schätzers und der Vorgabe): Partikelschwarm (das Verfahren von Čuš &amp; Župerl, pagmo2) gegen die Algorithmen von NLopt auf derselben Zielfunktion.</translation>
+    </message>
+    <message>
+        <source>Print the comparison as JSON.</source>
+        <translation>Den Vergleich als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>Simulations of the pass each method may ask for (default 400).</source>
+        <translation>Simulationen des Schnitts, die jedes Verfahren anfordern darf (Vorgabe 400).</translation>
+    </message>
+    <message>
+        <source>Comma-separated methods (default all: %1).</source>
+        <translation>Verfahren, durch Kommas getrennt (Vorgabe alle: %1).</translation>
+    </message>
+</context>
+<context>
+    <name>ControlExample</name>
+    <message>
+        <source>Čuš &amp; Župerl&apos;s end-milling system rebuilt (docs/adaptive.md §9)</source>
+        <translation>Das Stirnfräs-System von Čuš &amp; Župerl nachgebaut (docs/adaptive.md §9)</translation>
+    </message>
+    <message>
+        <source>Cut data: mean forces of the linear edge-force model (Altintas 2012 §2.4), Al7075-T6, carbide, dry: Ktc %1, Krc %2, Kac %3 N/mm², Kte %4, Kre %5, Kae %6 N/mm (CJME 2021, doi:10.1186/s10033-021-00536-9, table 5); 004 gives neither its data nor its material.</source>
+        <translation>Schnittdaten: mittlere Kräfte des linearen Schneidkantenkraftmodells (Altintas 2012 §2.4), Al7075-T6, Hartmetall, trocken: Ktc %1, Krc %2, Kac %3 N/mm², Kte %4, Kre %5, Kae %6 N/mm (CJME 2021, doi:10.1186/s10033-021-00536-9, Tabelle 5); 004 nennt weder seine Daten noch seinen Werkstoff.</translation>
+    </message>
+    <message>
+        <source>Tool and cut: Ø%1 mm, %2 flutes, down milling, radial depth %3 mm; axial depth %4 mm, at which the model gives the paper&apos;s 181.1 N at 324.61 mm/min and 2201 1/min.</source>
+        <translation>Werkzeug und Schnitt: Ø%1 mm, %2 Schneiden, Gleichlauffräsen, radiale Zustellung %3 mm; axiale Zustellung %4 mm, bei der das Modell die 181,1 N des Artikels bei 324,61 mm/min und 2201 1/min ergibt.</translation>
+    </message>
+    <message>
+        <source>Network 8–15–3, ArcTangent, max–min normalised, back-propagation (learning rate 0.05, momentum 0.008, 2000 epochs) on 441 cut points: %1 % RMS error on the 400 between them.</source>
+        <translation>Netz 8–15–3, ArcTangens, Max-Min-normiert, Backpropagation (Lernrate 0,05, Momentum 0,008, 2000 Epochen) an 441 Schnittpunkten: %1 % Effektivfehler an den 400 dazwischen.</translation>
+    </message>
+    <message>
+        <source>Off-line PSO-NN: the largest feed rate within %1 N by the network (%2–%3 mm/min, %4–%5 1/min)</source>
+        <translation>Offline-PSO-NN: die größte Vorschubgeschwindigkeit innerhalb %1 N nach dem Netz (%2–%3 mm/min, %4–%5 1/min)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n evaluation(s) of the network</source>
+        <translation>
+            <numerusform>%n Auswertung des Netzes</numerusform>
+            <numerusform>%n Auswertungen des Netzes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The loop, table 1 simulation 5: from %1 mm/min and %2 1/min, set force %3 N, %4 s</source>
+        <translation>Der Regelkreis, Tabelle 1 Simulation 5: von %1 mm/min und %2 1/min, Sollkraft %3 N, %4 s</translation>
+    </message>
+    <message>
+        <source>uncontrolled</source>
+        <translation>ungeregelt</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptiv</translation>
+    </message>
+    <message>
+        <source>paper</source>
+        <translation>Artikel</translation>
+    </message>
+    <message>
+        <source>Table 1, every row from its conditions to its force: settled against the paper</source>
+        <translation>Tabelle 1, jede Zeile von ihren Bedingungen zu ihrer Kraft: eingeschwungen gegen den Artikel</translation>
+    </message>
+    <message>
+        <source>  * outside the network&apos;s training range: it extrapolates there</source>
+        <translation>  * außerhalb des Trainingsbereichs des Netzes: dort extrapoliert es</translation>
+    </message>
+    <message>
+        <source>note: Ra from the printed M5 (eq. 6), which does not reproduce the paper&apos;s table (docs/adaptive.md §2). The spindle follows eq. 1 too: 004 gives no spindle model.</source>
+        <translation>Hinweis: Ra aus dem gedruckten M5 (Gl. 6), das die Tabelle des Artikels nicht wiedergibt (docs/adaptive.md §2). Die Spindel folgt ebenfalls Gl. 1: 004 gibt kein Spindelmodell an.</translation>
+    </message>
+    <message>
+        <source>Čuš &amp; Župerl&apos;s own end-milling system rebuilt: the force network trained on cut data, the off-line PSO-NN optimisation, the loop overriding feed and spindle speed, beside the paper&apos;s table 1.</source>
+        <translation>Das eigene Stirnfräs-System von Čuš &amp; Župerl nachgebaut: das an Schnittdaten trainierte Kraftnetz, die Offline-Optimierung PSO-NN, der Regelkreis mit Vorschub- und Drehzahl-Override, neben Tabelle 1 des Artikels.</translation>
+    </message>
+    <message>
+        <source>Print the results as JSON.</source>
+        <translation>Die Ergebnisse als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>Print every control period of both runs as CSV.</source>
+        <translation>Jeden Regeltakt beider Läufe als CSV ausgeben.</translation>
+    </message>
+    <message>
+        <source>Machine noise: standard deviation of the measured force in % (default 0).</source>
+        <translation>Maschinenrauschen: Standardabweichung der gemessenen Kraft in % (Vorgabe 0).</translation>
+    </message>
+    <message>
+        <source>Seed of the noise (default 1).</source>
+        <translation>Startwert des Rauschens (Vorgabe 1).</translation>
+    </message>
+    <message>
+        <source>Share of a change of chip load the spindle speed takes, 0–1 (default 0.5).</source>
+        <translation>Anteil einer Änderung der Spandicke, den die Drehzahl übernimmt, 0–1 (Vorgabe 0,5).</translation>
+    </message>
+    <message>
+        <source>Simulated time in s, 0.1–60 (default 3).</source>
+        <translation>Simulierte Zeit in s, 0,1–60 (Vorgabe 3).</translation>
+    </message>
+    <message>
+        <source>takes no file: &quot;%1&quot;</source>
+        <translation>nimmt keine Datei: „%1“</translation>
+    </message>
+    <message>
+        <source>give --json or --csv, not both</source>
+        <translation>--json oder --csv angeben, nicht beide</translation>
     </message>
 </context>
 <context>
@@ -5034,6 +5188,93 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>tolturn::EndMillingExampleDialog</name>
+    <message>
+        <source>Čuš &amp; Župerl end-milling example</source>
+        <translation>Stirnfräsbeispiel von Čuš &amp; Župerl</translation>
+    </message>
+    <message>
+        <source>Force [N]</source>
+        <translation>Kraft [N]</translation>
+    </message>
+    <message>
+        <source>Feed rate [mm/min]</source>
+        <translation>Vorschubgeschwindigkeit [mm/min]</translation>
+    </message>
+    <message>
+        <source>Spindle speed [1/min]</source>
+        <translation>Drehzahl [1/min]</translation>
+    </message>
+    <message>
+        <source>Roughness Ra, M5 [µm]</source>
+        <translation>Rauheit Ra, M5 [µm]</translation>
+    </message>
+    <message>
+        <source>Machine noise: standard deviation of the measured force (004 gives no level)</source>
+        <translation>Maschinenrauschen: Standardabweichung der gemessenen Kraft (004 nennt keinen Wert)</translation>
+    </message>
+    <message>
+        <source>Share of a change of chip load the spindle speed takes (0: the feed alone)</source>
+        <translation>Anteil einer Änderung der Spandicke, den die Drehzahl übernimmt (0: nur der Vorschub)</translation>
+    </message>
+    <message>
+        <source>Noise</source>
+        <translation>Rauschen</translation>
+    </message>
+    <message>
+        <source>Speed share</source>
+        <translation>Anteil Drehzahl</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Artikel</translation>
+    </message>
+    <message>
+        <source>Speed [1/min]</source>
+        <translation>Drehzahl [1/min]</translation>
+    </message>
+    <message>
+        <source>Ra, M5 [µm]</source>
+        <translation>Ra, M5 [µm]</translation>
+    </message>
+    <message>
+        <source>paper: 181.1 N held</source>
+        <translation>Artikel: 181,1 N gehalten</translation>
+    </message>
+    <message>
+        <source>paper: 324.61 mm/min after control</source>
+        <translation>Artikel: 324,61 mm/min nach Regelung</translation>
+    </message>
+    <message>
+        <source>paper: 2201 1/min after control</source>
+        <translation>Artikel: 2201 1/min nach Regelung</translation>
+    </message>
+    <message>
+        <source>paper: Ra 0.79 µm produced</source>
+        <translation>Artikel: Ra 0,79 µm erzeugt</translation>
+    </message>
+    <message>
+        <source>Table 1, simulation 5: from 430.41 mm/min and 1610 1/min to 181.1 N</source>
+        <translation>Tabelle 1, Simulation 5: von 430,41 mm/min und 1610 1/min auf 181,1 N</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>without control</source>
+        <translation>ohne Regelung</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptiv</translation>
+    </message>
+    <message>
+        <source>Force network 8–15–3 (ArcTangent, back-propagation) trained on the mean forces of the linear edge-force model for Al7075-T6 (004&apos;s cut data are not published): %1 % RMS error on cut data it has not seen. Tool Ø%2 mm, %3 flutes, down milling %4 mm wide, %5 mm deep (the depth at which the model gives the paper&apos;s 181.1 N at its controlled conditions). PSO-NN off line: %6 mm/min at %7 1/min within %8 N. Ra from the printed M5 (eq. 6), which does not reproduce the paper&apos;s table; the spindle follows the feed drive&apos;s eq. 1 (004 gives no spindle model). * outside the network&apos;s training range.</source>
+        <translation>Kraftnetz 8–15–3 (ArcTangens, Backpropagation), trainiert an den mittleren Kräften des linearen Schneidkantenkraftmodells für Al7075-T6 (die Schnittdaten von 004 sind nicht veröffentlicht): %1 % Effektivfehler an Schnittdaten, die es nicht gesehen hat. Werkzeug Ø%2 mm, %3 Schneiden, Gleichlauffräsen %4 mm breit, %5 mm tief (die Tiefe, bei der das Modell die 181,1 N des Artikels bei seinen geregelten Bedingungen ergibt). PSO-NN offline: %6 mm/min bei %7 1/min innerhalb %8 N. Ra aus dem gedruckten M5 (Gl. 6), das die Tabelle des Artikels nicht wiedergibt; die Spindel folgt Gl. 1 des Vorschubantriebs (004 gibt kein Spindelmodell an). * außerhalb des Trainingsbereichs des Netzes.</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::FeaturePanel</name>
     <message>
         <source>z of the start, from the part&apos;s left end</source>
@@ -5822,6 +6063,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Check the beam&apos;s deflection of the part against a solid model meshed with gmsh and solved with CalculiX</source>
         <translation>Die Verformung des Teils im Balkenmodell mit einem Volumenmodell prüfen, vernetzt mit gmsh und gelöst mit CalculiX</translation>
+    </message>
+    <message>
+        <source>Čuš &amp;&amp; Župerl &amp;End-Milling Example…</source>
+        <translation>Stirnfräs&amp;beispiel von Čuš &amp;&amp; Župerl…</translation>
+    </message>
+    <message>
+        <source>The constant-force control paper&apos;s own end-milling system rebuilt, beside its results</source>
+        <translation>Das eigene Stirnfräs-System des Artikels zur Konstantkraftregelung nachgebaut, neben seinen Ergebnissen</translation>
     </message>
 </context>
 <context>

@@ -36,6 +36,16 @@
     </message>
 </context>
 <context>
+    <name>ControlExample</name>
+    <message numerus="yes">
+        <source>%n evaluation(s) of the network</source>
+        <translation>
+            <numerusform>%n evaluation of the network</numerusform>
+            <numerusform>%n evaluations of the network</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>ImportCommand</name>
     <message numerus="yes">
         <source>%n warning(s)</source>

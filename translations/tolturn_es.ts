@@ -606,6 +606,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Plain Timoshenko beam: without the corrections for the root in the jaws and the shoulders identified from solid FE.</source>
         <translation>Viga de Timoshenko sin más: sin las correcciones del empotramiento en las garras y de los resaltes identificadas con EF sólidos.</translation>
     </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
+        <translation>--%1: «%2» no es un número de %3 a %4</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -669,10 +673,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>nota: %1</translation>
     </message>
     <message>
-        <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
-        <translation>--%1: «%2» no es un número de %3 a %4</translation>
-    </message>
-    <message>
         <source>Constant-force adaptive control of the plan&apos;s passes (Čuš &amp; Župerl): the feed override commanded every 20 ms through the feed drive&apos;s dynamics, against the programmed feed: time, peak force, feed, deviation and roughness along the pass.</source>
         <translation>Control adaptativo de fuerza constante de las pasadas del plan (Čuš &amp; Župerl): el override de avance ordenado cada 20 ms a través de la dinámica del accionamiento de avance, frente al avance programado: tiempo, fuerza máxima, avance, desviación y rugosidad a lo largo de la pasada.</translation>
     </message>
@@ -703,6 +703,160 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The project file.</source>
         <translation>El archivo de proyecto.</translation>
+    </message>
+    <message>
+        <source>give --json or --csv, not both</source>
+        <translation>indique --json o --csv, no ambos</translation>
+    </message>
+    <message>
+        <source>Weight of each period&apos;s estimate of the process gain, %1–%2 (default 1; tune-control finds it).</source>
+        <translation>Peso de la estimación de la ganancia del proceso en cada periodo, %1–%2 (por defecto 1; tune-control lo determina).</translation>
+    </message>
+    <message>
+        <source>Share of the step to the set force&apos;s feed commanded each period, %1–%2 (default 1).</source>
+        <translation>Fracción del paso hacia el avance de la fuerza de consigna que se ordena en cada periodo, %1–%2 (por defecto 1).</translation>
+    </message>
+    <message>
+        <source>%1: controller tuning on pass %2, RMS of F / F_set − 1 over the cut</source>
+        <translation>%1: ajuste del controlador en la pasada %2, valor eficaz de F / F_consigna − 1 sobre el corte</translation>
+    </message>
+    <message>
+        <source>untuned (both gains 1): %1 %</source>
+        <translation>sin ajustar (ambas ganancias 1): %1 %</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>método</translation>
+    </message>
+    <message>
+        <source>estimator</source>
+        <translation>estimador</translation>
+    </message>
+    <message>
+        <source>command</source>
+        <translation>orden</translation>
+    </message>
+    <message>
+        <source>RMS [%]</source>
+        <translation>valor eficaz [%]</translation>
+    </message>
+    <message>
+        <source>evaluations</source>
+        <translation>evaluaciones</translation>
+    </message>
+    <message>
+        <source>time [s]</source>
+        <translation>tiempo [s]</translation>
+    </message>
+    <message>
+        <source>--methods: &quot;%1&quot; is not a method (%2)</source>
+        <translation>--methods: «%1» no es un método (%2)</translation>
+    </message>
+    <message>
+        <source>Tune the constant-force controller on a pass of the plan (the estimator&apos;s and the command&apos;s gains): particle swarm (Čuš &amp; Župerl&apos;s method, pagmo2) against NLopt&apos;s algorithms on the same objective.</source>
+        <translation>Ajustar el controlador de fuerza constante en una pasada del plan (las ganancias del estimador y de la orden): enjambre de partículas (el método de Čuš y Župerl, pagmo2) frente a los algoritmos de NLopt sobre el mismo objetivo.</translation>
+    </message>
+    <message>
+        <source>Print the comparison as JSON.</source>
+        <translation>Mostrar la comparación como JSON.</translation>
+    </message>
+    <message>
+        <source>Simulations of the pass each method may ask for (default 400).</source>
+        <translation>Simulaciones de la pasada que puede pedir cada método (por defecto 400).</translation>
+    </message>
+    <message>
+        <source>Comma-separated methods (default all: %1).</source>
+        <translation>Métodos separados por comas (por defecto todos: %1).</translation>
+    </message>
+</context>
+<context>
+    <name>ControlExample</name>
+    <message>
+        <source>Čuš &amp; Župerl&apos;s end-milling system rebuilt (docs/adaptive.md §9)</source>
+        <translation>El sistema de fresado frontal de Čuš y Župerl reconstruido (docs/adaptive.md §9)</translation>
+    </message>
+    <message>
+        <source>Cut data: mean forces of the linear edge-force model (Altintas 2012 §2.4), Al7075-T6, carbide, dry: Ktc %1, Krc %2, Kac %3 N/mm², Kte %4, Kre %5, Kae %6 N/mm (CJME 2021, doi:10.1186/s10033-021-00536-9, table 5); 004 gives neither its data nor its material.</source>
+        <translation>Datos de corte: fuerzas medias del modelo lineal de fuerzas de filo (Altintas 2012 §2.4), Al7075-T6, metal duro, en seco: Ktc %1, Krc %2, Kac %3 N/mm², Kte %4, Kre %5, Kae %6 N/mm (CJME 2021, doi:10.1186/s10033-021-00536-9, tabla 5); 004 no da ni sus datos ni su material.</translation>
+    </message>
+    <message>
+        <source>Tool and cut: Ø%1 mm, %2 flutes, down milling, radial depth %3 mm; axial depth %4 mm, at which the model gives the paper&apos;s 181.1 N at 324.61 mm/min and 2201 1/min.</source>
+        <translation>Herramienta y corte: Ø%1 mm, %2 filos, fresado en concordancia, profundidad radial %3 mm; profundidad axial %4 mm, a la que el modelo da los 181,1 N del artículo a 324,61 mm/min y 2201 1/min.</translation>
+    </message>
+    <message>
+        <source>Network 8–15–3, ArcTangent, max–min normalised, back-propagation (learning rate 0.05, momentum 0.008, 2000 epochs) on 441 cut points: %1 % RMS error on the 400 between them.</source>
+        <translation>Red 8–15–3, arcotangente, normalizada máx.–mín., retropropagación (tasa de aprendizaje 0,05, momento 0,008, 2000 épocas) en 441 puntos de corte: %1 % de error eficaz en los 400 intermedios.</translation>
+    </message>
+    <message>
+        <source>Off-line PSO-NN: the largest feed rate within %1 N by the network (%2–%3 mm/min, %4–%5 1/min)</source>
+        <translation>PSO-NN fuera de línea: la mayor velocidad de avance dentro de %1 N según la red (%2–%3 mm/min, %4–%5 1/min)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n evaluation(s) of the network</source>
+        <translation>
+            <numerusform>%n evaluación de la red</numerusform>
+            <numerusform>%n evaluaciones de la red</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The loop, table 1 simulation 5: from %1 mm/min and %2 1/min, set force %3 N, %4 s</source>
+        <translation>El lazo, tabla 1 simulación 5: desde %1 mm/min y %2 1/min, fuerza de consigna %3 N, %4 s</translation>
+    </message>
+    <message>
+        <source>uncontrolled</source>
+        <translation>sin control</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptativo</translation>
+    </message>
+    <message>
+        <source>paper</source>
+        <translation>artículo</translation>
+    </message>
+    <message>
+        <source>Table 1, every row from its conditions to its force: settled against the paper</source>
+        <translation>Tabla 1, cada fila desde sus condiciones hasta su fuerza: estabilizado frente al artículo</translation>
+    </message>
+    <message>
+        <source>  * outside the network&apos;s training range: it extrapolates there</source>
+        <translation>  * fuera del rango de entrenamiento de la red: allí extrapola</translation>
+    </message>
+    <message>
+        <source>note: Ra from the printed M5 (eq. 6), which does not reproduce the paper&apos;s table (docs/adaptive.md §2). The spindle follows eq. 1 too: 004 gives no spindle model.</source>
+        <translation>nota: Ra del M5 impreso (ec. 6), que no reproduce la tabla del artículo (docs/adaptive.md §2). El husillo sigue también la ec. 1: 004 no da modelo del husillo.</translation>
+    </message>
+    <message>
+        <source>Čuš &amp; Župerl&apos;s own end-milling system rebuilt: the force network trained on cut data, the off-line PSO-NN optimisation, the loop overriding feed and spindle speed, beside the paper&apos;s table 1.</source>
+        <translation>El propio sistema de fresado frontal de Čuš y Župerl reconstruido: la red de fuerzas entrenada con datos de corte, la optimización PSO-NN fuera de línea, el lazo que corrige avance y velocidad del husillo, junto a la tabla 1 del artículo.</translation>
+    </message>
+    <message>
+        <source>Print the results as JSON.</source>
+        <translation>Mostrar los resultados como JSON.</translation>
+    </message>
+    <message>
+        <source>Print every control period of both runs as CSV.</source>
+        <translation>Mostrar cada periodo de control de ambas ejecuciones como CSV.</translation>
+    </message>
+    <message>
+        <source>Machine noise: standard deviation of the measured force in % (default 0).</source>
+        <translation>Ruido de máquina: desviación típica de la fuerza medida en % (por defecto 0).</translation>
+    </message>
+    <message>
+        <source>Seed of the noise (default 1).</source>
+        <translation>Semilla del ruido (por defecto 1).</translation>
+    </message>
+    <message>
+        <source>Share of a change of chip load the spindle speed takes, 0–1 (default 0.5).</source>
+        <translation>Fracción de un cambio del espesor de viruta que asume la velocidad del husillo, 0–1 (por defecto 0,5).</translation>
+    </message>
+    <message>
+        <source>Simulated time in s, 0.1–60 (default 3).</source>
+        <translation>Tiempo simulado en s, 0,1–60 (por defecto 3).</translation>
+    </message>
+    <message>
+        <source>takes no file: &quot;%1&quot;</source>
+        <translation>no admite archivo: «%1»</translation>
     </message>
     <message>
         <source>give --json or --csv, not both</source>
@@ -5034,6 +5188,93 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>tolturn::EndMillingExampleDialog</name>
+    <message>
+        <source>Čuš &amp; Župerl end-milling example</source>
+        <translation>Ejemplo de fresado frontal de Čuš y Župerl</translation>
+    </message>
+    <message>
+        <source>Force [N]</source>
+        <translation>Fuerza [N]</translation>
+    </message>
+    <message>
+        <source>Feed rate [mm/min]</source>
+        <translation>Velocidad de avance [mm/min]</translation>
+    </message>
+    <message>
+        <source>Spindle speed [1/min]</source>
+        <translation>Velocidad del husillo [1/min]</translation>
+    </message>
+    <message>
+        <source>Roughness Ra, M5 [µm]</source>
+        <translation>Rugosidad Ra, M5 [µm]</translation>
+    </message>
+    <message>
+        <source>Machine noise: standard deviation of the measured force (004 gives no level)</source>
+        <translation>Ruido de máquina: desviación típica de la fuerza medida (004 no da un nivel)</translation>
+    </message>
+    <message>
+        <source>Share of a change of chip load the spindle speed takes (0: the feed alone)</source>
+        <translation>Fracción de un cambio del espesor de viruta que asume la velocidad del husillo (0: solo el avance)</translation>
+    </message>
+    <message>
+        <source>Noise</source>
+        <translation>Ruido</translation>
+    </message>
+    <message>
+        <source>Speed share</source>
+        <translation>Fracción de velocidad</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Artículo</translation>
+    </message>
+    <message>
+        <source>Speed [1/min]</source>
+        <translation>Velocidad [1/min]</translation>
+    </message>
+    <message>
+        <source>Ra, M5 [µm]</source>
+        <translation>Ra, M5 [µm]</translation>
+    </message>
+    <message>
+        <source>paper: 181.1 N held</source>
+        <translation>artículo: 181,1 N mantenidos</translation>
+    </message>
+    <message>
+        <source>paper: 324.61 mm/min after control</source>
+        <translation>artículo: 324,61 mm/min tras el control</translation>
+    </message>
+    <message>
+        <source>paper: 2201 1/min after control</source>
+        <translation>artículo: 2201 1/min tras el control</translation>
+    </message>
+    <message>
+        <source>paper: Ra 0.79 µm produced</source>
+        <translation>artículo: Ra 0,79 µm obtenida</translation>
+    </message>
+    <message>
+        <source>Table 1, simulation 5: from 430.41 mm/min and 1610 1/min to 181.1 N</source>
+        <translation>Tabla 1, simulación 5: de 430,41 mm/min y 1610 1/min a 181,1 N</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>without control</source>
+        <translation>sin control</translation>
+    </message>
+    <message>
+        <source>adaptive</source>
+        <translation>adaptativo</translation>
+    </message>
+    <message>
+        <source>Force network 8–15–3 (ArcTangent, back-propagation) trained on the mean forces of the linear edge-force model for Al7075-T6 (004&apos;s cut data are not published): %1 % RMS error on cut data it has not seen. Tool Ø%2 mm, %3 flutes, down milling %4 mm wide, %5 mm deep (the depth at which the model gives the paper&apos;s 181.1 N at its controlled conditions). PSO-NN off line: %6 mm/min at %7 1/min within %8 N. Ra from the printed M5 (eq. 6), which does not reproduce the paper&apos;s table; the spindle follows the feed drive&apos;s eq. 1 (004 gives no spindle model). * outside the network&apos;s training range.</source>
+        <translation>Red de fuerzas 8–15–3 (arcotangente, retropropagación) entrenada con las fuerzas medias del modelo lineal de fuerzas de filo para Al7075-T6 (los datos de corte de 004 no están publicados): %1 % de error eficaz en datos de corte que no ha visto. Herramienta Ø%2 mm, %3 filos, fresado en concordancia de %4 mm de ancho y %5 mm de profundidad (la profundidad a la que el modelo da los 181,1 N del artículo en sus condiciones controladas). PSO-NN fuera de línea: %6 mm/min a %7 1/min dentro de %8 N. Ra del M5 impreso (ec. 6), que no reproduce la tabla del artículo; el husillo sigue la ec. 1 del accionamiento de avance (004 no da modelo del husillo). * fuera del rango de entrenamiento de la red.</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::FeaturePanel</name>
     <message>
         <source>z of the start, from the part&apos;s left end</source>
@@ -5822,6 +6063,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Check the beam&apos;s deflection of the part against a solid model meshed with gmsh and solved with CalculiX</source>
         <translation>Comprobar la flexión de la pieza según la viga con un modelo sólido mallado con gmsh y resuelto con CalculiX</translation>
+    </message>
+    <message>
+        <source>Čuš &amp;&amp; Župerl &amp;End-Milling Example…</source>
+        <translation>&amp;Ejemplo de fresado frontal de Čuš &amp;&amp; Župerl…</translation>
+    </message>
+    <message>
+        <source>The constant-force control paper&apos;s own end-milling system rebuilt, beside its results</source>
+        <translation>El propio sistema de fresado frontal del artículo de control de fuerza constante reconstruido, junto a sus resultados</translation>
     </message>
 </context>
 <context>

@@ -198,4 +198,18 @@ std::unique_ptr<MeasurementStore> openMeasurementStore(const QString &store, con
     return opened;
 }
 
+std::optional<double> numberInRange(const QCommandLineParser &parser, const QCommandLineOption &option, double lo,
+                                    double hi, const QString &command, QTextStream &err)
+{
+    bool ok = false;
+    const double v = parser.value(option).toDouble(&ok);
+    if (ok && v >= lo && v <= hi)
+        return v;
+    err << programName() << ' ' << command << ": "
+        << CommandLine::tr("--%1: \"%2\" is not a number from %3 to %4")
+               .arg(option.names().constFirst(), parser.value(option), QString::number(lo), QString::number(hi))
+        << '\n';
+    return std::nullopt;
+}
+
 } // namespace tolturn

@@ -44,6 +44,11 @@ inline constexpr double kMaxLoad_N = 1e6;
 // The forces of --load: "Fr,Ft,Fa" in newtons (radial, tangential, axial); nullopt if malformed.
 [[nodiscard]] std::optional<CuttingForces> parseLoad(const QString &text);
 
+// The value of a number option in [lo, hi]; nullopt, with the option, the value and the range named
+// on `err`, when it is not one.
+[[nodiscard]] std::optional<double> numberInRange(const QCommandLineParser &parser, const QCommandLineOption &option,
+                                                  double lo, double hi, const QString &command, QTextStream &err);
+
 // Reads a project for a command, printing its problems as "FILE: severity: field: message".
 [[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err);
 

@@ -4,6 +4,7 @@
 #include "app/cli/check_command.h"
 #include "app/cli/cli_common.h"
 #include "app/cli/control_command.h"
+#include "app/cli/control_example_command.h"
 #include "app/cli/deflect_command.h"
 #include "app/cli/evaluate_command.h"
 #include "app/cli/forces_command.h"
@@ -149,6 +150,7 @@ const std::vector<Command> &commands()
         {QStringLiteral("verify-fe"), verifyFeSynopsis(), verifyFeSummary(), runVerifyFe},
         {QStringLiteral("simulate-control"), simulateControlSynopsis(), simulateControlSummary(), runSimulateControl},
         {QStringLiteral("tune-control"), tuneControlSynopsis(), tuneControlSummary(), runTuneControl},
+        {QStringLiteral("control-example"), controlExampleSynopsis(), controlExampleSummary(), runControlExample},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
         {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
          CommandLine::tr(

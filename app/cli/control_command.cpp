@@ -149,21 +149,6 @@ void printTable(const QString &file, const ProjectControlResult &r, QTextStream 
         out << ControlCommand::tr("note: %1").arg(note) << '\n';
 }
 
-// A number option in [lo, hi]; nullopt (with the message printed) when it is not one.
-std::optional<double> numberOption(const QCommandLineParser &parser, const QCommandLineOption &option, double lo,
-                                   double hi, const QString &command, QTextStream &err)
-{
-    bool ok = false;
-    const double v = parser.value(option).toDouble(&ok);
-    if (ok && v >= lo && v <= hi)
-        return v;
-    err << programName() << ' ' << command << ": "
-        << ControlCommand::tr("--%1: \"%2\" is not a number from %3 to %4")
-               .arg(option.names().constFirst(), parser.value(option), QString::number(lo), QString::number(hi))
-        << '\n';
-    return std::nullopt;
-}
-
 // The options both commands take: the pass, the machine noise and its seed, the controller's gains.
 struct LoopOptions {
     QCommandLineOption pass{QStringLiteral("pass"), ControlCommand::tr("Only pass N of the plan (1, 2, …)."),
@@ -182,13 +167,13 @@ struct LoopOptions {
                             QTextStream &err) const
     {
         if (parser.isSet(pass)) {
-            const std::optional<double> n = numberOption(parser, pass, 1, 1000, command, err);
+            const std::optional<double> n = numberInRange(parser, pass, 1, 1000, command, err);
             if (!n || *n != std::floor(*n))
                 return false;
             options.passIndex = static_cast<int>(*n) - 1;
         }
-        const std::optional<double> noisePct = numberOption(parser, noise, 0.0, 50.0, command, err);
-        const std::optional<double> seedValue = numberOption(parser, seed, 0, 4294967295.0, command, err);
+        const std::optional<double> noisePct = numberInRange(parser, noise, 0.0, 50.0, command, err);
+        const std::optional<double> seedValue = numberInRange(parser, seed, 0, 4294967295.0, command, err);
         if (!noisePct || !seedValue)
             return false;
         options.control.forceNoise = *noisePct / 100.0;
@@ -255,15 +240,15 @@ int runSimulateControl(const QStringList &args, QTextStream &out, QTextStream &e
     if (!loop.read(parser, command, options, err))
         return kExitUsage;
     if (parser.isSet(setForce)) {
-        const std::optional<double> f = numberOption(parser, setForce, 1.0, 1e6, command, err);
+        const std::optional<double> f = numberInRange(parser, setForce, 1.0, 1e6, command, err);
         if (!f)
             return kExitUsage;
         options.control.setForce_N = *f;
     }
     const std::optional<double> lambda =
-        numberOption(parser, estimatorGain, kLowestGains.estimatorGain, kHighestGains.estimatorGain, command, err);
+        numberInRange(parser, estimatorGain, kLowestGains.estimatorGain, kHighestGains.estimatorGain, command, err);
     const std::optional<double> gain =
-        numberOption(parser, commandGain, kLowestGains.commandGain, kHighestGains.commandGain, command, err);
+        numberInRange(parser, commandGain, kLowestGains.commandGain, kHighestGains.commandGain, command, err);
     if (!lambda || !gain)
         return kExitUsage;
     options.control.estimatorGain = *lambda;
@@ -405,7 +390,7 @@ int runTuneControl(const QStringList &args, QTextStream &out, QTextStream &err)
     options.passIndex = 0;
     if (!loop.read(parser, command, options, err))
         return kExitUsage;
-    const std::optional<double> budget = numberOption(parser, evaluations, 20, 100000, command, err);
+    const std::optional<double> budget = numberInRange(parser, evaluations, 20, 100000, command, err);
     const std::vector<TuningMethod> chosen = methodsNamed(parser.value(methods), err);
     if (!budget || chosen.empty())
         return kExitUsage;
@@ -421,6 +406,7 @@ int runTuneControl(const QStringList &args, QTextStream &out, QTextStream &err)
     const PassSetup &pass = setup.passes.front();
     const double untuned = forceTrackingError(pass.pass, pass.process, options.control, {1.0, 1.0});
     std::vector<TuningResult> results;
+    results.reserve(chosen.size());
     for (const TuningMethod m : chosen)
         results.push_back(tuneController(pass.pass, pass.process, options.control, m, static_cast<int>(*budget)));
     if (parser.isSet(json))

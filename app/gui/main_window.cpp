@@ -18,6 +18,7 @@
 #include "widgets/document/project_document.h"
 #include "widgets/fe/solid_check_dialog.h"
 #include "widgets/measurements/measurements_panel.h"
+#include "widgets/planning/end_milling_example_dialog.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/profile/feature_panel.h"
 #include "widgets/profile/profile_scene.h"
@@ -366,6 +367,14 @@ void MainWindow::createToolsMenu()
     m_solidCheckAction->setToolTip(
         tr("Check the beam's deflection of the part against a solid model meshed with gmsh and solved with CalculiX"));
     connect(m_solidCheckAction, &QAction::triggered, this, &MainWindow::checkWithSolidFe);
+    tools->addSeparator();
+    QAction *milling = tools->addAction(tr("Čuš && Župerl &End-Milling Example…"));
+    milling->setObjectName(QStringLiteral("endMillingExampleAction"));
+    milling->setToolTip(tr("The constant-force control paper's own end-milling system rebuilt, beside its results"));
+    connect(milling, &QAction::triggered, this, [this] {
+        EndMillingExampleDialog dialog(this);
+        dialog.exec();
+    });
 }
 
 void MainWindow::checkWithSolidFe()

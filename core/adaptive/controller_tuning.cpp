@@ -20,46 +20,36 @@ namespace {
 constexpr unsigned kSwarmSize = 20;
 constexpr unsigned kSeed = 1;
 
-// The objective in normalised coordinates u ∈ [0, 1]², counting its evaluations.
-struct Objective {
-    const PassDepthProfile *pass = nullptr;
-    const PassProcess *process = nullptr;
-    const ForceControlSettings *base = nullptr;
-    int *evaluations = nullptr;
+using UnitBoxObjective = std::function<double(const std::vector<double> &)>;
 
-    [[nodiscard]] static ControllerGains gainsAt(const double *u)
-    {
-        const auto between = [](double lo, double hi, double t) { return lo + std::clamp(t, 0.0, 1.0) * (hi - lo); };
-        return {between(kLowestGains.estimatorGain, kHighestGains.estimatorGain, u[0]),
-                between(kLowestGains.commandGain, kHighestGains.commandGain, u[1])};
-    }
-
-    [[nodiscard]] double operator()(const double *u) const
-    {
-        ++*evaluations;
-        return forceTrackingError(*pass, *process, *base, gainsAt(u));
-    }
-};
+ControllerGains gainsAt(const std::vector<double> &u)
+{
+    const auto between = [](double lo, double hi, double t) { return lo + std::clamp(t, 0.0, 1.0) * (hi - lo); };
+    return {between(kLowestGains.estimatorGain, kHighestGains.estimatorGain, u[0]),
+            between(kLowestGains.commandGain, kHighestGains.commandGain, u[1])};
+}
 
 // pagmo's user-defined problem: copyable, the objective shared by pointer.
 struct SwarmProblem {
-    const Objective *objective = nullptr;
+    const UnitBoxObjective *objective = nullptr;
+    int dimensions = 0;
 
-    [[nodiscard]] pagmo::vector_double fitness(const pagmo::vector_double &u) const { return {(*objective)(u.data())}; }
+    [[nodiscard]] pagmo::vector_double fitness(const pagmo::vector_double &u) const { return {(*objective)(u)}; }
 
-    [[nodiscard]] static std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds()
+    [[nodiscard]] std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const
     {
-        return {{0.0, 0.0}, {1.0, 1.0}};
+        const auto n = static_cast<std::size_t>(dimensions);
+        return {pagmo::vector_double(n, 0.0), pagmo::vector_double(n, 1.0)};
     }
 };
 
 // Čuš & Župerl's off-line optimiser is a particle swarm (seed 004 §2.1, [18], [19]); the paper
 // gives no swarm settings, so pagmo's defaults: constriction (Clerc & Kennedy 2002, ω 0.7298,
 // η₁ = η₂ = 2.05), a ring of four neighbours, 20 particles, a fixed seed.
-std::vector<double> runSwarm(const Objective &objective, int maxEvaluations)
+std::vector<double> runSwarm(const UnitBoxObjective &objective, int dimensions, int maxEvaluations)
 {
     const auto generations = static_cast<unsigned>(std::max(1, maxEvaluations / static_cast<int>(kSwarmSize) - 1));
-    const pagmo::problem problem{SwarmProblem{&objective}};
+    const pagmo::problem problem{SwarmProblem{&objective, dimensions}};
     pagmo::population population{problem, kSwarmSize, kSeed};
     const pagmo::pso swarm{generations, 0.7298, 2.05, 2.05, 0.5, 5u, 2u, 4u, false, kSeed};
     population = swarm.evolve(population);
@@ -89,21 +79,22 @@ nlopt::algorithm nloptAlgorithm(TuningMethod method)
     return nlopt::GN_DIRECT_L;
 }
 
-double nloptObjective(unsigned, const double *u, double *, void *data)
+double nloptObjective(unsigned n, const double *u, double *, void *data)
 {
-    return (*static_cast<const Objective *>(data))(u);
+    return (*static_cast<const UnitBoxObjective *>(data))(std::vector<double>(u, u + n));
 }
 
-std::vector<double> runNlopt(const Objective &objective, TuningMethod method, int maxEvaluations)
+std::vector<double> runNlopt(const UnitBoxObjective &objective, int dimensions, TuningMethod method, int maxEvaluations)
 {
-    nlopt::opt opt(nloptAlgorithm(method), 2);
-    opt.set_lower_bounds({0.0, 0.0});
-    opt.set_upper_bounds({1.0, 1.0});
-    opt.set_min_objective(nloptObjective, const_cast<Objective *>(&objective));
+    const auto n = static_cast<unsigned>(dimensions);
+    nlopt::opt opt(nloptAlgorithm(method), n);
+    opt.set_lower_bounds(std::vector<double>(n, 0.0));
+    opt.set_upper_bounds(std::vector<double>(n, 1.0));
+    opt.set_min_objective(nloptObjective, const_cast<UnitBoxObjective *>(&objective));
     opt.set_maxeval(maxEvaluations);
     opt.set_xtol_rel(1e-4);
     nlopt::srand(kSeed); // CRS2 and ISRES draw their points at random: a run repeats
-    std::vector<double> u{0.5, 0.5};
+    std::vector<double> u(n, 0.5);
     double value = 0.0;
     try {
         opt.optimize(u, value);
@@ -195,17 +186,29 @@ double forceTrackingError(const PassDepthProfile &pass, const PassProcess &proce
     return n > 0 ? std::sqrt(sum / n) : 0.0;
 }
 
+std::vector<double> minimiseInUnitBox(const std::function<double(const std::vector<double> &)> &objective,
+                                      int dimensions, TuningMethod method, int maxEvaluations, int &evaluations)
+{
+    const UnitBoxObjective counted = [&](const std::vector<double> &u) {
+        ++evaluations;
+        return objective(u);
+    };
+    return method == TuningMethod::ParticleSwarm ? runSwarm(counted, dimensions, maxEvaluations)
+                                                 : runNlopt(counted, dimensions, method, maxEvaluations);
+}
+
 TuningResult tuneController(const PassDepthProfile &pass, const PassProcess &process, const ForceControlSettings &base,
                             TuningMethod method, int maxEvaluations)
 {
     TuningResult result;
     result.method = method;
-    const Objective objective{&pass, &process, &base, &result.evaluations};
+    const auto objective = [&](const std::vector<double> &u) {
+        return forceTrackingError(pass, process, base, gainsAt(u));
+    };
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<double> u = method == TuningMethod::ParticleSwarm ? runSwarm(objective, maxEvaluations)
-                                                                        : runNlopt(objective, method, maxEvaluations);
+    const std::vector<double> u = minimiseInUnitBox(objective, 2, method, maxEvaluations, result.evaluations);
     result.wallTime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.gains = Objective::gainsAt(u.data());
+    result.gains = gainsAt(u);
     result.objective = forceTrackingError(pass, process, base, result.gains);
     return result;
 }

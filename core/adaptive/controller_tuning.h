@@ -10,6 +10,7 @@
 
 #include <QString>
 
+#include <functional>
 #include <vector>
 
 namespace tolturn {
@@ -53,6 +54,13 @@ struct TuningResult {
     int evaluations = 0;    // simulations of the pass the method asked for
     double wallTime_s = 0.0;
 };
+
+// The least of `objective` over the unit box [0, 1]^dimensions by one method, from the middle of
+// the box (local methods) or over it (global ones), with at most `maxEvaluations` evaluations
+// (counted in `evaluations`); the swarm has 20 particles and a fixed seed, so a run repeats.
+[[nodiscard]] std::vector<double> minimiseInUnitBox(const std::function<double(const std::vector<double> &)> &objective,
+                                                    int dimensions, TuningMethod method, int maxEvaluations,
+                                                    int &evaluations);
 
 // One method, from the middle of the bounds (local methods) or over them (global ones), with at
 // most `maxEvaluations` simulations; the swarm has 20 particles and a fixed seed, so a run repeats.

@@ -8,6 +8,8 @@
 #include <Standard_Version.hxx>
 #include <nlopt.h>
 
+#include <pagmo/config.hpp>
+
 namespace tolturn {
 
 QString tolturnVersion()
@@ -28,6 +30,8 @@ std::vector<LibraryInfo> coreLibraries()
          QStringLiteral("LGPL-2.1-only with the Open CASCADE exception")},
         {QStringLiteral("NLopt"), QStringLiteral("%1.%2.%3").arg(nloptMajor).arg(nloptMinor).arg(nloptBugfix),
          QStringLiteral("LGPL-2.1-or-later (parts MIT)")},
+        {QStringLiteral("pagmo2"), QStringLiteral(PAGMO_VERSION),
+         QStringLiteral("GPL-3.0-or-later or LGPL-3.0-or-later (Debian's copyright file)")},
         {QStringLiteral("Eigen"),
          QStringLiteral("%1.%2.%3").arg(EIGEN_WORLD_VERSION).arg(EIGEN_MAJOR_VERSION).arg(EIGEN_MINOR_VERSION),
          QStringLiteral("MPL-2.0")},

@@ -726,6 +726,32 @@ private Q_SLOTS:
                  qPrintable(badGain.err));
     }
 
+    // control-example (issue 18): the paper's own end-milling system. Its numbers are tested in
+    // tst_seed_milling; here the command: the loop settles at table 1's 181.1 N, all eight rows and
+    // all methods are reported, the CSV has both runs, and a bad option is named.
+    void controlExampleRebuildsThePaper()
+    {
+        const Run r = runCli({QStringLiteral("control-example"), QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(
+            std::abs(
+                json.value(QStringLiteral("adaptive_settled")).toObject().value(QStringLiteral("force_N")).toDouble() -
+                181.1) < 0.05);
+        QCOMPARE(json.value(QStringLiteral("table1")).toArray().size(), 8);
+        QCOMPARE(json.value(QStringLiteral("conditions")).toArray().size(), 8);
+        QVERIFY(json.value(QStringLiteral("network_unseen_rms_error")).toDouble() < 0.01);
+        const Run csv = runCli({QStringLiteral("control-example"), QStringLiteral("--csv"),
+                                QStringLiteral("--duration"), QStringLiteral("1")});
+        QVERIFY2(csv.exitCode == 0, qPrintable(csv.err));
+        QCOMPARE(csv.out.trimmed().split(QLatin1Char('\n')).size(), 1 + 2 * 50);
+        const Run bad =
+            runCli({QStringLiteral("control-example"), QStringLiteral("--speed-share"), QStringLiteral("2")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains(QStringLiteral("--speed-share: \"2\" is not a number from 0 to 1")),
+                 qPrintable(bad.err));
+    }
+
     // verify-fe (issue 17): the solid check from the command line on a coarse mesh. Its accuracy
     // is tested in tst_solid_fe; here the command: its table, its JSON and its errors.
     void verifyFeComparesBeamAndSolid()

@@ -8,12 +8,14 @@
 #include "core/data/data_library.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/adaptive_tab.h"
+#include "widgets/planning/end_milling_example_dialog.h"
 #include "widgets/planning/planning_data_dialog.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
 
 #include <QAbstractItemModelTester>
+#include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -356,6 +358,33 @@ private Q_SLOTS:
         w.findChild<QDockWidget *>(QStringLiteral("planningDock"))->raise();
         QTest::qWait(50);
         saveScreenshot(w, "adaptive.png");
+    }
+
+    // Tools > Čuš & Župerl end-milling example: the run of table 1 simulation 5 settles at the
+    // paper's 181.1 N (plotted beside it), every row of table 1 is listed, and machine noise makes
+    // a new run. Its numbers are tested in tst_seed_milling; here what the planner sees.
+    void endMillingExampleShowsTheRunBesideThePaper()
+    {
+        MainWindow w;
+        QVERIFY(w.findChild<QAction *>(QStringLiteral("endMillingExampleAction")) != nullptr);
+        EndMillingExampleDialog dialog;
+        dialog.resize(1000, 800);
+        dialog.show();
+        QCOMPARE(dialog.plot()->curveCount(), 3);
+        QCOMPARE(dialog.plot()->curveName(1), QStringLiteral("adaptive"));
+        QCOMPARE(dialog.plot()->curveName(2), QStringLiteral("paper: 181.1 N held"));
+        QVERIFY(std::abs(dialog.result().loop.adaptive.back().force_N - 181.1) < 0.05);
+        QCOMPARE(dialog.table()->rowCount(), 8);
+        QCOMPARE(dialog.table()->item(4, 0)->text(), QStringLiteral("181.1"));
+        QCOMPARE(dialog.table()->item(4, 2)->text(), QStringLiteral("324.61"));
+        QVERIFY(dialog.table()->item(0, 3)->text().endsWith(QStringLiteral(" *"))); // 2791 1/min: extrapolated
+        QVERIFY(dialog.summary()->text().contains(QStringLiteral("does not reproduce")));
+        const double quiet = dialog.result().loop.adaptive[100].measuredForce_N;
+        dialog.noise()->setValue(5.0);
+        QVERIFY(dialog.result().loop.adaptive[100].measuredForce_N != quiet);
+        dialog.quantityChoice()->setCurrentIndex(0);
+        QTest::qWait(50);
+        saveScreenshot(dialog, "end-milling-example.png");
     }
 
     void exportWritesThePreview()
