@@ -3,7 +3,9 @@
 // constants of the steel the tests' bars are made of.
 #pragma once
 
+#include "core/adaptive/force_control.h"
 #include "core/common/diagnostic.h"
+#include "core/cutting/cutting_forces.h"
 #include "core/part/profile.h"
 
 #include <QByteArray>
@@ -12,6 +14,7 @@
 #include <QStringList>
 #include <QtGlobal>
 
+#include <numbers>
 #include <sys/stat.h>
 
 namespace tolturn::test {
@@ -70,6 +73,22 @@ inline int newFileBits()
     const mode_t mask = ::umask(0);
     ::umask(mask);
     return static_cast<int>(0666 & ~mask);
+}
+
+// A turning process for the constant-force loop: Kienzle without a nose radius at kappa_r = 90°,
+// Fc = k11 a f^(1 − m), Ff and Fp 0.3 and 0.4 of it, so the resultant is Fc sqrt(1 + 0.3² + 0.4²)
+// and F ∝ f^(1 − m) exactly; at Ø60 mm 1000 rpm.
+inline PassProcess kienzlePassProcess(double k11, double m)
+{
+    KienzleConstants c;
+    c.cutting = {k11, m};
+    c.feedToCuttingRatio = 0.3;
+    c.passiveToCuttingRatio = 0.4;
+    PassProcess p;
+    p.forces = [c](double f, double a) { return kienzleForces(c, f, a, std::numbers::pi / 2.0).forces; };
+    p.cuttingSpeed_m_min = std::numbers::pi * 60.0;
+    p.noseRadius_mm = 0.8;
+    return p;
 }
 
 } // namespace tolturn::test

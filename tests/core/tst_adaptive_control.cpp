@@ -44,15 +44,7 @@ constexpr double kM = 0.25;
 
 PassProcess kienzleProcess()
 {
-    KienzleConstants c;
-    c.cutting = {kK11, kM};
-    c.feedToCuttingRatio = 0.3;
-    c.passiveToCuttingRatio = 0.4;
-    PassProcess p;
-    p.forces = [c](double f, double a) { return kienzleForces(c, f, a, std::numbers::pi / 2.0).forces; };
-    p.cuttingSpeed_m_min = std::numbers::pi * 60.0; // at Ø60 mm: 1000 rpm
-    p.noseRadius_mm = 0.8;
-    return p;
+    return tolturn::test::kienzlePassProcess(kK11, kM);
 }
 
 double handResultant(double f, double a)

@@ -2,8 +2,9 @@
 // Tuning the constant-force controller (docs/adaptive.md §8): the command gain against the
 // command it must give, worked by hand, and every optimiser against an exhaustive grid of the
 // same objective computed here.
+#include "tests/core/test_support.h"
+
 #include "core/adaptive/controller_tuning.h"
-#include "core/cutting/cutting_forces.h"
 
 #include <QTest>
 
@@ -15,21 +16,13 @@ using namespace tolturn;
 
 namespace {
 
-// Kienzle without a nose radius at kappa_r = 90° (F ∝ f^(1 − m) exactly), 1000 rpm at Ø60.
+// Kienzle without a nose radius (F ∝ f^(1 − m) exactly), 1000 rpm at Ø60.
 constexpr double kK11 = 1700.0;
 constexpr double kM = 0.25;
 
 PassProcess kienzleProcess()
 {
-    KienzleConstants c;
-    c.cutting = {kK11, kM};
-    c.feedToCuttingRatio = 0.3;
-    c.passiveToCuttingRatio = 0.4;
-    PassProcess p;
-    p.forces = [c](double f, double a) { return kienzleForces(c, f, a, std::numbers::pi / 2.0).forces; };
-    p.cuttingSpeed_m_min = std::numbers::pi * 60.0;
-    p.noseRadius_mm = 0.8;
-    return p;
+    return tolturn::test::kienzlePassProcess(kK11, kM);
 }
 
 // A 100 mm pass at Ø60 whose depth steps 2 → 3 → 1.5 → 2.5 mm, as a roughing level over a stepped

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/fe/solid_check_view.h"
 
+#include "widgets/common/table_cells.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/plot/line_plot.h"
 
@@ -21,14 +22,6 @@ namespace {
 constexpr double kUmPerMm = 1000.0;
 const QColor kBeamColor(0x1f, 0x77, 0xb4);
 const QColor kSolidColor(0xd6, 0x27, 0x28);
-
-QTableWidgetItem *cell(const QString &text)
-{
-    auto *item = new QTableWidgetItem(text);
-    item->setFlags(item->flags() & ~Qt::ItemIsEditable);
-    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    return item;
-}
 
 // Decimals that give the largest deflection of the table three significant digits (deflections of
 // a stiff part are hundredths of a micrometre, those of a slender one tens of micrometres).
@@ -148,7 +141,7 @@ void SolidCheckView::fillTable(const DisplayUnits &units)
                                 shown(s.solidTangential_mm),
                                 shown(s.timoshenkoRadial_mm)};
         for (int column = 0; column < texts.size(); ++column)
-            m_table->setItem(row, column, cell(texts[column]));
+            m_table->setItem(row, column, readOnlyCell(texts[column], Qt::AlignRight | Qt::AlignVCenter));
     }
     fitColumns();
 }

@@ -2,6 +2,7 @@
 #include "widgets/planning/adaptive_tab.h"
 
 #include "core/planning/planning_report.h"
+#include "widgets/common/table_cells.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/plot/line_plot.h"
 
@@ -27,13 +28,6 @@ enum class Quantity { Force, Feed, Deviation, Roughness, Depth };
 QString number(double v, int decimals)
 {
     return QString::number(v, 'f', decimals);
-}
-
-QTableWidgetItem *cell(const QString &text)
-{
-    auto *item = new QTableWidgetItem(text);
-    item->setFlags(item->flags() & ~Qt::ItemIsEditable);
-    return item;
 }
 
 double valueOf(const ControlSample &s, Quantity q)
@@ -252,11 +246,12 @@ void AdaptiveTab::showSchedule()
     m_table->setRowCount(static_cast<int>(m_schedule.features.size()));
     for (int r = 0; r < m_table->rowCount(); ++r) {
         const ScheduledFeed &f = m_schedule.features[static_cast<std::size_t>(r)];
-        m_table->setItem(r, 0, cell(f.featureId));
-        m_table->setItem(r, 1, cell(number(f.feed_mm_rev, 3)));
-        m_table->setItem(r, 2, cell(number(m_schedule.programmedFeed_mm_rev, 3)));
+        m_table->setItem(r, 0, readOnlyCell(f.featureId));
+        m_table->setItem(r, 1, readOnlyCell(number(f.feed_mm_rev, 3)));
+        m_table->setItem(r, 2, readOnlyCell(number(m_schedule.programmedFeed_mm_rev, 3)));
         m_table->setItem(
-            r, 3, cell(f.held ? tr("kept: %1 is not held at any feed of the range").arg(f.limitedBy) : f.limitedBy));
+            r, 3,
+            readOnlyCell(f.held ? tr("kept: %1 is not held at any feed of the range").arg(f.limitedBy) : f.limitedBy));
     }
     m_table->resizeColumnsToContents();
     const double change =

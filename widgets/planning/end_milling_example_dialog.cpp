@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/planning/end_milling_example_dialog.h"
 
+#include "widgets/common/table_cells.h"
 #include "widgets/plot/line_plot.h"
 
 #include <QComboBox>
@@ -27,14 +28,6 @@ struct PaperValue {
     double value;
     QString what;
 };
-
-QTableWidgetItem *cell(const QString &text)
-{
-    auto *item = new QTableWidgetItem(text);
-    item->setFlags(item->flags() & ~Qt::ItemIsEditable);
-    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    return item;
-}
 
 } // namespace
 
@@ -160,7 +153,7 @@ void EndMillingExampleDialog::showTable()
                                 QString::number(r.settled.ra_um, 'f', 3),
                                 QString::number(r.paper.producedRa_um, 'f', 2)};
         for (int c = 0; c < cells.size(); ++c)
-            m_table->setItem(row, c, cell(cells[c]));
+            m_table->setItem(row, c, readOnlyCell(cells[c], Qt::AlignRight | Qt::AlignVCenter));
         ++row;
     }
     const SeedConditions &swarm = m_result.conditions.front();

@@ -8,6 +8,7 @@
 #include "core/project/keywords.h"
 #include "core/project/operations.h"
 #include "widgets/common/project_fields.h"
+#include "widgets/common/table_cells.h"
 #include "widgets/common/table_copy.h"
 #include "widgets/common/worker_threads.h"
 #include "widgets/document/project_document.h"
@@ -53,13 +54,6 @@ QColor constraintColor(const QString &keyword)
                                                   {QStringLiteral("bar_overhang"), QColor(0x1f, 0x77, 0xb4)}};
     const auto it = colors.find(keyword);
     return it == colors.end() ? QColor(Qt::gray) : it->second;
-}
-
-QTableWidgetItem *cell(const QString &text)
-{
-    auto *item = new QTableWidgetItem(text);
-    item->setFlags(item->flags() & ~Qt::ItemIsEditable);
-    return item;
 }
 
 void setupTable(QTableWidget *table, const QStringList &headers)
@@ -506,7 +500,7 @@ void PlanningPanel::showPlanPasses()
             p.power_kW ? number(*p.power_kW, 2) : tr("—"),
             number(p.time_min, 2)};
         for (int c = 0; c < static_cast<int>(cells.size()); ++c)
-            m_planPasses->setItem(i, c, cell(cells.at(c)));
+            m_planPasses->setItem(i, c, readOnlyCell(cells.at(c)));
     }
     m_planPasses->resizeColumnsToContents();
 }
@@ -586,9 +580,9 @@ void PlanningPanel::showClamping()
     m_clamping->setRowCount(static_cast<int>(m_report->clamping.size()));
     for (int i = 0; i < m_clamping->rowCount(); ++i) {
         const ClampingOption &o = m_report->clamping[static_cast<std::size_t>(i)];
-        m_clamping->setItem(i, 0, cell(QString::number(i + 1)));
-        m_clamping->setItem(i, 1, cell(displayName(o.method)));
-        m_clamping->setItem(i, 2, cell(o.reason));
+        m_clamping->setItem(i, 0, readOnlyCell(QString::number(i + 1)));
+        m_clamping->setItem(i, 1, readOnlyCell(displayName(o.method)));
+        m_clamping->setItem(i, 2, readOnlyCell(o.reason));
         const QColor background = !o.possible       ? QColor(0xee, 0xee, 0xee)
                                   : o.plan.feasible ? QColor(0xc7, 0xe9, 0xc0)
                                                     : QColor(0xfc, 0xae, 0x91);
@@ -657,14 +651,14 @@ void PlanningPanel::showFinishing()
         const QString action = f.action == CompensationAction::None             ? tr("none")
                                : f.action == CompensationAction::ConstantOffset ? tr("constant offset")
                                                                                 : tr("profile correction");
-        m_compensation->setItem(i, 0, cell(f.featureId));
-        m_compensation->setItem(i, 1, cell(f.tolerances.join(QStringLiteral(", "))));
-        m_compensation->setItem(i, 2, cell(action));
+        m_compensation->setItem(i, 0, readOnlyCell(f.featureId));
+        m_compensation->setItem(i, 1, readOnlyCell(f.tolerances.join(QStringLiteral(", "))));
+        m_compensation->setItem(i, 2, readOnlyCell(action));
         m_compensation->setItem(
-            i, 3, cell(f.action == CompensationAction::ConstantOffset ? number(f.offset_um, 1) : QString()));
-        m_compensation->setItem(i, 4, cell(number(f.residualBefore_um, 3)));
-        m_compensation->setItem(i, 5, cell(number(f.residualAfter_um, 3)));
-        m_compensation->setItem(i, 6, cell(f.note));
+            i, 3, readOnlyCell(f.action == CompensationAction::ConstantOffset ? number(f.offset_um, 1) : QString()));
+        m_compensation->setItem(i, 4, readOnlyCell(number(f.residualBefore_um, 3)));
+        m_compensation->setItem(i, 5, readOnlyCell(number(f.residualAfter_um, 3)));
+        m_compensation->setItem(i, 6, readOnlyCell(f.note));
     }
     m_compensation->resizeColumnsToContents();
     const TurningProgram &program = m_compensated->isChecked() ? m_finishing.compensated : m_finishing.nominal;
