@@ -1446,16 +1446,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Hinweis: %1</translation>
     </message>
     <message>
-        <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits.</source>
-        <translation>Jedes Formelement des Schlichtschnitts mit eigenem Vorschub schneiden: dem größten des Vorschubbereichs der Planung, der seine Toleranzen und die Grenzen des Schnitts hält.</translation>
-    </message>
-    <message>
-        <source>--feed-schedule and --compensated: the compensation is computed at the programmed feed; a scheduled program is not compensated yet</source>
-        <translation>--feed-schedule und --compensated: die Kompensation ist für den programmierten Vorschub berechnet; ein Programm nach Vorschubplan wird noch nicht kompensiert</translation>
-    </message>
-    <message>
         <source>feed schedule: roughing passes %1 s at the programmed feed, %2 s scheduled (%3 %)</source>
         <translation>Vorschubplan: Schruppschnitte %1 s beim programmierten Vorschub, %2 s nach Plan (%3 %)</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits. With --compensated, the features no feed holds keep the programmed feed and are compensated at it.</source>
+        <translation>Jedes Formelement des Schlichtschnitts mit eigenem Vorschub drehen: dem größten im Vorschubbereich des Plans, der seine Toleranzen und die Grenzen des Schnitts einhält. Mit --compensated behalten die Formelemente, die kein Vorschub hält, den programmierten Vorschub und werden bei ihm kompensiert.</translation>
     </message>
 </context>
 <context>
@@ -7052,12 +7048,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Vorschubplan</translation>
     </message>
     <message>
-        <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (not with the compensated program: its correction is computed at the programmed feed)</source>
-        <translation>Jedes Formelement des Schlichtschnitts mit seinem Vorschub aus dem Plan des Reiters Adaptiv schneiden (nicht mit dem kompensierten Programm: dessen Korrektur ist für den programmierten Vorschub berechnet)</translation>
-    </message>
-    <message>
         <source>Adaptive</source>
         <translation>Adaptiv</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (compensated too: the features no feed holds keep the programmed feed and are compensated at it)</source>
+        <translation>Jedes Formelement des Schlichtschnitts mit seinem Vorschub aus dem Plan der Registerkarte Adaptiv drehen (auch kompensiert: die Formelemente, die kein Vorschub hält, behalten den programmierten Vorschub und werden bei ihm kompensiert)</translation>
     </message>
 </context>
 <context>

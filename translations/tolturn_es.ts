@@ -1446,16 +1446,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>nota: %1</translation>
     </message>
     <message>
-        <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits.</source>
-        <translation>Cortar cada elemento de la pasada de acabado con su propio avance: el mayor del rango de avance de la planificación que mantiene sus tolerancias y los límites de la pasada.</translation>
-    </message>
-    <message>
-        <source>--feed-schedule and --compensated: the compensation is computed at the programmed feed; a scheduled program is not compensated yet</source>
-        <translation>--feed-schedule y --compensated: la compensación está calculada para el avance programado; un programa con avances por elemento aún no se compensa</translation>
-    </message>
-    <message>
         <source>feed schedule: roughing passes %1 s at the programmed feed, %2 s scheduled (%3 %)</source>
         <translation>programa de avances: pasadas de desbaste %1 s con el avance programado, %2 s según el programa (%3 %)</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits. With --compensated, the features no feed holds keep the programmed feed and are compensated at it.</source>
+        <translation>Mecanizar cada elemento de la pasada de acabado con su propio avance: el mayor del rango de avances del plan que cumple sus tolerancias y los límites de la pasada. Con --compensated, los elementos que ningún avance cumple conservan el avance programado y se compensan con él.</translation>
     </message>
 </context>
 <context>
@@ -7052,12 +7048,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Programa de avances</translation>
     </message>
     <message>
-        <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (not with the compensated program: its correction is computed at the programmed feed)</source>
-        <translation>Cortar cada elemento de la pasada de acabado con su avance del programa de la pestaña Adaptativo (no con el programa compensado: su corrección está calculada para el avance programado)</translation>
-    </message>
-    <message>
         <source>Adaptive</source>
         <translation>Adaptativo</translation>
+    </message>
+    <message>
+        <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (compensated too: the features no feed holds keep the programmed feed and are compensated at it)</source>
+        <translation>Mecanizar cada elemento de la pasada de acabado con su avance del plan de la pestaña Adaptativo (también compensado: los elementos que ningún avance cumple conservan el avance programado y se compensan con él)</translation>
     </message>
 </context>
 <context>

@@ -68,7 +68,7 @@ void printSchedule(const FeedSchedule &schedule, const std::vector<PassSummary> 
 QString gcodeSynopsis()
 {
     return QStringLiteral(
-        "gcode [--compensated|--feed-schedule] [--dialect fanuc|sinumerik|linuxcnc] [--nose control|tip-path] "
+        "gcode [--compensated] [--feed-schedule] [--dialect fanuc|sinumerik|linuxcnc] [--nose control|tip-path] "
         "-o FILE|- PROJECT");
 }
 
@@ -104,7 +104,8 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption feedSchedule(
         QStringLiteral("feed-schedule"),
         GCodeCommand::tr("Cut each feature of the finishing pass at its own feed: the largest in the plan's feed "
-                         "range that holds its tolerances and the pass's limits."));
+                         "range that holds its tolerances and the pass's limits. With --compensated, the features "
+                         "no feed holds keep the programmed feed and are compensated at it."));
     parser.addOptions({output, compensated, dialect, nose, learned, store, feedSchedule, operationOption()});
     parser.addPositionalArgument(QStringLiteral("project"), GCodeCommand::tr("Project file."),
                                  QStringLiteral("PROJECT"));
@@ -152,13 +153,6 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         deviation = withLearnedResidual(*project, std::move(deviation), model->model, model->provenance());
     }
     std::optional<FeedSchedule> schedule;
-    if (parser.isSet(feedSchedule) && parser.isSet(compensated)) {
-        err << programName() << " gcode: "
-            << GCodeCommand::tr("--feed-schedule and --compensated: the compensation is computed at the programmed "
-                                "feed; a scheduled program is not compensated yet")
-            << '\n';
-        return kExitUsage;
-    }
     if (parser.isSet(feedSchedule)) {
         schedule = scheduleProjectFinishingFeeds(*project, DataLibrary::builtIn(), model);
         for (const Diagnostic &d : schedule->diagnostics)
@@ -168,8 +162,13 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         options.finishingFeeds_mm_rev = schedule->feedByFeature();
         options.roughingFeedSchedule = true;
     }
-    const FinishingOutput finishing =
-        finishingOutputFor(*project, DataLibrary::builtIn(), std::move(deviation), options);
+    // A scheduled program is compensated from the scheduled pass's deviation: each feature's at
+    // the feed it is cut at.
+    const DeviationResult constantFeedDeviation = deviation;
+    const FinishingOutput finishing = finishingOutputFor(
+        *project, DataLibrary::builtIn(),
+        schedule && parser.isSet(compensated) ? scheduledDeviation(*schedule, deviation) : std::move(deviation),
+        options);
     for (const Diagnostic &d : finishing.deviation.diagnostics)
         err << file << ": " << d.toString() << '\n';
     if (!finishing.deviation.inputs)
@@ -194,7 +193,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         constant.finishingFeeds_mm_rev.clear();
         constant.roughingFeedSchedule = false;
         const FinishingOutput plain =
-            finishingOutputFor(*project, DataLibrary::builtIn(), finishing.deviation, constant);
+            finishingOutputFor(*project, DataLibrary::builtIn(), constantFeedDeviation, constant);
         printSchedule(*schedule, (parser.isSet(compensated) ? plain.compensated : plain.nominal).passes, program.passes,
                       file, err);
     }

@@ -102,7 +102,8 @@ public:
             if (!m_pinned[u])
                 m_index[u] = largestAlone(u, top, finishing);
         lowerWhereCoupled();
-        s.tolerances = m_problem.toleranceConstraintsOf(spliced(m_index));
+        s.deviation = spliced(m_index);
+        s.tolerances = m_problem.toleranceConstraintsOf(s.deviation);
         for (std::size_t u = 0; u < m_units.size(); ++u)
             s.features.push_back({m_units[u].featureId, m_feeds[m_index[u]], m_limitedBy[u], m_pinned[u]});
         return s;
@@ -280,6 +281,14 @@ FeedSchedule scheduleProjectFinishingFeeds(const Project &project, const DataLib
     s = scheduleFinishingFeeds(*built.problem, *finishing);
     s.diagnostics.insert(s.diagnostics.begin(), built.diagnostics.begin(), built.diagnostics.end());
     return s;
+}
+
+DeviationResult scheduledDeviation(const FeedSchedule &schedule, const DeviationResult &constantFeed)
+{
+    DeviationResult d = schedule.deviation;
+    d.inputs = constantFeed.inputs; // the program is generated from the same inputs as without the schedule
+    d.diagnostics = constantFeed.diagnostics;
+    return d;
 }
 
 double outerFinishingTime_min(const std::vector<PassSummary> &passes)

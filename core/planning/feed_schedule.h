@@ -30,6 +30,9 @@ struct FeedSchedule {
     double programmedFeed_mm_rev = 0.0;
     std::vector<ScheduledFeed> features;     // outer features and faces, in the order of the contour
     std::vector<ConstraintValue> tolerances; // of the scheduled pass
+    // The scheduled pass's deviation, each feature's at its own feed (the kept-back ones at the
+    // programmed feed): what a compensation of the scheduled program is planned from.
+    DeviationResult deviation;
     QStringList notes;
     Diagnostics diagnostics;
 
@@ -44,6 +47,11 @@ struct FeedSchedule {
 // compliant end of the machine's range and with what was learned of it, when given.
 [[nodiscard]] FeedSchedule scheduleProjectFinishingFeeds(const Project &project, const DataLibrary &data,
                                                          std::shared_ptr<const LoadedModel> learned = nullptr);
+
+// The deviation to compensate a scheduled program from: the schedule's, with the inputs and the
+// diagnostics of the deviation at the programmed feed (`constantFeed`, computed the verdicts' way)
+// that the program is generated from.
+[[nodiscard]] DeviationResult scheduledDeviation(const FeedSchedule &schedule, const DeviationResult &constantFeed);
 
 // The roughing passes' feed move by move: where a level cuts less than its depth (over a shoulder
 // it meets the allowance, or the stock the level above left), the move runs at the feed at which the

@@ -7,15 +7,18 @@
 #include "core/common/diagnostic.h"
 #include "core/cutting/cutting_forces.h"
 #include "core/part/profile.h"
+#include "core/project/project.h"
 
 #include <QByteArray>
 #include <QFile>
+#include <QRegularExpression>
 #include <QString>
 #include <QStringList>
 #include <QtGlobal>
 
 #include <numbers>
 #include <sys/stat.h>
+#include <vector>
 
 namespace tolturn::test {
 
@@ -89,6 +92,55 @@ inline PassProcess kienzlePassProcess(double k11, double m)
     p.cuttingSpeed_m_min = std::numbers::pi * 60.0;
     p.noseRadius_mm = 0.8;
     return p;
+}
+
+// G-code moves: (X, Z) end points of G00/G01/G02/G03 lines, in order (a small reader for the tests).
+struct Move {
+    int g = 0;
+    double x = 0.0;
+    double z = 0.0;
+};
+
+inline std::vector<Move> readMoves(const QString &program)
+{
+    static const QRegularExpression word(QStringLiteral("([GXZ])(-?\\d+(?:\\.\\d+)?)"));
+    std::vector<Move> moves;
+    Move state;
+    for (QString line : program.split(QLatin1Char('\n'))) {
+        line.remove(QRegularExpression(QStringLiteral("\\([^)]*\\)")));
+        bool motion = false;
+        auto it = word.globalMatch(line);
+        while (it.hasNext()) {
+            const auto m = it.next();
+            const double v = m.captured(2).toDouble();
+            if (m.captured(1) == QLatin1String("G") && v <= 3.0) {
+                state.g = static_cast<int>(v);
+                motion = true;
+            } else if (m.captured(1) == QLatin1String("X")) {
+                state.x = v;
+                motion = true;
+            } else if (m.captured(1) == QLatin1String("Z")) {
+                state.z = v;
+                motion = true;
+            }
+        }
+        if (motion && (line.contains(QLatin1Char('X')) || line.contains(QLatin1Char('Z'))))
+            moves.push_back(state);
+    }
+    return moves;
+}
+
+// The moves of a program's finishing passes.
+inline std::vector<Move> finishingMoves(const QString &program)
+{
+    return readMoves(program.mid(program.indexOf(QStringLiteral(", FINISHING:"))));
+}
+
+// Whether the tool reaches a station: it keeps 2 mm from the jaws, plus its nose radius 0.8 mm.
+inline bool reachedByTheTool(const Project &p, double z_mm)
+{
+    const double support = p.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : p.clamping.clampedLength_mm;
+    return z_mm >= support + 2.0 + 0.8 - 1e-9;
 }
 
 } // namespace tolturn::test

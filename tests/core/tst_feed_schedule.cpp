@@ -149,6 +149,68 @@ private Q_SLOTS:
     // 0.625 mm there instead of 1.9375. Kienzle (F ∝ a f^(1 − m), m ≈ 0.2) puts the feed of the
     // planned force at about 0.3 · 3.1^1.25 = 1.2 mm/rev, so the top of the range, 0.399, holds it;
     // from the right end to the cone (z 82) the level cuts its full depth and keeps 0.3.
+    // Scheduled and compensated, on the thin pin (T1 Ø20 h7 on O4, which no feed of the range holds):
+    // O4 keeps the programmed 0.170 mm/rev and is compensated there, the other features run at
+    // their scheduled feed. "Machined" through the model (the size cut at a station = the programmed
+    // diameter + twice the radius error predicted at 0.170 mm/rev by computeDeviation), every station
+    // of O4 the tool reaches lands in Ø20 h7 = 19.979–20.000 mm (IT7 = 21 µm over 18 up to 30 mm,
+    // es = 0; ISO 286-1 table 1, ISO 286-2); without the compensation some station does not.
+    void scheduledProgramIsCompensatedWhereNoFeedHolds()
+    {
+        const ProjectParseResult read =
+            readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/thin-pin-compensation.tolturn"));
+        QVERIFY(read.project);
+        const Project &p = *read.project;
+        const FeedSchedule s = scheduleProjectFinishingFeeds(p, DataLibrary::builtIn());
+        QVERIFY(s.ok());
+        QVERIFY(feedOf(s, "O4").held);
+        QCOMPARE(feedOf(s, "O4").feed_mm_rev, 0.17);
+        QVERIFY(feedOf(s, "O6").feed_mm_rev > 0.17);
+        GCodeOptions options;
+        options.finishingFeeds_mm_rev = s.feedByFeature();
+        options.roughingFeedSchedule = true;
+        const DeviationResult atProgrammed = computeDeviation(p, DataLibrary::builtIn());
+        const FinishingOutput out =
+            finishingOutputFor(p, DataLibrary::builtIn(), scheduledDeviation(s, atProgrammed), options);
+        for (const FeatureCompensation &f : out.compensation.features)
+            QVERIFY2((f.featureId == QLatin1String("O4")) == (f.action != CompensationAction::None),
+                     qPrintable(f.featureId));
+        QVERIFY(out.compensated.text.contains(QStringLiteral(" F0.202")));
+        const FeatureDeviation *o4 = nullptr;
+        for (const FeatureDeviation &f : atProgrammed.features)
+            o4 = f.featureId == QLatin1String("O4") ? &f : o4;
+        QVERIFY(o4);
+        const auto machinedInside = [&](const TurningProgram &program) {
+            const std::vector<test::Move> moves = test::finishingMoves(program.text);
+            int checked = 0;
+            for (const Station &st : o4->stations) {
+                if (!test::reachedByTheTool(p, st.z_mm))
+                    continue;
+                // The programmed diameter at the station: the first move on the pin (travelling towards
+                // the chuck) that ends at or beyond it, after any step in X at that Z (where the
+                // corrected pin starts below the chamfer's end).
+                const double z = st.z_mm - p.part.length_mm();
+                auto m = std::find_if(moves.begin(), moves.end(), [&](const test::Move &mv) {
+                    return mv.g == 1 && std::abs(mv.x - 20.0) < 0.2 && mv.z <= z + 1e-9;
+                });
+                if (m == moves.end())
+                    return false;
+                while (std::next(m) != moves.end() && std::abs(std::next(m)->z - m->z) < 1e-9 &&
+                       std::abs(std::next(m)->x - 20.0) < 0.2)
+                    ++m;
+                const double machined = m->x + 2.0 * st.radiusError_mm;
+                if (machined < 19.979 - 1e-6 || machined > 20.000 + 1e-6) {
+                    qInfo("z %.3f: programmed %.4f, machined %.4f", st.z_mm, m->x, machined);
+                    return false;
+                }
+                ++checked;
+            }
+            return checked > 10;
+        };
+        QVERIFY(machinedInside(out.compensated));
+        QVERIFY(!machinedInside(out.nominal));
+    }
+
     void roughingRunsFasterWhereALevelCutsLess()
     {
         const ProjectParseResult read =

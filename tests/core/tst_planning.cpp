@@ -2,6 +2,8 @@
 // Planning: the optimum against a dense grid search, every constraint made binding (with the
 // closed-form boundary where there is one), an infeasible case naming its conflict, the cutting
 // window against direct evaluation, the clamping ranking, and G-code read back.
+#include "tests/core/test_support.h"
+
 #include "core/cutting/cutting_quantities.h"
 #include "core/io/project_file.h"
 #include "core/planning/clamping_advisor.h"
@@ -72,41 +74,8 @@ double gridBest(const PlanningProblem &problem, int k, int n)
     return best;
 }
 
-// G-code moves: (X, Z) end points of G00/G01/G02/G03 lines, in order (a small reader for the tests).
-struct Move {
-    int g = 0;
-    double x = 0.0;
-    double z = 0.0;
-};
-
-std::vector<Move> readMoves(const QString &program)
-{
-    static const QRegularExpression word(QStringLiteral("([GXZ])(-?\\d+(?:\\.\\d+)?)"));
-    std::vector<Move> moves;
-    Move state;
-    for (QString line : program.split(QLatin1Char('\n'))) {
-        line.remove(QRegularExpression(QStringLiteral("\\([^)]*\\)")));
-        bool motion = false;
-        auto it = word.globalMatch(line);
-        while (it.hasNext()) {
-            const auto m = it.next();
-            const double v = m.captured(2).toDouble();
-            if (m.captured(1) == QLatin1String("G") && v <= 3.0) {
-                state.g = static_cast<int>(v);
-                motion = true;
-            } else if (m.captured(1) == QLatin1String("X")) {
-                state.x = v;
-                motion = true;
-            } else if (m.captured(1) == QLatin1String("Z")) {
-                state.z = v;
-                motion = true;
-            }
-        }
-        if (motion && (line.contains(QLatin1Char('X')) || line.contains(QLatin1Char('Z'))))
-            moves.push_back(state);
-    }
-    return moves;
-}
+using tolturn::test::Move;
+using tolturn::test::readMoves;
 
 // The program of a project (its machine's dialect) and the moves of its finishing pass.
 QString programFor(const Project &p, const CompensationPlan *plan,
@@ -121,16 +90,8 @@ QString programFor(const Project &p, const CompensationPlan *plan,
 
 // The finishing pass stops where the nose (0.8 mm) is 2 mm clear of the chuck face (or the left
 // centre): stations nearer are not turned, which the program says in a warning.
-bool reachedByTheTool(const Project &p, double z_mm)
-{
-    const double support = p.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : p.clamping.clampedLength_mm;
-    return z_mm >= support + 2.0 + 0.8 - 1e-9;
-}
-
-std::vector<Move> finishingMoves(const QString &program)
-{
-    return readMoves(program.mid(program.indexOf(QStringLiteral(", FINISHING:"))));
-}
+using tolturn::test::finishingMoves;
+using tolturn::test::reachedByTheTool;
 
 constexpr double kPi = std::numbers::pi;
 

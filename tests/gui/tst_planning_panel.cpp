@@ -349,10 +349,11 @@ private Q_SLOTS:
         QVERIFY(!panel->gcodeText().contains(QStringLiteral("F0.202")));
         panel->feedScheduleBox()->setChecked(true);
         QVERIFY(panel->gcodeText().contains(QStringLiteral(" F0.202\n")));
+        // Scheduled and compensated together: the schedule's feeds stay in the compensated program.
         auto *compensated = panel->findChild<QCheckBox *>(QStringLiteral("gcodeCompensated"));
         compensated->setChecked(true);
-        QVERIFY(!panel->feedScheduleBox()->isChecked());
-        QVERIFY(!panel->gcodeText().contains(QStringLiteral(" F0.202\n")));
+        QVERIFY(panel->feedScheduleBox()->isChecked());
+        QVERIFY(panel->gcodeText().contains(QStringLiteral(" F0.202\n")));
         compensated->setChecked(false);
         panel->findChild<QTabWidget *>()->setCurrentWidget(tab);
         w.findChild<QDockWidget *>(QStringLiteral("planningDock"))->raise();

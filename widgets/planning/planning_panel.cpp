@@ -182,8 +182,8 @@ void PlanningPanel::buildControls()
     gcodeTop->addWidget(m_compensated);
     m_scheduled->setObjectName(QStringLiteral("gcodeFeedSchedule"));
     m_scheduled->setToolTip(tr("Cut each feature of the finishing pass at its feed of the Adaptive tab's schedule "
-                               "(not with the compensated program: its correction is computed at the programmed "
-                               "feed)"));
+                               "(compensated too: the features no feed holds keep the programmed feed and are "
+                               "compensated at it)"));
     gcodeTop->addWidget(m_scheduled);
     gcodeTop->addWidget(m_dialect);
     gcodeTop->addWidget(m_nose);
@@ -243,16 +243,8 @@ void PlanningPanel::buildControls()
                           "works with"));
     connect(m_data, &QPushButton::clicked, this, &PlanningPanel::editPlanningData);
     connect(m_objective, &QComboBox::currentIndexChanged, this, &PlanningPanel::settingsEdited);
-    connect(m_compensated, &QCheckBox::toggled, this, [this](bool on) {
-        if (on)
-            m_scheduled->setChecked(false); // one or the other: the correction is computed at the programmed feed
-        showFinishing();
-    });
-    connect(m_scheduled, &QCheckBox::toggled, this, [this](bool on) {
-        if (on)
-            m_compensated->setChecked(false);
-        showFinishing();
-    });
+    connect(m_compensated, &QCheckBox::toggled, this, &PlanningPanel::showFinishing);
+    connect(m_scheduled, &QCheckBox::toggled, this, &PlanningPanel::showFinishing);
     connect(m_dialect, &QComboBox::currentIndexChanged, this, &PlanningPanel::showFinishing);
     connect(m_nose, &QComboBox::currentIndexChanged, this, &PlanningPanel::showFinishing);
     connect(m_export, &QPushButton::clicked, this, [this] {
@@ -637,13 +629,13 @@ void PlanningPanel::showFinishing()
         options.roughingFeedSchedule = true;
     }
     const Project project = operationProject();
-    m_finishing =
-        m_learned
-            ? finishingOutputFor(project, DataLibrary::builtIn(),
-                                 withLearnedResidual(project, computeDeviation(project, DataLibrary::builtIn(), {}),
-                                                     m_learned->model, m_learned->provenance()),
-                                 options)
-            : finishingOutput(project, DataLibrary::builtIn(), options);
+    DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
+    if (m_learned)
+        deviation = withLearnedResidual(project, std::move(deviation), m_learned->model, m_learned->provenance());
+    // A scheduled program is compensated from the scheduled pass's deviation.
+    if (!options.finishingFeeds_mm_rev.isEmpty())
+        deviation = scheduledDeviation(m_adaptive->schedule(), deviation);
+    m_finishing = finishingOutputFor(project, DataLibrary::builtIn(), std::move(deviation), options);
     const auto &features = m_finishing.compensation.features;
     m_compensation->setRowCount(static_cast<int>(features.size()));
     for (int i = 0; i < m_compensation->rowCount(); ++i) {
