@@ -610,6 +610,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
         <translation>--%1: „%2“ ist keine Zahl von %3 bis %4</translation>
     </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not a whole number from %3 to %4</source>
+        <translation>--%1: „%2“ ist keine ganze Zahl von %3 bis %4</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -761,12 +765,16 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Den Vergleich als JSON ausgeben.</translation>
     </message>
     <message>
-        <source>Simulations of the pass each method may ask for (default 400).</source>
-        <translation>Simulationen des Schnitts, die jedes Verfahren anfordern darf (Vorgabe 400).</translation>
-    </message>
-    <message>
         <source>Comma-separated methods (default all: %1).</source>
         <translation>Verfahren, durch Kommas getrennt (Vorgabe alle: %1).</translation>
+    </message>
+    <message>
+        <source>--methods: no method named</source>
+        <translation>--methods: kein Verfahren genannt</translation>
+    </message>
+    <message>
+        <source>Simulations of the pass each method may ask for, at least %1 (default 400).</source>
+        <translation>Simulationen des Schnitts, die jedes Verfahren anfordern darf, mindestens %1 (Vorgabe 400).</translation>
     </message>
 </context>
 <context>

@@ -610,6 +610,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>--%1: &quot;%2&quot; is not a number from %3 to %4</source>
         <translation>--%1: «%2» no es un número de %3 a %4</translation>
     </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not a whole number from %3 to %4</source>
+        <translation>--%1: «%2» no es un número entero de %3 a %4</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -761,12 +765,16 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Mostrar la comparación como JSON.</translation>
     </message>
     <message>
-        <source>Simulations of the pass each method may ask for (default 400).</source>
-        <translation>Simulaciones de la pasada que puede pedir cada método (por defecto 400).</translation>
-    </message>
-    <message>
         <source>Comma-separated methods (default all: %1).</source>
         <translation>Métodos separados por comas (por defecto todos: %1).</translation>
+    </message>
+    <message>
+        <source>--methods: no method named</source>
+        <translation>--methods: no se indica ningún método</translation>
+    </message>
+    <message>
+        <source>Simulations of the pass each method may ask for, at least %1 (default 400).</source>
+        <translation>Simulaciones de la pasada que puede pedir cada método, al menos %1 (por defecto 400).</translation>
     </message>
 </context>
 <context>

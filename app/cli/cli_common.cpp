@@ -212,4 +212,20 @@ std::optional<double> numberInRange(const QCommandLineParser &parser, const QCom
     return std::nullopt;
 }
 
+std::optional<long long> wholeNumberInRange(const QCommandLineParser &parser, const QCommandLineOption &option,
+                                            long long lo, long long hi, const QString &command, QTextStream &err)
+{
+    bool ok = false;
+    const long long v = parser.value(option).toLongLong(&ok);
+    if (ok && v >= lo && v <= hi)
+        return v;
+    err << programName() << ' ' << command << ": "
+        << CommandLine::tr("--%1: \"%2\" is not a whole number from %3 to %4")
+               .arg(option.names().constFirst(), parser.value(option))
+               .arg(lo)
+               .arg(hi)
+        << '\n';
+    return std::nullopt;
+}
+
 } // namespace tolturn

@@ -49,6 +49,11 @@ inline constexpr double kMaxLoad_N = 1e6;
 [[nodiscard]] std::optional<double> numberInRange(const QCommandLineParser &parser, const QCommandLineOption &option,
                                                   double lo, double hi, const QString &command, QTextStream &err);
 
+// numberInRange for a whole number.
+[[nodiscard]] std::optional<long long> wholeNumberInRange(const QCommandLineParser &parser,
+                                                          const QCommandLineOption &option, long long lo, long long hi,
+                                                          const QString &command, QTextStream &err);
+
 // Reads a project for a command, printing its problems as "FILE: severity: field: message".
 [[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err);
 

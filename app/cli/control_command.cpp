@@ -167,13 +167,13 @@ struct LoopOptions {
                             QTextStream &err) const
     {
         if (parser.isSet(pass)) {
-            const std::optional<double> n = numberInRange(parser, pass, 1, 1000, command, err);
-            if (!n || *n != std::floor(*n))
+            const std::optional<long long> n = wholeNumberInRange(parser, pass, 1, 1000, command, err);
+            if (!n)
                 return false;
             options.passIndex = static_cast<int>(*n) - 1;
         }
         const std::optional<double> noisePct = numberInRange(parser, noise, 0.0, 50.0, command, err);
-        const std::optional<double> seedValue = numberInRange(parser, seed, 0, 4294967295.0, command, err);
+        const std::optional<long long> seedValue = wholeNumberInRange(parser, seed, 0, 4294967295LL, command, err);
         if (!noisePct || !seedValue)
             return false;
         options.control.forceNoise = *noisePct / 100.0;
@@ -326,7 +326,12 @@ void printTuning(const QString &file, const PassSetup &pass, double untuned, con
 std::vector<TuningMethod> methodsNamed(const QString &list, QTextStream &err)
 {
     std::vector<TuningMethod> methods;
-    for (const QString &name : list.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+    const QStringList names = list.split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (names.isEmpty()) {
+        err << programName() << " tune-control: " << ControlCommand::tr("--methods: no method named") << '\n';
+        return {};
+    }
+    for (const QString &name : names) {
         const std::vector<TuningMethod> all = allTuningMethods();
         const auto it =
             std::find_if(all.begin(), all.end(), [&](TuningMethod m) { return tuningMethodName(m) == name.trimmed(); });
@@ -367,8 +372,9 @@ int runTuneControl(const QStringList &args, QTextStream &out, QTextStream &err)
     const LoopOptions loop;
     const QCommandLineOption evaluations(
         QStringLiteral("evaluations"),
-        ControlCommand::tr("Simulations of the pass each method may ask for (default 400)."), QStringLiteral("N"),
-        QStringLiteral("400"));
+        ControlCommand::tr("Simulations of the pass each method may ask for, at least %1 (default 400).")
+            .arg(kLeastTuningEvaluations),
+        QStringLiteral("N"), QStringLiteral("400"));
     QStringList names;
     for (const TuningMethod m : allTuningMethods())
         names << tuningMethodName(m);
@@ -390,7 +396,8 @@ int runTuneControl(const QStringList &args, QTextStream &out, QTextStream &err)
     options.passIndex = 0;
     if (!loop.read(parser, command, options, err))
         return kExitUsage;
-    const std::optional<double> budget = numberInRange(parser, evaluations, 20, 100000, command, err);
+    const std::optional<long long> budget =
+        wholeNumberInRange(parser, evaluations, kLeastTuningEvaluations, 100000, command, err);
     const std::vector<TuningMethod> chosen = methodsNamed(parser.value(methods), err);
     if (!budget || chosen.empty())
         return kExitUsage;

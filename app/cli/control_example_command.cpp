@@ -218,7 +218,7 @@ int runControlExample(const QStringList &args, QTextStream &out, QTextStream &er
         return kExitUsage;
     }
     const std::optional<double> noisePct = numberInRange(parser, noise, 0.0, 50.0, command, err);
-    const std::optional<double> seedValue = numberInRange(parser, seed, 0, 4294967295.0, command, err);
+    const std::optional<long long> seedValue = wholeNumberInRange(parser, seed, 0, 4294967295LL, command, err);
     const std::optional<double> shareValue = numberInRange(parser, share, 0.0, 1.0, command, err);
     const std::optional<double> seconds = numberInRange(parser, duration, 0.1, 60.0, command, err);
     if (!noisePct || !seedValue || !shareValue || !seconds)

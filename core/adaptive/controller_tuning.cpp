@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <pagmo/algorithms/pso.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
@@ -91,7 +90,7 @@ std::vector<double> runNlopt(const UnitBoxObjective &objective, int dimensions, 
     opt.set_lower_bounds(std::vector<double>(n, 0.0));
     opt.set_upper_bounds(std::vector<double>(n, 1.0));
     opt.set_min_objective(nloptObjective, const_cast<UnitBoxObjective *>(&objective));
-    opt.set_maxeval(maxEvaluations);
+    opt.set_maxeval(std::max(1, maxEvaluations)); // NLopt reads 0 as no limit
     opt.set_xtol_rel(1e-4);
     nlopt::srand(kSeed); // CRS2 and ISRES draw their points at random: a run repeats
     std::vector<double> u(n, 0.5);
@@ -137,9 +136,9 @@ QString tuningMethodName(TuningMethod method)
 
 QString tuningMethodLibrary(TuningMethod method)
 {
-    if (method == TuningMethod::ParticleSwarm)
-        return QStringLiteral("pagmo2 pso");
     switch (method) {
+    case TuningMethod::ParticleSwarm:
+        return QStringLiteral("pagmo2 pso");
     case TuningMethod::Cobyla:
         return QStringLiteral("NLopt LN_COBYLA");
     case TuningMethod::Bobyqa:
@@ -154,8 +153,6 @@ QString tuningMethodLibrary(TuningMethod method)
         return QStringLiteral("NLopt GN_CRS2_LM");
     case TuningMethod::Isres:
         return QStringLiteral("NLopt GN_ISRES");
-    case TuningMethod::ParticleSwarm:
-        break;
     }
     return {};
 }
@@ -167,8 +164,11 @@ double forceTrackingError(const PassDepthProfile &pass, const PassProcess &proce
     settings.estimatorGain = gains.estimatorGain;
     settings.commandGain = gains.commandGain;
     const PassControlResult r = simulatePassControl(pass, process, settings, ControlRuns::AdaptiveOnly);
+    // A run that does not reach the end of the pass is worse than any that does; a finite value
+    // keeps the local methods' models finite.
+    constexpr double kNoRun = 1e3;
     if (r.adaptive.cutShort || r.setForce_N <= 0.0)
-        return std::numeric_limits<double>::max();
+        return kNoRun;
     // Where even the highest feed the loop may command gives less than the set force, that force
     // is the target: no gain does better, so it is no error of the controller's.
     const double f0 = pass.conditions.feed_mm_rev;
@@ -176,8 +176,8 @@ double forceTrackingError(const PassDepthProfile &pass, const PassProcess &proce
     double sum = 0.0;
     int n = 0;
     for (const ControlSample &s : r.adaptive.samples) {
-        if (s.depth_mm <= 0.0)
-            continue;
+        if (s.force_N <= 0.0)
+            continue; // the tool in air at the very end of the pass
         const double target = std::min(r.setForce_N, resultant_N(process.forces(ceiling, s.depth_mm)));
         const double e = s.force_N / target - 1.0;
         sum += e * e;

@@ -55,9 +55,13 @@ struct TuningResult {
     double wallTime_s = 0.0;
 };
 
+// The smallest budget every method keeps to: the swarm's 20 particles and one generation.
+constexpr int kLeastTuningEvaluations = 40;
+
 // The least of `objective` over the unit box [0, 1]^dimensions by one method, from the middle of
 // the box (local methods) or over it (global ones), with at most `maxEvaluations` evaluations
-// (counted in `evaluations`); the swarm has 20 particles and a fixed seed, so a run repeats.
+// (at least kLeastTuningEvaluations; counted in `evaluations`); the swarm has 20 particles and a
+// fixed seed, so a run repeats.
 [[nodiscard]] std::vector<double> minimiseInUnitBox(const std::function<double(const std::vector<double> &)> &objective,
                                                     int dimensions, TuningMethod method, int maxEvaluations,
                                                     int &evaluations);

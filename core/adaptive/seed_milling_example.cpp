@@ -6,6 +6,8 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <tuple>
+#include <utility>
 
 namespace tolturn {
 
@@ -113,6 +115,19 @@ struct SeedLoop {
         return std::log(force(f0 * k, n0) / force(f0 / k, n0)) / (2.0 * std::log(k));
     }
 
+    // The feed and speed overrides of a chip load c* = ratio · c₀: the speed takes the share β,
+    // n / n₀ = ratio^(−β), the feed the rest, f / f₀ = ratio · n / n₀. Where the feed reaches its
+    // limit, the speed takes over what is left of the chip load, within its own.
+    [[nodiscard]] std::pair<double, double> overridesFor(double ratio) const
+    {
+        constexpr double kLowestSpeed = 0.01; // a spindle override of 0 would stop the cut
+        double speed = std::clamp(std::pow(ratio, -settings.speedShare), kLowestSpeed, settings.maxOverride);
+        const double feed = std::clamp(ratio * speed, 0.0, settings.maxOverride);
+        if (feed < ratio * speed)
+            speed = std::clamp(feed / ratio, kLowestSpeed, settings.maxOverride);
+        return {feed, speed};
+    }
+
     [[nodiscard]] std::vector<SeedControlSample> run(bool adaptive) const
     {
         const double f0 = settings.feedRate_mm_min;
@@ -135,12 +150,11 @@ struct SeedLoop {
             s.force_N = force(s.feedRate_mm_min, s.spindle_rpm);
             s.measuredForce_N = s.force_N * (1.0 + settings.forceNoise * noise(noiseSource));
             s.ra_um = models.roughness.evaluate(s.force_N);
-            const double c = s.feedRate_mm_min / s.spindle_rpm;
-            if (adaptive && s.measuredForce_N > 0.0 && c > 0.0) {
+            const double c = s.spindle_rpm > 0.0 ? s.feedRate_mm_min / s.spindle_rpm : 0.0;
+            if (adaptive && x > 0.0 && s.measuredForce_N > 0.0 && c > 0.0) {
                 const double gain = s.measuredForce_N / std::pow(c, x);
                 const double target = std::pow(settings.setForce_N / gain, 1.0 / x); // chip load of the set force
-                speedCommand = std::clamp(std::pow(c0 / target, settings.speedShare), 0.0, settings.maxOverride);
-                feedCommand = std::clamp(target * speedCommand / c0, 0.0, settings.maxOverride);
+                std::tie(feedCommand, speedCommand) = overridesFor(target / c0);
             }
             s.commandedFeedRate_mm_min = f0 * feedCommand;
             s.commandedSpindle_rpm = n0 * speedCommand;

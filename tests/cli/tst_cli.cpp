@@ -736,6 +736,15 @@ private Q_SLOTS:
         QCOMPARE(badMethod.exitCode, 2);
         QVERIFY2(badMethod.err.contains(QStringLiteral("--methods: \"genetic\" is not a method (pso, cobyla,")),
                  qPrintable(badMethod.err));
+        const Run badPass = runCli({QStringLiteral("tune-control"), QStringLiteral("--pass"), QStringLiteral("2.5"),
+                                    example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(badPass.exitCode, 2);
+        QVERIFY2(badPass.err.contains(QStringLiteral("--pass: \"2.5\" is not a whole number from 1 to 1000")),
+                 qPrintable(badPass.err));
+        const Run noMethod = runCli({QStringLiteral("tune-control"), QStringLiteral("--methods"), QStringLiteral(","),
+                                     example("stepped-shaft-chuck.tolturn")});
+        QCOMPARE(noMethod.exitCode, 2);
+        QVERIFY2(noMethod.err.contains(QStringLiteral("--methods: no method named")), qPrintable(noMethod.err));
         const Run badGain = runCli({QStringLiteral("simulate-control"), QStringLiteral("--command-gain"),
                                     QStringLiteral("3"), example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(badGain.exitCode, 2);

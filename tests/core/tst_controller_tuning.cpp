@@ -84,6 +84,31 @@ private Q_SLOTS:
         QVERIFY(forceTrackingError(pass, kienzleProcess(), ForceControlSettings{}, {0.3, 0.7}) < 1e-12);
     }
 
+    // A set force the feed cannot reach: twice the programmed feed's at a constant 2 mm, the feed
+    // capped at 0.25 mm/rev. The loop commands the cap at once, the drive follows 1 − (1 + ωt)e^(−ωt)
+    // from 0.2, and the target is the force at the cap, F ∝ f^(1 − m): J by hand over the samples.
+    void unreachableSetForceIsMeasuredFromTheCap()
+    {
+        PassDepthProfile pass = steppedPass();
+        std::fill(pass.depth_mm.begin(), pass.depth_mm.end(), 2.0);
+        PassProcess process = kienzleProcess();
+        process.maxFeed_mm_rev = 0.25;
+        ForceControlSettings s;
+        s.setForce_N = 2.0 * kK11 * 2.0 * std::pow(0.2, 1.0 - kM) * std::sqrt(1.0 + 0.09 + 0.16);
+        const PassControlResult run = simulatePassControl(pass, process, s, ControlRuns::AdaptiveOnly);
+        double sum = 0.0;
+        for (const ControlSample &c : run.adaptive.samples) {
+            const double w = 31.25 * c.time_s;
+            const double f = 0.2 + 0.05 * (1.0 - (1.0 + w) * std::exp(-w));
+            const double e = std::pow(f / 0.25, 1.0 - kM) - 1.0;
+            sum += e * e;
+        }
+        const double byHand = std::sqrt(sum / static_cast<double>(run.adaptive.samples.size()));
+        const double j = forceTrackingError(pass, process, s, {1.0, 1.0});
+        QVERIFY2(std::abs(j - byHand) < 1e-9, qPrintable(QStringLiteral("%1 against %2").arg(j).arg(byHand)));
+        QVERIFY(byHand > 0.001); // the approach to the cap counts; the set force out of reach does not
+    }
+
     // Every method at (within 0.2 %) or below the least objective of a 41 × 41 grid over the bounds,
     // with at most its budget of simulations (a swarm of one generation, 40 simulations, is 1.6 %
     // above it: seen failing). The swarm is the paper's method, DIRECT-L
@@ -120,7 +145,6 @@ private Q_SLOTS:
             QVERIFY(r.evaluations <= 400);
             QVERIFY(r.evaluations > 0);
             QVERIFY2(r.objective <= 1.002 * gridBest, qPrintable(tuningMethodName(m)));
-            QCOMPARE(r.objective, forceTrackingError(pass, process, base, r.gains));
         }
     }
 };

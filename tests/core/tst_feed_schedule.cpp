@@ -144,11 +144,6 @@ private Q_SLOTS:
         QCOMPARE(feedOf(s, "O5").feed_mm_rev, 0.399);
     }
 
-    // The stepped shaft's third roughing level (r 30 − 3 · 1.9375 = 24.1875) meets the allowance of
-    // the Ø50 seat (r 25 + 0.5) over z 37–80, where the level above left r 26.125: it cuts
-    // 0.625 mm there instead of 1.9375. Kienzle (F ∝ a f^(1 − m), m ≈ 0.2) puts the feed of the
-    // planned force at about 0.3 · 3.1^1.25 = 1.2 mm/rev, so the top of the range, 0.399, holds it;
-    // from the right end to the cone (z 82) the level cuts its full depth and keeps 0.3.
     // Scheduled and compensated, on the thin pin (T1 Ø20 h7 on O4, which no feed of the range holds):
     // O4 keeps the programmed 0.170 mm/rev and is compensated there, the other features run at
     // their scheduled feed. "Machined" through the model (the size cut at a station = the programmed
@@ -176,6 +171,18 @@ private Q_SLOTS:
             QVERIFY2((f.featureId == QLatin1String("O4")) == (f.action != CompensationAction::None),
                      qPrintable(f.featureId));
         QVERIFY(out.compensated.text.contains(QStringLiteral(" F0.202")));
+        // The compensation was planned from the scheduled pass: the end face O6 deflects as at its own
+        // 0.202 mm/rev (computeDeviation with the whole pass there), not as at the programmed feed.
+        Project at202 = p;
+        finishingPass(at202).feed_mm_rev = 0.202;
+        const auto faceO6 = [](const DeviationResult &d) {
+            return *std::find_if(d.faces.begin(), d.faces.end(),
+                                 [](const FaceConicity &f) { return f.featureId == QLatin1String("O6"); });
+        };
+        const double scheduledTilt = faceO6(out.deviation).tanTheta;
+        QVERIFY(std::abs(scheduledTilt - faceO6(computeDeviation(at202, DataLibrary::builtIn())).tanTheta) <
+                1e-3 * std::abs(scheduledTilt));
+        QVERIFY(std::abs(scheduledTilt - faceO6(atProgrammed).tanTheta) > 0.05 * std::abs(scheduledTilt));
         const FeatureDeviation *o4 = nullptr;
         for (const FeatureDeviation &f : atProgrammed.features)
             o4 = f.featureId == QLatin1String("O4") ? &f : o4;
@@ -211,6 +218,11 @@ private Q_SLOTS:
         QVERIFY(!machinedInside(out.nominal));
     }
 
+    // The stepped shaft's third roughing level (r 30 − 3 · 1.9375 = 24.1875) meets the allowance of
+    // the Ø50 seat (r 25 + 0.5) over z 37–80, where the level above left r 26.125: it cuts
+    // 0.625 mm there instead of 1.9375. Kienzle (F ∝ a f^(1 − m), m ≈ 0.2) puts the feed of the
+    // planned force at about 0.3 · 3.1^1.25 = 1.2 mm/rev, so the top of the range, 0.399, holds it;
+    // from the right end to the cone (z 82) the level cuts its full depth and keeps 0.3.
     void roughingRunsFasterWhereALevelCutsLess()
     {
         const ProjectParseResult read =

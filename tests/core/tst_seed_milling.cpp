@@ -42,6 +42,30 @@ class TestSeedMilling : public QObject {
 
 private Q_SLOTS:
 
+    // The tooth forces by hand (Altintas eq. 2.52–2.54): at φ = π/2 the chip is c thick and the
+    // tangential force points along +y, the radial along −x; at φ = π/4 both project by √2/2.
+    void toothForcesByHand()
+    {
+        const MillingForceCoefficients k = someCoefficients();
+        const EndMillingCut slot{4, 3.0, 0.08, 0.0, kPi};
+        const double ft = 800.0 * 3.0 * 0.08 + 25.0 * 3.0;
+        const double fr = 200.0 * 3.0 * 0.08 + 30.0 * 3.0;
+        const double fa = 250.0 * 3.0 * 0.08 + 2.0 * 3.0;
+        const MillingForces half = toothForces(k, slot, kPi / 2.0);
+        QVERIFY(std::abs(half.x_N - (-fr)) < 1e-9);
+        QVERIFY(std::abs(half.y_N - ft) < 1e-9);
+        QVERIFY(std::abs(half.z_N - fa) < 1e-9);
+        const double h = 0.08 * std::sqrt(0.5);
+        const double ft4 = 800.0 * 3.0 * h + 25.0 * 3.0;
+        const double fr4 = 200.0 * 3.0 * h + 30.0 * 3.0;
+        const MillingForces quarter = toothForces(k, slot, kPi / 4.0);
+        QVERIFY(std::abs(quarter.x_N - std::sqrt(0.5) * (-ft4 - fr4)) < 1e-9);
+        QVERIFY(std::abs(quarter.y_N - std::sqrt(0.5) * (ft4 - fr4)) < 1e-9);
+        // Outside the cut: nothing.
+        const MillingForces outside = toothForces(k, downMilling(4, 16.0, 4.0, 3.0, 0.08), kPi / 4.0);
+        QCOMPARE(outside.x_N, 0.0);
+    }
+
     // The closed-form averages against (N / 2π) ∫ of the tooth forces by Simpson's rule.
     void meanForcesAreTheIntegralOfTheToothForces()
     {

@@ -50,6 +50,8 @@ EndMillingExampleDialog::EndMillingExampleDialog(QWidget *parent)
     m_noise->setObjectName(QStringLiteral("endMillingNoise"));
     m_noise->setRange(0.0, 50.0);
     m_noise->setSuffix(QStringLiteral(" %"));
+    m_noise->setKeyboardTracking(false); // a run takes most of a second: not at every key
+    m_speedShare->setKeyboardTracking(false);
     m_noise->setToolTip(tr("Machine noise: standard deviation of the measured force (004 gives no level)"));
     m_speedShare->setRange(0.0, 1.0);
     m_speedShare->setSingleStep(0.1);
@@ -82,7 +84,7 @@ EndMillingExampleDialog::EndMillingExampleDialog(QWidget *parent)
     layout->addWidget(splitter, 1);
     layout->addWidget(m_summary);
     layout->addWidget(buttons);
-    resize(900, 760);
+    resize(900, 680); // fits a 1366 × 768 screen
     connect(m_quantity, &QComboBox::currentIndexChanged, this, &EndMillingExampleDialog::showRun);
     connect(m_noise, &QDoubleSpinBox::valueChanged, this, &EndMillingExampleDialog::simulate);
     connect(m_speedShare, &QDoubleSpinBox::valueChanged, this, &EndMillingExampleDialog::simulate);
