@@ -75,7 +75,6 @@ double gridBest(const PlanningProblem &problem, int k, int n)
 }
 
 using tolturn::test::Move;
-using tolturn::test::readMoves;
 
 // The program of a project (its machine's dialect) and the moves of its finishing pass.
 QString programFor(const Project &p, const CompensationPlan *plan,
