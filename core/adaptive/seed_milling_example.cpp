@@ -237,15 +237,20 @@ SeedExampleResult runSeedExample(const SeedControlSettings &settings)
 {
     SeedExampleResult r;
     r.setup = seedMillingSetup();
-    const ForceNetwork network = seedForceNetwork(r.setup);
-    r.unseenError = network.rmsRelativeError(seedMillingCutData(r.setup, true));
+    r.network = std::make_shared<const ForceNetwork>(seedForceNetwork(r.setup));
+    r.unseenError = r.network->rmsRelativeError(seedMillingCutData(r.setup, true));
     for (const TuningMethod m : allTuningMethods())
         r.conditions.push_back(
-            optimiseSeedConditions(r.setup, network, settings.setForce_N, m, kSeedOptimiserEvaluations));
-    r.settings = settings;
-    r.loop = simulateSeedControl(r.setup, network, printedSurfaceControlModels(), settings);
-    r.table = reproduceSeedTable(r.setup, network, printedSurfaceControlModels(), settings);
+            optimiseSeedConditions(r.setup, *r.network, settings.setForce_N, m, kSeedOptimiserEvaluations));
+    rerunSeedLoop(r, settings);
     return r;
+}
+
+void rerunSeedLoop(SeedExampleResult &result, const SeedControlSettings &settings)
+{
+    result.settings = settings;
+    result.loop = simulateSeedControl(result.setup, *result.network, printedSurfaceControlModels(), settings);
+    result.table = reproduceSeedTable(result.setup, *result.network, printedSurfaceControlModels(), settings);
 }
 
 bool outsideSeedNetworkRange(double feedRate_mm_min, double spindle_rpm)

@@ -13,6 +13,7 @@
 #include "core/adaptive/force_network.h"
 #include "core/adaptive/surface_control_models.h"
 
+#include <memory>
 #include <vector>
 
 namespace tolturn {
@@ -136,6 +137,7 @@ constexpr double kSeedHighestSpindle_rpm = 2600.0;
 // points, the PSO-NN conditions by every method, the loop of table 1 simulation 5 and every row.
 struct SeedExampleResult {
     SeedMillingSetup setup;
+    std::shared_ptr<const ForceNetwork> network; // trained once; the loop reruns on it
     double unseenError = 0.0;
     std::vector<SeedConditions> conditions;
     SeedControlSettings settings;
@@ -146,6 +148,10 @@ struct SeedExampleResult {
 constexpr int kSeedOptimiserEvaluations = 400;
 
 [[nodiscard]] SeedExampleResult runSeedExample(const SeedControlSettings &settings);
+
+// The loop and the table again with other settings of the loop (noise, speed share, duration) on
+// the network already trained; the conditions, which depend on the set force alone, stay.
+void rerunSeedLoop(SeedExampleResult &result, const SeedControlSettings &settings);
 
 // True where a feed rate and a speed lie outside the range the network was trained on (it then
 // extrapolates).

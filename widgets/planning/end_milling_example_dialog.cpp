@@ -96,7 +96,10 @@ void EndMillingExampleDialog::simulate()
     SeedControlSettings settings;
     settings.forceNoise = m_noise->value() / 100.0;
     settings.speedShare = m_speedShare->value();
-    m_result = runSeedExample(settings);
+    if (m_result.network)
+        rerunSeedLoop(m_result, settings); // the network and the conditions do not change
+    else
+        m_result = runSeedExample(settings);
     showRun();
     showTable();
 }
