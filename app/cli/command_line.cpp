@@ -13,6 +13,7 @@
 #include "app/cli/iso286_command.h"
 #include "app/cli/learn_command.h"
 #include "app/cli/measurements_command.h"
+#include "app/cli/milling_commands.h"
 #include "app/cli/planning_commands.h"
 #include "app/cli/report_command.h"
 #include "app/cli/stiffness_command.h"
@@ -151,6 +152,8 @@ const std::vector<Command> &commands()
         {QStringLiteral("simulate-control"), simulateControlSynopsis(), simulateControlSummary(), runSimulateControl},
         {QStringLiteral("tune-control"), tuneControlSynopsis(), tuneControlSummary(), runTuneControl},
         {QStringLiteral("control-example"), controlExampleSynopsis(), controlExampleSummary(), runControlExample},
+        {QStringLiteral("mill-forces"), millForcesSynopsis(), millForcesSummary(), runMillForces},
+        {QStringLiteral("mill-deflect"), millDeflectSynopsis(), millDeflectSummary(), runMillDeflect},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
         {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
          CommandLine::tr(

@@ -13,6 +13,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
 
 using tolturn::test::example;
 using tolturn::test::Run;
@@ -776,6 +777,73 @@ private Q_SLOTS:
         QCOMPARE(bad.exitCode, 2);
         QVERIFY2(bad.err.contains(QStringLiteral("--speed-share: \"2\" is not a number from 0 to 1")),
                  qPrintable(bad.err));
+    }
+
+    // mill-forces and mill-deflect (issue 19): the model is tested in tst_ball_end_forces; here the
+    // commands. 001 case 2 (one flute, lead and tilt 15°, slot, a = 3 mm, 0.1 mm/rev, 269 1/min) with
+    // K_tc only: the mean torque is K_tc f_t ∫R dz / π at any lead and tilt, ∫₀³ R dz = 9π − (3/2)√27
+    // − 18 asin(1/2) = 6π − 7.7942 = 11.0553 mm² (R_o = 6), so 1000 · 0.1 · 11.0553 / π = 351.90
+    // N·mm, and the power 0.35190 N·m · 2π · 269 / 60 = 9.913 W.
+    void millingCommandsFollowThePaper()
+    {
+        constexpr double kPi = std::numbers::pi;
+        const QStringList case2 = {QStringLiteral("--case"), QStringLiteral("2"), QStringLiteral("--coefficients"),
+                                   QStringLiteral("1000,0,0,0,0,0")};
+        const Run r = runCli(QStringList{QStringLiteral("mill-forces"), QStringLiteral("--json")} + case2);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const double integral = 6.0 * kPi - 1.5 * std::sqrt(27.0);
+        const double torque = 1000.0 * 0.1 * integral / kPi;
+        QVERIFY2(std::abs(json.value(QStringLiteral("mean_torque_N_mm")).toDouble() / torque - 1.0) < 2e-3,
+                 qPrintable(r.out.left(400)));
+        QVERIFY(std::abs(json.value(QStringLiteral("mean_power_W")).toDouble() -
+                         torque * 1e-3 * 2.0 * kPi * 269.0 / 60.0) < 0.03);
+        QCOMPARE(json.value(QStringLiteral("samples")).toArray().size(), 360);
+        const Run csv = runCli(QStringList{QStringLiteral("mill-forces"), QStringLiteral("--csv"),
+                                           QStringLiteral("--angles"), QStringLiteral("90")} +
+                               case2);
+        QVERIFY2(csv.exitCode == 0, qPrintable(csv.err));
+        QCOMPARE(csv.out.trimmed().split(QLatin1Char('\n')).size(), 1 + 90);
+
+        const Run noData = runCli({QStringLiteral("mill-forces"), QStringLiteral("--case"), QStringLiteral("1")});
+        QCOMPARE(noData.exitCode, 2);
+        QVERIFY2(noData.err.contains(QStringLiteral("--coefficients")), qPrintable(noData.err));
+        const Run deep = runCli(
+            QStringList{QStringLiteral("mill-forces"), QStringLiteral("--axial-depth"), QStringLiteral("5")} + case2);
+        QCOMPARE(deep.exitCode, 2);
+        QVERIFY2(deep.err.contains(QStringLiteral("axial depth: 5 mm is not within the ball")), qPrintable(deep.err));
+        const Run noTool = runCli({QStringLiteral("mill-forces"), QStringLiteral("--diameter"), QStringLiteral("10")});
+        QCOMPARE(noTool.exitCode, 2);
+        QVERIFY2(
+            noTool.err.contains(QStringLiteral("--flutes, --axial-depth, --feed-per-tooth, --spindle-speed missing")),
+            qPrintable(noTool.err));
+
+        // mill-deflect: a structure is needed; with --case the paper's springs are used and said to be.
+        const Run noStructure = runCli(QStringList{QStringLiteral("mill-deflect")} + case2);
+        QCOMPARE(noStructure.exitCode, 2);
+        QVERIFY2(noStructure.err.contains(QStringLiteral("--overhang, --equivalent-diameter missing")),
+                 qPrintable(noStructure.err));
+        const QStringList structure = {QStringLiteral("--overhang"), QStringLiteral("40"),
+                                       QStringLiteral("--equivalent-diameter"), QStringLiteral("9.6")};
+        const Run text = runCli(QStringList{QStringLiteral("mill-deflect")} + case2 + structure);
+        QVERIFY2(text.exitCode == 0, qPrintable(text.err));
+        QVERIFY2(text.out.contains(QStringLiteral("k = 6306 N/mm")) &&
+                     text.out.contains(QStringLiteral("001's calibration")),
+                 qPrintable(text.out));
+        const Run deflection =
+            runCli(QStringList{QStringLiteral("mill-deflect"), QStringLiteral("--json")} + case2 + structure);
+        QVERIFY2(deflection.exitCode == 0, qPrintable(deflection.err));
+        const QJsonObject d = QJsonDocument::fromJson(deflection.out.toUtf8()).object();
+        const QJsonObject range = d.value(QStringLiteral("surface_normal_error_um")).toObject();
+        QVERIFY(range.value(QStringLiteral("least")).toDouble() < range.value(QStringLiteral("greatest")).toDouble());
+        // The generating point of a 15°/15° tool: R_o (1 − cos²15°) = 6 · 0.066987 = 0.40192 mm.
+        QVERIFY(std::abs(d.value(QStringLiteral("generating_point_height_mm")).toDouble() - 0.401924) < 1e-5);
+        const Run badHolder =
+            runCli(QStringList{QStringLiteral("mill-deflect"), QStringLiteral("--holder"), QStringLiteral("6306")} +
+                   case2 + structure);
+        QCOMPARE(badHolder.exitCode, 2);
+        QVERIFY2(badHolder.err.contains(QStringLiteral("--holder: \"6306\" is not two numbers")),
+                 qPrintable(badHolder.err));
     }
 
     // verify-fe (issue 17): the solid check from the command line on a coarse mesh. Its accuracy

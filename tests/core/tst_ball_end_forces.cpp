@@ -4,6 +4,7 @@
 // here from the paper's tables and the classic ball-end force directions.
 #include "core/milling/ball_end_deflection.h"
 #include "core/milling/ball_end_forces.h"
+#include "core/milling/seed_ball_end_cases.h"
 
 #include <QTest>
 
@@ -294,6 +295,30 @@ private Q_SLOTS:
         QCOMPARE(problems.size(), std::size_t(1));
         QVERIFY(QString::fromStdString(problems.front()).contains(QStringLiteral("axial depth: 2.1 mm")));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)ballEndForces(mill, allSix(), cut, {}));
+    }
+
+    // 001 table 4 as bundled: the feed is printed per revolution, so case 4's two flutes take
+    // 0.05 mm each; case 3 is a side cut 4.5962 mm wide, the others slots; every cut on the ball.
+    void paperCasesAsPrinted()
+    {
+        const auto cases = seedBallEndCases();
+        QCOMPARE(cases.size(), std::size_t(4));
+        const double leads[] = {0.0, 15.0, -10.0, 30.0};
+        const double tilts[] = {-15.0, 15.0, 0.0, 30.0};
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const SeedBallEndCase &c = cases[i];
+            QCOMPARE(c.mill.diameter_mm, 12.0);
+            QVERIFY(near(c.mill.helix_rad, kPi / 6.0, 1e-15));
+            QVERIFY(near(c.cut.lead_rad, leads[i] * kPi / 180.0, 1e-15));
+            QVERIFY(near(c.cut.tilt_rad, tilts[i] * kPi / 180.0, 1e-15));
+            QVERIFY(near(c.cut.feedPerTooth_mm * c.mill.flutes, 0.1, 1e-15));
+            QVERIFY(validateBallEndCut(c.mill, c.cut, {}).empty());
+        }
+        QCOMPARE(cases[3].mill.flutes, 2);
+        QCOMPARE(cases[3].spindle_rpm, 500.0);
+        QCOMPARE(cases[2].cut.kind, BallEndCutKind::SideCut);
+        QCOMPARE(cases[2].cut.radialDepth_mm, 4.5962);
+        QCOMPARE(cases[0].cut.kind, BallEndCutKind::Slot);
     }
 
     // Table 3 for the paper's tool (k = 6306 N/mm, k_θ = 1.656·10⁷ N·mm/rad), a Ø9.6 mm cylinder of

@@ -1,0 +1,540 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/milling_commands.h"
+
+#include "app/cli/cli_common.h"
+#include "app/cli/command_line.h"
+#include "core/common/csv.h"
+#include "core/milling/ball_end_deflection.h"
+#include "core/milling/seed_ball_end_cases.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QTextStream>
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace tolturn {
+
+namespace {
+
+struct MillingCommand {
+    Q_DECLARE_TR_FUNCTIONS(MillingCommand)
+};
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// The largest coefficient taken: K_tc of the hardest materials is a few thousand N/mm².
+constexpr double kMaxCoefficient = 100000.0;
+
+// Carbide's Young's modulus: 630 000 N/mm² (MakeItFrom, "Tungsten Carbide (WC)"); cemented carbides
+// span 530 000–700 000 N/mm² (Wikipedia, "Tungsten carbide", 2024-01). resources/data/holders.json
+// keeps both sources (MAKEITFROM_WC, WIKIPEDIA_WC).
+constexpr double kCarbideModulus_N_mm2 = 630000.0;
+
+struct MillingOptions {
+    QCommandLineOption caseNumber{QStringLiteral("case"),
+                                  MillingCommand::tr("Öztürk & Budak's cut 1–4 (001 table 4): tool, cut and speed; "
+                                                     "the options below change it."),
+                                  QStringLiteral("N")};
+    QCommandLineOption diameter{QStringLiteral("diameter"), MillingCommand::tr("Ball diameter in mm."),
+                                QStringLiteral("MM")};
+    QCommandLineOption flutes{QStringLiteral("flutes"), MillingCommand::tr("Number of flutes."), QStringLiteral("N")};
+    QCommandLineOption helix{QStringLiteral("helix"), MillingCommand::tr("Helix angle in degrees (default 30)."),
+                             QStringLiteral("DEG")};
+    QCommandLineOption lead{QStringLiteral("lead"), MillingCommand::tr("Lead angle in degrees (default 0)."),
+                            QStringLiteral("DEG")};
+    QCommandLineOption tilt{QStringLiteral("tilt"), MillingCommand::tr("Tilt angle in degrees (default 0)."),
+                            QStringLiteral("DEG")};
+    QCommandLineOption axialDepth{QStringLiteral("axial-depth"),
+                                  MillingCommand::tr("Axial depth of cut along the surface normal in mm."),
+                                  QStringLiteral("MM")};
+    QCommandLineOption radialDepth{QStringLiteral("radial-depth"),
+                                   MillingCommand::tr("Side cut into uncut material this wide, in mm (table 1); "
+                                                      "without it or --step-over, a slot."),
+                                   QStringLiteral("MM")};
+    QCommandLineOption stepOver{QStringLiteral("step-over"),
+                                MillingCommand::tr("Cut beside a previous pass this far away, in mm (table 2)."),
+                                QStringLiteral("MM")};
+    QCommandLineOption up{QStringLiteral("up"), MillingCommand::tr("Up milling (default down milling).")};
+    QCommandLineOption feedPerTooth{QStringLiteral("feed-per-tooth"), MillingCommand::tr("Feed per tooth in mm."),
+                                    QStringLiteral("MM")};
+    QCommandLineOption spindle{QStringLiteral("spindle-speed"), MillingCommand::tr("Spindle speed in 1/min."),
+                               QStringLiteral("RPM")};
+    QCommandLineOption coefficients{
+        QStringLiteral("coefficients"),
+        MillingCommand::tr("The tool and material's cutting and edge coefficients Ktc,Krc,Kac (N/mm²),Kte,Kre,Kae "
+                           "(N/mm) of the linear edge-force model (001 eq. 11). Required: 001 prints none, and "
+                           "TolTurn's data library has none for ball-end milling."),
+        QStringLiteral("K")};
+    QCommandLineOption slices{QStringLiteral("slices"),
+                              MillingCommand::tr("Disc elements over the engaged height (default 200)."),
+                              QStringLiteral("N"), QStringLiteral("200")};
+    QCommandLineOption angles{QStringLiteral("angles"),
+                              MillingCommand::tr("Rotation angles per revolution (default 360)."), QStringLiteral("N"),
+                              QStringLiteral("360")};
+    QCommandLineOption json{QStringLiteral("json"), MillingCommand::tr("Print the results as JSON.")};
+    QCommandLineOption csv{QStringLiteral("csv"), MillingCommand::tr("Print every rotation angle as CSV.")};
+
+    [[nodiscard]] QList<QCommandLineOption> all() const
+    {
+        return {caseNumber, diameter,     flutes,  helix,        lead,   tilt,   axialDepth, radialDepth, stepOver,
+                up,         feedPerTooth, spindle, coefficients, slices, angles, json,       csv};
+    }
+};
+
+struct MillingInput {
+    BallEndMill mill;
+    BallEndCut cut;
+    double spindle_rpm = 0.0;
+    MillingForceCoefficients coefficients;
+    BallEndResolution resolution;
+    int caseNumber = 0;
+};
+
+void complain(QTextStream &err, const QString &command, const QString &message)
+{
+    err << programName() << ' ' << command << ": " << message << '\n';
+}
+
+std::optional<MillingForceCoefficients> parseCoefficients(const QString &text)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    if (parts.size() != 6)
+        return std::nullopt;
+    double v[6] = {0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < 6; ++i) {
+        bool ok = false;
+        v[i] = parts.at(i).trimmed().toDouble(&ok);
+        if (!ok || !std::isfinite(v[i]) || std::abs(v[i]) > kMaxCoefficient)
+            return std::nullopt;
+    }
+    return MillingForceCoefficients{v[0], v[1], v[2], v[3], v[4], v[5]};
+}
+
+// Sets `target` from an option given in range; false after naming it when it is not.
+bool readNumber(const QCommandLineParser &parser, const QCommandLineOption &option, double lo, double hi, double scale,
+                double &target, const QString &command, QTextStream &err)
+{
+    if (!parser.isSet(option))
+        return true;
+    const std::optional<double> v = numberInRange(parser, option, lo, hi, command, err);
+    if (v)
+        target = *v * scale;
+    return v.has_value();
+}
+
+bool readCut(const QCommandLineParser &parser, const MillingOptions &o, MillingInput &in, const QString &command,
+             QTextStream &err)
+{
+    bool ok = readNumber(parser, o.diameter, 0.1, 100.0, 1.0, in.mill.diameter_mm, command, err);
+    double flutes = in.mill.flutes;
+    ok = readNumber(parser, o.flutes, 1.0, 12.0, 1.0, flutes, command, err) && ok;
+    in.mill.flutes = static_cast<int>(std::lround(flutes));
+    ok = readNumber(parser, o.helix, 0.0, 59.0, kDegree, in.mill.helix_rad, command, err) && ok;
+    ok = readNumber(parser, o.lead, -60.0, 60.0, kDegree, in.cut.lead_rad, command, err) && ok;
+    ok = readNumber(parser, o.tilt, -60.0, 60.0, kDegree, in.cut.tilt_rad, command, err) && ok;
+    ok = readNumber(parser, o.axialDepth, 0.001, 50.0, 1.0, in.cut.axialDepth_mm, command, err) && ok;
+    ok = readNumber(parser, o.feedPerTooth, 0.0001, 2.0, 1.0, in.cut.feedPerTooth_mm, command, err) && ok;
+    ok = readNumber(parser, o.spindle, 1.0, 100000.0, 1.0, in.spindle_rpm, command, err) && ok;
+    if (parser.isSet(o.radialDepth) && parser.isSet(o.stepOver)) {
+        complain(err, command, MillingCommand::tr("give --radial-depth or --step-over, not both"));
+        return false;
+    }
+    if (parser.isSet(o.radialDepth) || parser.isSet(o.stepOver)) {
+        const bool side = parser.isSet(o.radialDepth);
+        in.cut.kind = side ? BallEndCutKind::SideCut : BallEndCutKind::StepOver;
+        ok = readNumber(parser, side ? o.radialDepth : o.stepOver, 0.001, 100.0, 1.0, in.cut.radialDepth_mm, command,
+                        err) &&
+             ok;
+    }
+    if (parser.isSet(o.up))
+        in.cut.direction = MillingDirection::Up;
+    return ok;
+}
+
+bool readResolution(const QCommandLineParser &parser, const MillingOptions &o, MillingInput &in, const QString &command,
+                    QTextStream &err)
+{
+    const std::optional<long long> slices = wholeNumberInRange(parser, o.slices, 1, 20000, command, err);
+    const std::optional<long long> angles = wholeNumberInRange(parser, o.angles, 1, 36000, command, err);
+    if (!slices || !angles)
+        return false;
+    in.resolution = {static_cast<int>(*slices), static_cast<int>(*angles)};
+    return true;
+}
+
+// The tool, cut and coefficients of a mill-* command; nullopt after saying what is wrong.
+std::optional<MillingInput> readMillingInput(const QCommandLineParser &parser, const MillingOptions &o,
+                                             const QString &command, QTextStream &err)
+{
+    MillingInput in;
+    in.mill.helix_rad = 30.0 * kDegree;
+    if (parser.isSet(o.caseNumber)) {
+        const std::optional<long long> number = wholeNumberInRange(parser, o.caseNumber, 1, 4, command, err);
+        if (!number)
+            return std::nullopt;
+        const SeedBallEndCase seed = seedBallEndCases().at(static_cast<std::size_t>(*number - 1));
+        in = {seed.mill, seed.cut, seed.spindle_rpm, {}, {}, seed.number};
+    } else {
+        QStringList missing;
+        for (const QCommandLineOption *required : {&o.diameter, &o.flutes, &o.axialDepth, &o.feedPerTooth, &o.spindle})
+            if (!parser.isSet(*required))
+                missing << QStringLiteral("--") + required->names().constFirst();
+        if (!missing.isEmpty()) {
+            complain(err, command,
+                     MillingCommand::tr("give --case N, or the tool and cut: %1 missing").arg(missing.join(u", ")));
+            return std::nullopt;
+        }
+    }
+    if (!readCut(parser, o, in, command, err) || !readResolution(parser, o, in, command, err))
+        return std::nullopt;
+    if (!parser.isSet(o.coefficients)) {
+        complain(err, command,
+                 MillingCommand::tr("--coefficients Ktc,Krc,Kac,Kte,Kre,Kae is required: Öztürk & Budak print no "
+                                    "coefficients (theirs come from an orthogonal-cutting database of Ti6Al4V through "
+                                    "the oblique transformation), and TolTurn's data library has none for ball-end "
+                                    "milling; give your tool and material's (docs/milling.md)"));
+        return std::nullopt;
+    }
+    const std::optional<MillingForceCoefficients> k = parseCoefficients(parser.value(o.coefficients));
+    if (!k) {
+        complain(err, command,
+                 MillingCommand::tr("--coefficients: \"%1\" is not six numbers Ktc,Krc,Kac,Kte,Kre,Kae of at most %2")
+                     .arg(parser.value(o.coefficients))
+                     .arg(kMaxCoefficient));
+        return std::nullopt;
+    }
+    in.coefficients = *k;
+    const std::vector<std::string> problems = validateBallEndCut(in.mill, in.cut, in.resolution);
+    for (const std::string &p : problems)
+        complain(err, command, QString::fromStdString(p));
+    if (!problems.empty())
+        return std::nullopt;
+    return in;
+}
+
+QString cutKindName(const BallEndCut &cut)
+{
+    switch (cut.kind) {
+    case BallEndCutKind::Slot:
+        return MillingCommand::tr("slot");
+    case BallEndCutKind::SideCut:
+        return MillingCommand::tr("side cut %1 mm wide").arg(cut.radialDepth_mm);
+    case BallEndCutKind::StepOver:
+        return MillingCommand::tr("step-over %1 mm").arg(cut.radialDepth_mm);
+    }
+    return {};
+}
+
+void printSetup(const MillingInput &in, QTextStream &out)
+{
+    if (in.caseNumber > 0)
+        out << MillingCommand::tr("Öztürk & Budak (001) table 4, case %1: DMU 50 Evolution, Ti6Al4V").arg(in.caseNumber)
+            << '\n';
+    out << MillingCommand::tr("Ball-end mill Ø%1 mm, %2 flutes, helix %3°; %4, %5 milling, axial depth %6 mm, "
+                              "feed %7 mm/tooth, %8 1/min; lead %9°, tilt %10°")
+               .arg(in.mill.diameter_mm)
+               .arg(in.mill.flutes)
+               .arg(in.mill.helix_rad / kDegree, 0, 'f', 1)
+               .arg(cutKindName(in.cut),
+                    in.cut.direction == MillingDirection::Down ? MillingCommand::tr("down") : MillingCommand::tr("up"))
+               .arg(in.cut.axialDepth_mm)
+               .arg(in.cut.feedPerTooth_mm)
+               .arg(in.spindle_rpm)
+               .arg(in.cut.lead_rad / kDegree, 0, 'f', 1)
+               .arg(in.cut.tilt_rad / kDegree, 0, 'f', 1)
+        << '\n';
+    const MillingForceCoefficients &k = in.coefficients;
+    out << MillingCommand::tr("Coefficients (given): Ktc %1, Krc %2, Kac %3 N/mm²; Kte %4, Kre %5, Kae %6 N/mm")
+               .arg(k.tangentialCutting_N_mm2)
+               .arg(k.radialCutting_N_mm2)
+               .arg(k.axialCutting_N_mm2)
+               .arg(k.tangentialEdge_N_mm)
+               .arg(k.radialEdge_N_mm)
+               .arg(k.axialEdge_N_mm)
+        << '\n';
+    out << MillingCommand::tr("%1 disc elements, %2 rotation angles per revolution")
+               .arg(in.resolution.axialSlices)
+               .arg(in.resolution.anglesPerRevolution)
+        << "\n\n";
+}
+
+QJsonObject vectorJson(const Eigen::Vector3d &v, const QString &a, const QString &b, const QString &c)
+{
+    return {{a, v.x()}, {b, v.y()}, {c, v.z()}};
+}
+
+QJsonObject summaryJson(const MillingInput &in, const BallEndForceSummary &s)
+{
+    return {{QStringLiteral("case"), in.caseNumber},
+            {QStringLiteral("peak_N"),
+             vectorJson(s.peak_N, QStringLiteral("feed"), QStringLiteral("cross_feed"), QStringLiteral("normal"))},
+            {QStringLiteral("peak_resultant_N"), s.peakResultant_N},
+            {QStringLiteral("mean_torque_N_mm"), s.meanTorque_N_mm},
+            {QStringLiteral("peak_torque_N_mm"), s.peakTorque_N_mm},
+            {QStringLiteral("mean_power_W"), spindlePower_W(s.meanTorque_N_mm, in.spindle_rpm)}};
+}
+
+void printSummary(const MillingInput &in, const BallEndForceSummary &s, QTextStream &out)
+{
+    out << MillingCommand::tr("Peak forces on the tool: F %1 N, C %2 N, N %3 N (feed, cross-feed, surface normal); "
+                              "resultant %4 N")
+               .arg(s.peak_N.x(), 0, 'f', 1)
+               .arg(s.peak_N.y(), 0, 'f', 1)
+               .arg(s.peak_N.z(), 0, 'f', 1)
+               .arg(s.peakResultant_N, 0, 'f', 1)
+        << '\n'
+        << MillingCommand::tr("Torque: mean %1 N·m, peak %2 N·m; mean spindle power %3 W")
+               .arg(s.meanTorque_N_mm / 1000.0, 0, 'f', 3)
+               .arg(s.peakTorque_N_mm / 1000.0, 0, 'f', 3)
+               .arg(spindlePower_W(s.meanTorque_N_mm, in.spindle_rpm), 0, 'f', 1)
+        << '\n';
+}
+
+QString number(double v, int decimals)
+{
+    return QString::number(v, 'f', decimals);
+}
+
+void printForcesCsv(const std::vector<BallEndForceSample> &samples, QTextStream &out)
+{
+    out << csvLine({QStringLiteral("rotation_deg"), QStringLiteral("F_feed_N"), QStringLiteral("F_cross_feed_N"),
+                    QStringLiteral("F_normal_N"), QStringLiteral("Fx_tool_N"), QStringLiteral("Fy_tool_N"),
+                    QStringLiteral("Fz_tool_N"), QStringLiteral("torque_N_mm")})
+        << '\n';
+    for (const BallEndForceSample &s : samples)
+        out << csvLine({number(s.rotation_rad / kDegree, 3), number(s.workpieceFrame_N.x(), 3),
+                        number(s.workpieceFrame_N.y(), 3), number(s.workpieceFrame_N.z(), 3),
+                        number(s.toolFrame_N.x(), 3), number(s.toolFrame_N.y(), 3), number(s.toolFrame_N.z(), 3),
+                        number(s.torque_N_mm, 3)})
+            << '\n';
+}
+
+QJsonArray forcesJson(const std::vector<BallEndForceSample> &samples)
+{
+    QJsonArray list;
+    for (const BallEndForceSample &s : samples)
+        list.append(QJsonObject{
+            {QStringLiteral("rotation_deg"), s.rotation_rad / kDegree},
+            {QStringLiteral("workpiece_N"), vectorJson(s.workpieceFrame_N, QStringLiteral("feed"),
+                                                       QStringLiteral("cross_feed"), QStringLiteral("normal"))},
+            {QStringLiteral("tool_N"),
+             vectorJson(s.toolFrame_N, QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z"))},
+            {QStringLiteral("torque_N_mm"), s.torque_N_mm}});
+    return list;
+}
+
+// Parses a mill-* command's options; -1 to go on, or the exit code.
+int parseMilling(QCommandLineParser &parser, const QString &command, const QStringList &args, QTextStream &out,
+                 QTextStream &err)
+{
+    if (const int stop = parseNamedCommand(parser, command, args, out, err); stop >= 0)
+        return stop;
+    if (!parser.positionalArguments().isEmpty()) {
+        complain(err, command,
+                 MillingCommand::tr("takes no file: \"%1\"").arg(parser.positionalArguments().constFirst()));
+        return kExitUsage;
+    }
+    return -1;
+}
+
+struct DeflectOptions {
+    QCommandLineOption overhang{QStringLiteral("overhang"),
+                                MillingCommand::tr("From where the holder grips the tool to its tip, in mm."),
+                                QStringLiteral("MM")};
+    QCommandLineOption equivalentDiameter{
+        QStringLiteral("equivalent-diameter"),
+        MillingCommand::tr("Diameter of the cylinder that stands for the fluted tool in bending, in mm."),
+        QStringLiteral("MM")};
+    QCommandLineOption modulus{QStringLiteral("modulus"),
+                               MillingCommand::tr("Young's modulus of the tool in N/mm² (default 630000, tungsten "
+                                                  "carbide; cemented carbides span 530000–700000)."),
+                               QStringLiteral("E"), QString::number(kCarbideModulus_N_mm2)};
+    QCommandLineOption holder{QStringLiteral("holder"),
+                              MillingCommand::tr("The holder's springs k (N/mm) and k_θ (N·mm/rad) as K,KTHETA; with "
+                                                 "--case, 001's calibration 6306,1.656e7 for its tool."),
+                              QStringLiteral("K,KTHETA")};
+};
+
+std::optional<BallEndToolStructure> readStructure(const QCommandLineParser &parser, const DeflectOptions &d,
+                                                  const MillingInput &in, const QString &command, QTextStream &err)
+{
+    BallEndToolStructure tool;
+    QStringList missing;
+    for (const QCommandLineOption *required : {&d.overhang, &d.equivalentDiameter})
+        if (!parser.isSet(*required))
+            missing << QStringLiteral("--") + required->names().constFirst();
+    if (!parser.isSet(d.holder) && in.caseNumber == 0)
+        missing << QStringLiteral("--holder");
+    if (!missing.isEmpty()) {
+        complain(err, command,
+                 MillingCommand::tr("the tool's structure is needed: %1 missing").arg(missing.join(u", ")));
+        return std::nullopt;
+    }
+    bool ok = readNumber(parser, d.overhang, 1.0, 1000.0, 1.0, tool.overhang_mm, command, err);
+    ok = readNumber(parser, d.equivalentDiameter, 0.1, 100.0, 1.0, tool.equivalentDiameter_mm, command, err) && ok;
+    tool.youngsModulus_N_mm2 = kCarbideModulus_N_mm2;
+    ok = readNumber(parser, d.modulus, 1000.0, 1.2e6, 1.0, tool.youngsModulus_N_mm2, command, err) && ok;
+    tool.holderStiffness_N_mm = kSeedHolderStiffness_N_mm;
+    tool.holderRotational_N_mm_rad = kSeedHolderRotational_N_mm_rad;
+    if (parser.isSet(d.holder)) {
+        const QStringList parts = parser.value(d.holder).split(QLatin1Char(','));
+        bool okK = parts.size() == 2;
+        bool okTheta = okK;
+        if (okK) {
+            tool.holderStiffness_N_mm = parts.at(0).trimmed().toDouble(&okK);
+            tool.holderRotational_N_mm_rad = parts.at(1).trimmed().toDouble(&okTheta);
+        }
+        if (!okK || !okTheta) {
+            complain(err, command,
+                     MillingCommand::tr("--holder: \"%1\" is not two numbers K,KTHETA").arg(parser.value(d.holder)));
+            ok = false;
+        }
+    }
+    if (!ok)
+        return std::nullopt;
+    const std::vector<std::string> problems = validateToolStructure(tool, in.mill);
+    for (const std::string &p : problems)
+        complain(err, command, QString::fromStdString(p));
+    return problems.empty() ? std::optional(tool) : std::nullopt;
+}
+
+void printDeflectionCsv(const BallEndDeflection &d, QTextStream &out)
+{
+    out << csvLine({QStringLiteral("rotation_deg"), QStringLiteral("dx_um"), QStringLiteral("dy_um"),
+                    QStringLiteral("dz_um"), QStringLiteral("d_feed_um"), QStringLiteral("d_cross_feed_um"),
+                    QStringLiteral("d_normal_um")})
+        << '\n';
+    for (const BallEndDeflectionSample &s : d.deflection)
+        out << csvLine({number(s.rotation_rad / kDegree, 3), number(1000.0 * s.toolFrame_mm.x(), 4),
+                        number(1000.0 * s.toolFrame_mm.y(), 4), number(1000.0 * s.toolFrame_mm.z(), 4),
+                        number(1000.0 * s.workpieceFrame_mm.x(), 4), number(1000.0 * s.workpieceFrame_mm.y(), 4),
+                        number(1000.0 * s.workpieceFrame_mm.z(), 4)})
+            << '\n';
+}
+
+} // namespace
+
+QString millForcesSynopsis()
+{
+    return QStringLiteral("mill-forces [--case N] [--diameter MM --flutes N --axial-depth MM --feed-per-tooth MM "
+                          "--spindle-speed RPM] [--helix DEG] [--lead DEG] [--tilt DEG] [--radial-depth MM|--step-over "
+                          "MM] [--up] --coefficients K [--slices N] [--angles N] [--json|--csv]");
+}
+
+QString millForcesSummary()
+{
+    return MillingCommand::tr("Five-axis ball-end milling forces over a revolution (Öztürk & Budak): on the tool in "
+                              "feed, cross-feed and normal directions, torque and spindle power.");
+}
+
+int runMillForces(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    const QString command = QStringLiteral("mill-forces");
+    QCommandLineParser parser;
+    const MillingOptions o;
+    parser.addOptions(o.all());
+    if (const int stop = parseMilling(parser, command, args, out, err); stop >= 0)
+        return stop;
+    if (parser.isSet(o.json) && parser.isSet(o.csv)) {
+        complain(err, command, MillingCommand::tr("give --json or --csv, not both"));
+        return kExitUsage;
+    }
+    const std::optional<MillingInput> in = readMillingInput(parser, o, command, err);
+    if (!in)
+        return kExitUsage;
+    const std::vector<BallEndForceSample> samples = ballEndForces(in->mill, in->coefficients, in->cut, in->resolution);
+    const BallEndForceSummary summary = summarise(samples);
+    if (parser.isSet(o.json)) {
+        QJsonObject result = summaryJson(*in, summary);
+        result.insert(QStringLiteral("samples"), forcesJson(samples));
+        return printJson(result, out, err, command);
+    }
+    if (parser.isSet(o.csv)) {
+        printForcesCsv(samples, out);
+        return kExitOk;
+    }
+    printSetup(*in, out);
+    printSummary(*in, summary, out);
+    return kExitOk;
+}
+
+QString millDeflectSynopsis()
+{
+    return QStringLiteral("mill-deflect [mill-forces options] --overhang MM --equivalent-diameter MM [--modulus E] "
+                          "[--holder K,KTHETA] [--json|--csv]");
+}
+
+QString millDeflectSummary()
+{
+    return MillingCommand::tr("The ball-end mill's deflection over a revolution and the surface error along the "
+                              "normal it leaves (Öztürk & Budak table 3): the tool a cantilever on springs k, k_θ.");
+}
+
+int runMillDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    const QString command = QStringLiteral("mill-deflect");
+    QCommandLineParser parser;
+    const MillingOptions o;
+    const DeflectOptions d;
+    parser.addOptions(o.all());
+    parser.addOptions({d.overhang, d.equivalentDiameter, d.modulus, d.holder});
+    if (const int stop = parseMilling(parser, command, args, out, err); stop >= 0)
+        return stop;
+    if (parser.isSet(o.json) && parser.isSet(o.csv)) {
+        complain(err, command, MillingCommand::tr("give --json or --csv, not both"));
+        return kExitUsage;
+    }
+    const std::optional<MillingInput> in = readMillingInput(parser, o, command, err);
+    if (!in)
+        return kExitUsage;
+    const std::optional<BallEndToolStructure> tool = readStructure(parser, d, *in, command, err);
+    if (!tool)
+        return kExitUsage;
+    const BallEndDeflection result = ballEndDeflection(in->mill, *tool, in->coefficients, in->cut, in->resolution);
+    const double generating = surfaceGenerationHeight_mm(in->mill, in->cut);
+    if (parser.isSet(o.json)) {
+        QJsonObject json = summaryJson(*in, summarise(result.forces));
+        json.insert(QStringLiteral("surface_normal_error_um"),
+                    QJsonObject{{QStringLiteral("least"), 1000.0 * result.leastSurfaceNormal_mm},
+                                {QStringLiteral("greatest"), 1000.0 * result.greatestSurfaceNormal_mm}});
+        json.insert(QStringLiteral("generating_point_height_mm"), generating);
+        QJsonArray samples;
+        for (const BallEndDeflectionSample &s : result.deflection)
+            samples.append(
+                QJsonObject{{QStringLiteral("rotation_deg"), s.rotation_rad / kDegree},
+                            {QStringLiteral("tool_um"), vectorJson(1000.0 * s.toolFrame_mm, QStringLiteral("x"),
+                                                                   QStringLiteral("y"), QStringLiteral("z"))},
+                            {QStringLiteral("normal_um"), 1000.0 * s.surfaceNormal_mm()}});
+        json.insert(QStringLiteral("samples"), samples);
+        return printJson(json, out, err, command);
+    }
+    if (parser.isSet(o.csv)) {
+        printDeflectionCsv(result, out);
+        return kExitOk;
+    }
+    printSetup(*in, out);
+    printSummary(*in, summarise(result.forces), out);
+    out << MillingCommand::tr("Tool: overhang %1 mm, a Ø%2 mm cylinder of E = %3 N/mm², holder k = %4 N/mm, k_θ = %5 "
+                              "N·mm/rad%6")
+               .arg(tool->overhang_mm)
+               .arg(tool->equivalentDiameter_mm)
+               .arg(tool->youngsModulus_N_mm2)
+               .arg(tool->holderStiffness_N_mm)
+               .arg(tool->holderRotational_N_mm_rad)
+               .arg(parser.isSet(d.holder) ? QString() : MillingCommand::tr(" (001's calibration for its tool)"))
+        << '\n'
+        << MillingCommand::tr("Surface error along the normal, over a revolution: %1 to %2 µm (positive: material "
+                              "left); generating point %3 mm up the axis. Only the tool deflects in this model.")
+               .arg(1000.0 * result.leastSurfaceNormal_mm, 0, 'f', 2)
+               .arg(1000.0 * result.greatestSurfaceNormal_mm, 0, 'f', 2)
+               .arg(generating, 0, 'f', 3)
+        << '\n';
+    return kExitOk;
+}
+
+} // namespace tolturn
