@@ -37,7 +37,7 @@ double edgeLength_mm(double dz_mm, double sinKappa, double tanHelix)
     return dz_mm * std::sqrt(1.0 / (sinKappa * sinKappa) + lagTerm * lagTerm);
 }
 
-std::vector<Slice> slices(const BallEndMill &mill, const BallEndCut &cut, int count)
+std::vector<Slice> elementsOfTheEdge(const BallEndMill &mill, const BallEndCut &cut, int count)
 {
     const double ballRadius = 0.5 * mill.diameter_mm;
     const double tanHelix = std::tan(mill.helix_rad);
@@ -79,6 +79,99 @@ bool inCut(const BallEndCut &cut, double ballRadius, double wallRadius, double x
     return false;
 }
 
+// Eq. 11's forces on the tool in its frame: the radial one against the ball's outward normal
+// (sin κ sin φ, sin κ cos φ, −cos κ), the tangential one against the edge's velocity (cos φ, −sin φ,
+// 0), the axial one along the meridian towards the tip (−cos κ sin φ, −cos κ cos φ, −sin κ): the
+// directions of Lee & Altintas (1996) for the ball-end mill.
+Eigen::Vector3d toolFrameForce(const Slice &s, double sinPhi, double cosPhi, double radial, double tangential,
+                               double axial)
+{
+    return {-radial * s.sinKappa * sinPhi - tangential * cosPhi - axial * s.cosKappa * sinPhi,
+            -radial * s.sinKappa * cosPhi + tangential * sinPhi - axial * s.cosKappa * cosPhi,
+            radial * s.cosKappa - axial * s.sinKappa};
+}
+
+// The sum over the edge at one rotation angle, with what does not change as the tool turns.
+class ForceSummation {
+public:
+    ForceSummation(const BallEndMill &mill, const MillingForceCoefficients &k, const BallEndCut &cut, int slices,
+                   const BallEndSliceCompliance *compliance)
+        : m_k(k)
+        , m_cut(cut)
+        , m_edge(elementsOfTheEdge(mill, cut, slices))
+        , m_compliance(compliance)
+        , m_ballRadius(0.5 * mill.diameter_mm)
+        , m_wallRadius(localRadius_mm(m_ballRadius, cut.axialDepth_mm))
+        , m_toWorkpiece(leadTiltTransform(cut.lead_rad, cut.tilt_rad)) // eq. 6
+    {
+        if (compliance && compliance->lateral_mm_N.size() != m_edge.size())
+            throw std::invalid_argument("ballEndForces: one lateral compliance per slice is needed");
+        // The angle of flute j's element at slice k at rotation φ is φ + j·pitch − ψ_k: its sine and
+        // cosine come from those of φ and of the fixed offset j·pitch − ψ_k.
+        const double pitch = 2.0 * std::numbers::pi / mill.flutes;
+        m_offsets.reserve(m_edge.size() * static_cast<std::size_t>(mill.flutes));
+        for (int j = 0; j < mill.flutes; ++j)
+            for (const Slice &s : m_edge)
+                m_offsets.emplace_back(std::sin(j * pitch - s.lag_rad), std::cos(j * pitch - s.lag_rad));
+    }
+
+    [[nodiscard]] BallEndForceSample at(double rotation_rad) const
+    {
+        BallEndForceSample sample;
+        sample.rotation_rad = rotation_rad;
+        const double sinRotation = std::sin(rotation_rad);
+        const double cosRotation = std::cos(rotation_rad);
+        const std::size_t slices = m_edge.size();
+        for (std::size_t e = 0; e < m_offsets.size(); e += slices)
+            for (std::size_t k = 0; k < slices; ++k) {
+                const Eigen::Vector2d &offset = m_offsets[e + k];
+                addElement(k, sinRotation * offset.y() + cosRotation * offset.x(),
+                           cosRotation * offset.y() - sinRotation * offset.x(), sample);
+            }
+        sample.workpieceFrame_N = m_toWorkpiece * sample.toolFrame_N;
+        return sample;
+    }
+
+private:
+    void addElement(std::size_t k, double sinPhi, double cosPhi, BallEndForceSample &sample) const
+    {
+        const Slice &s = m_edge[k];
+        // The element's point from the ball's centre, tool frame (001 fig. 1), then workpiece frame.
+        const Eigen::Vector3d point =
+            m_toWorkpiece * Eigen::Vector3d(s.radius_mm * sinPhi, s.radius_mm * cosPhi, s.z_mm - m_ballRadius);
+        if (!inCut(m_cut, m_ballRadius, m_wallRadius, point.x(), point.y(), point.z() + m_ballRadius))
+            return;
+        // t = f_t sin φ_WCS sin κ_WCS (eq. 8): the feed along F times the F component of the ball's
+        // unit normal, which is X / R_o; db and dS are the element's (eq. 10).
+        const double widthPerFeed = point.x() / m_ballRadius * s.chipWidth_mm;
+        const Eigen::Vector3d edgeForce =
+            toolFrameForce(s, sinPhi, cosPhi, m_k.radialEdge_N_mm * s.edgeLength_mm,
+                           m_k.tangentialEdge_N_mm * s.edgeLength_mm, m_k.axialEdge_N_mm * s.edgeLength_mm);
+        const Eigen::Vector3d cuttingPerFeed =
+            toolFrameForce(s, sinPhi, cosPhi, m_k.radialCutting_N_mm2 * widthPerFeed,
+                           m_k.tangentialCutting_N_mm2 * widthPerFeed, m_k.axialCutting_N_mm2 * widthPerFeed);
+        const Eigen::Vector3d element = edgeForce + m_cut.feedPerTooth_mm * cuttingPerFeed;
+        sample.toolFrame_N += element;
+        sample.torque_N_mm += s.radius_mm * (m_k.tangentialEdge_N_mm * s.edgeLength_mm +
+                                             m_k.tangentialCutting_N_mm2 * m_cut.feedPerTooth_mm * widthPerFeed);
+        if (m_compliance) {
+            const double lateral = m_compliance->lateral_mm_N[k];
+            const Eigen::Vector3d weights(lateral, lateral, m_compliance->axial_mm_N);
+            sample.deflection_mm += weights.cwiseProduct(element);
+            sample.deflectionPerFeed_mm_mm += weights.cwiseProduct(cuttingPerFeed);
+        }
+    }
+
+    const MillingForceCoefficients &m_k;
+    const BallEndCut &m_cut;
+    std::vector<Slice> m_edge;
+    const BallEndSliceCompliance *m_compliance;
+    double m_ballRadius;
+    double m_wallRadius;
+    Eigen::Matrix3d m_toWorkpiece;
+    std::vector<Eigen::Vector2d> m_offsets; // (sin, cos) per flute and slice
+};
+
 std::string text(const QString &message)
 {
     return message.toStdString();
@@ -112,7 +205,7 @@ std::vector<double> sliceHeights_mm(const BallEndMill &mill, const BallEndCut &c
 {
     std::vector<double> heights;
     heights.reserve(static_cast<std::size_t>(resolution.axialSlices));
-    for (const Slice &s : slices(mill, cut, resolution.axialSlices))
+    for (const Slice &s : elementsOfTheEdge(mill, cut, resolution.axialSlices))
         heights.push_back(s.z_mm);
     return heights;
 }
@@ -160,69 +253,11 @@ std::vector<BallEndForceSample> ballEndForces(const BallEndMill &mill, const Mil
 {
     if (const std::vector<std::string> problems = validateBallEndCut(mill, cut, resolution); !problems.empty())
         throw std::invalid_argument(problems.front());
-    const std::vector<Slice> edge = slices(mill, cut, resolution.axialSlices);
-    if (compliance && compliance->lateral_mm_N.size() != edge.size())
-        throw std::invalid_argument("ballEndForces: one lateral compliance per slice is needed");
-    const double ballRadius = 0.5 * mill.diameter_mm;
-    const double wallRadius = localRadius_mm(ballRadius, cut.axialDepth_mm);
-    const Eigen::Matrix3d toWorkpiece = leadTiltTransform(cut.lead_rad, cut.tilt_rad); // eq. 6
-    const double pitch = 2.0 * std::numbers::pi / mill.flutes;
-    const MillingForceCoefficients &k = coefficients;
-
-    // The angle of flute j's element k at rotation φ is φ + j·pitch − ψ_k: its sine and cosine come
-    // from those of φ and of the fixed offset j·pitch − ψ_k.
-    std::vector<Eigen::Vector2d> offsets; // (sin, cos) per flute and slice
-    offsets.reserve(edge.size() * static_cast<std::size_t>(mill.flutes));
-    for (int j = 0; j < mill.flutes; ++j)
-        for (const Slice &s : edge)
-            offsets.emplace_back(std::sin(j * pitch - s.lag_rad), std::cos(j * pitch - s.lag_rad));
-
-    std::vector<BallEndForceSample> samples(static_cast<std::size_t>(resolution.anglesPerRevolution));
-    for (int m = 0; m < resolution.anglesPerRevolution; ++m) {
-        BallEndForceSample &sample = samples[static_cast<std::size_t>(m)];
-        sample.rotation_rad = 2.0 * std::numbers::pi * m / resolution.anglesPerRevolution;
-        const double sinRotation = std::sin(sample.rotation_rad);
-        const double cosRotation = std::cos(sample.rotation_rad);
-        Eigen::Vector3d force = Eigen::Vector3d::Zero();
-        Eigen::Vector3d displacement = Eigen::Vector3d::Zero();
-        for (std::size_t e = 0; e < offsets.size(); ++e) {
-            const std::size_t sliceIndex = e % edge.size();
-            const Slice &s = edge[sliceIndex];
-            const double sinPhi = sinRotation * offsets[e].y() + cosRotation * offsets[e].x();
-            const double cosPhi = cosRotation * offsets[e].y() - sinRotation * offsets[e].x();
-            // The element's point from the ball's centre, tool frame (001 fig. 1), then workpiece frame.
-            const Eigen::Vector3d point =
-                toWorkpiece * Eigen::Vector3d(s.radius_mm * sinPhi, s.radius_mm * cosPhi, s.z_mm - ballRadius);
-            const double height = point.z() + ballRadius;
-            if (!inCut(cut, ballRadius, wallRadius, point.x(), point.y(), height))
-                continue;
-            // t = f_t sin φ_WCS sin κ_WCS (eq. 8): the feed along F times the F component of the
-            // ball's unit normal, which is X / R_o.
-            const double chip = cut.feedPerTooth_mm * point.x() / ballRadius;
-            const double radial = k.radialEdge_N_mm * s.edgeLength_mm + k.radialCutting_N_mm2 * chip * s.chipWidth_mm;
-            const double tangential =
-                k.tangentialEdge_N_mm * s.edgeLength_mm + k.tangentialCutting_N_mm2 * chip * s.chipWidth_mm;
-            const double axial = k.axialEdge_N_mm * s.edgeLength_mm + k.axialCutting_N_mm2 * chip * s.chipWidth_mm;
-            // Eq. 11's forces on the tool in its frame: the radial one against the ball's outward
-            // normal (sin κ sin φ, sin κ cos φ, −cos κ), the tangential one against the edge's
-            // velocity (cos φ, −sin φ, 0), the axial one along the meridian towards the tip
-            // (−cos κ sin φ, −cos κ cos φ, −sin κ) (Lee & Altintas 1996's directions).
-            const Eigen::Vector3d element(
-                -radial * s.sinKappa * sinPhi - tangential * cosPhi - axial * s.cosKappa * sinPhi,
-                -radial * s.sinKappa * cosPhi + tangential * sinPhi - axial * s.cosKappa * cosPhi,
-                radial * s.cosKappa - axial * s.sinKappa);
-            force += element;
-            sample.torque_N_mm += s.radius_mm * tangential;
-            if (compliance) {
-                const double lateral = compliance->lateral_mm_N[sliceIndex];
-                displacement +=
-                    Eigen::Vector3d(lateral * element.x(), lateral * element.y(), compliance->axial_mm_N * element.z());
-            }
-        }
-        sample.toolFrame_N = force;
-        sample.workpieceFrame_N = toWorkpiece * force;
-        sample.deflection_mm = displacement;
-    }
+    const ForceSummation summation(mill, coefficients, cut, resolution.axialSlices, compliance);
+    std::vector<BallEndForceSample> samples;
+    samples.reserve(static_cast<std::size_t>(resolution.anglesPerRevolution));
+    for (int m = 0; m < resolution.anglesPerRevolution; ++m)
+        samples.push_back(summation.at(2.0 * std::numbers::pi * m / resolution.anglesPerRevolution));
     return samples;
 }
 

@@ -79,6 +79,10 @@ struct BallEndForceSample {
     Eigen::Vector3d workpieceFrame_N = Eigen::Vector3d::Zero(); // on the tool, in F, C, N
     double torque_N_mm = 0.0;                                   // about the tool axis
     Eigen::Vector3d deflection_mm = Eigen::Vector3d::Zero();    // in x, y, z; with compliances only
+    // The part of deflection_mm the cutting coefficients make, per mm of feed per tooth: the chip
+    // is proportional to the feed and the engagement does not depend on it, so at another feed f
+    // the deflection is deflection_mm + (f − f_t) · this.
+    Eigen::Vector3d deflectionPerFeed_mm_mm = Eigen::Vector3d::Zero();
 };
 
 // The forces on the tool at anglesPerRevolution rotation angles of one revolution, starting at 0

@@ -366,6 +366,18 @@ private Q_SLOTS:
         }
         QCOMPARE(led.leastSurfaceNormal_mm, least);
         QVERIFY(led.greatestSurfaceNormal_mm > led.leastSurfaceNormal_mm);
+
+        // The deflection is affine in the feed per tooth: at 0.16 mm it is the one at 0.1 mm plus
+        // 0.06 mm times the cutting coefficients' part per mm.
+        BallEndCut faster = cut;
+        faster.feedPerTooth_mm = 0.16;
+        const BallEndDeflection at016 = ballEndDeflection(mill, tool, allSix(), faster, {50, 36});
+        const BallEndDeflection at010 = ballEndDeflection(mill, tool, allSix(), cut, {50, 36});
+        for (std::size_t m = 0; m < at016.forces.size(); ++m) {
+            const BallEndForceSample &s = at010.forces[m];
+            const Eigen::Vector3d predicted = s.deflection_mm + 0.06 * s.deflectionPerFeed_mm_mm;
+            QVERIFY((at016.forces[m].deflection_mm - predicted).norm() < 1e-15 + 1e-12 * predicted.norm());
+        }
     }
 };
 
