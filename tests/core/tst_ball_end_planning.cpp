@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Planning a five-axis ball-end cut against the tolerance of its surface (issue 19,
+// docs/milling.md): the form error of a floating and a located zone (ISO 1101) by hand, the
+// largest feed per tooth in closed form, and the lead–tilt window and plan against the model run
+// again at what they return.
+#include "core/milling/ball_end_planning.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace tolturn;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegree = kPi / 180.0;
+
+// Test coefficients of the order of a titanium alloy's; the tool of 001 with its holder springs, a
+// Ø9.6 mm carbide cylinder 40 mm out.
+const MillingForceCoefficients kCoefficients{2000.0, 700.0, 400.0, 25.0, 40.0, 8.0};
+const BallEndToolStructure kTool{40.0, 9.6, 630000.0, 6306.0, 1.656e7};
+const BallEndMill kMill{12.0, 2, 30.0 * kDegree};
+
+BallEndCut stepOverCut()
+{
+    BallEndCut cut;
+    cut.kind = BallEndCutKind::StepOver;
+    cut.radialDepth_mm = 1.0;
+    cut.axialDepth_mm = 0.5;
+    cut.feedPerTooth_mm = 0.05;
+    return cut;
+}
+
+BallEndPlanSettings settings(int cells)
+{
+    BallEndPlanSettings s;
+    s.leadLowest_rad = -40.0 * kDegree;
+    s.leadHighest_rad = 40.0 * kDegree;
+    s.tiltLowest_rad = -40.0 * kDegree;
+    s.tiltHighest_rad = 40.0 * kDegree;
+    s.highestFeedPerTooth_mm = 0.3;
+    s.columns = cells;
+    s.rows = cells;
+    s.windowResolution = {60, 120};
+    s.planResolution = {200, 360};
+    return s;
+}
+
+// The normal error the model gives at a cut, recomputed from scratch: N row of T times δ.
+std::vector<double> normalErrors(const BallEndCut &cut, const BallEndResolution &resolution)
+{
+    std::vector<double> errors;
+    for (const BallEndDeflectionSample &d : ballEndDeflection(kMill, kTool, kCoefficients, cut, resolution).deflection)
+        errors.push_back(d.surfaceNormal_mm());
+    return errors;
+}
+
+double spread(const std::vector<double> &v)
+{
+    return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+}
+
+} // namespace
+
+class TestBallEndPlanning : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+
+    // δ_N = base + f · perFeed at f = 0.1: {1 + 0.1·10, −2 + 0.1·20, 0.5 − 0.1·30} = {2, 0, −2.5} µm.
+    // Floating: the spread 2 − (−2.5) = 4.5 µm; located: 2 · max |δ_N| = 5 µm.
+    void formErrorByHand()
+    {
+        const SurfaceErrorLine line{{1e-3, -2e-3, 0.5e-3}, {10e-3, 20e-3, -30e-3}};
+        QVERIFY(std::abs(formError_mm(line, 0.1, SurfaceZone::Floating) - 4.5e-3) < 1e-15);
+        QVERIFY(std::abs(formError_mm(line, 0.1, SurfaceZone::Located) - 5e-3) < 1e-15);
+    }
+
+    // base = {1, −1} µm, perFeed = {40, −60} µm/mm: the spread is 2 + 100 f µm, within 10 µm up to
+    // f = 0.08 mm; located, 2 max(|1 + 40 f|, |−1 − 60 f|) = 2 + 120 f ≤ 10 up to
+    // f = 1/15 mm. A tolerance under the
+    // edge forces' own 2 µm spread holds at no feed; a loose one holds at the highest.
+    void largestFeedInClosedForm()
+    {
+        const SurfaceErrorLine line{{1e-3, -1e-3}, {40e-3, -60e-3}};
+        const double floating = largestFeedPerTooth_mm(line, {10e-3, SurfaceZone::Floating}, 0.3);
+        QVERIFY2(std::abs(floating - 0.08) < 1e-12, qPrintable(QString::number(floating, 'g', 15)));
+        QVERIFY(std::abs(largestFeedPerTooth_mm(line, {10e-3, SurfaceZone::Located}, 0.3) - 1.0 / 15.0) < 1e-12);
+        QCOMPARE(largestFeedPerTooth_mm(line, {1.5e-3, SurfaceZone::Floating}, 0.3), 0.0);
+        QCOMPARE(largestFeedPerTooth_mm(line, {1.0, SurfaceZone::Floating}, 0.3), 0.3);
+    }
+
+    // Cells of the window against the model run again at their largest feed: the spread of δ_N is
+    // the tolerance where the feed is bound, and 2 % more feed breaks it. Off the ball: a 40°/40°
+    // tool is inclined θ = acos(cos² 40°) = 54.1°, so the ball reaches 6 (1 − sin θ) = 1.14 mm deep,
+    // short of a 1.5 mm cut.
+    void windowCellsHoldTheTolerance()
+    {
+        BallEndCut cut = stepOverCut();
+        cut.axialDepth_mm = 1.5;
+        const MilledSurfaceTolerance tolerance{0.020, SurfaceZone::Floating};
+        const LeadTiltWindow window = leadTiltWindow(kMill, kTool, kCoefficients, cut, tolerance, settings(5));
+        QCOMPARE(window.cells.size(), std::size_t(25));
+        int bound = 0;
+        for (const LeadTiltCell &cell : window.cells) {
+            const double inclination = std::acos(std::cos(cell.lead_rad) * std::cos(cell.tilt_rad));
+            QCOMPARE(cell.onBall, 1.5 <= 6.0 * (1.0 - std::sin(inclination)));
+            if (!cell.onBall || cell.largestFeed_mm <= 0.0 || cell.largestFeed_mm >= 0.3)
+                continue;
+            BallEndCut at = cut;
+            at.lead_rad = cell.lead_rad;
+            at.tilt_rad = cell.tilt_rad;
+            at.feedPerTooth_mm = cell.largestFeed_mm;
+            QVERIFY(std::abs(spread(normalErrors(at, {60, 120})) - 0.020) < 1e-9);
+            at.feedPerTooth_mm *= 1.02;
+            QVERIFY(spread(normalErrors(at, {60, 120})) > 0.020);
+            ++bound;
+        }
+        QVERIFY(bound > 0);
+        QVERIFY(!window.cells.front().onBall); // lead −40°, tilt −40°
+    }
+
+    // The plan: its feed holds the tolerance at the plan's resolution, run again from scratch, and
+    // no cell of the window offers a larger feed (a thousandth for the resolutions' difference).
+    // A located zone of the same t asks at least as much as a floating one: its feed is no larger.
+    void planIsTheFastestThatHolds()
+    {
+        const BallEndCut cut = stepOverCut();
+        const MilledSurfaceTolerance tolerance{0.010, SurfaceZone::Floating};
+        const BallEndPlan plan = planBallEndCut(kMill, kTool, kCoefficients, cut, 3000.0, tolerance, settings(9));
+        QVERIFY(plan.feasible);
+        QVERIFY(plan.cut.feedPerTooth_mm > 0.0);
+        QVERIFY(spread(normalErrors(plan.cut, {200, 360})) <= 0.010 + 1e-12);
+        QVERIFY(std::abs(plan.feedRate_mm_min - plan.cut.feedPerTooth_mm * 2 * 3000.0) < 1e-9);
+        for (const LeadTiltCell &cell : plan.window.cells)
+            QVERIFY2(cell.largestFeed_mm <= plan.cut.feedPerTooth_mm * 1.01,
+                     qPrintable(QStringLiteral("cell %1°, %2°: %3 mm against the plan's %4 mm")
+                                    .arg(cell.lead_rad / kDegree)
+                                    .arg(cell.tilt_rad / kDegree)
+                                    .arg(cell.largestFeed_mm)
+                                    .arg(plan.cut.feedPerTooth_mm)));
+        const BallEndPlan located =
+            planBallEndCut(kMill, kTool, kCoefficients, cut, 3000.0, {0.010, SurfaceZone::Located}, settings(9));
+        QVERIFY(located.cut.feedPerTooth_mm <= plan.cut.feedPerTooth_mm * 1.001);
+        const std::vector<double> errors = normalErrors(located.cut, {200, 360});
+        for (const double e : errors)
+            QVERIFY(std::abs(e) <= 0.005 + 1e-12);
+    }
+
+    // The refinement: from a 3 × 3 grid, Subplex reaches within 1 % of the best feed a 21 × 21 grid
+    // of the same bounds finds, where the 3 × 3 grid's own best cell is short of it. The bounds keep
+    // away from lead = tilt = 0, where the bending is all in the F–C plane and only the tool's
+    // compression moves the surface: every feed holds there.
+    void refinementFindsWhatTheGridMisses()
+    {
+        const BallEndCut cut = stepOverCut();
+        const MilledSurfaceTolerance tolerance{0.004, SurfaceZone::Floating};
+        const auto bestFeed = [](const LeadTiltWindow &w) {
+            double best = 0.0;
+            for (const LeadTiltCell &c : w.cells)
+                best = std::max(best, c.largestFeed_mm);
+            return best;
+        };
+        const auto within = [](int cells) {
+            BallEndPlanSettings s = settings(cells);
+            s.leadLowest_rad = 5.0 * kDegree;
+            s.tiltLowest_rad = 5.0 * kDegree;
+            s.planResolution = s.windowResolution;
+            return s;
+        };
+        const BallEndPlan plan = planBallEndCut(kMill, kTool, kCoefficients, cut, 3000.0, tolerance, within(3));
+        const double fine = bestFeed(leadTiltWindow(kMill, kTool, kCoefficients, cut, tolerance, within(21)));
+        QVERIFY2(bestFeed(plan.window) < 0.99 * fine,
+                 qPrintable(QStringLiteral("%1 %2").arg(bestFeed(plan.window)).arg(fine)));
+        QVERIFY2(plan.cut.feedPerTooth_mm >= 0.99 * fine,
+                 qPrintable(QStringLiteral("plan %1 mm, 21 × 21 grid %2 mm after %3 evaluations")
+                                .arg(plan.cut.feedPerTooth_mm)
+                                .arg(fine)
+                                .arg(plan.evaluations)));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBallEndPlanning)
+#include "tst_ball_end_planning.moc"
