@@ -154,6 +154,7 @@ const std::vector<Command> &commands()
         {QStringLiteral("control-example"), controlExampleSynopsis(), controlExampleSummary(), runControlExample},
         {QStringLiteral("mill-forces"), millForcesSynopsis(), millForcesSummary(), runMillForces},
         {QStringLiteral("mill-deflect"), millDeflectSynopsis(), millDeflectSummary(), runMillDeflect},
+        {QStringLiteral("mill-optimize"), millOptimizeSynopsis(), millOptimizeSummary(), runMillOptimize},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
         {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
          CommandLine::tr(

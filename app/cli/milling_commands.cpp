@@ -5,6 +5,7 @@
 #include "app/cli/command_line.h"
 #include "core/common/csv.h"
 #include "core/milling/ball_end_deflection.h"
+#include "core/milling/ball_end_planning.h"
 #include "core/milling/seed_ball_end_cases.h"
 
 #include <QCommandLineParser>
@@ -169,7 +170,7 @@ bool readResolution(const QCommandLineParser &parser, const MillingOptions &o, M
 
 // The tool, cut and coefficients of a mill-* command; nullopt after saying what is wrong.
 std::optional<MillingInput> readMillingInput(const QCommandLineParser &parser, const MillingOptions &o,
-                                             const QString &command, QTextStream &err)
+                                             const QString &command, QTextStream &err, bool feedPlanned = false)
 {
     MillingInput in;
     in.mill.helix_rad = 30.0 * kDegree;
@@ -182,8 +183,9 @@ std::optional<MillingInput> readMillingInput(const QCommandLineParser &parser, c
     } else {
         QStringList missing;
         for (const QCommandLineOption *required : {&o.diameter, &o.flutes, &o.axialDepth, &o.feedPerTooth, &o.spindle})
-            if (!parser.isSet(*required))
+            if (!parser.isSet(*required) && !(feedPlanned && required == &o.feedPerTooth))
                 missing << QStringLiteral("--") + required->names().constFirst();
+        in.cut.feedPerTooth_mm = 0.1; // mill-optimize plans it; the force model needs one to start from
         if (!missing.isEmpty()) {
             complain(err, command,
                      MillingCommand::tr("give --case N, or the tool and cut: %1 missing").arg(missing.join(u", ")));
@@ -417,6 +419,134 @@ void printDeflectionCsv(const BallEndDeflection &d, QTextStream &out)
             << '\n';
 }
 
+struct OptimizeOptions {
+    QCommandLineOption tolerance{QStringLiteral("tolerance"),
+                                 MillingCommand::tr("The surface's flatness or profile tolerance t in mm."),
+                                 QStringLiteral("MM")};
+    QCommandLineOption located{QStringLiteral("located"),
+                               MillingCommand::tr("A profile tolerance with datums: every normal error within ±t/2 "
+                                                  "(default: a floating zone, the spread within t).")};
+    QCommandLineOption highestFeed{QStringLiteral("max-feed-per-tooth"),
+                                   MillingCommand::tr("The largest feed per tooth the tool's maker allows, in mm."),
+                                   QStringLiteral("MM")};
+    QCommandLineOption leadRange{QStringLiteral("lead-range"),
+                                 MillingCommand::tr("Leads to search, LO,HI in degrees (default -40,40)."),
+                                 QStringLiteral("LO,HI"), QStringLiteral("-40,40")};
+    QCommandLineOption tiltRange{QStringLiteral("tilt-range"),
+                                 MillingCommand::tr("Tilts to search, LO,HI in degrees (default -40,40)."),
+                                 QStringLiteral("LO,HI"), QStringLiteral("-40,40")};
+    QCommandLineOption cells{QStringLiteral("cells"),
+                             MillingCommand::tr("Leads and tilts of the window, each (default 64)."),
+                             QStringLiteral("N"), QStringLiteral("64")};
+    QCommandLineOption threads{QStringLiteral("threads"), MillingCommand::tr("Threads (default 2)."),
+                               QStringLiteral("N"), QStringLiteral("2")};
+};
+
+// "LO,HI" in degrees within ±60° with LO < HI, into `lo` and `hi` in radians.
+bool readAngleRange(const QCommandLineParser &parser, const QCommandLineOption &option, double &lo, double &hi,
+                    const QString &command, QTextStream &err)
+{
+    const QStringList parts = parser.value(option).split(QLatin1Char(','));
+    bool okLo = parts.size() == 2;
+    bool okHi = okLo;
+    if (okLo) {
+        lo = parts.at(0).trimmed().toDouble(&okLo) * kDegree;
+        hi = parts.at(1).trimmed().toDouble(&okHi) * kDegree;
+    }
+    if (okLo && okHi && lo >= -60.0 * kDegree && hi <= 60.0 * kDegree && lo < hi)
+        return true;
+    complain(err, command,
+             MillingCommand::tr("--%1: \"%2\" is not LO,HI in degrees with -60 <= LO < HI <= 60")
+                 .arg(option.names().constFirst(), parser.value(option)));
+    return false;
+}
+
+std::optional<BallEndPlanSettings> readPlanSettings(const QCommandLineParser &parser, const OptimizeOptions &p,
+                                                    const QString &command, QTextStream &err)
+{
+    BallEndPlanSettings settings;
+    bool ok = readAngleRange(parser, p.leadRange, settings.leadLowest_rad, settings.leadHighest_rad, command, err);
+    ok = readAngleRange(parser, p.tiltRange, settings.tiltLowest_rad, settings.tiltHighest_rad, command, err) && ok;
+    const std::optional<long long> cells = wholeNumberInRange(parser, p.cells, 2, 512, command, err);
+    const std::optional<long long> threads = wholeNumberInRange(parser, p.threads, 1, 64, command, err);
+    if (!parser.isSet(p.highestFeed)) {
+        complain(err, command,
+                 MillingCommand::tr("--max-feed-per-tooth is required: the largest feed per tooth the tool's maker "
+                                    "allows (TolTurn's data library has no ball-end mills)"));
+        return std::nullopt;
+    }
+    const std::optional<double> highest = numberInRange(parser, p.highestFeed, 0.001, 2.0, command, err);
+    if (!ok || !cells || !threads || !highest)
+        return std::nullopt;
+    settings.columns = settings.rows = static_cast<int>(*cells);
+    settings.threads = static_cast<int>(*threads);
+    settings.highestFeedPerTooth_mm = *highest;
+    return settings;
+}
+
+QJsonArray windowJson(const LeadTiltWindow &w)
+{
+    QJsonArray cells;
+    for (const LeadTiltCell &c : w.cells)
+        cells.append(QJsonObject{{QStringLiteral("lead_deg"), c.lead_rad / kDegree},
+                                 {QStringLiteral("tilt_deg"), c.tilt_rad / kDegree},
+                                 {QStringLiteral("on_ball"), c.onBall},
+                                 {QStringLiteral("largest_feed_per_tooth_mm"), c.largestFeed_mm},
+                                 {QStringLiteral("form_error_um"), 1000.0 * c.formError_mm}});
+    return cells;
+}
+
+void printWindowCsv(const LeadTiltWindow &w, QTextStream &out)
+{
+    out << csvLine({QStringLiteral("lead_deg"), QStringLiteral("tilt_deg"), QStringLiteral("on_ball"),
+                    QStringLiteral("largest_feed_per_tooth_mm"), QStringLiteral("form_error_um")})
+        << '\n';
+    for (const LeadTiltCell &c : w.cells)
+        out << csvLine({number(c.lead_rad / kDegree, 3), number(c.tilt_rad / kDegree, 3),
+                        c.onBall ? QStringLiteral("1") : QStringLiteral("0"), number(c.largestFeed_mm, 5),
+                        number(1000.0 * c.formError_mm, 4)})
+            << '\n';
+}
+
+void printPlan(const BallEndPlan &plan, const MilledSurfaceTolerance &tolerance, double highestFeed, QTextStream &out)
+{
+    int onBall = 0;
+    int holding = 0;
+    for (const LeadTiltCell &c : plan.window.cells) {
+        onBall += c.onBall ? 1 : 0;
+        holding += c.onBall && c.largestFeed_mm > 0.0 ? 1 : 0;
+    }
+    out << MillingCommand::tr("Tolerance %1 µm, %2; feed per tooth up to %3 mm")
+               .arg(1000.0 * tolerance.tolerance_mm)
+               .arg(tolerance.zone == SurfaceZone::Floating
+                        ? MillingCommand::tr("floating zone (flatness, or profile without datums): spread of the "
+                                             "normal error")
+                        : MillingCommand::tr("located zone (profile with datums): normal error within ±t/2"))
+               .arg(highestFeed)
+        << '\n'
+        << MillingCommand::tr("Window %1 × %2: %3 cells with the cut on the ball, %4 of them hold the tolerance")
+               .arg(plan.window.columns)
+               .arg(plan.window.rows)
+               .arg(onBall)
+               .arg(holding)
+        << '\n';
+    if (!plan.feasible) {
+        out << MillingCommand::tr("No lead and tilt in the bounds holds the tolerance at any feed: the edge forces "
+                                  "alone deflect the tool too far, or the cut does not stay on the ball.")
+            << '\n';
+        return;
+    }
+    out << MillingCommand::tr("Plan: lead %1°, tilt %2°, feed %3 mm/tooth (%4 mm/min); form error %5 µm "
+                              "(%6 NLopt Subplex evaluations after the window)")
+               .arg(plan.cut.lead_rad / kDegree, 0, 'f', 2)
+               .arg(plan.cut.tilt_rad / kDegree, 0, 'f', 2)
+               .arg(plan.cut.feedPerTooth_mm, 0, 'f', 4)
+               .arg(plan.feedRate_mm_min, 0, 'f', 1)
+               .arg(1000.0 * plan.formError_mm, 0, 'f', 2)
+               .arg(plan.evaluations)
+        << '\n';
+}
+
 } // namespace
 
 QString millForcesSynopsis()
@@ -534,6 +664,75 @@ int runMillDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
                .arg(1000.0 * result.greatestSurfaceNormal_mm, 0, 'f', 2)
                .arg(generating, 0, 'f', 3)
         << '\n';
+    return kExitOk;
+}
+
+QString millOptimizeSynopsis()
+{
+    return QStringLiteral("mill-optimize [mill-forces options] [mill-deflect options] --tolerance MM [--located] "
+                          "--max-feed-per-tooth MM [--lead-range LO,HI] [--tilt-range LO,HI] [--cells N] "
+                          "[--threads N] [--json|--csv]");
+}
+
+QString millOptimizeSummary()
+{
+    return MillingCommand::tr("The lead, tilt and feed per tooth of least machining time that keep the ball-end "
+                              "surface within its flatness or profile tolerance, with the lead–tilt window.");
+}
+
+int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
+{
+    const QString command = QStringLiteral("mill-optimize");
+    QCommandLineParser parser;
+    const MillingOptions o;
+    const DeflectOptions d;
+    const OptimizeOptions p;
+    parser.addOptions(o.all());
+    parser.addOptions({d.overhang, d.equivalentDiameter, d.modulus, d.holder});
+    parser.addOptions({p.tolerance, p.located, p.highestFeed, p.leadRange, p.tiltRange, p.cells, p.threads});
+    if (const int stop = parseMilling(parser, command, args, out, err); stop >= 0)
+        return stop;
+    if (parser.isSet(o.json) && parser.isSet(o.csv)) {
+        complain(err, command, MillingCommand::tr("give --json or --csv, not both"));
+        return kExitUsage;
+    }
+    const std::optional<MillingInput> in = readMillingInput(parser, o, command, err, true);
+    if (!in)
+        return kExitUsage;
+    const std::optional<BallEndToolStructure> tool = readStructure(parser, d, *in, command, err);
+    const std::optional<BallEndPlanSettings> settings = readPlanSettings(parser, p, command, err);
+    if (!tool || !settings)
+        return kExitUsage;
+    if (!parser.isSet(p.tolerance)) {
+        complain(err, command, MillingCommand::tr("--tolerance is required: the surface's tolerance t in mm"));
+        return kExitUsage;
+    }
+    const std::optional<double> t = numberInRange(parser, p.tolerance, 0.0001, 10.0, command, err);
+    if (!t)
+        return kExitUsage;
+    const MilledSurfaceTolerance tolerance{*t, parser.isSet(p.located) ? SurfaceZone::Located : SurfaceZone::Floating};
+    const BallEndPlan plan =
+        planBallEndCut(in->mill, *tool, in->coefficients, in->cut, in->spindle_rpm, tolerance, *settings);
+    if (parser.isSet(o.json)) {
+        QJsonObject json{{QStringLiteral("feasible"), plan.feasible},
+                         {QStringLiteral("lead_deg"), plan.cut.lead_rad / kDegree},
+                         {QStringLiteral("tilt_deg"), plan.cut.tilt_rad / kDegree},
+                         {QStringLiteral("feed_per_tooth_mm"), plan.cut.feedPerTooth_mm},
+                         {QStringLiteral("feed_rate_mm_min"), plan.feedRate_mm_min},
+                         {QStringLiteral("form_error_um"), 1000.0 * plan.formError_mm},
+                         {QStringLiteral("tolerance_um"), 1000.0 * tolerance.tolerance_mm},
+                         {QStringLiteral("zone"), tolerance.zone == SurfaceZone::Floating ? QStringLiteral("floating")
+                                                                                          : QStringLiteral("located")},
+                         {QStringLiteral("evaluations"), plan.evaluations},
+                         {QStringLiteral("window"), windowJson(plan.window)}};
+        return printJson(json, out, err, command);
+    }
+    if (parser.isSet(o.csv)) {
+        printWindowCsv(plan.window, out);
+        return kExitOk;
+    }
+    printSetup(*in, out);
+    printPlan(plan, tolerance, settings->highestFeedPerTooth_mm, out);
     return kExitOk;
 }
 

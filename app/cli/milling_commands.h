@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// tolturn-cli mill-forces and mill-deflect: five-axis ball-end milling after Öztürk & Budak
+// tolturn-cli mill-forces, mill-deflect and mill-optimize: five-axis ball-end milling after Öztürk & Budak
 // (docs/cli.md, docs/milling.md).
 #pragma once
 
@@ -17,5 +17,9 @@ int runMillForces(const QStringList &args, QTextStream &out, QTextStream &err);
 [[nodiscard]] QString millDeflectSynopsis();
 [[nodiscard]] QString millDeflectSummary();
 int runMillDeflect(const QStringList &args, QTextStream &out, QTextStream &err);
+
+[[nodiscard]] QString millOptimizeSynopsis();
+[[nodiscard]] QString millOptimizeSummary();
+int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err);
 
 } // namespace tolturn
