@@ -18,6 +18,7 @@
 #include "widgets/document/project_document.h"
 #include "widgets/fe/solid_check_dialog.h"
 #include "widgets/measurements/measurements_panel.h"
+#include "widgets/milling/milling_panel.h"
 #include "widgets/planning/end_milling_example_dialog.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/profile/feature_panel.h"
@@ -241,6 +242,8 @@ void MainWindow::createDocks()
     tabifyDockWidget(m_importDock, m_problemsDock);
     QDockWidget *measurements = createMeasurementsDock();
     tabifyDockWidget(m_problemsDock, measurements);
+    QDockWidget *milling = createMillingDock();
+    tabifyDockWidget(measurements, milling);
     dock->raise();
     resizeDocks({setup, tolerances}, {440, 660}, Qt::Horizontal);
     resizeDocks({dock}, {380}, Qt::Vertical);
@@ -292,6 +295,7 @@ void MainWindow::createDocks()
     view->addAction(m_importDock->toggleViewAction());
     view->addAction(m_problemsDock->toggleViewAction());
     view->addAction(measurements->toggleViewAction());
+    view->addAction(milling->toggleViewAction());
 }
 
 QDockWidget *MainWindow::createMeasurementsDock()
@@ -305,6 +309,15 @@ QDockWidget *MainWindow::createMeasurementsDock()
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     dock->setWidget(scroll);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    return dock;
+}
+
+QDockWidget *MainWindow::createMillingDock()
+{
+    auto *dock = new QDockWidget(tr("Milling"), this);
+    dock->setObjectName(QStringLiteral("millingDock"));
+    dock->setWidget(new MillingPanel);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
     return dock;
 }

@@ -104,6 +104,7 @@ private:
     void createImportDock();
     void createProblemsDock();
     [[nodiscard]] QDockWidget *createMeasurementsDock();
+    [[nodiscard]] QDockWidget *createMillingDock();
     // The verdicts and curves on physics + what was learned of the machine (Measurements dock).
     void showLearnedPrediction(const Project &project, const LoadedModel &model);
     // A project with problems: what can be shown without computing, and why the rest is not.

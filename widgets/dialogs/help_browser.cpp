@@ -64,6 +64,7 @@ QString HelpBrowser::pageForDock(const QString &dockObjectName)
         {QStringLiteral("importDock"), QStringLiteral("import-messages.html")},
         {QStringLiteral("problemsDock"), QStringLiteral("problems.html")},
         {QStringLiteral("measurementsDock"), QStringLiteral("measurements.html")},
+        {QStringLiteral("millingDock"), QStringLiteral("milling.html")},
         {QStringLiteral("profileView"), QStringLiteral("drawing.html")},
     };
     const auto it = pagesByDock.find(dockObjectName);
@@ -72,11 +73,11 @@ QString HelpBrowser::pageForDock(const QString &dockObjectName)
 
 QStringList HelpBrowser::pages()
 {
-    return {QStringLiteral("index.html"),      QStringLiteral("drawing.html"),
-            QStringLiteral("setup.html"),      QStringLiteral("feature.html"),
-            QStringLiteral("tolerances.html"), QStringLiteral("deflection.html"),
-            QStringLiteral("planning.html"),   QStringLiteral("import-messages.html"),
-            QStringLiteral("problems.html"),   QStringLiteral("measurements.html")};
+    return {
+        QStringLiteral("index.html"),        QStringLiteral("drawing.html"),         QStringLiteral("setup.html"),
+        QStringLiteral("feature.html"),      QStringLiteral("tolerances.html"),      QStringLiteral("deflection.html"),
+        QStringLiteral("planning.html"),     QStringLiteral("import-messages.html"), QStringLiteral("problems.html"),
+        QStringLiteral("measurements.html"), QStringLiteral("milling.html")};
 }
 
 } // namespace tolturn

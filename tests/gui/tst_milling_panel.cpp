@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Milling dock (issue 19, docs/milling.md): what it asks for before it computes, the forces and
+// surface error it shows, and the lead–tilt plan. The numbers are the model's, tested in
+// tst_ball_end_forces and tst_ball_end_planning; here one of them is checked by hand through the
+// dock, so that the dock shows the cut it was given.
+#include "tests/gui/screenshot.h"
+
+#include "widgets/milling/milling_panel.h"
+#include "widgets/plot/line_plot.h"
+#include "widgets/plot/map_plot.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace tolturn;
+
+class TestMillingPanel : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+
+    // Without coefficients nothing is computed and the dock says why, naming the field; the plan
+    // cannot start.
+    void asksForTheCoefficients()
+    {
+        MillingPanel panel;
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("Coefficients: not given")),
+                 qPrintable(panel.summary()->text()));
+        QCOMPARE(panel.forcePlot()->curveCount(), 0);
+        QVERIFY(!panel.planButton()->isEnabled());
+        panel.coefficients()->setText(QStringLiteral("1,2,3"));
+        Q_EMIT panel.coefficients()->editingFinished();
+        QVERIFY(panel.summary()->text().contains(QStringLiteral("is not six numbers")));
+    }
+
+    // 001 case 2 with K_tc = 1000 N/mm² only: the mean torque is K_tc f_t ∫₀³R dz / π =
+    // 1000 · 0.1 · (6π − 1.5√27) / π = 351.9 N·mm (at any lead and tilt: tst_ball_end_forces), shown
+    // as 0.352 N·m; its power at 269 1/min 9.9 W.
+    void showsTheForcesOfTheCut()
+    {
+        MillingPanel panel;
+        panel.loadCase(2);
+        panel.coefficients()->setText(QStringLiteral("1000, 0, 0, 0, 0, 0"));
+        Q_EMIT panel.coefficients()->editingFinished();
+        QCOMPARE(panel.forcePlot()->curveCount(), 4);
+        const double torque = 1000.0 * 0.1 * (6.0 * std::numbers::pi - 1.5 * std::sqrt(27.0)) / std::numbers::pi;
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("mean torque %1 N·m").arg(torque / 1000.0, 0, 'f', 3)),
+                 qPrintable(panel.summary()->text()));
+        // No structure yet: no surface error, and the dock says which field is missing.
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("overhang")), qPrintable(panel.summary()->text()));
+        QVERIFY(!panel.planButton()->isEnabled());
+    }
+
+    // With the tool's structure the surface error is drawn with its zone and given a verdict; the
+    // plan runs on a worker thread and draws the window with the plan's star.
+    void plansLeadTiltAndFeed()
+    {
+        MillingPanel panel;
+        panel.resize(1400, 560);
+        panel.loadCase(1);
+        panel.coefficients()->setText(QStringLiteral("2000, 700, 400, 25, 40, 8"));
+        Q_EMIT panel.coefficients()->editingFinished();
+        auto *overhang = panel.findChild<QDoubleSpinBox *>(QStringLiteral("millingOverhang"));
+        auto *equivalent = panel.findChild<QDoubleSpinBox *>(QStringLiteral("millingEquivalentDiameter"));
+        QVERIFY(overhang && equivalent);
+        QCOMPARE(overhang->specialValueText(), QStringLiteral("not given"));
+        overhang->setValue(40.0);
+        equivalent->setValue(9.6);
+        QCOMPARE(panel.errorPlot()->curveCount(), 3);
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("passes")) ||
+                     panel.summary()->text().contains(QStringLiteral("fails")),
+                 qPrintable(panel.summary()->text()));
+        QVERIFY(panel.planButton()->isEnabled());
+        panel.show();
+        panel.plots()->setCurrentIndex(0);
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        test::saveScreenshot(panel, "milling-forces.png");
+        QSignalSpy finished(&panel, &MillingPanel::planFinished);
+        panel.planButton()->click();
+        QVERIFY(finished.wait(30000));
+        QVERIFY(panel.lastPlan().has_value());
+        QVERIFY(panel.lastPlan()->feasible);
+        QVERIFY(panel.windowPlot()->markers().contains(QStringLiteral("plan")));
+        QCOMPARE(panel.plots()->currentIndex(), 2);
+        test::saveScreenshot(panel, "milling-window.png");
+        panel.plots()->setCurrentIndex(1);
+        test::saveScreenshot(panel, "milling-error.png");
+        // It fits the bottom dock of a 1366 × 768 screen (about 380 px high): the inputs scroll.
+        QVERIFY2(panel.minimumSizeHint().height() <= 380 && panel.minimumSizeHint().width() <= 1366,
+                 qPrintable(QStringLiteral("%1 × %2")
+                                .arg(panel.minimumSizeHint().width())
+                                .arg(panel.minimumSizeHint().height())));
+        panel.resize(1366, 380);
+        panel.plots()->setCurrentIndex(2);
+        QTest::qWait(50);
+        test::saveScreenshot(panel, "milling-dock-1366.png");
+    }
+};
+
+QTEST_MAIN(TestMillingPanel)
+#include "tst_milling_panel.moc"
