@@ -75,6 +75,65 @@
     </message>
 </context>
 <context>
+    <name>BallEndMilling</name>
+    <message>
+        <source>overhang: %1 mm is not from the ball&apos;s radius, %2 mm, to 1000 mm</source>
+        <translation>Auskraglänge: %1 mm liegt nicht zwischen dem Kugelradius, %2 mm, und 1000 mm</translation>
+    </message>
+    <message>
+        <source>equivalent diameter: %1 mm is not above 0 and at most the tool&apos;s %2 mm</source>
+        <translation>Ersatzdurchmesser: %1 mm ist nicht größer als 0 und höchstens der Werkzeugdurchmesser %2 mm</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus: %1 N/mm² is not positive</source>
+        <translation>Elastizitätsmodul: %1 N/mm² ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>holder stiffness k: %1 N/mm is not positive</source>
+        <translation>Halter-Steifigkeit k: %1 N/mm ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>holder rotational stiffness k_θ: %1 N·mm/rad is not positive</source>
+        <translation>Drehsteifigkeit des Halters k_θ: %1 N·mm/rad ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>tool diameter: %1 mm is not a positive diameter</source>
+        <translation>Werkzeugdurchmesser: %1 mm ist kein positiver Durchmesser</translation>
+    </message>
+    <message>
+        <source>flutes: %1 is not 1 to 12</source>
+        <translation>Schneiden: %1 liegt nicht zwischen 1 und 12</translation>
+    </message>
+    <message>
+        <source>helix angle: %1° is not 0 to 60°</source>
+        <translation>Drallwinkel: %1° liegt nicht zwischen 0 und 60°</translation>
+    </message>
+    <message>
+        <source>feed per tooth: %1 mm is not positive</source>
+        <translation>Vorschub je Zahn: %1 mm ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>lead, tilt: %1°, %2° are not within ±60°</source>
+        <translation>Anstellwinkel, Kippwinkel: %1°, %2° liegen nicht innerhalb ±60°</translation>
+    </message>
+    <message>
+        <source>radial depth: %1 mm is not positive</source>
+        <translation>Radiale Zustellung: %1 mm ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>axial slices: %1 is not 1 to 100000</source>
+        <translation>Axiale Scheiben: %1 liegt nicht zwischen 1 und 100000</translation>
+    </message>
+    <message>
+        <source>angles per revolution: %1 is not 1 to 100000</source>
+        <translation>Winkel je Umdrehung: %1 liegt nicht zwischen 1 und 100000</translation>
+    </message>
+    <message>
+        <source>axial depth: %1 mm is not within the ball, 0 to %2 mm at lead %3° and tilt %4° (001 models the ball only)</source>
+        <translation>Axiale Zustellung: %1 mm liegt nicht innerhalb der Kugel, 0 bis %2 mm bei Anstellwinkel %3° und Kippwinkel %4° (001 modelliert nur die Kugel)</translation>
+    </message>
+</context>
+<context>
     <name>CadImportJson</name>
     <message>
         <source>the import&apos;s result has no valid &quot;%1&quot;</source>
@@ -2335,6 +2394,257 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The spindle and feed drives&apos; readings during the finishing cut (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</source>
         <translation>Die Messwerte von Spindel- und Vorschubantrieb während des Schlichtschnitts (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</translation>
+    </message>
+</context>
+<context>
+    <name>MillingCommand</name>
+    <message>
+        <source>Öztürk &amp; Budak&apos;s cut 1–4 (001 table 4): tool, cut and speed; the options below change it.</source>
+        <translation>Schnitt 1–4 von Öztürk &amp; Budak (001 Tabelle 4): Werkzeug, Schnitt und Drehzahl; die Optionen unten ändern ihn.</translation>
+    </message>
+    <message>
+        <source>Ball diameter in mm.</source>
+        <translation>Kugeldurchmesser in mm.</translation>
+    </message>
+    <message>
+        <source>Number of flutes.</source>
+        <translation>Anzahl der Schneiden.</translation>
+    </message>
+    <message>
+        <source>Helix angle in degrees (default 30).</source>
+        <translation>Drallwinkel in Grad (Vorgabe 30).</translation>
+    </message>
+    <message>
+        <source>Lead angle in degrees (default 0).</source>
+        <translation>Anstellwinkel (Lead) in Grad (Vorgabe 0).</translation>
+    </message>
+    <message>
+        <source>Tilt angle in degrees (default 0).</source>
+        <translation>Kippwinkel (Tilt) in Grad (Vorgabe 0).</translation>
+    </message>
+    <message>
+        <source>Axial depth of cut along the surface normal in mm.</source>
+        <translation>Axiale Schnitttiefe entlang der Flächennormalen in mm.</translation>
+    </message>
+    <message>
+        <source>Side cut into uncut material this wide, in mm (table 1); without it or --step-over, a slot.</source>
+        <translation>Seitlicher Schnitt in unbearbeitetes Material dieser Breite, in mm (Tabelle 1); ohne diese Option oder --step-over eine Nut.</translation>
+    </message>
+    <message>
+        <source>Cut beside a previous pass this far away, in mm (table 2).</source>
+        <translation>Schnitt neben einer vorherigen Bahn in diesem Abstand, in mm (Tabelle 2).</translation>
+    </message>
+    <message>
+        <source>Up milling (default down milling).</source>
+        <translation>Gegenlauffräsen (Vorgabe Gleichlauffräsen).</translation>
+    </message>
+    <message>
+        <source>Feed per tooth in mm.</source>
+        <translation>Vorschub je Zahn in mm.</translation>
+    </message>
+    <message>
+        <source>Spindle speed in 1/min.</source>
+        <translation>Spindeldrehzahl in 1/min.</translation>
+    </message>
+    <message>
+        <source>The tool and material&apos;s cutting and edge coefficients Ktc,Krc,Kac (N/mm²),Kte,Kre,Kae (N/mm) of the linear edge-force model (001 eq. 11). Required: 001 prints none, and TolTurn&apos;s data library has none for ball-end milling.</source>
+        <translation>Die Schnitt- und Kantenkoeffizienten Ktc,Krc,Kac (N/mm²),Kte,Kre,Kae (N/mm) von Werkzeug und Werkstoff im linearen Kantenkraftmodell (001 Gl. 11). Erforderlich: 001 druckt keine, und TolTurns Datenbibliothek hat keine für das Kugelkopffräsen.</translation>
+    </message>
+    <message>
+        <source>Disc elements over the engaged height (default 200).</source>
+        <translation>Scheibenelemente über die eingreifende Höhe (Vorgabe 200).</translation>
+    </message>
+    <message>
+        <source>Rotation angles per revolution (default 360).</source>
+        <translation>Drehwinkel je Umdrehung (Vorgabe 360).</translation>
+    </message>
+    <message>
+        <source>Print the results as JSON.</source>
+        <translation>Die Ergebnisse als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <source>Print every rotation angle as CSV.</source>
+        <translation>Jeden Drehwinkel als CSV ausgeben.</translation>
+    </message>
+    <message>
+        <source>give --radial-depth or --step-over, not both</source>
+        <translation>--radial-depth oder --step-over angeben, nicht beides</translation>
+    </message>
+    <message>
+        <source>give --case N, or the tool and cut: %1 missing</source>
+        <translation>--case N oder Werkzeug und Schnitt angeben: %1 fehlt</translation>
+    </message>
+    <message>
+        <source>--coefficients Ktc,Krc,Kac,Kte,Kre,Kae is required: Öztürk &amp; Budak print no coefficients (theirs come from an orthogonal-cutting database of Ti6Al4V through the oblique transformation), and TolTurn&apos;s data library has none for ball-end milling; give your tool and material&apos;s (docs/milling.md)</source>
+        <translation>--coefficients Ktc,Krc,Kac,Kte,Kre,Kae ist erforderlich: Öztürk &amp; Budak drucken keine Koeffizienten (ihre stammen aus einer Orthogonalschnitt-Datenbank für Ti6Al4V über die Schrägschnitt-Transformation), und TolTurns Datenbibliothek hat keine für das Kugelkopffräsen; geben Sie die Ihres Werkzeugs und Werkstoffs an (docs/milling.md)</translation>
+    </message>
+    <message>
+        <source>--coefficients: &quot;%1&quot; is not six numbers Ktc,Krc,Kac,Kte,Kre,Kae of at most %2</source>
+        <translation>--coefficients: „%1“ sind nicht sechs Zahlen Ktc,Krc,Kac,Kte,Kre,Kae von höchstens %2</translation>
+    </message>
+    <message>
+        <source>slot</source>
+        <translation>Nut</translation>
+    </message>
+    <message>
+        <source>side cut %1 mm wide</source>
+        <translation>seitlicher Schnitt %1 mm breit</translation>
+    </message>
+    <message>
+        <source>step-over %1 mm</source>
+        <translation>Bahnabstand %1 mm</translation>
+    </message>
+    <message>
+        <source>Öztürk &amp; Budak (001) table 4, case %1: DMU 50 Evolution, Ti6Al4V</source>
+        <translation>Öztürk &amp; Budak (001) Tabelle 4, Fall %1: DMU 50 Evolution, Ti6Al4V</translation>
+    </message>
+    <message>
+        <source>Ball-end mill Ø%1 mm, %2 flutes, helix %3°; %4, %5 milling, axial depth %6 mm, feed %7 mm/tooth, %8 1/min; lead %9°, tilt %10°</source>
+        <translation>Kugelkopffräser Ø%1 mm, %2 Schneiden, Drall %3°; %4, %5, axiale Zustellung %6 mm, Vorschub %7 mm/Zahn, %8 1/min; Anstellwinkel %9°, Kippwinkel %10°</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>Gleichlauffräsen</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>Gegenlauffräsen</translation>
+    </message>
+    <message>
+        <source>Coefficients (given): Ktc %1, Krc %2, Kac %3 N/mm²; Kte %4, Kre %5, Kae %6 N/mm</source>
+        <translation>Koeffizienten (angegeben): Ktc %1, Krc %2, Kac %3 N/mm²; Kte %4, Kre %5, Kae %6 N/mm</translation>
+    </message>
+    <message>
+        <source>%1 disc elements, %2 rotation angles per revolution</source>
+        <translation>%1 Scheibenelemente, %2 Drehwinkel je Umdrehung</translation>
+    </message>
+    <message>
+        <source>Peak forces on the tool: F %1 N, C %2 N, N %3 N (feed, cross-feed, surface normal); resultant %4 N</source>
+        <translation>Spitzenkräfte am Werkzeug: F %1 N, C %2 N, N %3 N (Vorschub, quer dazu, Flächennormale); Resultierende %4 N</translation>
+    </message>
+    <message>
+        <source>Torque: mean %1 N·m, peak %2 N·m; mean spindle power %3 W</source>
+        <translation>Drehmoment: Mittel %1 N·m, Spitze %2 N·m; mittlere Spindelleistung %3 W</translation>
+    </message>
+    <message>
+        <source>takes no file: &quot;%1&quot;</source>
+        <translation>nimmt keine Datei: „%1“</translation>
+    </message>
+    <message>
+        <source>From where the holder grips the tool to its tip, in mm.</source>
+        <translation>Von der Einspannung im Halter bis zur Werkzeugspitze, in mm.</translation>
+    </message>
+    <message>
+        <source>Diameter of the cylinder that stands for the fluted tool in bending, in mm.</source>
+        <translation>Durchmesser des Zylinders, der das genutete Werkzeug bei Biegung ersetzt, in mm.</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus of the tool in N/mm² (default 630000, tungsten carbide; cemented carbides span 530000–700000).</source>
+        <translation>Elastizitätsmodul des Werkzeugs in N/mm² (Vorgabe 630000, Wolframkarbid; Hartmetalle reichen von 530000 bis 700000).</translation>
+    </message>
+    <message>
+        <source>The holder&apos;s springs k (N/mm) and k_θ (N·mm/rad) as K,KTHETA; with --case, 001&apos;s calibration 6306,1.656e7 for its tool.</source>
+        <translation>Die Federn des Halters k (N/mm) und k_θ (N·mm/rad) als K,KTHETA; mit --case die Kalibrierung aus 001, 6306,1.656e7, für dessen Werkzeug.</translation>
+    </message>
+    <message>
+        <source>the tool&apos;s structure is needed: %1 missing</source>
+        <translation>der Aufbau des Werkzeugs wird benötigt: %1 fehlt</translation>
+    </message>
+    <message>
+        <source>--holder: &quot;%1&quot; is not two numbers K,KTHETA</source>
+        <translation>--holder: „%1“ sind nicht zwei Zahlen K,KTHETA</translation>
+    </message>
+    <message>
+        <source>The surface&apos;s flatness or profile tolerance t in mm.</source>
+        <translation>Ebenheits- oder Profiltoleranz t der Fläche in mm.</translation>
+    </message>
+    <message>
+        <source>A profile tolerance with datums: every normal error within ±t/2 (default: a floating zone, the spread within t).</source>
+        <translation>Eine Profiltoleranz mit Bezügen: jede Normalabweichung innerhalb ±t/2 (Vorgabe: eine schwebende Zone, die Spanne innerhalb t).</translation>
+    </message>
+    <message>
+        <source>The largest feed per tooth the tool&apos;s maker allows, in mm.</source>
+        <translation>Der größte Vorschub je Zahn, den der Werkzeughersteller zulässt, in mm.</translation>
+    </message>
+    <message>
+        <source>Leads to search, LO,HI in degrees (default -40,40).</source>
+        <translation>Zu durchsuchende Anstellwinkel, LO,HI in Grad (Vorgabe -40,40).</translation>
+    </message>
+    <message>
+        <source>Tilts to search, LO,HI in degrees (default -40,40).</source>
+        <translation>Zu durchsuchende Kippwinkel, LO,HI in Grad (Vorgabe -40,40).</translation>
+    </message>
+    <message>
+        <source>Leads and tilts of the window, each (default 64).</source>
+        <translation>Anstell- und Kippwinkel des Fensters, je (Vorgabe 64).</translation>
+    </message>
+    <message>
+        <source>Threads (default 2).</source>
+        <translation>Threads (Vorgabe 2).</translation>
+    </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not LO,HI in degrees with -60 &lt;= LO &lt; HI &lt;= 60</source>
+        <translation>--%1: „%2“ ist nicht LO,HI in Grad mit -60 &lt;= LO &lt; HI &lt;= 60</translation>
+    </message>
+    <message>
+        <source>--max-feed-per-tooth is required: the largest feed per tooth the tool&apos;s maker allows (TolTurn&apos;s data library has no ball-end mills)</source>
+        <translation>--max-feed-per-tooth ist erforderlich: der größte Vorschub je Zahn, den der Werkzeughersteller zulässt (TolTurns Datenbibliothek hat keine Kugelkopffräser)</translation>
+    </message>
+    <message>
+        <source>Tolerance %1 µm, %2; feed per tooth up to %3 mm</source>
+        <translation>Toleranz %1 µm, %2; Vorschub je Zahn bis %3 mm</translation>
+    </message>
+    <message>
+        <source>floating zone (flatness, or profile without datums): spread of the normal error</source>
+        <translation>schwebende Zone (Ebenheit oder Profil ohne Bezüge): Spanne der Normalabweichung</translation>
+    </message>
+    <message>
+        <source>located zone (profile with datums): normal error within ±t/2</source>
+        <translation>lagebestimmte Zone (Profil mit Bezügen): Normalabweichung innerhalb ±t/2</translation>
+    </message>
+    <message>
+        <source>Window %1 × %2: %3 cells with the cut on the ball, %4 of them hold the tolerance</source>
+        <translation>Fenster %1 × %2: %3 Zellen mit dem Schnitt auf der Kugel, %4 davon halten die Toleranz</translation>
+    </message>
+    <message>
+        <source>No lead and tilt in the bounds holds the tolerance at any feed: the edge forces alone deflect the tool too far, or the cut does not stay on the ball.</source>
+        <translation>Kein Anstell- und Kippwinkel in den Grenzen hält die Toleranz bei irgendeinem Vorschub: schon die Kantenkräfte biegen das Werkzeug zu weit aus, oder der Schnitt bleibt nicht auf der Kugel.</translation>
+    </message>
+    <message>
+        <source>Plan: lead %1°, tilt %2°, feed %3 mm/tooth (%4 mm/min); form error %5 µm (%6 NLopt Subplex evaluations after the window)</source>
+        <translation>Plan: Anstellwinkel %1°, Kippwinkel %2°, Vorschub %3 mm/Zahn (%4 mm/min); Formabweichung %5 µm (%6 Auswertungen mit NLopt Subplex nach dem Fenster)</translation>
+    </message>
+    <message>
+        <source>Five-axis ball-end milling forces over a revolution (Öztürk &amp; Budak): on the tool in feed, cross-feed and normal directions, torque and spindle power.</source>
+        <translation>Kräfte beim fünfachsigen Kugelkopffräsen über eine Umdrehung (Öztürk &amp; Budak): am Werkzeug in Vorschub-, Quer- und Normalenrichtung, Drehmoment und Spindelleistung.</translation>
+    </message>
+    <message>
+        <source>give --json or --csv, not both</source>
+        <translation>--json oder --csv angeben, nicht beides</translation>
+    </message>
+    <message>
+        <source>The ball-end mill&apos;s deflection over a revolution and the surface error along the normal it leaves (Öztürk &amp; Budak table 3): the tool a cantilever on springs k, k_θ.</source>
+        <translation>Die Ausbiegung des Kugelkopffräsers über eine Umdrehung und die Flächenabweichung entlang der Normalen, die sie hinterlässt (Öztürk &amp; Budak Tabelle 3): das Werkzeug ein Kragbalken auf den Federn k, k_θ.</translation>
+    </message>
+    <message>
+        <source>Tool: overhang %1 mm, a Ø%2 mm cylinder of E = %3 N/mm², holder k = %4 N/mm, k_θ = %5 N·mm/rad%6</source>
+        <translation>Werkzeug: Auskraglänge %1 mm, ein Zylinder Ø%2 mm mit E = %3 N/mm², Halter k = %4 N/mm, k_θ = %5 N·mm/rad%6</translation>
+    </message>
+    <message>
+        <source> (001&apos;s calibration for its tool)</source>
+        <translation> (Kalibrierung aus 001 für dessen Werkzeug)</translation>
+    </message>
+    <message>
+        <source>Surface error along the normal, over a revolution: %1 to %2 µm (positive: material left); generating point %3 mm up the axis. Only the tool deflects in this model.</source>
+        <translation>Flächenabweichung entlang der Normalen über eine Umdrehung: %1 bis %2 µm (positiv: Material bleibt stehen); erzeugender Punkt %3 mm die Achse hinauf. In diesem Modell biegt sich nur das Werkzeug.</translation>
+    </message>
+    <message>
+        <source>The lead, tilt and feed per tooth of least machining time that keep the ball-end surface within its flatness or profile tolerance, with the lead–tilt window.</source>
+        <translation>Anstellwinkel, Kippwinkel und Vorschub je Zahn mit der kürzesten Bearbeitungszeit, die die kugelkopfgefräste Fläche in ihrer Ebenheits- oder Profiltoleranz halten, mit dem Anstell-Kipp-Fenster.</translation>
+    </message>
+    <message>
+        <source>--tolerance is required: the surface&apos;s tolerance t in mm</source>
+        <translation>--tolerance ist erforderlich: die Toleranz t der Fläche in mm</translation>
     </message>
 </context>
 <context>
@@ -6076,6 +6386,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The constant-force control paper&apos;s own end-milling system rebuilt, beside its results</source>
         <translation>Das eigene Stirnfräs-System des Artikels zur Konstantkraftregelung nachgebaut, neben seinen Ergebnissen</translation>
     </message>
+    <message>
+        <source>Milling</source>
+        <translation>Fräsen</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::MeasuredPartsModel</name>
@@ -6457,6 +6771,333 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the store or the machine changed meanwhile; the model was kept in %1</source>
         <translation>Speicher oder Maschine haben sich inzwischen geändert; das Modell wurde in %1 gespeichert</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MillingPanel</name>
+    <message>
+        <source>Ball-end cut</source>
+        <translation>Kugelkopfschnitt</translation>
+    </message>
+    <message>
+        <source>Öztürk &amp; Budak, case %1</source>
+        <translation>Öztürk &amp; Budak, Fall %1</translation>
+    </message>
+    <message>
+        <source>Own cut</source>
+        <translation>Eigener Schnitt</translation>
+    </message>
+    <message>
+        <source>001 table 4: a DMU 50 Evolution, Ø12 mm ball-end mills with a 30° helix, Ti6Al4V</source>
+        <translation>001 Tabelle 4: eine DMU 50 Evolution, Kugelkopffräser Ø12 mm mit 30° Drall, Ti6Al4V</translation>
+    </message>
+    <message>
+        <source>Example</source>
+        <translation>Beispiel</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation>Nut</translation>
+    </message>
+    <message>
+        <source>Side cut (uncut material)</source>
+        <translation>Seitlicher Schnitt (unbearbeitetes Material)</translation>
+    </message>
+    <message>
+        <source>Step-over (beside a pass)</source>
+        <translation>Bahnabstand (neben einer Bahn)</translation>
+    </message>
+    <message>
+        <source>Down milling</source>
+        <translation>Gleichlauffräsen</translation>
+    </message>
+    <message>
+        <source>Up milling</source>
+        <translation>Gegenlauffräsen</translation>
+    </message>
+    <message>
+        <source> 1/min</source>
+        <translation> 1/min</translation>
+    </message>
+    <message>
+        <source>Ktc, Krc, Kac (N/mm²), Kte, Kre, Kae (N/mm)</source>
+        <translation>Ktc, Krc, Kac (N/mm²), Kte, Kre, Kae (N/mm)</translation>
+    </message>
+    <message>
+        <source>The cutting and edge coefficients of your tool and material (001 eq. 11). 001 prints none, and TolTurn&apos;s data library has none for ball-end milling.</source>
+        <translation>Die Schnitt- und Kantenkoeffizienten Ihres Werkzeugs und Werkstoffs (001 Gl. 11). 001 druckt keine, und TolTurns Datenbibliothek hat keine für das Kugelkopffräsen.</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Durchmesser</translation>
+    </message>
+    <message>
+        <source>Flutes</source>
+        <translation>Schneiden</translation>
+    </message>
+    <message>
+        <source>Helix</source>
+        <translation>Drall</translation>
+    </message>
+    <message>
+        <source>Lead</source>
+        <translation>Anstellwinkel</translation>
+    </message>
+    <message>
+        <source>Tilt</source>
+        <translation>Kippwinkel</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>Radial depth / step-over</source>
+        <translation>Radiale Zustellung / Bahnabstand</translation>
+    </message>
+    <message>
+        <source>Axial depth</source>
+        <translation>Axiale Zustellung</translation>
+    </message>
+    <message>
+        <source>Feed per tooth</source>
+        <translation>Vorschub je Zahn</translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation>Spindeldrehzahl</translation>
+    </message>
+    <message>
+        <source>Coefficients</source>
+        <translation>Koeffizienten</translation>
+    </message>
+    <message>
+        <source>Tool structure and tolerance</source>
+        <translation>Werkzeugaufbau und Toleranz</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <source>From where the holder grips the tool to its tip</source>
+        <translation>Von der Einspannung im Halter bis zur Werkzeugspitze</translation>
+    </message>
+    <message>
+        <source>The diameter of the solid cylinder that bends like the fluted tool</source>
+        <translation>Der Durchmesser des Vollzylinders, der sich wie das genutete Werkzeug biegt</translation>
+    </message>
+    <message>
+        <source> N/mm²</source>
+        <translation> N/mm²</translation>
+    </message>
+    <message>
+        <source>Tungsten carbide 630 000 N/mm² (MakeItFrom); cemented carbides 530 000–700 000</source>
+        <translation>Wolframkarbid 630 000 N/mm² (MakeItFrom); Hartmetalle 530 000–700 000</translation>
+    </message>
+    <message>
+        <source> N/mm</source>
+        <translation> N/mm</translation>
+    </message>
+    <message>
+        <source> N·mm/rad</source>
+        <translation> N·mm/rad</translation>
+    </message>
+    <message>
+        <source> µm</source>
+        <translation> µm</translation>
+    </message>
+    <message>
+        <source>Flatness / profile without datums</source>
+        <translation>Ebenheit / Profil ohne Bezüge</translation>
+    </message>
+    <message>
+        <source>Profile with datums (±t/2)</source>
+        <translation>Profil mit Bezügen (±t/2)</translation>
+    </message>
+    <message>
+        <source>The largest feed per tooth the tool&apos;s maker allows</source>
+        <translation>Der größte Vorschub je Zahn, den der Werkzeughersteller zulässt</translation>
+    </message>
+    <message>
+        <source>Plan Lead, Tilt and Feed</source>
+        <translation>Anstellwinkel, Kippwinkel und Vorschub planen</translation>
+    </message>
+    <message>
+        <source>Overhang</source>
+        <translation>Auskraglänge</translation>
+    </message>
+    <message>
+        <source>Equivalent diameter</source>
+        <translation>Ersatzdurchmesser</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus</source>
+        <translation>Elastizitätsmodul</translation>
+    </message>
+    <message>
+        <source>Holder k</source>
+        <translation>Halter k</translation>
+    </message>
+    <message>
+        <source>Holder k_θ</source>
+        <translation>Halter k_θ</translation>
+    </message>
+    <message>
+        <source>Surface tolerance t</source>
+        <translation>Flächentoleranz t</translation>
+    </message>
+    <message>
+        <source>Zone</source>
+        <translation>Zone</translation>
+    </message>
+    <message>
+        <source>Largest feed per tooth</source>
+        <translation>Größter Vorschub je Zahn</translation>
+    </message>
+    <message>
+        <source>Holder springs: as entered.</source>
+        <translation>Halterfedern: wie eingegeben.</translation>
+    </message>
+    <message>
+        <source>rotation angle [°]</source>
+        <translation>Drehwinkel [°]</translation>
+    </message>
+    <message>
+        <source>force on the tool [N]</source>
+        <translation>Kraft am Werkzeug [N]</translation>
+    </message>
+    <message>
+        <source>surface-normal error [µm]</source>
+        <translation>Abweichung entlang der Flächennormalen [µm]</translation>
+    </message>
+    <message>
+        <source>lead [°]</source>
+        <translation>Anstellwinkel [°]</translation>
+    </message>
+    <message>
+        <source>tilt [°]</source>
+        <translation>Kippwinkel [°]</translation>
+    </message>
+    <message>
+        <source>Plan to see the largest feed per tooth that holds the tolerance at each lead and tilt.</source>
+        <translation>Planen zeigt den größten Vorschub je Zahn, der die Toleranz bei jedem Anstell- und Kippwinkel hält.</translation>
+    </message>
+    <message>
+        <source>Forces</source>
+        <translation>Kräfte</translation>
+    </message>
+    <message>
+        <source>Surface error</source>
+        <translation>Flächenabweichung</translation>
+    </message>
+    <message>
+        <source>Lead–tilt window</source>
+        <translation>Anstell-Kipp-Fenster</translation>
+    </message>
+    <message>
+        <source>Holder springs: 001&apos;s calibration for its Ø12 mm tool and holder, under 1000 N.</source>
+        <translation>Halterfedern: Kalibrierung aus 001 für dessen Werkzeug Ø12 mm und Halter, unter 1000 N.</translation>
+    </message>
+    <message>
+        <source>Coefficients: not given. Enter Ktc, Krc, Kac, Kte, Kre, Kae of your tool and material: Öztürk &amp; Budak print none (theirs come from a Ti6Al4V orthogonal-cutting database), and TolTurn&apos;s data library has none for ball-end milling.</source>
+        <translation>Koeffizienten: nicht angegeben. Geben Sie Ktc, Krc, Kac, Kte, Kre, Kae Ihres Werkzeugs und Werkstoffs ein: Öztürk &amp; Budak drucken keine (ihre stammen aus einer Orthogonalschnitt-Datenbank für Ti6Al4V), und TolTurns Datenbibliothek hat keine für das Kugelkopffräsen.</translation>
+    </message>
+    <message>
+        <source>Coefficients: &quot;%1&quot; is not six numbers of at most 100 000.</source>
+        <translation>Koeffizienten: „%1“ sind nicht sechs Zahlen von höchstens 100 000.</translation>
+    </message>
+    <message>
+        <source>No surface error: %1</source>
+        <translation>Keine Flächenabweichung: %1</translation>
+    </message>
+    <message>
+        <source>F (feed)</source>
+        <translation>F (Vorschub)</translation>
+    </message>
+    <message>
+        <source>C (cross-feed)</source>
+        <translation>C (quer zum Vorschub)</translation>
+    </message>
+    <message>
+        <source>N (normal)</source>
+        <translation>N (Normale)</translation>
+    </message>
+    <message>
+        <source>resultant</source>
+        <translation>Resultierende</translation>
+    </message>
+    <message>
+        <source>Peak resultant %1 N; mean torque %2 N·m, mean spindle power %3 W. Coefficients as entered; only the tool deflects (001 §4).</source>
+        <translation>Größte Resultierende %1 N; mittleres Drehmoment %2 N·m, mittlere Spindelleistung %3 W. Koeffizienten wie eingegeben; nur das Werkzeug biegt sich (001 §4).</translation>
+    </message>
+    <message>
+        <source>δ_N</source>
+        <translation>δ_N</translation>
+    </message>
+    <message>
+        <source>zone, lower</source>
+        <translation>Zone, unten</translation>
+    </message>
+    <message>
+        <source>zone, upper</source>
+        <translation>Zone, oben</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;passes&lt;/b&gt; by %1 µm</source>
+        <translation>&lt;b&gt;besteht&lt;/b&gt; mit %1 µm</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;fails&lt;/b&gt; by %1 µm</source>
+        <translation>&lt;b&gt;verfehlt&lt;/b&gt; um %1 µm</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Surface-normal error %1 to %2 µm over a revolution; against t = %3 µm (%4) it %5.</source>
+        <translation>&lt;br&gt;Abweichung entlang der Flächennormalen %1 bis %2 µm über eine Umdrehung; gegen t = %3 µm (%4): %5.</translation>
+    </message>
+    <message>
+        <source>spread</source>
+        <translation>Spanne</translation>
+    </message>
+    <message>
+        <source>±t/2</source>
+        <translation>±t/2</translation>
+    </message>
+    <message>
+        <source>Planning: 64 × 64 leads and tilts…</source>
+        <translation>Planung: 64 × 64 Anstell- und Kippwinkel…</translation>
+    </message>
+    <message>
+        <source>plan</source>
+        <translation>Plan</translation>
+    </message>
+    <message>
+        <source>as entered</source>
+        <translation>wie eingegeben</translation>
+    </message>
+    <message>
+        <source>Lighter: a larger feed per tooth holds the tolerance; red: none does; grey: the cut would reach the shank above the ball.</source>
+        <translation>Heller: ein größerer Vorschub je Zahn hält die Toleranz; rot: keiner; grau: der Schnitt erreichte den Schaft über der Kugel.</translation>
+    </message>
+    <message>
+        <source>Plan: lead %1°, tilt %2°, feed %3 mm/tooth (%4 mm/min), form error %5 µm. %6</source>
+        <translation>Plan: Anstellwinkel %1°, Kippwinkel %2°, Vorschub %3 mm/Zahn (%4 mm/min), Formabweichung %5 µm. %6</translation>
+    </message>
+    <message>
+        <source>No lead and tilt within ±40° holds the tolerance at any feed. %1</source>
+        <translation>Kein Anstell- und Kippwinkel innerhalb ±40° hält die Toleranz bei irgendeinem Vorschub. %1</translation>
     </message>
 </context>
 <context>

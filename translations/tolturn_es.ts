@@ -75,6 +75,65 @@
     </message>
 </context>
 <context>
+    <name>BallEndMilling</name>
+    <message>
+        <source>overhang: %1 mm is not from the ball&apos;s radius, %2 mm, to 1000 mm</source>
+        <translation>voladizo: %1 mm no está entre el radio de la bola, %2 mm, y 1000 mm</translation>
+    </message>
+    <message>
+        <source>equivalent diameter: %1 mm is not above 0 and at most the tool&apos;s %2 mm</source>
+        <translation>diámetro equivalente: %1 mm no es mayor que 0 y como mucho el de la herramienta, %2 mm</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus: %1 N/mm² is not positive</source>
+        <translation>módulo de Young: %1 N/mm² no es positivo</translation>
+    </message>
+    <message>
+        <source>holder stiffness k: %1 N/mm is not positive</source>
+        <translation>rigidez del portaherramientas k: %1 N/mm no es positiva</translation>
+    </message>
+    <message>
+        <source>holder rotational stiffness k_θ: %1 N·mm/rad is not positive</source>
+        <translation>rigidez rotacional del portaherramientas k_θ: %1 N·mm/rad no es positiva</translation>
+    </message>
+    <message>
+        <source>tool diameter: %1 mm is not a positive diameter</source>
+        <translation>diámetro de la herramienta: %1 mm no es un diámetro positivo</translation>
+    </message>
+    <message>
+        <source>flutes: %1 is not 1 to 12</source>
+        <translation>filos: %1 no está entre 1 y 12</translation>
+    </message>
+    <message>
+        <source>helix angle: %1° is not 0 to 60°</source>
+        <translation>ángulo de hélice: %1° no está entre 0 y 60°</translation>
+    </message>
+    <message>
+        <source>feed per tooth: %1 mm is not positive</source>
+        <translation>avance por diente: %1 mm no es positivo</translation>
+    </message>
+    <message>
+        <source>lead, tilt: %1°, %2° are not within ±60°</source>
+        <translation>avance angular (lead), inclinación (tilt): %1°, %2° no están dentro de ±60°</translation>
+    </message>
+    <message>
+        <source>radial depth: %1 mm is not positive</source>
+        <translation>profundidad radial: %1 mm no es positiva</translation>
+    </message>
+    <message>
+        <source>axial slices: %1 is not 1 to 100000</source>
+        <translation>rodajas axiales: %1 no está entre 1 y 100000</translation>
+    </message>
+    <message>
+        <source>angles per revolution: %1 is not 1 to 100000</source>
+        <translation>ángulos por vuelta: %1 no está entre 1 y 100000</translation>
+    </message>
+    <message>
+        <source>axial depth: %1 mm is not within the ball, 0 to %2 mm at lead %3° and tilt %4° (001 models the ball only)</source>
+        <translation>profundidad axial: %1 mm no está dentro de la bola, de 0 a %2 mm con lead %3° y tilt %4° (001 modela solo la bola)</translation>
+    </message>
+</context>
+<context>
     <name>CadImportJson</name>
     <message>
         <source>the import&apos;s result has no valid &quot;%1&quot;</source>
@@ -2335,6 +2394,257 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The spindle and feed drives&apos; readings during the finishing cut (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</source>
         <translation>Las lecturas de los accionamientos del husillo y de avance durante el corte de acabado (JSON: spindle_current_A, spindle_idle_current_A, …; docs/learning.md).</translation>
+    </message>
+</context>
+<context>
+    <name>MillingCommand</name>
+    <message>
+        <source>Öztürk &amp; Budak&apos;s cut 1–4 (001 table 4): tool, cut and speed; the options below change it.</source>
+        <translation>Corte 1–4 de Öztürk &amp; Budak (001 tabla 4): herramienta, corte y velocidad; las opciones de abajo lo cambian.</translation>
+    </message>
+    <message>
+        <source>Ball diameter in mm.</source>
+        <translation>Diámetro de la bola en mm.</translation>
+    </message>
+    <message>
+        <source>Number of flutes.</source>
+        <translation>Número de filos.</translation>
+    </message>
+    <message>
+        <source>Helix angle in degrees (default 30).</source>
+        <translation>Ángulo de hélice en grados (por defecto 30).</translation>
+    </message>
+    <message>
+        <source>Lead angle in degrees (default 0).</source>
+        <translation>Ángulo lead en grados (por defecto 0).</translation>
+    </message>
+    <message>
+        <source>Tilt angle in degrees (default 0).</source>
+        <translation>Ángulo tilt en grados (por defecto 0).</translation>
+    </message>
+    <message>
+        <source>Axial depth of cut along the surface normal in mm.</source>
+        <translation>Profundidad axial de corte a lo largo de la normal a la superficie en mm.</translation>
+    </message>
+    <message>
+        <source>Side cut into uncut material this wide, in mm (table 1); without it or --step-over, a slot.</source>
+        <translation>Corte lateral en material sin cortar de este ancho, en mm (tabla 1); sin esta opción ni --step-over, una ranura.</translation>
+    </message>
+    <message>
+        <source>Cut beside a previous pass this far away, in mm (table 2).</source>
+        <translation>Corte junto a una pasada anterior a esta distancia, en mm (tabla 2).</translation>
+    </message>
+    <message>
+        <source>Up milling (default down milling).</source>
+        <translation>Fresado en oposición (por defecto en concordancia).</translation>
+    </message>
+    <message>
+        <source>Feed per tooth in mm.</source>
+        <translation>Avance por diente en mm.</translation>
+    </message>
+    <message>
+        <source>Spindle speed in 1/min.</source>
+        <translation>Velocidad del husillo en 1/min.</translation>
+    </message>
+    <message>
+        <source>The tool and material&apos;s cutting and edge coefficients Ktc,Krc,Kac (N/mm²),Kte,Kre,Kae (N/mm) of the linear edge-force model (001 eq. 11). Required: 001 prints none, and TolTurn&apos;s data library has none for ball-end milling.</source>
+        <translation>Los coeficientes de corte y de filo Ktc,Krc,Kac (N/mm²),Kte,Kre,Kae (N/mm) de la herramienta y el material en el modelo lineal de fuerzas de filo (001 ec. 11). Obligatorios: 001 no publica ninguno y la biblioteca de datos de TolTurn no tiene ninguno para fresado con fresa de punta esférica.</translation>
+    </message>
+    <message>
+        <source>Disc elements over the engaged height (default 200).</source>
+        <translation>Elementos de disco en la altura en contacto (por defecto 200).</translation>
+    </message>
+    <message>
+        <source>Rotation angles per revolution (default 360).</source>
+        <translation>Ángulos de rotación por vuelta (por defecto 360).</translation>
+    </message>
+    <message>
+        <source>Print the results as JSON.</source>
+        <translation>Imprimir los resultados como JSON.</translation>
+    </message>
+    <message>
+        <source>Print every rotation angle as CSV.</source>
+        <translation>Imprimir cada ángulo de rotación como CSV.</translation>
+    </message>
+    <message>
+        <source>give --radial-depth or --step-over, not both</source>
+        <translation>indique --radial-depth o --step-over, no ambos</translation>
+    </message>
+    <message>
+        <source>give --case N, or the tool and cut: %1 missing</source>
+        <translation>indique --case N, o la herramienta y el corte: falta %1</translation>
+    </message>
+    <message>
+        <source>--coefficients Ktc,Krc,Kac,Kte,Kre,Kae is required: Öztürk &amp; Budak print no coefficients (theirs come from an orthogonal-cutting database of Ti6Al4V through the oblique transformation), and TolTurn&apos;s data library has none for ball-end milling; give your tool and material&apos;s (docs/milling.md)</source>
+        <translation>--coefficients Ktc,Krc,Kac,Kte,Kre,Kae es obligatorio: Öztürk &amp; Budak no publican coeficientes (los suyos vienen de una base de datos de corte ortogonal de Ti6Al4V mediante la transformación oblicua) y la biblioteca de datos de TolTurn no tiene ninguno para fresado con fresa de punta esférica; indique los de su herramienta y material (docs/milling.md)</translation>
+    </message>
+    <message>
+        <source>--coefficients: &quot;%1&quot; is not six numbers Ktc,Krc,Kac,Kte,Kre,Kae of at most %2</source>
+        <translation>--coefficients: «%1» no son seis números Ktc,Krc,Kac,Kte,Kre,Kae de como mucho %2</translation>
+    </message>
+    <message>
+        <source>slot</source>
+        <translation>ranura</translation>
+    </message>
+    <message>
+        <source>side cut %1 mm wide</source>
+        <translation>corte lateral de %1 mm de ancho</translation>
+    </message>
+    <message>
+        <source>step-over %1 mm</source>
+        <translation>paso lateral %1 mm</translation>
+    </message>
+    <message>
+        <source>Öztürk &amp; Budak (001) table 4, case %1: DMU 50 Evolution, Ti6Al4V</source>
+        <translation>Öztürk &amp; Budak (001) tabla 4, caso %1: DMU 50 Evolution, Ti6Al4V</translation>
+    </message>
+    <message>
+        <source>Ball-end mill Ø%1 mm, %2 flutes, helix %3°; %4, %5 milling, axial depth %6 mm, feed %7 mm/tooth, %8 1/min; lead %9°, tilt %10°</source>
+        <translation>Fresa de punta esférica Ø%1 mm, %2 filos, hélice %3°; %4, fresado %5, profundidad axial %6 mm, avance %7 mm/diente, %8 1/min; lead %9°, tilt %10°</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>en concordancia</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>en oposición</translation>
+    </message>
+    <message>
+        <source>Coefficients (given): Ktc %1, Krc %2, Kac %3 N/mm²; Kte %4, Kre %5, Kae %6 N/mm</source>
+        <translation>Coeficientes (indicados): Ktc %1, Krc %2, Kac %3 N/mm²; Kte %4, Kre %5, Kae %6 N/mm</translation>
+    </message>
+    <message>
+        <source>%1 disc elements, %2 rotation angles per revolution</source>
+        <translation>%1 elementos de disco, %2 ángulos de rotación por vuelta</translation>
+    </message>
+    <message>
+        <source>Peak forces on the tool: F %1 N, C %2 N, N %3 N (feed, cross-feed, surface normal); resultant %4 N</source>
+        <translation>Fuerzas máximas sobre la herramienta: F %1 N, C %2 N, N %3 N (avance, transversal, normal a la superficie); resultante %4 N</translation>
+    </message>
+    <message>
+        <source>Torque: mean %1 N·m, peak %2 N·m; mean spindle power %3 W</source>
+        <translation>Par: medio %1 N·m, máximo %2 N·m; potencia media del husillo %3 W</translation>
+    </message>
+    <message>
+        <source>takes no file: &quot;%1&quot;</source>
+        <translation>no admite archivos: «%1»</translation>
+    </message>
+    <message>
+        <source>From where the holder grips the tool to its tip, in mm.</source>
+        <translation>Desde donde el portaherramientas sujeta la herramienta hasta su punta, en mm.</translation>
+    </message>
+    <message>
+        <source>Diameter of the cylinder that stands for the fluted tool in bending, in mm.</source>
+        <translation>Diámetro del cilindro que representa a la herramienta con ranuras en flexión, en mm.</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus of the tool in N/mm² (default 630000, tungsten carbide; cemented carbides span 530000–700000).</source>
+        <translation>Módulo de Young de la herramienta en N/mm² (por defecto 630000, carburo de wolframio; los metales duros van de 530000 a 700000).</translation>
+    </message>
+    <message>
+        <source>The holder&apos;s springs k (N/mm) and k_θ (N·mm/rad) as K,KTHETA; with --case, 001&apos;s calibration 6306,1.656e7 for its tool.</source>
+        <translation>Los resortes del portaherramientas k (N/mm) y k_θ (N·mm/rad) como K,KTHETA; con --case, la calibración de 001, 6306,1.656e7, para su herramienta.</translation>
+    </message>
+    <message>
+        <source>the tool&apos;s structure is needed: %1 missing</source>
+        <translation>se necesita la estructura de la herramienta: falta %1</translation>
+    </message>
+    <message>
+        <source>--holder: &quot;%1&quot; is not two numbers K,KTHETA</source>
+        <translation>--holder: «%1» no son dos números K,KTHETA</translation>
+    </message>
+    <message>
+        <source>The surface&apos;s flatness or profile tolerance t in mm.</source>
+        <translation>La tolerancia de planitud o de perfil t de la superficie en mm.</translation>
+    </message>
+    <message>
+        <source>A profile tolerance with datums: every normal error within ±t/2 (default: a floating zone, the spread within t).</source>
+        <translation>Una tolerancia de perfil con referencias: cada error normal dentro de ±t/2 (por defecto: una zona flotante, la dispersión dentro de t).</translation>
+    </message>
+    <message>
+        <source>The largest feed per tooth the tool&apos;s maker allows, in mm.</source>
+        <translation>El mayor avance por diente que permite el fabricante de la herramienta, en mm.</translation>
+    </message>
+    <message>
+        <source>Leads to search, LO,HI in degrees (default -40,40).</source>
+        <translation>Ángulos lead a explorar, LO,HI en grados (por defecto -40,40).</translation>
+    </message>
+    <message>
+        <source>Tilts to search, LO,HI in degrees (default -40,40).</source>
+        <translation>Ángulos tilt a explorar, LO,HI en grados (por defecto -40,40).</translation>
+    </message>
+    <message>
+        <source>Leads and tilts of the window, each (default 64).</source>
+        <translation>Ángulos lead y tilt de la ventana, cada uno (por defecto 64).</translation>
+    </message>
+    <message>
+        <source>Threads (default 2).</source>
+        <translation>Hilos (por defecto 2).</translation>
+    </message>
+    <message>
+        <source>--%1: &quot;%2&quot; is not LO,HI in degrees with -60 &lt;= LO &lt; HI &lt;= 60</source>
+        <translation>--%1: «%2» no es LO,HI en grados con -60 &lt;= LO &lt; HI &lt;= 60</translation>
+    </message>
+    <message>
+        <source>--max-feed-per-tooth is required: the largest feed per tooth the tool&apos;s maker allows (TolTurn&apos;s data library has no ball-end mills)</source>
+        <translation>--max-feed-per-tooth es obligatorio: el mayor avance por diente que permite el fabricante de la herramienta (la biblioteca de datos de TolTurn no tiene fresas de punta esférica)</translation>
+    </message>
+    <message>
+        <source>Tolerance %1 µm, %2; feed per tooth up to %3 mm</source>
+        <translation>Tolerancia %1 µm, %2; avance por diente hasta %3 mm</translation>
+    </message>
+    <message>
+        <source>floating zone (flatness, or profile without datums): spread of the normal error</source>
+        <translation>zona flotante (planitud, o perfil sin referencias): dispersión del error normal</translation>
+    </message>
+    <message>
+        <source>located zone (profile with datums): normal error within ±t/2</source>
+        <translation>zona situada (perfil con referencias): error normal dentro de ±t/2</translation>
+    </message>
+    <message>
+        <source>Window %1 × %2: %3 cells with the cut on the ball, %4 of them hold the tolerance</source>
+        <translation>Ventana %1 × %2: %3 celdas con el corte en la bola, %4 de ellas cumplen la tolerancia</translation>
+    </message>
+    <message>
+        <source>No lead and tilt in the bounds holds the tolerance at any feed: the edge forces alone deflect the tool too far, or the cut does not stay on the ball.</source>
+        <translation>Ningún lead ni tilt dentro de los límites cumple la tolerancia con ningún avance: las fuerzas de filo por sí solas flexionan demasiado la herramienta, o el corte no queda en la bola.</translation>
+    </message>
+    <message>
+        <source>Plan: lead %1°, tilt %2°, feed %3 mm/tooth (%4 mm/min); form error %5 µm (%6 NLopt Subplex evaluations after the window)</source>
+        <translation>Plan: lead %1°, tilt %2°, avance %3 mm/diente (%4 mm/min); error de forma %5 µm (%6 evaluaciones de NLopt Subplex tras la ventana)</translation>
+    </message>
+    <message>
+        <source>Five-axis ball-end milling forces over a revolution (Öztürk &amp; Budak): on the tool in feed, cross-feed and normal directions, torque and spindle power.</source>
+        <translation>Fuerzas del fresado en cinco ejes con fresa de punta esférica durante una vuelta (Öztürk &amp; Budak): sobre la herramienta en las direcciones de avance, transversal y normal, par y potencia del husillo.</translation>
+    </message>
+    <message>
+        <source>give --json or --csv, not both</source>
+        <translation>indique --json o --csv, no ambos</translation>
+    </message>
+    <message>
+        <source>The ball-end mill&apos;s deflection over a revolution and the surface error along the normal it leaves (Öztürk &amp; Budak table 3): the tool a cantilever on springs k, k_θ.</source>
+        <translation>La flexión de la fresa de punta esférica durante una vuelta y el error de superficie a lo largo de la normal que deja (Öztürk &amp; Budak tabla 3): la herramienta, una viga en voladizo sobre resortes k, k_θ.</translation>
+    </message>
+    <message>
+        <source>Tool: overhang %1 mm, a Ø%2 mm cylinder of E = %3 N/mm², holder k = %4 N/mm, k_θ = %5 N·mm/rad%6</source>
+        <translation>Herramienta: voladizo %1 mm, un cilindro de Ø%2 mm con E = %3 N/mm², portaherramientas k = %4 N/mm, k_θ = %5 N·mm/rad%6</translation>
+    </message>
+    <message>
+        <source> (001&apos;s calibration for its tool)</source>
+        <translation> (calibración de 001 para su herramienta)</translation>
+    </message>
+    <message>
+        <source>Surface error along the normal, over a revolution: %1 to %2 µm (positive: material left); generating point %3 mm up the axis. Only the tool deflects in this model.</source>
+        <translation>Error de superficie a lo largo de la normal durante una vuelta: de %1 a %2 µm (positivo: queda material); punto generador a %3 mm eje arriba. En este modelo solo se flexiona la herramienta.</translation>
+    </message>
+    <message>
+        <source>The lead, tilt and feed per tooth of least machining time that keep the ball-end surface within its flatness or profile tolerance, with the lead–tilt window.</source>
+        <translation>El lead, el tilt y el avance por diente de menor tiempo de mecanizado que mantienen la superficie fresada dentro de su tolerancia de planitud o de perfil, con la ventana lead–tilt.</translation>
+    </message>
+    <message>
+        <source>--tolerance is required: the surface&apos;s tolerance t in mm</source>
+        <translation>--tolerance es obligatorio: la tolerancia t de la superficie en mm</translation>
     </message>
 </context>
 <context>
@@ -6076,6 +6386,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The constant-force control paper&apos;s own end-milling system rebuilt, beside its results</source>
         <translation>El propio sistema de fresado frontal del artículo de control de fuerza constante reconstruido, junto a sus resultados</translation>
     </message>
+    <message>
+        <source>Milling</source>
+        <translation>Fresado</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::MeasuredPartsModel</name>
@@ -6457,6 +6771,333 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the store or the machine changed meanwhile; the model was kept in %1</source>
         <translation>el almacén o la máquina cambiaron entretanto; el modelo se guardó en %1</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::MillingPanel</name>
+    <message>
+        <source>Ball-end cut</source>
+        <translation>Corte con fresa de punta esférica</translation>
+    </message>
+    <message>
+        <source>Öztürk &amp; Budak, case %1</source>
+        <translation>Öztürk &amp; Budak, caso %1</translation>
+    </message>
+    <message>
+        <source>Own cut</source>
+        <translation>Corte propio</translation>
+    </message>
+    <message>
+        <source>001 table 4: a DMU 50 Evolution, Ø12 mm ball-end mills with a 30° helix, Ti6Al4V</source>
+        <translation>001 tabla 4: una DMU 50 Evolution, fresas de punta esférica de Ø12 mm con hélice de 30°, Ti6Al4V</translation>
+    </message>
+    <message>
+        <source>Example</source>
+        <translation>Ejemplo</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation>Ranura</translation>
+    </message>
+    <message>
+        <source>Side cut (uncut material)</source>
+        <translation>Corte lateral (material sin cortar)</translation>
+    </message>
+    <message>
+        <source>Step-over (beside a pass)</source>
+        <translation>Paso lateral (junto a una pasada)</translation>
+    </message>
+    <message>
+        <source>Down milling</source>
+        <translation>Fresado en concordancia</translation>
+    </message>
+    <message>
+        <source>Up milling</source>
+        <translation>Fresado en oposición</translation>
+    </message>
+    <message>
+        <source> 1/min</source>
+        <translation> 1/min</translation>
+    </message>
+    <message>
+        <source>Ktc, Krc, Kac (N/mm²), Kte, Kre, Kae (N/mm)</source>
+        <translation>Ktc, Krc, Kac (N/mm²), Kte, Kre, Kae (N/mm)</translation>
+    </message>
+    <message>
+        <source>The cutting and edge coefficients of your tool and material (001 eq. 11). 001 prints none, and TolTurn&apos;s data library has none for ball-end milling.</source>
+        <translation>Los coeficientes de corte y de filo de su herramienta y material (001 ec. 11). 001 no publica ninguno y la biblioteca de datos de TolTurn no tiene ninguno para fresado con fresa de punta esférica.</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Diámetro</translation>
+    </message>
+    <message>
+        <source>Flutes</source>
+        <translation>Filos</translation>
+    </message>
+    <message>
+        <source>Helix</source>
+        <translation>Hélice</translation>
+    </message>
+    <message>
+        <source>Lead</source>
+        <translation>Lead</translation>
+    </message>
+    <message>
+        <source>Tilt</source>
+        <translation>Tilt</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation>Corte</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Sentido</translation>
+    </message>
+    <message>
+        <source>Radial depth / step-over</source>
+        <translation>Profundidad radial / paso lateral</translation>
+    </message>
+    <message>
+        <source>Axial depth</source>
+        <translation>Profundidad axial</translation>
+    </message>
+    <message>
+        <source>Feed per tooth</source>
+        <translation>Avance por diente</translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation>Velocidad del husillo</translation>
+    </message>
+    <message>
+        <source>Coefficients</source>
+        <translation>Coeficientes</translation>
+    </message>
+    <message>
+        <source>Tool structure and tolerance</source>
+        <translation>Estructura de la herramienta y tolerancia</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>no indicado</translation>
+    </message>
+    <message>
+        <source>From where the holder grips the tool to its tip</source>
+        <translation>Desde donde el portaherramientas sujeta la herramienta hasta su punta</translation>
+    </message>
+    <message>
+        <source>The diameter of the solid cylinder that bends like the fluted tool</source>
+        <translation>El diámetro del cilindro macizo que se flexiona como la herramienta con ranuras</translation>
+    </message>
+    <message>
+        <source> N/mm²</source>
+        <translation> N/mm²</translation>
+    </message>
+    <message>
+        <source>Tungsten carbide 630 000 N/mm² (MakeItFrom); cemented carbides 530 000–700 000</source>
+        <translation>Carburo de wolframio 630 000 N/mm² (MakeItFrom); metales duros 530 000–700 000</translation>
+    </message>
+    <message>
+        <source> N/mm</source>
+        <translation> N/mm</translation>
+    </message>
+    <message>
+        <source> N·mm/rad</source>
+        <translation> N·mm/rad</translation>
+    </message>
+    <message>
+        <source> µm</source>
+        <translation> µm</translation>
+    </message>
+    <message>
+        <source>Flatness / profile without datums</source>
+        <translation>Planitud / perfil sin referencias</translation>
+    </message>
+    <message>
+        <source>Profile with datums (±t/2)</source>
+        <translation>Perfil con referencias (±t/2)</translation>
+    </message>
+    <message>
+        <source>The largest feed per tooth the tool&apos;s maker allows</source>
+        <translation>El mayor avance por diente que permite el fabricante de la herramienta</translation>
+    </message>
+    <message>
+        <source>Plan Lead, Tilt and Feed</source>
+        <translation>Planificar lead, tilt y avance</translation>
+    </message>
+    <message>
+        <source>Overhang</source>
+        <translation>Voladizo</translation>
+    </message>
+    <message>
+        <source>Equivalent diameter</source>
+        <translation>Diámetro equivalente</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus</source>
+        <translation>Módulo de Young</translation>
+    </message>
+    <message>
+        <source>Holder k</source>
+        <translation>Portaherramientas k</translation>
+    </message>
+    <message>
+        <source>Holder k_θ</source>
+        <translation>Portaherramientas k_θ</translation>
+    </message>
+    <message>
+        <source>Surface tolerance t</source>
+        <translation>Tolerancia de superficie t</translation>
+    </message>
+    <message>
+        <source>Zone</source>
+        <translation>Zona</translation>
+    </message>
+    <message>
+        <source>Largest feed per tooth</source>
+        <translation>Mayor avance por diente</translation>
+    </message>
+    <message>
+        <source>Holder springs: as entered.</source>
+        <translation>Resortes del portaherramientas: según lo introducido.</translation>
+    </message>
+    <message>
+        <source>rotation angle [°]</source>
+        <translation>ángulo de rotación [°]</translation>
+    </message>
+    <message>
+        <source>force on the tool [N]</source>
+        <translation>fuerza sobre la herramienta [N]</translation>
+    </message>
+    <message>
+        <source>surface-normal error [µm]</source>
+        <translation>error normal a la superficie [µm]</translation>
+    </message>
+    <message>
+        <source>lead [°]</source>
+        <translation>lead [°]</translation>
+    </message>
+    <message>
+        <source>tilt [°]</source>
+        <translation>tilt [°]</translation>
+    </message>
+    <message>
+        <source>Plan to see the largest feed per tooth that holds the tolerance at each lead and tilt.</source>
+        <translation>Planifique para ver el mayor avance por diente que cumple la tolerancia con cada lead y tilt.</translation>
+    </message>
+    <message>
+        <source>Forces</source>
+        <translation>Fuerzas</translation>
+    </message>
+    <message>
+        <source>Surface error</source>
+        <translation>Error de superficie</translation>
+    </message>
+    <message>
+        <source>Lead–tilt window</source>
+        <translation>Ventana lead–tilt</translation>
+    </message>
+    <message>
+        <source>Holder springs: 001&apos;s calibration for its Ø12 mm tool and holder, under 1000 N.</source>
+        <translation>Resortes del portaherramientas: calibración de 001 para su herramienta de Ø12 mm y su portaherramientas, por debajo de 1000 N.</translation>
+    </message>
+    <message>
+        <source>Coefficients: not given. Enter Ktc, Krc, Kac, Kte, Kre, Kae of your tool and material: Öztürk &amp; Budak print none (theirs come from a Ti6Al4V orthogonal-cutting database), and TolTurn&apos;s data library has none for ball-end milling.</source>
+        <translation>Coeficientes: no indicados. Introduzca Ktc, Krc, Kac, Kte, Kre, Kae de su herramienta y material: Öztürk &amp; Budak no publican ninguno (los suyos vienen de una base de datos de corte ortogonal de Ti6Al4V) y la biblioteca de datos de TolTurn no tiene ninguno para fresado con fresa de punta esférica.</translation>
+    </message>
+    <message>
+        <source>Coefficients: &quot;%1&quot; is not six numbers of at most 100 000.</source>
+        <translation>Coeficientes: «%1» no son seis números de como mucho 100 000.</translation>
+    </message>
+    <message>
+        <source>No surface error: %1</source>
+        <translation>Sin error de superficie: %1</translation>
+    </message>
+    <message>
+        <source>F (feed)</source>
+        <translation>F (avance)</translation>
+    </message>
+    <message>
+        <source>C (cross-feed)</source>
+        <translation>C (transversal)</translation>
+    </message>
+    <message>
+        <source>N (normal)</source>
+        <translation>N (normal)</translation>
+    </message>
+    <message>
+        <source>resultant</source>
+        <translation>resultante</translation>
+    </message>
+    <message>
+        <source>Peak resultant %1 N; mean torque %2 N·m, mean spindle power %3 W. Coefficients as entered; only the tool deflects (001 §4).</source>
+        <translation>Resultante máxima %1 N; par medio %2 N·m, potencia media del husillo %3 W. Coeficientes según lo introducido; solo se flexiona la herramienta (001 §4).</translation>
+    </message>
+    <message>
+        <source>δ_N</source>
+        <translation>δ_N</translation>
+    </message>
+    <message>
+        <source>zone, lower</source>
+        <translation>zona, inferior</translation>
+    </message>
+    <message>
+        <source>zone, upper</source>
+        <translation>zona, superior</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;passes&lt;/b&gt; by %1 µm</source>
+        <translation>&lt;b&gt;cumple&lt;/b&gt; con %1 µm de margen</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;fails&lt;/b&gt; by %1 µm</source>
+        <translation>&lt;b&gt;no cumple&lt;/b&gt; por %1 µm</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Surface-normal error %1 to %2 µm over a revolution; against t = %3 µm (%4) it %5.</source>
+        <translation>&lt;br&gt;Error normal a la superficie de %1 a %2 µm durante una vuelta; frente a t = %3 µm (%4): %5.</translation>
+    </message>
+    <message>
+        <source>spread</source>
+        <translation>dispersión</translation>
+    </message>
+    <message>
+        <source>±t/2</source>
+        <translation>±t/2</translation>
+    </message>
+    <message>
+        <source>Planning: 64 × 64 leads and tilts…</source>
+        <translation>Planificando: 64 × 64 ángulos lead y tilt…</translation>
+    </message>
+    <message>
+        <source>plan</source>
+        <translation>plan</translation>
+    </message>
+    <message>
+        <source>as entered</source>
+        <translation>según lo introducido</translation>
+    </message>
+    <message>
+        <source>Lighter: a larger feed per tooth holds the tolerance; red: none does; grey: the cut would reach the shank above the ball.</source>
+        <translation>Más claro: un mayor avance por diente cumple la tolerancia; rojo: ninguno; gris: el corte alcanzaría el mango por encima de la bola.</translation>
+    </message>
+    <message>
+        <source>Plan: lead %1°, tilt %2°, feed %3 mm/tooth (%4 mm/min), form error %5 µm. %6</source>
+        <translation>Plan: lead %1°, tilt %2°, avance %3 mm/diente (%4 mm/min), error de forma %5 µm. %6</translation>
+    </message>
+    <message>
+        <source>No lead and tilt within ±40° holds the tolerance at any feed. %1</source>
+        <translation>Ningún lead ni tilt dentro de ±40° cumple la tolerancia con ningún avance. %1</translation>
     </message>
 </context>
 <context>

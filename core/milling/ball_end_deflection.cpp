@@ -13,8 +13,8 @@ namespace tolturn {
 
 namespace {
 
-struct BallEndDeflectionText {
-    Q_DECLARE_TR_FUNCTIONS(BallEndDeflectionText)
+struct BallEndMilling {
+    Q_DECLARE_TR_FUNCTIONS(BallEndMilling)
 };
 
 double secondMomentOfArea_mm4(double diameter_mm)
@@ -46,23 +46,23 @@ double surfaceGenerationHeight_mm(const BallEndMill &mill, const BallEndCut &cut
 
 std::vector<std::string> validateToolStructure(const BallEndToolStructure &tool, const BallEndMill &mill)
 {
-    using T = BallEndDeflectionText;
     std::vector<std::string> problems;
     const auto add = [&](const QString &message) { problems.push_back(message.toStdString()); };
     if (!(tool.overhang_mm >= 0.5 * mill.diameter_mm && tool.overhang_mm <= 1000.0))
-        add(T::tr("overhang: %1 mm is not from the ball's radius, %2 mm, to 1000 mm")
+        add(BallEndMilling::tr("overhang: %1 mm is not from the ball's radius, %2 mm, to 1000 mm")
                 .arg(tool.overhang_mm)
                 .arg(0.5 * mill.diameter_mm));
     if (!(tool.equivalentDiameter_mm > 0.0 && tool.equivalentDiameter_mm <= mill.diameter_mm))
-        add(T::tr("equivalent diameter: %1 mm is not above 0 and at most the tool's %2 mm")
+        add(BallEndMilling::tr("equivalent diameter: %1 mm is not above 0 and at most the tool's %2 mm")
                 .arg(tool.equivalentDiameter_mm)
                 .arg(mill.diameter_mm));
     if (!(tool.youngsModulus_N_mm2 > 0.0))
-        add(T::tr("Young's modulus: %1 N/mm² is not positive").arg(tool.youngsModulus_N_mm2));
+        add(BallEndMilling::tr("Young's modulus: %1 N/mm² is not positive").arg(tool.youngsModulus_N_mm2));
     if (!(tool.holderStiffness_N_mm > 0.0))
-        add(T::tr("holder stiffness k: %1 N/mm is not positive").arg(tool.holderStiffness_N_mm));
+        add(BallEndMilling::tr("holder stiffness k: %1 N/mm is not positive").arg(tool.holderStiffness_N_mm));
     if (!(tool.holderRotational_N_mm_rad > 0.0))
-        add(T::tr("holder rotational stiffness k_θ: %1 N·mm/rad is not positive").arg(tool.holderRotational_N_mm_rad));
+        add(BallEndMilling::tr("holder rotational stiffness k_θ: %1 N·mm/rad is not positive")
+                .arg(tool.holderRotational_N_mm_rad));
     return problems;
 }
 

@@ -14,8 +14,8 @@ namespace tolturn {
 
 namespace {
 
-struct BallEndForcesText {
-    Q_DECLARE_TR_FUNCTIONS(BallEndForcesText)
+struct BallEndMilling {
+    Q_DECLARE_TR_FUNCTIONS(BallEndMilling)
 };
 
 // One disc element of the edge at height z (001 §2.1), with what does not change as the tool turns.
@@ -213,36 +213,38 @@ std::vector<double> sliceHeights_mm(const BallEndMill &mill, const BallEndCut &c
 std::vector<std::string> validateBallEndCut(const BallEndMill &mill, const BallEndCut &cut,
                                             const BallEndResolution &resolution)
 {
-    using T = BallEndForcesText;
     std::vector<std::string> problems;
     const auto deg = [](double rad) { return rad * 180.0 / std::numbers::pi; };
     if (!(mill.diameter_mm > 0.0))
-        problems.push_back(text(T::tr("tool diameter: %1 mm is not a positive diameter").arg(mill.diameter_mm)));
+        problems.push_back(
+            text(BallEndMilling::tr("tool diameter: %1 mm is not a positive diameter").arg(mill.diameter_mm)));
     if (mill.flutes < 1 || mill.flutes > 12)
-        problems.push_back(text(T::tr("flutes: %1 is not 1 to 12").arg(mill.flutes)));
+        problems.push_back(text(BallEndMilling::tr("flutes: %1 is not 1 to 12").arg(mill.flutes)));
     if (!(mill.helix_rad >= 0.0 && mill.helix_rad < std::numbers::pi / 3.0))
-        problems.push_back(text(T::tr("helix angle: %1° is not 0 to 60°").arg(deg(mill.helix_rad))));
+        problems.push_back(text(BallEndMilling::tr("helix angle: %1° is not 0 to 60°").arg(deg(mill.helix_rad))));
     if (!(cut.feedPerTooth_mm > 0.0))
-        problems.push_back(text(T::tr("feed per tooth: %1 mm is not positive").arg(cut.feedPerTooth_mm)));
+        problems.push_back(text(BallEndMilling::tr("feed per tooth: %1 mm is not positive").arg(cut.feedPerTooth_mm)));
     if (!(std::abs(cut.lead_rad) <= std::numbers::pi / 3.0) || !(std::abs(cut.tilt_rad) <= std::numbers::pi / 3.0))
-        problems.push_back(
-            text(T::tr("lead, tilt: %1°, %2° are not within ±60°").arg(deg(cut.lead_rad)).arg(deg(cut.tilt_rad))));
+        problems.push_back(text(BallEndMilling::tr("lead, tilt: %1°, %2° are not within ±60°")
+                                    .arg(deg(cut.lead_rad))
+                                    .arg(deg(cut.tilt_rad))));
     if (cut.kind != BallEndCutKind::Slot && !(cut.radialDepth_mm > 0.0))
-        problems.push_back(text(T::tr("radial depth: %1 mm is not positive").arg(cut.radialDepth_mm)));
+        problems.push_back(text(BallEndMilling::tr("radial depth: %1 mm is not positive").arg(cut.radialDepth_mm)));
     if (resolution.axialSlices < 1 || resolution.axialSlices > 100000)
-        problems.push_back(text(T::tr("axial slices: %1 is not 1 to 100000").arg(resolution.axialSlices)));
+        problems.push_back(text(BallEndMilling::tr("axial slices: %1 is not 1 to 100000").arg(resolution.axialSlices)));
     if (resolution.anglesPerRevolution < 1 || resolution.anglesPerRevolution > 100000)
-        problems.push_back(
-            text(T::tr("angles per revolution: %1 is not 1 to 100000").arg(resolution.anglesPerRevolution)));
+        problems.push_back(text(
+            BallEndMilling::tr("angles per revolution: %1 is not 1 to 100000").arg(resolution.anglesPerRevolution)));
     if (problems.empty()) {
         const double deepest = deepestCutOnBall_mm(mill.diameter_mm, cut.lead_rad, cut.tilt_rad);
         if (!(cut.axialDepth_mm > 0.0 && cut.axialDepth_mm <= deepest))
-            problems.push_back(text(T::tr("axial depth: %1 mm is not within the ball, 0 to %2 mm at lead %3° and "
-                                          "tilt %4° (001 models the ball only)")
-                                        .arg(cut.axialDepth_mm)
-                                        .arg(deepest, 0, 'f', 3)
-                                        .arg(deg(cut.lead_rad))
-                                        .arg(deg(cut.tilt_rad))));
+            problems.push_back(
+                text(BallEndMilling::tr("axial depth: %1 mm is not within the ball, 0 to %2 mm at lead %3° and "
+                                        "tilt %4° (001 models the ball only)")
+                         .arg(cut.axialDepth_mm)
+                         .arg(deepest, 0, 'f', 3)
+                         .arg(deg(cut.lead_rad))
+                         .arg(deg(cut.tilt_rad))));
     }
     return problems;
 }

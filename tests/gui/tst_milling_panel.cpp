@@ -95,10 +95,10 @@ private Q_SLOTS:
         panel.plots()->setCurrentIndex(1);
         test::saveScreenshot(panel, "milling-error.png");
         // It fits the bottom dock of a 1366 × 768 screen (about 380 px high): the inputs scroll.
-        QVERIFY2(panel.minimumSizeHint().height() <= 380 && panel.minimumSizeHint().width() <= 1366,
-                 qPrintable(QStringLiteral("%1 × %2")
-                                .arg(panel.minimumSizeHint().width())
-                                .arg(panel.minimumSizeHint().height())));
+        QVERIFY2(
+            panel.minimumSizeHint().height() <= 380 && panel.minimumSizeHint().width() <= 1366,
+            qPrintable(
+                QStringLiteral("%1 × %2").arg(panel.minimumSizeHint().width()).arg(panel.minimumSizeHint().height())));
         panel.resize(1366, 380);
         panel.plots()->setCurrentIndex(2);
         QTest::qWait(50);
