@@ -28,9 +28,6 @@ struct MillingCommand {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-// The largest coefficient taken: K_tc of the hardest materials is a few thousand N/mm².
-constexpr double kMaxCoefficient = 100000.0;
-
 // Carbide's Young's modulus: 630 000 N/mm² (MakeItFrom, "Tungsten Carbide (WC)"); cemented carbides
 // span 530 000–700 000 N/mm² (Wikipedia, "Tungsten carbide", 2024-01). resources/data/holders.json
 // keeps both sources (MAKEITFROM_WC, WIKIPEDIA_WC).
@@ -99,21 +96,6 @@ struct MillingInput {
 void complain(QTextStream &err, const QString &command, const QString &message)
 {
     err << programName() << ' ' << command << ": " << message << '\n';
-}
-
-std::optional<MillingForceCoefficients> parseCoefficients(const QString &text)
-{
-    const QStringList parts = text.split(QLatin1Char(','));
-    if (parts.size() != 6)
-        return std::nullopt;
-    double v[6] = {0, 0, 0, 0, 0, 0};
-    for (int i = 0; i < 6; ++i) {
-        bool ok = false;
-        v[i] = parts.at(i).trimmed().toDouble(&ok);
-        if (!ok || !std::isfinite(v[i]) || std::abs(v[i]) > kMaxCoefficient)
-            return std::nullopt;
-    }
-    return MillingForceCoefficients{v[0], v[1], v[2], v[3], v[4], v[5]};
 }
 
 // Sets `target` from an option given in range; false after naming it when it is not.
@@ -202,12 +184,12 @@ std::optional<MillingInput> readMillingInput(const QCommandLineParser &parser, c
                                     "milling; give your tool and material's (docs/milling.md)"));
         return std::nullopt;
     }
-    const std::optional<MillingForceCoefficients> k = parseCoefficients(parser.value(o.coefficients));
+    const std::optional<MillingForceCoefficients> k = parseMillingCoefficients(parser.value(o.coefficients));
     if (!k) {
         complain(err, command,
                  MillingCommand::tr("--coefficients: \"%1\" is not six numbers Ktc,Krc,Kac,Kte,Kre,Kae of at most %2")
                      .arg(parser.value(o.coefficients))
-                     .arg(kMaxCoefficient));
+                     .arg(kMaxMillingCoefficient));
         return std::nullopt;
     }
     in.coefficients = *k;
@@ -330,15 +312,19 @@ QJsonArray forcesJson(const std::vector<BallEndForceSample> &samples)
     return list;
 }
 
-// Parses a mill-* command's options; -1 to go on, or the exit code.
-int parseMilling(QCommandLineParser &parser, const QString &command, const QStringList &args, QTextStream &out,
-                 QTextStream &err)
+// Parses a mill-* command's options (--json and --csv exclusive); -1 to go on, or the exit code.
+int parseMilling(QCommandLineParser &parser, const MillingOptions &o, const QString &command, const QStringList &args,
+                 QTextStream &out, QTextStream &err)
 {
     if (const int stop = parseNamedCommand(parser, command, args, out, err); stop >= 0)
         return stop;
     if (!parser.positionalArguments().isEmpty()) {
         complain(err, command,
                  MillingCommand::tr("takes no file: \"%1\"").arg(parser.positionalArguments().constFirst()));
+        return kExitUsage;
+    }
+    if (parser.isSet(o.json) && parser.isSet(o.csv)) {
+        complain(err, command, MillingCommand::tr("give --json or --csv, not both"));
         return kExitUsage;
     }
     return -1;
@@ -568,12 +554,8 @@ int runMillForces(const QStringList &args, QTextStream &out, QTextStream &err)
     QCommandLineParser parser;
     const MillingOptions o;
     parser.addOptions(o.all());
-    if (const int stop = parseMilling(parser, command, args, out, err); stop >= 0)
+    if (const int stop = parseMilling(parser, o, command, args, out, err); stop >= 0)
         return stop;
-    if (parser.isSet(o.json) && parser.isSet(o.csv)) {
-        complain(err, command, MillingCommand::tr("give --json or --csv, not both"));
-        return kExitUsage;
-    }
     const std::optional<MillingInput> in = readMillingInput(parser, o, command, err);
     if (!in)
         return kExitUsage;
@@ -613,12 +595,8 @@ int runMillDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     const DeflectOptions d;
     parser.addOptions(o.all());
     parser.addOptions({d.overhang, d.equivalentDiameter, d.modulus, d.holder});
-    if (const int stop = parseMilling(parser, command, args, out, err); stop >= 0)
+    if (const int stop = parseMilling(parser, o, command, args, out, err); stop >= 0)
         return stop;
-    if (parser.isSet(o.json) && parser.isSet(o.csv)) {
-        complain(err, command, MillingCommand::tr("give --json or --csv, not both"));
-        return kExitUsage;
-    }
     const std::optional<MillingInput> in = readMillingInput(parser, o, command, err);
     if (!in)
         return kExitUsage;
@@ -690,12 +668,8 @@ int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     parser.addOptions(o.all());
     parser.addOptions({d.overhang, d.equivalentDiameter, d.modulus, d.holder});
     parser.addOptions({p.tolerance, p.located, p.highestFeed, p.leadRange, p.tiltRange, p.cells, p.threads});
-    if (const int stop = parseMilling(parser, command, args, out, err); stop >= 0)
+    if (const int stop = parseMilling(parser, o, command, args, out, err); stop >= 0)
         return stop;
-    if (parser.isSet(o.json) && parser.isSet(o.csv)) {
-        complain(err, command, MillingCommand::tr("give --json or --csv, not both"));
-        return kExitUsage;
-    }
     const std::optional<MillingInput> in = readMillingInput(parser, o, command, err, true);
     if (!in)
         return kExitUsage;

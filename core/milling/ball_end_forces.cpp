@@ -3,6 +3,8 @@
 
 #include <Eigen/Geometry>
 #include <QCoreApplication>
+#include <QLocale>
+#include <QStringList>
 
 #include <algorithm>
 #include <cmath>
@@ -178,6 +180,24 @@ std::string text(const QString &message)
 }
 
 } // namespace
+
+std::optional<MillingForceCoefficients> parseMillingCoefficients(const QString &text)
+{
+    const QStringList parts = text.split(text.contains(QLatin1Char(';')) ? QLatin1Char(';') : QLatin1Char(','));
+    if (parts.size() != 6)
+        return std::nullopt;
+    double v[6] = {0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < 6; ++i) {
+        const QString part = parts.at(i).trimmed();
+        bool ok = false;
+        v[i] = part.toDouble(&ok);
+        if (!ok)
+            v[i] = QLocale().toDouble(part, &ok);
+        if (!ok || !std::isfinite(v[i]) || std::abs(v[i]) > kMaxMillingCoefficient)
+            return std::nullopt;
+    }
+    return MillingForceCoefficients{v[0], v[1], v[2], v[3], v[4], v[5]};
+}
 
 double toolAxisInclination_rad(double lead_rad, double tilt_rad)
 {

@@ -11,11 +11,22 @@
 #include "core/milling/ball_end_geometry.h"
 
 #include <Eigen/Core>
+#include <QString>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace tolturn {
+
+// The largest cutting or edge coefficient taken: K_tc of the hardest materials is a few thousand
+// N/mm².
+inline constexpr double kMaxMillingCoefficient = 100000.0;
+
+// "Ktc, Krc, Kac, Kte, Kre, Kae" (N/mm², N/mm) as the planner types them: separated by commas, or by
+// semicolons where the comma is the decimal separator, each number in the C or the user's locale;
+// nullopt unless six finite numbers of at most kMaxMillingCoefficient.
+[[nodiscard]] std::optional<MillingForceCoefficients> parseMillingCoefficients(const QString &text);
 
 // A solid ball-end mill (001 fig. 1).
 struct BallEndMill {

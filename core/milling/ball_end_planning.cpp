@@ -53,8 +53,7 @@ void fillRows(const BallEndMill &mill, const BallEndToolStructure &tool, const M
 {
     for (int row = firstRow; row < window.rows; row += std::max(1, settings.threads))
         for (int column = 0; column < window.columns; ++column) {
-            LeadTiltCell &cell = window.cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(window.columns) +
-                                              static_cast<std::size_t>(column)];
+            LeadTiltCell &cell = window.at(column, row);
             const CellResult r = evaluateCell(mill, tool, k, cut, cell.lead_rad, cell.tilt_rad, tolerance,
                                               settings.highestFeedPerTooth_mm, settings.windowResolution);
             cell.onBall = r.onBall;
@@ -164,7 +163,7 @@ LeadTiltWindow leadTiltWindow(const BallEndMill &mill, const BallEndToolStructur
     window.cells.resize(static_cast<std::size_t>(window.columns) * static_cast<std::size_t>(window.rows));
     for (int row = 0; row < window.rows; ++row)
         for (int column = 0; column < window.columns; ++column) {
-            LeadTiltCell &cell = window.cells[static_cast<std::size_t>(row * window.columns + column)];
+            LeadTiltCell &cell = window.at(column, row);
             cell.lead_rad = gridValue(settings.leadLowest_rad, settings.leadHighest_rad, column, window.columns);
             cell.tilt_rad = gridValue(settings.tiltLowest_rad, settings.tiltHighest_rad, row, window.rows);
         }

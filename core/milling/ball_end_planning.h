@@ -67,6 +67,18 @@ struct LeadTiltWindow {
     int columns = 0;
     int rows = 0;
     std::vector<LeadTiltCell> cells; // row-major: tilt by tilt, lead by lead
+
+    [[nodiscard]] LeadTiltCell &at(int column, int row)
+    {
+        return cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+                     static_cast<std::size_t>(column)];
+    }
+
+    [[nodiscard]] const LeadTiltCell &at(int column, int row) const
+    {
+        return cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+                     static_cast<std::size_t>(column)];
+    }
 };
 
 // The largest feed per tooth that holds the tolerance at each lead and tilt of a grid, at the

@@ -321,6 +321,23 @@ private Q_SLOTS:
         QCOMPARE(cases[0].cut.kind, BallEndCutKind::Slot);
     }
 
+    // The coefficients as typed: commas, or semicolons where the comma is the decimal separator;
+    // six numbers, each at most 100 000 in size.
+    void coefficientsAsTyped()
+    {
+        const auto k = parseMillingCoefficients(QStringLiteral("2000, 700,400 ,25,40,8"));
+        QVERIFY(k.has_value());
+        QCOMPARE(k->tangentialCutting_N_mm2, 2000.0);
+        QCOMPARE(k->axialEdge_N_mm, 8.0);
+        const auto semicolons = parseMillingCoefficients(QStringLiteral("2000.5; 700; 400; 25; 40; 8"));
+        QVERIFY(semicolons.has_value());
+        QCOMPARE(semicolons->tangentialCutting_N_mm2, 2000.5);
+        QVERIFY(!parseMillingCoefficients(QStringLiteral("2000, 700, 400, 25, 40")).has_value());
+        QVERIFY(!parseMillingCoefficients(QStringLiteral("2000, 700, 400, 25, 40, x")).has_value());
+        QVERIFY(!parseMillingCoefficients(QStringLiteral("200000, 700, 400, 25, 40, 8")).has_value());
+        QVERIFY(!parseMillingCoefficients(QStringLiteral("nan, 700, 400, 25, 40, 8")).has_value());
+    }
+
     // Table 3 for the paper's tool (k = 6306 N/mm, k_θ = 1.656·10⁷ N·mm/rad), a Ø9.6 mm cylinder of
     // E = 630 000 N/mm², L = 40 mm, 1 N at the tip seen at the tip: 40³ / 3EI + 1/k + 40² / k_θ with
     // I = π 9.6⁴ / 64 = 416.92 mm⁴: 8.1209·10⁻⁵ + 1.5858·10⁻⁴ + 9.6618·10⁻⁵ = 3.3641·10⁻⁴ mm/N.

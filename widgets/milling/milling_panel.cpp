@@ -14,7 +14,6 @@
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
-#include <QLocale>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSpinBox>
@@ -70,7 +69,7 @@ QImage windowImage(const LeadTiltWindow &w, double highestFeed)
     QImage image(w.columns, w.rows, QImage::Format_RGB32);
     for (int row = 0; row < w.rows; ++row)
         for (int column = 0; column < w.columns; ++column) {
-            const LeadTiltCell &c = w.cells[static_cast<std::size_t>(row * w.columns + column)];
+            const LeadTiltCell &c = w.at(column, row);
             QColor color(190, 190, 190);
             if (c.onBall && c.largestFeed_mm <= 0.0)
                 color = QColor(214, 96, 77);
@@ -81,25 +80,6 @@ QImage windowImage(const LeadTiltWindow &w, double highestFeed)
             image.setPixel(column, row, color.rgb());
         }
     return image;
-}
-
-// "Ktc, Krc, Kac, Kte, Kre, Kae", separated by commas, or by semicolons where the comma is the
-// decimal separator; each number in C or the user's locale.
-std::optional<MillingForceCoefficients> parseCoefficients(const QString &text)
-{
-    const QStringList parts = text.split(text.contains(QLatin1Char(';')) ? QLatin1Char(';') : QLatin1Char(','));
-    if (parts.size() != 6)
-        return std::nullopt;
-    double v[6] = {0, 0, 0, 0, 0, 0};
-    for (int i = 0; i < 6; ++i) {
-        bool ok = false;
-        v[i] = parts.at(i).trimmed().toDouble(&ok);
-        if (!ok)
-            v[i] = QLocale().toDouble(parts.at(i).trimmed(), &ok);
-        if (!ok || !std::isfinite(v[i]) || std::abs(v[i]) > 1e5)
-            return std::nullopt;
-    }
-    return MillingForceCoefficients{v[0], v[1], v[2], v[3], v[4], v[5]};
 }
 
 } // namespace
@@ -313,7 +293,7 @@ MillingPanel::Inputs MillingPanel::inputs() const
     in.cut.lead_rad = m_lead->value() * kDegree;
     in.cut.tilt_rad = m_tilt->value() * kDegree;
     in.spindle_rpm = m_spindle->value();
-    in.coefficients = parseCoefficients(m_coefficients->text());
+    in.coefficients = parseMillingCoefficients(m_coefficients->text());
     in.tool = {m_overhang->value(), m_equivalentDiameter->value(), m_modulus->value(), m_holderStiffness->value(),
                m_holderRotational->value()};
     in.tolerance = {m_tolerance->value() / 1000.0,
