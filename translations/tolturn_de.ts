@@ -7099,6 +7099,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>No lead and tilt within ±40° holds the tolerance at any feed. %1</source>
         <translation>Kein Anstell- und Kippwinkel innerhalb ±40° hält die Toleranz bei irgendeinem Vorschub. %1</translation>
     </message>
+    <message>
+        <source>give the tool&apos;s overhang</source>
+        <translation>geben Sie die Auskraglänge des Werkzeugs an</translation>
+    </message>
+    <message>
+        <source>give the tool&apos;s equivalent diameter</source>
+        <translation>geben Sie den Ersatzdurchmesser des Werkzeugs an</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::OperationsDialog</name>

@@ -7099,6 +7099,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>No lead and tilt within ±40° holds the tolerance at any feed. %1</source>
         <translation>Ningún lead ni tilt dentro de ±40° cumple la tolerancia con ningún avance. %1</translation>
     </message>
+    <message>
+        <source>give the tool&apos;s overhang</source>
+        <translation>indique el voladizo de la herramienta</translation>
+    </message>
+    <message>
+        <source>give the tool&apos;s equivalent diameter</source>
+        <translation>indique el diámetro equivalente de la herramienta</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::OperationsDialog</name>

@@ -56,7 +56,8 @@ private Q_SLOTS:
         QVERIFY2(panel.summary()->text().contains(QStringLiteral("mean torque %1 N·m").arg(torque / 1000.0, 0, 'f', 3)),
                  qPrintable(panel.summary()->text()));
         // No structure yet: no surface error, and the dock says which field is missing.
-        QVERIFY2(panel.summary()->text().contains(QStringLiteral("overhang")), qPrintable(panel.summary()->text()));
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("give the tool's overhang")),
+                 qPrintable(panel.summary()->text()));
         QVERIFY(!panel.planButton()->isEnabled());
     }
 

@@ -347,10 +347,13 @@ void MillingPanel::compute()
     } else {
         m_errorPlot->clear();
         m_errorPlot->rescaleAndReplot();
+        // A field left at "not given" is named as such, not by the 0 behind it.
+        const QString missing = m_overhang->value() == 0.0             ? tr("give the tool's overhang")
+                                : m_equivalentDiameter->value() == 0.0 ? tr("give the tool's equivalent diameter")
+                                                                       : QString::fromStdString(structure.front());
         m_summary->setText(
             m_summary->text() +
-            QStringLiteral("<br><b>%1</b>")
-                .arg(tr("No surface error: %1").arg(QString::fromStdString(structure.front())).toHtmlEscaped()));
+            QStringLiteral("<br><b>%1</b>").arg(tr("No surface error: %1").arg(missing).toHtmlEscaped()));
     }
     m_planButton->setEnabled(structure.empty() && !isPlanning());
 }
