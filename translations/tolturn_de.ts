@@ -7107,6 +7107,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>give the tool&apos;s equivalent diameter</source>
         <translation>geben Sie den Ersatzdurchmesser des Werkzeugs an</translation>
     </message>
+    <message>
+        <source>No plan: %1</source>
+        <translation>Kein Plan: %1</translation>
+    </message>
+    <message>
+        <source>The inputs have changed since this plan: plan again.</source>
+        <translation>Die Eingaben haben sich seit diesem Plan geändert: erneut planen.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::OperationsDialog</name>

@@ -7107,6 +7107,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>give the tool&apos;s equivalent diameter</source>
         <translation>indique el diámetro equivalente de la herramienta</translation>
     </message>
+    <message>
+        <source>No plan: %1</source>
+        <translation>Sin plan: %1</translation>
+    </message>
+    <message>
+        <source>The inputs have changed since this plan: plan again.</source>
+        <translation>Los datos han cambiado desde este plan: vuelva a planificar.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::OperationsDialog</name>

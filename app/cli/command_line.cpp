@@ -45,6 +45,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace tolturn {
@@ -228,8 +229,16 @@ int runCommandLine(const QStringList &arguments, QTextStream &out, QTextStream &
     // British spelling as well: the desktop program says "Optimise".
     const QString name = first == QLatin1String("optimise") ? QStringLiteral("optimize") : first;
     for (const Command &c : commands()) {
-        if (c.name == name)
+        if (c.name != name)
+            continue;
+        // A command checks its input and names what is wrong; should an input still reach a
+        // model that refuses it, the refusal is printed with the command's name, never a crash.
+        try {
             return c.run(QStringList{programName() + QLatin1Char(' ') + c.name} + args.mid(1), out, err);
+        } catch (const std::invalid_argument &e) {
+            err << programName() << ' ' << c.name << ": " << QString::fromStdString(e.what()) << '\n';
+            return kExitProblems;
+        }
     }
     err << CommandLine::tr("%1: unknown command '%2'.").arg(programName(), first);
     if (const QString close = nearestCommand(first); !close.isEmpty())

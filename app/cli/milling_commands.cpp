@@ -114,9 +114,12 @@ bool readCut(const QCommandLineParser &parser, const MillingOptions &o, MillingI
              QTextStream &err)
 {
     bool ok = readNumber(parser, o.diameter, 0.1, 100.0, 1.0, in.mill.diameter_mm, command, err);
-    double flutes = in.mill.flutes;
-    ok = readNumber(parser, o.flutes, 1.0, 12.0, 1.0, flutes, command, err) && ok;
-    in.mill.flutes = static_cast<int>(std::lround(flutes));
+    if (parser.isSet(o.flutes)) {
+        const std::optional<long long> flutes = wholeNumberInRange(parser, o.flutes, 1, 12, command, err);
+        ok = flutes.has_value() && ok;
+        if (flutes)
+            in.mill.flutes = static_cast<int>(*flutes);
+    }
     ok = readNumber(parser, o.helix, 0.0, 59.0, kDegree, in.mill.helix_rad, command, err) && ok;
     ok = readNumber(parser, o.lead, -60.0, 60.0, kDegree, in.cut.lead_rad, command, err) && ok;
     ok = readNumber(parser, o.tilt, -60.0, 60.0, kDegree, in.cut.tilt_rad, command, err) && ok;
@@ -674,9 +677,10 @@ int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!in)
         return kExitUsage;
     const std::optional<BallEndToolStructure> tool = readStructure(parser, d, *in, command, err);
-    const std::optional<BallEndPlanSettings> settings = readPlanSettings(parser, p, command, err);
+    std::optional<BallEndPlanSettings> settings = readPlanSettings(parser, p, command, err);
     if (!tool || !settings)
         return kExitUsage;
+    settings->planResolution = in->resolution; // --slices and --angles: the plan's check
     if (!parser.isSet(p.tolerance)) {
         complain(err, command, MillingCommand::tr("--tolerance is required: the surface's tolerance t in mm"));
         return kExitUsage;

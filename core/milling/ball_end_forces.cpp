@@ -187,12 +187,14 @@ std::optional<MillingForceCoefficients> parseMillingCoefficients(const QString &
     if (parts.size() != 6)
         return std::nullopt;
     double v[6] = {0, 0, 0, 0, 0, 0};
+    // With semicolons the numbers are the user's locale's first ("1.500" is 1500 in German).
+    const bool localeFirst = text.contains(QLatin1Char(';'));
     for (int i = 0; i < 6; ++i) {
         const QString part = parts.at(i).trimmed();
         bool ok = false;
-        v[i] = part.toDouble(&ok);
+        v[i] = localeFirst ? QLocale().toDouble(part, &ok) : part.toDouble(&ok);
         if (!ok)
-            v[i] = QLocale().toDouble(part, &ok);
+            v[i] = localeFirst ? part.toDouble(&ok) : QLocale().toDouble(part, &ok);
         if (!ok || !std::isfinite(v[i]) || std::abs(v[i]) > kMaxMillingCoefficient)
             return std::nullopt;
     }

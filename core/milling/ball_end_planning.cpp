@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <stdexcept>
 #include <thread>
@@ -28,6 +29,7 @@ CellResult evaluateCell(const BallEndMill &mill, const BallEndToolStructure &too
 {
     cut.lead_rad = lead_rad;
     cut.tilt_rad = tilt_rad;
+    cut.feedPerTooth_mm = highestFeed_mm; // any feed: the error line does not depend on it
     CellResult r;
     if (cut.axialDepth_mm > deepestCutOnBall_mm(mill.diameter_mm, lead_rad, tilt_rad))
         return r;
@@ -49,17 +51,21 @@ double planObjective(const CellResult &r, const MilledSurfaceTolerance &toleranc
 
 void fillRows(const BallEndMill &mill, const BallEndToolStructure &tool, const MillingForceCoefficients &k,
               const BallEndCut &cut, const MilledSurfaceTolerance &tolerance, const BallEndPlanSettings &settings,
-              LeadTiltWindow &window, int firstRow)
+              LeadTiltWindow &window, int firstRow, std::exception_ptr &failure)
 {
-    for (int row = firstRow; row < window.rows; row += std::max(1, settings.threads))
-        for (int column = 0; column < window.columns; ++column) {
-            LeadTiltCell &cell = window.at(column, row);
-            const CellResult r = evaluateCell(mill, tool, k, cut, cell.lead_rad, cell.tilt_rad, tolerance,
-                                              settings.highestFeedPerTooth_mm, settings.windowResolution);
-            cell.onBall = r.onBall;
-            cell.largestFeed_mm = r.largestFeed_mm;
-            cell.formError_mm = r.formError_mm;
-        }
+    try {
+        for (int row = firstRow; row < window.rows; row += std::max(1, settings.threads))
+            for (int column = 0; column < window.columns; ++column) {
+                LeadTiltCell &cell = window.at(column, row);
+                const CellResult r = evaluateCell(mill, tool, k, cut, cell.lead_rad, cell.tilt_rad, tolerance,
+                                                  settings.highestFeedPerTooth_mm, settings.windowResolution);
+                cell.onBall = r.onBall;
+                cell.largestFeed_mm = r.largestFeed_mm;
+                cell.formError_mm = r.formError_mm;
+            }
+    } catch (...) {
+        failure = std::current_exception(); // rethrown by the caller once every thread has joined
+    }
 }
 
 using LeadTiltObjective = std::function<double(const std::vector<double> &)>;
@@ -78,7 +84,8 @@ std::vector<double> refineLeadTilt(const LeadTiltObjective &objective, const std
     opt.set_upper_bounds({settings.leadHighest_rad, settings.tiltHighest_rad});
     opt.set_maxeval(settings.maxEvaluations);
     opt.set_xtol_abs(1e-4);
-    opt.set_initial_step((settings.leadHighest_rad - settings.leadLowest_rad) / settings.columns);
+    opt.set_initial_step({(settings.leadHighest_rad - settings.leadLowest_rad) / settings.columns,
+                          (settings.tiltHighest_rad - settings.tiltLowest_rad) / settings.rows});
     opt.set_min_objective(
         [](unsigned, const double *x, double *, void *data) {
             auto *c = static_cast<Counted *>(data);
@@ -96,9 +103,36 @@ std::vector<double> refineLeadTilt(const LeadTiltObjective &objective, const std
     return value < startValue ? x : start;
 }
 
+// The index-th of `count` values from `lowest` to `highest`, the last exactly `highest` (rounding must
+// not carry it past a bound the model checks).
 double gridValue(double lowest, double highest, int index, int count)
 {
-    return lowest + (highest - lowest) * index / std::max(1, count - 1);
+    return index >= count - 1 ? highest : lowest + (highest - lowest) * index / std::max(1, count - 1);
+}
+
+// What the window cannot take, before any thread starts: a problem in a worker would end the program.
+void validateWindowInputs(const BallEndMill &mill, const BallEndToolStructure &tool, const BallEndCut &cut,
+                          const MilledSurfaceTolerance &tolerance, const BallEndPlanSettings &settings)
+{
+    constexpr double kSixtyDegrees = 1.0471975511965976;
+    const bool bounds = settings.leadLowest_rad >= -kSixtyDegrees && settings.leadHighest_rad <= kSixtyDegrees &&
+                        settings.tiltLowest_rad >= -kSixtyDegrees && settings.tiltHighest_rad <= kSixtyDegrees &&
+                        settings.leadLowest_rad <= settings.leadHighest_rad &&
+                        settings.tiltLowest_rad <= settings.tiltHighest_rad;
+    if (!(tolerance.tolerance_mm > 0.0) || !(settings.highestFeedPerTooth_mm > 0.0) || settings.columns < 2 ||
+        settings.rows < 2 || settings.threads < 1 || settings.maxEvaluations < 1 || !bounds)
+        throw std::invalid_argument("leadTiltWindow: a positive tolerance and highest feed, a 2 × 2 grid at least, "
+                                    "a thread, an evaluation, and lead and tilt bounds within ±60°");
+    // The cut as every cell takes it, at the inclination where the ball reaches deepest.
+    BallEndCut probe = cut;
+    probe.lead_rad = probe.tilt_rad = 0.0;
+    probe.feedPerTooth_mm = settings.highestFeedPerTooth_mm;
+    probe.axialDepth_mm = std::min(cut.axialDepth_mm, 0.5 * mill.diameter_mm);
+    for (const BallEndResolution &r : {settings.windowResolution, settings.planResolution})
+        if (const auto problems = validateBallEndCut(mill, probe, r); !problems.empty())
+            throw std::invalid_argument(problems.front());
+    if (const auto problems = validateToolStructure(tool, mill); !problems.empty())
+        throw std::invalid_argument(problems.front());
 }
 
 } // namespace
@@ -136,13 +170,26 @@ double formError_mm(const SurfaceErrorLine &line, double feedPerTooth_mm, Surfac
 double largestFeedPerTooth_mm(const SurfaceErrorLine &line, const MilledSurfaceTolerance &tolerance,
                               double highestFeed_mm)
 {
-    const auto holds = [&](double feed) { return formError_mm(line, feed, tolerance.zone) <= tolerance.tolerance_mm; };
-    if (!holds(0.0))
-        return 0.0;
+    const auto error = [&](double feed) { return formError_mm(line, feed, tolerance.zone); };
+    const auto holds = [&](double feed) { return error(feed) <= tolerance.tolerance_mm; };
     if (holds(highestFeed_mm))
         return highestFeed_mm;
+    // The feeds that hold are an interval (the error is convex in the feed). Where the edge forces'
+    // error and the cutting forces' offset each other it does not start at 0: its least error is
+    // found first (ternary search on the convex error), then its upper end by bisection.
     double low = 0.0;
     double high = highestFeed_mm;
+    for (int i = 0; i < kBisectionSteps; ++i) {
+        const double a = low + (high - low) / 3.0;
+        const double b = high - (high - low) / 3.0;
+        const bool leftLower = error(a) <= error(b);
+        (leftLower ? high : low) = leftLower ? b : a;
+    }
+    const double least = holds(0.0) ? 0.0 : 0.5 * (low + high);
+    if (!holds(least))
+        return 0.0;
+    low = least;
+    high = highestFeed_mm;
     for (int i = 0; i < kBisectionSteps; ++i) {
         const double middle = 0.5 * (low + high);
         (holds(middle) ? low : high) = middle;
@@ -154,9 +201,7 @@ LeadTiltWindow leadTiltWindow(const BallEndMill &mill, const BallEndToolStructur
                               const MillingForceCoefficients &coefficients, const BallEndCut &cut,
                               const MilledSurfaceTolerance &tolerance, const BallEndPlanSettings &settings)
 {
-    if (!(tolerance.tolerance_mm > 0.0) || !(settings.highestFeedPerTooth_mm > 0.0) || settings.columns < 2 ||
-        settings.rows < 2)
-        throw std::invalid_argument("leadTiltWindow: a positive tolerance and highest feed and a 2 × 2 grid at least");
+    validateWindowInputs(mill, tool, cut, tolerance, settings);
     LeadTiltWindow window;
     window.columns = settings.columns;
     window.rows = settings.rows;
@@ -167,13 +212,18 @@ LeadTiltWindow leadTiltWindow(const BallEndMill &mill, const BallEndToolStructur
             cell.lead_rad = gridValue(settings.leadLowest_rad, settings.leadHighest_rad, column, window.columns);
             cell.tilt_rad = gridValue(settings.tiltLowest_rad, settings.tiltHighest_rad, row, window.rows);
         }
+    std::vector<std::exception_ptr> failures(static_cast<std::size_t>(settings.threads));
     std::vector<std::thread> workers;
     for (int t = 1; t < settings.threads; ++t)
         workers.emplace_back(fillRows, std::cref(mill), std::cref(tool), std::cref(coefficients), std::cref(cut),
-                             std::cref(tolerance), std::cref(settings), std::ref(window), t);
-    fillRows(mill, tool, coefficients, cut, tolerance, settings, window, 0);
+                             std::cref(tolerance), std::cref(settings), std::ref(window), t,
+                             std::ref(failures[static_cast<std::size_t>(t)]));
+    fillRows(mill, tool, coefficients, cut, tolerance, settings, window, 0, failures.front());
     for (std::thread &t : workers)
         t.join();
+    for (const std::exception_ptr &failure : failures)
+        if (failure)
+            std::rethrow_exception(failure);
     return window;
 }
 

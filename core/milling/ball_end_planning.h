@@ -35,9 +35,10 @@ struct SurfaceErrorLine {
 // floating zone, 2 max |δ_N| for a located one; within tolerance when it is at most t.
 [[nodiscard]] double formError_mm(const SurfaceErrorLine &line, double feedPerTooth_mm, SurfaceZone zone);
 
-// The largest feed per tooth up to `highestFeed_mm` whose form error is within the tolerance (the
-// form error is convex in the feed: a maximum of affine functions); 0 when even the edge forces
-// alone, at a vanishing feed, take the surface out of it.
+// The largest feed per tooth up to `highestFeed_mm` whose form error is within the tolerance; 0 when
+// no feed up to it holds. The form error is convex in the feed (a maximum of affine functions), so
+// the feeds that hold are an interval, which need not start at 0: the edge forces' error and the
+// cutting forces' can offset each other.
 [[nodiscard]] double largestFeedPerTooth_mm(const SurfaceErrorLine &line, const MilledSurfaceTolerance &tolerance,
                                             double highestFeed_mm);
 
@@ -82,7 +83,8 @@ struct LeadTiltWindow {
 };
 
 // The largest feed per tooth that holds the tolerance at each lead and tilt of a grid, at the
-// window's resolution, on `threads` threads. The cut's own lead, tilt and feed are not used.
+// window's resolution, on `threads` threads. The cut's own lead, tilt and feed are not used. Throws
+// std::invalid_argument, before any thread starts, for what the model does not take.
 [[nodiscard]] LeadTiltWindow leadTiltWindow(const BallEndMill &mill, const BallEndToolStructure &tool,
                                             const MillingForceCoefficients &coefficients, const BallEndCut &cut,
                                             const MilledSurfaceTolerance &tolerance,
@@ -99,7 +101,8 @@ struct BallEndPlan {
 
 // The lead, tilt and feed per tooth of least machining time, which at a given spindle speed is the
 // largest feed rate f N n: the best cell of the window, refined by NLopt's Subplex within the
-// bounds, then checked at the plan's resolution (the feed is brought down if that finds it over).
+// bounds, then checked at the plan's resolution, where its largest feed is found again (it can differ
+// a little from the window's; rarely none holds there where the window found one).
 [[nodiscard]] BallEndPlan planBallEndCut(const BallEndMill &mill, const BallEndToolStructure &tool,
                                          const MillingForceCoefficients &coefficients, const BallEndCut &cut,
                                          double spindle_rpm, const MilledSurfaceTolerance &tolerance,

@@ -90,6 +90,42 @@ private Q_SLOTS:
         QVERIFY(std::abs(largestFeedPerTooth_mm(line, {10e-3, SurfaceZone::Located}, 0.3) - 1.0 / 15.0) < 1e-12);
         QCOMPARE(largestFeedPerTooth_mm(line, {1.5e-3, SurfaceZone::Floating}, 0.3), 0.0);
         QCOMPARE(largestFeedPerTooth_mm(line, {1.0, SurfaceZone::Floating}, 0.3), 0.3);
+
+        // Edge and cutting parts that offset: base = {3, −3} µm, perFeed = {−40, 40} µm/mm, spread
+        // |6 − 80 f| µm, within 2 µm for f in [0.05, 0.1] only: the largest is 0.1 mm though f = 0
+        // fails; under a highest feed of 0.07 mm, 0.07 mm; 0.1 µm holds only for f in [0.07375, 0.07625],
+        // above a highest of 0.07 mm: none.
+        const SurfaceErrorLine offsetting{{3e-3, -3e-3}, {-40e-3, 40e-3}};
+        const double offset = largestFeedPerTooth_mm(offsetting, {2e-3, SurfaceZone::Floating}, 0.3);
+        QVERIFY2(std::abs(offset - 0.1) < 1e-9, qPrintable(QString::number(offset, 'g', 15)));
+        QCOMPARE(largestFeedPerTooth_mm(offsetting, {2e-3, SurfaceZone::Floating}, 0.07), 0.07);
+        QCOMPARE(largestFeedPerTooth_mm(offsetting, {1e-4, SurfaceZone::Floating}, 0.07), 0.0);
+    }
+
+    // What the window does not take is refused before any thread starts, as an exception the caller
+    // can catch (in a worker thread it would end the program); bounds of exactly ±60° are taken,
+    // the last column exactly at 60°.
+    void windowRefusesBadInputs()
+    {
+        const MilledSurfaceTolerance tolerance{0.010, SurfaceZone::Floating};
+        BallEndPlanSettings wide = settings(64);
+        wide.leadHighest_rad = 70.0 * kDegree;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 (void)leadTiltWindow(kMill, kTool, kCoefficients, stepOverCut(), tolerance, wide));
+        BallEndToolStructure noOverhang = kTool;
+        noOverhang.overhang_mm = 0.0;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)leadTiltWindow(kMill, noOverhang, kCoefficients,
+                                                                             stepOverCut(), tolerance, settings(4)));
+        BallEndPlanSettings sixty = settings(64);
+        sixty.leadLowest_rad = sixty.tiltLowest_rad = -std::numbers::pi / 3.0;
+        sixty.leadHighest_rad = sixty.tiltHighest_rad = std::numbers::pi / 3.0;
+        sixty.windowResolution = {4, 8};
+        BallEndCut shallow = stepOverCut();
+        shallow.axialDepth_mm = 0.2;
+        shallow.feedPerTooth_mm = 0.0; // not used by the window
+        const LeadTiltWindow w = leadTiltWindow(kMill, kTool, kCoefficients, shallow, tolerance, sixty);
+        QCOMPARE(w.at(63, 63).lead_rad, std::numbers::pi / 3.0);
+        QCOMPARE(w.at(63, 63).tilt_rad, std::numbers::pi / 3.0);
     }
 
     // Cells of the window against the model run again at their largest feed: the spread of δ_N is

@@ -40,6 +40,11 @@ private Q_SLOTS:
         panel.coefficients()->setText(QStringLiteral("1,2,3"));
         Q_EMIT panel.coefficients()->editingFinished();
         QVERIFY(panel.summary()->text().contains(QStringLiteral("is not six numbers")));
+        // Two problems at once, one a line each: a 60° lead keeps a 3 mm cut off the ball.
+        panel.lead()->setValue(60.0);
+        const QString text = panel.summary()->text();
+        QVERIFY2(text.contains(QStringLiteral("<br>axial depth: 3 mm is not within the ball")), qPrintable(text));
+        QVERIFY(!text.contains(QStringLiteral("&lt;br&gt;")));
     }
 
     // 001 case 2 with K_tc = 1000 N/mm² only: the mean torque is K_tc f_t ∫₀³R dz / π =
@@ -92,6 +97,7 @@ private Q_SLOTS:
         QVERIFY(panel.lastPlan()->feasible);
         QVERIFY(panel.windowPlot()->markers().contains(QStringLiteral("plan")));
         QCOMPARE(panel.plots()->currentIndex(), 2);
+        QVERIFY(panel.planButton()->isEnabled());
         test::saveScreenshot(panel, "milling-window.png");
         panel.plots()->setCurrentIndex(1);
         test::saveScreenshot(panel, "milling-error.png");
@@ -104,6 +110,11 @@ private Q_SLOTS:
         panel.plots()->setCurrentIndex(2);
         QTest::qWait(50);
         test::saveScreenshot(panel, "milling-dock-1366.png");
+        // An edit after the plan says the plan is for the inputs before it.
+        panel.lead()->setValue(5.0);
+        const QLabel *planText = panel.findChild<QLabel *>(QStringLiteral("millingPlanSummary"));
+        QVERIFY(planText);
+        QVERIFY2(planText->text().contains(QStringLiteral("plan again")), qPrintable(planText->text()));
     }
 };
 

@@ -100,10 +100,14 @@ MillingPanel::MillingPanel(QWidget *parent) : QWidget(parent)
     auto *layout = new QHBoxLayout(this);
     layout->addWidget(scroll);
     layout->addWidget(createPlots(), 1);
-    connect(&m_watcher, &QFutureWatcher<BallEndPlan>::finished, this, [this] {
-        m_plan = m_watcher.result();
-        m_planButton->setEnabled(true);
-        showWindow();
+    connect(&m_watcher, &QFutureWatcher<MillingPlanOutcome>::finished, this, [this] {
+        const MillingPlanOutcome outcome = m_watcher.result();
+        m_plan = outcome.plan;
+        updatePlanButton();
+        if (m_plan)
+            showWindow();
+        else
+            m_planSummary->setText(tr("No plan: %1").arg(outcome.error));
         Q_EMIT planFinished();
     });
     loadCase(1);
@@ -211,10 +215,11 @@ QWidget *MillingPanel::createStructureAndTolerance()
             if (!m_loading)
                 compute();
         });
-    connect(m_holderStiffness, &QDoubleSpinBox::valueChanged, this, [this] {
-        if (!m_loading)
-            m_springSource->setText(tr("Holder springs: as entered."));
-    });
+    for (QDoubleSpinBox *spring : {m_holderStiffness, m_holderRotational})
+        connect(spring, &QDoubleSpinBox::valueChanged, this, [this] {
+            if (!m_loading)
+                m_springSource->setText(tr("Holder springs: as entered."));
+        });
     connect(m_zone, &QComboBox::activated, this, &MillingPanel::compute);
     connect(m_planButton, &QPushButton::clicked, this, &MillingPanel::plan);
     return box;
@@ -240,6 +245,7 @@ QWidget *MillingPanel::createPlots()
     m_windowPlot->setAxisLabels(tr("lead [°]"), tr("tilt [°]"));
     m_planSummary = new QLabel(tr("Plan to see the largest feed per tooth that holds the tolerance at each lead "
                                   "and tilt."));
+    m_planSummary->setObjectName(QStringLiteral("millingPlanSummary"));
     m_planSummary->setWordWrap(true);
     m_planSummary->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_planSummary->setMinimumHeight(2 * m_planSummary->fontMetrics().lineSpacing() + 4);
@@ -332,7 +338,10 @@ void MillingPanel::compute()
 {
     const Inputs in = inputs();
     if (const QStringList p = problems(in); !p.isEmpty()) {
-        clearResults(QStringLiteral("<b>%1</b>").arg(p.join(QStringLiteral("<br>")).toHtmlEscaped()));
+        QStringList escaped;
+        for (const QString &line : p)
+            escaped << line.toHtmlEscaped();
+        clearResults(QStringLiteral("<b>%1</b>").arg(escaped.join(QStringLiteral("<br>"))));
         return;
     }
     const std::vector<std::string> structure = validateToolStructure(in.tool, in.mill);
@@ -355,7 +364,16 @@ void MillingPanel::compute()
             m_summary->text() +
             QStringLiteral("<br><b>%1</b>").arg(tr("No surface error: %1").arg(missing).toHtmlEscaped()));
     }
-    m_planButton->setEnabled(structure.empty() && !isPlanning());
+    updatePlanButton();
+    if (m_plan && !isPlanning())
+        m_planSummary->setText(tr("The inputs have changed since this plan: plan again."));
+}
+
+void MillingPanel::updatePlanButton()
+{
+    const Inputs in = inputs();
+    m_planButton->setEnabled(!isPlanning() && problems(in).isEmpty() &&
+                             validateToolStructure(in.tool, in.mill).empty());
 }
 
 void MillingPanel::showForces(const Inputs &in, const BallEndDeflection &result)
@@ -421,8 +439,16 @@ void MillingPanel::plan()
     m_planButton->setEnabled(false);
     m_planSummary->setText(tr("Planning: 64 × 64 leads and tilts…"));
     m_tabs->setCurrentIndex(2);
+    m_planInputs = in;
     m_watcher.setFuture(QtConcurrent::run(workerThreads(), [in] {
-        return planBallEndCut(in.mill, in.tool, *in.coefficients, in.cut, in.spindle_rpm, in.tolerance, in.settings);
+        MillingPlanOutcome outcome;
+        try {
+            outcome.plan =
+                planBallEndCut(in.mill, in.tool, *in.coefficients, in.cut, in.spindle_rpm, in.tolerance, in.settings);
+        } catch (const std::exception &e) {
+            outcome.error = QString::fromStdString(e.what());
+        }
+        return outcome;
     }));
 }
 
@@ -430,7 +456,7 @@ void MillingPanel::showWindow()
 {
     if (!m_plan)
         return;
-    const Inputs in = inputs();
+    const Inputs &in = m_planInputs;
     const BallEndPlan &p = *m_plan;
     m_windowPlot->clear();
     m_windowPlot->setImage(windowImage(p.window, in.settings.highestFeedPerTooth_mm),

@@ -21,6 +21,12 @@ namespace tolturn {
 class LinePlot;
 class MapPlot;
 
+// What a plan on the worker thread gives back: the plan, or why there is none.
+struct MillingPlanOutcome {
+    std::optional<BallEndPlan> plan;
+    QString error;
+};
+
 // The Milling dock (issue 19, docs/milling.md): a five-axis ball-end cut after Öztürk & Budak, its
 // forces against the rotation angle, the surface-normal error it leaves against the tolerance, and
 // the lead–tilt window with the plan of least time. Starts from 001's case 1; the cutting
@@ -85,6 +91,7 @@ private:
     void showError(const Inputs &in, const BallEndDeflection &result);
     void showWindow();
     void clearResults(const QString &why);
+    void updatePlanButton();
 
     QComboBox *m_case;
     QDoubleSpinBox *m_diameter;
@@ -115,8 +122,9 @@ private:
     MapPlot *m_windowPlot;
     QLabel *m_summary;
     QLabel *m_planSummary;
-    QFutureWatcher<BallEndPlan> m_watcher;
+    QFutureWatcher<MillingPlanOutcome> m_watcher;
     std::optional<BallEndPlan> m_plan;
+    Inputs m_planInputs; // what the plan was made for
     bool m_loading = false;
 };
 
