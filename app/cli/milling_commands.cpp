@@ -28,11 +28,6 @@ struct MillingCommand {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-// Carbide's Young's modulus: 630 000 N/mm² (MakeItFrom, "Tungsten Carbide (WC)"); cemented carbides
-// span 530 000–700 000 N/mm² (Wikipedia, "Tungsten carbide", 2024-01). resources/data/holders.json
-// keeps both sources (MAKEITFROM_WC, WIKIPEDIA_WC).
-constexpr double kCarbideModulus_N_mm2 = 630000.0;
-
 struct MillingOptions {
     QCommandLineOption caseNumber{QStringLiteral("case"),
                                   MillingCommand::tr("Öztürk & Budak's cut 1–4 (001 table 4): tool, cut and speed; "

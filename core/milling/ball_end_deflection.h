@@ -14,6 +14,11 @@
 
 namespace tolturn {
 
+// Carbide's Young's modulus: 630 000 N/mm² (MakeItFrom, "Tungsten Carbide (WC)"); cemented carbides
+// span 530 000–700 000 N/mm² (Wikipedia, "Tungsten carbide", 2024-01). resources/data/holders.json
+// keeps both sources (MAKEITFROM_WC, WIKIPEDIA_WC). The command line's and the dock's default.
+inline constexpr double kCarbideModulus_N_mm2 = 630000.0;
+
 struct BallEndToolStructure {
     double overhang_mm = 0.0;               // L: from where the holder grips the tool to its tip
     double equivalentDiameter_mm = 0.0;     // of the cylinder that stands for the fluted tool

@@ -31,10 +31,6 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-// Carbide's Young's modulus, 630 000 N/mm² (MakeItFrom, "Tungsten Carbide (WC)"; cemented carbides
-// 530 000–700 000 N/mm², Wikipedia "Tungsten carbide"; resources/data/holders.json).
-constexpr double kCarbideModulus_N_mm2 = 630000.0;
-
 QDoubleSpinBox *spin(double lo, double hi, int decimals, const QString &suffix, double value)
 {
     auto *box = new QDoubleSpinBox;
