@@ -17,6 +17,8 @@ struct MillingForceCoefficients {
     double tangentialEdge_N_mm = 0.0;
     double radialEdge_N_mm = 0.0;
     double axialEdge_N_mm = 0.0;
+
+    friend bool operator==(const MillingForceCoefficients &, const MillingForceCoefficients &) = default;
 };
 
 struct EndMillingCut {

@@ -368,6 +368,134 @@ Tolerance readTolerance(JsonObjectReader &r, Diagnostics &out)
     return t;
 }
 
+// ---- milled features (docs/project-format.md "Milled features") ------------------------------
+
+std::optional<double> readOptionalNumber(JsonObjectReader &r, const char *key)
+{
+    return r.number(QLatin1String(key), Presence::Optional);
+}
+
+BallEndTool readBallEndTool(const QJsonObject &json, const QString &path, Diagnostics &out)
+{
+    JsonObjectReader r(json, path, out);
+    BallEndTool t;
+    t.diameter_mm = r.number(QStringLiteral("diameter_mm"), Presence::Required).value_or(0.0);
+    t.flutes = r.integer(QStringLiteral("flutes"), Presence::Required).value_or(0);
+    t.helix_deg = r.number(QStringLiteral("helix_deg"), Presence::Required).value_or(0.0);
+    t.overhang_mm = r.number(QStringLiteral("overhang_mm"), Presence::Required).value_or(0.0);
+    t.equivalentDiameter_mm = r.number(QStringLiteral("equivalent_diameter_mm"), Presence::Required).value_or(0.0);
+    t.youngsModulus_N_mm2 = readOptionalNumber(r, "youngs_modulus_N_mm2");
+    t.holderStiffness_N_mm = readOptionalNumber(r, "holder_stiffness_N_mm");
+    t.holderRotational_N_mm_rad = readOptionalNumber(r, "holder_rotational_Nmm_rad");
+    r.finish();
+    return t;
+}
+
+MillingConditions readMillingConditions(const QJsonObject &json, const QString &path, Diagnostics &out)
+{
+    JsonObjectReader r(json, path, out);
+    MillingConditions c;
+    c.cut = readKeyword<BallEndCutKind>(r, QStringLiteral("cut"), Presence::Required, ProjectJson::tr("cut"))
+                .value_or(BallEndCutKind::Slot);
+    c.direction = readKeyword<MillingDirection>(r, QStringLiteral("direction"), Presence::Optional,
+                                                ProjectJson::tr("milling direction"))
+                      .value_or(MillingDirection::Down);
+    c.axialDepth_mm = r.number(QStringLiteral("axial_depth_mm"), Presence::Required).value_or(0.0);
+    c.radialDepth_mm = r.number(QStringLiteral("radial_depth_mm"),
+                                c.cut == BallEndCutKind::Slot ? Presence::Optional : Presence::Required)
+                           .value_or(0.0);
+    c.feedPerTooth_mm = r.number(QStringLiteral("feed_per_tooth_mm"), Presence::Required).value_or(0.0);
+    c.spindle_rpm = r.number(QStringLiteral("spindle_rpm"), Presence::Required).value_or(0.0);
+    c.lead_deg = r.number(QStringLiteral("lead_deg"), Presence::Optional).value_or(0.0);
+    c.tilt_deg = r.number(QStringLiteral("tilt_deg"), Presence::Optional).value_or(0.0);
+    r.finish();
+    return c;
+}
+
+MillingForceCoefficients readMillingCoefficients(const QJsonObject &json, const QString &path, QString &source,
+                                                 Diagnostics &out)
+{
+    JsonObjectReader r(json, path, out);
+    MillingForceCoefficients k;
+    k.tangentialCutting_N_mm2 = r.number(QStringLiteral("Ktc_N_mm2"), Presence::Required).value_or(0.0);
+    k.radialCutting_N_mm2 = r.number(QStringLiteral("Krc_N_mm2"), Presence::Required).value_or(0.0);
+    k.axialCutting_N_mm2 = r.number(QStringLiteral("Kac_N_mm2"), Presence::Required).value_or(0.0);
+    k.tangentialEdge_N_mm = r.number(QStringLiteral("Kte_N_mm"), Presence::Required).value_or(0.0);
+    k.radialEdge_N_mm = r.number(QStringLiteral("Kre_N_mm"), Presence::Required).value_or(0.0);
+    k.axialEdge_N_mm = r.number(QStringLiteral("Kae_N_mm"), Presence::Required).value_or(0.0);
+    source = r.text(QStringLiteral("source"), Presence::Optional).value_or(QString());
+    r.finish();
+    return k;
+}
+
+MilledTolerance readMilledTolerance(const QJsonObject &json, const QString &path, Diagnostics &out)
+{
+    JsonObjectReader r(json, path, out);
+    MilledTolerance t;
+    t.type = readKeyword<MilledToleranceType>(r, QStringLiteral("type"), Presence::Required,
+                                              ProjectJson::tr("milled tolerance type"))
+                 .value_or(MilledToleranceType::Flatness);
+    t.zone_um = r.number(QStringLiteral("value_um"), Presence::Required).value_or(0.0);
+    t.datums = readDatumLabels(r, out);
+    r.finish();
+    return t;
+}
+
+// [x, y, z]: three numbers, or an error naming the field.
+std::array<double, 3> readTriple(JsonObjectReader &r, const QString &key, Diagnostics &out)
+{
+    std::array<double, 3> v{};
+    const auto json = r.array(key, Presence::Required);
+    if (!json)
+        return v;
+    if (json->size() != 3) {
+        out.push_back(
+            makeError(r.fieldPath(key), ProjectJson::tr("expected three numbers, found %1").arg(json->size())));
+        return v;
+    }
+    for (qsizetype i = 0; i < 3; ++i) {
+        if (!json->at(i).isDouble())
+            out.push_back(
+                makeError(elementPath(r.fieldPath(key), i),
+                          ProjectJson::tr("expected a number, found %1").arg(describeJsonValue(json->at(i)))));
+        v[static_cast<std::size_t>(i)] = json->at(i).toDouble();
+    }
+    return v;
+}
+
+ClPoint readClPoint(JsonObjectReader &r, Diagnostics &out)
+{
+    ClPoint p;
+    p.position_mm = readTriple(r, QStringLiteral("tip_mm"), out);
+    p.toolAxis = readTriple(r, QStringLiteral("axis"), out);
+    p.surfaceNormal = readTriple(r, QStringLiteral("normal"), out);
+    return p;
+}
+
+MilledFeature readMilledFeature(JsonObjectReader &r, Diagnostics &out)
+{
+    MilledFeature f;
+    f.id = r.text(QStringLiteral("id"), Presence::Required).value_or(QString());
+    f.kind = readKeyword<MilledFeatureKind>(r, QStringLiteral("kind"), Presence::Required,
+                                            ProjectJson::tr("milled feature kind"))
+                 .value_or(MilledFeatureKind::Flat);
+    f.description = r.text(QStringLiteral("description"), Presence::Optional).value_or(QString());
+    f.zFrom_mm = r.number(QStringLiteral("z_from_mm"), Presence::Required).value_or(0.0);
+    f.zTo_mm = r.number(QStringLiteral("z_to_mm"), Presence::Required).value_or(0.0);
+    if (const auto tool = r.object(QStringLiteral("tool"), Presence::Optional))
+        f.tool = readBallEndTool(*tool, r.fieldPath(QStringLiteral("tool")), out);
+    if (const auto conditions = r.object(QStringLiteral("conditions"), Presence::Optional))
+        f.conditions = readMillingConditions(*conditions, r.fieldPath(QStringLiteral("conditions")), out);
+    if (const auto coefficients = r.object(QStringLiteral("coefficients"), Presence::Optional))
+        f.coefficients = readMillingCoefficients(*coefficients, r.fieldPath(QStringLiteral("coefficients")),
+                                                 f.coefficientsSource, out);
+    if (const auto tolerance = r.object(QStringLiteral("tolerance"), Presence::Optional))
+        f.tolerance = readMilledTolerance(*tolerance, r.fieldPath(QStringLiteral("tolerance")), out);
+    f.path = readList<ClPoint>(r, QStringLiteral("path"), out,
+                               [&out](JsonObjectReader &point) { return readClPoint(point, out); });
+    return f;
+}
+
 std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
 {
     JsonObjectReader r(root, QString(), out);
@@ -420,6 +548,9 @@ std::optional<Project> readProject(const QJsonObject &root, Diagnostics &out)
         p.planning = readPlanning(*planning, out);
     p.tolerances = readList<Tolerance>(r, QStringLiteral("tolerances"), out,
                                        [&out](JsonObjectReader &reader) { return readTolerance(reader, out); });
+    p.milledFeatures =
+        readList<MilledFeature>(r, QStringLiteral("milled_features"), out,
+                                [&out](JsonObjectReader &reader) { return readMilledFeature(reader, out); });
     r.finish();
     return p;
 }
@@ -536,6 +667,93 @@ QJsonObject operationJson(const Operation &op)
         o.insert(QStringLiteral("boring_tool"), toolJson(*op.boringTool));
     return o;
 }
+
+QJsonArray tripleJson(const std::array<double, 3> &v)
+{
+    return QJsonArray{v[0], v[1], v[2]};
+}
+
+QJsonObject ballEndToolJson(const BallEndTool &t)
+{
+    QJsonObject o{{QStringLiteral("diameter_mm"), t.diameter_mm},
+                  {QStringLiteral("flutes"), t.flutes},
+                  {QStringLiteral("helix_deg"), t.helix_deg},
+                  {QStringLiteral("overhang_mm"), t.overhang_mm},
+                  {QStringLiteral("equivalent_diameter_mm"), t.equivalentDiameter_mm}};
+    insertOptional(o, "youngs_modulus_N_mm2", t.youngsModulus_N_mm2);
+    insertOptional(o, "holder_stiffness_N_mm", t.holderStiffness_N_mm);
+    insertOptional(o, "holder_rotational_Nmm_rad", t.holderRotational_N_mm_rad);
+    return o;
+}
+
+QJsonObject millingConditionsJson(const MillingConditions &c)
+{
+    QJsonObject o{{QStringLiteral("cut"), keyword(c.cut)},
+                  {QStringLiteral("direction"), keyword(c.direction)},
+                  {QStringLiteral("axial_depth_mm"), c.axialDepth_mm},
+                  {QStringLiteral("feed_per_tooth_mm"), c.feedPerTooth_mm},
+                  {QStringLiteral("spindle_rpm"), c.spindle_rpm},
+                  {QStringLiteral("lead_deg"), c.lead_deg},
+                  {QStringLiteral("tilt_deg"), c.tilt_deg}};
+    if (c.cut != BallEndCutKind::Slot)
+        o.insert(QStringLiteral("radial_depth_mm"), c.radialDepth_mm);
+    return o;
+}
+
+QJsonObject millingCoefficientsJson(const MillingForceCoefficients &k, const QString &source)
+{
+    QJsonObject o{
+        {QStringLiteral("Ktc_N_mm2"), k.tangentialCutting_N_mm2}, {QStringLiteral("Krc_N_mm2"), k.radialCutting_N_mm2},
+        {QStringLiteral("Kac_N_mm2"), k.axialCutting_N_mm2},      {QStringLiteral("Kte_N_mm"), k.tangentialEdge_N_mm},
+        {QStringLiteral("Kre_N_mm"), k.radialEdge_N_mm},          {QStringLiteral("Kae_N_mm"), k.axialEdge_N_mm}};
+    if (!source.isEmpty())
+        o.insert(QStringLiteral("source"), source);
+    return o;
+}
+
+} // namespace
+
+QJsonObject milledFeatureJson(const MilledFeature &f)
+{
+    QJsonObject o{{QStringLiteral("id"), f.id},
+                  {QStringLiteral("kind"), keyword(f.kind)},
+                  {QStringLiteral("z_from_mm"), f.zFrom_mm},
+                  {QStringLiteral("z_to_mm"), f.zTo_mm}};
+    if (!f.description.isEmpty())
+        o.insert(QStringLiteral("description"), f.description);
+    if (f.tool)
+        o.insert(QStringLiteral("tool"), ballEndToolJson(*f.tool));
+    if (f.conditions)
+        o.insert(QStringLiteral("conditions"), millingConditionsJson(*f.conditions));
+    if (f.coefficients)
+        o.insert(QStringLiteral("coefficients"), millingCoefficientsJson(*f.coefficients, f.coefficientsSource));
+    if (f.tolerance) {
+        QJsonObject t{{QStringLiteral("type"), keyword(f.tolerance->type)},
+                      {QStringLiteral("value_um"), f.tolerance->zone_um}};
+        if (!f.tolerance->datums.isEmpty())
+            t.insert(QStringLiteral("datums"), QJsonArray::fromStringList(f.tolerance->datums));
+        o.insert(QStringLiteral("tolerance"), t);
+    }
+    if (!f.path.empty()) {
+        QJsonArray path;
+        for (const ClPoint &p : f.path)
+            path.append(QJsonObject{{QStringLiteral("tip_mm"), tripleJson(p.position_mm)},
+                                    {QStringLiteral("axis"), tripleJson(p.toolAxis)},
+                                    {QStringLiteral("normal"), tripleJson(p.surfaceNormal)}});
+        o.insert(QStringLiteral("path"), path);
+    }
+    return o;
+}
+
+MilledFeature milledFeatureFromJson(const QJsonObject &json, const QString &path, Diagnostics &out)
+{
+    JsonObjectReader r(json, path, out);
+    MilledFeature f = readMilledFeature(r, out);
+    r.finish();
+    return f;
+}
+
+namespace {
 
 QJsonObject springsJson(const SpindleSprings &s)
 {
@@ -787,6 +1005,12 @@ QJsonObject projectJsonObject(const Project &p)
         for (const Operation &op : p.furtherOperations)
             operations.append(operationJson(op));
         root.insert(QStringLiteral("further_operations"), operations);
+    }
+    if (!p.milledFeatures.empty()) {
+        QJsonArray milled;
+        for (const MilledFeature &f : p.milledFeatures)
+            milled.append(milledFeatureJson(f));
+        root.insert(QStringLiteral("milled_features"), milled);
     }
     if (p.cuttingModel != CuttingModel{})
         root.insert(QStringLiteral("cutting_model"), cuttingModelJson(p.cuttingModel));

@@ -37,6 +37,12 @@ struct ProjectParseResult {
 [[nodiscard]] QByteArray serializeProjectJson(const Project &project);
 [[nodiscard]] QJsonObject projectJsonObject(const Project &project);
 
+// One milled feature as the project writes it in "milled_features", and back: `path` names the
+// object in the findings (a bad or unknown field is a diagnostic in `out`, its value left at its
+// default). For documents that carry features outside a project (core/io/cad_import_json.h).
+[[nodiscard]] QJsonObject milledFeatureJson(const MilledFeature &feature);
+[[nodiscard]] MilledFeature milledFeatureFromJson(const QJsonObject &json, const QString &path, Diagnostics &out);
+
 // The value a project would write at `field` (a finding's path, "part.outer[2].to.r_mm");
 // undefined where it writes none (an unset optional value, an index past the list).
 [[nodiscard]] QJsonValue projectValueAt(const Project &project, const QString &field);

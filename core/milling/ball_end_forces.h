@@ -35,10 +35,6 @@ struct BallEndMill {
     double helix_rad = 0.0; // i0, the helix angle where the edge reaches the full diameter
 };
 
-// What the ball cuts into (001 §2.2): a slot as wide as the ball at the axial depth, the side of
-// uncut material at radial depth s (table 1), or the step-over s beside a previous pass (table 2).
-enum class BallEndCutKind { Slot, SideCut, StepOver };
-
 // One five-axis ball-end cut. The workpiece frame (001 §2.3) is F (feed), C (cross-feed), N
 // (surface normal); the tool axis is tilted from N by the lead about C and the tilt about F.
 struct BallEndCut {

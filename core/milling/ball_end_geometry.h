@@ -6,6 +6,8 @@
 // into uncut or previously cut material, and the lead–tilt transformation of five-axis milling.
 // z is measured up the tool axis from the tip; angles in radians.
 
+#include "core/milling/milling_kinds.h"
+
 #include <Eigen/Core>
 
 namespace tolturn {
@@ -19,8 +21,6 @@ namespace tolturn {
 
 // The scallop (cusp) height h = R_o − sqrt(R_o² − s² / 4) (001 eq. 5) of passes s apart.
 [[nodiscard]] double scallopHeight_mm(double ballRadius_mm, double stepOver_mm);
-
-enum class MillingDirection { Down, Up };
 
 struct Engagement {
     double entry_rad = 0.0; // φ_st

@@ -92,6 +92,40 @@ struct KeywordTable<ForceModel> {
     }};
 };
 
+template <>
+struct KeywordTable<MilledFeatureKind> {
+    static constexpr std::array<std::pair<MilledFeatureKind, const char *>, 3> entries{{
+        {MilledFeatureKind::Flat, "flat"},
+        {MilledFeatureKind::Keyway, "keyway"},
+        {MilledFeatureKind::Patch, "patch"},
+    }};
+};
+
+template <>
+struct KeywordTable<MilledToleranceType> {
+    static constexpr std::array<std::pair<MilledToleranceType, const char *>, 2> entries{{
+        {MilledToleranceType::Flatness, "flatness"},
+        {MilledToleranceType::Profile, "profile"},
+    }};
+};
+
+template <>
+struct KeywordTable<BallEndCutKind> {
+    static constexpr std::array<std::pair<BallEndCutKind, const char *>, 3> entries{{
+        {BallEndCutKind::Slot, "slot"},
+        {BallEndCutKind::SideCut, "side_cut"},
+        {BallEndCutKind::StepOver, "step_over"},
+    }};
+};
+
+template <>
+struct KeywordTable<MillingDirection> {
+    static constexpr std::array<std::pair<MillingDirection, const char *>, 2> entries{{
+        {MillingDirection::Down, "down"},
+        {MillingDirection::Up, "up"},
+    }};
+};
+
 template <typename Enum>
 QString keywordOf(Enum value)
 {
@@ -149,6 +183,26 @@ const QStringList &planningConstraintKeywords()
 }
 
 QString keyword(PlanningObjective value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(MilledFeatureKind value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(MilledToleranceType value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(BallEndCutKind value)
+{
+    return keywordOf(value);
+}
+
+QString keyword(MillingDirection value)
 {
     return keywordOf(value);
 }
@@ -227,6 +281,32 @@ QString displayName(ToleranceType value)
     return keyword(value);
 }
 
+QString displayName(MilledFeatureKind value)
+{
+    switch (value) {
+    case MilledFeatureKind::Flat:
+        return Names::tr("flat");
+    case MilledFeatureKind::Keyway:
+        return Names::tr("keyway");
+    case MilledFeatureKind::Patch:
+        return Names::tr("surface patch");
+    }
+    return keyword(value);
+}
+
+QString displayName(BallEndCutKind value)
+{
+    switch (value) {
+    case BallEndCutKind::Slot:
+        return Names::tr("slot");
+    case BallEndCutKind::SideCut:
+        return Names::tr("side cut");
+    case BallEndCutKind::StepOver:
+        return Names::tr("step-over");
+    }
+    return keyword(value);
+}
+
 template <typename Enum>
 std::optional<Enum> fromKeyword(const QString &word)
 {
@@ -254,6 +334,14 @@ template std::optional<PartEnd> fromKeyword<PartEnd>(const QString &);
 template std::optional<ToleranceType> fromKeyword<ToleranceType>(const QString &);
 template std::optional<ForceModel> fromKeyword<ForceModel>(const QString &);
 template std::optional<PlanningObjective> fromKeyword<PlanningObjective>(const QString &);
+template std::optional<MilledFeatureKind> fromKeyword<MilledFeatureKind>(const QString &);
+template std::optional<MilledToleranceType> fromKeyword<MilledToleranceType>(const QString &);
+template std::optional<BallEndCutKind> fromKeyword<BallEndCutKind>(const QString &);
+template std::optional<MillingDirection> fromKeyword<MillingDirection>(const QString &);
+template QStringList allKeywords<MilledFeatureKind>();
+template QStringList allKeywords<MilledToleranceType>();
+template QStringList allKeywords<BallEndCutKind>();
+template QStringList allKeywords<MillingDirection>();
 template QStringList allKeywords<SegmentKind>();
 template QStringList allKeywords<ArcDirection>();
 template QStringList allKeywords<ClampingMethod>();

@@ -21,12 +21,18 @@ namespace tolturn {
 [[nodiscard]] QString keyword(ToleranceType value);
 [[nodiscard]] QString keyword(ForceModel value);
 [[nodiscard]] QString keyword(PlanningObjective value);
+[[nodiscard]] QString keyword(MilledFeatureKind value);
+[[nodiscard]] QString keyword(MilledToleranceType value);
+[[nodiscard]] QString keyword(BallEndCutKind value);
+[[nodiscard]] QString keyword(MillingDirection value);
 
 // Names for people, translated: "chuck + tailstock" where the file says "chuck_tailstock".
 [[nodiscard]] QString displayName(ClampingMethod value);
 [[nodiscard]] QString displayName(PartEnd value); // "left", "right", translated
 [[nodiscard]] QString displayName(SegmentKind value);
 [[nodiscard]] QString displayName(ToleranceType value);
+[[nodiscard]] QString displayName(MilledFeatureKind value); // "flat", "keyway", "surface patch"
+[[nodiscard]] QString displayName(BallEndCutKind value);
 
 // The constraints of the cutting-condition optimiser, as named in files, on the command line
 // and in results (docs/planning.md): tolerances, roughness, power, torque, force, spindle_speed,

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/part/profile.h"
+#include "core/project/milled_feature.h"
 
 #include <QJsonValue>
 #include <QMap>
@@ -254,6 +255,7 @@ struct Project {
     std::optional<OperationScope> scope;      // set only on a view of one operation, never in a file
     std::vector<Datum> datums;
     std::vector<Tolerance> tolerances;
+    std::vector<MilledFeature> milledFeatures; // of a mill-turn part (docs/milling.md)
     CuttingModel cuttingModel;
     MachineCharacterisation characterisation;
     Environment environment;

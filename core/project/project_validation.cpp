@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/project/project_validation.h"
 
+#include "core/milling/milled_features.h"
 #include "core/part/profile_validation.h"
 #include "core/project/keywords.h"
 #include "core/project/operations.h"
@@ -430,6 +431,7 @@ Diagnostics validateProject(const Project &project)
     checkCharacterisation(project, out);
     checkEnvironment(project.environment, out);
     checkPlanning(project, out);
+    checkMilledFeatures(project, out);
     const Diagnostics operations = checkOperations(project);
     out.insert(out.end(), operations.begin(), operations.end());
     return out;
