@@ -51,6 +51,8 @@ QString projectSummary(const Project &p)
                           .arg(displayName(p.clamping.method),
                                CommandLine::tr("%n pass(es)", nullptr, static_cast<int>(p.passes.size())),
                                CommandLine::tr("%n tolerance(s)", nullptr, static_cast<int>(p.tolerances.size())));
+    if (!p.milledFeatures.empty())
+        summary += CommandLine::tr(", %n milled feature(s)", nullptr, static_cast<int>(p.milledFeatures.size()));
     const int count = operationCount(p);
     if (count == 1)
         return summary;

@@ -4,6 +4,7 @@
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
 #include "app/cli/learn_command.h"
+#include "app/cli/milled_feature_output.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -263,6 +264,8 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
         first = last = chosen->scope ? chosen->scope->index : 0;
     }
     QJsonArray operations;
+    // The milled features belong to the part, not to a set-up of the lathe: judged once.
+    const std::vector<MilledFeatureEvaluation> milled = evaluateMilledFeatures(*project);
     for (int k = first; k <= last; ++k) {
         const Project view = operationView(*project, k);
         RangeEvaluation range = evaluateOverStiffnessRange(view, DataLibrary::builtIn());
@@ -277,6 +280,7 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
             QJsonObject o = rangeJson(view, range);
             if (count == 1) {
                 o.insert(QStringLiteral("file"), file);
+                o.insert(QStringLiteral("milled_features"), milledFeaturesJson(*project, milled));
                 return printJson(o, out, err, QStringLiteral("evaluate"));
             }
             o.insert(QStringLiteral("name"), operationName(*project, k));
@@ -295,8 +299,11 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
         printRange(range, out);
     }
     if (parser.isSet(json))
-        return printJson(QJsonObject{{QStringLiteral("file"), file}, {QStringLiteral("operations"), operations}}, out,
-                         err, QStringLiteral("evaluate"));
+        return printJson(QJsonObject{{QStringLiteral("file"), file},
+                                     {QStringLiteral("operations"), operations},
+                                     {QStringLiteral("milled_features"), milledFeaturesJson(*project, milled)}},
+                         out, err, QStringLiteral("evaluate"));
+    printMilledFeatures(*project, milled, out);
     return kExitOk;
 }
 

@@ -43,9 +43,10 @@ std::optional<int> indexOption(const QCommandLineParser &parser, const QCommandL
     return std::nullopt;
 }
 
-Project projectFor(const PartProfile &part, const QString &material, const QString &machine)
+Project projectFor(const CadImportResult &r, const QString &material, const QString &machine)
 {
-    Project p = projectForPart(part);
+    Project p = projectForPart(*r.profile);
+    p.milledFeatures = r.milledFeatures;
     p.materialId = material;
     p.machineId = machine;
     return p;
@@ -66,7 +67,7 @@ QString writeImported(const CadImportResult &r, const QString &output, const QSt
 {
     if (!r.profile || hasErrors(r.diagnostics))
         return ImportCommand::tr("no project written: the import has errors");
-    const Project project = projectFor(*r.profile, material, machine);
+    const Project project = projectFor(r, material, machine);
     if (isStandardOutput(output))
         return writeOutput(output, serializeProjectJson(project), out);
     const WriteResult written = writeProjectFile(output, project);
@@ -103,8 +104,8 @@ QString importSummary()
 {
     return ImportCommand::tr(
         "Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in "
-        "mm, z = 0 at the left end; features that are not turned (flats, keyways, cross holes) are listed as "
-        "warnings.");
+        "mm, z = 0 at the left end; flats and keyways become milled features, other features that are not turned "
+        "(cross holes) are listed as warnings.");
 }
 
 int runImport(const QStringList &args, QTextStream &out, QTextStream &err)

@@ -3,7 +3,9 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "app/cli/milling_input.h"
 #include "core/common/csv.h"
+#include "core/io/project_file.h"
 #include "core/milling/ball_end_deflection.h"
 #include "core/milling/ball_end_planning.h"
 #include "core/milling/seed_ball_end_cases.h"
@@ -22,182 +24,7 @@ namespace tolturn {
 
 namespace {
 
-struct MillingCommand {
-    Q_DECLARE_TR_FUNCTIONS(MillingCommand)
-};
-
 constexpr double kDegree = std::numbers::pi / 180.0;
-
-struct MillingOptions {
-    QCommandLineOption caseNumber{QStringLiteral("case"),
-                                  MillingCommand::tr("Öztürk & Budak's cut 1–4 (001 table 4): tool, cut and speed; "
-                                                     "the options below change it."),
-                                  QStringLiteral("N")};
-    QCommandLineOption diameter{QStringLiteral("diameter"), MillingCommand::tr("Ball diameter in mm."),
-                                QStringLiteral("MM")};
-    QCommandLineOption flutes{QStringLiteral("flutes"), MillingCommand::tr("Number of flutes."), QStringLiteral("N")};
-    QCommandLineOption helix{QStringLiteral("helix"), MillingCommand::tr("Helix angle in degrees (default 30)."),
-                             QStringLiteral("DEG")};
-    QCommandLineOption lead{QStringLiteral("lead"), MillingCommand::tr("Lead angle in degrees (default 0)."),
-                            QStringLiteral("DEG")};
-    QCommandLineOption tilt{QStringLiteral("tilt"), MillingCommand::tr("Tilt angle in degrees (default 0)."),
-                            QStringLiteral("DEG")};
-    QCommandLineOption axialDepth{QStringLiteral("axial-depth"),
-                                  MillingCommand::tr("Axial depth of cut along the surface normal in mm."),
-                                  QStringLiteral("MM")};
-    QCommandLineOption radialDepth{QStringLiteral("radial-depth"),
-                                   MillingCommand::tr("Side cut into uncut material this wide, in mm (table 1); "
-                                                      "without it or --step-over, a slot."),
-                                   QStringLiteral("MM")};
-    QCommandLineOption stepOver{QStringLiteral("step-over"),
-                                MillingCommand::tr("Cut beside a previous pass this far away, in mm (table 2)."),
-                                QStringLiteral("MM")};
-    QCommandLineOption up{QStringLiteral("up"), MillingCommand::tr("Up milling (default down milling).")};
-    QCommandLineOption feedPerTooth{QStringLiteral("feed-per-tooth"), MillingCommand::tr("Feed per tooth in mm."),
-                                    QStringLiteral("MM")};
-    QCommandLineOption spindle{QStringLiteral("spindle-speed"), MillingCommand::tr("Spindle speed in 1/min."),
-                               QStringLiteral("RPM")};
-    QCommandLineOption coefficients{
-        QStringLiteral("coefficients"),
-        MillingCommand::tr("The tool and material's cutting and edge coefficients Ktc,Krc,Kac (N/mm²),Kte,Kre,Kae "
-                           "(N/mm) of the linear edge-force model (001 eq. 11). Required: 001 prints none, and "
-                           "TolTurn's data library has none for ball-end milling."),
-        QStringLiteral("K")};
-    QCommandLineOption slices{QStringLiteral("slices"),
-                              MillingCommand::tr("Disc elements over the engaged height (default 200)."),
-                              QStringLiteral("N"), QStringLiteral("200")};
-    QCommandLineOption angles{QStringLiteral("angles"),
-                              MillingCommand::tr("Rotation angles per revolution (default 360)."), QStringLiteral("N"),
-                              QStringLiteral("360")};
-    QCommandLineOption json{QStringLiteral("json"), MillingCommand::tr("Print the results as JSON.")};
-    QCommandLineOption csv{QStringLiteral("csv"), MillingCommand::tr("Print every rotation angle as CSV.")};
-
-    [[nodiscard]] QList<QCommandLineOption> all() const
-    {
-        return {caseNumber, diameter,     flutes,  helix,        lead,   tilt,   axialDepth, radialDepth, stepOver,
-                up,         feedPerTooth, spindle, coefficients, slices, angles, json,       csv};
-    }
-};
-
-struct MillingInput {
-    BallEndMill mill;
-    BallEndCut cut;
-    double spindle_rpm = 0.0;
-    MillingForceCoefficients coefficients;
-    BallEndResolution resolution;
-    int caseNumber = 0;
-};
-
-void complain(QTextStream &err, const QString &command, const QString &message)
-{
-    err << programName() << ' ' << command << ": " << message << '\n';
-}
-
-// Sets `target` from an option given in range; false after naming it when it is not.
-bool readNumber(const QCommandLineParser &parser, const QCommandLineOption &option, double lo, double hi, double scale,
-                double &target, const QString &command, QTextStream &err)
-{
-    if (!parser.isSet(option))
-        return true;
-    const std::optional<double> v = numberInRange(parser, option, lo, hi, command, err);
-    if (v)
-        target = *v * scale;
-    return v.has_value();
-}
-
-bool readCut(const QCommandLineParser &parser, const MillingOptions &o, MillingInput &in, const QString &command,
-             QTextStream &err)
-{
-    bool ok = readNumber(parser, o.diameter, 0.1, 100.0, 1.0, in.mill.diameter_mm, command, err);
-    if (parser.isSet(o.flutes)) {
-        const std::optional<long long> flutes = wholeNumberInRange(parser, o.flutes, 1, 12, command, err);
-        ok = flutes.has_value() && ok;
-        if (flutes)
-            in.mill.flutes = static_cast<int>(*flutes);
-    }
-    ok = readNumber(parser, o.helix, 0.0, 59.0, kDegree, in.mill.helix_rad, command, err) && ok;
-    ok = readNumber(parser, o.lead, -60.0, 60.0, kDegree, in.cut.lead_rad, command, err) && ok;
-    ok = readNumber(parser, o.tilt, -60.0, 60.0, kDegree, in.cut.tilt_rad, command, err) && ok;
-    ok = readNumber(parser, o.axialDepth, 0.001, 50.0, 1.0, in.cut.axialDepth_mm, command, err) && ok;
-    ok = readNumber(parser, o.feedPerTooth, 0.0001, 2.0, 1.0, in.cut.feedPerTooth_mm, command, err) && ok;
-    ok = readNumber(parser, o.spindle, 1.0, 100000.0, 1.0, in.spindle_rpm, command, err) && ok;
-    if (parser.isSet(o.radialDepth) && parser.isSet(o.stepOver)) {
-        complain(err, command, MillingCommand::tr("give --radial-depth or --step-over, not both"));
-        return false;
-    }
-    if (parser.isSet(o.radialDepth) || parser.isSet(o.stepOver)) {
-        const bool side = parser.isSet(o.radialDepth);
-        in.cut.kind = side ? BallEndCutKind::SideCut : BallEndCutKind::StepOver;
-        ok = readNumber(parser, side ? o.radialDepth : o.stepOver, 0.001, 100.0, 1.0, in.cut.radialDepth_mm, command,
-                        err) &&
-             ok;
-    }
-    if (parser.isSet(o.up))
-        in.cut.direction = MillingDirection::Up;
-    return ok;
-}
-
-bool readResolution(const QCommandLineParser &parser, const MillingOptions &o, MillingInput &in, const QString &command,
-                    QTextStream &err)
-{
-    const std::optional<long long> slices = wholeNumberInRange(parser, o.slices, 1, 20000, command, err);
-    const std::optional<long long> angles = wholeNumberInRange(parser, o.angles, 1, 36000, command, err);
-    if (!slices || !angles)
-        return false;
-    in.resolution = {static_cast<int>(*slices), static_cast<int>(*angles)};
-    return true;
-}
-
-// The tool, cut and coefficients of a mill-* command; nullopt after saying what is wrong.
-std::optional<MillingInput> readMillingInput(const QCommandLineParser &parser, const MillingOptions &o,
-                                             const QString &command, QTextStream &err, bool feedPlanned = false)
-{
-    MillingInput in;
-    in.mill.helix_rad = 30.0 * kDegree;
-    if (parser.isSet(o.caseNumber)) {
-        const std::optional<long long> number = wholeNumberInRange(parser, o.caseNumber, 1, 4, command, err);
-        if (!number)
-            return std::nullopt;
-        const SeedBallEndCase seed = seedBallEndCases().at(static_cast<std::size_t>(*number - 1));
-        in = {seed.mill, seed.cut, seed.spindle_rpm, {}, {}, seed.number};
-    } else {
-        QStringList missing;
-        for (const QCommandLineOption *required : {&o.diameter, &o.flutes, &o.axialDepth, &o.feedPerTooth, &o.spindle})
-            if (!parser.isSet(*required) && !(feedPlanned && required == &o.feedPerTooth))
-                missing << QStringLiteral("--") + required->names().constFirst();
-        in.cut.feedPerTooth_mm = 0.1; // mill-optimize plans it; the force model needs one to start from
-        if (!missing.isEmpty()) {
-            complain(err, command,
-                     MillingCommand::tr("give --case N, or the tool and cut: %1 missing").arg(missing.join(u", ")));
-            return std::nullopt;
-        }
-    }
-    if (!readCut(parser, o, in, command, err) || !readResolution(parser, o, in, command, err))
-        return std::nullopt;
-    if (!parser.isSet(o.coefficients)) {
-        complain(err, command,
-                 MillingCommand::tr("--coefficients Ktc,Krc,Kac,Kte,Kre,Kae is required: Öztürk & Budak print no "
-                                    "coefficients (theirs come from an orthogonal-cutting database of Ti6Al4V through "
-                                    "the oblique transformation), and TolTurn's data library has none for ball-end "
-                                    "milling; give your tool and material's (docs/milling.md)"));
-        return std::nullopt;
-    }
-    const std::optional<MillingForceCoefficients> k = parseMillingCoefficients(parser.value(o.coefficients));
-    if (!k) {
-        complain(err, command,
-                 MillingCommand::tr("--coefficients: \"%1\" is not six numbers Ktc,Krc,Kac,Kte,Kre,Kae of at most %2")
-                     .arg(parser.value(o.coefficients))
-                     .arg(kMaxMillingCoefficient));
-        return std::nullopt;
-    }
-    in.coefficients = *k;
-    const std::vector<std::string> problems = validateBallEndCut(in.mill, in.cut, in.resolution);
-    for (const std::string &p : problems)
-        complain(err, command, QString::fromStdString(p));
-    if (!problems.empty())
-        return std::nullopt;
-    return in;
-}
 
 QString cutKindName(const BallEndCut &cut)
 {
@@ -316,9 +143,14 @@ int parseMilling(QCommandLineParser &parser, const MillingOptions &o, const QStr
 {
     if (const int stop = parseNamedCommand(parser, command, args, out, err); stop >= 0)
         return stop;
-    if (!parser.positionalArguments().isEmpty()) {
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1 || (files.size() == 1 && !parser.isSet(o.feature))) {
         complain(err, command,
-                 MillingCommand::tr("takes no file: \"%1\"").arg(parser.positionalArguments().constFirst()));
+                 MillingCommand::tr("takes a project file only with --feature ID: \"%1\"").arg(files.join(u' ')));
+        return kExitUsage;
+    }
+    if (files.isEmpty() && parser.isSet(o.feature)) {
+        complain(err, command, MillingCommand::tr("--feature needs the project file PROJECT it is in"));
         return kExitUsage;
     }
     if (parser.isSet(o.json) && parser.isSet(o.csv)) {
@@ -326,67 +158,6 @@ int parseMilling(QCommandLineParser &parser, const MillingOptions &o, const QStr
         return kExitUsage;
     }
     return -1;
-}
-
-struct DeflectOptions {
-    QCommandLineOption overhang{QStringLiteral("overhang"),
-                                MillingCommand::tr("From where the holder grips the tool to its tip, in mm."),
-                                QStringLiteral("MM")};
-    QCommandLineOption equivalentDiameter{
-        QStringLiteral("equivalent-diameter"),
-        MillingCommand::tr("Diameter of the cylinder that stands for the fluted tool in bending, in mm."),
-        QStringLiteral("MM")};
-    QCommandLineOption modulus{QStringLiteral("modulus"),
-                               MillingCommand::tr("Young's modulus of the tool in N/mm² (default 630000, tungsten "
-                                                  "carbide; cemented carbides span 530000–700000)."),
-                               QStringLiteral("E"), QString::number(kCarbideModulus_N_mm2)};
-    QCommandLineOption holder{QStringLiteral("holder"),
-                              MillingCommand::tr("The holder's springs k (N/mm) and k_θ (N·mm/rad) as K,KTHETA; with "
-                                                 "--case, 001's calibration 6306,1.656e7 for its tool."),
-                              QStringLiteral("K,KTHETA")};
-};
-
-std::optional<BallEndToolStructure> readStructure(const QCommandLineParser &parser, const DeflectOptions &d,
-                                                  const MillingInput &in, const QString &command, QTextStream &err)
-{
-    BallEndToolStructure tool;
-    QStringList missing;
-    for (const QCommandLineOption *required : {&d.overhang, &d.equivalentDiameter})
-        if (!parser.isSet(*required))
-            missing << QStringLiteral("--") + required->names().constFirst();
-    if (!parser.isSet(d.holder) && in.caseNumber == 0)
-        missing << QStringLiteral("--holder");
-    if (!missing.isEmpty()) {
-        complain(err, command,
-                 MillingCommand::tr("the tool's structure is needed: %1 missing").arg(missing.join(u", ")));
-        return std::nullopt;
-    }
-    bool ok = readNumber(parser, d.overhang, 1.0, 1000.0, 1.0, tool.overhang_mm, command, err);
-    ok = readNumber(parser, d.equivalentDiameter, 0.1, 100.0, 1.0, tool.equivalentDiameter_mm, command, err) && ok;
-    tool.youngsModulus_N_mm2 = kCarbideModulus_N_mm2;
-    ok = readNumber(parser, d.modulus, 1000.0, 1.2e6, 1.0, tool.youngsModulus_N_mm2, command, err) && ok;
-    tool.holderStiffness_N_mm = kSeedHolderStiffness_N_mm;
-    tool.holderRotational_N_mm_rad = kSeedHolderRotational_N_mm_rad;
-    if (parser.isSet(d.holder)) {
-        const QStringList parts = parser.value(d.holder).split(QLatin1Char(','));
-        bool okK = parts.size() == 2;
-        bool okTheta = okK;
-        if (okK) {
-            tool.holderStiffness_N_mm = parts.at(0).trimmed().toDouble(&okK);
-            tool.holderRotational_N_mm_rad = parts.at(1).trimmed().toDouble(&okTheta);
-        }
-        if (!okK || !okTheta) {
-            complain(err, command,
-                     MillingCommand::tr("--holder: \"%1\" is not two numbers K,KTHETA").arg(parser.value(d.holder)));
-            ok = false;
-        }
-    }
-    if (!ok)
-        return std::nullopt;
-    const std::vector<std::string> problems = validateToolStructure(tool, in.mill);
-    for (const std::string &p : problems)
-        complain(err, command, QString::fromStdString(p));
-    return problems.empty() ? std::optional(tool) : std::nullopt;
 }
 
 void printDeflectionCsv(const BallEndDeflection &d, QTextStream &out)
@@ -424,7 +195,63 @@ struct OptimizeOptions {
                              QStringLiteral("N"), QStringLiteral("64")};
     QCommandLineOption threads{QStringLiteral("threads"), MillingCommand::tr("Threads (default 2)."),
                                QStringLiteral("N"), QStringLiteral("2")};
+    QCommandLineOption save{QStringLiteral("save"),
+                            MillingCommand::tr("With --feature: write the plan (lead, tilt, feed per tooth) into the "
+                                               "feature's conditions in PROJECT.")};
 };
+
+// The tolerance: the feature's, or --tolerance and --located; nullopt after saying what is wrong.
+std::optional<MilledSurfaceTolerance> readTolerance(const QCommandLineParser &parser, const OptimizeOptions &p,
+                                                    const MillingInput &in, const QString &command, QTextStream &err)
+{
+    if (in.tolerance) {
+        if (parser.isSet(p.tolerance) || parser.isSet(p.located)) {
+            complain(err, command,
+                     MillingCommand::tr("--tolerance, --located: the tolerance comes from the project's feature; "
+                                        "change it there"));
+            return std::nullopt;
+        }
+        return in.tolerance;
+    }
+    if (!parser.isSet(p.tolerance)) {
+        complain(err, command, MillingCommand::tr("--tolerance is required: the surface's tolerance t in mm"));
+        return std::nullopt;
+    }
+    const std::optional<double> t = numberInRange(parser, p.tolerance, 0.0001, 10.0, command, err);
+    if (!t)
+        return std::nullopt;
+    return MilledSurfaceTolerance{*t, parser.isSet(p.located) ? SurfaceZone::Located : SurfaceZone::Floating};
+}
+
+// Writes a feasible plan into the feature's conditions in its project file (atomically).
+int savePlan(const MillingInput &in, const MilledFeaturePlan &planned, const QString &command, QTextStream &out,
+             QTextStream &err)
+{
+    if (!planned.plan.feasible) {
+        complain(err, command,
+                 MillingCommand::tr("--save: no plan holds the tolerance; %1 is left as it was").arg(in.projectFile));
+        return kExitProblems;
+    }
+    std::optional<Project> project = readProject(in.projectFile, err);
+    if (!project)
+        return kExitProblems;
+    for (MilledFeature &f : project->milledFeatures) {
+        if (f.id != in.feature->id || !f.conditions)
+            continue;
+        if (planned.leadTiltPlanned) {
+            f.conditions->lead_deg = planned.plan.cut.lead_rad / kDegree;
+            f.conditions->tilt_deg = planned.plan.cut.tilt_rad / kDegree;
+        }
+        f.conditions->feedPerTooth_mm = planned.plan.cut.feedPerTooth_mm;
+    }
+    const WriteResult written = writeProjectFile(in.projectFile, *project);
+    if (!written.ok) {
+        complain(err, command, written.error);
+        return kExitProblems;
+    }
+    out << MillingCommand::tr("The plan is saved in %1, feature %2.").arg(in.projectFile, in.feature->id) << '\n';
+    return kExitOk;
+}
 
 // "LO,HI" in degrees within ±60° with LO < HI, into `lo` and `hi` in radians.
 bool readAngleRange(const QCommandLineParser &parser, const QCommandLineOption &option, double &lo, double &hi,
@@ -492,8 +319,26 @@ void printWindowCsv(const LeadTiltWindow &w, QTextStream &out)
             << '\n';
 }
 
-void printPlan(const BallEndPlan &plan, const MilledSurfaceTolerance &tolerance, double highestFeed, QTextStream &out)
+// A patch's plan: its path gives the tool axes, so only the feed is planned.
+void printPathPlan(const BallEndPlan &plan, QTextStream &out)
 {
+    if (!plan.feasible) {
+        out << MillingCommand::tr("No feed holds the tolerance along the path: the edge forces alone deflect the tool "
+                                  "too far at its tool axes.")
+            << '\n';
+        return;
+    }
+    out << MillingCommand::tr("Plan along the path's own tool axes: feed %1 mm/tooth (%2 mm/min); form error %3 µm")
+               .arg(plan.cut.feedPerTooth_mm, 0, 'f', 4)
+               .arg(plan.feedRate_mm_min, 0, 'f', 1)
+               .arg(1000.0 * plan.formError_mm, 0, 'f', 2)
+        << '\n';
+}
+
+void printPlan(const MilledFeaturePlan &planned, const MilledSurfaceTolerance &tolerance, double highestFeed,
+               QTextStream &out)
+{
+    const BallEndPlan &plan = planned.plan;
     int onBall = 0;
     int holding = 0;
     for (const LeadTiltCell &c : plan.window.cells) {
@@ -507,8 +352,12 @@ void printPlan(const BallEndPlan &plan, const MilledSurfaceTolerance &tolerance,
                                              "normal error")
                         : MillingCommand::tr("located zone (profile with datums): normal error within ±t/2"))
                .arg(highestFeed)
-        << '\n'
-        << MillingCommand::tr("Window %1 × %2: %3 cells with the cut on the ball, %4 of them hold the tolerance")
+        << '\n';
+    if (!planned.leadTiltPlanned) {
+        printPathPlan(plan, out);
+        return;
+    }
+    out << MillingCommand::tr("Window %1 × %2: %3 cells with the cut on the ball, %4 of them hold the tolerance")
                .arg(plan.window.columns)
                .arg(plan.window.rows)
                .arg(onBall)
@@ -535,7 +384,8 @@ void printPlan(const BallEndPlan &plan, const MilledSurfaceTolerance &tolerance,
 
 QString millForcesSynopsis()
 {
-    return QStringLiteral("mill-forces [--case N] [--diameter MM --flutes N --axial-depth MM --feed-per-tooth MM "
+    return QStringLiteral("mill-forces [PROJECT --feature ID [--point N]] [--case N] [--diameter MM --flutes N "
+                          "--axial-depth MM --feed-per-tooth MM "
                           "--spindle-speed RPM] [--helix DEG] [--lead DEG] [--tilt DEG] [--radial-depth MM|--step-over "
                           "MM] [--up] --coefficients K [--slices N] [--angles N] [--json|--csv]");
 }
@@ -575,7 +425,8 @@ int runMillForces(const QStringList &args, QTextStream &out, QTextStream &err)
 
 QString millDeflectSynopsis()
 {
-    return QStringLiteral("mill-deflect [mill-forces options] --overhang MM --equivalent-diameter MM [--modulus E] "
+    return QStringLiteral("mill-deflect [mill-forces options] [PROJECT --feature ID [--point N]] --overhang MM "
+                          "--equivalent-diameter MM [--modulus E] "
                           "[--holder K,KTHETA] [--json|--csv]");
 }
 
@@ -645,7 +496,8 @@ int runMillDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
 
 QString millOptimizeSynopsis()
 {
-    return QStringLiteral("mill-optimize [mill-forces options] [mill-deflect options] --tolerance MM [--located] "
+    return QStringLiteral("mill-optimize [PROJECT --feature ID [--save]] [mill-forces options] [mill-deflect options] "
+                          "--tolerance MM [--located] "
                           "--max-feed-per-tooth MM [--lead-range LO,HI] [--tilt-range LO,HI] [--cells N] "
                           "[--threads N] [--json|--csv]");
 }
@@ -665,7 +517,7 @@ int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     const OptimizeOptions p;
     parser.addOptions(o.all());
     parser.addOptions({d.overhang, d.equivalentDiameter, d.modulus, d.holder});
-    parser.addOptions({p.tolerance, p.located, p.highestFeed, p.leadRange, p.tiltRange, p.cells, p.threads});
+    parser.addOptions({p.tolerance, p.located, p.highestFeed, p.leadRange, p.tiltRange, p.cells, p.threads, p.save});
     if (const int stop = parseMilling(parser, o, command, args, out, err); stop >= 0)
         return stop;
     const std::optional<MillingInput> in = readMillingInput(parser, o, command, err, true);
@@ -676,16 +528,22 @@ int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!tool || !settings)
         return kExitUsage;
     settings->planResolution = in->resolution; // --slices and --angles: the plan's check
-    if (!parser.isSet(p.tolerance)) {
-        complain(err, command, MillingCommand::tr("--tolerance is required: the surface's tolerance t in mm"));
+    const std::optional<MilledSurfaceTolerance> tolerance = readTolerance(parser, p, *in, command, err);
+    if (!tolerance)
+        return kExitUsage;
+    if (parser.isSet(p.save) && !in->feature) {
+        complain(err, command, MillingCommand::tr("--save needs PROJECT --feature ID"));
         return kExitUsage;
     }
-    const std::optional<double> t = numberInRange(parser, p.tolerance, 0.0001, 10.0, command, err);
-    if (!t)
-        return kExitUsage;
-    const MilledSurfaceTolerance tolerance{*t, parser.isSet(p.located) ? SurfaceZone::Located : SurfaceZone::Floating};
-    const BallEndPlan plan =
-        planBallEndCut(in->mill, *tool, in->coefficients, in->cut, in->spindle_rpm, tolerance, *settings);
+    MilledFeaturePlan planned;
+    if (in->feature) {
+        planned = planMilledFeature(*in->feature, *settings);
+    } else {
+        planned.leadTiltPlanned = true;
+        planned.plan =
+            planBallEndCut(in->mill, *tool, in->coefficients, in->cut, in->spindle_rpm, *tolerance, *settings);
+    }
+    const BallEndPlan &plan = planned.plan;
     if (parser.isSet(o.json)) {
         QJsonObject json{{QStringLiteral("feasible"), plan.feasible},
                          {QStringLiteral("lead_deg"), plan.cut.lead_rad / kDegree},
@@ -693,20 +551,22 @@ int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
                          {QStringLiteral("feed_per_tooth_mm"), plan.cut.feedPerTooth_mm},
                          {QStringLiteral("feed_rate_mm_min"), plan.feedRate_mm_min},
                          {QStringLiteral("form_error_um"), 1000.0 * plan.formError_mm},
-                         {QStringLiteral("tolerance_um"), 1000.0 * tolerance.tolerance_mm},
-                         {QStringLiteral("zone"), tolerance.zone == SurfaceZone::Floating ? QStringLiteral("floating")
-                                                                                          : QStringLiteral("located")},
+                         {QStringLiteral("lead_tilt_planned"), planned.leadTiltPlanned},
+                         {QStringLiteral("tolerance_um"), 1000.0 * tolerance->tolerance_mm},
+                         {QStringLiteral("zone"), tolerance->zone == SurfaceZone::Floating ? QStringLiteral("floating")
+                                                                                           : QStringLiteral("located")},
                          {QStringLiteral("evaluations"), plan.evaluations},
                          {QStringLiteral("window"), windowJson(plan.window)}};
-        return printJson(json, out, err, command);
+        const int printed = printJson(json, out, err, command);
+        return parser.isSet(p.save) && printed == kExitOk ? savePlan(*in, planned, command, err, err) : printed;
     }
     if (parser.isSet(o.csv)) {
         printWindowCsv(plan.window, out);
-        return kExitOk;
+        return parser.isSet(p.save) ? savePlan(*in, planned, command, err, err) : kExitOk;
     }
     printSetup(*in, out);
-    printPlan(plan, tolerance, settings->highestFeedPerTooth_mm, out);
-    return kExitOk;
+    printPlan(planned, *tolerance, settings->highestFeedPerTooth_mm, out);
+    return parser.isSet(p.save) ? savePlan(*in, planned, command, out, err) : kExitOk;
 }
 
 } // namespace tolturn

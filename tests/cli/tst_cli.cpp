@@ -898,6 +898,100 @@ private Q_SLOTS:
         QVERIFY2(noFeed.err.contains(QStringLiteral("--max-feed-per-tooth is required")), qPrintable(noFeed.err));
     }
 
+    // Milled features in a project (issue 19): evaluate judges each against its tolerance (the
+    // margin is t = 3 µm − form error; a flat's path runs its z range, here 20 mm) and names what an
+    // incomplete one lacks; mill-deflect computes the feature's own cut, whose spread over a
+    // revolution is the flat's form error; mill-optimize --save writes its plan into the file,
+    // which then holds the tolerance with the feed bound by it; options that would change the
+    // feature's cut are refused.
+    void milledFeaturesOfAProject()
+    {
+        QJsonObject project = QJsonDocument::fromJson([] {
+                                  QFile f(example("stepped-shaft-chuck.tolturn"));
+                                  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+                              }())
+                                  .object();
+        const QByteArray flat = R"({"id": "M1", "kind": "flat", "z_from_mm": 10, "z_to_mm": 30,
+            "tool": {"diameter_mm": 12, "flutes": 2, "helix_deg": 30, "overhang_mm": 40,
+                     "equivalent_diameter_mm": 9.6, "holder_stiffness_N_mm": 6306,
+                     "holder_rotational_Nmm_rad": 1.656e7},
+            "conditions": {"cut": "step_over", "radial_depth_mm": 1.0, "axial_depth_mm": 0.5,
+                           "feed_per_tooth_mm": 0.05, "spindle_rpm": 3000, "lead_deg": 10, "tilt_deg": 0},
+            "coefficients": {"Ktc_N_mm2": 2000, "Krc_N_mm2": 700, "Kac_N_mm2": 400, "Kte_N_mm": 25,
+                             "Kre_N_mm": 40, "Kae_N_mm": 8, "source": "test values"},
+            "tolerance": {"type": "flatness", "value_um": 3}})";
+        project.insert(QStringLiteral("milled_features"),
+                       QJsonArray{QJsonDocument::fromJson(flat).object(),
+                                  QJsonObject{{QStringLiteral("id"), QStringLiteral("M2")},
+                                              {QStringLiteral("kind"), QStringLiteral("keyway")},
+                                              {QStringLiteral("z_from_mm"), 5},
+                                              {QStringLiteral("z_to_mm"), 25}}});
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("milled.tolturn"));
+        QVERIFY(writeFile(file, QJsonDocument(project).toJson()));
+
+        const Run r = runCli({QStringLiteral("evaluate"), QStringLiteral("--json"), file});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonArray milled =
+            QJsonDocument::fromJson(r.out.toUtf8()).object().value(QStringLiteral("milled_features")).toArray();
+        QCOMPARE(milled.size(), 2);
+        const QJsonObject m1 = milled.at(0).toObject();
+        const double formError = m1.value(QStringLiteral("form_error_um")).toDouble();
+        QVERIFY(m1.value(QStringLiteral("passes")).toBool());
+        QVERIFY(std::abs(m1.value(QStringLiteral("margin_um")).toDouble() - (3.0 - formError)) < 1e-9);
+        QCOMPARE(m1.value(QStringLiteral("path")).toArray().last().toObject().value(QStringLiteral("arc_length_mm")),
+                 20.0);
+        const QJsonObject m2 = milled.at(1).toObject();
+        QVERIFY(!m2.value(QStringLiteral("evaluated")).toBool());
+        QCOMPARE(m2.value(QStringLiteral("missing")).toArray().size(), 4);
+
+        const Run deflect = runCli({QStringLiteral("mill-deflect"), QStringLiteral("--json"), file,
+                                    QStringLiteral("--feature"), QStringLiteral("M1")});
+        QVERIFY2(deflect.exitCode == 0, qPrintable(deflect.err));
+        const QJsonObject range = QJsonDocument::fromJson(deflect.out.toUtf8())
+                                      .object()
+                                      .value(QStringLiteral("surface_normal_error_um"))
+                                      .toObject();
+        const double spread =
+            range.value(QStringLiteral("greatest")).toDouble() - range.value(QStringLiteral("least")).toDouble();
+        QVERIFY2(std::abs(spread - formError) < 1e-9, qPrintable(QStringLiteral("%1 %2").arg(spread).arg(formError)));
+
+        const Run plan =
+            runCli({QStringLiteral("mill-optimize"), file, QStringLiteral("--feature"), QStringLiteral("M1"),
+                    QStringLiteral("--max-feed-per-tooth"), QStringLiteral("0.15"), QStringLiteral("--lead-range"),
+                    QStringLiteral("5,30"), QStringLiteral("--tilt-range"), QStringLiteral("5,30"),
+                    QStringLiteral("--cells"), QStringLiteral("6"), QStringLiteral("--save")});
+        QVERIFY2(plan.exitCode == 0, qPrintable(plan.err + plan.out));
+        QVERIFY2(plan.out.contains(QStringLiteral("saved")), qPrintable(plan.out));
+        const auto saved = tolturn::readProjectFile(file);
+        QVERIFY(saved.project.has_value());
+        const tolturn::MillingConditions &c = *saved.project->milledFeatures.front().conditions;
+        QVERIFY(c.lead_deg >= 5.0 && c.lead_deg <= 30.0 && c.tilt_deg >= 5.0 && c.tilt_deg <= 30.0);
+        QVERIFY(c.feedPerTooth_mm > 0.0 && c.feedPerTooth_mm < 0.15);
+        const Run again = runCli({QStringLiteral("evaluate"), QStringLiteral("--json"), file});
+        const QJsonObject planned = QJsonDocument::fromJson(again.out.toUtf8())
+                                        .object()
+                                        .value(QStringLiteral("milled_features"))
+                                        .toArray()
+                                        .at(0)
+                                        .toObject();
+        const double plannedError = planned.value(QStringLiteral("form_error_um")).toDouble();
+        QVERIFY2(plannedError <= 3.0 + 1e-6 && plannedError > 2.85, qPrintable(QString::number(plannedError)));
+
+        const Run clash = runCli({QStringLiteral("mill-forces"), file, QStringLiteral("--feature"),
+                                  QStringLiteral("M1"), QStringLiteral("--diameter"), QStringLiteral("10")});
+        QCOMPARE(clash.exitCode, 2);
+        QVERIFY2(clash.err.contains(QStringLiteral("--diameter")), qPrintable(clash.err));
+        const Run unknown =
+            runCli({QStringLiteral("mill-forces"), file, QStringLiteral("--feature"), QStringLiteral("M9")});
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY2(unknown.err.contains(QStringLiteral("M9")), qPrintable(unknown.err));
+        const Run lacking =
+            runCli({QStringLiteral("mill-forces"), file, QStringLiteral("--feature"), QStringLiteral("M2")});
+        QCOMPARE(lacking.exitCode, 2);
+        QVERIFY2(lacking.err.contains(QStringLiteral("coefficients")), qPrintable(lacking.err));
+    }
+
     // verify-fe (issue 17): the solid check from the command line on a coarse mesh. Its accuracy
     // is tested in tst_solid_fe; here the command: its table, its JSON and its errors.
     void verifyFeComparesBeamAndSolid()
