@@ -137,7 +137,10 @@ void CadFileController::openImported(const CadImportResult &result)
     PartProfile part = *result.profile;
     if (part.name.isEmpty())
         part.name = QFileInfo(m_path).completeBaseName();
-    m_document.load(projectForPart(std::move(part)), QString());
+    // A new project: the milled features are those of the file (the open project's go with it).
+    Project project = projectForPart(std::move(part));
+    project.milledFeatures = result.milledFeatures;
+    m_document.load(std::move(project), QString());
     const int warnings = countOf(result.diagnostics, Severity::Warning);
     Q_EMIT statusMessage(tr("Imported %1: %2 outer and %3 inner features, %4 warning(s); set material, machine, "
                             "tool and clamping, then save.")

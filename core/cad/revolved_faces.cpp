@@ -248,11 +248,20 @@ public:
             piece->faceArea_mm2 = faceArea(face);
             m_out.pieces.push_back(*piece);
         } else {
-            m_out.leftOut.push_back({index, what, e.zMin, e.zMax});
+            m_out.leftOut.push_back({index, what, e.zMin, e.zMax, leftOutShape(s)});
         }
     }
 
 private:
+    // Called for a face left out: a plane there is not across the axis (plane() takes those).
+    [[nodiscard]] LeftOutShape leftOutShape(const GeomAdaptor_Surface &s) const
+    {
+        if (s.GetType() != GeomAbs_Plane)
+            return LeftOutShape::Other;
+        return s.Plane().Axis().IsNormal(m_frame.axis, kAngularTolerance_rad) ? LeftOutShape::PlaneAlongAxis
+                                                                              : LeftOutShape::PlaneAtSlant;
+    }
+
     // A plane is a turned face when its normal is the axis (the trace is a line at constant z);
     // the face reaches the axis when the axis point of the plane lies inside it.
     std::optional<SectionPiece> plane(const TopoDS_Face &face, const GeomAdaptor_Surface &s, const Extent &e,
@@ -536,7 +545,8 @@ void mergeAndFilter(SectionTrace &trace)
         const QString what = RevolvedFaces::tr("a part of a turned surface that does not go round (the end wall of "
                                                "a keyway or a slot)");
         for (const int face : p.faces)
-            trace.leftOut.push_back({face, what, std::min(p.a.z_mm, p.b.z_mm), std::max(p.a.z_mm, p.b.z_mm)});
+            trace.leftOut.push_back(
+                {face, what, std::min(p.a.z_mm, p.b.z_mm), std::max(p.a.z_mm, p.b.z_mm), LeftOutShape::Other});
     }
 }
 

@@ -24,12 +24,21 @@ struct AxisCandidate {
 // The candidate axes of a body, most revolved face area first.
 [[nodiscard]] std::vector<AxisCandidate> findAxes(const TopoDS_Shape &body);
 
+// What the import needs to know of a left-out face to tell a flat from a keyway
+// (docs/step-import.md, "Milled features").
+enum class LeftOutShape {
+    PlaneAlongAxis, // a plane whose normal is perpendicular to the axis: a flat, a keyway's side or bottom
+    PlaneAtSlant,   // a plane neither along nor across the axis
+    Other,          // any other surface, and the parts of turned faces that do not go round
+};
+
 // A face that is not revolved about the axis, kept out of the profile and reported.
 struct LeftOutFace {
     int face = 0;         // 1-based, as in TopExp::MapShapes
     QString what;         // "a plane not perpendicular to the axis (a flat or a keyway side)", …
     double zMin_mm = 0.0; // along the axis, in the same frame as the section pieces
     double zMax_mm = 0.0;
+    LeftOutShape shape = LeftOutShape::Other;
 };
 
 struct SectionTrace {

@@ -11,6 +11,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QStringList>
 #include <Standard_Failure.hxx>
 
 #include <BRepGProp.hxx>
@@ -30,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 
 namespace tolturn {
 
@@ -354,18 +356,149 @@ int chooseAxis(const std::vector<cad::AxisCandidate> &axes, const CadImportOptio
     return chosen;
 }
 
-void reportLeftOut(const std::vector<cad::LeftOutFace> &faces, const cad::Placement &place, Diagnostics &out)
+// A left-out face with its z range in the placed part.
+struct PlacedFace {
+    const cad::LeftOutFace *face = nullptr;
+    double zFrom_mm = 0.0;
+    double zTo_mm = 0.0;
+};
+
+// Left-out faces whose z ranges overlap or come within kFeatureJoin_mm of each other, by face number.
+struct FaceGroup {
+    std::vector<PlacedFace> faces;
+    double zFrom_mm = 0.0;
+    double zTo_mm = 0.0;
+};
+
+// Ranges this close are one feature: well above the 0.1 µm at which the section's vertices join,
+// well below the width of any milled feature.
+constexpr double kFeatureJoin_mm = 0.01;
+
+PlacedFace placed(const cad::LeftOutFace &f, const cad::Placement &place)
 {
-    for (const cad::LeftOutFace &f : faces) {
-        const double z0 = place(f.zMin_mm);
-        const double z1 = place(f.zMax_mm);
-        out.push_back(makeWarning(QStringLiteral("step.face[%1]").arg(f.face),
-                                  StepImport::tr("face %1 is %2, from z = %3 mm to z = %4 mm; it is not "
-                                                 "rotationally symmetric about the part axis and is left out of the "
-                                                 "profile")
-                                      .arg(f.face)
-                                      .arg(f.what, num(std::min(z0, z1)), num(std::max(z0, z1)))));
+    const double z0 = place(f.zMin_mm);
+    const double z1 = place(f.zMax_mm);
+    return {&f, std::min(z0, z1), std::max(z0, z1)};
+}
+
+// The faces in groups of overlapping or touching z ranges, in z order.
+std::vector<FaceGroup> groupByZ(const std::vector<cad::LeftOutFace> &faces, const cad::Placement &place)
+{
+    std::vector<PlacedFace> sorted;
+    sorted.reserve(faces.size());
+    for (const cad::LeftOutFace &f : faces)
+        sorted.push_back(placed(f, place));
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [](const auto &a, const auto &b) { return a.zFrom_mm < b.zFrom_mm; });
+    std::vector<FaceGroup> groups;
+    for (const PlacedFace &p : sorted) {
+        if (groups.empty() || p.zFrom_mm > groups.back().zTo_mm + kFeatureJoin_mm)
+            groups.push_back({{}, p.zFrom_mm, p.zTo_mm});
+        groups.back().faces.push_back(p);
+        groups.back().zTo_mm = std::max(groups.back().zTo_mm, p.zTo_mm);
     }
+    for (FaceGroup &g : groups)
+        std::sort(g.faces.begin(), g.faces.end(),
+                  [](const auto &a, const auto &b) { return a.face->face < b.face->face; });
+    return groups;
+}
+
+// Two or more planes along the axis (sides and bottom) are a keyway; one alone, with no plane at
+// a slant, a flat; anything else (cross holes, eccentrics) is no milled feature.
+std::optional<MilledFeatureKind> milledKind(const FaceGroup &g)
+{
+    const auto count = [&g](cad::LeftOutShape shape) {
+        return std::count_if(g.faces.begin(), g.faces.end(), [shape](const auto &p) { return p.face->shape == shape; });
+    };
+    const auto along = count(cad::LeftOutShape::PlaneAlongAxis);
+    if (along >= 2)
+        return MilledFeatureKind::Keyway;
+    if (along == 1 && count(cad::LeftOutShape::PlaneAtSlant) == 0)
+        return MilledFeatureKind::Flat;
+    return std::nullopt;
+}
+
+// The next "M<n>" that is no feature of the profile.
+QString freeMilledId(const PartProfile &profile, int &next)
+{
+    QString id;
+    do {
+        id = QStringLiteral("M%1").arg(next++);
+    } while (findFeature(profile, id));
+    return id;
+}
+
+QString faceList(const FaceGroup &g)
+{
+    QStringList numbers;
+    for (const PlacedFace &p : g.faces)
+        numbers << QString::number(p.face->face);
+    const QString list = numbers.join(QStringLiteral(", "));
+    return g.faces.size() == 1 ? StepImport::tr("face %1").arg(list) : StepImport::tr("faces %1").arg(list);
+}
+
+void addMilledFeature(const FaceGroup &g, MilledFeatureKind kind, const PartProfile &profile, int &nextId,
+                      CadImportResult &result)
+{
+    const double length = profile.length_mm();
+    MilledFeature f;
+    f.id = freeMilledId(profile, nextId);
+    f.kind = kind;
+    f.description = StepImport::tr("STEP %1").arg(faceList(g));
+    f.zFrom_mm = std::clamp(g.zFrom_mm, 0.0, length);
+    f.zTo_mm = std::clamp(g.zTo_mm, 0.0, length);
+    const QString message =
+        kind == MilledFeatureKind::Flat
+            ? StepImport::tr("the flat of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a "
+                             "tool, conditions, cutting coefficients and a tolerance to evaluate it")
+            : StepImport::tr("the keyway of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a "
+                             "tool, conditions, cutting coefficients and a tolerance to evaluate it");
+    result.diagnostics.push_back(makeWarning(QStringLiteral("milled_features[%1]").arg(result.milledFeatures.size()),
+                                             message.arg(faceList(g), num(f.zFrom_mm), num(f.zTo_mm), f.id)));
+    result.milledFeatures.push_back(std::move(f));
+}
+
+void warnLeftOut(const PlacedFace &p, Diagnostics &out)
+{
+    const cad::LeftOutFace &f = *p.face;
+    out.push_back(makeWarning(QStringLiteral("step.face[%1]").arg(f.face),
+                              StepImport::tr("face %1 is %2, from z = %3 mm to z = %4 mm; it is not "
+                                             "rotationally symmetric about the part axis and is left out of the "
+                                             "profile")
+                                  .arg(f.face)
+                                  .arg(f.what, num(p.zFrom_mm), num(p.zTo_mm))));
+}
+
+// The flats and keyways among `faces` (by face number) become milled features of the profile, each
+// with a note; every other face is a warning. Without a profile, every face is a warning.
+void reportLeftOut(const std::vector<cad::LeftOutFace> &faces, const cad::Placement &place, const PartProfile *profile,
+                   CadImportResult &result)
+{
+    std::vector<const cad::LeftOutFace *> featured;
+    int nextId = 1;
+    for (const FaceGroup &g : groupByZ(faces, place)) {
+        const auto kind = profile ? milledKind(g) : std::nullopt;
+        if (!kind)
+            continue;
+        addMilledFeature(g, *kind, *profile, nextId, result);
+        for (const PlacedFace &p : g.faces)
+            featured.push_back(p.face);
+    }
+    for (const cad::LeftOutFace &f : faces) {
+        if (std::find(featured.begin(), featured.end(), &f) == featured.end())
+            warnLeftOut(placed(f, place), result.diagnostics);
+    }
+}
+
+void reportConverted(const cad::SectionTrace &trace, Diagnostics &out)
+{
+    // Said, not hidden: the profile rests on these faces being what they were taken for.
+    for (const auto &[face, surface] : trace.convertedFaces)
+        out.push_back(makeWarning(
+            QStringLiteral("step.face[%1]").arg(face),
+            StepImport::tr("face %1 is written as a B-spline surface and was read as %2, which it is within 0.001 mm")
+                .arg(face)
+                .arg(surface)));
 }
 
 PartProfile makeProfile(const QString &path, cad::ContourBuild &contours)
@@ -391,21 +524,18 @@ void extractProfile(const QString &path, const TopoDS_Shape &body, const gp_Ax1 
     const cad::Placement place = cad::placementOf(trace.pieces, options.flip, options.zOffset_mm);
     cad::placePieces(trace.pieces, place);
     std::sort(trace.leftOut.begin(), trace.leftOut.end(), [](const auto &a, const auto &b) { return a.face < b.face; });
-    reportLeftOut(trace.leftOut, place, result.diagnostics);
-    // Said, not hidden: the profile rests on these faces being what they were taken for.
-    for (const auto &[face, surface] : trace.convertedFaces)
-        result.diagnostics.push_back(makeWarning(
-            QStringLiteral("step.face[%1]").arg(face),
-            StepImport::tr("face %1 is written as a B-spline surface and was read as %2, which it is within 0.001 mm")
-                .arg(face)
-                .arg(surface)));
     cad::ContourBuild contours = cad::buildContours(trace.pieces, options.chamferMaxLength_mm);
-    const bool broken = hasErrors(contours.diagnostics);
+    // Milled features need the profile (its length, its ids): built first, reported in the order
+    // of the steps (left-out faces, converted faces, contours, the profile's findings).
+    std::optional<PartProfile> profile;
+    if (!hasErrors(contours.diagnostics))
+        profile = makeProfile(path, contours);
+    reportLeftOut(trace.leftOut, place, profile ? &*profile : nullptr, result);
+    reportConverted(trace, result.diagnostics);
     result.diagnostics.insert(result.diagnostics.end(), contours.diagnostics.begin(), contours.diagnostics.end());
-    if (broken)
+    if (!profile)
         return;
-    PartProfile profile = makeProfile(path, contours);
-    const Diagnostics findings = validateProfile(profile);
+    const Diagnostics findings = validateProfile(*profile);
     result.diagnostics.insert(result.diagnostics.end(), findings.begin(), findings.end());
     result.profile = std::move(profile);
 }
@@ -467,8 +597,10 @@ CadImportResult importCadFile(const QString &path, const CadImportOptions &optio
     } catch (const std::exception &e) {
         fail(result, StepImport::tr("reading '%1' failed: %2").arg(path, QString::fromLocal8Bit(e.what())));
     }
-    if (result.cancelled)
+    if (result.cancelled) {
         result.profile.reset();
+        result.milledFeatures.clear();
+    }
     return result;
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/common/diagnostic.h"
 #include "core/part/profile.h"
+#include "core/project/milled_feature.h"
 
 #include <QString>
 
@@ -47,6 +48,9 @@ struct CadImportResult {
     // otherwise, with validateProfile's findings among the diagnostics.
     std::optional<PartProfile> profile;
     Diagnostics diagnostics; // warnings (left-out features, profile findings) and errors
+    // The flats and keyways among the faces left out, with their place on the part only (ids "M1",
+    // "M2", … in z order; docs/step-import.md, "Milled features"). Empty without a profile.
+    std::vector<MilledFeature> milledFeatures;
     std::vector<CadSolidInfo> solids;
     std::vector<CadAxisInfo> axes; // of the chosen solid, most revolved area first
     int chosenSolid = -1;

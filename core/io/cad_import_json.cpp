@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/cad_import_json.h"
 
+#include "core/io/json_reader.h"
+#include "core/io/project_json.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 
@@ -30,6 +33,28 @@ bool readVector(const QJsonValue &value, double (&v)[3])
     return true;
 }
 
+// The features of "milled_features" as the project file holds them (absent: none); the first
+// finding of the project reader, empty when there is none.
+QString readMilledFeatures(const QJsonValue &value, std::vector<MilledFeature> &features)
+{
+    const QString key = QStringLiteral("milled_features");
+    if (value.isUndefined())
+        return {};
+    if (!value.isArray())
+        return CadImportJson::tr("%1: expected an array, found %2").arg(key, describeJsonValue(value));
+    const QJsonArray list = value.toArray();
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        const QString path = elementPath(key, i);
+        if (!list.at(i).isObject())
+            return CadImportJson::tr("%1: expected an object, found %2").arg(path, describeJsonValue(list.at(i)));
+        Diagnostics problems;
+        features.push_back(milledFeatureFromJson(list.at(i).toObject(), path, problems));
+        if (!problems.empty())
+            return problems.front().toString();
+    }
+    return {};
+}
+
 } // namespace
 
 QJsonObject cadImportJson(const CadImportResult &r)
@@ -47,10 +72,14 @@ QJsonObject cadImportJson(const CadImportResult &r)
     QJsonArray diagnostics;
     for (const Diagnostic &d : r.diagnostics)
         diagnostics.append(diagnosticJson(d));
+    QJsonArray milled;
+    for (const MilledFeature &f : r.milledFeatures)
+        milled.append(milledFeatureJson(f));
     return {{QStringLiteral("solids"), solids},
             {QStringLiteral("chosen_solid"), r.chosenSolid},
             {QStringLiteral("axes"), axes},
             {QStringLiteral("chosen_axis"), r.chosenAxis},
+            {QStringLiteral("milled_features"), milled},
             {QStringLiteral("diagnostics"), diagnostics}};
 }
 
@@ -79,6 +108,12 @@ std::optional<CadImportResult> cadImportResultFromJson(const QJsonObject &json, 
     }
     for (const auto &v : json.value(QStringLiteral("diagnostics")).toArray())
         r.diagnostics.push_back(diagnosticFromJson(v.toObject()));
+    if (const QString problem = readMilledFeatures(json.value(QStringLiteral("milled_features")), r.milledFeatures);
+        !problem.isEmpty()) {
+        if (error)
+            *error = CadImportJson::tr("the import's result has no valid \"milled_features\": %1").arg(problem);
+        return std::nullopt;
+    }
     r.chosenSolid = json.value(QStringLiteral("chosen_solid")).toInt(-1);
     r.chosenAxis = json.value(QStringLiteral("chosen_axis")).toInt(-1);
     if (r.chosenSolid >= static_cast<int>(r.solids.size()))

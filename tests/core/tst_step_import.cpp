@@ -7,10 +7,13 @@
 #include "core/cad/occt_guard.h"
 #include "core/cad/step_export.h"
 #include "core/cad/step_import.h"
+#include "core/io/cad_import_json.h"
 #include "core/part/undercuts.h"
 
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
@@ -255,6 +258,33 @@ TopoDS_Shape withFeatures(TopoDS_Shape s)
     return BRepAlgoAPI_Cut(s, BRepPrimAPI_MakeCylinder(holeAxis, 2.0, 60.0).Shape()).Shape();
 }
 
+// A bar Ø20 x 50 along Z (issue 19) with one feature cut in: a flat 2 mm deep (the plane x = 8)
+// from z = 15 to 35 or from z = 30 over the right end; a keyway 5 wide, 3 deep (its bottom the
+// plane x = 7) from z = 10 to 40; or a cross hole Ø4 along Y at z = 25.
+TopoDS_Shape barWith(const QString &cut)
+{
+    const TopoDS_Shape bar = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10.0, 50.0).Shape();
+    if (cut == QLatin1String("flat"))
+        return cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35));
+    if (cut == QLatin1String("flat over the end"))
+        return cutBox(bar, gp_Pnt(8, -20, 30), gp_Pnt(20, 20, 60));
+    if (cut == QLatin1String("keyway"))
+        return cutBox(bar, gp_Pnt(7, -2.5, 10), gp_Pnt(12, 2.5, 40));
+    const auto turned = [](const gp_Pnt &low, const gp_Pnt &high, const gp_Pnt &about, double degrees) {
+        gp_Trsf turn;
+        turn.SetRotation(gp_Ax1(about, gp_Dir(0, 1, 0)), degrees * std::numbers::pi / 180.0);
+        return BRepBuilderAPI_Transform(BRepPrimAPI_MakeBox(low, high).Shape(), turn, Standard_True).Shape();
+    };
+    if (cut == QLatin1String("slanted flat")) // the flat's box turned 5° about Y through (8, 0, 25)
+        return BRepAlgoAPI_Cut(bar, turned(gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35), gp_Pnt(8, 0, 25), 5.0)).Shape();
+    if (cut == QLatin1String("flat with a ramp")) { // the flat, then a plane rising 20° from its right end
+        const TopoDS_Shape flat = cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35));
+        return BRepAlgoAPI_Cut(flat, turned(gp_Pnt(8, -20, 35), gp_Pnt(20, 20, 60), gp_Pnt(8, 0, 35), 20.0)).Shape();
+    }
+    const gp_Ax2 holeAxis(gp_Pnt(0, -20, 25), gp_Dir(0, 1, 0));
+    return BRepAlgoAPI_Cut(bar, BRepPrimAPI_MakeCylinder(holeAxis, 2.0, 40.0).Shape()).Shape();
+}
+
 TopoDS_Shape pinPart()
 {
     TopoDS_Shape s = revolve(kPinSection);
@@ -448,6 +478,44 @@ bool hasFaceWarning(const CadImportResult &r, const QString &word, double z0, do
     return false;
 }
 
+// The warnings about single faces (field step.face[N]) that contain `word`.
+long faceWarnings(const CadImportResult &r, const QString &word = {})
+{
+    return std::count_if(r.diagnostics.begin(), r.diagnostics.end(), [&word](const Diagnostic &d) {
+        return d.field.startsWith(QLatin1String("step.face[")) && d.message.contains(word);
+    });
+}
+
+// The milled feature with `id`, `kind` and the z range, which no feature of the profile shares,
+// with nothing but its place (the planner adds the rest), and its one note in the findings.
+void expectMilledFeature(const CadImportResult &r, std::size_t index, const QString &id, MilledFeatureKind kind,
+                         ZRange z)
+{
+    QVERIFY(index < r.milledFeatures.size());
+    const MilledFeature &f = r.milledFeatures[index];
+    QCOMPARE(f.id, id);
+    QCOMPARE(static_cast<int>(f.kind), static_cast<int>(kind));
+    QVERIFY2(std::abs(f.zFrom_mm - z.from) <= kMicrometre_mm && std::abs(f.zTo_mm - z.to) <= kMicrometre_mm,
+             qPrintable(QStringLiteral("%1: z %2 to %3").arg(id).arg(f.zFrom_mm).arg(f.zTo_mm)));
+    QVERIFY(!findFeature(*r.profile, id));
+    QVERIFY(!f.tool && !f.conditions && !f.coefficients && !f.tolerance && f.path.empty());
+    QVERIFY2(f.description.startsWith(QLatin1String("STEP face")), qPrintable(f.description));
+    const QString field = QStringLiteral("milled_features[%1]").arg(index);
+    const auto note = std::find_if(r.diagnostics.begin(), r.diagnostics.end(),
+                                   [&field](const Diagnostic &d) { return d.field == field; });
+    QVERIFY2(note != r.diagnostics.end(), qPrintable(errorsOf(r)));
+    QCOMPARE(note->severity, Severity::Warning);
+    const QString faces = f.description.mid(QStringLiteral("STEP ").size());
+    const QString kindName = kind == MilledFeatureKind::Flat ? QStringLiteral("flat") : QStringLiteral("keyway");
+    QVERIFY2(note->message.contains(QStringLiteral("the %1 of %2,").arg(kindName, faces)) &&
+                 note->message.contains(QStringLiteral("became milled feature %1;").arg(id)),
+             qPrintable(note->message));
+    const auto range = zRangeOf(note->message);
+    QVERIFY2(range && std::abs(range->from - f.zFrom_mm) <= kMicrometre_mm &&
+                 std::abs(range->to - f.zTo_mm) <= kMicrometre_mm,
+             qPrintable(note->message));
+}
+
 void expectNamedError(const CadImportResult &r, const QString &name, const QString &reason)
 {
     QVERIFY(!r.profile);
@@ -568,33 +636,141 @@ private Q_SLOTS:
         compareProfiles(*f.profile, flipped(want));
     }
 
-    void leavesOutFeaturesWithWarnings_data()
+    void turnsFlatsAndKeywaysIntoMilledFeatures_data()
     {
         QTest::addColumn<QString>("suffix");
-        QTest::newRow("step") << QStringLiteral("step");
-        QTest::newRow("iges") << QStringLiteral("igs");
+        QTest::addColumn<bool>("flip");
+        QTest::newRow("step") << QStringLiteral("step") << false;
+        QTest::newRow("step flipped") << QStringLiteral("step") << true;
+        QTest::newRow("iges") << QStringLiteral("igs") << false;
     }
 
-    void leavesOutFeaturesWithWarnings()
+    // The keyed shaft (withFeatures): the keyway (its sides and bottom planes along the axis, its
+    // end walls parts of turned faces) and the flat become milled features in z order, the cross
+    // hole stays a warning. Flipped, z -> 100 - z.
+    void turnsFlatsAndKeywaysIntoMilledFeatures()
     {
         QFETCH(QString, suffix);
+        QFETCH(bool, flip);
         const QString path = m_dir.filePath(QStringLiteral("keyed-shaft.") + suffix);
-        writeCad(withFeatures(shaftPart()), path);
-        const CadImportResult r = importCadFile(path);
+        if (!QFileInfo::exists(path))
+            writeCad(withFeatures(shaftPart()), path);
+        CadImportOptions options;
+        options.flip = flip;
+        const CadImportResult r = importCadFile(path, options);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
-        compareProfiles(*r.profile, expectedShaft());
+        compareProfiles(*r.profile, flip ? flipped(expectedShaft()) : expectedShaft());
         // Two axes: the part's (Z) and the cross hole's (Y), the part's first by revolved area.
         QCOMPARE(r.axes.size(), std::size_t{2});
         QCOMPARE(r.chosenAxis, 0);
         QCOMPARE(std::abs(r.axes[0].direction[2]), 1.0);
         QCOMPARE(std::abs(r.axes[1].direction[1]), 1.0);
-        // Keyway: its sides and bottom are planes along the axis, its end walls parts of faces.
-        QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 10, 30, kMicrometre_mm), qPrintable(errorsOf(r)));
-        QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 10, 10, kMicrometre_mm), qPrintable(errorsOf(r)));
-        QVERIFY2(hasFaceWarning(r, QStringLiteral("keyway"), 30, 30, kMicrometre_mm), qPrintable(errorsOf(r)));
-        QVERIFY2(hasFaceWarning(r, QStringLiteral("flat"), 45, 60, kMicrometre_mm), qPrintable(errorsOf(r)));
-        // The hole's z range comes from points sampled along its intersection curves.
-        QVERIFY2(hasFaceWarning(r, QStringLiteral("cross hole"), 92.5, 96.5, 0.05), qPrintable(errorsOf(r)));
+        QCOMPARE(r.milledFeatures.size(), std::size_t{2});
+        if (flip) {
+            expectMilledFeature(r, 0, QStringLiteral("M1"), MilledFeatureKind::Flat, {40, 55});
+            expectMilledFeature(r, 1, QStringLiteral("M2"), MilledFeatureKind::Keyway, {70, 90});
+        } else {
+            expectMilledFeature(r, 0, QStringLiteral("M1"), MilledFeatureKind::Keyway, {10, 30});
+            expectMilledFeature(r, 1, QStringLiteral("M2"), MilledFeatureKind::Flat, {45, 60});
+        }
+        // Only the hole's faces are left-out warnings; its z range comes from points sampled along
+        // its intersection curves.
+        QVERIFY2(faceWarnings(r) >= 1 && faceWarnings(r) == faceWarnings(r, QStringLiteral("cross hole")),
+                 qPrintable(errorsOf(r)));
+        const double hole = flip ? 100 - 94.5 : 94.5;
+        QVERIFY2(hasFaceWarning(r, QStringLiteral("cross hole"), hole - 2, hole + 2, 0.05), qPrintable(errorsOf(r)));
+        // The desktop program gets them from its child process as JSON.
+        QString problem;
+        const auto back = cadImportResultFromJson(cadImportJson(r), &problem);
+        QVERIFY2(back, qPrintable(problem));
+        QVERIFY(back->milledFeatures == r.milledFeatures);
+        QVERIFY(back->diagnostics == r.diagnostics);
+        // Cancelled at the very end, the import gives neither the profile nor its features.
+        options.progress = [](double fraction) { return fraction < 1.0; };
+        const CadImportResult cancelled = importCadFile(path, options);
+        QVERIFY(cancelled.cancelled && !cancelled.profile && cancelled.milledFeatures.empty());
+    }
+
+    void barFeatures_data()
+    {
+        QTest::addColumn<QString>("cut");
+        QTest::addColumn<int>("kind"); // a MilledFeatureKind; -1: none
+        QTest::addColumn<double>("zFrom");
+        QTest::addColumn<double>("zTo");
+        const int flat = static_cast<int>(MilledFeatureKind::Flat);
+        QTest::newRow("flat") << QStringLiteral("flat") << flat << 15.0 << 35.0;
+        // The end face, cut by the flat, still goes round more than half: it stays the end face.
+        QTest::newRow("flat over the end") << QStringLiteral("flat over the end") << flat << 30.0 << 50.0;
+        QTest::newRow("keyway") << QStringLiteral("keyway") << static_cast<int>(MilledFeatureKind::Keyway) << 10.0
+                                << 40.0;
+        // z 25 ± 2, from points sampled along the hole's intersection curves.
+        QTest::newRow("cross hole") << QStringLiteral("cross hole") << -1 << 23.0 << 27.0;
+    }
+
+    // One feature cut into a bar: a flat and a keyway become one milled feature each, with the z
+    // range they are cut over, and no face warning; a cross hole is a warning and no feature.
+    void barFeatures()
+    {
+        QFETCH(QString, cut);
+        QFETCH(int, kind);
+        QFETCH(double, zFrom);
+        QFETCH(double, zTo);
+        const QString path =
+            m_dir.filePath(QStringLiteral("bar-%1.step").arg(cut).replace(QLatin1Char(' '), QLatin1Char('-')));
+        writeStep(barWith(cut), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        QCOMPARE(r.profile->length_mm(), 50.0);
+        if (kind < 0) {
+            QVERIFY(r.milledFeatures.empty());
+            QVERIFY2(hasFaceWarning(r, QStringLiteral("cross hole"), zFrom, zTo, 0.05), qPrintable(errorsOf(r)));
+            return;
+        }
+        QCOMPARE(r.milledFeatures.size(), std::size_t{1});
+        expectMilledFeature(r, 0, QStringLiteral("M1"), static_cast<MilledFeatureKind>(kind), {zFrom, zTo});
+        QVERIFY2(faceWarnings(r) == 0, qPrintable(errorsOf(r)));
+    }
+
+    void slantedFlatStaysAWarning_data()
+    {
+        QTest::addColumn<QString>("cut");
+        QTest::newRow("slanted flat") << QStringLiteral("slanted flat");
+        QTest::newRow("flat with a ramp") << QStringLiteral("flat with a ramp");
+    }
+
+    // A flat at a slant to the axis, or a flat with a plane at a slant beside it (a ramp), is not
+    // the straight cut along z the model mills: its faces stay warnings.
+    void slantedFlatStaysAWarning()
+    {
+        QFETCH(QString, cut);
+        const QString path =
+            m_dir.filePath(QStringLiteral("bar-%1.step").arg(cut).replace(QLatin1Char(' '), QLatin1Char('-')));
+        writeStep(barWith(cut), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        QVERIFY(r.milledFeatures.empty());
+        QVERIFY2(faceWarnings(r, QStringLiteral("a plane not perpendicular to the axis")) >= 1,
+                 qPrintable(errorsOf(r)));
+    }
+
+    // A document of the child process whose feature the project reader refuses is no result,
+    // and the error names the field and its value.
+    void refusesBadMilledFeaturesInJson()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("bar-keyway-json.step"));
+        writeStep(barWith(QStringLiteral("keyway")), path);
+        QJsonObject json = cadImportJson(importCadFile(path));
+        QJsonArray features = json.value(QStringLiteral("milled_features")).toArray();
+        QCOMPARE(features.size(), 1);
+        QJsonObject feature = features.at(0).toObject();
+        feature.insert(QStringLiteral("kind"), QStringLiteral("pocket"));
+        features.replace(0, feature);
+        json.insert(QStringLiteral("milled_features"), features);
+        QString problem;
+        QVERIFY(!cadImportResultFromJson(json, &problem));
+        QVERIFY2(problem.contains(QStringLiteral("milled_features[0].kind")) &&
+                     problem.contains(QStringLiteral("pocket")),
+                 qPrintable(problem));
     }
 
     void convertsInchesToMillimetres_data()
@@ -852,6 +1028,7 @@ private Q_SLOTS:
         // The six flats are warnings; the error says where the turned contour stops.
         QVERIFY2(hasFaceWarning(r, QStringLiteral("flat"), 30, 40, kMicrometre_mm), qPrintable(errorsOf(r)));
         QVERIFY2(errorsOf(r).contains(QStringLiteral("stops at z = 30 mm, r = 13.856")), qPrintable(errorsOf(r)));
+        QVERIFY(r.milledFeatures.empty()); // a feature has its place on a profile: there is none
     }
 
     void reportsProgressAndCancels()
