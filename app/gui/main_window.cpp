@@ -317,7 +317,7 @@ QDockWidget *MainWindow::createMillingDock()
 {
     auto *dock = new QDockWidget(tr("Milling"), this);
     dock->setObjectName(QStringLiteral("millingDock"));
-    dock->setWidget(new MillingPanel);
+    dock->setWidget(new MillingPanel(m_document));
     addDockWidget(Qt::BottomDockWidgetArea, dock);
     return dock;
 }

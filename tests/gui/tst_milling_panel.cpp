@@ -5,6 +5,9 @@
 // dock, so that the dock shows the cut it was given.
 #include "tests/gui/screenshot.h"
 
+#include "core/io/project_file.h"
+#include "widgets/document/project_document.h"
+#include "widgets/milling/milled_features_box.h"
 #include "widgets/milling/milling_panel.h"
 #include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
@@ -16,12 +19,43 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTest>
+#include <QUndoStack>
 
 #include <cmath>
 #include <numbers>
 
 using namespace tolturn;
+
+namespace {
+
+// A flat milled with 001's tool in its holder, test coefficients, flatness 3 µm; and a keyway as the
+// STEP import leaves it, with its place only.
+Project projectWithMilledFeatures()
+{
+    Project p =
+        *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/stepped-shaft-chuck.tolturn")).project;
+    MilledFeature flat;
+    flat.id = QStringLiteral("M1");
+    flat.zFrom_mm = 10.0;
+    flat.zTo_mm = 30.0;
+    flat.tool = BallEndTool{12.0, 2, 30.0, 40.0, 9.6, std::nullopt, 6306.0, 1.656e7};
+    flat.conditions =
+        MillingConditions{BallEndCutKind::StepOver, MillingDirection::Down, 0.5, 1.0, 0.05, 3000.0, 10.0, 0.0};
+    flat.coefficients = MillingForceCoefficients{2000.0, 700.0, 400.0, 25.0, 40.0, 8.0};
+    flat.coefficientsSource = QStringLiteral("test values");
+    flat.tolerance = MilledTolerance{MilledToleranceType::Flatness, 3.0, {}};
+    MilledFeature keyway;
+    keyway.id = QStringLiteral("M2");
+    keyway.kind = MilledFeatureKind::Keyway;
+    keyway.zFrom_mm = 40.0;
+    keyway.zTo_mm = 60.0;
+    p.milledFeatures = {flat, keyway};
+    return p;
+}
+
+} // namespace
 
 class TestMillingPanel : public QObject {
     Q_OBJECT
@@ -115,6 +149,61 @@ private Q_SLOTS:
         const QLabel *planText = panel.findChild<QLabel *>(QStringLiteral("millingPlanSummary"));
         QVERIFY(planText);
         QVERIFY2(planText->text().contains(QStringLiteral("plan again")), qPrintable(planText->text()));
+    }
+
+    // The project's milled features in the dock: each with its verdict (the flat is evaluated, the
+    // keyway named as lacking its inputs); a chosen one fills the fields and draws its error along
+    // the path; the cut of the fields becomes a new feature, undoably; a cut the project refuses
+    // (no overhang) is not added and the reason is shown.
+    void featuresOfTheProject()
+    {
+        ProjectDocument document;
+        document.load(projectWithMilledFeatures(), QString());
+        MillingPanel panel(&document);
+        panel.resize(1500, 620);
+        MilledFeaturesBox *box = panel.features();
+        QVERIFY(box);
+        QSignalSpy evaluated(box, &MilledFeaturesBox::evaluated);
+        QTRY_VERIFY_WITH_TIMEOUT(!evaluated.isEmpty(), 10000);
+        QCOMPARE(box->table()->rowCount(), 2);
+        const QString flatVerdict = box->table()->item(0, 4)->text();
+        QVERIFY2(flatVerdict.startsWith(QStringLiteral("passes")) || flatVerdict.startsWith(QStringLiteral("fails")),
+                 qPrintable(flatVerdict));
+        QVERIFY2(box->table()->item(1, 4)->text().contains(QStringLiteral("lacks")),
+                 qPrintable(box->table()->item(1, 4)->text()));
+
+        box->table()->selectRow(0);
+        QVERIFY2(panel.coefficients()->text().startsWith(QStringLiteral("2000")),
+                 qPrintable(panel.coefficients()->text()));
+        QCOMPARE(panel.lead()->value(), 10.0);
+        QCOMPARE(panel.tolerance()->value(), 3.0);
+        QCOMPARE(box->pathPlot()->curveCount(), 4); // the band's two edges and the zone's two limits
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        panel.plots()->setCurrentIndex(panel.plots()->count() - 1);
+        test::saveScreenshot(panel, "milling-features.png");
+
+        panel.tolerance()->setValue(50.0);
+        box->addButton()->click();
+        QCOMPARE(document.project().milledFeatures.size(), std::size_t{3});
+        const MilledFeature &added = document.project().milledFeatures.back();
+        QCOMPARE(added.id, QStringLiteral("M3"));
+        QCOMPARE(added.tolerance->zone_um, 50.0);
+        QCOMPARE(added.conditions->lead_deg, 10.0);
+        QCOMPARE(added.coefficientsSource, QStringLiteral("test values"));
+        document.undoStack()->undo();
+        QCOMPARE(document.project().milledFeatures.size(), std::size_t{2});
+
+        auto *overhang = panel.findChild<QDoubleSpinBox *>(QStringLiteral("millingOverhang"));
+        overhang->setValue(0.0);
+        box->addButton()->click();
+        QCOMPARE(document.project().milledFeatures.size(), std::size_t{2});
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("overhang")), qPrintable(panel.summary()->text()));
+
+        box->table()->selectRow(1);
+        box->removeButton()->click();
+        QCOMPARE(document.project().milledFeatures.size(), std::size_t{1});
+        QCOMPARE(document.project().milledFeatures.front().id, QStringLiteral("M1"));
     }
 };
 

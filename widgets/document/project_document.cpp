@@ -311,6 +311,11 @@ Diagnostics ProjectDocument::setFurtherOperations(const std::vector<Operation> &
     return editField(&Project::furtherOperations, operations, tr("Change operations"));
 }
 
+Diagnostics ProjectDocument::setMilledFeatures(const std::vector<MilledFeature> &features, const QString &description)
+{
+    return editField(&Project::milledFeatures, features, description);
+}
+
 Diagnostics ProjectDocument::setOperationTool(int index, const Tool &tool)
 {
     return index <= 0 ? setTool(tool) : editOperation(index, &Operation::tool, tool, tr("Change tool"));

@@ -79,6 +79,8 @@ public:
     Diagnostics setEnvironment(const Environment &environment);
     Diagnostics setClamping(const Clamping &clamping);
     Diagnostics setCharacterisation(const MachineCharacterisation &characterisation);
+    // The milled features of a mill-turn part (docs/milling.md), as one undoable edit.
+    Diagnostics setMilledFeatures(const std::vector<MilledFeature> &features, const QString &description);
     // The part's profile after an edit of the profile editor, named by `description` in Undo.
     Diagnostics setPart(const PartProfile &part, const QString &description);
 

@@ -3,6 +3,7 @@
 
 #include "core/milling/seed_ball_end_cases.h"
 #include "widgets/common/worker_threads.h"
+#include "widgets/milling/milled_features_box.h"
 #include "widgets/plot/line_plot.h"
 #include "widgets/plot/map_plot.h"
 
@@ -80,11 +81,19 @@ QImage windowImage(const LeadTiltWindow &w, double highestFeed)
 
 } // namespace
 
-MillingPanel::MillingPanel(QWidget *parent) : QWidget(parent)
+MillingPanel::MillingPanel(ProjectDocument *document, QWidget *parent) : QWidget(parent)
 {
     auto *inputs = new QWidget;
     auto *inputsLayout = new QVBoxLayout(inputs);
     inputsLayout->setContentsMargins(0, 0, 0, 0);
+    if (document) {
+        m_features = new MilledFeaturesBox(document, [this](MilledFeature f) { return completeFeature(std::move(f)); });
+        inputsLayout->addWidget(m_features);
+        connect(m_features, &MilledFeaturesBox::featureChosen, this, &MillingPanel::loadFeature);
+        connect(m_features, &MilledFeaturesBox::message, this, [this](const QString &text) {
+            m_summary->setText(QStringLiteral("<b>%1</b>").arg(text.toHtmlEscaped()));
+        });
+    }
     inputsLayout->addWidget(createToolAndCut());
     inputsLayout->addWidget(createStructureAndTolerance());
     inputsLayout->addStretch();
@@ -191,7 +200,9 @@ QWidget *MillingPanel::createStructureAndTolerance()
     m_springSource->setWordWrap(true);
     m_tolerance = spin(0.1, 10000.0, 1, tr(" µm"), 20.0);
     m_zone = new QComboBox;
-    m_zone->addItems({tr("Flatness / profile without datums"), tr("Profile with datums (±t/2)")});
+    m_zone->addItems({tr("Flatness"), tr("Profile without datums"), tr("Profile with datums (±t/2)")});
+    m_zone->setToolTip(tr("ISO 1101: a flatness and a profile without datums float (the spread within t); a "
+                          "profile with datums is located on the programmed surface (within ±t/2)"));
     m_highestFeed = spin(0.001, 2.0, 4, tr(" mm"), 0.15);
     m_highestFeed->setToolTip(tr("The largest feed per tooth the tool's maker allows"));
     m_planButton = new QPushButton(tr("Plan Lead, Tilt and Feed"));
@@ -253,6 +264,8 @@ QWidget *MillingPanel::createPlots()
     m_tabs->addTab(m_forcePlot, tr("Forces"));
     m_tabs->addTab(m_errorPlot, tr("Surface error"));
     m_tabs->addTab(windowPage, tr("Lead–tilt window"));
+    if (m_features)
+        m_tabs->addTab(m_features->pathPlot(), tr("Along the path"));
     layout->addWidget(m_summary);
     layout->addWidget(m_tabs, 1);
     return panel;
@@ -299,7 +312,7 @@ MillingPanel::Inputs MillingPanel::inputs() const
     in.tool = {m_overhang->value(), m_equivalentDiameter->value(), m_modulus->value(), m_holderStiffness->value(),
                m_holderRotational->value()};
     in.tolerance = {m_tolerance->value() / 1000.0,
-                    m_zone->currentIndex() == 0 ? SurfaceZone::Floating : SurfaceZone::Located};
+                    m_zone->currentIndex() == 2 ? SurfaceZone::Located : SurfaceZone::Floating};
     in.settings.leadLowest_rad = in.settings.tiltLowest_rad = -40.0 * kDegree;
     in.settings.leadHighest_rad = in.settings.tiltHighest_rad = 40.0 * kDegree;
     in.settings.highestFeedPerTooth_mm = m_highestFeed->value();
@@ -473,6 +486,89 @@ void MillingPanel::showWindow()
                                      .arg(1000.0 * p.formError_mm, 0, 'f', 2)
                                      .arg(legend)
                                : tr("No lead and tilt within ±40° holds the tolerance at any feed. %1").arg(legend));
+}
+
+void MillingPanel::loadFeature(const MilledFeature &feature)
+{
+    m_loading = true;
+    m_case->setCurrentIndex(m_case->count() - 1);
+    if (const std::optional<BallEndTool> &t = feature.tool) {
+        m_diameter->setValue(t->diameter_mm);
+        m_flutes->setValue(t->flutes);
+        m_helix->setValue(t->helix_deg);
+        m_overhang->setValue(t->overhang_mm);
+        m_equivalentDiameter->setValue(t->equivalentDiameter_mm);
+        m_modulus->setValue(t->youngsModulus_N_mm2.value_or(kCarbideModulus_N_mm2));
+        if (t->holderStiffness_N_mm && t->holderRotational_N_mm_rad) {
+            m_holderStiffness->setValue(*t->holderStiffness_N_mm);
+            m_holderRotational->setValue(*t->holderRotational_N_mm_rad);
+            m_springSource->setText(tr("Holder springs: feature %1's.").arg(feature.id));
+        }
+    }
+    if (const std::optional<MillingConditions> &c = feature.conditions) {
+        m_kind->setCurrentIndex(static_cast<int>(c->cut));
+        m_direction->setCurrentIndex(static_cast<int>(c->direction));
+        m_radialDepth->setValue(c->radialDepth_mm);
+        m_axialDepth->setValue(c->axialDepth_mm);
+        m_feedPerTooth->setValue(c->feedPerTooth_mm);
+        m_spindle->setValue(c->spindle_rpm);
+        m_lead->setValue(c->lead_deg);
+        m_tilt->setValue(c->tilt_deg);
+    }
+    if (const std::optional<MillingForceCoefficients> &k = feature.coefficients)
+        m_coefficients->setText(QStringLiteral("%1, %2, %3, %4, %5, %6")
+                                    .arg(k->tangentialCutting_N_mm2)
+                                    .arg(k->radialCutting_N_mm2)
+                                    .arg(k->axialCutting_N_mm2)
+                                    .arg(k->tangentialEdge_N_mm)
+                                    .arg(k->radialEdge_N_mm)
+                                    .arg(k->axialEdge_N_mm));
+    if (const std::optional<MilledTolerance> &t = feature.tolerance) {
+        m_tolerance->setValue(t->zone_um);
+        m_zone->setCurrentIndex(t->type == MilledToleranceType::Flatness ? 0 : t->datums.isEmpty() ? 1 : 2);
+    }
+    m_loading = false;
+    compute();
+    QStringList missing;
+    if (!milledFeatureInputs(feature, missing))
+        m_summary->setText(tr("<b>%1 lacks %2</b>: the fields show the last cut; save the cut to the feature to give "
+                              "it these.")
+                               .arg(feature.id.toHtmlEscaped(), missing.join(QStringLiteral(", ")).toHtmlEscaped()) +
+                           QStringLiteral("<br>") + m_summary->text());
+    else if (feature.kind == MilledFeatureKind::Patch)
+        m_summary->setText(m_summary->text() + tr("<br>A patch's lead and tilt come from its path, point by point "
+                                                  "(Along the path); the fields show its conditions' own."));
+}
+
+MilledFeature MillingPanel::completeFeature(MilledFeature feature) const
+{
+    BallEndTool tool;
+    tool.diameter_mm = m_diameter->value();
+    tool.flutes = m_flutes->value();
+    tool.helix_deg = m_helix->value();
+    tool.overhang_mm = m_overhang->value();
+    tool.equivalentDiameter_mm = m_equivalentDiameter->value();
+    tool.youngsModulus_N_mm2 = m_modulus->value();
+    tool.holderStiffness_N_mm = m_holderStiffness->value();
+    tool.holderRotational_N_mm_rad = m_holderRotational->value();
+    feature.tool = tool;
+    MillingConditions c;
+    c.cut = static_cast<BallEndCutKind>(m_kind->currentIndex());
+    c.direction = static_cast<MillingDirection>(m_direction->currentIndex());
+    c.axialDepth_mm = m_axialDepth->value();
+    c.radialDepth_mm = c.cut == BallEndCutKind::Slot ? 0.0 : m_radialDepth->value();
+    c.feedPerTooth_mm = m_feedPerTooth->value();
+    c.spindle_rpm = m_spindle->value();
+    c.lead_deg = m_lead->value();
+    c.tilt_deg = m_tilt->value();
+    feature.conditions = c;
+    feature.coefficients = parseMillingCoefficients(m_coefficients->text());
+    MilledTolerance t;
+    t.type = m_zone->currentIndex() == 0 ? MilledToleranceType::Flatness : MilledToleranceType::Profile;
+    t.zone_um = m_tolerance->value();
+    t.datums = feature.tolerance ? feature.tolerance->datums : QStringList();
+    feature.tolerance = t;
+    return feature;
 }
 
 } // namespace tolturn

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/milling/ball_end_planning.h"
+#include "core/project/milled_feature.h"
 
 #include <QFutureWatcher>
 #include <QWidget>
@@ -20,6 +21,8 @@ namespace tolturn {
 
 class LinePlot;
 class MapPlot;
+class MilledFeaturesBox;
+class ProjectDocument;
 
 // What a plan on the worker thread gives back: the plan, or why there is none.
 struct MillingPlanOutcome {
@@ -34,7 +37,16 @@ struct MillingPlanOutcome {
 class MillingPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit MillingPanel(QWidget *parent = nullptr);
+    // With a document, the project's milled features are listed above the cut, and a feature can
+    // be loaded into the fields, added from them or saved from them.
+    explicit MillingPanel(ProjectDocument *document = nullptr, QWidget *parent = nullptr);
+
+    // Fills the fields from a project's milled feature; what it does not have yet is left as it is.
+    void loadFeature(const MilledFeature &feature);
+    // `feature` with the tool, conditions, coefficients and tolerance of the fields.
+    [[nodiscard]] MilledFeature completeFeature(MilledFeature feature) const;
+
+    [[nodiscard]] MilledFeaturesBox *features() const { return m_features; }
 
     // Fills the tool, cut, speed and holder springs from 001 table 4's case 1–4.
     void loadCase(int number);
@@ -122,6 +134,7 @@ private:
     MapPlot *m_windowPlot;
     QLabel *m_summary;
     QLabel *m_planSummary;
+    MilledFeaturesBox *m_features = nullptr;
     QFutureWatcher<MillingPlanOutcome> m_watcher;
     std::optional<BallEndPlan> m_plan;
     Inputs m_planInputs; // what the plan was made for
