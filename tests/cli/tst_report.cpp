@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The PDF report as a user gets it from `tolturn-cli report`, read back with poppler's
 // pdfinfo/pdftotext: page size and count, the sections, and numbers checked against the
-// published ISO 286-2 tables.
+// published ISO 286-2 tables; the milled features' section against the model's own evaluation.
 #include "tests/cli/cli_runner.h"
+
+#include "core/io/project_file.h"
+#include "core/io/project_json.h"
+#include "core/milling/milled_features.h"
+#include "core/milling/seed_ball_end_cases.h"
 
 #include <QDate>
 #include <QFile>
@@ -37,6 +42,41 @@ QStringList tableRow(const QString &text, const QString &id)
     return line.split(QRegularExpression(QStringLiteral("\\s{2,}")));
 }
 
+// 001's case 1 (a slot at tilt −15°) as a flat on the stepped shaft, with a tool and holder of the
+// paper's springs, made-up coefficients and a 20 µm flatness; the modulus not given (carbide's).
+tolturn::MilledFeature completeFlat()
+{
+    using namespace tolturn;
+    const SeedBallEndCase seed = seedBallEndCases().front();
+    MilledFeature f;
+    f.id = QStringLiteral("M1");
+    f.kind = MilledFeatureKind::Flat;
+    f.zFrom_mm = 20.0;
+    f.zTo_mm = 50.0;
+    BallEndTool tool;
+    tool.diameter_mm = seed.mill.diameter_mm;
+    tool.flutes = seed.mill.flutes;
+    tool.helix_deg = 30.0;
+    tool.overhang_mm = 50.0;
+    tool.equivalentDiameter_mm = 0.8 * seed.mill.diameter_mm;
+    tool.holderStiffness_N_mm = kSeedHolderStiffness_N_mm;
+    tool.holderRotational_N_mm_rad = kSeedHolderRotational_N_mm_rad;
+    f.tool = tool;
+    MillingConditions c;
+    c.cut = seed.cut.kind;
+    c.direction = seed.cut.direction;
+    c.axialDepth_mm = seed.cut.axialDepth_mm;
+    c.feedPerTooth_mm = seed.cut.feedPerTooth_mm;
+    c.spindle_rpm = seed.spindle_rpm;
+    c.lead_deg = 0.0;
+    c.tilt_deg = -15.0;
+    f.conditions = c;
+    f.coefficients = MillingForceCoefficients{2000.0, 800.0, 400.0, 20.0, 20.0, 5.0};
+    f.coefficientsSource = QStringLiteral("test values");
+    f.tolerance = MilledTolerance{MilledToleranceType::Flatness, 20.0, {}};
+    return f;
+}
+
 } // namespace
 
 class TestReport : public QObject {
@@ -69,6 +109,9 @@ private Q_SLOTS:
                         QString::fromUtf8(section).replace(QLatin1Char(' '), QStringLiteral("\\s+")));
             QVERIFY2(text.contains(QRegularExpression(pattern, QRegularExpression::MultilineOption)), section);
         }
+        // No milled features: no section of them, and not their model in the literature.
+        QVERIFY(!text.contains(QStringLiteral("Milled features")));
+        QVERIFY(!text.contains(QStringLiteral("Öztürk")));
         QVERIFY(text.contains(QStringLiteral("page %1 of %1").arg(pages)));
         // The appendices follow the assumptions, on their last page when a third of it is free (here:
         // the assumptions run over onto the last page), else on a page of their own.
@@ -150,6 +193,64 @@ private Q_SLOTS:
         const QStringList t5 = tableRow(tolerances, QStringLiteral("T5"));
         QVERIFY2(t5.size() >= 6, qPrintable(t5.join(QLatin1Char('|'))));
         QCOMPARE(t5.at(5), QStringLiteral("15.0"));
+    }
+
+    // A mill-turn project: a complete flat (001's case 1) and one as a STEP import leaves it, with no
+    // tool. The section lists both, evaluates the first as the model does and names what the second
+    // lacks; section 6 pushes the assumptions to 7, and the model's paper joins the literature.
+    void reportOfMilledFeatures()
+    {
+        using namespace tolturn;
+        ProjectParseResult read = readProjectFile(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(read.project);
+        Project project = *read.project;
+        const MilledFeature complete = completeFlat();
+        MilledFeature imported;
+        imported.id = QStringLiteral("M2");
+        imported.kind = MilledFeatureKind::Flat;
+        imported.description = QStringLiteral("faces 12, 13 of shaft.step");
+        imported.zFrom_mm = 60.0;
+        imported.zTo_mm = 80.0;
+        project.milledFeatures = {complete, imported};
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("mill-turn.tolturn"));
+        QVERIFY(tolturn::test::writeFile(file, serializeProjectJson(project)));
+        const QString pdf = dir.filePath(QStringLiteral("mill-turn.pdf"));
+        const Run r = runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, file});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile::remove(QStringLiteral("/tmp/mr/report.pdf"));
+        QFile::copy(pdf, QStringLiteral("/tmp/mr/report.pdf"));
+
+        const QString text = pdfText(pdf);
+        for (const char *section : {"6 Milled features", "7 Assumptions"}) {
+            const QString pattern =
+                QStringLiteral("^\\f?%1$")
+                    .arg(QString::fromUtf8(section).replace(QLatin1Char(' '), QStringLiteral("\\s+")));
+            QVERIFY2(text.contains(QRegularExpression(pattern, QRegularExpression::MultilineOption)), section);
+        }
+        const QString milled =
+            text.section(QStringLiteral("Milled features"), 1).section(QStringLiteral("Assumptions"), 0, 0);
+        QVERIFY(!tableRow(milled, QStringLiteral("M1")).isEmpty());
+        QVERIFY(!tableRow(milled, QStringLiteral("M2")).isEmpty());
+        QVERIFY2(milled.contains(QStringLiteral("not evaluated")), qPrintable(milled));
+        QVERIFY(milled.contains(QStringLiteral("ball-end"))); // what M2 lacks, wrapped in its cell
+        // M1's form error to the 0.1 µm shown and its verdict with the margin, as the model gives them.
+        const MilledFeatureEvaluation e = evaluateMilledFeature(complete);
+        QVERIFY(e.evaluated());
+        const QString formError = QString::number(1000.0 * e.formError_mm, 'f', 1);
+        QVERIFY2(
+            milled.contains(QRegularExpression(QStringLiteral("\\s%1\\s").arg(QRegularExpression::escape(formError)))),
+            qPrintable(formError + QStringLiteral(" in ") + milled));
+        const QString verdict = e.passes ? QStringLiteral("passes by %1 µm").arg(1000.0 * e.margin_mm, 0, 'f', 1)
+                                         : QStringLiteral("fails by %1 µm").arg(-1000.0 * e.margin_mm, 0, 'f', 1);
+        QVERIFY2(milled.contains(verdict), qPrintable(verdict + QStringLiteral(" in ") + milled));
+        // What the verdict rests on, and the plot of M1 only.
+        QVERIFY(milled.contains(QStringLiteral("M1: E of the tool not given: carbide's 630 000 N/mm² (MakeItFrom)")));
+        QVERIFY(milled.contains(QStringLiteral("cients: test values"))); // "ffi" may be a ligature
+        QVERIFY(milled.contains(QStringLiteral("M1: surface-normal error along the path (")));
+        QVERIFY(!milled.contains(QStringLiteral("M2: surface-normal error")));
+        const QString literature = text.section(QStringLiteral("Appendix A"), 1);
+        QVERIFY2(literature.contains(QStringLiteral("[9] E. Öztürk, E. Budak")), qPrintable(literature));
     }
 
     // "-o -": the PDF on standard output (a pipe to a printer or a viewer), the page count on

@@ -14,6 +14,7 @@
 #include "widgets/plot/map_plot.h"
 #include "widgets/profile/dimension_item.h"
 #include "widgets/profile/profile_scene.h"
+#include "widgets/report/milling_section.h"
 #include "widgets/report/report_layout.h"
 #include "widgets/report/setup_sheet.h"
 #include "widgets/results/deflection_panel.h"
@@ -429,9 +430,10 @@ void feedSchedule(Layout &l, const Project &p, const std::shared_ptr<const Loade
     l.table(rows, {70, 90, kWidth - 160});
 }
 
-void assumptions(Layout &l, const DeviationResult &d)
+void assumptions(Layout &l, const Project &p, const DeviationResult &d)
 {
-    l.heading(Report::tr("6  Assumptions"));
+    // The milled features, when there are any, are section 6.
+    l.heading(p.milledFeatures.empty() ? Report::tr("6  Assumptions") : Report::tr("7  Assumptions"));
     l.paragraph(Report::tr("What this prediction rests on, beyond the project's own values:"), 8.5);
     if (d.inputs) {
         for (const QString &note : d.inputs->notes)
@@ -440,10 +442,10 @@ void assumptions(Layout &l, const DeviationResult &d)
 }
 
 // The literature the model comes from, numbered, with what is used of each.
-void literature(Layout &l)
+void literature(Layout &l, const Project &p)
 {
     l.heading(Report::tr("Appendix A  Literature"));
-    const QStringList references{
+    QStringList references{
         Report::tr("[1] G. Valiño, D. Blanco, B. J. Álvarez, S. Mateos: Machining error predictive model in a CAPP "
                    "system for turning: formulation and initial tests (2008). Used: eq. 2–8 (deviation), §III "
                    "(spindle–chuck springs from a test bar), §V and Fig. 4 (tolerances), §VI (optimisation)."),
@@ -461,6 +463,13 @@ void literature(Layout &l)
                    "loop with feed override); TolTurn's feed schedule holds the tolerances feature by feature."),
         Report::tr("The equations as implemented, the corrections of printing errors and the validation against "
                    "closed forms: docs/model.md of TolTurn.")};
+    if (!p.milledFeatures.empty()) // the milled features' model, before the closing note
+        references.insert(references.size() - 1,
+                          Report::tr("[9] E. Öztürk, E. Budak: 5-Eksen Frezelemede Kuvvet ve Şekil Hatalarının "
+                                     "Modellenmesi (modelling the forces and form errors of 5-axis milling; in "
+                                     "Turkish), Sabancı University. Used: eq. 1–11 (the forces of a ball-end mill at a "
+                                     "lead and tilt), table 3 and §4 (the tool's deflection and the surface-normal "
+                                     "error); the milled features' equations as implemented: docs/milling.md."));
     for (const QString &reference : references)
         l.paragraph(reference, 8.5);
 }
@@ -585,16 +594,17 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
     }
     plan(layout, project, finishing, header.learned);
     feedSchedule(layout, project, header.learned);
-    if (!step(0.8)) {
+    if (!step(0.8) || !report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"),
+                                                     [&](double f) { return step(0.8 + 0.15 * f); })) {
         rendered.cancelled = true;
         return rendered;
     }
-    assumptions(layout, model ? range.compliant : deviation);
+    assumptions(layout, project, model ? range.compliant : deviation);
     // The appendices (for reference, not for the shop floor) open a page unless a third of this
     // one is still free: no page is left holding a few lines.
     if (layout.remaining() < (report::kBottom - report::kMargin) / 3.0)
         layout.newPage();
-    literature(layout);
+    literature(layout, project);
     dataSources(layout, project);
     const std::vector<std::unique_ptr<QPicture>> pages = layout.finish();
     rendered.pdf = pdfOf(pages, project);
