@@ -139,6 +139,18 @@
         <source>the import&apos;s result has no valid &quot;%1&quot;</source>
         <translation>das Ergebnis des Imports hat kein gültiges „%1“</translation>
     </message>
+    <message>
+        <source>%1: expected an array, found %2</source>
+        <translation>%1: Liste erwartet, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>%1: expected an object, found %2</source>
+        <translation>%1: Objekt erwartet, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>the import&apos;s result has no valid &quot;milled_features&quot;: %1</source>
+        <translation>das Ergebnis des Imports hat kein gültiges „milled_features“: %1</translation>
+    </message>
 </context>
 <context>
     <name>CalculixText</name>
@@ -672,6 +684,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--%1: &quot;%2&quot; is not a whole number from %3 to %4</source>
         <translation>--%1: „%2“ ist keine ganze Zahl von %3 bis %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n milled feature(s)</source>
+        <translation>
+            <numerusform>, %n gefrästes Formelement</numerusform>
+            <numerusform>, %n gefräste Formelemente</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1551,10 +1570,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>es wurde kein Projekt geschrieben: der Import enthält Fehler</translation>
     </message>
     <message>
-        <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; features that are not turned (flats, keyways, cross holes) are listed as warnings.</source>
-        <translation>Ein Teil aus STEP (.step, .stp) oder IGES (.iges, .igs) in ein neues Projekt umwandeln: Außen- und Innenkontur in mm, z = 0 am linken Ende; nicht gedrehte Formelemente (Abflachungen, Passfedernuten, Querbohrungen) werden als Warnungen aufgeführt.</translation>
-    </message>
-    <message>
         <source>Print the result as JSON.</source>
         <translation>Ergebnis als JSON ausgeben.</translation>
     </message>
@@ -1632,6 +1647,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Report the progress on standard error, as lines &quot;progress F&quot; with F from 0 to 1.</source>
         <translation>Den Fortschritt auf der Standardfehlerausgabe melden, als Zeilen „progress F“ mit F von 0 bis 1.</translation>
+    </message>
+    <message>
+        <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; flats and keyways become milled features, other features that are not turned (cross holes) are listed as warnings.</source>
+        <translation>Ein STEP- (.step, .stp) oder IGES-Teil (.iges, .igs) in ein neues Projekt umwandeln: die Außen- und Innenkontur in mm, z = 0 am linken Ende; Abflachungen und Passfedernuten werden zu gefrästen Formelementen, andere nicht gedrehte Formelemente (Querbohrungen) werden als Warnungen aufgeführt.</translation>
     </message>
 </context>
 <context>
@@ -2397,6 +2416,175 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>MilledFeatureCheck</name>
+    <message>
+        <source>a milled feature needs an id</source>
+        <translation>ein gefrästes Formelement braucht eine ID</translation>
+    </message>
+    <message>
+        <source>id &apos;%1&apos; is already a feature of the part</source>
+        <translation>ID „%1“ ist bereits ein Formelement des Teils</translation>
+    </message>
+    <message>
+        <source>z from %1 mm to %2 mm is not a range within the part, 0 to %3 mm</source>
+        <translation>z von %1 mm bis %2 mm ist kein Bereich innerhalb des Teils, 0 bis %3 mm</translation>
+    </message>
+    <message>
+        <source>spindle speed: %1 rpm is not positive</source>
+        <translation>Spindeldrehzahl: %1 1/min ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>cutting coefficient %1 is beyond ±%2</source>
+        <translation>Schnittkraftkoeffizient %1 liegt außerhalb ±%2</translation>
+    </message>
+    <message>
+        <source>K_tc: %1 N/mm² is not positive</source>
+        <translation>K_tc: %1 N/mm² ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>the cutting coefficients have no source: the verdict rests on numbers nobody can trace</source>
+        <translation>die Schnittkraftkoeffizienten haben keine Quelle: die Bewertung beruht auf Zahlen, die niemand nachvollziehen kann</translation>
+    </message>
+    <message>
+        <source>tolerance zone: %1 µm is not positive</source>
+        <translation>Toleranzzone: %1 µm ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>a flatness has no datums (ISO 1101), found %1</source>
+        <translation>eine Ebenheit hat keine Bezüge (ISO 1101), gefunden: %1</translation>
+    </message>
+    <message>
+        <source>there is no datum &apos;%1&apos; in the project</source>
+        <translation>im Projekt gibt es keinen Bezug „%1“</translation>
+    </message>
+    <message>
+        <source>%1 CL points are more than the %2 a path may have</source>
+        <translation>%1 CL-Punkte sind mehr als die %2, die eine Bahn haben darf</translation>
+    </message>
+    <message>
+        <source>a %1 is one straight cut: its CL points are not used</source>
+        <translation>ein Formelement vom Typ %1 ist ein einzelner gerader Schnitt: seine CL-Punkte werden nicht verwendet</translation>
+    </message>
+    <message>
+        <source>milled feature %1 is not evaluated: it lacks %2</source>
+        <translation>gefrästes Formelement %1 wird nicht ausgewertet, es fehlt: %2</translation>
+    </message>
+</context>
+<context>
+    <name>MilledFeatureOutput</name>
+    <message>
+        <source>not evaluated: it lacks %1</source>
+        <translation>nicht ausgewertet, es fehlt: %1</translation>
+    </message>
+    <message>
+        <source>not evaluated: %1</source>
+        <translation>nicht ausgewertet: %1</translation>
+    </message>
+    <message>
+        <source>located</source>
+        <translation>lagebestimmt</translation>
+    </message>
+    <message>
+        <source>floating</source>
+        <translation>schwebend</translation>
+    </message>
+    <message>
+        <source>form error %1 µm of %2 µm (%3 zone): </source>
+        <translation>Formabweichung %1 µm von %2 µm (Zone: %3): </translation>
+    </message>
+    <message>
+        <source>passes by %1 µm</source>
+        <translation>besteht mit %1 µm Reserve</translation>
+    </message>
+    <message>
+        <source>fails by %1 µm</source>
+        <translation>verfehlt um %1 µm</translation>
+    </message>
+    <message>
+        <source>; holds at a feed per tooth up to %1 mm</source>
+        <translation>; hält bei einem Vorschub je Zahn bis %1 mm</translation>
+    </message>
+    <message>
+        <source>; no lower feed holds (the edge forces alone are too much)</source>
+        <translation>; kein kleinerer Vorschub hält (schon die Kantenkräfte sind zu groß)</translation>
+    </message>
+    <message>
+        <source>Milled features (five-axis ball-end model, Öztürk &amp; Budak):</source>
+        <translation>Gefräste Formelemente (Modell für fünfachsiges Kugelkopffräsen, Öztürk &amp; Budak):</translation>
+    </message>
+    <message>
+        <source>z %1–%2 mm  </source>
+        <translation>z %1–%2 mm  </translation>
+    </message>
+    <message>
+        <source>the tool&apos;s modulus is not given: carbide&apos;s %1 N/mm² (MakeItFrom)</source>
+        <translation>der E-Modul des Werkzeugs ist nicht angegeben: %1 N/mm² für Hartmetall (MakeItFrom)</translation>
+    </message>
+</context>
+<context>
+    <name>MilledFeatures</name>
+    <message>
+        <source>path point %1: %2</source>
+        <translation>Bahnpunkt %1: %2</translation>
+    </message>
+    <message>
+        <source>the ball-end tool</source>
+        <translation>der Kugelkopffräser</translation>
+    </message>
+    <message>
+        <source>the holder&apos;s springs k and k_θ</source>
+        <translation>die Halterfedern k und k_θ</translation>
+    </message>
+    <message>
+        <source>the cutting conditions</source>
+        <translation>die Schnittbedingungen</translation>
+    </message>
+    <message>
+        <source>the cutting coefficients</source>
+        <translation>die Schnittkraftkoeffizienten</translation>
+    </message>
+    <message>
+        <source>the tolerance</source>
+        <translation>die Toleranz</translation>
+    </message>
+    <message>
+        <source>the tool path (at least two CL points)</source>
+        <translation>die Werkzeugbahn (mindestens zwei CL-Punkte)</translation>
+    </message>
+    <message>
+        <source>a tool path needs at least two CL points, it has %1</source>
+        <translation>eine Werkzeugbahn braucht mindestens zwei CL-Punkte, sie hat %1</translation>
+    </message>
+    <message>
+        <source>the tool axis is zero</source>
+        <translation>die Werkzeugachse ist ein Nullvektor</translation>
+    </message>
+    <message>
+        <source>the surface normal is zero</source>
+        <translation>die Flächennormale ist ein Nullvektor</translation>
+    </message>
+    <message>
+        <source>the tool axis points into the surface</source>
+        <translation>die Werkzeugachse zeigt in die Fläche hinein</translation>
+    </message>
+    <message>
+        <source>it is where the point before it is</source>
+        <translation>er liegt dort, wo der Punkt davor liegt</translation>
+    </message>
+    <message>
+        <source>the feed runs along the surface normal</source>
+        <translation>der Vorschub verläuft entlang der Flächennormalen</translation>
+    </message>
+    <message>
+        <source>milled feature %1 lacks %2</source>
+        <translation>dem gefrästen Formelement %1 fehlt: %2</translation>
+    </message>
+    <message>
+        <source>highest feed per tooth: %1 mm is not positive</source>
+        <translation>größter Vorschub je Zahn: %1 mm ist nicht positiv</translation>
+    </message>
+</context>
+<context>
     <name>MillingCommand</name>
     <message>
         <source>Öztürk &amp; Budak&apos;s cut 1–4 (001 table 4): tool, cut and speed; the options below change it.</source>
@@ -2527,10 +2715,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Drehmoment: Mittel %1 N·m, Spitze %2 N·m; mittlere Spindelleistung %3 W</translation>
     </message>
     <message>
-        <source>takes no file: &quot;%1&quot;</source>
-        <translation>nimmt keine Datei: „%1“</translation>
-    </message>
-    <message>
         <source>From where the holder grips the tool to its tip, in mm.</source>
         <translation>Von der Einspannung im Halter bis zur Werkzeugspitze, in mm.</translation>
     </message>
@@ -2645,6 +2829,229 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--tolerance is required: the surface&apos;s tolerance t in mm</source>
         <translation>--tolerance ist erforderlich: die Toleranz t der Fläche in mm</translation>
+    </message>
+    <message>
+        <source>takes a project file only with --feature ID: &quot;%1&quot;</source>
+        <translation>nimmt eine Projektdatei nur mit --feature ID an: „%1“</translation>
+    </message>
+    <message>
+        <source>--feature needs the project file PROJECT it is in</source>
+        <translation>--feature benötigt die Projektdatei PROJECT, in der das Formelement steht</translation>
+    </message>
+    <message>
+        <source>With --feature: write the plan (lead, tilt, feed per tooth) into the feature&apos;s conditions in PROJECT.</source>
+        <translation>Mit --feature: den Plan (Anstellwinkel, Kippwinkel, Vorschub je Zahn) in die Schnittbedingungen des Formelements in PROJECT schreiben.</translation>
+    </message>
+    <message>
+        <source>--tolerance, --located: the tolerance comes from the project&apos;s feature; change it there</source>
+        <translation>--tolerance, --located: die Toleranz stammt aus dem Formelement des Projekts; ändern Sie sie dort</translation>
+    </message>
+    <message>
+        <source>--save: no plan holds the tolerance; %1 is left as it was</source>
+        <translation>--save: kein Plan hält die Toleranz; %1 bleibt unverändert</translation>
+    </message>
+    <message>
+        <source>The plan is saved in %1, feature %2.</source>
+        <translation>Der Plan ist in %1 gespeichert, Formelement %2.</translation>
+    </message>
+    <message>
+        <source>No feed holds the tolerance along the path: the edge forces alone deflect the tool too far at its tool axes.</source>
+        <translation>Kein Vorschub hält die Toleranz entlang der Bahn: schon die Kantenkräfte biegen das Werkzeug bei den Werkzeugachsen der Bahn zu weit aus.</translation>
+    </message>
+    <message>
+        <source>Plan along the path&apos;s own tool axes: feed %1 mm/tooth (%2 mm/min); form error %3 µm</source>
+        <translation>Plan mit den eigenen Werkzeugachsen der Bahn: Vorschub %1 mm/Zahn (%2 mm/min); Formabweichung %3 µm</translation>
+    </message>
+    <message>
+        <source>--save needs PROJECT --feature ID</source>
+        <translation>--save benötigt PROJECT --feature ID</translation>
+    </message>
+    <message>
+        <source>%1: the tool and cut come from the project&apos;s feature; change them there</source>
+        <translation>%1: Werkzeug und Schnitt stammen aus dem Formelement des Projekts; ändern Sie sie dort</translation>
+    </message>
+    <message>
+        <source>--feature: there is no milled feature &quot;%1&quot; in %2</source>
+        <translation>--feature: in %2 gibt es kein gefrästes Formelement „%1“</translation>
+    </message>
+    <message>
+        <source>milled feature %1 lacks %2</source>
+        <translation>dem gefrästen Formelement %1 fehlt: %2</translation>
+    </message>
+    <message>
+        <source>--%1: the tool&apos;s structure comes from the project&apos;s feature; change it there</source>
+        <translation>--%1: der Aufbau des Werkzeugs stammt aus dem Formelement des Projekts; ändern Sie ihn dort</translation>
+    </message>
+    <message>
+        <source>The milled feature of the project PROJECT to compute, with its tool, cut, coefficients and tolerance.</source>
+        <translation>Das zu berechnende gefräste Formelement des Projekts PROJECT, mit seinem Werkzeug, Schnitt, seinen Koeffizienten und seiner Toleranz.</translation>
+    </message>
+    <message>
+        <source>With --feature, a patch&apos;s CL point to compute at (default 1; mill-optimize plans the whole path).</source>
+        <translation>Mit --feature der CL-Punkt einer Freiformfläche, an dem gerechnet wird (Vorgabe 1; mill-optimize plant die ganze Bahn).</translation>
+    </message>
+</context>
+<context>
+    <name>MillingReport</name>
+    <message>
+        <source>Ø%1 mm, 1 flute, helix %2°</source>
+        <translation>Ø%1 mm, 1 Schneide, Drall %2°</translation>
+    </message>
+    <message>
+        <source>Ø%1 mm, %2 flutes, helix %3°</source>
+        <translation>Ø%1 mm, %2 Schneiden, Drall %3°</translation>
+    </message>
+    <message>
+        <source>down milling</source>
+        <translation>Gleichlauffräsen</translation>
+    </message>
+    <message>
+        <source>up milling</source>
+        <translation>Gegenlauffräsen</translation>
+    </message>
+    <message>
+        <source>, s %1 mm</source>
+        <translation>, s %1 mm</translation>
+    </message>
+    <message>
+        <source>; f_z %1 mm; %2 rpm; </source>
+        <translation>; f_z %1 mm; %2 1/min; </translation>
+    </message>
+    <message>
+        <source>lead and tilt from the path</source>
+        <translation>Anstell- und Kippwinkel aus der Bahn</translation>
+    </message>
+    <message>
+        <source>lead %1°, tilt %2°</source>
+        <translation>Anstellwinkel %1°, Kippwinkel %2°</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>flatness</source>
+        <translation>Ebenheit</translation>
+    </message>
+    <message>
+        <source>located, datums %1</source>
+        <translation>lagebestimmt, Bezüge %1</translation>
+    </message>
+    <message>
+        <source>floating</source>
+        <translation>schwebend</translation>
+    </message>
+    <message>
+        <source>%1 %2 µm, %3</source>
+        <translation>%1 %2 µm, %3</translation>
+    </message>
+    <message>
+        <source>not evaluated: lacks %1</source>
+        <translation>nicht ausgewertet, es fehlt: %1</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>abgelehnt: %1</translation>
+    </message>
+    <message>
+        <source>passes by %1 µm</source>
+        <translation>besteht mit %1 µm Reserve</translation>
+    </message>
+    <message>
+        <source>largest f_z that holds: %1 mm</source>
+        <translation>größtes f_z, das die Toleranz hält: %1 mm</translation>
+    </message>
+    <message>
+        <source>no f_z up to the planned one holds</source>
+        <translation>kein f_z bis zum geplanten hält die Toleranz</translation>
+    </message>
+    <message>
+        <source>fails by %1 µm; %2</source>
+        <translation>verfehlt um %1 µm; %2</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Conditions</source>
+        <translation>Schnittwerte</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <source>Form error [µm]</source>
+        <translation>Formabweichung [µm]</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Bewertung</translation>
+    </message>
+    <message>
+        <source>E of the tool not given: carbide&apos;s %1 N/mm² (MakeItFrom)</source>
+        <translation>E des Werkzeugs nicht angegeben: %1 N/mm² für Hartmetall (MakeItFrom)</translation>
+    </message>
+    <message>
+        <source>coefficients without a source</source>
+        <translation>Koeffizienten ohne Quelle</translation>
+    </message>
+    <message>
+        <source>coefficients: %1</source>
+        <translation>Koeffizienten: %1</translation>
+    </message>
+    <message>
+        <source>δ_N, least</source>
+        <translation>δ_N, kleinstes</translation>
+    </message>
+    <message>
+        <source>δ_N, greatest</source>
+        <translation>δ_N, größtes</translation>
+    </message>
+    <message>
+        <source>zone, lower</source>
+        <translation>Zone, unten</translation>
+    </message>
+    <message>
+        <source>zone, upper</source>
+        <translation>Zone, oben</translation>
+    </message>
+    <message>
+        <source>arc length along the path [mm]</source>
+        <translation>Bogenlänge entlang der Bahn [mm]</translation>
+    </message>
+    <message>
+        <source>surface-normal error δ_N [µm]</source>
+        <translation>Abweichung entlang der Flächennormalen δ_N [µm]</translation>
+    </message>
+    <message>
+        <source>%1: surface-normal error along the path (%2 zone)</source>
+        <translation>%1: Abweichung entlang der Flächennormalen im Verlauf der Bahn (Zone: %2)</translation>
+    </message>
+    <message>
+        <source>located</source>
+        <translation>lagebestimmt</translation>
+    </message>
+    <message>
+        <source>%1: largest force on the tool %2 N, mean torque %3 N·m, spindle power %4 W.</source>
+        <translation>%1: größte Kraft am Werkzeug %2 N, mittleres Drehmoment %3 N·m, Spindelleistung %4 W.</translation>
+    </message>
+    <message>
+        <source>Each milled feature is evaluated with Öztürk &amp; Budak&apos;s ball-end model [9]: the forces bend the tool and leave the surface-normal error δ_N (its range over a revolution at each point of the path). The form error is the spread of δ_N along the path for a floating zone, twice its largest magnitude for a located one (ISO 1101 [6]).</source>
+        <translation>Jedes gefräste Formelement wird mit dem Kugelkopfmodell von Öztürk &amp; Budak [9] ausgewertet: Die Kräfte biegen das Werkzeug aus und hinterlassen die Abweichung entlang der Flächennormalen δ_N (ihre Spanne über eine Umdrehung an jedem Punkt der Bahn). Die Formabweichung ist bei einer schwebenden Zone die Spanne von δ_N entlang der Bahn, bei einer lagebestimmten Zone das Doppelte ihres größten Betrags (ISO 1101 [6]).</translation>
     </message>
 </context>
 <context>
@@ -2774,6 +3181,30 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>collet</source>
         <translation>Spannzange</translation>
+    </message>
+    <message>
+        <source>flat</source>
+        <translation>Abflachung</translation>
+    </message>
+    <message>
+        <source>keyway</source>
+        <translation>Passfedernut</translation>
+    </message>
+    <message>
+        <source>surface patch</source>
+        <translation>Freiformfläche</translation>
+    </message>
+    <message>
+        <source>slot</source>
+        <translation>Nut</translation>
+    </message>
+    <message>
+        <source>side cut</source>
+        <translation>seitlicher Schnitt</translation>
+    </message>
+    <message>
+        <source>step-over</source>
+        <translation>Bahnabstand</translation>
     </message>
 </context>
 <context>
@@ -3484,6 +3915,30 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>unknown format version %1; this TolTurn reads versions 1 to %2</source>
         <translation>unbekannte Formatversion %1; dieses TolTurn liest die Versionen 1 bis %2</translation>
     </message>
+    <message>
+        <source>cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <source>milling direction</source>
+        <translation>Fräsrichtung</translation>
+    </message>
+    <message>
+        <source>milled tolerance type</source>
+        <translation>Toleranzart des gefrästen Formelements</translation>
+    </message>
+    <message>
+        <source>expected three numbers, found %1</source>
+        <translation>erwartet: drei Zahlen, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>erwartet: eine Zahl, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>milled feature kind</source>
+        <translation>Art des gefrästen Formelements</translation>
+    </message>
 </context>
 <context>
     <name>ProjectValidation</name>
@@ -4136,6 +4591,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (University of Maribor, 2013). Used: eq. 1 (feed drive), §2 (20 ms constant-force loop with feed override); TolTurn&apos;s feed schedule holds the tolerances feature by feature.</source>
         <translation>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (Universität Maribor, 2013). Verwendet: Gl. 1 (Vorschubantrieb), §2 (Konstantkraftregelung im 20-ms-Takt mit Vorschub-Override); der Vorschubplan von TolTurn hält die Toleranzen Formelement für Formelement.</translation>
     </message>
+    <message>
+        <source>7  Assumptions</source>
+        <translation>7  Annahmen</translation>
+    </message>
+    <message>
+        <source>[9] E. Öztürk, E. Budak: 5-Eksen Frezelemede Kuvvet ve Şekil Hatalarının Modellenmesi (modelling the forces and form errors of 5-axis milling; in Turkish), Sabancı University. Used: eq. 1–11 (the forces of a ball-end mill at a lead and tilt), table 3 and §4 (the tool&apos;s deflection and the surface-normal error); the milled features&apos; equations as implemented: docs/milling.md.</source>
+        <translation>[9] E. Öztürk, E. Budak: 5-Eksen Frezelemede Kuvvet ve Şekil Hatalarının Modellenmesi (Modellierung der Kräfte und Formabweichungen beim 5-Achs-Fräsen; auf Türkisch), Sabancı-Universität. Verwendet: Gl. 1–11 (die Kräfte eines Kugelkopffräsers bei einem Anstell- und Kippwinkel), Tabelle 3 und §4 (die Ausbiegung des Werkzeugs und die Abweichung entlang der Flächennormalen); die Gleichungen der gefrästen Formelemente in der Umsetzung: docs/milling.md.</translation>
+    </message>
+    <message>
+        <source>6  Milled features</source>
+        <translation>6  Gefräste Formelemente</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>
@@ -4617,6 +5084,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>&apos;%1&apos; could not be read: OpenCascade failed on it (%2); check the file in the CAD system that wrote it</source>
         <translation>„%1“ konnte nicht gelesen werden: OpenCascade scheiterte daran (%2); prüfen Sie die Datei im CAD-System, das sie geschrieben hat</translation>
+    </message>
+    <message>
+        <source>face %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <source>faces %1</source>
+        <translation>Flächen %1</translation>
+    </message>
+    <message>
+        <source>STEP %1</source>
+        <translation>STEP %1</translation>
+    </message>
+    <message>
+        <source>the flat of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
+        <translation>die Abflachung aus %1, von z = %2 mm bis z = %3 mm, wurde zum gefrästen Formelement %4; geben Sie ihm Werkzeug, Schnittbedingungen, Schnittkraftkoeffizienten und eine Toleranz, um es auszuwerten</translation>
+    </message>
+    <message>
+        <source>the keyway of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
+        <translation>die Passfedernut aus %1, von z = %2 mm bis z = %3 mm, wurde zum gefrästen Formelement %4; geben Sie ihm Werkzeug, Schnittbedingungen, Schnittkraftkoeffizienten und eine Toleranz, um es auszuwerten</translation>
     </message>
 </context>
 <context>
@@ -6774,6 +7261,153 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>tolturn::MilledFeaturesBox</name>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>flatness</source>
+        <translation>Ebenheit</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>not evaluated: lacks %1</source>
+        <translation>nicht ausgewertet, es fehlt: %1</translation>
+    </message>
+    <message>
+        <source>not evaluated: %1</source>
+        <translation>nicht ausgewertet: %1</translation>
+    </message>
+    <message>
+        <source>passes, %1 of %2 µm</source>
+        <translation>besteht, %1 von %2 µm</translation>
+    </message>
+    <message>
+        <source>fails, %1 of %2 µm</source>
+        <translation>verfehlt, %1 von %2 µm</translation>
+    </message>
+    <message>
+        <source>Milled features of the part</source>
+        <translation>Gefräste Formelemente des Teils</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Bewertung</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>A, B (a profile with datums)</source>
+        <translation>A, B (ein Profil mit Bezügen)</translation>
+    </message>
+    <message>
+        <source>where the cutting coefficients come from</source>
+        <translation>Herkunft der Schnittkraftkoeffizienten</translation>
+    </message>
+    <message>
+        <source>Add Cut as Feature</source>
+        <translation>Schnitt als Formelement hinzufügen</translation>
+    </message>
+    <message>
+        <source>Save Cut to Feature</source>
+        <translation>Schnitt im Formelement speichern</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>z from, to</source>
+        <translation>z von, bis</translation>
+    </message>
+    <message>
+        <source>Datums</source>
+        <translation>Bezüge</translation>
+    </message>
+    <message>
+        <source>Coefficients from</source>
+        <translation>Koeffizienten aus</translation>
+    </message>
+    <message>
+        <source>along the path [mm]</source>
+        <translation>entlang der Bahn [mm]</translation>
+    </message>
+    <message>
+        <source>surface-normal error [µm]</source>
+        <translation>Abweichung entlang der Flächennormalen [µm]</translation>
+    </message>
+    <message>
+        <source>evaluating…</source>
+        <translation>wird ausgewertet…</translation>
+    </message>
+    <message>
+        <source>Choose an evaluated feature</source>
+        <translation>Wählen Sie ein ausgewertetes Formelement</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>δ_N least</source>
+        <translation>δ_N kleinstes</translation>
+    </message>
+    <message>
+        <source>δ_N over a revolution</source>
+        <translation>δ_N über eine Umdrehung</translation>
+    </message>
+    <message>
+        <source>zone, lower</source>
+        <translation>Zone, unten</translation>
+    </message>
+    <message>
+        <source>zone, upper</source>
+        <translation>Zone, oben</translation>
+    </message>
+    <message>
+        <source>Add milled feature %1</source>
+        <translation>Gefrästes Formelement %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Choose the feature to save the cut to.</source>
+        <translation>Wählen Sie das Formelement, in dem der Schnitt gespeichert werden soll.</translation>
+    </message>
+    <message>
+        <source>Change milled feature %1</source>
+        <translation>Gefrästes Formelement %1 ändern</translation>
+    </message>
+    <message>
+        <source>Choose the feature to remove.</source>
+        <translation>Wählen Sie das zu entfernende Formelement.</translation>
+    </message>
+    <message>
+        <source>Remove milled feature %1</source>
+        <translation>Gefrästes Formelement %1 entfernen</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::MillingPanel</name>
     <message>
         <source>Ball-end cut</source>
@@ -6918,10 +7552,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source> µm</source>
         <translation> µm</translation>
-    </message>
-    <message>
-        <source>Flatness / profile without datums</source>
-        <translation>Ebenheit / Profil ohne Bezüge</translation>
     </message>
     <message>
         <source>Profile with datums (±t/2)</source>
@@ -7114,6 +7744,34 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The inputs have changed since this plan: plan again.</source>
         <translation>Die Eingaben haben sich seit diesem Plan geändert: erneut planen.</translation>
+    </message>
+    <message>
+        <source>Flatness</source>
+        <translation>Ebenheit</translation>
+    </message>
+    <message>
+        <source>Profile without datums</source>
+        <translation>Profil ohne Bezüge</translation>
+    </message>
+    <message>
+        <source>ISO 1101: a flatness and a profile without datums float (the spread within t); a profile with datums is located on the programmed surface (within ±t/2)</source>
+        <translation>ISO 1101: Ebenheit und Profil ohne Bezüge sind schwebend (die Spanne innerhalb t); ein Profil mit Bezügen liegt fest auf der programmierten Fläche (innerhalb ±t/2)</translation>
+    </message>
+    <message>
+        <source>Along the path</source>
+        <translation>Entlang der Bahn</translation>
+    </message>
+    <message>
+        <source>Holder springs: feature %1&apos;s.</source>
+        <translation>Halterfedern: aus Formelement %1.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 lacks %2&lt;/b&gt;: the fields show the last cut; save the cut to the feature to give it these.</source>
+        <translation>&lt;b&gt;Für %1 fehlt: %2&lt;/b&gt; – die Felder zeigen den letzten Schnitt; speichern Sie den Schnitt im Formelement, um ihm diese Werte zu geben.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;A patch&apos;s lead and tilt come from its path, point by point (Along the path); the fields show its conditions&apos; own.</source>
+        <translation>&lt;br&gt;Anstell- und Kippwinkel einer Freiformfläche ergeben sich Punkt für Punkt aus ihrer Bahn (Entlang der Bahn); die Felder zeigen die eigenen Werte ihrer Schnittbedingungen.</translation>
     </message>
 </context>
 <context>

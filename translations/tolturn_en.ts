@@ -34,6 +34,13 @@
             <numerusform>; %n set-ups: </numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>, %n milled feature(s)</source>
+        <translation>
+            <numerusform>, %n milled feature</numerusform>
+            <numerusform>, %n milled features</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>ControlExample</name>

@@ -139,6 +139,18 @@
         <source>the import&apos;s result has no valid &quot;%1&quot;</source>
         <translation>el resultado de la importación no tiene un «%1» válido</translation>
     </message>
+    <message>
+        <source>%1: expected an array, found %2</source>
+        <translation>%1: se esperaba una matriz y se ha encontrado %2</translation>
+    </message>
+    <message>
+        <source>%1: expected an object, found %2</source>
+        <translation>%1: se esperaba un objeto y se ha encontrado %2</translation>
+    </message>
+    <message>
+        <source>the import&apos;s result has no valid &quot;milled_features&quot;: %1</source>
+        <translation>el resultado de la importación no tiene un «milled_features» válido: %1</translation>
+    </message>
 </context>
 <context>
     <name>CalculixText</name>
@@ -672,6 +684,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--%1: &quot;%2&quot; is not a whole number from %3 to %4</source>
         <translation>--%1: «%2» no es un número entero de %3 a %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n milled feature(s)</source>
+        <translation>
+            <numerusform>, %n elemento fresado</numerusform>
+            <numerusform>, %n elementos fresados</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1551,10 +1570,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no se ha escrito ningún proyecto: la importación tiene errores</translation>
     </message>
     <message>
-        <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; features that are not turned (flats, keyways, cross holes) are listed as warnings.</source>
-        <translation>Convertir una pieza STEP (.step, .stp) o IGES (.iges, .igs) en un proyecto nuevo: el contorno exterior y el interior en mm, z = 0 en el extremo izquierdo; los elementos que no se tornean (planos, chaveteros, agujeros transversales) se indican como avisos.</translation>
-    </message>
-    <message>
         <source>Print the result as JSON.</source>
         <translation>Escribir el resultado en formato JSON.</translation>
     </message>
@@ -1632,6 +1647,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Report the progress on standard error, as lines &quot;progress F&quot; with F from 0 to 1.</source>
         <translation>Informar del progreso en la salida de error estándar, como líneas «progress F» con F de 0 a 1.</translation>
+    </message>
+    <message>
+        <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; flats and keyways become milled features, other features that are not turned (cross holes) are listed as warnings.</source>
+        <translation>Convertir una pieza STEP (.step, .stp) o IGES (.iges, .igs) en un proyecto nuevo: el contorno exterior e interior en mm, z = 0 en el extremo izquierdo; las caras planas y los chaveteros se convierten en elementos fresados, y los demás elementos que no se tornean (agujeros transversales) se listan como avisos.</translation>
     </message>
 </context>
 <context>
@@ -2397,6 +2416,175 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>MilledFeatureCheck</name>
+    <message>
+        <source>a milled feature needs an id</source>
+        <translation>un elemento fresado necesita un id</translation>
+    </message>
+    <message>
+        <source>id &apos;%1&apos; is already a feature of the part</source>
+        <translation>el id «%1» ya es un elemento de la pieza</translation>
+    </message>
+    <message>
+        <source>z from %1 mm to %2 mm is not a range within the part, 0 to %3 mm</source>
+        <translation>z de %1 mm a %2 mm no es un intervalo dentro de la pieza, de 0 a %3 mm</translation>
+    </message>
+    <message>
+        <source>spindle speed: %1 rpm is not positive</source>
+        <translation>velocidad del husillo: %1 rpm no es positiva</translation>
+    </message>
+    <message>
+        <source>cutting coefficient %1 is beyond ±%2</source>
+        <translation>el coeficiente de corte %1 supera ±%2</translation>
+    </message>
+    <message>
+        <source>K_tc: %1 N/mm² is not positive</source>
+        <translation>K_tc: %1 N/mm² no es positivo</translation>
+    </message>
+    <message>
+        <source>the cutting coefficients have no source: the verdict rests on numbers nobody can trace</source>
+        <translation>los coeficientes de corte no tienen fuente: el veredicto se basa en números que nadie puede rastrear</translation>
+    </message>
+    <message>
+        <source>tolerance zone: %1 µm is not positive</source>
+        <translation>zona de tolerancia: %1 µm no es positiva</translation>
+    </message>
+    <message>
+        <source>a flatness has no datums (ISO 1101), found %1</source>
+        <translation>una planitud no tiene referencias (ISO 1101); se ha encontrado %1</translation>
+    </message>
+    <message>
+        <source>there is no datum &apos;%1&apos; in the project</source>
+        <translation>no hay ninguna referencia «%1» en el proyecto</translation>
+    </message>
+    <message>
+        <source>%1 CL points are more than the %2 a path may have</source>
+        <translation>%1 puntos CL son más que los %2 que puede tener una trayectoria</translation>
+    </message>
+    <message>
+        <source>a %1 is one straight cut: its CL points are not used</source>
+        <translation>un elemento %1 es un único corte recto: sus puntos CL no se usan</translation>
+    </message>
+    <message>
+        <source>milled feature %1 is not evaluated: it lacks %2</source>
+        <translation>el elemento fresado %1 no se evalúa: no tiene %2</translation>
+    </message>
+</context>
+<context>
+    <name>MilledFeatureOutput</name>
+    <message>
+        <source>not evaluated: it lacks %1</source>
+        <translation>no evaluado: sin %1</translation>
+    </message>
+    <message>
+        <source>not evaluated: %1</source>
+        <translation>no evaluado: %1</translation>
+    </message>
+    <message>
+        <source>located</source>
+        <translation>situada</translation>
+    </message>
+    <message>
+        <source>floating</source>
+        <translation>flotante</translation>
+    </message>
+    <message>
+        <source>form error %1 µm of %2 µm (%3 zone): </source>
+        <translation>error de forma %1 µm de %2 µm (zona %3): </translation>
+    </message>
+    <message>
+        <source>passes by %1 µm</source>
+        <translation>cumple con %1 µm de margen</translation>
+    </message>
+    <message>
+        <source>fails by %1 µm</source>
+        <translation>no cumple por %1 µm</translation>
+    </message>
+    <message>
+        <source>; holds at a feed per tooth up to %1 mm</source>
+        <translation>; cumple con un avance por diente de hasta %1 mm</translation>
+    </message>
+    <message>
+        <source>; no lower feed holds (the edge forces alone are too much)</source>
+        <translation>; ningún avance menor cumple (las fuerzas de filo por sí solas son excesivas)</translation>
+    </message>
+    <message>
+        <source>Milled features (five-axis ball-end model, Öztürk &amp; Budak):</source>
+        <translation>Elementos fresados (modelo de fresa de punta esférica en cinco ejes, Öztürk &amp; Budak):</translation>
+    </message>
+    <message>
+        <source>z %1–%2 mm  </source>
+        <translation>z %1–%2 mm  </translation>
+    </message>
+    <message>
+        <source>the tool&apos;s modulus is not given: carbide&apos;s %1 N/mm² (MakeItFrom)</source>
+        <translation>no se indica el módulo de la herramienta: se toma el del metal duro, %1 N/mm² (MakeItFrom)</translation>
+    </message>
+</context>
+<context>
+    <name>MilledFeatures</name>
+    <message>
+        <source>path point %1: %2</source>
+        <translation>punto %1 de la trayectoria: %2</translation>
+    </message>
+    <message>
+        <source>the ball-end tool</source>
+        <translation>la fresa de punta esférica</translation>
+    </message>
+    <message>
+        <source>the holder&apos;s springs k and k_θ</source>
+        <translation>los resortes k y k_θ del portaherramientas</translation>
+    </message>
+    <message>
+        <source>the cutting conditions</source>
+        <translation>las condiciones de corte</translation>
+    </message>
+    <message>
+        <source>the cutting coefficients</source>
+        <translation>los coeficientes de corte</translation>
+    </message>
+    <message>
+        <source>the tolerance</source>
+        <translation>la tolerancia</translation>
+    </message>
+    <message>
+        <source>the tool path (at least two CL points)</source>
+        <translation>la trayectoria de la herramienta (al menos dos puntos CL)</translation>
+    </message>
+    <message>
+        <source>a tool path needs at least two CL points, it has %1</source>
+        <translation>una trayectoria de la herramienta necesita al menos dos puntos CL y tiene %1</translation>
+    </message>
+    <message>
+        <source>the tool axis is zero</source>
+        <translation>el eje de la herramienta es nulo</translation>
+    </message>
+    <message>
+        <source>the surface normal is zero</source>
+        <translation>la normal a la superficie es nula</translation>
+    </message>
+    <message>
+        <source>the tool axis points into the surface</source>
+        <translation>el eje de la herramienta apunta hacia el interior de la superficie</translation>
+    </message>
+    <message>
+        <source>it is where the point before it is</source>
+        <translation>coincide con el punto anterior</translation>
+    </message>
+    <message>
+        <source>the feed runs along the surface normal</source>
+        <translation>el avance sigue la normal a la superficie</translation>
+    </message>
+    <message>
+        <source>milled feature %1 lacks %2</source>
+        <translation>el elemento fresado %1 no tiene %2</translation>
+    </message>
+    <message>
+        <source>highest feed per tooth: %1 mm is not positive</source>
+        <translation>mayor avance por diente: %1 mm no es positivo</translation>
+    </message>
+</context>
+<context>
     <name>MillingCommand</name>
     <message>
         <source>Öztürk &amp; Budak&apos;s cut 1–4 (001 table 4): tool, cut and speed; the options below change it.</source>
@@ -2527,10 +2715,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Par: medio %1 N·m, máximo %2 N·m; potencia media del husillo %3 W</translation>
     </message>
     <message>
-        <source>takes no file: &quot;%1&quot;</source>
-        <translation>no admite archivos: «%1»</translation>
-    </message>
-    <message>
         <source>From where the holder grips the tool to its tip, in mm.</source>
         <translation>Desde donde el portaherramientas sujeta la herramienta hasta su punta, en mm.</translation>
     </message>
@@ -2645,6 +2829,229 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--tolerance is required: the surface&apos;s tolerance t in mm</source>
         <translation>--tolerance es obligatorio: la tolerancia t de la superficie en mm</translation>
+    </message>
+    <message>
+        <source>takes a project file only with --feature ID: &quot;%1&quot;</source>
+        <translation>solo admite un archivo de proyecto con --feature ID: «%1»</translation>
+    </message>
+    <message>
+        <source>--feature needs the project file PROJECT it is in</source>
+        <translation>--feature necesita el archivo de proyecto PROJECT en el que está</translation>
+    </message>
+    <message>
+        <source>With --feature: write the plan (lead, tilt, feed per tooth) into the feature&apos;s conditions in PROJECT.</source>
+        <translation>Con --feature: escribir el plan (lead, tilt, avance por diente) en las condiciones del elemento en PROJECT.</translation>
+    </message>
+    <message>
+        <source>--tolerance, --located: the tolerance comes from the project&apos;s feature; change it there</source>
+        <translation>--tolerance, --located: la tolerancia viene del elemento del proyecto; cámbiela allí</translation>
+    </message>
+    <message>
+        <source>--save: no plan holds the tolerance; %1 is left as it was</source>
+        <translation>--save: ningún plan cumple la tolerancia; %1 queda como estaba</translation>
+    </message>
+    <message>
+        <source>The plan is saved in %1, feature %2.</source>
+        <translation>El plan se ha guardado en %1, elemento %2.</translation>
+    </message>
+    <message>
+        <source>No feed holds the tolerance along the path: the edge forces alone deflect the tool too far at its tool axes.</source>
+        <translation>Ningún avance cumple la tolerancia a lo largo de la trayectoria: las fuerzas de filo por sí solas flexionan demasiado la herramienta con los ejes de la herramienta de la trayectoria.</translation>
+    </message>
+    <message>
+        <source>Plan along the path&apos;s own tool axes: feed %1 mm/tooth (%2 mm/min); form error %3 µm</source>
+        <translation>Plan con los propios ejes de la herramienta de la trayectoria: avance %1 mm/diente (%2 mm/min); error de forma %3 µm</translation>
+    </message>
+    <message>
+        <source>--save needs PROJECT --feature ID</source>
+        <translation>--save necesita PROJECT --feature ID</translation>
+    </message>
+    <message>
+        <source>%1: the tool and cut come from the project&apos;s feature; change them there</source>
+        <translation>%1: la herramienta y el corte vienen del elemento del proyecto; cámbielos allí</translation>
+    </message>
+    <message>
+        <source>--feature: there is no milled feature &quot;%1&quot; in %2</source>
+        <translation>--feature: no hay ningún elemento fresado «%1» en %2</translation>
+    </message>
+    <message>
+        <source>milled feature %1 lacks %2</source>
+        <translation>el elemento fresado %1 no tiene %2</translation>
+    </message>
+    <message>
+        <source>--%1: the tool&apos;s structure comes from the project&apos;s feature; change it there</source>
+        <translation>--%1: la estructura de la herramienta viene del elemento del proyecto; cámbiela allí</translation>
+    </message>
+    <message>
+        <source>The milled feature of the project PROJECT to compute, with its tool, cut, coefficients and tolerance.</source>
+        <translation>El elemento fresado del proyecto PROJECT que se calcula, con su herramienta, corte, coeficientes y tolerancia.</translation>
+    </message>
+    <message>
+        <source>With --feature, a patch&apos;s CL point to compute at (default 1; mill-optimize plans the whole path).</source>
+        <translation>Con --feature, el punto CL del parche en el que se calcula (por defecto 1; mill-optimize planifica toda la trayectoria).</translation>
+    </message>
+</context>
+<context>
+    <name>MillingReport</name>
+    <message>
+        <source>Ø%1 mm, 1 flute, helix %2°</source>
+        <translation>Ø%1 mm, 1 filo, hélice %2°</translation>
+    </message>
+    <message>
+        <source>Ø%1 mm, %2 flutes, helix %3°</source>
+        <translation>Ø%1 mm, %2 filos, hélice %3°</translation>
+    </message>
+    <message>
+        <source>down milling</source>
+        <translation>fresado en concordancia</translation>
+    </message>
+    <message>
+        <source>up milling</source>
+        <translation>fresado en oposición</translation>
+    </message>
+    <message>
+        <source>, s %1 mm</source>
+        <translation>, s %1 mm</translation>
+    </message>
+    <message>
+        <source>; f_z %1 mm; %2 rpm; </source>
+        <translation>; f_z %1 mm; %2 rpm; </translation>
+    </message>
+    <message>
+        <source>lead and tilt from the path</source>
+        <translation>lead y tilt según la trayectoria</translation>
+    </message>
+    <message>
+        <source>lead %1°, tilt %2°</source>
+        <translation>lead %1°, tilt %2°</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>perfil</translation>
+    </message>
+    <message>
+        <source>flatness</source>
+        <translation>planitud</translation>
+    </message>
+    <message>
+        <source>located, datums %1</source>
+        <translation>situada, referencias %1</translation>
+    </message>
+    <message>
+        <source>floating</source>
+        <translation>flotante</translation>
+    </message>
+    <message>
+        <source>%1 %2 µm, %3</source>
+        <translation>%1 %2 µm, %3</translation>
+    </message>
+    <message>
+        <source>not evaluated: lacks %1</source>
+        <translation>no evaluado: sin %1</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>rechazado: %1</translation>
+    </message>
+    <message>
+        <source>passes by %1 µm</source>
+        <translation>cumple con %1 µm de margen</translation>
+    </message>
+    <message>
+        <source>largest f_z that holds: %1 mm</source>
+        <translation>mayor f_z que cumple: %1 mm</translation>
+    </message>
+    <message>
+        <source>no f_z up to the planned one holds</source>
+        <translation>ningún f_z hasta el planificado cumple</translation>
+    </message>
+    <message>
+        <source>fails by %1 µm; %2</source>
+        <translation>no cumple por %1 µm; %2</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Herramienta</translation>
+    </message>
+    <message>
+        <source>Conditions</source>
+        <translation>Condiciones</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerancia</translation>
+    </message>
+    <message>
+        <source>Form error [µm]</source>
+        <translation>Error de forma [µm]</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <source>E of the tool not given: carbide&apos;s %1 N/mm² (MakeItFrom)</source>
+        <translation>E de la herramienta no indicado: se toma el del metal duro, %1 N/mm² (MakeItFrom)</translation>
+    </message>
+    <message>
+        <source>coefficients without a source</source>
+        <translation>coeficientes sin fuente</translation>
+    </message>
+    <message>
+        <source>coefficients: %1</source>
+        <translation>coeficientes: %1</translation>
+    </message>
+    <message>
+        <source>δ_N, least</source>
+        <translation>δ_N, mínimo</translation>
+    </message>
+    <message>
+        <source>δ_N, greatest</source>
+        <translation>δ_N, máximo</translation>
+    </message>
+    <message>
+        <source>zone, lower</source>
+        <translation>zona, inferior</translation>
+    </message>
+    <message>
+        <source>zone, upper</source>
+        <translation>zona, superior</translation>
+    </message>
+    <message>
+        <source>arc length along the path [mm]</source>
+        <translation>longitud de arco a lo largo de la trayectoria [mm]</translation>
+    </message>
+    <message>
+        <source>surface-normal error δ_N [µm]</source>
+        <translation>error normal a la superficie δ_N [µm]</translation>
+    </message>
+    <message>
+        <source>%1: surface-normal error along the path (%2 zone)</source>
+        <translation>%1: error normal a la superficie a lo largo de la trayectoria (zona %2)</translation>
+    </message>
+    <message>
+        <source>located</source>
+        <translation>situada</translation>
+    </message>
+    <message>
+        <source>%1: largest force on the tool %2 N, mean torque %3 N·m, spindle power %4 W.</source>
+        <translation>%1: fuerza máxima sobre la herramienta %2 N, par medio %3 N·m, potencia del husillo %4 W.</translation>
+    </message>
+    <message>
+        <source>Each milled feature is evaluated with Öztürk &amp; Budak&apos;s ball-end model [9]: the forces bend the tool and leave the surface-normal error δ_N (its range over a revolution at each point of the path). The form error is the spread of δ_N along the path for a floating zone, twice its largest magnitude for a located one (ISO 1101 [6]).</source>
+        <translation>Cada elemento fresado se evalúa con el modelo de fresa de punta esférica de Öztürk &amp; Budak [9]: las fuerzas flexionan la herramienta y dejan el error normal a la superficie δ_N (su rango durante una vuelta en cada punto de la trayectoria). El error de forma es la dispersión de δ_N a lo largo de la trayectoria para una zona flotante, y el doble de su mayor magnitud para una zona situada (ISO 1101 [6]).</translation>
     </message>
 </context>
 <context>
@@ -2774,6 +3181,30 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>collet</source>
         <translation>pinza</translation>
+    </message>
+    <message>
+        <source>flat</source>
+        <translation>cara plana</translation>
+    </message>
+    <message>
+        <source>keyway</source>
+        <translation>chavetero</translation>
+    </message>
+    <message>
+        <source>surface patch</source>
+        <translation>parche de superficie</translation>
+    </message>
+    <message>
+        <source>slot</source>
+        <translation>ranura</translation>
+    </message>
+    <message>
+        <source>side cut</source>
+        <translation>corte lateral</translation>
+    </message>
+    <message>
+        <source>step-over</source>
+        <translation>paso lateral</translation>
     </message>
 </context>
 <context>
@@ -3484,6 +3915,30 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>unknown format version %1; this TolTurn reads versions 1 to %2</source>
         <translation>versión de formato desconocida %1; este TolTurn lee las versiones 1 a %2</translation>
     </message>
+    <message>
+        <source>cut</source>
+        <translation>corte</translation>
+    </message>
+    <message>
+        <source>milling direction</source>
+        <translation>sentido de fresado</translation>
+    </message>
+    <message>
+        <source>milled tolerance type</source>
+        <translation>tipo de tolerancia de fresado</translation>
+    </message>
+    <message>
+        <source>expected three numbers, found %1</source>
+        <translation>se esperaban tres números y se ha encontrado %1</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>se esperaba un número y se ha encontrado %1</translation>
+    </message>
+    <message>
+        <source>milled feature kind</source>
+        <translation>tipo de elemento fresado</translation>
+    </message>
 </context>
 <context>
     <name>ProjectValidation</name>
@@ -4136,6 +4591,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (University of Maribor, 2013). Used: eq. 1 (feed drive), §2 (20 ms constant-force loop with feed override); TolTurn&apos;s feed schedule holds the tolerances feature by feature.</source>
         <translation>[8] F. Čuš, U. Župerl: Control strategy for assuring constant surface finish by controlling cutting forces (Universidad de Maribor, 2013). Usado: ec. 1 (accionamiento de avance), §2 (lazo de fuerza constante cada 20 ms con override de avance); el programa de avances de TolTurn mantiene las tolerancias elemento por elemento.</translation>
     </message>
+    <message>
+        <source>7  Assumptions</source>
+        <translation>7  Hipótesis</translation>
+    </message>
+    <message>
+        <source>[9] E. Öztürk, E. Budak: 5-Eksen Frezelemede Kuvvet ve Şekil Hatalarının Modellenmesi (modelling the forces and form errors of 5-axis milling; in Turkish), Sabancı University. Used: eq. 1–11 (the forces of a ball-end mill at a lead and tilt), table 3 and §4 (the tool&apos;s deflection and the surface-normal error); the milled features&apos; equations as implemented: docs/milling.md.</source>
+        <translation>[9] E. Öztürk, E. Budak: 5-Eksen Frezelemede Kuvvet ve Şekil Hatalarının Modellenmesi (modelado de las fuerzas y los errores de forma del fresado en 5 ejes; en turco), Sabancı University. Se usa: ec. 1–11 (las fuerzas de una fresa de punta esférica con un lead y un tilt), tabla 3 y §4 (la flexión de la herramienta y el error normal a la superficie); las ecuaciones de los elementos fresados tal como se implementan: docs/milling.md.</translation>
+    </message>
+    <message>
+        <source>6  Milled features</source>
+        <translation>6  Elementos fresados</translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>
@@ -4617,6 +5084,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>&apos;%1&apos; could not be read: OpenCascade failed on it (%2); check the file in the CAD system that wrote it</source>
         <translation>«%1» no se pudo leer: OpenCascade falló con él (%2); revise el archivo en el sistema CAD que lo escribió</translation>
+    </message>
+    <message>
+        <source>face %1</source>
+        <translation>cara %1</translation>
+    </message>
+    <message>
+        <source>faces %1</source>
+        <translation>caras %1</translation>
+    </message>
+    <message>
+        <source>STEP %1</source>
+        <translation>STEP %1</translation>
+    </message>
+    <message>
+        <source>the flat of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
+        <translation>la cara plana (%1), de z = %2 mm a z = %3 mm, se ha convertido en el elemento fresado %4; asígnele una herramienta, condiciones, coeficientes de corte y una tolerancia para evaluarlo</translation>
+    </message>
+    <message>
+        <source>the keyway of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
+        <translation>el chavetero (%1), de z = %2 mm a z = %3 mm, se ha convertido en el elemento fresado %4; asígnele una herramienta, condiciones, coeficientes de corte y una tolerancia para evaluarlo</translation>
     </message>
 </context>
 <context>
@@ -6774,6 +7261,153 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>tolturn::MilledFeaturesBox</name>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>flatness</source>
+        <translation>planitud</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>perfil</translation>
+    </message>
+    <message>
+        <source>not evaluated: lacks %1</source>
+        <translation>no evaluado: sin %1</translation>
+    </message>
+    <message>
+        <source>not evaluated: %1</source>
+        <translation>no evaluado: %1</translation>
+    </message>
+    <message>
+        <source>passes, %1 of %2 µm</source>
+        <translation>cumple, %1 de %2 µm</translation>
+    </message>
+    <message>
+        <source>fails, %1 of %2 µm</source>
+        <translation>no cumple, %1 de %2 µm</translation>
+    </message>
+    <message>
+        <source>Milled features of the part</source>
+        <translation>Elementos fresados de la pieza</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerancia</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Veredicto</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>A, B (a profile with datums)</source>
+        <translation>A, B (un perfil con referencias)</translation>
+    </message>
+    <message>
+        <source>where the cutting coefficients come from</source>
+        <translation>de dónde proceden los coeficientes de corte</translation>
+    </message>
+    <message>
+        <source>Add Cut as Feature</source>
+        <translation>Añadir corte como elemento</translation>
+    </message>
+    <message>
+        <source>Save Cut to Feature</source>
+        <translation>Guardar corte en el elemento</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Quitar</translation>
+    </message>
+    <message>
+        <source>z from, to</source>
+        <translation>z desde, hasta</translation>
+    </message>
+    <message>
+        <source>Datums</source>
+        <translation>Referencias</translation>
+    </message>
+    <message>
+        <source>Coefficients from</source>
+        <translation>Fuente de los coeficientes</translation>
+    </message>
+    <message>
+        <source>along the path [mm]</source>
+        <translation>a lo largo de la trayectoria [mm]</translation>
+    </message>
+    <message>
+        <source>surface-normal error [µm]</source>
+        <translation>error normal a la superficie [µm]</translation>
+    </message>
+    <message>
+        <source>evaluating…</source>
+        <translation>evaluando…</translation>
+    </message>
+    <message>
+        <source>Choose an evaluated feature</source>
+        <translation>Elija un elemento evaluado</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>δ_N least</source>
+        <translation>δ_N mínimo</translation>
+    </message>
+    <message>
+        <source>δ_N over a revolution</source>
+        <translation>δ_N durante una vuelta</translation>
+    </message>
+    <message>
+        <source>zone, lower</source>
+        <translation>zona, inferior</translation>
+    </message>
+    <message>
+        <source>zone, upper</source>
+        <translation>zona, superior</translation>
+    </message>
+    <message>
+        <source>Add milled feature %1</source>
+        <translation>Añadir elemento fresado %1</translation>
+    </message>
+    <message>
+        <source>Choose the feature to save the cut to.</source>
+        <translation>Elija el elemento en el que guardar el corte.</translation>
+    </message>
+    <message>
+        <source>Change milled feature %1</source>
+        <translation>Cambiar elemento fresado %1</translation>
+    </message>
+    <message>
+        <source>Choose the feature to remove.</source>
+        <translation>Elija el elemento que quitar.</translation>
+    </message>
+    <message>
+        <source>Remove milled feature %1</source>
+        <translation>Quitar elemento fresado %1</translation>
+    </message>
+</context>
+<context>
     <name>tolturn::MillingPanel</name>
     <message>
         <source>Ball-end cut</source>
@@ -6918,10 +7552,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source> µm</source>
         <translation> µm</translation>
-    </message>
-    <message>
-        <source>Flatness / profile without datums</source>
-        <translation>Planitud / perfil sin referencias</translation>
     </message>
     <message>
         <source>Profile with datums (±t/2)</source>
@@ -7114,6 +7744,34 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The inputs have changed since this plan: plan again.</source>
         <translation>Los datos han cambiado desde este plan: vuelva a planificar.</translation>
+    </message>
+    <message>
+        <source>Flatness</source>
+        <translation>Planitud</translation>
+    </message>
+    <message>
+        <source>Profile without datums</source>
+        <translation>Perfil sin referencias</translation>
+    </message>
+    <message>
+        <source>ISO 1101: a flatness and a profile without datums float (the spread within t); a profile with datums is located on the programmed surface (within ±t/2)</source>
+        <translation>ISO 1101: una planitud y un perfil sin referencias son flotantes (la dispersión dentro de t); un perfil con referencias está situado sobre la superficie programada (dentro de ±t/2)</translation>
+    </message>
+    <message>
+        <source>Along the path</source>
+        <translation>A lo largo de la trayectoria</translation>
+    </message>
+    <message>
+        <source>Holder springs: feature %1&apos;s.</source>
+        <translation>Resortes del portaherramientas: los del elemento %1.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 lacks %2&lt;/b&gt;: the fields show the last cut; save the cut to the feature to give it these.</source>
+        <translation>&lt;b&gt;%1 no tiene %2&lt;/b&gt;: los campos muestran el último corte; guarde el corte en el elemento para asignárselos.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;A patch&apos;s lead and tilt come from its path, point by point (Along the path); the fields show its conditions&apos; own.</source>
+        <translation>&lt;br&gt;El lead y el tilt de un parche vienen de su trayectoria, punto por punto (A lo largo de la trayectoria); los campos muestran los de sus propias condiciones.</translation>
     </message>
 </context>
 <context>
