@@ -13,6 +13,7 @@
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
+#include "widgets/milling/milled_features_box.h"
 #include "widgets/planning/planning_panel.h"
 #include "widgets/plot/line_plot.h"
 #include "widgets/profile/dimension_item.h"
@@ -41,6 +42,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -182,6 +184,49 @@ private Q_SLOTS:
         w.resize(1600, 1000);
         QTest::qWait(50);
         test::saveScreenshot(w, "window-1600x1000.png");
+    }
+
+    // The Milling dock of an open project lists its milled features, and at a laptop's size the
+    // list shows each of them with its verdict (the dock's inputs scroll).
+    void millingDockListsTheMilledFeatures()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        Project p = w.document()->project();
+        MilledFeature flat;
+        flat.id = QStringLiteral("M1");
+        flat.zFrom_mm = 10.0;
+        flat.zTo_mm = 30.0;
+        flat.tool = BallEndTool{12.0, 2, 30.0, 40.0, 9.6, std::nullopt, 6306.0, 1.656e7};
+        flat.conditions =
+            MillingConditions{BallEndCutKind::StepOver, MillingDirection::Down, 0.5, 1.0, 0.05, 3000.0, 10.0, 0.0};
+        flat.coefficients = MillingForceCoefficients{2000.0, 700.0, 400.0, 25.0, 40.0, 8.0};
+        flat.coefficientsSource = QStringLiteral("made up for the picture");
+        flat.tolerance = MilledTolerance{MilledToleranceType::Flatness, 3.0, {}};
+        MilledFeature keyway;
+        keyway.id = QStringLiteral("M2");
+        keyway.kind = MilledFeatureKind::Keyway;
+        keyway.zFrom_mm = 40.0;
+        keyway.zTo_mm = 60.0;
+        auto *dock = w.findChild<QDockWidget *>(QStringLiteral("millingDock"));
+        QVERIFY(dock);
+        dock->raise();
+        w.resize(1366, 740);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.document()->setMilledFeatures({flat, keyway}, QStringLiteral("features")).empty());
+        auto *box = dock->findChild<MilledFeaturesBox *>();
+        QVERIFY(box);
+        QTRY_VERIFY_WITH_TIMEOUT(!box->evaluations().empty() && !box->isEvaluating(), 10000);
+        QTest::qWait(50);
+        QTableWidget *table = box->table();
+        QCOMPARE(table->rowCount(), 2);
+        const QRect lastRow = table->visualItemRect(table->item(1, 0));
+        QVERIFY2(
+            table->viewport()->rect().contains(lastRow),
+            qPrintable(
+                QStringLiteral("row at %1, viewport %2 high").arg(lastRow.bottom()).arg(table->viewport()->height())));
+        test::saveScreenshot(w, "window-milling-1366x768.png");
     }
 
     // The first start says what to do: the empty drawing area lists the ways to a part, and the Plan

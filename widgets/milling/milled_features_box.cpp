@@ -72,7 +72,9 @@ MilledFeaturesBox::MilledFeaturesBox(ProjectDocument *document,
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->hide();
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    for (const int column : {IdColumn, KindColumn, PlaceColumn, ToleranceColumn})
+        m_table->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setSectionResizeMode(VerdictColumn, QHeaderView::Stretch);
     m_table->setWordWrap(false);
     m_table->setMinimumHeight(6 * m_table->fontMetrics().lineSpacing());
     m_kind = new QComboBox;
@@ -159,7 +161,6 @@ void MilledFeaturesBox::refresh()
         m_table->setItem(row, VerdictColumn, readOnlyCell(tr("evaluating…")));
         m_table->item(row, IdColumn)->setToolTip(f.description);
     }
-    m_table->resizeColumnsToContents();
     if (chosen >= 0 && chosen < m_table->rowCount())
         m_table->selectRow(chosen);
     m_zTo->setValue(m_zTo->value() > 0.0 ? m_zTo->value() : m_document->project().part.length_mm());
