@@ -2422,20 +2422,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>ein gefrästes Formelement braucht eine ID</translation>
     </message>
     <message>
-        <source>id &apos;%1&apos; is already a feature of the part</source>
-        <translation>ID „%1“ ist bereits ein Formelement des Teils</translation>
-    </message>
-    <message>
         <source>z from %1 mm to %2 mm is not a range within the part, 0 to %3 mm</source>
         <translation>z von %1 mm bis %2 mm ist kein Bereich innerhalb des Teils, 0 bis %3 mm</translation>
     </message>
     <message>
         <source>spindle speed: %1 rpm is not positive</source>
         <translation>Spindeldrehzahl: %1 1/min ist nicht positiv</translation>
-    </message>
-    <message>
-        <source>cutting coefficient %1 is beyond ±%2</source>
-        <translation>Schnittkraftkoeffizient %1 liegt außerhalb ±%2</translation>
     </message>
     <message>
         <source>K_tc: %1 N/mm² is not positive</source>
@@ -2458,16 +2450,36 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>im Projekt gibt es keinen Bezug „%1“</translation>
     </message>
     <message>
-        <source>%1 CL points are more than the %2 a path may have</source>
-        <translation>%1 CL-Punkte sind mehr als die %2, die eine Bahn haben darf</translation>
-    </message>
-    <message>
         <source>a %1 is one straight cut: its CL points are not used</source>
         <translation>ein Formelement vom Typ %1 ist ein einzelner gerader Schnitt: seine CL-Punkte werden nicht verwendet</translation>
     </message>
     <message>
         <source>milled feature %1 is not evaluated: it lacks %2</source>
         <translation>gefrästes Formelement %1 wird nicht ausgewertet, es fehlt: %2</translation>
+    </message>
+    <message>
+        <source>id &apos;%1&apos; is already another milled feature&apos;s</source>
+        <translation>ID &apos;%1&apos; gehört schon einem anderen gefrästen Formelement</translation>
+    </message>
+    <message>
+        <source>id &apos;%1&apos; is already a feature of the profile</source>
+        <translation>ID &apos;%1&apos; ist schon ein Formelement der Kontur</translation>
+    </message>
+    <message>
+        <source>tool diameter: %1 mm is not positive</source>
+        <translation>Werkzeugdurchmesser: %1 mm ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>flutes: %1 is not 1 to 12</source>
+        <translation>Schneiden: %1 liegt nicht zwischen 1 und 12</translation>
+    </message>
+    <message>
+        <source>helix angle: %1° is not 0 to 60°</source>
+        <translation>Drallwinkel: %1° liegt nicht zwischen 0 und 60°</translation>
+    </message>
+    <message>
+        <source>%1 is beyond ±%2 (TolTurn&apos;s bound)</source>
+        <translation>%1 liegt außerhalb von ±%2 (Grenze von TolTurn)</translation>
     </message>
 </context>
 <context>
@@ -2505,10 +2517,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>; hält bei einem Vorschub je Zahn bis %1 mm</translation>
     </message>
     <message>
-        <source>; no lower feed holds (the edge forces alone are too much)</source>
-        <translation>; kein kleinerer Vorschub hält (schon die Kantenkräfte sind zu groß)</translation>
-    </message>
-    <message>
         <source>Milled features (five-axis ball-end model, Öztürk &amp; Budak):</source>
         <translation>Gefräste Formelemente (Modell für fünfachsiges Kugelkopffräsen, Öztürk &amp; Budak):</translation>
     </message>
@@ -2519,6 +2527,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the tool&apos;s modulus is not given: carbide&apos;s %1 N/mm² (MakeItFrom)</source>
         <translation>der E-Modul des Werkzeugs ist nicht angegeben: %1 N/mm² für Hartmetall (MakeItFrom)</translation>
+    </message>
+    <message>
+        <source>; no feed up to the planned one holds</source>
+        <translation>; kein Vorschub bis zum geplanten hält sie ein</translation>
     </message>
 </context>
 <context>
@@ -2552,10 +2564,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>die Werkzeugbahn (mindestens zwei CL-Punkte)</translation>
     </message>
     <message>
-        <source>a tool path needs at least two CL points, it has %1</source>
-        <translation>eine Werkzeugbahn braucht mindestens zwei CL-Punkte, sie hat %1</translation>
-    </message>
-    <message>
         <source>the tool axis is zero</source>
         <translation>die Werkzeugachse ist ein Nullvektor</translation>
     </message>
@@ -2568,10 +2576,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>die Werkzeugachse zeigt in die Fläche hinein</translation>
     </message>
     <message>
-        <source>it is where the point before it is</source>
-        <translation>er liegt dort, wo der Punkt davor liegt</translation>
-    </message>
-    <message>
         <source>the feed runs along the surface normal</source>
         <translation>der Vorschub verläuft entlang der Flächennormalen</translation>
     </message>
@@ -2582,6 +2586,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>highest feed per tooth: %1 mm is not positive</source>
         <translation>größter Vorschub je Zahn: %1 mm ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>a tool path has 2 to %1 CL points, this one %2</source>
+        <translation>eine Werkzeugbahn hat 2 bis %1 CL-Punkte, diese %2</translation>
+    </message>
+    <message>
+        <source>the ball is where it was at the point before</source>
+        <translation>die Kugel steht dort, wo sie am vorigen Punkt stand</translation>
     </message>
 </context>
 <context>
@@ -2851,10 +2863,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>--save: kein Plan hält die Toleranz; %1 bleibt unverändert</translation>
     </message>
     <message>
-        <source>The plan is saved in %1, feature %2.</source>
-        <translation>Der Plan ist in %1 gespeichert, Formelement %2.</translation>
-    </message>
-    <message>
         <source>No feed holds the tolerance along the path: the edge forces alone deflect the tool too far at its tool axes.</source>
         <translation>Kein Vorschub hält die Toleranz entlang der Bahn: schon die Kantenkräfte biegen das Werkzeug bei den Werkzeugachsen der Bahn zu weit aus.</translation>
     </message>
@@ -2889,6 +2897,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>With --feature, a patch&apos;s CL point to compute at (default 1; mill-optimize plans the whole path).</source>
         <translation>Mit --feature der CL-Punkt einer Freiformfläche, an dem gerechnet wird (Vorgabe 1; mill-optimize plant die ganze Bahn).</translation>
+    </message>
+    <message>
+        <source>The plan is saved in %1, feature %2 (the feed per tooth rounded down to 0.0001 mm).</source>
+        <translation>Der Plan ist in %1 gespeichert, Formelement %2 (Vorschub je Zahn auf 0,0001 mm abgerundet).</translation>
+    </message>
+    <message>
+        <source>--save plans at evaluate&apos;s resolution (200 slices, 360 angles): leave out --slices and --angles</source>
+        <translation>--save plant mit der Auflösung von evaluate (200 Scheiben, 360 Winkel): --slices und --angles weglassen</translation>
     </message>
 </context>
 <context>
@@ -7319,10 +7335,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation> mm</translation>
     </message>
     <message>
-        <source>A, B (a profile with datums)</source>
-        <translation>A, B (ein Profil mit Bezügen)</translation>
-    </message>
-    <message>
         <source>where the cutting coefficients come from</source>
         <translation>Herkunft der Schnittkraftkoeffizienten</translation>
     </message>
@@ -7341,10 +7353,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>z from, to</source>
         <translation>z von, bis</translation>
-    </message>
-    <message>
-        <source>Datums</source>
-        <translation>Bezüge</translation>
     </message>
     <message>
         <source>Coefficients from</source>
@@ -7405,6 +7413,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Remove milled feature %1</source>
         <translation>Gefrästes Formelement %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Evaluating…</source>
+        <translation>Wird bewertet…</translation>
     </message>
 </context>
 <context>
@@ -7772,6 +7784,26 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>&lt;br&gt;A patch&apos;s lead and tilt come from its path, point by point (Along the path); the fields show its conditions&apos; own.</source>
         <translation>&lt;br&gt;Anstell- und Kippwinkel einer Freiformfläche ergeben sich Punkt für Punkt aus ihrer Bahn (Entlang der Bahn); die Felder zeigen die eigenen Werte ihrer Schnittbedingungen.</translation>
+    </message>
+    <message>
+        <source>A, B</source>
+        <translation>A, B</translation>
+    </message>
+    <message>
+        <source>Datums</source>
+        <translation>Bezüge</translation>
+    </message>
+    <message>
+        <source>Feature %1 has no holder springs: these are the last cut&apos;s, and saving the cut gives them to it.</source>
+        <translation>Formelement %1 hat keine Halterfedern: dies sind die des letzten Schnitts, und Speichern des Schnitts gibt sie ihm.</translation>
+    </message>
+    <message>
+        <source>Coefficients: &quot;%1&quot; is not six numbers; the feature is left as it was.</source>
+        <translation>Koeffizienten: „%1“ sind nicht sechs Zahlen; das Formelement bleibt, wie es war.</translation>
+    </message>
+    <message>
+        <source>A profile with datums needs its datums (A, B).</source>
+        <translation>Ein Profil mit Bezügen braucht seine Bezüge (A, B).</translation>
     </message>
 </context>
 <context>

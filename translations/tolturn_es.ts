@@ -2422,20 +2422,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>un elemento fresado necesita un id</translation>
     </message>
     <message>
-        <source>id &apos;%1&apos; is already a feature of the part</source>
-        <translation>el id «%1» ya es un elemento de la pieza</translation>
-    </message>
-    <message>
         <source>z from %1 mm to %2 mm is not a range within the part, 0 to %3 mm</source>
         <translation>z de %1 mm a %2 mm no es un intervalo dentro de la pieza, de 0 a %3 mm</translation>
     </message>
     <message>
         <source>spindle speed: %1 rpm is not positive</source>
         <translation>velocidad del husillo: %1 rpm no es positiva</translation>
-    </message>
-    <message>
-        <source>cutting coefficient %1 is beyond ±%2</source>
-        <translation>el coeficiente de corte %1 supera ±%2</translation>
     </message>
     <message>
         <source>K_tc: %1 N/mm² is not positive</source>
@@ -2458,16 +2450,36 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no hay ninguna referencia «%1» en el proyecto</translation>
     </message>
     <message>
-        <source>%1 CL points are more than the %2 a path may have</source>
-        <translation>%1 puntos CL son más que los %2 que puede tener una trayectoria</translation>
-    </message>
-    <message>
         <source>a %1 is one straight cut: its CL points are not used</source>
         <translation>un elemento %1 es un único corte recto: sus puntos CL no se usan</translation>
     </message>
     <message>
         <source>milled feature %1 is not evaluated: it lacks %2</source>
         <translation>el elemento fresado %1 no se evalúa: no tiene %2</translation>
+    </message>
+    <message>
+        <source>id &apos;%1&apos; is already another milled feature&apos;s</source>
+        <translation>el id &apos;%1&apos; ya es de otro elemento fresado</translation>
+    </message>
+    <message>
+        <source>id &apos;%1&apos; is already a feature of the profile</source>
+        <translation>el id &apos;%1&apos; ya es un elemento del perfil</translation>
+    </message>
+    <message>
+        <source>tool diameter: %1 mm is not positive</source>
+        <translation>diámetro de la herramienta: %1 mm no es positivo</translation>
+    </message>
+    <message>
+        <source>flutes: %1 is not 1 to 12</source>
+        <translation>filos: %1 no está entre 1 y 12</translation>
+    </message>
+    <message>
+        <source>helix angle: %1° is not 0 to 60°</source>
+        <translation>ángulo de hélice: %1° no está entre 0 y 60°</translation>
+    </message>
+    <message>
+        <source>%1 is beyond ±%2 (TolTurn&apos;s bound)</source>
+        <translation>%1 supera ±%2 (límite de TolTurn)</translation>
     </message>
 </context>
 <context>
@@ -2505,10 +2517,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>; cumple con un avance por diente de hasta %1 mm</translation>
     </message>
     <message>
-        <source>; no lower feed holds (the edge forces alone are too much)</source>
-        <translation>; ningún avance menor cumple (las fuerzas de filo por sí solas son excesivas)</translation>
-    </message>
-    <message>
         <source>Milled features (five-axis ball-end model, Öztürk &amp; Budak):</source>
         <translation>Elementos fresados (modelo de fresa de punta esférica en cinco ejes, Öztürk &amp; Budak):</translation>
     </message>
@@ -2519,6 +2527,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the tool&apos;s modulus is not given: carbide&apos;s %1 N/mm² (MakeItFrom)</source>
         <translation>no se indica el módulo de la herramienta: se toma el del metal duro, %1 N/mm² (MakeItFrom)</translation>
+    </message>
+    <message>
+        <source>; no feed up to the planned one holds</source>
+        <translation>; ningún avance hasta el planificado la cumple</translation>
     </message>
 </context>
 <context>
@@ -2552,10 +2564,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>la trayectoria de la herramienta (al menos dos puntos CL)</translation>
     </message>
     <message>
-        <source>a tool path needs at least two CL points, it has %1</source>
-        <translation>una trayectoria de la herramienta necesita al menos dos puntos CL y tiene %1</translation>
-    </message>
-    <message>
         <source>the tool axis is zero</source>
         <translation>el eje de la herramienta es nulo</translation>
     </message>
@@ -2568,10 +2576,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>el eje de la herramienta apunta hacia el interior de la superficie</translation>
     </message>
     <message>
-        <source>it is where the point before it is</source>
-        <translation>coincide con el punto anterior</translation>
-    </message>
-    <message>
         <source>the feed runs along the surface normal</source>
         <translation>el avance sigue la normal a la superficie</translation>
     </message>
@@ -2582,6 +2586,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>highest feed per tooth: %1 mm is not positive</source>
         <translation>mayor avance por diente: %1 mm no es positivo</translation>
+    </message>
+    <message>
+        <source>a tool path has 2 to %1 CL points, this one %2</source>
+        <translation>una trayectoria tiene de 2 a %1 puntos CL, esta %2</translation>
+    </message>
+    <message>
+        <source>the ball is where it was at the point before</source>
+        <translation>la bola está donde estaba en el punto anterior</translation>
     </message>
 </context>
 <context>
@@ -2851,10 +2863,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>--save: ningún plan cumple la tolerancia; %1 queda como estaba</translation>
     </message>
     <message>
-        <source>The plan is saved in %1, feature %2.</source>
-        <translation>El plan se ha guardado en %1, elemento %2.</translation>
-    </message>
-    <message>
         <source>No feed holds the tolerance along the path: the edge forces alone deflect the tool too far at its tool axes.</source>
         <translation>Ningún avance cumple la tolerancia a lo largo de la trayectoria: las fuerzas de filo por sí solas flexionan demasiado la herramienta con los ejes de la herramienta de la trayectoria.</translation>
     </message>
@@ -2889,6 +2897,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>With --feature, a patch&apos;s CL point to compute at (default 1; mill-optimize plans the whole path).</source>
         <translation>Con --feature, el punto CL del parche en el que se calcula (por defecto 1; mill-optimize planifica toda la trayectoria).</translation>
+    </message>
+    <message>
+        <source>The plan is saved in %1, feature %2 (the feed per tooth rounded down to 0.0001 mm).</source>
+        <translation>El plan se ha guardado en %1, elemento %2 (avance por diente redondeado hacia abajo a 0,0001 mm).</translation>
+    </message>
+    <message>
+        <source>--save plans at evaluate&apos;s resolution (200 slices, 360 angles): leave out --slices and --angles</source>
+        <translation>--save planifica con la resolución de evaluate (200 rodajas, 360 ángulos): omita --slices y --angles</translation>
     </message>
 </context>
 <context>
@@ -7319,10 +7335,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation> mm</translation>
     </message>
     <message>
-        <source>A, B (a profile with datums)</source>
-        <translation>A, B (un perfil con referencias)</translation>
-    </message>
-    <message>
         <source>where the cutting coefficients come from</source>
         <translation>de dónde proceden los coeficientes de corte</translation>
     </message>
@@ -7341,10 +7353,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>z from, to</source>
         <translation>z desde, hasta</translation>
-    </message>
-    <message>
-        <source>Datums</source>
-        <translation>Referencias</translation>
     </message>
     <message>
         <source>Coefficients from</source>
@@ -7405,6 +7413,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Remove milled feature %1</source>
         <translation>Quitar elemento fresado %1</translation>
+    </message>
+    <message>
+        <source>Evaluating…</source>
+        <translation>Evaluando…</translation>
     </message>
 </context>
 <context>
@@ -7772,6 +7784,26 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>&lt;br&gt;A patch&apos;s lead and tilt come from its path, point by point (Along the path); the fields show its conditions&apos; own.</source>
         <translation>&lt;br&gt;El lead y el tilt de un parche vienen de su trayectoria, punto por punto (A lo largo de la trayectoria); los campos muestran los de sus propias condiciones.</translation>
+    </message>
+    <message>
+        <source>A, B</source>
+        <translation>A, B</translation>
+    </message>
+    <message>
+        <source>Datums</source>
+        <translation>Referencias</translation>
+    </message>
+    <message>
+        <source>Feature %1 has no holder springs: these are the last cut&apos;s, and saving the cut gives them to it.</source>
+        <translation>El elemento %1 no tiene muelles del portaherramientas: estos son los del último corte, y guardar el corte se los da.</translation>
+    </message>
+    <message>
+        <source>Coefficients: &quot;%1&quot; is not six numbers; the feature is left as it was.</source>
+        <translation>Coeficientes: «%1» no son seis números; el elemento queda como estaba.</translation>
+    </message>
+    <message>
+        <source>A profile with datums needs its datums (A, B).</source>
+        <translation>Un perfil con referencias necesita sus referencias (A, B).</translation>
     </message>
 </context>
 <context>

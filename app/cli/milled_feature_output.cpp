@@ -88,7 +88,7 @@ QString verdictLine(const MilledFeatureEvaluation &e)
     if (e.holdingFeedPerTooth_mm > 0.0)
         return fails + MilledFeatureOutput::tr("; holds at a feed per tooth up to %1 mm")
                            .arg(e.holdingFeedPerTooth_mm, 0, 'f', 4);
-    return fails + MilledFeatureOutput::tr("; no lower feed holds (the edge forces alone are too much)");
+    return fails + MilledFeatureOutput::tr("; no feed up to the planned one holds");
 }
 
 } // namespace

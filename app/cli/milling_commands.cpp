@@ -242,14 +242,17 @@ int savePlan(const MillingInput &in, const MilledFeaturePlan &planned, const QSt
             f.conditions->lead_deg = planned.plan.cut.lead_rad / kDegree;
             f.conditions->tilt_deg = planned.plan.cut.tilt_rad / kDegree;
         }
-        f.conditions->feedPerTooth_mm = planned.plan.cut.feedPerTooth_mm;
+        // Down to the 0.0001 mm a program gives, so that the saved feed holds as it is evaluated.
+        f.conditions->feedPerTooth_mm = std::floor(planned.plan.cut.feedPerTooth_mm * 1e4) / 1e4;
     }
     const WriteResult written = writeProjectFile(in.projectFile, *project);
     if (!written.ok) {
         complain(err, command, written.error);
         return kExitProblems;
     }
-    out << MillingCommand::tr("The plan is saved in %1, feature %2.").arg(in.projectFile, in.feature->id) << '\n';
+    out << MillingCommand::tr("The plan is saved in %1, feature %2 (the feed per tooth rounded down to 0.0001 mm).")
+               .arg(in.projectFile, in.feature->id)
+        << '\n';
     return kExitOk;
 }
 
@@ -533,6 +536,12 @@ int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     if (parser.isSet(p.save) && !in->feature) {
         complain(err, command, MillingCommand::tr("--save needs PROJECT --feature ID"));
+        return kExitUsage;
+    }
+    if (parser.isSet(p.save) && (parser.isSet(o.slices) || parser.isSet(o.angles))) {
+        complain(err, command,
+                 MillingCommand::tr("--save plans at evaluate's resolution (200 slices, 360 angles): leave out "
+                                    "--slices and --angles"));
         return kExitUsage;
     }
     MilledFeaturePlan planned;

@@ -180,7 +180,8 @@ bool atPathPoint(const QCommandLineParser &parser, const MillingOptions &o, Mill
     if (!point)
         return false;
     try {
-        const PathStation station = pathStations(in.feature->path).at(static_cast<std::size_t>(*point - 1));
+        const PathStation station =
+            pathStations(in.feature->path, 0.5 * in.mill.diameter_mm).at(static_cast<std::size_t>(*point - 1));
         in.cut.lead_rad = station.angles.lead_rad;
         in.cut.tilt_rad = station.angles.tilt_rad;
     } catch (const std::invalid_argument &refused) {

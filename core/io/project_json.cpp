@@ -695,7 +695,7 @@ QJsonObject millingConditionsJson(const MillingConditions &c)
                   {QStringLiteral("spindle_rpm"), c.spindle_rpm},
                   {QStringLiteral("lead_deg"), c.lead_deg},
                   {QStringLiteral("tilt_deg"), c.tilt_deg}};
-    if (c.cut != BallEndCutKind::Slot)
+    if (c.cut != BallEndCutKind::Slot || c.radialDepth_mm != 0.0) // a slot's is read back, so kept
         o.insert(QStringLiteral("radial_depth_mm"), c.radialDepth_mm);
     return o;
 }

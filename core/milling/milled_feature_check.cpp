@@ -19,9 +19,6 @@ struct MilledFeatureCheck {
 };
 
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
-// The most CL points of a patch: each is a force and deflection run of about a millisecond
-// (docs/benchmarks.md), so a path of this many takes seconds.
-constexpr std::size_t kMostPathPoints = 5000;
 
 void addErrors(const std::vector<std::string> &problems, const QString &field, Diagnostics &out)
 {
@@ -33,9 +30,12 @@ void checkIdentity(const Project &p, const MilledFeature &f, const QString &path
 {
     if (f.id.trimmed().isEmpty())
         out.push_back(makeError(path + QStringLiteral("id"), MilledFeatureCheck::tr("a milled feature needs an id")));
-    else if (ids.contains(f.id) || findFeature(p.part, f.id))
+    else if (ids.contains(f.id))
         out.push_back(makeError(path + QStringLiteral("id"),
-                                MilledFeatureCheck::tr("id '%1' is already a feature of the part").arg(f.id)));
+                                MilledFeatureCheck::tr("id '%1' is already another milled feature's").arg(f.id)));
+    else if (findFeature(p.part, f.id))
+        out.push_back(makeError(path + QStringLiteral("id"),
+                                MilledFeatureCheck::tr("id '%1' is already a feature of the profile").arg(f.id)));
     ids.insert(f.id);
     const double length = p.part.length_mm();
     if (!(f.zFrom_mm >= 0.0 && f.zFrom_mm <= f.zTo_mm && f.zTo_mm <= length))
@@ -49,6 +49,15 @@ void checkTool(const MilledFeature &f, const QString &path, Diagnostics &out)
 {
     const BallEndTool &t = *f.tool;
     const BallEndMill mill{t.diameter_mm, t.flutes, t.helix_deg * kRadPerDeg};
+    if (!(t.diameter_mm > 0.0))
+        out.push_back(makeError(path + QStringLiteral("tool.diameter_mm"),
+                                MilledFeatureCheck::tr("tool diameter: %1 mm is not positive").arg(t.diameter_mm)));
+    if (t.flutes < 1 || t.flutes > 12)
+        out.push_back(makeError(path + QStringLiteral("tool.flutes"),
+                                MilledFeatureCheck::tr("flutes: %1 is not 1 to 12").arg(t.flutes)));
+    if (!(t.helix_deg >= 0.0 && t.helix_deg < 60.0))
+        out.push_back(makeError(path + QStringLiteral("tool.helix_deg"),
+                                MilledFeatureCheck::tr("helix angle: %1° is not 0 to 60°").arg(t.helix_deg)));
     // Springs not given are reported as missing (below), not as a zero out of range: any positive
     // value stands in for them here, and only the other fields are judged.
     const BallEndToolStructure structure{
@@ -74,12 +83,12 @@ void checkCut(const MilledFeature &f, const QString &path, Diagnostics &out)
                                 MilledFeatureCheck::tr("spindle speed: %1 rpm is not positive").arg(c.spindle_rpm)));
     if (!f.tool)
         return; // the cut is judged on the tool it is cut with
-    if (f.kind != MilledFeatureKind::Patch || f.path.size() < 2 || f.path.size() > kMostPathPoints) {
+    if (f.kind != MilledFeatureKind::Patch) {
         addErrors(validateBallEndCut(mill, cut, {}), path + QStringLiteral("conditions"), out);
         return;
     }
     try {
-        const std::vector<PathStation> stations = pathStations(f.path);
+        const std::vector<PathStation> stations = pathStations(f.path, 0.5 * mill.diameter_mm);
         for (std::size_t i = 0; i < stations.size(); ++i) {
             cut.lead_rad = stations[i].angles.lead_rad;
             cut.tilt_rad = stations[i].angles.tilt_rad;
@@ -89,6 +98,18 @@ void checkCut(const MilledFeature &f, const QString &path, Diagnostics &out)
                 return; // one point says it: the same cut fails at the next ones
             }
         }
+    } catch (const std::invalid_argument &) {
+        return; // checkPath names it
+    }
+}
+
+// A patch's path on its own, whether or not its tool and cut are given yet.
+void checkPath(const MilledFeature &f, const QString &path, Diagnostics &out)
+{
+    if (f.kind != MilledFeatureKind::Patch || f.path.size() < 2)
+        return;
+    try {
+        (void)pathStations(f.path, f.tool ? 0.5 * f.tool->diameter_mm : 0.0);
     } catch (const std::invalid_argument &refused) {
         out.push_back(makeError(path + QStringLiteral("path"), QString::fromStdString(refused.what())));
     }
@@ -97,15 +118,15 @@ void checkCut(const MilledFeature &f, const QString &path, Diagnostics &out)
 void checkCoefficients(const MilledFeature &f, const QString &path, Diagnostics &out)
 {
     const MillingForceCoefficients &k = *f.coefficients;
-    const double values[] = {k.tangentialCutting_N_mm2, k.radialCutting_N_mm2, k.axialCutting_N_mm2,
-                             k.tangentialEdge_N_mm,     k.radialEdge_N_mm,     k.axialEdge_N_mm};
-    for (const double v : values) {
-        if (!(std::abs(v) <= kMaxMillingCoefficient)) {
-            out.push_back(makeError(path + QStringLiteral("coefficients"),
-                                    MilledFeatureCheck::tr("cutting coefficient %1 is beyond ±%2")
+    const std::pair<const char *, double> values[] = {
+        {"Ktc_N_mm2", k.tangentialCutting_N_mm2}, {"Krc_N_mm2", k.radialCutting_N_mm2},
+        {"Kac_N_mm2", k.axialCutting_N_mm2},      {"Kte_N_mm", k.tangentialEdge_N_mm},
+        {"Kre_N_mm", k.radialEdge_N_mm},          {"Kae_N_mm", k.axialEdge_N_mm}};
+    for (const auto &[key, v] : values) {
+        if (!(std::abs(v) <= kMaxMillingCoefficient))
+            out.push_back(makeError(path + QStringLiteral("coefficients.") + QLatin1String(key),
+                                    MilledFeatureCheck::tr("%1 is beyond ±%2 (TolTurn's bound)")
                                         .arg(formatNumber(v), formatNumber(kMaxMillingCoefficient))));
-            return;
-        }
     }
     if (!(k.tangentialCutting_N_mm2 > 0.0))
         out.push_back(
@@ -141,11 +162,7 @@ void checkTolerance(const Project &p, const MilledFeature &f, const QString &pat
 void checkOne(const Project &p, const MilledFeature &f, const QString &path, QSet<QString> &ids, Diagnostics &out)
 {
     checkIdentity(p, f, path, ids, out);
-    if (f.kind == MilledFeatureKind::Patch && f.path.size() > kMostPathPoints)
-        out.push_back(makeError(path + QStringLiteral("path"),
-                                MilledFeatureCheck::tr("%1 CL points are more than the %2 a path may have")
-                                    .arg(f.path.size())
-                                    .arg(kMostPathPoints)));
+    checkPath(f, path, out);
     if (f.kind != MilledFeatureKind::Patch && !f.path.empty())
         out.push_back(makeWarning(
             path + QStringLiteral("path"),

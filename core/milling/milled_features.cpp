@@ -89,77 +89,70 @@ LeadTilt leadTiltOfAxis(const std::array<double, 3> &toolAxis, const std::array<
     return {std::asin(std::clamp(a.dot(f), -1.0, 1.0)), std::atan2(-a.dot(c), a.dot(n))};
 }
 
-std::vector<PathStation> pathStations(const std::vector<ClPoint> &path)
+std::vector<PathStation> pathStations(const std::vector<ClPoint> &path, double ballRadius_mm)
 {
-    if (path.size() < 2)
-        throw std::invalid_argument(
-            MilledFeatures::tr("a tool path needs at least two CL points, it has %1").arg(path.size()).toStdString());
+    if (path.size() < 2 || path.size() > kMostPathPoints)
+        throw std::invalid_argument(MilledFeatures::tr("a tool path has 2 to %1 CL points, this one %2")
+                                        .arg(kMostPathPoints)
+                                        .arg(path.size())
+                                        .toStdString());
+    std::vector<Eigen::Vector3d> centres;
+    centres.reserve(path.size());
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const Eigen::Vector3d axis = vec(path[i].toolAxis);
+        if (!(axis.norm() >= kShortestDirection))
+            throw pathError(i, MilledFeatures::tr("the tool axis is zero"));
+        centres.emplace_back(vec(path[i].position_mm) + ballRadius_mm * axis.normalized());
+    }
     std::vector<PathStation> stations;
     stations.reserve(path.size());
     double arcLength = 0.0;
     for (std::size_t i = 0; i < path.size(); ++i) {
         const ClPoint &p = path[i];
-        const Eigen::Vector3d axis = vec(p.toolAxis);
         const Eigen::Vector3d normal = vec(p.surfaceNormal);
-        if (axis.norm() < kShortestDirection)
-            throw pathError(i, MilledFeatures::tr("the tool axis is zero"));
-        if (normal.norm() < kShortestDirection)
+        if (!(normal.norm() >= kShortestDirection))
             throw pathError(i, MilledFeatures::tr("the surface normal is zero"));
-        if (axis.dot(normal) <= 0.0)
+        if (!(vec(p.toolAxis).dot(normal) > 0.0))
             throw pathError(i, MilledFeatures::tr("the tool axis points into the surface"));
         const std::size_t from = i + 1 < path.size() ? i : i - 1;
-        const Eigen::Vector3d step = vec(path[from + 1].position_mm) - vec(path[from].position_mm);
-        if (step.norm() < kShortestDirection)
-            throw pathError(from + 1, MilledFeatures::tr("it is where the point before it is"));
+        const Eigen::Vector3d step = centres[from + 1] - centres[from];
+        if (!(step.norm() >= kShortestDirection))
+            throw pathError(from + 1, MilledFeatures::tr("the ball is where it was at the point before"));
         const Eigen::Vector3d along = step - step.dot(normal.normalized()) * normal.normalized();
         if (along.norm() < 1e-6 * step.norm())
             throw pathError(i, MilledFeatures::tr("the feed runs along the surface normal"));
         if (i > 0)
-            arcLength += (vec(p.position_mm) - vec(path[i - 1].position_mm)).norm();
+            arcLength += (centres[i] - centres[i - 1]).norm();
         stations.push_back({arcLength, leadTiltOfAxis(p.toolAxis, p.surfaceNormal, {step.x(), step.y(), step.z()})});
     }
     return stations;
 }
 
-std::vector<PathStation> featureStations(const MilledFeature &feature, const BallEndCut &cut)
+std::vector<PathStation> featureStations(const MilledFeature &feature, const BallEndMill &mill, const BallEndCut &cut)
 {
     if (feature.kind == MilledFeatureKind::Patch)
-        return pathStations(feature.path);
+        return pathStations(feature.path, 0.5 * mill.diameter_mm);
     // A flat or a keyway is one straight cut at one lead and tilt: the error is the same at both ends.
     const LeadTilt angles{cut.lead_rad, cut.tilt_rad};
     return {{0.0, angles}, {std::abs(feature.zTo_mm - feature.zFrom_mm), angles}};
 }
 
-SurfaceErrorLine pathErrorLine(const MilledFeatureInputs &inputs, const std::vector<PathStation> &stations,
-                               const BallEndResolution &resolution)
-{
-    SurfaceErrorLine whole;
-    std::map<std::pair<double, double>, SurfaceErrorLine> byAngles; // the same axis is one run
-    for (const PathStation &s : stations) {
-        const std::pair<double, double> key{s.angles.lead_rad, s.angles.tilt_rad};
-        auto found = byAngles.find(key);
-        if (found == byAngles.end()) {
-            BallEndCut cut = inputs.cut;
-            cut.lead_rad = s.angles.lead_rad;
-            cut.tilt_rad = s.angles.tilt_rad;
-            const BallEndDeflection d =
-                ballEndDeflection(inputs.mill, inputs.structure, inputs.coefficients, cut, resolution);
-            found = byAngles.emplace(key, surfaceErrorLine(d, cut)).first;
-        }
-        whole.base_mm.insert(whole.base_mm.end(), found->second.base_mm.begin(), found->second.base_mm.end());
-        whole.perFeed_mm_mm.insert(whole.perFeed_mm_mm.end(), found->second.perFeed_mm_mm.begin(),
-                                   found->second.perFeed_mm_mm.end());
-    }
-    return whole;
-}
-
 namespace {
 
-// Every station's δ_N range and forces at the feature's feed, into the evaluation.
-void evaluateStations(const MilledFeatureInputs &in, const std::vector<PathStation> &stations,
-                      const BallEndResolution &resolution, MilledFeatureEvaluation &e)
+struct StationResult {
+    MilledPathPoint point;
+    SurfaceErrorLine line;
+};
+
+// Every station's δ_N range and forces at the feature's feed into the evaluation, and the error
+// lines of all stations one after the other: the form error of the whole path at a feed is
+// formError_mm of that line (the spread, or the largest |δ_N|, over all of them). A tool axis met
+// before is not computed again.
+SurfaceErrorLine evaluateStations(const MilledFeatureInputs &in, const std::vector<PathStation> &stations,
+                                  const BallEndResolution &resolution, MilledFeatureEvaluation &e)
 {
-    std::map<std::pair<double, double>, MilledPathPoint> byAngles;
+    SurfaceErrorLine whole;
+    std::map<std::pair<double, double>, StationResult> byAngles;
     for (const PathStation &s : stations) {
         const std::pair<double, double> key{s.angles.lead_rad, s.angles.tilt_rad};
         auto found = byAngles.find(key);
@@ -173,13 +166,19 @@ void evaluateStations(const MilledFeatureInputs &in, const std::vector<PathStati
                 e.forces = forces;
                 e.spindlePower_W = spindlePower_W(forces.meanTorque_N_mm, in.spindle_rpm);
             }
-            found =
-                byAngles.emplace(key, MilledPathPoint{{}, d.leastSurfaceNormal_mm, d.greatestSurfaceNormal_mm}).first;
+            found = byAngles
+                        .emplace(key, StationResult{{{}, d.leastSurfaceNormal_mm, d.greatestSurfaceNormal_mm},
+                                                    surfaceErrorLine(d, cut)})
+                        .first;
         }
-        MilledPathPoint point = found->second;
+        MilledPathPoint point = found->second.point;
         point.station = s;
         e.path.push_back(point);
+        const SurfaceErrorLine &line = found->second.line;
+        whole.base_mm.insert(whole.base_mm.end(), line.base_mm.begin(), line.base_mm.end());
+        whole.perFeed_mm_mm.insert(whole.perFeed_mm_mm.end(), line.perFeed_mm_mm.begin(), line.perFeed_mm_mm.end());
     }
+    return whole;
 }
 
 } // namespace
@@ -194,16 +193,15 @@ MilledFeatureEvaluation evaluateMilledFeature(const MilledFeature &feature, cons
     e.carbideAssumed = in->carbideAssumed;
     e.tolerance = in->tolerance;
     try {
-        const std::vector<PathStation> stations = featureStations(feature, in->cut);
-        evaluateStations(*in, stations, resolution, e);
-        const SurfaceErrorLine line = pathErrorLine(*in, stations, resolution);
+        const SurfaceErrorLine line = evaluateStations(*in, featureStations(feature, in->mill, in->cut), resolution, e);
         e.formError_mm = formError_mm(line, in->cut.feedPerTooth_mm, in->tolerance.zone);
         e.margin_mm = in->tolerance.tolerance_mm - e.formError_mm;
         e.passes = e.margin_mm >= 0.0;
         e.holdingFeedPerTooth_mm = largestFeedPerTooth_mm(line, in->tolerance, in->cut.feedPerTooth_mm);
-    } catch (const std::invalid_argument &refused) {
+    } catch (const std::exception &refused) { // what the model refuses; nothing escapes a worker thread
         e.refusal = QString::fromStdString(refused.what());
         e.path.clear();
+        e.forces = {};
     }
     return e;
 }
@@ -236,7 +234,9 @@ MilledFeaturePlan planMilledFeature(const MilledFeature &feature, const BallEndP
         throw std::invalid_argument(MilledFeatures::tr("highest feed per tooth: %1 mm is not positive")
                                         .arg(settings.highestFeedPerTooth_mm)
                                         .toStdString());
-    const SurfaceErrorLine line = pathErrorLine(*in, pathStations(feature.path), settings.planResolution);
+    MilledFeatureEvaluation scratch;
+    const SurfaceErrorLine line =
+        evaluateStations(*in, featureStations(feature, in->mill, in->cut), settings.planResolution, scratch);
     BallEndPlan &plan = result.plan;
     plan.cut = in->cut;
     plan.cut.feedPerTooth_mm = largestFeedPerTooth_mm(line, in->tolerance, settings.highestFeedPerTooth_mm);

@@ -48,15 +48,22 @@ struct PathStation {
     LeadTilt angles;
 };
 
-// The stations of a patch's path: the feed direction at a point is towards the next (at the last,
-// from the one before). Throws std::invalid_argument, naming the point, for a path the model cannot
-// take: fewer than two points, a zero axis or normal, two points at the same place, a feed along the
-// normal, an axis not above the surface.
-[[nodiscard]] std::vector<PathStation> pathStations(const std::vector<ClPoint> &path);
+// The most CL points of a patch: each distinct tool axis is a force and deflection run of about a
+// millisecond (docs/benchmarks.md), so a path of this many takes seconds.
+inline constexpr std::size_t kMostPathPoints = 5000;
+
+// The stations of a patch's path, for a ball of radius `ballRadius_mm`: the ball's centre (the tip
+// plus R along the axis) moves with the contact point, so the feed direction at a point is the
+// centre's step towards the next point (at the last, from the one before) and the arc length is the
+// centre's. Throws std::invalid_argument, naming the point, for a path the model cannot take: fewer
+// than two points or more than kMostPathPoints, a zero axis or normal, two centres at the same
+// place, a feed along the normal, an axis not above the surface.
+[[nodiscard]] std::vector<PathStation> pathStations(const std::vector<ClPoint> &path, double ballRadius_mm);
 
 // The stations a feature is evaluated at: a patch's, or the straight cut of a flat or a keyway at
 // the feature's lead and tilt from z_from to z_to.
-[[nodiscard]] std::vector<PathStation> featureStations(const MilledFeature &feature, const BallEndCut &cut);
+[[nodiscard]] std::vector<PathStation> featureStations(const MilledFeature &feature, const BallEndMill &mill,
+                                                       const BallEndCut &cut);
 
 struct MilledPathPoint {
     PathStation station;
@@ -89,12 +96,6 @@ struct MilledFeatureEvaluation {
 
 // Every milled feature of a project, in order.
 [[nodiscard]] std::vector<MilledFeatureEvaluation> evaluateMilledFeatures(const Project &project);
-
-// The error lines of every station of the path, one after the other: the form error of the whole
-// path at a feed is formError_mm of this line (the spread, or the largest |δ_N|, over all of them).
-[[nodiscard]] SurfaceErrorLine pathErrorLine(const MilledFeatureInputs &inputs,
-                                             const std::vector<PathStation> &stations,
-                                             const BallEndResolution &resolution);
 
 struct MilledFeaturePlan {
     bool leadTiltPlanned = false; // a flat or keyway: lead, tilt and feed; a patch: the feed only

@@ -153,14 +153,14 @@ private Q_SLOTS:
     // along the normal (a ramp) counts only along the surface.
     void stationsOfAPath()
     {
-        const std::vector<PathStation> s = pathStations(patch().path);
+        const std::vector<PathStation> s = pathStations(patch().path, 0.0);
         QCOMPARE(s.size(), std::size_t{3});
         QCOMPARE(s[1].arcLength_mm, 3.0);
         QCOMPARE(s[2].arcLength_mm, 7.0);
         QVERIFY(std::abs(s[2].angles.lead_rad - 20 * kDegree) < 1e-12);
         std::vector<ClPoint> ramp = patch().path;
         ramp[1].position_mm = {3.0, 0.0, 4.0};
-        const std::vector<PathStation> r = pathStations(ramp);
+        const std::vector<PathStation> r = pathStations(ramp, 0.0);
         QCOMPARE(r[1].arcLength_mm, 5.0);
         QVERIFY(std::abs(r[0].angles.lead_rad - 5 * kDegree) < 1e-12);
         // A path that turns from +x to +y at its second point: there the feed is the step to come,
@@ -168,16 +168,23 @@ private Q_SLOTS:
         // the last point, the step that came.
         std::vector<ClPoint> turning = patch().path;
         turning[2].position_mm = {3.0, 4.0, 0.0};
-        const std::vector<PathStation> t = pathStations(turning);
+        const std::vector<PathStation> t = pathStations(turning, 0.0);
         QVERIFY(std::abs(t[1].angles.lead_rad) < 1e-12 && std::abs(t[1].angles.tilt_rad - 5 * kDegree) < 1e-12);
         QVERIFY(std::abs(t[2].angles.lead_rad) < 1e-12 && std::abs(t[2].angles.tilt_rad - 20 * kDegree) < 1e-12);
         QCOMPARE(t[2].arcLength_mm, 7.0);
+        // The ball's centre, tip + R·axis, moves with the contact: with R = 6 mm the last step, from an
+        // axis 5° to one 20° from the normal, runs from (3 + 6 sin 5°, 6 cos 5°) to (7 + 6 sin 20°,
+        // 6 cos 20°) in x and z.
+        const std::vector<PathStation> ball = pathStations(patch().path, 6.0);
+        const double dx = 7.0 + 6.0 * std::sin(20 * kDegree) - 3.0 - 6.0 * std::sin(5 * kDegree);
+        const double dz = 6.0 * std::cos(20 * kDegree) - 6.0 * std::cos(5 * kDegree);
+        QVERIFY(std::abs(ball[2].arcLength_mm - (3.0 + std::hypot(dx, dz))) < 1e-12);
         std::vector<ClPoint> bad = patch().path;
         bad[1].toolAxis = {0.0, 0.0, -1.0};
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)pathStations(bad));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)pathStations(bad, 0.0));
         bad = patch().path;
         bad[2].position_mm = bad[1].position_mm;
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)pathStations(bad));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)pathStations(bad, 0.0));
     }
 
     // A flat is one cut: its form error is the spread of δ_N over a revolution of the model run on
@@ -200,8 +207,7 @@ private Q_SLOTS:
                  qPrintable(QStringLiteral("%1 %2").arg(p.formError_mm).arg(spread)));
         QCOMPARE(p.path.size(), std::size_t{3});
         QCOMPARE(p.path[2].greatestNormal_mm, at20.greatest);
-        QCOMPARE(p.margin_mm, 0.020 - p.formError_mm);
-        QCOMPARE(p.passes, p.formError_mm <= 0.020);
+        QCOMPARE(p.passes, spread <= 0.020);
 
         MilledFeature located = patch();
         located.tolerance = MilledTolerance{MilledToleranceType::Profile, 20.0, {QStringLiteral("A")}};
@@ -236,7 +242,7 @@ private Q_SLOTS:
     }
 
     // A patch's plan is the largest feed up to the highest at which the whole path holds; a flat's
-    // plans lead and tilt too.
+    // plans lead and tilt too (within the bounds, and holding the tolerance run again there).
     void planOfAPatch()
     {
         MilledFeature f = patch();
@@ -254,6 +260,21 @@ private Q_SLOTS:
         QVERIFY2(at <= 0.010 + 1e-9 && (feed == 0.3 || above > 0.010),
                  qPrintable(QStringLiteral("%1 at %2, %3 above").arg(at).arg(feed).arg(above)));
         QCOMPARE(plan.plan.feedRate_mm_min, feed * 2 * 3000.0);
+
+        MilledFeature flatOne = flat();
+        flatOne.tolerance->zone_um = 10.0;
+        settings.leadLowest_rad = settings.tiltLowest_rad = 5 * kDegree;
+        settings.leadHighest_rad = settings.tiltHighest_rad = 30 * kDegree;
+        settings.columns = settings.rows = 5;
+        settings.windowResolution = {60, 120};
+        const MilledFeaturePlan flatPlan = planMilledFeature(flatOne, settings);
+        QVERIFY(flatPlan.leadTiltPlanned && flatPlan.plan.feasible);
+        const BallEndCut &cut = flatPlan.plan.cut;
+        QVERIFY(cut.lead_rad >= 5 * kDegree - 1e-12 && cut.lead_rad <= 30 * kDegree + 1e-12);
+        flatOne.conditions->lead_deg = cut.lead_rad / kDegree;
+        flatOne.conditions->tilt_deg = cut.tilt_rad / kDegree;
+        flatOne.conditions->feedPerTooth_mm = cut.feedPerTooth_mm;
+        QVERIFY(evaluateMilledFeature(flatOne).formError_mm <= 0.010 + 1e-9);
     }
 
     // What is not given is named, nothing is computed; what the model refuses is said.
@@ -307,13 +328,25 @@ private Q_SLOTS:
                  qPrintable(listed(validateProject(projectWith(flat())))));
     }
 
-    // Every field survives the file; a bad keyword names its field and value.
+    // Every field survives the file (up milling, a located profile, a slot's radial depth, a tool
+    // without springs or modulus, coefficients without a source); a bad keyword names its field and
+    // value.
     void roundTripThroughJson()
     {
         MilledFeature f = patch();
         f.description = QStringLiteral("STEP faces 4, 5");
         f.tool->youngsModulus_N_mm2.reset();
-        const Project p = projectWith(f);
+        MilledFeature slot = flat();
+        slot.id = QStringLiteral("M3");
+        slot.conditions->cut = BallEndCutKind::Slot;
+        slot.conditions->direction = MillingDirection::Up;
+        slot.conditions->radialDepth_mm = 0.7;
+        slot.tool->holderStiffness_N_mm.reset();
+        slot.tool->holderRotational_N_mm_rad.reset();
+        slot.coefficientsSource.clear();
+        slot.tolerance = MilledTolerance{MilledToleranceType::Profile, 12.5, {QStringLiteral("A")}};
+        Project p = projectWith(f);
+        p.milledFeatures.push_back(slot);
         const ProjectParseResult back = parseProjectJson(serializeProjectJson(p));
         QVERIFY(back.project.has_value());
         QVERIFY(back.project->milledFeatures == p.milledFeatures);

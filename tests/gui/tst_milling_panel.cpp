@@ -191,6 +191,8 @@ private Q_SLOTS:
         QCOMPARE(added.tolerance->zone_um, 50.0);
         QCOMPARE(added.conditions->lead_deg, 10.0);
         QCOMPARE(added.coefficientsSource, QStringLiteral("test values"));
+        QVERIFY(!added.tool->youngsModulus_N_mm2.has_value()); // carbide's, still an assumption
+        QVERIFY(box->saveButton()->isEnabled());
         document.undoStack()->undo();
         QCOMPARE(document.project().milledFeatures.size(), std::size_t{2});
 
@@ -200,10 +202,18 @@ private Q_SLOTS:
         QCOMPARE(document.project().milledFeatures.size(), std::size_t{2});
         QVERIFY2(panel.summary()->text().contains(QStringLiteral("overhang")), qPrintable(panel.summary()->text()));
 
-        box->table()->selectRow(1);
+        // A feature removed leaves nothing chosen, so no cut is saved to the one that takes its row;
+        // the one still there stays chosen by its id after an edit that moves it.
+        box->table()->selectRow(0);
         box->removeButton()->click();
         QCOMPARE(document.project().milledFeatures.size(), std::size_t{1});
-        QCOMPARE(document.project().milledFeatures.front().id, QStringLiteral("M1"));
+        QCOMPARE(document.project().milledFeatures.front().id, QStringLiteral("M2"));
+        QVERIFY(box->table()->selectedItems().isEmpty());
+        QVERIFY(!box->saveButton()->isEnabled());
+        box->table()->selectRow(0);
+        document.undoStack()->undo(); // M1 back before M2
+        QCOMPARE(box->table()->item(box->table()->selectedItems().constFirst()->row(), 0)->text(),
+                 QStringLiteral("M2"));
     }
 };
 

@@ -14,7 +14,6 @@
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QRegularExpression>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent>
@@ -60,10 +59,12 @@ QColor verdictColour(const MilledFeatureEvaluation &e)
 } // namespace
 
 MilledFeaturesBox::MilledFeaturesBox(ProjectDocument *document,
-                                     std::function<MilledFeature(MilledFeature)> completeFromFields, QWidget *parent)
+                                     std::function<MilledFeature(MilledFeature)> completeFromFields,
+                                     std::function<QString()> fieldsProblem, QWidget *parent)
     : QGroupBox(tr("Milled features of the part"), parent)
     , m_document(document)
     , m_completeFromFields(std::move(completeFromFields))
+    , m_fieldsProblem(std::move(fieldsProblem))
 {
     setObjectName(QStringLiteral("milledFeaturesBox"));
     m_table = new QTableWidget(0, ColumnCount);
@@ -87,8 +88,6 @@ MilledFeaturesBox::MilledFeaturesBox(ProjectDocument *document,
         z->setDecimals(2);
         z->setSuffix(tr(" mm"));
     }
-    m_datums = new QLineEdit;
-    m_datums->setPlaceholderText(tr("A, B (a profile with datums)"));
     m_coefficientsSource = new QLineEdit;
     m_coefficientsSource->setObjectName(QStringLiteral("coefficientsSource"));
     m_coefficientsSource->setPlaceholderText(tr("where the cutting coefficients come from"));
@@ -104,7 +103,6 @@ MilledFeaturesBox::MilledFeaturesBox(ProjectDocument *document,
     auto *form = new QFormLayout;
     form->addRow(tr("Kind"), m_kind);
     form->addRow(tr("z from, to"), place);
-    form->addRow(tr("Datums"), m_datums);
     form->addRow(tr("Coefficients from"), m_coefficientsSource);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_add);
@@ -144,12 +142,19 @@ MilledFeaturesBox::MilledFeaturesBox(ProjectDocument *document,
     refresh();
 }
 
+// The list after any change of the project. The chosen feature stays chosen by its id, without
+// loading it again (the fields may hold edits not saved yet); when it is gone nothing is chosen, so
+// that no cut is saved to the feature that took its row.
 void MilledFeaturesBox::refresh()
 {
     const int chosen = chosenRow();
+    const QString chosenId =
+        chosen >= 0 && m_table->item(chosen, IdColumn) ? m_table->item(chosen, IdColumn)->text() : QString();
     const std::vector<MilledFeature> &features = m_document->project().milledFeatures;
     const QSignalBlocker blocker(m_table);
+    m_table->clearSelection();
     m_table->setRowCount(static_cast<int>(features.size()));
+    int again = -1;
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const MilledFeature &f = features[static_cast<std::size_t>(row)];
         m_table->setItem(row, IdColumn, readOnlyCell(f.id));
@@ -160,12 +165,16 @@ void MilledFeaturesBox::refresh()
         m_table->setItem(row, ToleranceColumn, readOnlyCell(toleranceText(f)));
         m_table->setItem(row, VerdictColumn, readOnlyCell(tr("evaluating…")));
         m_table->item(row, IdColumn)->setToolTip(f.description);
+        if (!chosenId.isEmpty() && f.id == chosenId)
+            again = row;
     }
-    if (chosen >= 0 && chosen < m_table->rowCount())
-        m_table->selectRow(chosen);
+    if (again >= 0)
+        m_table->selectRow(again);
     m_zTo->setValue(m_zTo->value() > 0.0 ? m_zTo->value() : m_document->project().part.length_mm());
-    m_save->setEnabled(chosenRow() >= 0);
-    m_remove->setEnabled(chosenRow() >= 0);
+    m_save->setEnabled(again >= 0);
+    m_remove->setEnabled(again >= 0);
+    m_evaluations.clear(); // of the project before: shown for no row
+    showPath(again);
     evaluate();
 }
 
@@ -180,12 +189,24 @@ void MilledFeaturesBox::evaluate()
     m_watcher.setFuture(QtConcurrent::run(workerThreads(), [project] { return evaluateMilledFeatures(project); }));
 }
 
+const MilledFeatureEvaluation *MilledFeaturesBox::evaluationOf(int row) const
+{
+    if (row < 0 || row >= m_table->rowCount() || !m_table->item(row, IdColumn))
+        return nullptr;
+    const QString id = m_table->item(row, IdColumn)->text();
+    const auto found = std::find_if(m_evaluations.begin(), m_evaluations.end(),
+                                    [&](const MilledFeatureEvaluation &e) { return e.featureId == id; });
+    return found == m_evaluations.end() ? nullptr : &*found;
+}
+
 void MilledFeaturesBox::showEvaluations()
 {
-    for (int row = 0; row < m_table->rowCount() && row < static_cast<int>(m_evaluations.size()); ++row) {
-        const MilledFeatureEvaluation &e = m_evaluations[static_cast<std::size_t>(row)];
-        QTableWidgetItem *cell = readOnlyCell(verdictText(e));
-        cell->setForeground(verdictColour(e));
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const MilledFeatureEvaluation *e = evaluationOf(row);
+        if (!e)
+            continue;
+        QTableWidgetItem *cell = readOnlyCell(verdictText(*e));
+        cell->setForeground(verdictColour(*e));
         cell->setToolTip(cell->text());
         m_table->setItem(row, VerdictColumn, cell);
     }
@@ -197,13 +218,13 @@ void MilledFeaturesBox::showEvaluations()
 void MilledFeaturesBox::showPath(int row)
 {
     m_pathPlot->clear();
-    if (row < 0 || row >= static_cast<int>(m_evaluations.size()) ||
-        !m_evaluations[static_cast<std::size_t>(row)].evaluated()) {
-        m_pathPlot->setTitle(tr("Choose an evaluated feature"));
+    const MilledFeatureEvaluation *evaluation = evaluationOf(row);
+    if (!evaluation || !evaluation->evaluated() || evaluation->path.empty()) {
+        m_pathPlot->setTitle(row >= 0 && isEvaluating() ? tr("Evaluating…") : tr("Choose an evaluated feature"));
         m_pathPlot->rescaleAndReplot();
         return;
     }
-    const MilledFeatureEvaluation &e = m_evaluations[static_cast<std::size_t>(row)];
+    const MilledFeatureEvaluation &e = *evaluation;
     QVector<double> s;
     QVector<double> least;
     QVector<double> greatest;
@@ -228,13 +249,13 @@ void MilledFeaturesBox::choose(int row)
     m_save->setEnabled(row >= 0);
     m_remove->setEnabled(row >= 0);
     showPath(row);
-    if (row < 0)
+    const std::vector<MilledFeature> &features = m_document->project().milledFeatures;
+    if (row < 0 || row >= static_cast<int>(features.size()))
         return;
-    const MilledFeature &f = m_document->project().milledFeatures.at(static_cast<std::size_t>(row));
+    const MilledFeature &f = features[static_cast<std::size_t>(row)];
     m_kind->setCurrentIndex(m_kind->findData(static_cast<int>(f.kind)));
     m_zFrom->setValue(f.zFrom_mm);
     m_zTo->setValue(f.zTo_mm);
-    m_datums->setText(f.tolerance ? f.tolerance->datums.join(QStringLiteral(", ")) : QString());
     m_coefficientsSource->setText(f.coefficientsSource);
     Q_EMIT featureChosen(f);
 }
@@ -251,14 +272,7 @@ MilledFeature MilledFeaturesBox::propertiesFromFields(MilledFeature feature) con
     feature.zFrom_mm = m_zFrom->value();
     feature.zTo_mm = m_zTo->value();
     feature.coefficientsSource = m_coefficientsSource->text().trimmed();
-    feature = m_completeFromFields(std::move(feature));
-    if (feature.tolerance) {
-        static const QRegularExpression separators(QStringLiteral("[,;\\s]+"));
-        feature.tolerance->datums = m_datums->text().split(separators, Qt::SkipEmptyParts);
-        if (feature.tolerance->type == MilledToleranceType::Flatness)
-            feature.tolerance->datums.clear();
-    }
-    return feature;
+    return m_completeFromFields(std::move(feature));
 }
 
 QString MilledFeaturesBox::nextId() const
@@ -283,6 +297,8 @@ QString MilledFeaturesBox::apply(const std::vector<MilledFeature> &features, con
 
 QString MilledFeaturesBox::addFromFields()
 {
+    if (QString problem = m_fieldsProblem(); !problem.isEmpty())
+        return problem;
     MilledFeature feature;
     feature.id = nextId();
     feature = propertiesFromFields(std::move(feature));
@@ -299,6 +315,8 @@ QString MilledFeaturesBox::saveToChosen()
     const int row = chosenRow();
     if (row < 0)
         return tr("Choose the feature to save the cut to.");
+    if (QString problem = m_fieldsProblem(); !problem.isEmpty())
+        return problem;
     std::vector<MilledFeature> features = m_document->project().milledFeatures;
     MilledFeature &f = features[static_cast<std::size_t>(row)];
     f = propertiesFromFields(f);

@@ -30,9 +30,9 @@ class MilledFeaturesBox : public QGroupBox {
     Q_OBJECT
 public:
     // `completeFromFields` gives a feature the tool, conditions, coefficients and tolerance of the
-    // dock's fields.
+    // dock's fields; `fieldsProblem` says why the fields cannot make a feature (empty when they can).
     MilledFeaturesBox(ProjectDocument *document, std::function<MilledFeature(MilledFeature)> completeFromFields,
-                      QWidget *parent = nullptr);
+                      std::function<QString()> fieldsProblem, QWidget *parent = nullptr);
 
     [[nodiscard]] QTableWidget *table() const { return m_table; }
 
@@ -48,8 +48,8 @@ public:
 
     [[nodiscard]] const std::vector<MilledFeatureEvaluation> &evaluations() const { return m_evaluations; }
 
-    // Adds the dock's cut as a new feature (the kind, z range and datums of the fields below the
-    // table); a message for the dock's summary when the project refuses it, else empty.
+    // Adds the dock's cut as a new feature (the kind, z range and coefficients' source of the fields
+    // below the table); a message for the dock's summary when the project refuses it, else empty.
     QString addFromFields();
     // Saves the dock's cut into the chosen feature.
     QString saveToChosen();
@@ -70,17 +70,18 @@ private:
     void showPath(int row);
     void choose(int row);
     [[nodiscard]] int chosenRow() const;
+    [[nodiscard]] const MilledFeatureEvaluation *evaluationOf(int row) const;
     [[nodiscard]] MilledFeature propertiesFromFields(MilledFeature feature) const;
     [[nodiscard]] QString nextId() const;
     QString apply(const std::vector<MilledFeature> &features, const QString &description);
 
     ProjectDocument *m_document;
     std::function<MilledFeature(MilledFeature)> m_completeFromFields;
+    std::function<QString()> m_fieldsProblem;
     QTableWidget *m_table;
     QComboBox *m_kind;
     QDoubleSpinBox *m_zFrom;
     QDoubleSpinBox *m_zTo;
-    QLineEdit *m_datums;
     QLineEdit *m_coefficientsSource;
     QPushButton *m_add;
     QPushButton *m_save;

@@ -16,6 +16,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSpinBox>
 #include <QTabWidget>
@@ -87,7 +88,9 @@ MillingPanel::MillingPanel(ProjectDocument *document, QWidget *parent) : QWidget
     auto *inputsLayout = new QVBoxLayout(inputs);
     inputsLayout->setContentsMargins(0, 0, 0, 0);
     if (document) {
-        m_features = new MilledFeaturesBox(document, [this](MilledFeature f) { return completeFeature(std::move(f)); });
+        m_features = new MilledFeaturesBox(
+            document, [this](MilledFeature f) { return completeFeature(std::move(f)); },
+            [this] { return featureProblem(); });
         inputsLayout->addWidget(m_features);
         connect(m_features, &MilledFeaturesBox::featureChosen, this, &MillingPanel::loadFeature);
         connect(m_features, &MilledFeaturesBox::message, this, [this](const QString &text) {
@@ -141,7 +144,7 @@ QWidget *MillingPanel::createToolAndCut()
     m_direction->addItems({tr("Down milling"), tr("Up milling")});
     m_radialDepth = spin(0.001, 100.0, 4, tr(" mm"), 1.0);
     m_axialDepth = spin(0.001, 50.0, 3, tr(" mm"), 1.0);
-    m_feedPerTooth = spin(0.001, 2.0, 4, tr(" mm"), 0.1);
+    m_feedPerTooth = spin(0.0001, 2.0, 5, tr(" mm"), 0.1);
     m_spindle = spin(1.0, 100000.0, 0, tr(" 1/min"), 1000.0);
     m_coefficients = new QLineEdit;
     m_coefficients->setObjectName(QStringLiteral("millingCoefficients"));
@@ -198,7 +201,7 @@ QWidget *MillingPanel::createStructureAndTolerance()
     m_holderRotational = spin(1.0, 1e12, 0, tr(" N·mm/rad"), kSeedHolderRotational_N_mm_rad);
     m_springSource = new QLabel;
     m_springSource->setWordWrap(true);
-    m_tolerance = spin(0.1, 10000.0, 1, tr(" µm"), 20.0);
+    m_tolerance = spin(0.01, 10000.0, 2, tr(" µm"), 20.0);
     m_zone = new QComboBox;
     m_zone->addItems({tr("Flatness"), tr("Profile without datums"), tr("Profile with datums (±t/2)")});
     m_zone->setToolTip(tr("ISO 1101: a flatness and a profile without datums float (the spread within t); a "
@@ -215,6 +218,11 @@ QWidget *MillingPanel::createStructureAndTolerance()
     form->addRow(m_springSource);
     form->addRow(tr("Surface tolerance t"), m_tolerance);
     form->addRow(tr("Zone"), m_zone);
+    m_datums = new QLineEdit;
+    m_datums->setObjectName(QStringLiteral("millingDatums"));
+    m_datums->setPlaceholderText(tr("A, B"));
+    m_datums->setEnabled(false);
+    form->addRow(tr("Datums"), m_datums);
     form->addRow(tr("Largest feed per tooth"), m_highestFeed);
     for (QDoubleSpinBox *b : {m_overhang, m_equivalentDiameter, m_modulus, m_holderStiffness, m_holderRotational,
                               m_tolerance, m_highestFeed})
@@ -227,7 +235,10 @@ QWidget *MillingPanel::createStructureAndTolerance()
             if (!m_loading)
                 m_springSource->setText(tr("Holder springs: as entered."));
         });
-    connect(m_zone, &QComboBox::activated, this, &MillingPanel::compute);
+    connect(m_zone, &QComboBox::activated, this, [this] {
+        m_datums->setEnabled(m_zone->currentIndex() == 2);
+        compute();
+    });
     connect(m_planButton, &QPushButton::clicked, this, &MillingPanel::plan);
     return box;
 }
@@ -503,6 +514,10 @@ void MillingPanel::loadFeature(const MilledFeature &feature)
             m_holderStiffness->setValue(*t->holderStiffness_N_mm);
             m_holderRotational->setValue(*t->holderRotational_N_mm_rad);
             m_springSource->setText(tr("Holder springs: feature %1's.").arg(feature.id));
+        } else {
+            m_springSource->setText(tr("Feature %1 has no holder springs: these are the last cut's, and saving the "
+                                       "cut gives them to it.")
+                                        .arg(feature.id));
         }
     }
     if (const std::optional<MillingConditions> &c = feature.conditions) {
@@ -516,16 +531,16 @@ void MillingPanel::loadFeature(const MilledFeature &feature)
         m_tilt->setValue(c->tilt_deg);
     }
     if (const std::optional<MillingForceCoefficients> &k = feature.coefficients)
-        m_coefficients->setText(QStringLiteral("%1, %2, %3, %4, %5, %6")
-                                    .arg(k->tangentialCutting_N_mm2)
-                                    .arg(k->radialCutting_N_mm2)
-                                    .arg(k->axialCutting_N_mm2)
-                                    .arg(k->tangentialEdge_N_mm)
-                                    .arg(k->radialEdge_N_mm)
-                                    .arg(k->axialEdge_N_mm));
+        m_coefficients->setText(QStringList{
+            QString::number(k->tangentialCutting_N_mm2, 'g', 12), QString::number(k->radialCutting_N_mm2, 'g', 12),
+            QString::number(k->axialCutting_N_mm2, 'g', 12), QString::number(k->tangentialEdge_N_mm, 'g', 12),
+            QString::number(k->radialEdge_N_mm, 'g', 12), QString::number(k->axialEdge_N_mm, 'g', 12)}
+                                    .join(QStringLiteral(", ")));
     if (const std::optional<MilledTolerance> &t = feature.tolerance) {
         m_tolerance->setValue(t->zone_um);
         m_zone->setCurrentIndex(t->type == MilledToleranceType::Flatness ? 0 : t->datums.isEmpty() ? 1 : 2);
+        m_datums->setText(t->datums.join(QStringLiteral(", ")));
+        m_datums->setEnabled(m_zone->currentIndex() == 2);
     }
     m_loading = false;
     compute();
@@ -548,7 +563,10 @@ MilledFeature MillingPanel::completeFeature(MilledFeature feature) const
     tool.helix_deg = m_helix->value();
     tool.overhang_mm = m_overhang->value();
     tool.equivalentDiameter_mm = m_equivalentDiameter->value();
-    tool.youngsModulus_N_mm2 = m_modulus->value();
+    // Carbide's modulus stays an assumption, said in every result, unless the planner gave another.
+    const bool modulusGiven = feature.tool && feature.tool->youngsModulus_N_mm2;
+    if (modulusGiven || m_modulus->value() != kCarbideModulus_N_mm2)
+        tool.youngsModulus_N_mm2 = m_modulus->value();
     tool.holderStiffness_N_mm = m_holderStiffness->value();
     tool.holderRotational_N_mm_rad = m_holderRotational->value();
     feature.tool = tool;
@@ -556,7 +574,7 @@ MilledFeature MillingPanel::completeFeature(MilledFeature feature) const
     c.cut = static_cast<BallEndCutKind>(m_kind->currentIndex());
     c.direction = static_cast<MillingDirection>(m_direction->currentIndex());
     c.axialDepth_mm = m_axialDepth->value();
-    c.radialDepth_mm = c.cut == BallEndCutKind::Slot ? 0.0 : m_radialDepth->value();
+    c.radialDepth_mm = m_radialDepth->value();
     c.feedPerTooth_mm = m_feedPerTooth->value();
     c.spindle_rpm = m_spindle->value();
     c.lead_deg = m_lead->value();
@@ -566,9 +584,22 @@ MilledFeature MillingPanel::completeFeature(MilledFeature feature) const
     MilledTolerance t;
     t.type = m_zone->currentIndex() == 0 ? MilledToleranceType::Flatness : MilledToleranceType::Profile;
     t.zone_um = m_tolerance->value();
-    t.datums = feature.tolerance ? feature.tolerance->datums : QStringList();
+    if (m_zone->currentIndex() == 2) {
+        static const QRegularExpression separators(QStringLiteral("[,;\\s]+"));
+        t.datums = m_datums->text().split(separators, Qt::SkipEmptyParts);
+    }
     feature.tolerance = t;
     return feature;
+}
+
+QString MillingPanel::featureProblem() const
+{
+    if (!m_coefficients->text().trimmed().isEmpty() && !parseMillingCoefficients(m_coefficients->text()))
+        return tr("Coefficients: \"%1\" is not six numbers; the feature is left as it was.")
+            .arg(m_coefficients->text());
+    if (m_zone->currentIndex() == 2 && m_datums->text().trimmed().isEmpty())
+        return tr("A profile with datums needs its datums (A, B).");
+    return {};
 }
 
 } // namespace tolturn

@@ -45,6 +45,9 @@ public:
     void loadFeature(const MilledFeature &feature);
     // `feature` with the tool, conditions, coefficients and tolerance of the fields.
     [[nodiscard]] MilledFeature completeFeature(MilledFeature feature) const;
+    // Why the fields cannot be saved to a feature (coefficients that do not read, a located profile
+    // without datums); empty when they can.
+    [[nodiscard]] QString featureProblem() const;
 
     [[nodiscard]] MilledFeaturesBox *features() const { return m_features; }
 
@@ -126,6 +129,7 @@ private:
     QLabel *m_springSource;
     QDoubleSpinBox *m_tolerance;
     QComboBox *m_zone;
+    QLineEdit *m_datums;
     QDoubleSpinBox *m_highestFeed;
     QPushButton *m_planButton;
     QTabWidget *m_tabs;
