@@ -81,7 +81,10 @@ std::optional<MillingInput> readOptionsInput(const QCommandLineParser &parser, c
         if (!number)
             return std::nullopt;
         const SeedBallEndCase seed = seedBallEndCases().at(static_cast<std::size_t>(*number - 1));
-        in = {seed.mill, seed.cut, seed.spindle_rpm, {}, {}, seed.number};
+        in.mill = seed.mill;
+        in.cut = seed.cut;
+        in.spindle_rpm = seed.spindle_rpm;
+        in.caseNumber = seed.number;
     } else {
         QStringList missing;
         for (const QCommandLineOption *required : {&o.diameter, &o.flutes, &o.axialDepth, &o.feedPerTooth, &o.spindle})

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop program's main window, offscreen: open an example, see its drawing, survive bad
 // files with a dialog and the document untouched, save, recent files, About.
+#include "tests/gui/milled_features_fixture.h"
 #include "tests/gui/modal.h"
 #include "tests/gui/screenshot.h"
 
@@ -192,29 +193,16 @@ private Q_SLOTS:
     {
         MainWindow w;
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
-        Project p = w.document()->project();
-        MilledFeature flat;
-        flat.id = QStringLiteral("M1");
-        flat.zFrom_mm = 10.0;
-        flat.zTo_mm = 30.0;
-        flat.tool = BallEndTool{12.0, 2, 30.0, 40.0, 9.6, std::nullopt, 6306.0, 1.656e7};
-        flat.conditions =
-            MillingConditions{BallEndCutKind::StepOver, MillingDirection::Down, 0.5, 1.0, 0.05, 3000.0, 10.0, 0.0};
-        flat.coefficients = MillingForceCoefficients{2000.0, 700.0, 400.0, 25.0, 40.0, 8.0};
-        flat.coefficientsSource = QStringLiteral("made up for the picture");
-        flat.tolerance = MilledTolerance{MilledToleranceType::Flatness, 3.0, {}};
-        MilledFeature keyway;
-        keyway.id = QStringLiteral("M2");
-        keyway.kind = MilledFeatureKind::Keyway;
-        keyway.zFrom_mm = 40.0;
-        keyway.zTo_mm = 60.0;
         auto *dock = w.findChild<QDockWidget *>(QStringLiteral("millingDock"));
         QVERIFY(dock);
         dock->raise();
         w.resize(1366, 740);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.document()->setMilledFeatures({flat, keyway}, QStringLiteral("features")).empty());
+        QVERIFY(w.document()
+                    ->setMilledFeatures(test::flatAndImportedKeyway(QStringLiteral("made up for the picture")),
+                                        QStringLiteral("features"))
+                    .empty());
         auto *box = dock->findChild<MilledFeaturesBox *>();
         QVERIFY(box);
         QTRY_VERIFY_WITH_TIMEOUT(!box->evaluations().empty() && !box->isEvaluating(), 10000);

@@ -3,6 +3,7 @@
 // surface error it shows, and the lead–tilt plan. The numbers are the model's, tested in
 // tst_ball_end_forces and tst_ball_end_planning; here one of them is checked by hand through the
 // dock, so that the dock shows the cut it was given.
+#include "tests/gui/milled_features_fixture.h"
 #include "tests/gui/screenshot.h"
 
 #include "core/io/project_file.h"
@@ -30,28 +31,12 @@ using namespace tolturn;
 
 namespace {
 
-// A flat milled with 001's tool in its holder, test coefficients, flatness 3 µm; and a keyway as the
-// STEP import leaves it, with its place only.
+// The stepped shaft with a flat and an imported keyway.
 Project projectWithMilledFeatures()
 {
     Project p =
         *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/stepped-shaft-chuck.tolturn")).project;
-    MilledFeature flat;
-    flat.id = QStringLiteral("M1");
-    flat.zFrom_mm = 10.0;
-    flat.zTo_mm = 30.0;
-    flat.tool = BallEndTool{12.0, 2, 30.0, 40.0, 9.6, std::nullopt, 6306.0, 1.656e7};
-    flat.conditions =
-        MillingConditions{BallEndCutKind::StepOver, MillingDirection::Down, 0.5, 1.0, 0.05, 3000.0, 10.0, 0.0};
-    flat.coefficients = MillingForceCoefficients{2000.0, 700.0, 400.0, 25.0, 40.0, 8.0};
-    flat.coefficientsSource = QStringLiteral("test values");
-    flat.tolerance = MilledTolerance{MilledToleranceType::Flatness, 3.0, {}};
-    MilledFeature keyway;
-    keyway.id = QStringLiteral("M2");
-    keyway.kind = MilledFeatureKind::Keyway;
-    keyway.zFrom_mm = 40.0;
-    keyway.zTo_mm = 60.0;
-    p.milledFeatures = {flat, keyway};
+    p.milledFeatures = test::flatAndImportedKeyway(QStringLiteral("test values"));
     return p;
 }
 
