@@ -55,6 +55,15 @@ void ProfileView::setProfile(const PartProfile &profile, const std::vector<Toler
         Q_EMIT featureSelected(QString());
 }
 
+void ProfileView::redrawKeepingSelection()
+{
+    const QString selected = m_selected;
+    redraw();
+    m_selected.clear();
+    if (!selected.isEmpty())
+        selectFeature(selected);
+}
+
 // Builds the drawing anew (a new profile, or other display units), keeping the zoom; the
 // caller selects again.
 void ProfileView::redraw()
@@ -253,11 +262,7 @@ void ProfileView::setClamping(const std::optional<Clamping> &clamping)
     if (clamping == m_clamping)
         return;
     m_clamping = clamping;
-    const QString selected = m_selected;
-    redraw();
-    m_selected.clear();
-    if (!selected.isEmpty())
-        selectFeature(selected);
+    redrawKeepingSelection();
 }
 
 void ProfileView::clearProfile(const QString &placeholder)
@@ -283,21 +288,19 @@ void ProfileView::fitPart()
 }
 
 // Rows of length dimensions far enough apart for their labels at this zoom: the drawing is built
-// again with the pitch the labels need (at most twice: the pitch changes the fit a little), then
+// again with the pitch the labels need (at most three times: the pitch changes the fit a little), then
 // labels that still collide are moved (declutterDimensionLabels).
 void ProfileView::spaceDimensionRows()
 {
+    if (!isVisible())
+        return; // a view not yet shown has no zoom to space the rows for: resizeEvent fits it when shown
     const double labelHeight = QFontMetricsF(font()).height();
-    for (int pass = 0; pass < 2; ++pass) {
+    for (int pass = 0; pass < 3; ++pass) {
         const double needed = dimensionRowPitch_mm(labelHeight, transform().m11());
         if (std::abs(needed - m_rowPitch_mm) <= 0.1 * needed)
             break;
         m_rowPitch_mm = needed;
-        const QString selected = m_selected;
-        redraw();
-        m_selected.clear();
-        if (!selected.isEmpty())
-            selectFeature(selected);
+        redrawKeepingSelection();
         if (!m_autoFit)
             continue; // the user's zoom stays
         const QRectF bounds = m_scene->itemsBoundingRect();

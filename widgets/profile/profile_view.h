@@ -66,6 +66,7 @@ private:
     [[nodiscard]] ProfilePoint snappedPoint(const QPoint &viewPoint, Qt::KeyboardModifiers modifiers) const;
 
     void redraw();
+    void redrawKeepingSelection();
     [[nodiscard]] double snapGrid_mm(bool fine) const;
 
     QGraphicsScene *m_scene;
