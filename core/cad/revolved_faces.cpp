@@ -248,11 +248,24 @@ public:
             piece->faceArea_mm2 = faceArea(face);
             m_out.pieces.push_back(*piece);
         } else {
-            m_out.leftOut.push_back({index, what, e.zMin, e.zMax, leftOutShape(s)});
+            m_out.leftOut.push_back(leftOutFace(index, what, e, s));
         }
     }
 
 private:
+    [[nodiscard]] LeftOutFace leftOutFace(int index, const QString &what, const Extent &e,
+                                          const GeomAdaptor_Surface &s) const
+    {
+        LeftOutFace f{index, what, e.zMin, e.zMax, leftOutShape(s), {}, 0.0};
+        if (f.shape == LeftOutShape::PlaneAlongAxis) {
+            const gp_Pln pln = s.Plane();
+            const gp_Dir n = pln.Axis().Direction();
+            f.planeNormal = {n.X(), n.Y(), n.Z()};
+            f.axisDistance_mm = pln.Distance(m_frame.axis.Location());
+        }
+        return f;
+    }
+
     // Called for a face left out: a plane there is not across the axis (plane() takes those).
     [[nodiscard]] LeftOutShape leftOutShape(const GeomAdaptor_Surface &s) const
     {

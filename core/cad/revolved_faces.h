@@ -8,6 +8,7 @@
 #include <QString>
 
 #include <TopoDS_Shape.hxx>
+#include <array>
 #include <functional>
 #include <gp_Ax1.hxx>
 #include <vector>
@@ -39,6 +40,10 @@ struct LeftOutFace {
     double zMin_mm = 0.0; // along the axis, in the same frame as the section pieces
     double zMax_mm = 0.0;
     LeftOutShape shape = LeftOutShape::Other;
+    // A plane along the axis: its unit normal (model frame, either sense) and its distance from the
+    // axis, which tell a keyway's sides (across its bottom, nearer the axis) from flats side by side.
+    std::array<double, 3> planeNormal{};
+    double axisDistance_mm = 0.0;
 };
 
 struct SectionTrace {

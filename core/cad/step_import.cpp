@@ -403,19 +403,52 @@ std::vector<FaceGroup> groupByZ(const std::vector<cad::LeftOutFace> &faces, cons
     return groups;
 }
 
-// Two or more planes along the axis (sides and bottom) are a keyway; one alone, with no plane at
-// a slant, a flat; anything else (cross holes, eccentrics) is no milled feature.
-std::optional<MilledFeatureKind> milledKind(const FaceGroup &g)
+bool isPlaneAlongAxis(const PlacedFace &p)
 {
-    const auto count = [&g](cad::LeftOutShape shape) {
-        return std::count_if(g.faces.begin(), g.faces.end(), [shape](const auto &p) { return p.face->shape == shape; });
-    };
-    const auto along = count(cad::LeftOutShape::PlaneAlongAxis);
-    if (along >= 2)
-        return MilledFeatureKind::Keyway;
-    if (along == 1 && count(cad::LeftOutShape::PlaneAtSlant) == 0)
-        return MilledFeatureKind::Flat;
-    return std::nullopt;
+    return p.face->shape == cad::LeftOutShape::PlaneAlongAxis;
+}
+
+// A keyway has a bottom and sides across it (normals at right angles) that are nearer the axis than
+// the bottom; flats side by side (two wrench flats, a square, a hexagon) have no such pair.
+bool hasKeywaySides(const FaceGroup &g)
+{
+    constexpr double kAcross =
+        1e-6; // |cos| between the normals: 90° within the 1 µrad the section's planes are read to
+    for (const PlacedFace &bottom : g.faces) {
+        for (const PlacedFace &side : g.faces) {
+            if (!isPlaneAlongAxis(bottom) || !isPlaneAlongAxis(side))
+                continue;
+            const auto &a = bottom.face->planeNormal;
+            const auto &b = side.face->planeNormal;
+            const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+            if (std::abs(cosine) < kAcross &&
+                side.face->axisDistance_mm < bottom.face->axisDistance_mm - kFeatureJoin_mm)
+                return true;
+        }
+    }
+    return false;
+}
+
+// The milled features a group of faces makes: a keyway (planes along the axis with sides across
+// the bottom) is one, with all its faces; flats side by side, with no plane at a slant, are one
+// each; anything else (cross holes, eccentrics, ramps) is no milled feature.
+std::vector<std::pair<FaceGroup, MilledFeatureKind>> milledFeaturesOf(const FaceGroup &g)
+{
+    const auto along = std::count_if(g.faces.begin(), g.faces.end(), isPlaneAlongAxis);
+    const auto slanted = std::count_if(g.faces.begin(), g.faces.end(), [](const PlacedFace &p) {
+        return p.face->shape == cad::LeftOutShape::PlaneAtSlant;
+    });
+    if (along >= 2 && hasKeywaySides(g))
+        return {{g, MilledFeatureKind::Keyway}};
+    if (along == 0 || slanted > 0)
+        return {};
+    if (along == 1)
+        return {{g, MilledFeatureKind::Flat}};
+    std::vector<std::pair<FaceGroup, MilledFeatureKind>> flats;
+    for (const PlacedFace &p : g.faces)
+        if (isPlaneAlongAxis(p))
+            flats.push_back({FaceGroup{{p}, p.zFrom_mm, p.zTo_mm}, MilledFeatureKind::Flat});
+    return flats;
 }
 
 // The next "M<n>" that is no feature of the profile.
@@ -477,12 +510,13 @@ void reportLeftOut(const std::vector<cad::LeftOutFace> &faces, const cad::Placem
     std::vector<const cad::LeftOutFace *> featured;
     int nextId = 1;
     for (const FaceGroup &g : groupByZ(faces, place)) {
-        const auto kind = profile ? milledKind(g) : std::nullopt;
-        if (!kind)
+        if (!profile)
             continue;
-        addMilledFeature(g, *kind, *profile, nextId, result);
-        for (const PlacedFace &p : g.faces)
-            featured.push_back(p.face);
+        for (const auto &[feature, kind] : milledFeaturesOf(g)) {
+            addMilledFeature(feature, kind, *profile, nextId, result);
+            for (const PlacedFace &p : feature.faces)
+                featured.push_back(p.face);
+        }
     }
     for (const cad::LeftOutFace &f : faces) {
         if (std::find(featured.begin(), featured.end(), &f) == featured.end())

@@ -270,6 +270,14 @@ TopoDS_Shape barWith(const QString &cut)
         return cutBox(bar, gp_Pnt(8, -20, 30), gp_Pnt(20, 20, 60));
     if (cut == QLatin1String("keyway"))
         return cutBox(bar, gp_Pnt(7, -2.5, 10), gp_Pnt(12, 2.5, 40));
+    if (cut == QLatin1String("wrench flats")) // the flat and its opposite, x = -8
+        return cutBox(cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35)), gp_Pnt(-20, -20, 15), gp_Pnt(-8, 20, 35));
+    if (cut == QLatin1String("square")) { // the wrench flats and y = ±8: a square 16 across flats
+        TopoDS_Shape s = cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35));
+        s = cutBox(s, gp_Pnt(-20, -20, 15), gp_Pnt(-8, 20, 35));
+        s = cutBox(s, gp_Pnt(-20, 8, 15), gp_Pnt(20, 20, 35));
+        return cutBox(s, gp_Pnt(-20, -20, 15), gp_Pnt(20, -8, 35));
+    }
     const auto turned = [](const gp_Pnt &low, const gp_Pnt &high, const gp_Pnt &about, double degrees) {
         gp_Trsf turn;
         turn.SetRotation(gp_Ax1(about, gp_Dir(0, 1, 0)), degrees * std::numbers::pi / 180.0);
@@ -729,6 +737,31 @@ private Q_SLOTS:
         QCOMPARE(r.milledFeatures.size(), std::size_t{1});
         expectMilledFeature(r, 0, QStringLiteral("M1"), static_cast<MilledFeatureKind>(kind), {zFrom, zTo});
         QVERIFY2(faceWarnings(r) == 0, qPrintable(errorsOf(r)));
+    }
+
+    void flatsSideBySide_data()
+    {
+        QTest::addColumn<QString>("cut");
+        QTest::addColumn<int>("flats");
+        QTest::newRow("wrench flats") << QStringLiteral("wrench flats") << 2;
+        QTest::newRow("square") << QStringLiteral("square") << 4;
+    }
+
+    // Flats side by side over the same length (two wrench flats; a square, whose sides are at
+    // right angles but as far from the axis as each other) are a flat each, not one keyway.
+    void flatsSideBySide()
+    {
+        QFETCH(QString, cut);
+        QFETCH(int, flats);
+        const QString path =
+            m_dir.filePath(QStringLiteral("bar-%1.step").arg(cut).replace(QLatin1Char(' '), QLatin1Char('-')));
+        writeStep(barWith(cut), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        QCOMPARE(r.milledFeatures.size(), static_cast<std::size_t>(flats));
+        for (int i = 0; i < flats; ++i)
+            expectMilledFeature(r, static_cast<std::size_t>(i), QStringLiteral("M%1").arg(i + 1),
+                                MilledFeatureKind::Flat, {15.0, 35.0});
     }
 
     void slantedFlatStaysAWarning_data()
