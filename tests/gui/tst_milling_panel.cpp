@@ -186,6 +186,13 @@ private Q_SLOTS:
         box->addButton()->click();
         QCOMPARE(document.project().milledFeatures.size(), std::size_t{2});
         QVERIFY2(panel.summary()->text().contains(QStringLiteral("overhang")), qPrintable(panel.summary()->text()));
+        // A source without coefficients would be lost on saving: refused, named.
+        overhang->setValue(40.0);
+        panel.coefficients()->clear();
+        box->addButton()->click();
+        QCOMPARE(document.project().milledFeatures.size(), std::size_t{2});
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("Coefficients from: &quot;test values&quot;")),
+                 qPrintable(panel.summary()->text()));
 
         // A feature removed leaves nothing chosen, so no cut is saved to the one that takes its row;
         // the one still there stays chosen by its id after an edit that moves it.

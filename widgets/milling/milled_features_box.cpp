@@ -275,6 +275,17 @@ MilledFeature MilledFeaturesBox::propertiesFromFields(MilledFeature feature) con
     return m_completeFromFields(std::move(feature));
 }
 
+// The project keeps a source with the coefficients it is the source of: one without them would be
+// lost on saving, so it is refused, named.
+QString MilledFeaturesBox::sourceWithoutCoefficients(const MilledFeature &f)
+{
+    if (f.coefficients || f.coefficientsSource.isEmpty())
+        return {};
+    return tr("Coefficients from: \"%1\" is given but there are no coefficients (Ktc, Krc, Kac, Kte, Kre, Kae) to go "
+              "with it; enter them, or clear the field.")
+        .arg(f.coefficientsSource);
+}
+
 QString MilledFeaturesBox::nextId() const
 {
     for (int n = 1;; ++n) {
@@ -302,6 +313,8 @@ QString MilledFeaturesBox::addFromFields()
     MilledFeature feature;
     feature.id = nextId();
     feature = propertiesFromFields(std::move(feature));
+    if (QString problem = sourceWithoutCoefficients(feature); !problem.isEmpty())
+        return problem;
     std::vector<MilledFeature> features = m_document->project().milledFeatures;
     features.push_back(feature);
     QString refused = apply(features, tr("Add milled feature %1").arg(feature.id));
@@ -320,6 +333,8 @@ QString MilledFeaturesBox::saveToChosen()
     std::vector<MilledFeature> features = m_document->project().milledFeatures;
     MilledFeature &f = features[static_cast<std::size_t>(row)];
     f = propertiesFromFields(f);
+    if (QString problem = sourceWithoutCoefficients(f); !problem.isEmpty())
+        return problem;
     return apply(features, tr("Change milled feature %1").arg(f.id));
 }
 

@@ -72,6 +72,7 @@ private:
     [[nodiscard]] int chosenRow() const;
     [[nodiscard]] const MilledFeatureEvaluation *evaluationOf(int row) const;
     [[nodiscard]] MilledFeature propertiesFromFields(MilledFeature feature) const;
+    [[nodiscard]] static QString sourceWithoutCoefficients(const MilledFeature &f);
     [[nodiscard]] QString nextId() const;
     QString apply(const std::vector<MilledFeature> &features, const QString &description);
 
