@@ -7418,6 +7418,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Evaluating…</source>
         <translation>Wird bewertet…</translation>
     </message>
+    <message>
+        <source>Coefficients from: &quot;%1&quot; is given but there are no coefficients (Ktc, Krc, Kac, Kte, Kre, Kae) to go with it; enter them, or clear the field.</source>
+        <translation>Koeffizienten aus: „%1“ ist angegeben, aber es gibt keine Koeffizienten (Ktc, Krc, Kac, Kte, Kre, Kae) dazu; geben Sie sie ein oder leeren Sie das Feld.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::MillingPanel</name>

@@ -7418,6 +7418,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Evaluating…</source>
         <translation>Evaluando…</translation>
     </message>
+    <message>
+        <source>Coefficients from: &quot;%1&quot; is given but there are no coefficients (Ktc, Krc, Kac, Kte, Kre, Kae) to go with it; enter them, or clear the field.</source>
+        <translation>Fuente de los coeficientes: se indica «%1», pero no hay coeficientes (Ktc, Krc, Kac, Kte, Kre, Kae) a los que corresponda; introdúzcalos o vacíe el campo.</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::MillingPanel</name>
