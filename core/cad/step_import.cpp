@@ -447,7 +447,7 @@ std::vector<std::pair<FaceGroup, MilledFeatureKind>> milledFeaturesOf(const Face
     std::vector<std::pair<FaceGroup, MilledFeatureKind>> flats;
     for (const PlacedFace &p : g.faces)
         if (isPlaneAlongAxis(p))
-            flats.push_back({FaceGroup{{p}, p.zFrom_mm, p.zTo_mm}, MilledFeatureKind::Flat});
+            flats.emplace_back(FaceGroup{{p}, p.zFrom_mm, p.zTo_mm}, MilledFeatureKind::Flat);
     return flats;
 }
 

@@ -187,6 +187,31 @@ private Q_SLOTS:
         test::saveScreenshot(w, "window-1600x1000.png");
     }
 
+    // The drawing is fitted to the view once it is shown, whatever was done to the document before:
+    // edits made before the window opens (a script, a restored session) leave the same zoom as none.
+    void drawingDoesNotDependOnEditsBeforeShow()
+    {
+        const auto zoomAfterShow = [](int editsBefore) {
+            MainWindow w;
+            if (!w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")))
+                return 0.0;
+            for (int i = 0; i < editsBefore; ++i)
+                (void)w.document()->setMilledFeatures(test::flatAndImportedKeyway(QStringLiteral("edit %1").arg(i)),
+                                                      QStringLiteral("features"));
+            w.resize(1366, 740);
+            w.show();
+            if (!QTest::qWaitForWindowExposed(&w))
+                return 0.0;
+            QTest::qWait(50);
+            return w.findChild<ProfileView *>(QStringLiteral("profileView"))->transform().m11();
+        };
+        const double unedited = zoomAfterShow(0);
+        const double edited = zoomAfterShow(3);
+        QVERIFY(unedited > 0.0);
+        QVERIFY2(std::abs(edited - unedited) <= 0.01 * unedited,
+                 qPrintable(QStringLiteral("%1 px/mm after edits, %2 without").arg(edited).arg(unedited)));
+    }
+
     // The Milling dock of an open project lists its milled features, and at a laptop's size the
     // list shows each of them with its verdict (the dock's inputs scroll).
     void millingDockListsTheMilledFeatures()

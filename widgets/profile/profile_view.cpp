@@ -288,18 +288,20 @@ void ProfileView::fitPart()
 }
 
 // Rows of length dimensions far enough apart for their labels at this zoom: the drawing is built
-// again with the pitch the labels need (at most three times: the pitch changes the fit a little), then
-// labels that still collide are moved (declutterDimensionLabels).
+// again with the pitch the labels need until the rows are at least that far apart at the zoom the
+// pitch gives (at most four times), then labels that still collide are moved
+// (declutterDimensionLabels).
 void ProfileView::spaceDimensionRows()
 {
     if (!isVisible())
         return; // a view not yet shown has no zoom to space the rows for: resizeEvent fits it when shown
     const double labelHeight = QFontMetricsF(font()).height();
-    for (int pass = 0; pass < 3; ++pass) {
+    for (int pass = 0; pass < 4; ++pass) {
         const double needed = dimensionRowPitch_mm(labelHeight, transform().m11());
-        if (std::abs(needed - m_rowPitch_mm) <= 0.1 * needed)
+        if (m_rowPitch_mm >= needed && m_rowPitch_mm <= 1.25 * needed)
             break;
-        m_rowPitch_mm = needed;
+        // A little above what this zoom needs: wider rows make the fit smaller, which needs wider rows.
+        m_rowPitch_mm = 1.1 * needed;
         redrawKeepingSelection();
         if (!m_autoFit)
             continue; // the user's zoom stays
