@@ -540,6 +540,15 @@ class TestStepImport : public QObject {
     Q_OBJECT
     QTemporaryDir m_dir;
 
+    // The bar with `cut` (barWith), written as STEP and imported.
+    CadImportResult importBarWith(const QString &cut)
+    {
+        const QString path =
+            m_dir.filePath(QStringLiteral("bar-%1.step").arg(cut).replace(QLatin1Char(' '), QLatin1Char('-')));
+        writeStep(barWith(cut), path);
+        return importCadFile(path);
+    }
+
 private Q_SLOTS:
 
     void initTestCase()
@@ -723,10 +732,7 @@ private Q_SLOTS:
         QFETCH(int, kind);
         QFETCH(double, zFrom);
         QFETCH(double, zTo);
-        const QString path =
-            m_dir.filePath(QStringLiteral("bar-%1.step").arg(cut).replace(QLatin1Char(' '), QLatin1Char('-')));
-        writeStep(barWith(cut), path);
-        const CadImportResult r = importCadFile(path);
+        const CadImportResult r = importBarWith(cut);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
         QCOMPARE(r.profile->length_mm(), 50.0);
         if (kind < 0) {
@@ -753,10 +759,7 @@ private Q_SLOTS:
     {
         QFETCH(QString, cut);
         QFETCH(int, flats);
-        const QString path =
-            m_dir.filePath(QStringLiteral("bar-%1.step").arg(cut).replace(QLatin1Char(' '), QLatin1Char('-')));
-        writeStep(barWith(cut), path);
-        const CadImportResult r = importCadFile(path);
+        const CadImportResult r = importBarWith(cut);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
         QCOMPARE(r.milledFeatures.size(), static_cast<std::size_t>(flats));
         for (int i = 0; i < flats; ++i)
@@ -776,10 +779,7 @@ private Q_SLOTS:
     void slantedFlatStaysAWarning()
     {
         QFETCH(QString, cut);
-        const QString path =
-            m_dir.filePath(QStringLiteral("bar-%1.step").arg(cut).replace(QLatin1Char(' '), QLatin1Char('-')));
-        writeStep(barWith(cut), path);
-        const CadImportResult r = importCadFile(path);
+        const CadImportResult r = importBarWith(cut);
         QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
         QVERIFY(r.milledFeatures.empty());
         QVERIFY2(faceWarnings(r, QStringLiteral("a plane not perpendicular to the axis")) >= 1,
