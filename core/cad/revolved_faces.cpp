@@ -8,6 +8,7 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepGProp.hxx>
+#include <BRepGProp_Face.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
@@ -248,21 +249,31 @@ public:
             piece->faceArea_mm2 = faceArea(face);
             m_out.pieces.push_back(*piece);
         } else {
-            m_out.leftOut.push_back(leftOutFace(index, what, e, s));
+            m_out.leftOut.push_back(leftOutFace(index, what, e, face, s));
         }
     }
 
 private:
-    [[nodiscard]] LeftOutFace leftOutFace(int index, const QString &what, const Extent &e,
+    [[nodiscard]] LeftOutFace leftOutFace(int index, const QString &what, const Extent &e, const TopoDS_Face &face,
                                           const GeomAdaptor_Surface &s) const
     {
         LeftOutFace f{index, what, e.zMin, e.zMax, leftOutShape(s), {}, 0.0};
-        if (f.shape == LeftOutShape::PlaneAlongAxis) {
-            const gp_Pln pln = s.Plane();
-            const gp_Dir n = pln.Axis().Direction();
-            f.planeNormal = {n.X(), n.Y(), n.Z()};
-            f.axisDistance_mm = pln.Distance(m_frame.axis.Location());
-        }
+        if (f.shape != LeftOutShape::PlaneAlongAxis)
+            return f;
+        // The face's own normal, turned with its orientation, points out of the material.
+        double u0 = 0.0;
+        double u1 = 0.0;
+        double v0 = 0.0;
+        double v1 = 0.0;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        gp_Pnt point;
+        gp_Vec normal;
+        BRepGProp_Face(face).Normal(0.5 * (u0 + u1), 0.5 * (v0 + v1), point, normal);
+        if (normal.Magnitude() <= 0.0)
+            return f;
+        normal.Normalize();
+        f.outwardNormal = {normal.X(), normal.Y(), normal.Z()};
+        f.axisOffset_mm = normal.Dot(gp_Vec(m_frame.axis.Location(), point));
         return f;
     }
 

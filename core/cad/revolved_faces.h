@@ -40,10 +40,11 @@ struct LeftOutFace {
     double zMin_mm = 0.0; // along the axis, in the same frame as the section pieces
     double zMax_mm = 0.0;
     LeftOutShape shape = LeftOutShape::Other;
-    // A plane along the axis: its unit normal (model frame, either sense) and its distance from the
-    // axis, which tell a keyway's sides (across its bottom, nearer the axis) from flats side by side.
-    std::array<double, 3> planeNormal{};
-    double axisDistance_mm = 0.0;
+    // A plane along the axis: its unit normal out of the material (model frame) and its offset
+    // n·(P − A) from the axis along it. A flat, or a keyway's bottom, faces away from the axis
+    // (offset > 0); a side of a keyway or slot faces the slot, towards the axis (offset < 0).
+    std::array<double, 3> outwardNormal{};
+    double axisOffset_mm = 0.0;
 };
 
 struct SectionTrace {

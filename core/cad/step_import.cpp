@@ -408,47 +408,80 @@ bool isPlaneAlongAxis(const PlacedFace &p)
     return p.face->shape == cad::LeftOutShape::PlaneAlongAxis;
 }
 
-// A keyway has a bottom and sides across it (normals at right angles) that are nearer the axis than
-// the bottom; flats side by side (two wrench flats, a square, a hexagon) have no such pair.
-bool hasKeywaySides(const FaceGroup &g)
+// A side of a keyway or slot faces the slot, towards the axis; a flat, or a keyway's bottom, faces
+// away from it. A plane through the axis (a flat cut to the centre) is a flat.
+bool facesTheAxis(const PlacedFace &p)
 {
-    constexpr double kAcross =
-        1e-6; // |cos| between the normals: 90° within the 1 µrad the section's planes are read to
-    for (const PlacedFace &bottom : g.faces) {
-        for (const PlacedFace &side : g.faces) {
-            if (!isPlaneAlongAxis(bottom) || !isPlaneAlongAxis(side))
-                continue;
-            const auto &a = bottom.face->planeNormal;
-            const auto &b = side.face->planeNormal;
-            const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-            if (std::abs(cosine) < kAcross &&
-                side.face->axisDistance_mm < bottom.face->axisDistance_mm - kFeatureJoin_mm)
-                return true;
-        }
-    }
-    return false;
+    return isPlaneAlongAxis(p) && p.face->axisOffset_mm < -kFeatureJoin_mm;
 }
 
-// The milled features a group of faces makes: a keyway (planes along the axis with sides across
-// the bottom) is one, with all its faces; flats side by side, with no plane at a slant, are one
-// each; anything else (cross holes, eccentrics, ramps) is no milled feature.
+bool samePlane(const PlacedFace &a, const PlacedFace &b)
+{
+    constexpr double kParallel = 1e-6; // 1 − cos between the outward normals: the 1 µrad the planes are read to
+    const auto &n = a.face->outwardNormal;
+    const auto &m = b.face->outwardNormal;
+    return n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > 1.0 - kParallel &&
+           std::abs(a.face->axisOffset_mm - b.face->axisOffset_mm) <= kFeatureJoin_mm;
+}
+
+// The flats of a group with several planes along the axis, none facing it: the faces of one plane
+// are one flat; the group's other faces (end walls, a cross hole) join the first flat whose z
+// range they meet, or the first flat.
+std::vector<FaceGroup> flatsSideBySide(const FaceGroup &g)
+{
+    std::vector<FaceGroup> flats;
+    for (const PlacedFace &p : g.faces) {
+        if (!isPlaneAlongAxis(p))
+            continue;
+        const auto plane = std::find_if(flats.begin(), flats.end(),
+                                        [&p](const FaceGroup &f) { return samePlane(f.faces.front(), p); });
+        if (plane == flats.end()) {
+            flats.push_back({{p}, p.zFrom_mm, p.zTo_mm});
+            continue;
+        }
+        plane->faces.push_back(p);
+        plane->zFrom_mm = std::min(plane->zFrom_mm, p.zFrom_mm);
+        plane->zTo_mm = std::max(plane->zTo_mm, p.zTo_mm);
+    }
+    std::stable_sort(flats.begin(), flats.end(), [](const auto &a, const auto &b) { return a.zFrom_mm < b.zFrom_mm; });
+    for (const PlacedFace &p : g.faces) {
+        if (isPlaneAlongAxis(p))
+            continue;
+        const auto meets = std::find_if(flats.begin(), flats.end(), [&p](const FaceGroup &f) {
+            return p.zFrom_mm <= f.zTo_mm + kFeatureJoin_mm && p.zTo_mm >= f.zFrom_mm - kFeatureJoin_mm;
+        });
+        FaceGroup &flat = meets == flats.end() ? flats.front() : *meets;
+        flat.faces.push_back(p);
+        flat.zFrom_mm = std::min(flat.zFrom_mm, p.zFrom_mm);
+        flat.zTo_mm = std::max(flat.zTo_mm, p.zTo_mm);
+    }
+    for (FaceGroup &f : flats)
+        std::sort(f.faces.begin(), f.faces.end(),
+                  [](const auto &a, const auto &b) { return a.face->face < b.face->face; });
+    return flats;
+}
+
+// The milled features a group of faces makes: with a plane along the axis that faces it (the side
+// of a keyway or slot, whatever its bottom), one keyway with all its faces; with planes along the
+// axis that all face away from it and none at a slant, a flat for each plane (one flat; spanner
+// flats, a square, a hexagon); anything else (cross holes, eccentrics, ramps) no milled feature.
 std::vector<std::pair<FaceGroup, MilledFeatureKind>> milledFeaturesOf(const FaceGroup &g)
 {
-    const auto along = std::count_if(g.faces.begin(), g.faces.end(), isPlaneAlongAxis);
-    const auto slanted = std::count_if(g.faces.begin(), g.faces.end(), [](const PlacedFace &p) {
+    if (std::any_of(g.faces.begin(), g.faces.end(), facesTheAxis))
+        return {{g, MilledFeatureKind::Keyway}};
+    const bool slanted = std::any_of(g.faces.begin(), g.faces.end(), [](const PlacedFace &p) {
         return p.face->shape == cad::LeftOutShape::PlaneAtSlant;
     });
-    if (along >= 2 && hasKeywaySides(g))
-        return {{g, MilledFeatureKind::Keyway}};
-    if (along == 0 || slanted > 0)
+    if (slanted || std::none_of(g.faces.begin(), g.faces.end(), isPlaneAlongAxis))
         return {};
-    if (along == 1)
+    std::vector<FaceGroup> flats = flatsSideBySide(g);
+    if (flats.size() == 1)
         return {{g, MilledFeatureKind::Flat}};
-    std::vector<std::pair<FaceGroup, MilledFeatureKind>> flats;
-    for (const PlacedFace &p : g.faces)
-        if (isPlaneAlongAxis(p))
-            flats.emplace_back(FaceGroup{{p}, p.zFrom_mm, p.zTo_mm}, MilledFeatureKind::Flat);
-    return flats;
+    std::vector<std::pair<FaceGroup, MilledFeatureKind>> features;
+    features.reserve(flats.size());
+    for (FaceGroup &f : flats)
+        features.emplace_back(std::move(f), MilledFeatureKind::Flat);
+    return features;
 }
 
 // The next "M<n>" that is no feature of the profile.

@@ -272,11 +272,26 @@ TopoDS_Shape barWith(const QString &cut)
         return cutBox(bar, gp_Pnt(7, -2.5, 10), gp_Pnt(12, 2.5, 40));
     if (cut == QLatin1String("wrench flats")) // the flat and its opposite, x = -8
         return cutBox(cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35)), gp_Pnt(-20, -20, 15), gp_Pnt(-8, 20, 35));
-    if (cut == QLatin1String("square")) { // the wrench flats and y = ±8: a square 16 across flats
+    if (cut == QLatin1String("square") || cut == QLatin1String("rectangle")) { // 16 x 16 or 16 x 17 across flats
+        const double y = cut == QLatin1String("square") ? 8.0 : 8.5;
         TopoDS_Shape s = cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35));
         s = cutBox(s, gp_Pnt(-20, -20, 15), gp_Pnt(-8, 20, 35));
-        s = cutBox(s, gp_Pnt(-20, 8, 15), gp_Pnt(20, 20, 35));
-        return cutBox(s, gp_Pnt(-20, -20, 15), gp_Pnt(20, -8, 35));
+        s = cutBox(s, gp_Pnt(-20, y, 15), gp_Pnt(20, 20, 35));
+        return cutBox(s, gp_Pnt(-20, -20, 15), gp_Pnt(20, -y, 35));
+    }
+    if (cut == QLatin1String("flats at right angles")) // x = 8 and y = 6, z 15 to 35
+        return cutBox(cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35)), gp_Pnt(-20, 6, 15), gp_Pnt(20, 20, 35));
+    if (cut == QLatin1String("flat in two cuts")) // x = 8, z 15 to 28 and 22 to 35
+        return cutBox(cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 28)), gp_Pnt(8, -20, 22), gp_Pnt(20, 20, 35));
+    if (cut == QLatin1String("wrench flats and a cross hole")) {
+        const TopoDS_Shape flats = barWith(QStringLiteral("wrench flats"));
+        const gp_Ax2 holeAxis(gp_Pnt(0, -20, 25), gp_Dir(0, 1, 0));
+        return BRepAlgoAPI_Cut(flats, BRepPrimAPI_MakeCylinder(holeAxis, 2.0, 40.0).Shape()).Shape();
+    }
+    if (cut == QLatin1String("round-bottom keyway")) { // 5 wide, its bottom a half cylinder R2.5 at x = 7.5
+        const TopoDS_Shape sides = cutBox(bar, gp_Pnt(7.5, -2.5, 10), gp_Pnt(12, 2.5, 40));
+        const gp_Ax2 bottomAxis(gp_Pnt(7.5, 0, 10), gp_Dir(0, 0, 1));
+        return BRepAlgoAPI_Cut(sides, BRepPrimAPI_MakeCylinder(bottomAxis, 2.5, 30.0).Shape()).Shape();
     }
     const auto turned = [](const gp_Pnt &low, const gp_Pnt &high, const gp_Pnt &about, double degrees) {
         gp_Trsf turn;
@@ -720,6 +735,9 @@ private Q_SLOTS:
         QTest::newRow("flat over the end") << QStringLiteral("flat over the end") << flat << 30.0 << 50.0;
         QTest::newRow("keyway") << QStringLiteral("keyway") << static_cast<int>(MilledFeatureKind::Keyway) << 10.0
                                 << 40.0;
+        // Its sides face the axis, whatever its bottom.
+        QTest::newRow("round-bottom keyway")
+            << QStringLiteral("round-bottom keyway") << static_cast<int>(MilledFeatureKind::Keyway) << 10.0 << 40.0;
         // z 25 ± 2, from points sampled along the hole's intersection curves.
         QTest::newRow("cross hole") << QStringLiteral("cross hole") << -1 << 23.0 << 27.0;
     }
@@ -751,10 +769,15 @@ private Q_SLOTS:
         QTest::addColumn<int>("flats");
         QTest::newRow("wrench flats") << QStringLiteral("wrench flats") << 2;
         QTest::newRow("square") << QStringLiteral("square") << 4;
+        QTest::newRow("rectangle") << QStringLiteral("rectangle") << 4;
+        QTest::newRow("flats at right angles") << QStringLiteral("flats at right angles") << 2;
+        QTest::newRow("flat in two cuts") << QStringLiteral("flat in two cuts") << 1;
+        QTest::newRow("wrench flats and a cross hole") << QStringLiteral("wrench flats and a cross hole") << 2;
     }
 
-    // Flats side by side over the same length (two wrench flats; a square, whose sides are at
-    // right angles but as far from the axis as each other) are a flat each, not one keyway.
+    // Flats side by side over the same length (spanner flats, a square, a rectangle, two flats at
+    // right angles, however deep: every plane faces away from the axis) are a flat each, not one
+    // keyway; the faces of one plane are one flat; a cross hole among them joins a flat.
     void flatsSideBySide()
     {
         QFETCH(QString, cut);
@@ -765,6 +788,7 @@ private Q_SLOTS:
         for (int i = 0; i < flats; ++i)
             expectMilledFeature(r, static_cast<std::size_t>(i), QStringLiteral("M%1").arg(i + 1),
                                 MilledFeatureKind::Flat, {15.0, 35.0});
+        QVERIFY2(faceWarnings(r) == 0, qPrintable(errorsOf(r)));
     }
 
     void slantedFlatStaysAWarning_data()

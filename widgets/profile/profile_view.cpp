@@ -293,8 +293,9 @@ void ProfileView::fitPart()
 // (declutterDimensionLabels).
 void ProfileView::spaceDimensionRows()
 {
-    if (!isVisible())
-        return; // a view not yet shown has no zoom to space the rows for: resizeEvent fits it when shown
+    m_rowsToSpace = !isVisible();
+    if (m_rowsToSpace)
+        return; // a hidden view has no zoom to space the rows for: showEvent does it
     const double labelHeight = QFontMetricsF(font()).height();
     for (int pass = 0; pass < 4; ++pass) {
         const double needed = dimensionRowPitch_mm(labelHeight, transform().m11());
@@ -318,6 +319,17 @@ void ProfileView::resizeEvent(QResizeEvent *event)
     QGraphicsView::resizeEvent(event);
     if (m_autoFit)
         fitPart();
+}
+
+void ProfileView::showEvent(QShowEvent *event)
+{
+    QGraphicsView::showEvent(event);
+    if (!m_rowsToSpace)
+        return;
+    if (m_autoFit)
+        fitPart();
+    else
+        spaceDimensionRows();
 }
 
 void ProfileView::wheelEvent(QWheelEvent *event)

@@ -51,6 +51,7 @@ Q_SIGNALS:
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
+    void showEvent(QShowEvent *event) override;
     // With no part open: what to do to get one (the empty state of the main window).
     void drawForeground(QPainter *painter, const QRectF &rect) override;
     void wheelEvent(QWheelEvent *event) override;
@@ -76,6 +77,7 @@ private:
     QGraphicsItem *m_dragged = nullptr; // the vertex handle being dragged
     ProfilePoint m_dragTo;
     bool m_autoFit = true;
+    bool m_rowsToSpace = false; // drawn while hidden: the rows are spaced when the view is shown
     std::optional<Clamping> m_clamping;
     double m_rowPitch_mm = 0.0; // between rows of length dimensions, for their labels at this zoom
     QString m_selected;
