@@ -424,6 +424,14 @@ bool samePlane(const PlacedFace &a, const PlacedFace &b)
            std::abs(a.face->axisOffset_mm - b.face->axisOffset_mm) <= kFeatureJoin_mm;
 }
 
+// `p` in `group`, whose z range grows to take it.
+void join(FaceGroup &group, const PlacedFace &p)
+{
+    group.faces.push_back(p);
+    group.zFrom_mm = std::min(group.zFrom_mm, p.zFrom_mm);
+    group.zTo_mm = std::max(group.zTo_mm, p.zTo_mm);
+}
+
 // The flats of a group with several planes along the axis, none facing it: the faces of one plane
 // are one flat; the group's other faces (end walls, a cross hole) join the first flat whose z
 // range they meet, or the first flat.
@@ -439,9 +447,7 @@ std::vector<FaceGroup> flatsSideBySide(const FaceGroup &g)
             flats.push_back({{p}, p.zFrom_mm, p.zTo_mm});
             continue;
         }
-        plane->faces.push_back(p);
-        plane->zFrom_mm = std::min(plane->zFrom_mm, p.zFrom_mm);
-        plane->zTo_mm = std::max(plane->zTo_mm, p.zTo_mm);
+        join(*plane, p);
     }
     std::stable_sort(flats.begin(), flats.end(), [](const auto &a, const auto &b) { return a.zFrom_mm < b.zFrom_mm; });
     for (const PlacedFace &p : g.faces) {
@@ -450,10 +456,7 @@ std::vector<FaceGroup> flatsSideBySide(const FaceGroup &g)
         const auto meets = std::find_if(flats.begin(), flats.end(), [&p](const FaceGroup &f) {
             return p.zFrom_mm <= f.zTo_mm + kFeatureJoin_mm && p.zTo_mm >= f.zFrom_mm - kFeatureJoin_mm;
         });
-        FaceGroup &flat = meets == flats.end() ? flats.front() : *meets;
-        flat.faces.push_back(p);
-        flat.zFrom_mm = std::min(flat.zFrom_mm, p.zFrom_mm);
-        flat.zTo_mm = std::max(flat.zTo_mm, p.zTo_mm);
+        join(meets == flats.end() ? flats.front() : *meets, p);
     }
     for (FaceGroup &f : flats)
         std::sort(f.faces.begin(), f.faces.end(),
