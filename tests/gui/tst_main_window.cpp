@@ -80,6 +80,41 @@ QStringList dimensionTexts(const MainWindow &w)
     return texts;
 }
 
+// Where Qt draws each dimension text of the view, from the text items themselves (not from
+// DimensionItem's own arithmetic, which the layout uses).
+std::vector<QRectF> dimensionLabelBoxes(const ProfileView &view)
+{
+    std::vector<QRectF> labels;
+    for (QGraphicsItem *item : view.scene()->items())
+        if (const auto *text = dynamic_cast<QGraphicsSimpleTextItem *>(item);
+            text && dynamic_cast<DimensionItem *>(text->parentItem()))
+            labels.push_back(text->deviceTransform(view.viewportTransform()).mapRect(text->boundingRect()));
+    return labels;
+}
+
+// The first two dimension texts that overlap, as "i and j"; empty if none do.
+QString overlappingLabels(const std::vector<QRectF> &labels)
+{
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        for (std::size_t j = i + 1; j < labels.size(); ++j)
+            if (labels[i].intersects(labels[j]))
+                return QStringLiteral("labels %1 and %2").arg(i).arg(j);
+    return {};
+}
+
+// The part drawn twice its size: every length, radius and the stock doubled.
+PartProfile twiceTheSize(PartProfile part)
+{
+    part.stockDiameter_mm *= 2.0;
+    for (Contour *contour : {&part.outer, &part.inner})
+        for (Segment &segment : contour->segments) {
+            segment.from = {2.0 * segment.from.z_mm, 2.0 * segment.from.r_mm};
+            segment.to = {2.0 * segment.to.z_mm, 2.0 * segment.to.r_mm};
+            segment.arcRadius_mm *= 2.0;
+        }
+    return part;
+}
+
 // Answers the next "unsaved changes" question with `button` and records that it was asked.
 void answerNextSavePrompt(QMessageBox::StandardButton button, bool *asked)
 {
@@ -157,19 +192,9 @@ private Q_SLOTS:
         w.resize(1366, 740);
         QTest::qWait(50);
         // No two dimension texts of the drawing overlap at this size (ISO 129-1 legibility).
-        auto *view = w.findChild<ProfileView *>(QStringLiteral("profileView"));
-        std::vector<QRectF> labels;
-        // Where Qt draws each text, from the text items themselves (not from DimensionItem's own
-        // arithmetic, which the layout uses).
-        for (QGraphicsItem *item : view->scene()->items())
-            if (const auto *text = dynamic_cast<QGraphicsSimpleTextItem *>(item);
-                text && dynamic_cast<DimensionItem *>(text->parentItem()))
-                labels.push_back(text->deviceTransform(view->viewportTransform()).mapRect(text->boundingRect()));
+        const std::vector<QRectF> labels = dimensionLabelBoxes(*w.profileView());
         QVERIFY(labels.size() >= 10);
-        for (std::size_t i = 0; i < labels.size(); ++i)
-            for (std::size_t j = i + 1; j < labels.size(); ++j)
-                QVERIFY2(!labels[i].intersects(labels[j]),
-                         qPrintable(QStringLiteral("labels %1 and %2").arg(i).arg(j)));
+        QVERIFY2(overlappingLabels(labels).isEmpty(), qPrintable(overlappingLabels(labels)));
         // The deflection plot's legend lies inside the plot widget with room for every entry.
         LinePlot *plot = w.findChild<DeflectionPanel *>()->plot();
         QVERIFY2(plot->rect().contains(plot->legendRect()), qPrintable(QStringLiteral("legend %1,%2 %3x%4 in %5x%6")
@@ -210,6 +235,40 @@ private Q_SLOTS:
         QVERIFY(unedited > 0.0);
         QVERIFY2(std::abs(edited - unedited) <= 0.01 * unedited,
                  qPrintable(QStringLiteral("%1 px/mm after edits, %2 without").arg(edited).arg(unedited)));
+    }
+
+    // A part changed while the window is hidden is drawn, once the window is shown again, as if it
+    // had been changed in sight: same zoom, and no two dimension texts overlap.
+    void drawingChangedWhileHiddenIsSpacedWhenShown()
+    {
+        const auto shownAfterEdit = [](bool hiddenDuringEdit, std::vector<QRectF> *labels) {
+            MainWindow w;
+            if (!w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")))
+                return 0.0;
+            w.resize(1366, 740);
+            w.show();
+            if (!QTest::qWaitForWindowExposed(&w))
+                return 0.0;
+            if (hiddenDuringEdit)
+                w.hide();
+            if (!w.document()->setPart(twiceTheSize(w.document()->project().part), QStringLiteral("size")).empty())
+                return 0.0;
+            w.show();
+            if (!QTest::qWaitForWindowExposed(&w))
+                return 0.0;
+            QTest::qWait(50);
+            *labels = dimensionLabelBoxes(*w.profileView());
+            return w.profileView()->transform().m11();
+        };
+        std::vector<QRectF> inSight;
+        std::vector<QRectF> hidden;
+        const double zoomInSight = shownAfterEdit(false, &inSight);
+        const double zoomHidden = shownAfterEdit(true, &hidden);
+        QVERIFY(zoomInSight > 0.0);
+        QVERIFY2(std::abs(zoomHidden - zoomInSight) <= 0.01 * zoomInSight,
+                 qPrintable(QStringLiteral("%1 px/mm edited hidden, %2 in sight").arg(zoomHidden).arg(zoomInSight)));
+        QVERIFY(hidden.size() >= 10);
+        QVERIFY2(overlappingLabels(hidden).isEmpty(), qPrintable(overlappingLabels(hidden)));
     }
 
     // The Milling dock of an open project lists its milled features, and at a laptop's size the
