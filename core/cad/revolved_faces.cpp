@@ -17,11 +17,13 @@
 #include <ShapeCustom_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <gp.hxx>
 #include <gp_Lin.hxx>
 
 namespace tolturn::cad {
@@ -257,7 +259,7 @@ private:
     [[nodiscard]] LeftOutFace leftOutFace(int index, const QString &what, const Extent &e, const TopoDS_Face &face,
                                           const GeomAdaptor_Surface &s) const
     {
-        LeftOutFace f{index, what, e.zMin, e.zMax, leftOutShape(s), {}, 0.0};
+        LeftOutFace f{index, what, e.zMin, e.zMax, leftOutShape(s), {}, 0.0, {}};
         if (f.shape != LeftOutShape::PlaneAlongAxis)
             return f;
         // The face's own normal, turned with its orientation, points out of the material.
@@ -269,8 +271,8 @@ private:
         gp_Pnt point;
         gp_Vec normal;
         BRepGProp_Face(face).Normal(0.5 * (u0 + u1), 0.5 * (v0 + v1), point, normal);
-        if (normal.Magnitude() <= 0.0)
-            return f;
+        if (normal.Magnitude() <= gp::Resolution())
+            return f; // a degenerate face: no direction to tell a flat by
         normal.Normalize();
         f.outwardNormal = {normal.X(), normal.Y(), normal.Z()};
         f.axisOffset_mm = normal.Dot(gp_Vec(m_frame.axis.Location(), point));
@@ -569,8 +571,33 @@ void mergeAndFilter(SectionTrace &trace)
         const QString what = RevolvedFaces::tr("a part of a turned surface that does not go round (the end wall of "
                                                "a keyway or a slot)");
         for (const int face : p.faces)
-            trace.leftOut.push_back(
-                {face, what, std::min(p.a.z_mm, p.b.z_mm), std::max(p.a.z_mm, p.b.z_mm), LeftOutShape::Other});
+            trace.leftOut.push_back({face,
+                                     what,
+                                     std::min(p.a.z_mm, p.b.z_mm),
+                                     std::max(p.a.z_mm, p.b.z_mm),
+                                     LeftOutShape::Other,
+                                     {},
+                                     0.0,
+                                     {}});
+    }
+}
+
+// The faces that share an edge with each left-out face.
+void addNeighbours(const TopoDS_Shape &body, const TopTools_IndexedMapOfShape &faces, SectionTrace &trace)
+{
+    TopTools_IndexedDataMapOfShapeListOfShape facesOfEdge;
+    TopExp::MapShapesAndAncestors(body, TopAbs_EDGE, TopAbs_FACE, facesOfEdge);
+    for (LeftOutFace &f : trace.leftOut) {
+        for (TopExp_Explorer edge(faces(f.face), TopAbs_EDGE); edge.More(); edge.Next()) {
+            const int k = facesOfEdge.FindIndex(edge.Current());
+            if (k == 0)
+                continue;
+            for (const TopoDS_Shape &other : facesOfEdge(k))
+                if (const int j = faces.FindIndex(other); j != 0 && j != f.face)
+                    f.neighbours.push_back(j);
+        }
+        std::sort(f.neighbours.begin(), f.neighbours.end());
+        f.neighbours.erase(std::unique(f.neighbours.begin(), f.neighbours.end()), f.neighbours.end());
     }
 }
 
@@ -614,6 +641,7 @@ SectionTrace traceSection(const TopoDS_Shape &body, const gp_Ax1 &axis, const st
         tracer.trace(i, TopoDS::Face(faces(i)));
     }
     mergeAndFilter(out);
+    addNeighbours(body, faces, out);
     return out;
 }
 

@@ -40,11 +40,14 @@ struct LeftOutFace {
     double zMin_mm = 0.0; // along the axis, in the same frame as the section pieces
     double zMax_mm = 0.0;
     LeftOutShape shape = LeftOutShape::Other;
-    // A plane along the axis: its unit normal out of the material (model frame) and its offset
-    // n·(P − A) from the axis along it. A flat, or a keyway's bottom, faces away from the axis
-    // (offset > 0); a side of a keyway or slot faces the slot, towards the axis (offset < 0).
+    // A plane along the axis: its unit normal out of the material (model frame; the faces' own
+    // orientation, which the import makes point out of the material) and its offset n·(P − A)
+    // from the axis along it. A flat, or a keyway's bottom, faces away from the axis (offset > 0
+    // unless it is cut past the centre); the two sides of a keyway or slot face each other.
     std::array<double, 3> outwardNormal{};
     double axisOffset_mm = 0.0;
+    // The faces that share an edge with it (1-based, sorted): a flat's end walls with the flat.
+    std::vector<int> neighbours;
 };
 
 struct SectionTrace {

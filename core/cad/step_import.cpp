@@ -14,7 +14,11 @@
 #include <QStringList>
 #include <Standard_Failure.hxx>
 
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepGProp.hxx>
+#include <BRepLib.hxx>
+#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Check.hxx>
@@ -27,6 +31,9 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
 #include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <cmath>
@@ -274,6 +281,43 @@ std::vector<TopoDS_Shape> bodiesOf(const TopoDS_Shape &shape)
     return bodies;
 }
 
+// Loose faces or an open shell (IGES surfaces) sewn into one closed shell, if they close one.
+std::optional<TopoDS_Shell> closedShellOf(const TopoDS_Shape &faces)
+{
+    BRepBuilderAPI_Sewing sewing;
+    sewing.Add(faces);
+    sewing.Perform();
+    std::optional<TopoDS_Shell> shell;
+    for (TopExp_Explorer ex(sewing.SewedShape(), TopAbs_SHELL); ex.More(); ex.Next()) {
+        if (shell || !BRep_Tool::IsClosed(ex.Current()))
+            return std::nullopt;
+        shell = TopoDS::Shell(ex.Current());
+    }
+    return shell;
+}
+
+// The body with its faces turned out of the material, which flats and keyways are told apart by:
+// a solid written inside out, or a closed shell of either sense, is turned round (OpenCascade
+// classifies a point at infinity). An open shell or loose faces keep the sense they were written
+// with.
+TopoDS_Shape withMaterialInside(const TopoDS_Shape &body)
+{
+    TopoDS_Solid solid;
+    if (body.ShapeType() == TopAbs_SOLID)
+        solid = TopoDS::Solid(body);
+    else if (body.ShapeType() == TopAbs_SHELL && BRep_Tool::IsClosed(body))
+        solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(body)).Solid();
+    else if (const auto sewn = closedShellOf(body))
+        solid = BRepBuilderAPI_MakeSolid(*sewn).Solid();
+    else
+        return body;
+    if (!BRepLib::OrientClosedSolid(solid))
+        return body;
+    if (body.ShapeType() == TopAbs_SOLID)
+        return solid;
+    return TopExp_Explorer(solid, TopAbs_SHELL).Current();
+}
+
 CadSolidInfo solidInfo(const TopoDS_Shape &body)
 {
     GProp_GProps props;
@@ -408,20 +452,45 @@ bool isPlaneAlongAxis(const PlacedFace &p)
     return p.face->shape == cad::LeftOutShape::PlaneAlongAxis;
 }
 
-// A side of a keyway or slot faces the slot, towards the axis; a flat, or a keyway's bottom, faces
-// away from it. A plane through the axis (a flat cut to the centre) is a flat.
-bool facesTheAxis(const PlacedFace &p)
+// Planes this far apart along their normal are one plane: the 1 µm to which spline faces are read
+// as planes (revolved_faces.cpp, kAnalyticTolerance_mm).
+constexpr double kSamePlane_mm = 1e-3;
+// Normals this close to parallel (sin of the angle between them) are parallel: the angular
+// tolerance the faces are told along or across the axis by (revolved_faces.cpp).
+constexpr double kParallel_rad = 1e-6;
+
+// +1 when the outward normals of two faces point the same way, −1 when opposite, 0 otherwise.
+int sense(const PlacedFace &a, const PlacedFace &b)
 {
-    return isPlaneAlongAxis(p) && p.face->axisOffset_mm < -kFeatureJoin_mm;
+    const auto &n = a.face->outwardNormal;
+    const auto &m = b.face->outwardNormal;
+    const double cross = std::hypot(n[1] * m[2] - n[2] * m[1], n[2] * m[0] - n[0] * m[2], n[0] * m[1] - n[1] * m[0]);
+    if (cross >= kParallel_rad)
+        return 0;
+    return n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > 0.0 ? 1 : -1;
 }
 
 bool samePlane(const PlacedFace &a, const PlacedFace &b)
 {
-    constexpr double kParallel = 1e-6; // 1 − cos between the outward normals: the 1 µrad the planes are read to
-    const auto &n = a.face->outwardNormal;
-    const auto &m = b.face->outwardNormal;
-    return n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > 1.0 - kParallel &&
-           std::abs(a.face->axisOffset_mm - b.face->axisOffset_mm) <= kFeatureJoin_mm;
+    return sense(a, b) == 1 && std::abs(a.face->axisOffset_mm - b.face->axisOffset_mm) <= kSamePlane_mm;
+}
+
+// The two sides of a keyway or slot: planes along the axis whose outward normals face each other
+// across an empty gap. Sides at y = a and y = b > a have normals +y and −y and offsets a and −b, so
+// the offsets add up to a − b < 0; spanner flats (x = ±s, normals ±x) add up to 2s > 0, and a flat
+// cut past the centre has no side facing it.
+bool slotSides(const PlacedFace &a, const PlacedFace &b)
+{
+    return isPlaneAlongAxis(a) && isPlaneAlongAxis(b) && sense(a, b) == -1 &&
+           a.face->axisOffset_mm + b.face->axisOffset_mm < -kSamePlane_mm;
+}
+
+bool hasSlotSides(const FaceGroup &g)
+{
+    for (auto a = g.faces.begin(); a != g.faces.end(); ++a)
+        if (std::any_of(std::next(a), g.faces.end(), [&a](const PlacedFace &b) { return slotSides(*a, b); }))
+            return true;
+    return false;
 }
 
 // `p` in `group`, whose z range grows to take it.
@@ -432,27 +501,56 @@ void join(FaceGroup &group, const PlacedFace &p)
     group.zTo_mm = std::max(group.zTo_mm, p.zTo_mm);
 }
 
-// The flats of a group with several planes along the axis, none facing it: the faces of one plane
-// are one flat; the group's other faces (end walls, a cross hole) join the first flat whose z
-// range they meet, or the first flat.
+// `p` shares an edge with a face of `flat`.
+bool sharesAnEdge(const FaceGroup &flat, const PlacedFace &p)
+{
+    return std::any_of(flat.faces.begin(), flat.faces.end(), [&p](const PlacedFace &f) {
+        return std::binary_search(p.face->neighbours.begin(), p.face->neighbours.end(), f.face->face);
+    });
+}
+
+// The faces of `others` that share an edge with a flat, or with a face already joined to it, join
+// that flat (a flat's end walls); they are taken out of `others`.
+void joinByEdges(std::vector<FaceGroup> &flats, std::vector<PlacedFace> &others)
+{
+    for (bool joined = true; joined;) {
+        joined = false;
+        for (auto p = others.begin(); p != others.end();) {
+            const auto flat =
+                std::find_if(flats.begin(), flats.end(), [&p](const FaceGroup &f) { return sharesAnEdge(f, *p); });
+            if (flat == flats.end()) {
+                ++p;
+                continue;
+            }
+            join(*flat, *p);
+            p = others.erase(p);
+            joined = true;
+        }
+    }
+}
+
+// The flats of a group with several planes along the axis, no two the sides of a slot: the faces of
+// one plane are one flat; the group's other faces join the flat they share an edge with (its end
+// walls, a hole through it), else the first flat whose z range they meet, else the first flat.
 std::vector<FaceGroup> flatsSideBySide(const FaceGroup &g)
 {
     std::vector<FaceGroup> flats;
+    std::vector<PlacedFace> others;
     for (const PlacedFace &p : g.faces) {
-        if (!isPlaneAlongAxis(p))
-            continue;
-        const auto plane = std::find_if(flats.begin(), flats.end(),
-                                        [&p](const FaceGroup &f) { return samePlane(f.faces.front(), p); });
-        if (plane == flats.end()) {
-            flats.push_back({{p}, p.zFrom_mm, p.zTo_mm});
+        if (!isPlaneAlongAxis(p)) {
+            others.push_back(p);
             continue;
         }
-        join(*plane, p);
+        const auto plane = std::find_if(flats.begin(), flats.end(),
+                                        [&p](const FaceGroup &f) { return samePlane(f.faces.front(), p); });
+        if (plane == flats.end())
+            flats.push_back({{p}, p.zFrom_mm, p.zTo_mm});
+        else
+            join(*plane, p);
     }
     std::stable_sort(flats.begin(), flats.end(), [](const auto &a, const auto &b) { return a.zFrom_mm < b.zFrom_mm; });
-    for (const PlacedFace &p : g.faces) {
-        if (isPlaneAlongAxis(p))
-            continue;
+    joinByEdges(flats, others);
+    for (const PlacedFace &p : others) {
         const auto meets = std::find_if(flats.begin(), flats.end(), [&p](const FaceGroup &f) {
             return p.zFrom_mm <= f.zTo_mm + kFeatureJoin_mm && p.zTo_mm >= f.zFrom_mm - kFeatureJoin_mm;
         });
@@ -464,13 +562,13 @@ std::vector<FaceGroup> flatsSideBySide(const FaceGroup &g)
     return flats;
 }
 
-// The milled features a group of faces makes: with a plane along the axis that faces it (the side
-// of a keyway or slot, whatever its bottom), one keyway with all its faces; with planes along the
+// The milled features a group of faces makes: with two planes along the axis facing each other
+// (the sides of a keyway or slot, whatever its bottom), one keyway with all its faces; with planes along the
 // axis that all face away from it and none at a slant, a flat for each plane (one flat; spanner
 // flats, a square, a hexagon); anything else (cross holes, eccentrics, ramps) no milled feature.
 std::vector<std::pair<FaceGroup, MilledFeatureKind>> milledFeaturesOf(const FaceGroup &g)
 {
-    if (std::any_of(g.faces.begin(), g.faces.end(), facesTheAxis))
+    if (hasSlotSides(g))
         return {{g, MilledFeatureKind::Keyway}};
     const bool slanted = std::any_of(g.faces.begin(), g.faces.end(), [](const PlacedFace &p) {
         return p.face->shape == cad::LeftOutShape::PlaneAtSlant;
@@ -634,7 +732,7 @@ void importInto(const QString &path, const CadImportOptions &options, CadImportR
     result.chosenSolid = chooseSolid(bodies, options, result);
     if (result.chosenSolid < 0)
         return;
-    const TopoDS_Shape &body = bodies[static_cast<std::size_t>(result.chosenSolid)];
+    const TopoDS_Shape body = withMaterialInside(bodies[static_cast<std::size_t>(result.chosenSolid)]);
     const std::vector<cad::AxisCandidate> axes = cad::findAxes(body);
     result.chosenAxis = chooseAxis(axes, options, path, result);
     if (result.chosenAxis < 0)

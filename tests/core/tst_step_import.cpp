@@ -29,6 +29,7 @@
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
@@ -44,6 +45,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Solid.hxx>
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -278,6 +280,30 @@ TopoDS_Shape barWith(const QString &cut)
         s = cutBox(s, gp_Pnt(-20, -20, 15), gp_Pnt(-8, 20, 35));
         s = cutBox(s, gp_Pnt(-20, y, 15), gp_Pnt(20, 20, 35));
         return cutBox(s, gp_Pnt(-20, -20, 15), gp_Pnt(20, -y, 35));
+    }
+    if (cut == QLatin1String("wrench flats, written inside out")) { // its shell's faces turned into the material
+        const TopoDS_Shape flats = barWith(QStringLiteral("wrench flats"));
+        BRep_Builder builder;
+        TopoDS_Solid solid;
+        builder.MakeSolid(solid);
+        builder.Add(solid, TopExp_Explorer(flats, TopAbs_SHELL).Current().Reversed());
+        return solid;
+    }
+    if (cut == QLatin1String("flat past the centre")) // the plane x = -2, z 15 to 35
+        return cutBox(bar, gp_Pnt(-2, -20, 15), gp_Pnt(20, 20, 35));
+    if (cut == QLatin1String("staggered flats, one drilled")) {
+        // x = 8 from z = 15 to 35, x = -8 from z = 25 to 45, and a Ø4 hole drilled 4 mm deep into
+        // the second at z = 30 with a 118° point (the cone 2 / tan 59° long)
+        TopoDS_Shape s = cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35));
+        s = cutBox(s, gp_Pnt(-20, -20, 25), gp_Pnt(-8, 20, 45));
+        const gp_Dir alongX(1, 0, 0);
+        const TopoDS_Shape hole =
+            BRepAlgoAPI_Fuse(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-20, 0, 30), alongX), 2.0, 16.0).Shape(),
+                             BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(-4, 0, 30), alongX), 2.0, 0.0,
+                                                  2.0 / std::tan(59.0 * std::numbers::pi / 180.0))
+                                 .Shape())
+                .Shape();
+        return BRepAlgoAPI_Cut(s, hole).Shape();
     }
     if (cut == QLatin1String("flats at right angles")) // x = 8 and y = 6, z 15 to 35
         return cutBox(cutBox(bar, gp_Pnt(8, -20, 15), gp_Pnt(20, 20, 35)), gp_Pnt(-20, 6, 15), gp_Pnt(20, 20, 35));
@@ -788,7 +814,53 @@ private Q_SLOTS:
         for (int i = 0; i < flats; ++i)
             expectMilledFeature(r, static_cast<std::size_t>(i), QStringLiteral("M%1").arg(i + 1),
                                 MilledFeatureKind::Flat, {15.0, 35.0});
+        if (cut == QLatin1String("flat in two cuts")) // one flat of the plane's several faces
+            QVERIFY2(r.milledFeatures.front().description.startsWith(QLatin1String("STEP faces")),
+                     qPrintable(r.milledFeatures.front().description));
         QVERIFY2(faceWarnings(r) == 0, qPrintable(errorsOf(r)));
+    }
+
+    // A flat cut past the centre faces the axis but has no side facing it: a flat, not a keyway.
+    // (The faces across the axis at its ends are no turned faces; they stay warnings.)
+    void flatPastTheCentreIsAFlat()
+    {
+        const CadImportResult r = importBarWith(QStringLiteral("flat past the centre"));
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        QCOMPARE(r.milledFeatures.size(), std::size_t{1});
+        expectMilledFeature(r, 0, QStringLiteral("M1"), MilledFeatureKind::Flat, {15.0, 35.0});
+    }
+
+    // A hole drilled into one of two flats over the same length joins the flat it is drilled into
+    // (the faces it shares an edge with), not the first flat its z range meets.
+    void holeJoinsTheFlatItIsDrilledInto()
+    {
+        const CadImportResult r = importBarWith(QStringLiteral("staggered flats, one drilled"));
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        QCOMPARE(r.milledFeatures.size(), std::size_t{2});
+        expectMilledFeature(r, 0, QStringLiteral("M1"), MilledFeatureKind::Flat, {15.0, 35.0});
+        expectMilledFeature(r, 1, QStringLiteral("M2"), MilledFeatureKind::Flat, {25.0, 45.0});
+        // The flat x = 8 is one face; x = -8 is its face, the hole's wall and its point.
+        const QRegularExpression oneFace(QStringLiteral("^STEP face \\d+$"));
+        const QRegularExpression threeFaces(QStringLiteral("^STEP faces \\d+, \\d+, \\d+$"));
+        QVERIFY2(oneFace.match(r.milledFeatures[0].description).hasMatch(),
+                 qPrintable(r.milledFeatures[0].description));
+        QVERIFY2(threeFaces.match(r.milledFeatures[1].description).hasMatch(),
+                 qPrintable(r.milledFeatures[1].description));
+        QVERIFY2(faceWarnings(r) == 0, qPrintable(errorsOf(r)));
+    }
+
+    // Trimmed surfaces (IGES 144) carry no solid and each face keeps the sense it was written with:
+    // the import sews them into a closed shell and turns it so that its faces point out of the
+    // material. Spanner flats written inside out are still two flats, not a keyway.
+    void insideOutSurfacesAreSewnAndTurned()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("wrench-flats-inside-out.igs"));
+        writeIgesSurfaces(barWith(QStringLiteral("wrench flats, written inside out")), path);
+        const CadImportResult r = importCadFile(path);
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        QCOMPARE(r.milledFeatures.size(), std::size_t{2});
+        for (std::size_t i = 0; i < 2; ++i)
+            expectMilledFeature(r, i, QStringLiteral("M%1").arg(i + 1), MilledFeatureKind::Flat, {15.0, 35.0});
     }
 
     void slantedFlatStaysAWarning_data()
