@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cad/step_import.h"
 
+#include "core/cad/material_side.h"
 #include "core/cad/model_references.h"
 #include "core/cad/occt_guard.h"
 #include "core/cad/profile_chains.h"
@@ -14,11 +15,7 @@
 #include <QStringList>
 #include <Standard_Failure.hxx>
 
-#include <BRepBuilderAPI_MakeSolid.hxx>
-#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepGProp.hxx>
-#include <BRepLib.hxx>
-#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Check.hxx>
@@ -31,9 +28,6 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Shell.hxx>
-#include <TopoDS_Solid.hxx>
 #include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <cmath>
@@ -281,43 +275,6 @@ std::vector<TopoDS_Shape> bodiesOf(const TopoDS_Shape &shape)
     return bodies;
 }
 
-// Loose faces or an open shell (IGES surfaces) sewn into one closed shell, if they close one.
-std::optional<TopoDS_Shell> closedShellOf(const TopoDS_Shape &faces)
-{
-    BRepBuilderAPI_Sewing sewing;
-    sewing.Add(faces);
-    sewing.Perform();
-    std::optional<TopoDS_Shell> shell;
-    for (TopExp_Explorer ex(sewing.SewedShape(), TopAbs_SHELL); ex.More(); ex.Next()) {
-        if (shell || !BRep_Tool::IsClosed(ex.Current()))
-            return std::nullopt;
-        shell = TopoDS::Shell(ex.Current());
-    }
-    return shell;
-}
-
-// The body with its faces turned out of the material, which flats and keyways are told apart by:
-// a solid written inside out, or a closed shell of either sense, is turned round (OpenCascade
-// classifies a point at infinity). An open shell or loose faces keep the sense they were written
-// with.
-TopoDS_Shape withMaterialInside(const TopoDS_Shape &body)
-{
-    TopoDS_Solid solid;
-    if (body.ShapeType() == TopAbs_SOLID)
-        solid = TopoDS::Solid(body);
-    else if (body.ShapeType() == TopAbs_SHELL && BRep_Tool::IsClosed(body))
-        solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(body)).Solid();
-    else if (const auto sewn = closedShellOf(body))
-        solid = BRepBuilderAPI_MakeSolid(*sewn).Solid();
-    else
-        return body;
-    if (!BRepLib::OrientClosedSolid(solid))
-        return body;
-    if (body.ShapeType() == TopAbs_SOLID)
-        return solid;
-    return TopExp_Explorer(solid, TopAbs_SHELL).Current();
-}
-
 CadSolidInfo solidInfo(const TopoDS_Shape &body)
 {
     GProp_GProps props;
@@ -464,6 +421,9 @@ int sense(const PlacedFace &a, const PlacedFace &b)
 {
     const auto &n = a.face->outwardNormal;
     const auto &m = b.face->outwardNormal;
+    const auto unit = [](const std::array<double, 3> &v) { return std::abs(std::hypot(v[0], v[1], v[2]) - 1.0) < 0.5; };
+    if (!unit(n) || !unit(m))
+        return 0; // a degenerate face has no normal (revolved_faces.cpp)
     const double cross = std::hypot(n[1] * m[2] - n[2] * m[1], n[2] * m[0] - n[0] * m[2], n[0] * m[1] - n[1] * m[0]);
     if (cross >= kParallel_rad)
         return 0;
@@ -563,9 +523,9 @@ std::vector<FaceGroup> flatsSideBySide(const FaceGroup &g)
 }
 
 // The milled features a group of faces makes: with two planes along the axis facing each other
-// (the sides of a keyway or slot, whatever its bottom), one keyway with all its faces; with planes along the
-// axis that all face away from it and none at a slant, a flat for each plane (one flat; spanner
-// flats, a square, a hexagon); anything else (cross holes, eccentrics, ramps) no milled feature.
+// (the sides of a keyway or slot, whatever its bottom), one keyway with all its faces; with planes
+// along the axis, no two facing each other, and none at a slant, a flat for each plane (one flat;
+// spanner flats, a square, a hexagon); anything else (cross holes, eccentrics, ramps) no milled feature.
 std::vector<std::pair<FaceGroup, MilledFeatureKind>> milledFeaturesOf(const FaceGroup &g)
 {
     if (hasSlotSides(g))
@@ -732,7 +692,7 @@ void importInto(const QString &path, const CadImportOptions &options, CadImportR
     result.chosenSolid = chooseSolid(bodies, options, result);
     if (result.chosenSolid < 0)
         return;
-    const TopoDS_Shape body = withMaterialInside(bodies[static_cast<std::size_t>(result.chosenSolid)]);
+    const TopoDS_Shape body = cad::withMaterialInside(bodies[static_cast<std::size_t>(result.chosenSolid)]);
     const std::vector<cad::AxisCandidate> axes = cad::findAxes(body);
     result.chosenAxis = chooseAxis(axes, options, path, result);
     if (result.chosenAxis < 0)

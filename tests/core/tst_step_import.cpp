@@ -861,6 +861,13 @@ private Q_SLOTS:
         QCOMPARE(r.milledFeatures.size(), std::size_t{2});
         for (std::size_t i = 0; i < 2; ++i)
             expectMilledFeature(r, i, QStringLiteral("M%1").arg(i + 1), MilledFeatureKind::Flat, {15.0, 35.0});
+        // The faces are those of the file, numbered as written the right way out.
+        const QString rightWayOut = m_dir.filePath(QStringLiteral("wrench-flats.igs"));
+        writeIgesSurfaces(barWith(QStringLiteral("wrench flats")), rightWayOut);
+        const CadImportResult reference = importCadFile(rightWayOut);
+        QCOMPARE(reference.milledFeatures.size(), std::size_t{2});
+        for (std::size_t i = 0; i < 2; ++i)
+            QCOMPARE(r.milledFeatures[i].description, reference.milledFeatures[i].description);
     }
 
     void slantedFlatStaysAWarning_data()

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Private to core/cad: a body's faces turned to point out of its material, which the import tells
+// flats from keyways by (docs/step-import.md, "Milled features"). Uses OpenCascade types; not part
+// of the public API.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+namespace tolturn::cad {
+
+// The body with its faces pointing out of the material, in the same faces and the same order
+// (TopExp::MapShapes numbers them as before):
+// - a solid, or a closed shell, whose shells are all closed is turned round if it is inside out
+//   (OpenCascade classifies a point at infinity);
+// - loose faces or an open shell (IGES trimmed surfaces) are sewn, and if they close one shell and
+//   leave no face out, each face is turned as that shell turns it;
+// - anything else (an open solid, faces that close no shell) is returned as written.
+// Never throws: a model OpenCascade cannot orient is returned as written.
+[[nodiscard]] TopoDS_Shape withMaterialInside(const TopoDS_Shape &body);
+
+} // namespace tolturn::cad
