@@ -50,22 +50,6 @@ std::optional<TopoDS_Solid> oriented(TopoDS_Solid solid)
     return solid;
 }
 
-// A point of the face and the face's normal there, turned with the face's orientation.
-std::optional<std::pair<gp_Pnt, gp_Vec>> pointAndNormal(const TopoDS_Face &face)
-{
-    double u0 = 0.0;
-    double u1 = 0.0;
-    double v0 = 0.0;
-    double v1 = 0.0;
-    BRepTools::UVBounds(face, u0, u1, v0, v1);
-    gp_Pnt point;
-    gp_Vec normal;
-    BRepGProp_Face(face).Normal(0.5 * (u0 + u1), 0.5 * (v0 + v1), point, normal);
-    if (normal.Magnitude() <= gp::Resolution())
-        return std::nullopt;
-    return std::pair{point, normal};
-}
-
 // True when `sewn` (a face of an oriented shell) points the other way from `face` at the point of
 // `face` where its normal is taken.
 bool turnedBySewing(const TopoDS_Face &face, const TopoDS_Face &sewn)
@@ -122,6 +106,21 @@ std::optional<TopoDS_Shape> turnedAsSewn(const TopoDS_Shape &faces)
 }
 
 } // namespace
+
+std::optional<std::pair<gp_Pnt, gp_Vec>> pointAndNormal(const TopoDS_Face &face)
+{
+    double u0 = 0.0;
+    double u1 = 0.0;
+    double v0 = 0.0;
+    double v1 = 0.0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    gp_Pnt point;
+    gp_Vec normal;
+    BRepGProp_Face(face).Normal(0.5 * (u0 + u1), 0.5 * (v0 + v1), point, normal);
+    if (normal.Magnitude() <= gp::Resolution())
+        return std::nullopt;
+    return std::pair{point, normal};
+}
 
 TopoDS_Shape withMaterialInside(const TopoDS_Shape &body)
 {

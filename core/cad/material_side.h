@@ -4,7 +4,12 @@
 // of the public API.
 #pragma once
 
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+#include <optional>
+#include <utility>
 
 namespace tolturn::cad {
 
@@ -17,5 +22,10 @@ namespace tolturn::cad {
 // - anything else (an open solid, faces that close no shell) is returned as written.
 // Never throws: a model OpenCascade cannot orient is returned as written.
 [[nodiscard]] TopoDS_Shape withMaterialInside(const TopoDS_Shape &body);
+
+// A point of the face (the middle of its parameter range, on its surface) and the face's normal
+// there, turned with the face's orientation: out of the material once withMaterialInside has
+// turned the body. None for a degenerate face.
+[[nodiscard]] std::optional<std::pair<gp_Pnt, gp_Vec>> pointAndNormal(const TopoDS_Face &face);
 
 } // namespace tolturn::cad

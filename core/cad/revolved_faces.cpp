@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/cad/revolved_faces.h"
 
+#include "core/cad/material_side.h"
+
 #include <Eigen/Dense>
 #include <QCoreApplication>
 
@@ -8,7 +10,6 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepGProp.hxx>
-#include <BRepGProp_Face.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
@@ -23,7 +24,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <gp.hxx>
 #include <gp_Lin.hxx>
 
 namespace tolturn::cad {
@@ -263,16 +263,11 @@ private:
         if (f.shape != LeftOutShape::PlaneAlongAxis)
             return f;
         // The face's own normal, turned with its orientation, points out of the material.
-        double u0 = 0.0;
-        double u1 = 0.0;
-        double v0 = 0.0;
-        double v1 = 0.0;
-        BRepTools::UVBounds(face, u0, u1, v0, v1);
-        gp_Pnt point;
-        gp_Vec normal;
-        BRepGProp_Face(face).Normal(0.5 * (u0 + u1), 0.5 * (v0 + v1), point, normal);
-        if (normal.Magnitude() <= gp::Resolution())
+        const auto pointNormal = pointAndNormal(face);
+        if (!pointNormal)
             return f; // a degenerate face: no direction to tell a flat by
+        const gp_Pnt point = pointNormal->first;
+        gp_Vec normal = pointNormal->second;
         normal.Normalize();
         f.outwardNormal = {normal.X(), normal.Y(), normal.Z()};
         f.axisOffset_mm = normal.Dot(gp_Vec(m_frame.axis.Location(), point));
