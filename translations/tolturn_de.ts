@@ -5110,10 +5110,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Flächen %1</translation>
     </message>
     <message>
-        <source>STEP %1</source>
-        <translation>STEP %1</translation>
-    </message>
-    <message>
         <source>the flat of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
         <translation>die Abflachung aus %1, von z = %2 mm bis z = %3 mm, wurde zum gefrästen Formelement %4; geben Sie ihm Werkzeug, Schnittbedingungen, Schnittkraftkoeffizienten und eine Toleranz, um es auszuwerten</translation>
     </message>

@@ -5110,10 +5110,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>caras %1</translation>
     </message>
     <message>
-        <source>STEP %1</source>
-        <translation>STEP %1</translation>
-    </message>
-    <message>
         <source>the flat of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
         <translation>la cara plana (%1), de z = %2 mm a z = %3 mm, se ha convertido en el elemento fresado %4; asígnele una herramienta, condiciones, coeficientes de corte y una tolerancia para evaluarlo</translation>
     </message>

@@ -31,6 +31,7 @@
 #include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <exception>
 #include <optional>
 
@@ -70,6 +71,12 @@ bool report(const CadImportOptions &options, CadImportResult &result, double fra
     if (options.progress && !options.progress(fraction))
         result.cancelled = true;
     return !result.cancelled;
+}
+
+// The format's name, as the milled features' descriptions give the file their faces are from.
+QString nameOf(CadFormat format)
+{
+    return format == CadFormat::Step ? QStringLiteral("STEP") : QStringLiteral("IGES");
 }
 
 std::optional<CadFormat> formatOf(const QString &path)
@@ -382,6 +389,12 @@ PlacedFace placed(const cad::LeftOutFace &f, const cad::Placement &place)
     return {&f, std::min(z0, z1), std::max(z0, z1)};
 }
 
+// A group's faces are listed by face number, as the file numbers them.
+void sortByFaceNumber(FaceGroup &g)
+{
+    std::sort(g.faces.begin(), g.faces.end(), [](const auto &a, const auto &b) { return a.face->face < b.face->face; });
+}
+
 // The faces in groups of overlapping or touching z ranges, in z order.
 std::vector<FaceGroup> groupByZ(const std::vector<cad::LeftOutFace> &faces, const cad::Placement &place)
 {
@@ -399,8 +412,7 @@ std::vector<FaceGroup> groupByZ(const std::vector<cad::LeftOutFace> &faces, cons
         groups.back().zTo_mm = std::max(groups.back().zTo_mm, p.zTo_mm);
     }
     for (FaceGroup &g : groups)
-        std::sort(g.faces.begin(), g.faces.end(),
-                  [](const auto &a, const auto &b) { return a.face->face < b.face->face; });
+        sortByFaceNumber(g);
     return groups;
 }
 
@@ -461,31 +473,32 @@ void join(FaceGroup &group, const PlacedFace &p)
     group.zTo_mm = std::max(group.zTo_mm, p.zTo_mm);
 }
 
-// `p` shares an edge with a face of `flat`.
-bool sharesAnEdge(const FaceGroup &flat, const PlacedFace &p)
+// `p` and `q` share an edge.
+bool neighbours(const PlacedFace &p, const PlacedFace &q)
 {
-    return std::any_of(flat.faces.begin(), flat.faces.end(), [&p](const PlacedFace &f) {
-        return std::binary_search(p.face->neighbours.begin(), p.face->neighbours.end(), f.face->face);
-    });
+    return std::binary_search(p.face->neighbours.begin(), p.face->neighbours.end(), q.face->face);
 }
 
 // The faces of `others` that share an edge with a flat, or with a face already joined to it, join
-// that flat (a flat's end walls); they are taken out of `others`.
+// that flat (a flat's end walls); they are taken out of `others`. A breadth-first walk from the
+// flats' own faces, in flat order: a face joins the flat fewest edges away, the first on a tie.
 void joinByEdges(std::vector<FaceGroup> &flats, std::vector<PlacedFace> &others)
 {
-    for (bool joined = true; joined;) {
-        joined = false;
-        for (auto p = others.begin(); p != others.end();) {
-            const auto flat =
-                std::find_if(flats.begin(), flats.end(), [&p](const FaceGroup &f) { return sharesAnEdge(f, *p); });
-            if (flat == flats.end()) {
-                ++p;
-                continue;
-            }
-            join(*flat, *p);
-            p = others.erase(p);
-            joined = true;
+    std::deque<std::pair<PlacedFace, std::size_t>> reached; // a face and the flat it is part of
+    for (std::size_t i = 0; i < flats.size(); ++i)
+        for (const PlacedFace &f : flats[i].faces)
+            reached.emplace_back(f, i);
+    while (!reached.empty()) {
+        const PlacedFace face = reached.front().first; // not a structured binding: the lambda takes it
+        const std::size_t flat = reached.front().second;
+        reached.pop_front();
+        const auto joining = std::stable_partition(others.begin(), others.end(),
+                                                   [&face](const PlacedFace &p) { return !neighbours(p, face); });
+        for (auto p = joining; p != others.end(); ++p) {
+            join(flats[flat], *p);
+            reached.emplace_back(*p, flat);
         }
+        others.erase(joining, others.end());
     }
 }
 
@@ -517,8 +530,7 @@ std::vector<FaceGroup> flatsSideBySide(const FaceGroup &g)
         join(meets == flats.end() ? flats.front() : *meets, p);
     }
     for (FaceGroup &f : flats)
-        std::sort(f.faces.begin(), f.faces.end(),
-                  [](const auto &a, const auto &b) { return a.face->face < b.face->face; });
+        sortByFaceNumber(f);
     return flats;
 }
 
@@ -564,14 +576,14 @@ QString faceList(const FaceGroup &g)
     return g.faces.size() == 1 ? StepImport::tr("face %1").arg(list) : StepImport::tr("faces %1").arg(list);
 }
 
-void addMilledFeature(const FaceGroup &g, MilledFeatureKind kind, const PartProfile &profile, int &nextId,
-                      CadImportResult &result)
+void addMilledFeature(const FaceGroup &g, MilledFeatureKind kind, const PartProfile &profile, CadFormat format,
+                      int &nextId, CadImportResult &result)
 {
     const double length = profile.length_mm();
     MilledFeature f;
     f.id = freeMilledId(profile, nextId);
     f.kind = kind;
-    f.description = StepImport::tr("STEP %1").arg(faceList(g));
+    f.description = QStringLiteral("%1 %2").arg(nameOf(format), faceList(g)); // "STEP faces 4, 5"
     f.zFrom_mm = std::clamp(g.zFrom_mm, 0.0, length);
     f.zTo_mm = std::clamp(g.zTo_mm, 0.0, length);
     const QString message =
@@ -599,7 +611,7 @@ void warnLeftOut(const PlacedFace &p, Diagnostics &out)
 // The flats and keyways among `faces` (by face number) become milled features of the profile, each
 // with a note; every other face is a warning. Without a profile, every face is a warning.
 void reportLeftOut(const std::vector<cad::LeftOutFace> &faces, const cad::Placement &place, const PartProfile *profile,
-                   CadImportResult &result)
+                   CadFormat format, CadImportResult &result)
 {
     std::vector<const cad::LeftOutFace *> featured;
     int nextId = 1;
@@ -607,7 +619,7 @@ void reportLeftOut(const std::vector<cad::LeftOutFace> &faces, const cad::Placem
         if (!profile)
             continue;
         for (const auto &[feature, kind] : milledFeaturesOf(g)) {
-            addMilledFeature(feature, kind, *profile, nextId, result);
+            addMilledFeature(feature, kind, *profile, format, nextId, result);
             for (const PlacedFace &p : feature.faces)
                 featured.push_back(p.face);
         }
@@ -640,8 +652,8 @@ PartProfile makeProfile(const QString &path, cad::ContourBuild &contours)
     return profile;
 }
 
-void extractProfile(const QString &path, const TopoDS_Shape &body, const gp_Ax1 &axis, const CadImportOptions &options,
-                    CadImportResult &result)
+void extractProfile(const QString &path, CadFormat format, const TopoDS_Shape &body, const gp_Ax1 &axis,
+                    const CadImportOptions &options, CadImportResult &result)
 {
     const auto progress = [&](double f) {
         return report(options, result, kTransferDone + (kTraceDone - kTransferDone) * f);
@@ -658,7 +670,7 @@ void extractProfile(const QString &path, const TopoDS_Shape &body, const gp_Ax1 
     std::optional<PartProfile> profile;
     if (!hasErrors(contours.diagnostics))
         profile = makeProfile(path, contours);
-    reportLeftOut(trace.leftOut, place, profile ? &*profile : nullptr, result);
+    reportLeftOut(trace.leftOut, place, profile ? &*profile : nullptr, format, result);
     reportConverted(trace, result.diagnostics);
     result.diagnostics.insert(result.diagnostics.end(), contours.diagnostics.begin(), contours.diagnostics.end());
     if (!profile)
@@ -697,7 +709,7 @@ void importInto(const QString &path, const CadImportOptions &options, CadImportR
     result.chosenAxis = chooseAxis(axes, options, path, result);
     if (result.chosenAxis < 0)
         return;
-    extractProfile(path, body, axes[static_cast<std::size_t>(result.chosenAxis)].axis, options, result);
+    extractProfile(path, *format, body, axes[static_cast<std::size_t>(result.chosenAxis)].axis, options, result);
     if (result.profile)
         report(options, result, 1.0);
 }

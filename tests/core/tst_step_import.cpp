@@ -548,7 +548,10 @@ void expectMilledFeature(const CadImportResult &r, std::size_t index, const QStr
              qPrintable(QStringLiteral("%1: z %2 to %3").arg(id).arg(f.zFrom_mm).arg(f.zTo_mm)));
     QVERIFY(!findFeature(*r.profile, id));
     QVERIFY(!f.tool && !f.conditions && !f.coefficients && !f.tolerance && f.path.empty());
-    QVERIFY2(f.description.startsWith(QLatin1String("STEP face")), qPrintable(f.description));
+    // "STEP faces 4, 5" or "IGES faces 4, 5": the file's format, then the faces.
+    QVERIFY2(f.description.startsWith(QLatin1String("STEP face")) ||
+                 f.description.startsWith(QLatin1String("IGES face")),
+             qPrintable(f.description));
     const QString field = QStringLiteral("milled_features[%1]").arg(index);
     const auto note = std::find_if(r.diagnostics.begin(), r.diagnostics.end(),
                                    [&field](const Diagnostic &d) { return d.field == field; });
@@ -724,6 +727,9 @@ private Q_SLOTS:
         QCOMPARE(std::abs(r.axes[0].direction[2]), 1.0);
         QCOMPARE(std::abs(r.axes[1].direction[1]), 1.0);
         QCOMPARE(r.milledFeatures.size(), std::size_t{2});
+        const QString format = suffix == QLatin1String("igs") ? QStringLiteral("IGES ") : QStringLiteral("STEP ");
+        for (const MilledFeature &f : r.milledFeatures)
+            QVERIFY2(f.description.startsWith(format), qPrintable(f.description));
         if (flip) {
             expectMilledFeature(r, 0, QStringLiteral("M1"), MilledFeatureKind::Flat, {40, 55});
             expectMilledFeature(r, 1, QStringLiteral("M2"), MilledFeatureKind::Keyway, {70, 90});
@@ -866,8 +872,12 @@ private Q_SLOTS:
         writeIgesSurfaces(barWith(QStringLiteral("wrench flats")), rightWayOut);
         const CadImportResult reference = importCadFile(rightWayOut);
         QCOMPARE(reference.milledFeatures.size(), std::size_t{2});
-        for (std::size_t i = 0; i < 2; ++i)
+        for (std::size_t i = 0; i < 2; ++i) {
             QCOMPARE(r.milledFeatures[i].description, reference.milledFeatures[i].description);
+            // The faces are named as those of the file they are in, an IGES file.
+            QVERIFY2(r.milledFeatures[i].description.startsWith(QLatin1String("IGES face")),
+                     qPrintable(r.milledFeatures[i].description));
+        }
     }
 
     void slantedFlatStaysAWarning_data()
