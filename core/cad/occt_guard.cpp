@@ -8,6 +8,7 @@
 
 #include <Standard_ErrorHandler.hxx>
 
+#include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
@@ -114,6 +115,22 @@ QuietMessages::~QuietMessages()
         if (i < m_levels.size())
             printer->SetTraceLevel(m_levels[i++]);
     }
+}
+
+StaticSetting::StaticSetting(const char *name, const char *value) : m_name(name)
+{
+    if (!Interface_Static::IsPresent(name))
+        return;
+    // An enumeration's CVal is the name of its current value ("MM"), which SetCVal takes back.
+    const char *previous = Interface_Static::CVal(name);
+    m_previous = previous ? previous : "";
+    m_applied = Interface_Static::SetCVal(name, value);
+}
+
+StaticSetting::~StaticSetting()
+{
+    if (m_applied)
+        Interface_Static::SetCVal(m_name.c_str(), m_previous.c_str());
 }
 
 } // namespace tolturn::cad

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <functional>
 #include <mutex>
+#include <string>
 #include <vector>
 
 namespace tolturn::cad {
@@ -35,6 +36,26 @@ public:
 
 private:
     std::vector<Message_Gravity> m_levels;
+};
+
+// While alive (and while the lock is held), the Interface_Static parameter `name` (a global of
+// OpenCascade's data exchange, such as "xstep.cascade.unit") has `value`; its previous value is
+// restored afterwards, so TolTurn leaves no setting behind for another user of OpenCascade in the
+// process. Not restored when runGuarded() jumps out of a fault, which skips destructors.
+class StaticSetting {
+public:
+    StaticSetting(const char *name, const char *value);
+    ~StaticSetting();
+    StaticSetting(const StaticSetting &) = delete;
+    StaticSetting &operator=(const StaticSetting &) = delete;
+
+    // false when OpenCascade knows no such parameter or refused the value.
+    [[nodiscard]] bool applied() const { return m_applied; }
+
+private:
+    std::string m_name;
+    std::string m_previous;
+    bool m_applied = false;
 };
 
 // Passes OpenCascade's progress (Message_ProgressRange, 7.5 and later) on to a callback that maps

@@ -18,7 +18,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <GC_MakeArcOfCircle.hxx>
-#include <Interface_Static.hxx>
+#include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopoDS_Edge.hxx>
 #include <algorithm>
@@ -105,8 +105,14 @@ bool writeStep(const TopoDS_Shape &shape, const QString &file)
 {
     const std::lock_guard lock(cad::occtMutex());
     const cad::QuietMessages quiet;
+    // The shape is in millimetres (the unit OpenCascade converts from, which another user of it in
+    // the process may have set otherwise) and the file in millimetres too; the process's own
+    // settings come back afterwards. Set before the writer is made: its model takes the file's
+    // unit when it is created (a unit set later names the file's unit without scaling to it).
+    STEPControl_Controller::Init(); // defines the parameters
+    const cad::StaticSetting shapeUnit("xstep.cascade.unit", "MM");
+    const cad::StaticSetting fileUnit("write.step.unit", "MM");
     STEPControl_Writer writer;
-    Interface_Static::SetCVal("write.step.unit", "MM");
     if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
         return false;
     return writer.Write(QFile::encodeName(file).constData()) == IFSelect_RetDone;

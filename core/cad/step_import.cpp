@@ -17,12 +17,13 @@
 
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
+#include <IGESControl_Controller.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
 #include <Interface_InterfaceModel.hxx>
-#include <Interface_Static.hxx>
 #include <OSD_Signal.hxx>
+#include <STEPControl_Controller.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <TopExp.hxx>
@@ -229,12 +230,16 @@ QString referenceProblemText(const QString &path, const cad::ReferenceProblem &p
 TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOptions &options, CadImportResult &result)
 {
     const cad::QuietMessages quiet;
+    // The unit of the transferred shapes, whatever the file's own unit (STEP: the
+    // SI_UNIT/CONVERSION_BASED_UNIT of its context; IGES: the global section's unit flag); set
+    // before the readers are made, like the writer's (step_export.cpp), and the process's own
+    // setting comes back when the shape is out.
+    STEPControl_Controller::Init(); // defines the parameter
+    IGESControl_Controller::Init();
+    const cad::StaticSetting unit("xstep.cascade.unit", "MM");
     STEPControl_Reader step;
     IGESControl_Reader iges;
     XSControl_Reader &reader = format == CadFormat::Step ? static_cast<XSControl_Reader &>(step) : iges;
-    // The unit of the transferred shapes, whatever the file's own unit (STEP: the
-    // SI_UNIT/CONVERSION_BASED_UNIT of its context; IGES: the global section's unit flag).
-    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
     if (!report(options, result, 0.0))
         return {};
     const IFSelect_ReturnStatus status = reader.ReadFile(QFile::encodeName(path).constData());

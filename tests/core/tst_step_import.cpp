@@ -1016,6 +1016,31 @@ private Q_SLOTS:
         QVERIFY(QDir(m_dir.path()).entryList({QStringLiteral(".tolturn-*")}, QDir::Files | QDir::Hidden).isEmpty());
     }
 
+    // OpenCascade's data-exchange settings are the process's: another user of OpenCascade in it
+    // (a plug-in, a second reader) that works in inches or metres keeps its setting, and TolTurn
+    // still reads and writes millimetres.
+    void leavesOpenCascadeSettingsAsTheyWere()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("settings.step"));
+        STEPControl_Writer init; // defines the STEP parameters
+        QVERIFY(Interface_Static::SetCVal("write.step.unit", "INCH"));
+        QVERIFY(Interface_Static::SetCVal("xstep.cascade.unit", "M"));
+        const StepExportResult written = exportProfileToStep(expectedPin(), path);
+        const QByteArray writeUnit = Interface_Static::CVal("write.step.unit");
+        const CadImportResult r = importCadFile(path);
+        const QByteArray readUnit = Interface_Static::CVal("xstep.cascade.unit");
+        Interface_Static::SetCVal("write.step.unit", "MM");
+        Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+        QVERIFY2(written.ok, qPrintable(written.error));
+        QCOMPARE(writeUnit, QByteArray("INCH"));
+        QCOMPARE(readUnit, QByteArray("M"));
+        QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+        compareProfiles(*r.profile, expectedPin()); // in millimetres all the same
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY2(file.readAll().contains(".MILLI."), "the file is not written in millimetres");
+    }
+
     void exportFailsWithNamedError()
     {
         const QString path = m_dir.filePath(QStringLiteral("no-such-folder/part.step"));
