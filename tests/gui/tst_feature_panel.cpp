@@ -78,6 +78,21 @@ private Q_SLOTS:
         QCOMPARE(w.featurePanel()->startDiameterBox()->value(), 50.0);
     }
 
+    // The diameters a box goes through while it is stepped or typed into are one step in Undo.
+    void steppingADiameterIsOneUndoStep()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        w.profileView()->selectFeature(QStringLiteral("O4"));
+        for (const double d : {50.5, 51.0, 51.5, 52.0})
+            w.featurePanel()->startDiameterBox()->setValue(d);
+        QCOMPARE(feature(w, "O4").from, pt(35, 26));
+        QCOMPARE(w.document()->undoStack()->count(), 1);
+        w.document()->undoStack()->undo();
+        QCOMPARE(feature(w, "O4").from, pt(35, 25));
+        QVERIFY(!w.document()->isModified());
+    }
+
     void stepChamferAndDelete()
     {
         MainWindow w;

@@ -446,6 +446,57 @@ private Q_SLOTS:
         w.document()->undoStack()->undo();
         QCOMPARE(s->materialBox()->currentData().toString(), QStringLiteral("C45E-N"));
     }
+
+    // The values a spin box goes through while its arrows are clicked or a number is typed into it
+    // are one step in Undo (EXAMPLES.md item 5), back to where the first found the pass; another
+    // box, a saved state or a value back where the step began end the step.
+    void stepsOfOneBoxAreOneUndoStep()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        QUndoStack *undo = w.document()->undoStack();
+        const CuttingPass finishing = w.document()->project().passes[8];
+        QCOMPARE(undo->count(), 0);
+        for (const double feed : {0.12, 0.14, 0.16})
+            s->passBox(8, 1)->setValue(feed);
+        QCOMPARE(w.document()->project().passes[8].feed_mm_rev, 0.16);
+        QCOMPARE(undo->count(), 1);
+        QCOMPARE(undo->undoText(), QStringLiteral("Change cutting conditions"));
+        s->passBox(8, 2)->setValue(finishing.depthOfCut_mm + 0.1); // another box: its own step
+        s->passBox(8, 1)->setValue(0.18);                          // and this box again: a new one
+        QCOMPARE(undo->count(), 3);
+        undo->undo();
+        undo->undo();
+        undo->undo();
+        QCOMPARE(w.document()->project().passes[8], finishing);
+        QCOMPARE(s->passBox(8, 1)->value(), finishing.feed_mm_rev);
+        // There and back again: no step.
+        undo->clear();
+        s->passBox(8, 0)->setValue(finishing.cuttingSpeed_m_min + 10.0);
+        s->passBox(8, 0)->setValue(finishing.cuttingSpeed_m_min);
+        QCOMPARE(undo->count(), 0);
+        QVERIFY(!w.document()->isModified());
+        // A save ends the step: Undo goes back to the saved value first.
+        s->passBox(8, 0)->setValue(finishing.cuttingSpeed_m_min + 10.0);
+        undo->setClean();
+        s->passBox(8, 0)->setValue(finishing.cuttingSpeed_m_min + 20.0);
+        QCOMPARE(undo->count(), 2);
+        undo->undo();
+        QCOMPARE(w.document()->project().passes[8].cuttingSpeed_m_min, finishing.cuttingSpeed_m_min + 10.0);
+        QVERIFY(!w.document()->isModified());
+    }
+
+    // Choices in a list are steps of their own, even of one member and back again.
+    void choicesAreStepsOfTheirOwn()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        SetupPanel *s = w.setupPanel();
+        choose(s->materialBox(), QStringLiteral("42CrMo4-QT"));
+        choose(s->materialBox(), QStringLiteral("C45E-N"));
+        QCOMPARE(w.document()->undoStack()->count(), 2);
+    }
 };
 
 QTEST_MAIN(TestSetupPanel)

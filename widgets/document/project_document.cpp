@@ -28,65 +28,41 @@ Diagnostics errorsOf(const Project &project)
 
 } // namespace
 
-// One change of the tolerance list: the list before and after (tolerances are a handful of small
-// records; the rest of the project is not kept).
-class ToleranceListCommand : public QUndoCommand {
-public:
-    ToleranceListCommand(ProjectDocument &doc, std::vector<Tolerance> before, std::vector<Tolerance> after,
-                         const QString &text)
-        : QUndoCommand(text)
-        , m_doc(doc)
-        , m_before(std::move(before))
-        , m_after(std::move(after))
-    {
-    }
-
-    void undo() override { m_doc.setTolerances(m_before); }
-
-    void redo() override { m_doc.setTolerances(m_after); }
-
-private:
-    ProjectDocument &m_doc;
-    std::vector<Tolerance> m_before;
-    std::vector<Tolerance> m_after;
-};
-
-class DatumListCommand : public QUndoCommand {
-public:
-    DatumListCommand(ProjectDocument &doc, std::vector<Datum> before, std::vector<Datum> after, const QString &text)
-        : QUndoCommand(text)
-        , m_doc(doc)
-        , m_before(std::move(before))
-        , m_after(std::move(after))
-    {
-    }
-
-    void undo() override { m_doc.setDatums(m_before); }
-
-    void redo() override { m_doc.setDatums(m_after); }
-
-private:
-    ProjectDocument &m_doc;
-    std::vector<Datum> m_before;
-    std::vector<Datum> m_after;
-};
-
-// A change of one member of the project (the planning settings, the passes): before and after.
+// A change of one member of the project (the tolerances, the passes, the tool, …): its value
+// before and after; the rest of the project is not kept. Edits of one member by one control, one
+// after another (the clicks on a spin box's arrows, the keys typed into it), are one step in Undo,
+// as KDE Step merges repeated edits of a property (CommandEditProperty::mergeWith); an edit that
+// brings the member back to where the step began removes the step.
 template <typename T>
 class FieldCommand : public QUndoCommand {
 public:
-    FieldCommand(ProjectDocument &doc, T Project::*field, T before, T after, const QString &text)
+    FieldCommand(ProjectDocument &doc, T Project::*field, T before, T after, const QString &text,
+                 const QObject *control)
         : QUndoCommand(text)
         , m_doc(doc)
         , m_field(field)
         , m_before(std::move(before))
         , m_after(std::move(after))
+        , m_control(control)
     {
     }
 
     void undo() override { apply(m_before); }
 
     void redo() override { apply(m_after); }
+
+    // One id for the edits made by a control; mergeWith tells the controls and members apart.
+    [[nodiscard]] int id() const override { return m_control ? 1 : -1; }
+
+    bool mergeWith(const QUndoCommand *other) override
+    {
+        const auto *next = dynamic_cast<const FieldCommand<T> *>(other);
+        if (!next || next->m_control != m_control || next->m_field != m_field)
+            return false;
+        m_after = next->m_after;
+        setObsolete(m_after == m_before);
+        return true;
+    }
 
 private:
     void apply(const T &value)
@@ -99,6 +75,7 @@ private:
     T Project::*m_field;
     T m_before;
     T m_after;
+    const QObject *m_control; // the spin box whose steps these are; null: a step of its own
 };
 
 ProjectDocument::ProjectDocument(QObject *parent) : QObject(parent), m_undoStack(new QUndoStack(this))
@@ -207,8 +184,7 @@ Diagnostics ProjectDocument::addTolerance(const Tolerance &tolerance)
     candidate.tolerances.push_back(tolerance);
     Diagnostics errors = check(candidate);
     if (errors.empty())
-        m_undoStack->push(new ToleranceListCommand(*this, m_project.tolerances, candidate.tolerances,
-                                                   tr("Add tolerance %1").arg(tolerance.id)));
+        pushField(&Project::tolerances, candidate.tolerances, tr("Add tolerance %1").arg(tolerance.id));
     return errors;
 }
 
@@ -220,8 +196,7 @@ Diagnostics ProjectDocument::replaceTolerance(int index, const Tolerance &tolera
     candidate.tolerances[static_cast<std::size_t>(index)] = tolerance;
     Diagnostics errors = check(candidate);
     if (errors.empty())
-        m_undoStack->push(new ToleranceListCommand(*this, m_project.tolerances, candidate.tolerances,
-                                                   tr("Edit tolerance %1").arg(tolerance.id)));
+        pushField(&Project::tolerances, candidate.tolerances, tr("Edit tolerance %1").arg(tolerance.id));
     return errors;
 }
 
@@ -232,8 +207,8 @@ Diagnostics ProjectDocument::removeTolerance(int index)
     Project candidate = m_project;
     const QString id = candidate.tolerances[static_cast<std::size_t>(index)].id;
     candidate.tolerances.erase(candidate.tolerances.begin() + index);
-    m_undoStack->push(
-        new ToleranceListCommand(*this, m_project.tolerances, candidate.tolerances, tr("Remove tolerance %1").arg(id)));
+    // Never refused: a tolerance that is gone leaves no error behind it.
+    pushField(&Project::tolerances, candidate.tolerances, tr("Remove tolerance %1").arg(id));
     return {};
 }
 
@@ -251,9 +226,14 @@ Diagnostics ProjectDocument::setDatum(const Datum &datum)
         candidate.datums.push_back(datum);
     Diagnostics errors = check(candidate);
     if (errors.empty())
-        m_undoStack->push(new DatumListCommand(*this, m_project.datums, candidate.datums,
-                                               tr("Set datum %1 on %2").arg(datum.label, datum.featureId)));
+        pushField(&Project::datums, candidate.datums, tr("Set datum %1 on %2").arg(datum.label, datum.featureId));
     return errors;
+}
+
+template <typename T>
+void ProjectDocument::pushField(T Project::*field, const T &value, const QString &description)
+{
+    m_undoStack->push(new FieldCommand<T>(*this, field, m_project.*field, value, description, m_repeatingControl));
 }
 
 template <typename T>
@@ -265,7 +245,7 @@ Diagnostics ProjectDocument::editField(T Project::*field, const T &value, const 
     candidate.*field = value;
     Diagnostics errors = check(candidate);
     if (errors.empty())
-        m_undoStack->push(new FieldCommand<T>(*this, field, m_project.*field, value, description));
+        pushField(field, value, description);
     return errors;
 }
 
@@ -378,6 +358,17 @@ Diagnostics ProjectDocument::setPart(const PartProfile &part, const QString &des
     return editField(&Project::part, part, description);
 }
 
+ProjectDocument::RepeatedEdits::RepeatedEdits(ProjectDocument &document, const QObject *control)
+    : m_document(document)
+    , m_previous(std::exchange(document.m_repeatingControl, control))
+{
+}
+
+ProjectDocument::RepeatedEdits::~RepeatedEdits()
+{
+    m_document.m_repeatingControl = m_previous;
+}
+
 QString ProjectDocument::nextToleranceId() const
 {
     for (int n = 1;; ++n) {
@@ -388,18 +379,6 @@ QString ProjectDocument::nextToleranceId() const
         if (!used)
             return id;
     }
-}
-
-void ProjectDocument::setTolerances(std::vector<Tolerance> tolerances)
-{
-    m_project.tolerances = std::move(tolerances);
-    Q_EMIT projectChanged();
-}
-
-void ProjectDocument::setDatums(std::vector<Datum> datums)
-{
-    m_project.datums = std::move(datums);
-    Q_EMIT projectChanged();
 }
 
 } // namespace tolturn

@@ -15,7 +15,7 @@ namespace tolturn {
 // The open project: its data, the file it came from, its edit history and whether it has unsaved
 // changes (the undo stack is not at its clean state). Views observe it through projectChanged();
 // nothing here touches files or dialogs. Every edit goes through a small QUndoCommand that keeps
-// only what it changes.
+// only the member it changes; repeated edits of one member under one name are one step in Undo.
 class ProjectDocument : public QObject {
     Q_OBJECT
 public:
@@ -87,20 +87,35 @@ public:
     // A tolerance id not used yet: "T1", "T2", ...
     [[nodiscard]] QString nextToleranceId() const;
 
+    // While alive, the document's edits are steps of `control` (a spin box being stepped with its
+    // arrows or typed into): such edits of one member, one after another, are one step in Undo,
+    // which takes the member back to where the first of them found it. Outside such a scope, and
+    // from another control, every edit is a step of its own.
+    class RepeatedEdits {
+    public:
+        RepeatedEdits(ProjectDocument &document, const QObject *control);
+        ~RepeatedEdits();
+        RepeatedEdits(const RepeatedEdits &) = delete;
+        RepeatedEdits &operator=(const RepeatedEdits &) = delete;
+
+    private:
+        ProjectDocument &m_document;
+        const QObject *m_previous;
+    };
+
 Q_SIGNALS:
     void projectChanged();
     void filePathChanged(const QString &filePath);
     void modifiedChanged(bool modified);
 
 private:
-    friend class ToleranceListCommand;
-    friend class DatumListCommand;
     template <typename T>
     friend class FieldCommand;
 
     Diagnostics check(const Project &candidate) const;
-    void setTolerances(std::vector<Tolerance> tolerances);
-    void setDatums(std::vector<Datum> datums);
+    // Pushes the edit of one member, unchecked (editField checks first).
+    template <typename T>
+    void pushField(T Project::*field, const T &value, const QString &description);
     template <typename T>
     Diagnostics editField(T Project::*field, const T &value, const QString &description);
     // One field of a set-up after the first (index >= 1), as one undoable edit of the operations.
@@ -115,6 +130,8 @@ private:
     };
 
     std::vector<ReadProblem> m_readProblems;
+    const QObject *m_repeatingControl = nullptr; // RepeatedEdits
+
     bool m_hasProject = false;
     QString m_filePath;
     QUndoStack *m_undoStack;

@@ -7,6 +7,7 @@
 #include "widgets/common/length_spin_box.h"
 #include "widgets/common/project_fields.h"
 #include "widgets/document/project_document.h"
+#include "widgets/document/spin_box_steps.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -98,10 +99,10 @@ FeaturePanel::FeaturePanel(ProjectDocument &document, QWidget *parent)
     layout->addWidget(m_message);
     layout->addStretch(1);
     m_cornerSize->setMillimetres(1.0);
-    connect(m_startZ, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(false); });
-    connect(m_startD, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(false); });
-    connect(m_endZ, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(true); });
-    connect(m_endD, &QDoubleSpinBox::valueChanged, this, [this] { moveCorner(true); });
+    for (QDoubleSpinBox *box : {m_startZ, m_startD})
+        connectSpinBoxSteps(box, m_document, this, [this] { moveCorner(false); });
+    for (QDoubleSpinBox *box : {m_endZ, m_endD})
+        connectSpinBoxSteps(box, m_document, this, [this] { moveCorner(true); });
     connect(m_insertStep, &QPushButton::clicked, this, &FeaturePanel::insertStep);
     connect(m_delete, &QPushButton::clicked, this, &FeaturePanel::deleteFeature);
     connect(m_changeKind, &QPushButton::clicked, this, &FeaturePanel::changeKind);

@@ -10,6 +10,7 @@
 #include "widgets/common/length_spin_box.h"
 #include "widgets/common/project_fields.h"
 #include "widgets/document/project_document.h"
+#include "widgets/document/spin_box_steps.h"
 #include "widgets/setup/force_model_editor.h"
 #include "widgets/setup/stiffness_editor.h"
 
@@ -193,7 +194,7 @@ QWidget *SetupPanel::createDrawingGroup()
     form->addRow(tr("&Stock Ø:"), m_stockDiameter);
     for (QLineEdit *edit : {m_partName, m_drawingNumber, m_revision})
         connect(edit, &QLineEdit::editingFinished, this, &SetupPanel::applyDrawing);
-    connect(m_stockDiameter, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyDrawing);
+    connectSpinBoxSteps(m_stockDiameter, m_document, this, [this] { applyDrawing(); });
     setProjectField(*m_partName, QStringLiteral("part.name"));
     setProjectField(*m_drawingNumber, QStringLiteral("part.drawing_number"));
     setProjectField(*m_revision, QStringLiteral("part.revision"));
@@ -228,7 +229,7 @@ QWidget *SetupPanel::createToolGroup()
     form->addRow(tr("&Overhang:"), m_overhang);
     connect(m_insert, &QLineEdit::editingFinished, this, &SetupPanel::applyTool);
     connect(m_holder, &QComboBox::activated, this, &SetupPanel::applyTool);
-    connect(m_overhang, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyTool);
+    connectSpinBoxSteps(m_overhang, m_document, this, [this] { applyTool(); });
     return group;
 }
 
@@ -291,9 +292,8 @@ QWidget *SetupPanel::createBoringGroup()
     setProjectField(*m_pilotHole, QStringLiteral("boring_tool.pilot_hole_diameter_mm"));
     connect(m_boringBar, &QComboBox::activated, this, &SetupPanel::applyBoringTool);
     connect(m_boringInsert, &QLineEdit::editingFinished, this, &SetupPanel::applyBoringTool);
-    connect(m_boringOverhang, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
-    connect(m_boringEdgeOffset, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
-    connect(m_pilotHole, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyBoringTool);
+    for (QDoubleSpinBox *box : {m_boringOverhang, m_boringEdgeOffset, m_pilotHole})
+        connectSpinBoxSteps(box, m_document, this, [this] { applyBoringTool(); });
     return group;
 }
 
@@ -318,7 +318,7 @@ QWidget *SetupPanel::createClampingGroup()
     form->addRow(tr("Clamped &length:"), m_clampedLength);
     connect(m_heldEnd, &QComboBox::activated, this, &SetupPanel::applyClamping);
     connect(m_clamping, &QComboBox::activated, this, &SetupPanel::applyClamping);
-    connect(m_clampedLength, &QDoubleSpinBox::valueChanged, this, &SetupPanel::applyClamping);
+    connectSpinBoxSteps(m_clampedLength, m_document, this, [this] { applyClamping(); });
     return group;
 }
 
@@ -370,8 +370,8 @@ void SetupPanel::rebuildPassRows(int count)
             setProjectField(*box, QStringLiteral("passes[%1].%2")
                                       .arg(row - 1)
                                       .arg(QLatin1String(kPassKeys[static_cast<std::size_t>(c)])));
-            connect(box, &QDoubleSpinBox::valueChanged, this,
-                    [this, pass = static_cast<std::size_t>(row - 1), c] { applyPassValue(pass, c); });
+            connectSpinBoxSteps(box, m_document, this,
+                                [this, pass = static_cast<std::size_t>(row - 1), c] { applyPassValue(pass, c); });
         }
         m_passBoxes.push_back(std::move(boxes));
         m_passLabels.push_back(label);
