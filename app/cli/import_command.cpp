@@ -161,14 +161,14 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     if (parser.isSet(progress))
-        options.progress = [&err, last = -1](double fraction) mutable {
+        options.progress = Progress([&err, last = -1](double fraction) mutable {
             // Whole percents: a line for each change, flushed for the program that reads them.
             if (const int percent = static_cast<int>(100.0 * fraction); percent != last) {
                 last = percent;
                 err << "progress " << QString::number(percent / 100.0, 'f', 2) << Qt::endl;
             }
             return true;
-        };
+        });
     const CadImportResult r = importCadFile(file, options);
     const QString problem = writeImported(r, parser.value(output), parser.value(material), parser.value(machine), out);
     if (parser.isSet(json)) {

@@ -227,7 +227,7 @@ bool FileController::exportReportTo(const QString &pdfPath)
     const ReportResult result = writeReport(
         operationView(m_document.project(), std::min(m_operation, operationCount(m_document.project()) - 1)),
         {m_document.displayName(), loadPreferences().planner, m_learnedModel ? m_learnedModel() : nullptr}, pdfPath,
-        [&progress](double f) { return !progress || progress->update(f); });
+        Progress([&progress](double f) { return !progress || progress->update(f); }));
     QGuiApplication::restoreOverrideCursor();
     if (result.cancelled) {
         Q_EMIT statusMessage(tr("Report cancelled; nothing was written."));

@@ -4,6 +4,8 @@
 // IGES), so every use of a reader or a writer holds this lock.
 #pragma once
 
+#include "core/common/progress.h"
+
 #include <Message_Gravity.hxx>
 #include <Message_ProgressIndicator.hxx>
 #include <Message_ProgressScope.hxx>
@@ -58,32 +60,23 @@ private:
     bool m_applied = false;
 };
 
-// Passes OpenCascade's progress (Message_ProgressRange, 7.5 and later) on to a callback that maps
-// it into [from, to] of the whole import and may ask to stop.
+// Passes OpenCascade's progress (Message_ProgressRange, 7.5 and later) on to a part of the
+// import's progress (as Mayo's OccProgressIndicator does), and its stop back to OpenCascade.
 class ProgressBridge : public Message_ProgressIndicator {
 public:
-    ProgressBridge(std::function<bool(double)> callback, double from, double to)
-        : m_callback(std::move(callback))
-        , m_from(from)
-        , m_to(to)
-    {
-    }
+    explicit ProgressBridge(Progress part) : m_part(std::move(part)) {}
 
-    Standard_Boolean UserBreak() override { return m_cancelled.load(); }
+    Standard_Boolean UserBreak() override { return m_part.stopped(); }
 
     void Show(const Message_ProgressScope & /*scope*/, const Standard_Boolean /*force*/) override
     {
-        if (m_callback && !m_callback(m_from + (m_to - m_from) * GetPosition()))
-            m_cancelled = true;
+        (void)m_part.report(GetPosition());
     }
 
-    [[nodiscard]] bool cancelled() const { return m_cancelled.load(); }
+    [[nodiscard]] bool cancelled() const { return m_part.stopped(); }
 
 private:
-    std::function<bool(double)> m_callback;
-    double m_from;
-    double m_to;
-    std::atomic<bool> m_cancelled{false};
+    Progress m_part;
 };
 
 } // namespace tolturn::cad

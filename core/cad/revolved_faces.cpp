@@ -622,14 +622,14 @@ std::vector<AxisCandidate> findAxes(const TopoDS_Shape &body)
     return axes;
 }
 
-SectionTrace traceSection(const TopoDS_Shape &body, const gp_Ax1 &axis, const std::function<bool(double)> &progress)
+SectionTrace traceSection(const TopoDS_Shape &body, const gp_Ax1 &axis, const Progress &progress)
 {
     SectionTrace out;
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(body, TopAbs_FACE, faces);
     FaceTracer tracer(axis, out);
     for (int i = 1; i <= faces.Extent(); ++i) {
-        if (progress && !progress(static_cast<double>(i - 1) / faces.Extent())) {
+        if (!progress.report(static_cast<double>(i - 1) / faces.Extent())) {
             out.cancelled = true;
             return out;
         }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/cad/profile_chains.h"
+#include "core/common/progress.h"
 
 #include <QString>
 
@@ -60,8 +61,7 @@ struct SectionTrace {
 
 // The traces of the body's faces revolved about `axis` (z = distance along it from its origin),
 // the same trace of several faces merged, and the faces that are not revolved about it.
-// `progress` is called with the fraction of faces done and returns false to stop.
-[[nodiscard]] SectionTrace traceSection(const TopoDS_Shape &body, const gp_Ax1 &axis,
-                                        const std::function<bool(double)> &progress);
+// `progress` is told the fraction of faces done; a stop ends the trace, marked cancelled.
+[[nodiscard]] SectionTrace traceSection(const TopoDS_Shape &body, const gp_Ax1 &axis, const Progress &progress);
 
 } // namespace tolturn::cad

@@ -69,7 +69,7 @@ void fail(CadImportResult &result, const QString &message)
 
 bool report(const CadImportOptions &options, CadImportResult &result, double fraction)
 {
-    if (options.progress && !options.progress(fraction))
+    if (!options.progress.report(fraction))
         result.cancelled = true;
     return !result.cancelled;
 }
@@ -259,7 +259,8 @@ TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOpt
     }
     if (!report(options, result, kReadDone))
         return {};
-    const Handle(cad::ProgressBridge) bridge = new cad::ProgressBridge(options.progress, kReadDone, kTransferDone);
+    const Handle(cad::ProgressBridge) bridge =
+        new cad::ProgressBridge(Progress(options.progress, kReadDone, kTransferDone));
     reader.TransferRoots(bridge->Start());
     if (bridge->cancelled()) {
         result.cancelled = true;
@@ -660,12 +661,11 @@ PartProfile makeProfile(const QString &path, cad::ContourBuild &contours)
 void extractProfile(const QString &path, CadFormat format, const TopoDS_Shape &body, const gp_Ax1 &axis,
                     const CadImportOptions &options, CadImportResult &result)
 {
-    const auto progress = [&](double f) {
-        return report(options, result, kTransferDone + (kTraceDone - kTransferDone) * f);
-    };
-    cad::SectionTrace trace = cad::traceSection(body, axis, progress);
-    if (trace.cancelled)
+    cad::SectionTrace trace = cad::traceSection(body, axis, Progress(options.progress, kTransferDone, kTraceDone));
+    if (trace.cancelled) {
+        result.cancelled = true;
         return;
+    }
     const cad::Placement place = cad::placementOf(trace.pieces, options.flip, options.zOffset_mm);
     cad::placePieces(trace.pieces, place);
     std::sort(trace.leftOut.begin(), trace.leftOut.end(), [](const auto &a, const auto &b) { return a.face < b.face; });

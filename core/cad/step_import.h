@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/common/diagnostic.h"
+#include "core/common/progress.h"
 #include "core/part/profile.h"
 #include "core/project/milled_feature.h"
 
@@ -13,9 +14,6 @@
 
 namespace tolturn {
 
-// Reports progress from 0 to 1; returning false cancels the import.
-using CadProgress = std::function<bool(double fraction)>;
-
 // Cones no longer than this along their slant, between two other segments, become chamfers
 // (docs/step-import.md): the usual edge breaks of drawings (0.2 to 3 mm x 45°).
 inline constexpr double kDefaultChamferMaxLength_mm = 3.0;
@@ -26,7 +24,7 @@ struct CadImportOptions {
     bool flip = false;     // turn the part end for end: z = 0 at the other end
     double zOffset_mm = 0; // added to every z after placing z = 0 at the left end
     double chamferMaxLength_mm = kDefaultChamferMaxLength_mm;
-    CadProgress progress; // optional
+    Progress progress; // the import's progress, 0 … 1; a stop cancels it
 };
 
 // A body of the file the caller may choose with CadImportOptions::solidIndex.

@@ -62,7 +62,7 @@ void fillColumns(const PlanningProblem &problem, CuttingWindow &w, int firstColu
             }
         }
         const int finished = ++done;
-        if (options.progress && firstColumn == 0 && !options.progress(double(finished) / w.columns))
+        if (firstColumn == 0 && !options.progress.report(double(finished) / w.columns))
             cancel = true;
     }
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/common/progress.h"
 #include "core/planning/optimiser.h"
 
 #include <functional>
@@ -47,7 +48,7 @@ struct WindowOptions {
     int columns = 256;
     int rows = 256;
     int threads = 2;
-    std::function<bool(double fraction)> progress; // false cancels
+    Progress progress; // a stop cancels
 };
 
 [[nodiscard]] CuttingWindow cuttingWindow(const PlanningProblem &problem, WindowPlane plane, const PlanCandidate &base,

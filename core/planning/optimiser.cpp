@@ -34,12 +34,12 @@ double finiteOrWorst(double v)
 using Clock = std::chrono::steady_clock;
 
 struct Context {
-    Context(const PlanningProblem &p, int k, const PlanBox &box, const OptimisationOptions &o, Clock::time_point end)
+    Context(const PlanningProblem &p, int k, const PlanBox &box, Progress part, Clock::time_point end)
         : problem(&p)
         , roughingPasses(k)
         , lower(box.lower)
         , upper(box.upper)
-        , options(&o)
+        , progress(std::move(part))
         , deadline(end)
     {
     }
@@ -47,11 +47,9 @@ struct Context {
     const PlanningProblem *problem;
     int roughingPasses;
     std::vector<double> lower, upper;
-    const OptimisationOptions *options;
+    Progress progress; // this search's part of the whole run
     Clock::time_point deadline;
     int evaluations = 0;
-    double done = 0.0;  // fraction of the whole run before this search
-    double share = 0.0; // fraction of the whole run this search stands for
     int budget = 1;
     bool cancelled = false;
     bool timedOut = false;
@@ -67,8 +65,7 @@ struct Context {
     CandidateEvaluation evaluate(const double *u)
     {
         ++evaluations;
-        if (options->progress && evaluations % 64 == 0 &&
-            !options->progress(done + share * std::min(1.0, double(evaluations) / budget))) {
+        if (evaluations % 64 == 0 && !progress.report(double(evaluations) / budget)) {
             cancelled = true;
             throw nlopt::forced_stop();
         }
@@ -195,13 +192,10 @@ struct SearchOutcome {
 // Global search (penalised DIRECT-L) and, when `localEvaluations` > 0, a local refinement with
 // the constraints (COBYLA), for one number of roughing passes.
 SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEvaluations, int localEvaluations,
-                           const OptimisationOptions &options, double done, double share, PlanResult &result,
-                           Clock::time_point deadline)
+                           const Progress &part, PlanResult &result, Clock::time_point deadline)
 {
     const PlanBox box = planBox(problem, k);
-    Context c(problem, k, box, options, deadline);
-    c.done = done;
-    c.share = share;
+    Context c(problem, k, box, part, deadline);
     c.budget = globalEvaluations + localEvaluations;
     std::vector<double> u =
         runSearch(nlopt::GN_DIRECT_L, c, std::vector<double>(5, 0.5), globalEvaluations, penalised, false);
@@ -264,9 +258,10 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
     };
     std::vector<std::pair<Rank, int>> ranked;
     for (std::size_t i = 0; i < counts.size() && goOn(); ++i) {
-        const SearchOutcome coarse = searchPasses(problem, counts[i], kCoarse, 0, options,
-                                                  0.3 * static_cast<double>(i) / static_cast<double>(counts.size()),
-                                                  0.3 / static_cast<double>(counts.size()), result, deadline);
+        // The coarse searches share the first 30 % of the run, the refinements the rest.
+        const auto n = static_cast<double>(counts.size());
+        const Progress part(options.progress, 0.3 * static_cast<double>(i) / n, 0.3 * static_cast<double>(i + 1) / n);
+        const SearchOutcome coarse = searchPasses(problem, counts[i], kCoarse, 0, part, result, deadline);
         keepIfBetter(coarse);
         ranked.emplace_back(rank(coarse.evaluation), counts[i]);
     }
@@ -276,10 +271,11 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
     PlanCandidate leastViolating;
     const std::size_t refined = std::min(kRefined, ranked.size());
     for (std::size_t i = 0; i < refined && goOn(); ++i) {
-        const SearchOutcome o =
-            searchPasses(problem, ranked[i].second, options.globalEvaluations, options.localEvaluations, options,
-                         0.3 + 0.7 * static_cast<double>(i) / static_cast<double>(refined),
-                         0.7 / static_cast<double>(refined), result, deadline);
+        const auto n = static_cast<double>(refined);
+        const Progress part(options.progress, 0.3 + 0.7 * static_cast<double>(i) / n,
+                            0.3 + 0.7 * static_cast<double>(i + 1) / n);
+        const SearchOutcome o = searchPasses(problem, ranked[i].second, options.globalEvaluations,
+                                             options.localEvaluations, part, result, deadline);
         keepIfBetter(o);
         if (!o.evaluation.feasible(1e-6) && o.evaluation.totalViolation() < leastViolation) {
             leastViolation = o.evaluation.totalViolation();
@@ -295,7 +291,7 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
         // Nothing feasible: the plan that violates the constraints least, and what it violates.
         const int k = leastViolating.roughingPasses;
         const PlanBox box = planBox(problem, k);
-        Context c(problem, k, box, options, deadline);
+        Context c(problem, k, box, Progress(options.progress, 1.0, 1.0), deadline); // after the run's end
         c.budget = options.globalEvaluations;
         std::vector<double> u = runSearch(nlopt::GN_DIRECT_L, c, std::vector<double>(5, 0.5), options.globalEvaluations,
                                           violationOnly, false);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/common/progress.h"
 #include "core/planning/planning_problem.h"
 
 #include <functional>
@@ -13,8 +14,8 @@ struct OptimisationOptions {
     // Wall-clock bound on the whole search; the best plan found by then is returned, marked
     // timedOut. The evaluation budgets bound it too; this bounds a part whose evaluations are slow.
     double timeLimit_s = 60.0;
-    // Called now and then with the fraction done; returning false cancels.
-    std::function<bool(double fraction)> progress;
+    // Told now and then the fraction done; a stop cancels.
+    Progress progress;
 };
 
 struct PlanResult {

@@ -17,13 +17,8 @@ PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, c
     if (!built.problem)
         return report;
     // Shares of the work: optimisation 40 %, window 30 %, clamping 30 %.
-    auto stage = [&options](double from, double share) {
-        return [&options, from, share](double fraction) {
-            return !options.progress || options.progress(from + share * fraction);
-        };
-    };
     OptimisationOptions o;
-    o.progress = stage(0.0, 0.4);
+    o.progress = Progress(options.progress, 0.0, 0.4);
     report.plan = optimisePlan(*built.problem, o);
     if (report.plan.cancelled) {
         report.cancelled = true;
@@ -31,7 +26,7 @@ PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, c
     }
     WindowOptions w;
     w.columns = w.rows = options.windowSize;
-    w.progress = stage(0.4, 0.3);
+    w.progress = Progress(options.progress, 0.4, 0.7);
     report.window = cuttingWindow(*built.problem, options.plane, report.plan.candidate, w);
     if (report.window.cancelled) {
         report.cancelled = true;
@@ -39,11 +34,10 @@ PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, c
     }
     if (options.adviseClamping) {
         OptimisationOptions c;
-        c.progress = stage(0.7, 0.3);
+        c.progress = Progress(options.progress, 0.7, 1.0);
         report.clamping = adviseClamping(project, data, c);
     }
-    if (options.progress)
-        options.progress(1.0);
+    (void)options.progress.report(1.0);
     return report;
 }
 

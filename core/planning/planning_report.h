@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/common/progress.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/compensation.h"
 #include "core/planning/cutting_window.h"
@@ -25,7 +26,7 @@ struct PlanningJobOptions {
     WindowPlane plane = WindowPlane::FeedSpeed;
     int windowSize = 128;
     bool adviseClamping = true;
-    std::function<bool(double fraction)> progress; // false cancels
+    Progress progress; // a stop cancels
     // What was learned of the machine, when the planner plans with it (PlanningProblem::build).
     std::shared_ptr<const LoadedModel> learned;
 };

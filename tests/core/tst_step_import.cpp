@@ -750,7 +750,7 @@ private Q_SLOTS:
         QVERIFY(back->milledFeatures == r.milledFeatures);
         QVERIFY(back->diagnostics == r.diagnostics);
         // Cancelled at the very end, the import gives neither the profile nor its features.
-        options.progress = [](double fraction) { return fraction < 1.0; };
+        options.progress = Progress([](double fraction) { return fraction < 1.0; });
         const CadImportResult cancelled = importCadFile(path, options);
         QVERIFY(cancelled.cancelled && !cancelled.profile && cancelled.milledFeatures.empty());
     }
@@ -1208,17 +1208,17 @@ private Q_SLOTS:
         writeStep(shaftPart(), path);
         std::vector<double> seen;
         CadImportOptions options;
-        options.progress = [&](double f) {
+        options.progress = Progress([&](double f) {
             seen.push_back(f);
             return true;
-        };
+        });
         const CadImportResult done = importCadFile(path, options);
         QVERIFY(done.profile && !done.cancelled);
         QVERIFY(seen.size() >= 3);
         QVERIFY(std::is_sorted(seen.begin(), seen.end()));
         QCOMPARE(seen.back(), 1.0);
         for (const double stopAt : {0.0, 0.5, 0.9}) {
-            options.progress = [stopAt](double f) { return f < stopAt; };
+            options.progress = Progress([stopAt](double f) { return f < stopAt; });
             const CadImportResult cancelled = importCadFile(path, options);
             QVERIFY(cancelled.cancelled);
             QVERIFY(!cancelled.profile);

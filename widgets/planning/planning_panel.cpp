@@ -351,17 +351,16 @@ void PlanningPanel::optimise()
     if (isRunning() || !m_document.hasProject() || m_document.hasProblems())
         return;
     m_fraction = std::make_shared<std::atomic<double>>(0.0);
-    m_stop = std::make_shared<std::atomic<bool>>(false);
     m_runOperation = m_operation;
     PlanningJobOptions options;
     options.plane = static_cast<WindowPlane>(m_plane->currentData().toInt());
     options.learned = m_learned;
     auto fraction = m_fraction;
-    auto stop = m_stop;
-    options.progress = [fraction, stop](double f) {
-        fraction->store(f);
-        return !stop->load();
-    };
+    m_job = Progress([fraction](double f) {
+        fraction->store(f); // shown by the poll below
+        return true;
+    });
+    options.progress = m_job;
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
     m_progress->setValue(0);
@@ -379,8 +378,7 @@ void PlanningPanel::optimise()
 
 void PlanningPanel::cancel()
 {
-    if (m_stop)
-        m_stop->store(true);
+    m_job.stop();
 }
 
 void PlanningPanel::applyPlan()

@@ -135,7 +135,7 @@ private:
     QPushButton *m_export;
     QFutureWatcher<PlanningReport> m_watcher;
     std::shared_ptr<std::atomic<double>> m_fraction;
-    std::shared_ptr<std::atomic<bool>> m_stop;
+    Progress m_job; // the running job's progress, which Cancel stops
     std::unique_ptr<PlanningReport> m_report;
     FinishingOutput m_finishing;
     bool m_updatingControls = false;

@@ -183,8 +183,7 @@ void errorPlot(Layout &l, const MilledFeature &f, const MilledFeatureEvaluation 
 
 } // namespace
 
-bool milledFeaturesSection(Layout &layout, const Project &project, const QString &heading,
-                           const std::function<bool(double)> &progress)
+bool milledFeaturesSection(Layout &layout, const Project &project, const QString &heading, const Progress &progress)
 {
     if (project.milledFeatures.empty())
         return true;
@@ -192,7 +191,7 @@ bool milledFeaturesSection(Layout &layout, const Project &project, const QString
     const auto count = static_cast<double>(project.milledFeatures.size());
     for (const MilledFeature &f : project.milledFeatures) {
         evaluations.push_back(evaluateMilledFeature(f));
-        if (progress && !progress(static_cast<double>(evaluations.size()) / count))
+        if (!progress.report(static_cast<double>(evaluations.size()) / count))
             return false;
     }
     layout.ensure(160); // the heading, the paragraph and the table's first row together

@@ -5,6 +5,7 @@
 // the limits of its tolerance zone.
 #pragma once
 
+#include "core/common/progress.h"
 #include "core/project/project.h"
 #include "widgets/report/report_layout.h"
 
@@ -19,6 +20,6 @@ namespace tolturn::report {
 // `progress` (0…1 of the section) is told after each, and returning false cancels: the function
 // then returns false and lays out nothing.
 [[nodiscard]] bool milledFeaturesSection(Layout &layout, const Project &project, const QString &heading,
-                                         const std::function<bool(double)> &progress = {});
+                                         const Progress &progress = {});
 
 } // namespace tolturn::report

@@ -545,11 +545,10 @@ QByteArray pdfOf(const std::vector<std::unique_ptr<QPicture>> &pages, const Proj
 
 } // namespace
 
-RenderedReport renderReport(const Project &project, const ReportHeader &header,
-                            const std::function<bool(double)> &progress)
+RenderedReport renderReport(const Project &project, const ReportHeader &header, const Progress &progress)
 {
     RenderedReport rendered;
-    auto step = [&](double f) { return !progress || progress(f); };
+    auto step = [&progress](double f) { return progress.report(f); };
     const DataLibrary &data = DataLibrary::builtIn();
     const LoadedModel *model = header.learned.get();
     // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
@@ -595,7 +594,7 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
     plan(layout, project, finishing, header.learned);
     feedSchedule(layout, project, header.learned);
     if (!step(0.8) || !report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"),
-                                                     [&](double f) { return step(0.8 + 0.15 * f); })) {
+                                                     Progress(progress, 0.8, 0.95))) {
         rendered.cancelled = true;
         return rendered;
     }
@@ -613,7 +612,7 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header,
 }
 
 ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
-                         const std::function<bool(double)> &progress)
+                         const Progress &progress)
 {
     ReportResult result;
     const RenderedReport rendered = renderReport(project, header, progress);
@@ -625,8 +624,7 @@ ReportResult writeReport(const Project &project, const ReportHeader &header, con
     }
     result.ok = true;
     result.pages = rendered.pages;
-    if (progress)
-        progress(1.0);
+    (void)progress.report(1.0);
     return result;
 }
 

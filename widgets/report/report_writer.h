@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/common/progress.h"
 #include "core/learning/machine_learning.h"
 #include "core/project/project.h"
 
@@ -34,9 +35,9 @@ struct ReportHeader {
 // per contribution, the tolerance verdicts, the plan with the cutting window, the clamping
 // ranking and the compensation, the assumptions and the sources of the model and the data, with
 // page numbers. Drawing and plots are vectors. Needs a QApplication (offscreen is enough). The
-// file is written atomically. `progress` (0…1) returning false cancels.
+// file is written atomically. `progress` is told 0…1; a stop cancels.
 [[nodiscard]] ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
-                                       const std::function<bool(double)> &progress = {});
+                                       const Progress &progress = {});
 
 // The same report as PDF bytes in memory (for standard output); `pages` set, `error` empty.
 struct RenderedReport {
@@ -46,6 +47,6 @@ struct RenderedReport {
 };
 
 [[nodiscard]] RenderedReport renderReport(const Project &project, const ReportHeader &header,
-                                          const std::function<bool(double)> &progress = {});
+                                          const Progress &progress = {});
 
 } // namespace tolturn
