@@ -168,14 +168,14 @@ void MainWindow::createEditMenu()
     QAction *deleteFeature = edit->addAction(tr("&Delete Feature"));
     deleteFeature->setObjectName(QStringLiteral("deleteFeatureAction"));
     deleteFeature->setShortcut(QKeySequence::Delete);
-    deleteFeature->setEnabled(false);
+    enableWhen(deleteFeature, ActionNeeds::SelectedFeature);
     connect(deleteFeature, &QAction::triggered, m_feature, &FeaturePanel::deleteFeature);
-    connect(m_profileView, &ProfileView::featureSelected, deleteFeature,
-            [deleteFeature](const QString &id) { deleteFeature->setEnabled(!id.isEmpty()); });
+    connect(m_profileView, &ProfileView::featureSelected, this, &MainWindow::updateActions);
     edit->addSeparator();
     QAction *operations = edit->addAction(tr("&Operations…"));
     operations->setObjectName(QStringLiteral("operationsAction"));
     operations->setToolTip(tr("The set-ups the part is turned in and the features each cuts"));
+    enableWhen(operations, ActionNeeds::Project);
     connect(operations, &QAction::triggered, this, &MainWindow::editOperations);
     edit->addSeparator();
     QAction *preferences = edit->addAction(actionIcon("preferences"), tr("Pre&ferences…"));
@@ -252,20 +252,24 @@ void MainWindow::createDocks()
     fit->setObjectName(QStringLiteral("fitPartAction"));
     fit->setShortcut(Qt::CTRL | Qt::Key_0);
     fit->setToolTip(tr("Show the whole part in the drawing (Ctrl+0, or double-click the drawing)"));
+    enableWhen(fit, ActionNeeds::Project);
     connect(fit, &QAction::triggered, m_profileView, &ProfileView::fitPart);
     QAction *optimise = view->addAction(actionIcon("optimise"), tr("&Optimise Cutting Conditions"));
     optimise->setObjectName(QStringLiteral("optimiseAction"));
     optimise->setShortcut(Qt::Key_F5);
     optimise->setToolTip(tr("Find the cutting conditions that hold every tolerance at least time or cost (F5)"));
+    enableWhen(optimise, ActionNeeds::IdleProject);
     connect(optimise, &QAction::triggered, this, [this, planning] {
         planning->raise();
-        if (m_document->hasProject() && !m_planning->isRunning())
-            m_planning->optimise();
+        m_planning->optimise();
     });
+    connect(m_planning, &PlanningPanel::started, this, &MainWindow::updateActions);
+    connect(m_planning, &PlanningPanel::finished, this, &MainWindow::updateActions);
     QAction *planningData = view->addAction(tr("Planning &Data…"));
     planningData->setObjectName(QStringLiteral("planningDataAction"));
     planningData->setToolTip(
         tr("Rates, tool life, the insert's cutting ranges and the part's limits for the optimiser"));
+    enableWhen(planningData, ActionNeeds::Project);
     connect(planningData, &QAction::triggered, this, [this, planning] {
         planning->raise();
         m_planning->editPlanningData();
@@ -345,21 +349,27 @@ void MainWindow::createFileMenu()
     }
     file->addSeparator();
 
-    m_saveAction = file->addAction(actionIcon("document-save"), tr("&Save"));
-    m_saveAction->setShortcut(QKeySequence::Save);
-    connect(m_saveAction, &QAction::triggered, m_files, [this] { m_files->save(); });
-    m_saveAsAction = file->addAction(tr("Save &As…"));
-    m_saveAsAction->setShortcut(QKeySequence::SaveAs);
-    connect(m_saveAsAction, &QAction::triggered, m_files, [this] { m_files->saveAs(); });
+    QAction *save = file->addAction(actionIcon("document-save"), tr("&Save"));
+    save->setShortcut(QKeySequence::Save);
+    save->setObjectName(QStringLiteral("saveAction"));
+    enableWhen(save, ActionNeeds::Project);
+    connect(save, &QAction::triggered, m_files, [this] { m_files->save(); });
+    QAction *saveAs = file->addAction(tr("Save &As…"));
+    saveAs->setShortcut(QKeySequence::SaveAs);
+    saveAs->setObjectName(QStringLiteral("saveAsAction"));
+    enableWhen(saveAs, ActionNeeds::Project);
+    connect(saveAs, &QAction::triggered, m_files, [this] { m_files->saveAs(); });
     m_exportReportAction = file->addAction(actionIcon("export-report"), tr("Export &Report…"));
     m_exportReportAction->setShortcut(Qt::CTRL | Qt::Key_P);
     m_exportReportAction->setObjectName(QStringLiteral("exportReportAction"));
+    enableWhen(m_exportReportAction, ActionNeeds::ComputableProject);
     connect(m_exportReportAction, &QAction::triggered, m_files, [this] { m_files->exportReport(); });
-    m_exportStepAction = file->addAction(tr("Export S&TEP…"));
-    m_exportStepAction->setObjectName(QStringLiteral("exportStepAction"));
-    m_exportStepAction->setToolTip(tr("Write the part as a solid revolved about its axis (STEP, mm)"));
-    connect(m_exportStepAction, &QAction::triggered, m_cad, [this] { m_cad->exportStep(); });
-    m_toolBar->addActions({newProject, open, importCad, m_saveAction});
+    QAction *exportStep = file->addAction(tr("Export S&TEP…"));
+    exportStep->setObjectName(QStringLiteral("exportStepAction"));
+    exportStep->setToolTip(tr("Write the part as a solid revolved about its axis (STEP, mm)"));
+    enableWhen(exportStep, ActionNeeds::ComputableProject);
+    connect(exportStep, &QAction::triggered, m_cad, [this] { m_cad->exportStep(); });
+    m_toolBar->addActions({newProject, open, importCad, save});
     m_toolBar->addSeparator();
     QAction *closeAction = file->addAction(tr("&Close"));
     closeAction->setShortcut(QKeySequence::Close);
@@ -375,11 +385,12 @@ void MainWindow::createFileMenu()
 void MainWindow::createToolsMenu()
 {
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));
-    m_solidCheckAction = tools->addAction(tr("Check with &Solid FE…"));
-    m_solidCheckAction->setObjectName(QStringLiteral("solidCheckAction"));
-    m_solidCheckAction->setToolTip(
+    QAction *solidCheck = tools->addAction(tr("Check with &Solid FE…"));
+    solidCheck->setObjectName(QStringLiteral("solidCheckAction"));
+    solidCheck->setToolTip(
         tr("Check the beam's deflection of the part against a solid model meshed with gmsh and solved with CalculiX"));
-    connect(m_solidCheckAction, &QAction::triggered, this, &MainWindow::checkWithSolidFe);
+    enableWhen(solidCheck, ActionNeeds::ComputableProject);
+    connect(solidCheck, &QAction::triggered, this, &MainWindow::checkWithSolidFe);
     tools->addSeparator();
     QAction *milling = tools->addAction(tr("Čuš && Župerl &End-Milling Example…"));
     milling->setObjectName(QStringLiteral("endMillingExampleAction"));
@@ -454,15 +465,38 @@ void MainWindow::rebuildRecentMenu()
 
 void MainWindow::updateTitle()
 {
-    const bool has = m_document->hasProject();
-    const bool computable = has && !m_document->hasProblems();
-    m_saveAction->setEnabled(has);
-    m_saveAsAction->setEnabled(has);
-    m_exportReportAction->setEnabled(computable);
-    m_exportStepAction->setEnabled(computable);
-    m_solidCheckAction->setEnabled(computable);
+    updateActions();
     setWindowModified(m_document->isModified());
-    setWindowTitle(has ? tr("%1[*] — TolTurn").arg(m_document->displayName()) : QStringLiteral("TolTurn"));
+    setWindowTitle(m_document->hasProject() ? tr("%1[*] — TolTurn").arg(m_document->displayName())
+                                            : QStringLiteral("TolTurn"));
+}
+
+// Set when the window is built (updateTitle() at the end of the constructor) and on every change.
+void MainWindow::enableWhen(QAction *action, ActionNeeds needs)
+{
+    m_actionNeeds.emplace_back(action, needs);
+}
+
+bool MainWindow::met(ActionNeeds needs) const
+{
+    const bool computable = m_document->hasProject() && !m_document->hasProblems();
+    switch (needs) {
+    case ActionNeeds::Project:
+        return m_document->hasProject();
+    case ActionNeeds::ComputableProject:
+        return computable;
+    case ActionNeeds::IdleProject:
+        return computable && !m_planning->isRunning();
+    case ActionNeeds::SelectedFeature:
+        return m_document->hasProject() && !m_profileView->selectedFeature().isEmpty();
+    }
+    return false;
+}
+
+void MainWindow::updateActions()
+{
+    for (const auto &[action, needs] : m_actionNeeds)
+        action->setEnabled(met(needs));
 }
 
 void MainWindow::showProject()

@@ -6,6 +6,9 @@
 
 #include <QMainWindow>
 
+#include <utility>
+#include <vector>
+
 class QDockWidget;
 class QComboBox;
 class QLabel;
@@ -112,6 +115,17 @@ private:
     void showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics);
     void rebuildRecentMenu();
     void updateTitle();
+    // What an action needs to be enabled (Mayo's Command::getEnabledStatus): asked again by
+    // updateActions() whenever the document, the selected feature or a planning run changes.
+    enum class ActionNeeds {
+        Project,           // an open project
+        ComputableProject, // an open project without problems
+        IdleProject,       // a computable project and no planning run going
+        SelectedFeature,   // a feature of the drawing selected
+    };
+    void enableWhen(QAction *action, ActionNeeds needs);
+    [[nodiscard]] bool met(ActionNeeds needs) const;
+    void updateActions();
     void showProject();
     // The set-up shown, of a project of several operations (docs/operations.md).
     void updateOperationChoice();
@@ -140,13 +154,10 @@ private:
     int m_operation = 0;
     QLabel *m_summary;
     HelpBrowser *m_help = nullptr;
-    QAction *m_saveAction = nullptr;
     QAction *m_exportReportAction = nullptr;
-    QAction *m_saveAsAction = nullptr;
-    QAction *m_exportStepAction = nullptr;
-    QAction *m_solidCheckAction = nullptr;
     QDockWidget *m_importDock = nullptr;
     QDockWidget *m_problemsDock = nullptr;
+    std::vector<std::pair<QAction *, ActionNeeds>> m_actionNeeds;
 };
 
 } // namespace tolturn

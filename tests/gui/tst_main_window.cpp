@@ -493,6 +493,42 @@ private Q_SLOTS:
         QVERIFY(shown.contains(QStringLiteral("file on disk is unchanged")));
     }
 
+    // Every action is enabled when what it needs is there (EXAMPLES.md item 11): a project, one
+    // that can be computed, no planning run going, a selected feature.
+    void actionsAreEnabledWhenTheyCanRun()
+    {
+        MainWindow w;
+        const auto action = [&w](const char *name) {
+            const auto *a = w.findChild<QAction *>(QLatin1String(name));
+            return a && a->isEnabled();
+        };
+        const std::vector<const char *> projectActions{"saveAction",         "saveAsAction",       "fitPartAction",
+                                                       "operationsAction",   "planningDataAction", "optimiseAction",
+                                                       "exportReportAction", "exportStepAction",   "solidCheckAction"};
+        for (const char *name : projectActions)
+            QVERIFY2(w.findChild<QAction *>(QLatin1String(name)), name);
+        QVERIFY(w.fileController()->close());
+        for (const char *name : projectActions)
+            QVERIFY2(!action(name), name);
+        QVERIFY(!action("deleteFeatureAction"));
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        for (const char *name : projectActions)
+            QVERIFY2(action(name), name);
+        QVERIFY(!action("deleteFeatureAction")); // nothing selected
+        w.profileView()->selectFeature(QStringLiteral("O4"));
+        QVERIFY(action("deleteFeatureAction"));
+        w.profileView()->selectFeature(QString());
+        QVERIFY(!action("deleteFeatureAction"));
+        // While the optimiser runs, Optimise waits for it.
+        QSignalSpy finished(w.planningPanel(), &PlanningPanel::finished);
+        w.findChild<QAction *>(QStringLiteral("optimiseAction"))->trigger();
+        QVERIFY(w.planningPanel()->isRunning());
+        QVERIFY(!action("optimiseAction"));
+        QVERIFY(action("exportReportAction"));
+        QVERIFY(finished.wait(60000));
+        QVERIFY(action("optimiseAction"));
+    }
+
     void exportReportFromTheFileMenu()
     {
         MainWindow w;

@@ -374,6 +374,7 @@ void PlanningPanel::optimise()
     const Project project = operationProject(); // a copy: the worker never touches the document
     m_watcher.setFuture(QtConcurrent::run(
         workerThreads(), [project, options] { return runPlanningJob(project, DataLibrary::builtIn(), options); }));
+    Q_EMIT started();
 }
 
 void PlanningPanel::cancel()

@@ -88,6 +88,7 @@ public:
     [[nodiscard]] static QString problemsText();
 
 Q_SIGNALS:
+    void started();  // a run began (isRunning() is true)
     void finished(); // a run ended, completed or cancelled
 
 private:
