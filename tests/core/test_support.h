@@ -16,6 +16,7 @@
 #include <QStringList>
 #include <QtGlobal>
 
+#include <cmath>
 #include <numbers>
 #include <sys/stat.h>
 #include <vector>
@@ -28,6 +29,18 @@ inline constexpr double kSteelE_MPa = 210000.0;
 inline constexpr double kSteelNu = 0.3;
 inline constexpr double kSteelG_MPa = kSteelE_MPa / (2 * (1 + kSteelNu));
 inline constexpr double kKappaSolidCircle = 6 * (1 + kSteelNu) / (7 + 6 * kSteelNu);
+
+// `value` within `relative` of |reference| (plus `absolute`, for a reference at or near zero).
+inline bool nearRelative(double value, double reference, double relative, double absolute = 0.0)
+{
+    return std::abs(value - reference) <= relative * std::abs(reference) + absolute;
+}
+
+// `value` within `tolerance` of `expected`, in their own unit.
+inline bool nearAbsolute(double value, double expected, double tolerance)
+{
+    return std::abs(value - expected) <= tolerance;
+}
 
 inline Segment seg(const char *id, SegmentKind kind, ProfilePoint a, ProfilePoint b)
 {

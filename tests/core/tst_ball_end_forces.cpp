@@ -2,6 +2,8 @@
 // The forces and the tool deflection of five-axis ball-end milling (Öztürk & Budak, seed 001;
 // docs/milling.md), each against a closed form, a hand calculation or a three-axis summation written
 // here from the paper's tables and the classic ball-end force directions.
+#include "tests/core/test_support.h"
+
 #include "core/milling/ball_end_deflection.h"
 #include "core/milling/ball_end_forces.h"
 #include "core/milling/seed_ball_end_cases.h"
@@ -51,11 +53,6 @@ double integralOfLocalRadius(double a)
         return 0.5 * u * std::sqrt(kR0 * kR0 - u * u) + 0.5 * kR0 * kR0 * std::asin(u / kR0);
     };
     return primitive(kR0) - primitive(kR0 - a);
-}
-
-bool near(double value, double expected, double tolerance)
-{
-    return std::abs(value - expected) <= tolerance;
 }
 
 // The angle φ brought into [0, 2π).
@@ -120,13 +117,13 @@ private Q_SLOTS:
         const auto samples = ballEndForces(paperTool(1, 0.0), tangentialOnly(ktc), slot(a, ft), {200, 360});
         for (const BallEndForceSample &s : samples) {
             const double expected = std::max(0.0, ktc * ft * a * std::sin(s.rotation_rad));
-            QVERIFY2(near(s.workpieceFrame_N.head<2>().norm(), expected, 1e-9 * ktc),
+            QVERIFY2(test::nearAbsolute(s.workpieceFrame_N.head<2>().norm(), expected, 1e-9 * ktc),
                      qPrintable(QStringLiteral("φ = %1").arg(s.rotation_rad)));
         }
         // At φ = 90° the flute is at the front (+F) moving towards −C: 2000 · 0.1 · 3 = 600 N on the
         // tool along +C, against the edge's motion.
-        QVERIFY(near(samples[90].workpieceFrame_N.y(), 600.0, 1e-9));
-        QVERIFY(near(samples[90].workpieceFrame_N.x(), 0.0, 1e-9));
+        QVERIFY(test::nearAbsolute(samples[90].workpieceFrame_N.y(), 600.0, 1e-9));
+        QVERIFY(test::nearAbsolute(samples[90].workpieceFrame_N.x(), 0.0, 1e-9));
     }
 
     void slotMeanTorque_data()
@@ -176,7 +173,7 @@ private Q_SLOTS:
         QVERIFY2(std::abs(mean / expected - 1.0) < 2e-3,
                  qPrintable(QStringLiteral("%1 against %2").arg(mean).arg(expected)));
         // 1 kN·mm at 1000 1/min: 1 N·m · 2π · 1000 / 60 = 104.72 W.
-        QVERIFY(near(spindlePower_W(1000.0, 1000.0), 104.719755, 1e-6));
+        QVERIFY(test::nearAbsolute(spindlePower_W(1000.0, 1000.0), 104.719755, 1e-6));
     }
 
     // Helix 0, one flute, slot, the three cutting coefficients: all elements at φ, t·db = f_t sin φ
@@ -263,7 +260,7 @@ private Q_SLOTS:
         for (int m = 1; m < 180; ++m) {
             const double fz = samples[static_cast<std::size_t>(m)].toolFrame_N.z();
             const double mirrored = samples[static_cast<std::size_t>(180 - m)].toolFrame_N.z();
-            QVERIFY(near(fz, mirrored, 1e-9 * std::abs(fz)));
+            QVERIFY(test::nearAbsolute(fz, mirrored, 1e-9 * std::abs(fz)));
             largest = std::max(largest, std::abs(fz));
         }
         QVERIFY(largest > 10.0);
@@ -300,10 +297,11 @@ private Q_SLOTS:
         cut.tilt_rad = kPi / 6.0;
         const BallEndMill mill = paperTool(2, 30.0);
         const BallEndBand band = engagedBand(mill, cut);
-        QVERIFY(near(band.low_mm, 0.0, 1e-12)); // θ = γ: the cap just reaches the tip
+        QVERIFY(test::nearAbsolute(band.low_mm, 0.0, 1e-12)); // θ = γ: the cap just reaches the tip
         const double theta = std::acos(0.75);
-        QVERIFY(near(band.high_mm, kR0 * (1.0 - std::cos(2.0 * theta)), 1e-12));
-        QVERIFY(near(deepestCutOnBall_mm(12.0, kPi / 6.0, kPi / 6.0), 6.0 * (1.0 - std::sqrt(1.0 - 0.5625)), 1e-12));
+        QVERIFY(test::nearAbsolute(band.high_mm, kR0 * (1.0 - std::cos(2.0 * theta)), 1e-12));
+        QVERIFY(test::nearAbsolute(deepestCutOnBall_mm(12.0, kPi / 6.0, kPi / 6.0),
+                                   6.0 * (1.0 - std::sqrt(1.0 - 0.5625)), 1e-12));
         cut.axialDepth_mm = 2.1;
         const auto problems = validateBallEndCut(mill, cut, {});
         QCOMPARE(problems.size(), std::size_t(1));
@@ -322,10 +320,10 @@ private Q_SLOTS:
         for (std::size_t i = 0; i < cases.size(); ++i) {
             const SeedBallEndCase &c = cases[i];
             QCOMPARE(c.mill.diameter_mm, 12.0);
-            QVERIFY(near(c.mill.helix_rad, kPi / 6.0, 1e-15));
-            QVERIFY(near(c.cut.lead_rad, leads[i] * kPi / 180.0, 1e-15));
-            QVERIFY(near(c.cut.tilt_rad, tilts[i] * kPi / 180.0, 1e-15));
-            QVERIFY(near(c.cut.feedPerTooth_mm * c.mill.flutes, 0.1, 1e-15));
+            QVERIFY(test::nearAbsolute(c.mill.helix_rad, kPi / 6.0, 1e-15));
+            QVERIFY(test::nearAbsolute(c.cut.lead_rad, leads[i] * kPi / 180.0, 1e-15));
+            QVERIFY(test::nearAbsolute(c.cut.tilt_rad, tilts[i] * kPi / 180.0, 1e-15));
+            QVERIFY(test::nearAbsolute(c.cut.feedPerTooth_mm * c.mill.flutes, 0.1, 1e-15));
             QVERIFY(validateBallEndCut(c.mill, c.cut, {}).empty());
         }
         QCOMPARE(cases[3].mill.flutes, 2);
@@ -360,14 +358,15 @@ private Q_SLOTS:
     {
         const BallEndToolStructure tool{40.0, 9.6, 630000.0, 6306.0, 1.656e7};
         const double ei = 630000.0 * kPi * std::pow(9.6, 4) / 64.0;
-        QVERIFY(near(lateralCompliance_mm_N(tool, 40.0, 40.0), 64000.0 / (3.0 * ei) + 1.0 / 6306.0 + 1600.0 / 1.656e7,
-                     1e-15));
-        QVERIFY(near(lateralCompliance_mm_N(tool, 40.0, 40.0), 3.36418e-4, 1e-9));
-        QVERIFY(near(lateralCompliance_mm_N(tool, 30.0, 40.0),
-                     900.0 * 90.0 / (6.0 * ei) + 1.0 / 6306.0 + 1200.0 / 1.656e7, 1e-15));
+        QVERIFY(test::nearAbsolute(lateralCompliance_mm_N(tool, 40.0, 40.0),
+                                   64000.0 / (3.0 * ei) + 1.0 / 6306.0 + 1600.0 / 1.656e7, 1e-15));
+        QVERIFY(test::nearAbsolute(lateralCompliance_mm_N(tool, 40.0, 40.0), 3.36418e-4, 1e-9));
+        QVERIFY(test::nearAbsolute(lateralCompliance_mm_N(tool, 30.0, 40.0),
+                                   900.0 * 90.0 / (6.0 * ei) + 1.0 / 6306.0 + 1200.0 / 1.656e7, 1e-15));
         // Maxwell's reciprocity: the force at 40 seen at 30 is the force at 30 seen at 40.
-        QVERIFY(near(lateralCompliance_mm_N(tool, 40.0, 30.0), lateralCompliance_mm_N(tool, 30.0, 40.0), 1e-15));
-        QVERIFY(near(axialCompliance_mm_N(tool), 40.0 / (630000.0 * kPi * 9.6 * 9.6 / 4.0), 1e-18));
+        QVERIFY(test::nearAbsolute(lateralCompliance_mm_N(tool, 40.0, 30.0), lateralCompliance_mm_N(tool, 30.0, 40.0),
+                                   1e-15));
+        QVERIFY(test::nearAbsolute(axialCompliance_mm_N(tool), 40.0 / (630000.0 * kPi * 9.6 * 9.6 / 4.0), 1e-18));
     }
 
     // The deflection of a cut is each element's force times its own compliance: with one slice the
@@ -380,7 +379,7 @@ private Q_SLOTS:
         BallEndCut cut = slot(1.0, 0.1);
         cut.lead_rad = 20.0 * kPi / 180.0;
         const double generating = kR0 * (1.0 - std::cos(cut.lead_rad));
-        QVERIFY(near(surfaceGenerationHeight_mm(mill, cut), generating, 1e-12));
+        QVERIFY(test::nearAbsolute(surfaceGenerationHeight_mm(mill, cut), generating, 1e-12));
         const BallEndDeflection led = ballEndDeflection(mill, tool, allSix(), cut, {1, 36});
         const BallEndBand band = engagedBand(mill, cut);
         const double z = 0.5 * (band.low_mm + band.high_mm); // the single slice's middle
@@ -392,7 +391,7 @@ private Q_SLOTS:
             const Eigen::Vector3d expected(lateral * f.x(), lateral * f.y(), axialCompliance_mm_N(tool) * f.z());
             const BallEndDeflectionSample &d = led.deflection[m];
             QVERIFY((d.toolFrame_mm - expected).norm() < 1e-15 + 1e-12 * expected.norm());
-            QVERIFY(near(d.surfaceNormal_mm(), nRow.dot(d.toolFrame_mm), 1e-15));
+            QVERIFY(test::nearAbsolute(d.surfaceNormal_mm(), nRow.dot(d.toolFrame_mm), 1e-15));
             least = std::min(least, d.surfaceNormal_mm());
         }
         QCOMPARE(led.leastSurfaceNormal_mm, least);

@@ -42,11 +42,6 @@ double cantileverTip(double force, double length, double d, double e, double nu)
     return force * std::pow(length, 3) / (3.0 * e * i) + force * length / (kappa * g * a);
 }
 
-bool near(double value, double reference, double relative)
-{
-    return std::abs(value - reference) <= relative * std::abs(reference);
-}
-
 using test::dump;
 using test::seg;
 
@@ -119,12 +114,13 @@ private Q_SLOTS:
         bar.material = {modulus, poisson, true};
         const BoringBarCompliance c = boringBarCompliance(bar);
         const BoringBarDeflection d = boringBarDeflection(bar, c, 250.0, 0.0, 0.0);
-        QVERIFY2(near(d.radial_mm, cantileverTip(250.0, length, diameter, modulus, poisson), 1e-12),
+        QVERIFY2(test::nearRelative(d.radial_mm, cantileverTip(250.0, length, diameter, modulus, poisson), 1e-12),
                  qPrintable(QString::number(d.radial_mm, 'g', 12)));
         // Without shear: the Euler–Bernoulli cantilever F L^3 / 3EI.
         bar.material.shearDeformation = false;
         const double eb = 250.0 * std::pow(length, 3) / (3.0 * modulus * kPi * std::pow(diameter, 4) / 64.0);
-        QVERIFY(near(boringBarDeflection(bar, boringBarCompliance(bar), 250.0, 0.0, 0.0).radial_mm, eb, 1e-12));
+        QVERIFY(test::nearRelative(boringBarDeflection(bar, boringBarCompliance(bar), 250.0, 0.0, 0.0).radial_mm, eb,
+                                   1e-12));
     }
 
     // A hand calculation for the steel bar: Ø25, L = 100, F = 200 N. I = 19 174.76 mm^4,
@@ -137,7 +133,8 @@ private Q_SLOTS:
         bar.overhang_mm = 100.0;
         bar.material = {kSteelBarE, kSteelBarNu, true};
         const BoringBarDeflection d = boringBarDeflection(bar, boringBarCompliance(bar), 200.0, 0.0, 0.0);
-        QVERIFY2(near(d.radial_mm, 0.018299 + 0.000616, 2e-4), qPrintable(QString::number(d.radial_mm, 'g', 8)));
+        QVERIFY2(test::nearRelative(d.radial_mm, 0.018299 + 0.000616, 2e-4),
+                 qPrintable(QString::number(d.radial_mm, 'g', 8)));
     }
 
     // The feed force F_a along the bar at the edge's offset e bends the tip towards the wall by
@@ -154,13 +151,14 @@ private Q_SLOTS:
         const double i = kPi * std::pow(20.0, 4) / 64.0;
         const double g = kSteelBarE / (2.0 * (1.0 + kSteelBarNu));
         const double axial = 150.0;
-        QVERIFY(near(boringBarDeflection(bar, c, 0.0, 0.0, axial).radial_mm,
-                     -axial * 14.0 * 80.0 * 80.0 / (2.0 * kSteelBarE * i), 1e-12));
+        QVERIFY(test::nearRelative(boringBarDeflection(bar, c, 0.0, 0.0, axial).radial_mm,
+                                   -axial * 14.0 * 80.0 * 80.0 / (2.0 * kSteelBarE * i), 1e-12));
         const double cutting = 400.0;
         const double j = kPi * std::pow(20.0, 4) / 32.0;
         const double twist = cutting * 14.0 * 14.0 * 80.0 / (g * j);
         const BoringBarDeflection d = boringBarDeflection(bar, c, 0.0, cutting, 0.0);
-        QVERIFY(near(d.tangential_mm, cantileverTip(cutting, 80.0, 20.0, kSteelBarE, kSteelBarNu) + twist, 1e-12));
+        QVERIFY(test::nearRelative(d.tangential_mm, cantileverTip(cutting, 80.0, 20.0, kSteelBarE, kSteelBarNu) + twist,
+                                   1e-12));
         QCOMPARE(d.radial_mm, 0.0);
     }
 
@@ -195,11 +193,12 @@ private Q_SLOTS:
         const double expected = cantileverTip(f.radial_N, 90.0, diameter, modulus, poisson) -
                                 f.axial_N * 12.0 * 90.0 * 90.0 / (2 * modulus * i);
         const Station &st = firstInnerStation(r);
-        QVERIFY2(near(st.radial.boringBar_mm, expected, 1e-9),
+        QVERIFY2(test::nearRelative(st.radial.boringBar_mm, expected, 1e-9),
                  qPrintable(QStringLiteral("%1 vs %2").arg(st.radial.boringBar_mm).arg(expected)));
         QCOMPARE(st.radial.toolpost_mm, 0.0);
-        QVERIFY(near(st.radial.total_mm(),
-                     st.radial.spindleChuck_mm + st.radial.workpiece_mm + st.radial.thermal_mm + expected, 1e-12));
+        QVERIFY(test::nearRelative(st.radial.total_mm(),
+                                   st.radial.spindleChuck_mm + st.radial.workpiece_mm + st.radial.thermal_mm + expected,
+                                   1e-12));
         // The outer surface keeps the turning tool's toolpost term and has no bar.
         const Station &outer = r.features.front().stations.front();
         QCOMPARE(r.features.front().side, ContourSide::Outer);

@@ -3,6 +3,8 @@
 // radial force from the oblique model (eq. 15–20). References are worked by hand here or computed
 // with the printed formulas in this file; the networks are trained on data generated from a known
 // truth with noise.
+#include "tests/core/test_support.h"
+
 #include "core/learning/current_forces.h"
 
 #include <Eigen/Dense>
@@ -22,11 +24,6 @@ namespace {
 double deg(double d)
 {
     return d * std::numbers::pi / 180.0;
-}
-
-bool near(double value, double reference, double relative)
-{
-    return std::abs(value - reference) <= relative * std::abs(reference);
 }
 
 QString show(double a, double b)
@@ -158,16 +155,16 @@ private Q_SLOTS:
     // Eq. 9: I_U = 10, I_V = 11, I_W = 12 A: (100 + 121 + 144) / 3 = 121.666…, sqrt = 11.0302614 A.
     void equivalentDcCurrent()
     {
-        QVERIFY(near(equivalentDcCurrent_A(10.0, 11.0, 12.0), 11.030261405182864, 1e-14));
-        QVERIFY(near(equivalentDcCurrent_A(7.0, 7.0, 7.0), 7.0, 1e-15));
+        QVERIFY(test::nearRelative(equivalentDcCurrent_A(10.0, 11.0, 12.0), 11.030261405182864, 1e-14));
+        QVERIFY(test::nearRelative(equivalentDcCurrent_A(7.0, 7.0, 7.0), 7.0, 1e-15));
         QCOMPARE(equivalentDcCurrent_A(0.0, 0.0, 0.0), 0.0);
         QVERIFY(std::isnan(equivalentDcCurrent_A(-10.0, 11.0, 12.0)));
         QVERIFY(std::isnan(equivalentDcCurrent_A(10.0, std::nan(""), 12.0)));
         DriveReading d;
         d.setSpindlePhaseCurrents_A(10.0, 11.0, 12.0);
         d.setFeedPhaseCurrents_A(3.0, 4.0, 5.0); // (9 + 16 + 25) / 3 = 16.666…, sqrt = 4.0824829 A
-        QVERIFY(near(d.spindleCurrent_A, 11.030261405182864, 1e-14));
-        QVERIFY(near(d.feedCurrent_A, 4.0824829046386302, 1e-14));
+        QVERIFY(test::nearRelative(d.spindleCurrent_A, 11.030261405182864, 1e-14));
+        QVERIFY(test::nearRelative(d.feedCurrent_A, 4.0824829046386302, 1e-14));
     }
 
     // Eq. 10: ΔI_s = 20 − 5 − 2 = 13 A; ΔI_a = 3.5 − 1.25 = 2.25 A. Eq. 8 with the paper's constant:
@@ -194,9 +191,9 @@ private Q_SLOTS:
         QCOMPARE(t[2], -2.0);
         QCOMPARE(a[0], 2.25);
         QCOMPARE(a[1], 120.0);
-        QVERIFY(near(spindleSpeedFromFrequency_rad_s(50.0, kLiDuSpindleSpeedPerHz), 140.0, 1e-15));
-        QVERIFY(near(feedSpeedFromFrequency_mm_min(100.0, kLiDuFeedSpeedPerHz), 35.86, 1e-15));
-        QVERIFY(near(spindleSpeedFromFrequency_rad_s(50.0, std::numbers::pi), 157.07963267948966, 1e-15));
+        QVERIFY(test::nearRelative(spindleSpeedFromFrequency_rad_s(50.0, kLiDuSpindleSpeedPerHz), 140.0, 1e-15));
+        QVERIFY(test::nearRelative(feedSpeedFromFrequency_mm_min(100.0, kLiDuFeedSpeedPerHz), 35.86, 1e-15));
+        QVERIFY(test::nearRelative(spindleSpeedFromFrequency_rad_s(50.0, std::numbers::pi), 157.07963267948966, 1e-15));
         QVERIFY(validateDriveReading(d, QStringLiteral("drive")).empty());
     }
 
@@ -229,10 +226,11 @@ private Q_SLOTS:
         QString error;
         const auto r = solveLiDuCoefficients(f.ft, f.fa, area, backRake, normalRake, lead, &error);
         QVERIFY2(r, qPrintable(error));
-        QVERIFY2(near(r->coefficients.normalPressure_MPa, kn, 1e-9),
+        QVERIFY2(test::nearRelative(r->coefficients.normalPressure_MPa, kn, 1e-9),
                  qPrintable(show(r->coefficients.normalPressure_MPa, kn)));
-        QVERIFY2(near(r->coefficients.frictionRatio, kf, 1e-9), qPrintable(show(r->coefficients.frictionRatio, kf)));
-        QVERIFY2(near(r->radial_N, f.fr, 1e-9), qPrintable(show(r->radial_N, f.fr)));
+        QVERIFY2(test::nearRelative(r->coefficients.frictionRatio, kf, 1e-9),
+                 qPrintable(show(r->coefficients.frictionRatio, kf)));
+        QVERIFY2(test::nearRelative(r->radial_N, f.fr, 1e-9), qPrintable(show(r->radial_N, f.fr)));
     }
 
     // With zero rakes eq. 17–19 reduce to F_t = K_n A, F_a = K_n K_f A cos γ, F_r = K_n K_f A sin γ:
@@ -243,9 +241,9 @@ private Q_SLOTS:
         QString error;
         const auto r = solveLiDuCoefficients(180.0, 54.0 * std::cos(deg(40.0)), 0.2, 0.0, 0.0, deg(40.0), &error);
         QVERIFY2(r, qPrintable(error));
-        QVERIFY(near(r->coefficients.normalPressure_MPa, 900.0, 1e-12));
-        QVERIFY(near(r->coefficients.frictionRatio, 0.3, 1e-12));
-        QVERIFY(near(r->radial_N, 34.7105309, 1e-8));
+        QVERIFY(test::nearRelative(r->coefficients.normalPressure_MPa, 900.0, 1e-12));
+        QVERIFY(test::nearRelative(r->coefficients.frictionRatio, 0.3, 1e-12));
+        QVERIFY(test::nearRelative(r->radial_N, 34.7105309, 1e-8));
     }
 
     // α_b = 90°: cos α_b = 0 makes eq. 17 and 18 dependent. Forces that need K_n ≤ 0 are refused.
@@ -276,10 +274,10 @@ private Q_SLOTS:
         const CuttingForceEstimate e = m_model.estimate(d, tool, 0.2, 1.0, 0.8);
         QVERIFY2(e.diagnostics.empty(), qPrintable(e.diagnostics.empty() ? QString() : e.diagnostics[0].toString()));
         QVERIFY(e.forces && e.coefficients);
-        QVERIFY(near(e.uncutChipArea_mm2, 0.19937253933193771, 1e-14));
+        QVERIFY(test::nearRelative(e.uncutChipArea_mm2, 0.19937253933193771, 1e-14));
         const double tanLe = 0.5053 * std::tan(deg(-3.0)) + 1.0473 * 0.2 / 0.8 + 0.4654 * 0.8 / 1.0;
-        QVERIFY(near(tanLe, 0.607663, 1e-5));
-        QVERIFY2(near(e.effectiveLeadAngle_rad, std::atan(tanLe), 1e-12),
+        QVERIFY(test::nearRelative(tanLe, 0.607663, 1e-5));
+        QVERIFY2(test::nearRelative(e.effectiveLeadAngle_rad, std::atan(tanLe), 1e-12),
                  qPrintable(show(e.effectiveLeadAngle_rad, std::atan(tanLe))));
         // F_t, F_a: the networks, near the truth.
         QCOMPARE(e.forces->tangential_N, m_model.tangential.predict(d.tangentialInputs()));
@@ -295,10 +293,11 @@ private Q_SLOTS:
         const double kn = pq[0] / e.uncutChipArea_mm2;
         const double kf = pq[1] / pq[0];
         const double fr = kn * e.uncutChipArea_mm2 * (-std::sin(ab) + kf * std::sin(g) * std::cos(ab)); // eq. 19
-        QVERIFY2(near(e.coefficients->normalPressure_MPa, kn, 1e-9),
+        QVERIFY2(test::nearRelative(e.coefficients->normalPressure_MPa, kn, 1e-9),
                  qPrintable(show(e.coefficients->normalPressure_MPa, kn)));
-        QVERIFY2(near(e.coefficients->frictionRatio, kf, 1e-9), qPrintable(show(e.coefficients->frictionRatio, kf)));
-        QVERIFY2(near(e.forces->radial_N, fr, 1e-9), qPrintable(show(e.forces->radial_N, fr)));
+        QVERIFY2(test::nearRelative(e.coefficients->frictionRatio, kf, 1e-9),
+                 qPrintable(show(e.coefficients->frictionRatio, kf)));
+        QVERIFY2(test::nearRelative(e.forces->radial_N, fr, 1e-9), qPrintable(show(e.forces->radial_N, fr)));
         QVERIFY(e.forces->radial_N > 0.0);
     }
 
@@ -312,11 +311,11 @@ private Q_SLOTS:
         const CuttingForceEstimate sharp = m_model.estimate(d, tool, 0.2, 1.0, 0.0);
         QVERIFY(sharp.forces);
         QCOMPARE(sharp.uncutChipArea_mm2, 0.2);
-        QVERIFY(near(sharp.effectiveLeadAngle_rad, deg(-3.0), 1e-12));
+        QVERIFY(test::nearRelative(sharp.effectiveLeadAngle_rad, deg(-3.0), 1e-12));
         const CuttingForceEstimate small = m_model.estimate(d, tool, 0.2, 1.0, 0.05); // r_n < f/2
         QCOMPARE(small.uncutChipArea_mm2, 0.2);
         const CuttingForceEstimate fine = m_model.estimate(d, tool, 0.1, 0.5, 0.4);
-        QVERIFY(near(fine.uncutChipArea_mm2, 0.04984313483298443, 1e-13));
+        QVERIFY(test::nearRelative(fine.uncutChipArea_mm2, 0.04984313483298443, 1e-13));
     }
 
     // F_r depends on F_t, F_a and the angles only (p = K_n A_c and q = K_n K_f A_c are fixed by the
@@ -327,9 +326,10 @@ private Q_SLOTS:
         const auto a = solveLiDuCoefficients(400.0, 150.0, 0.2, deg(-7.0), deg(-3.5), deg(30.0), &error);
         const auto b = solveLiDuCoefficients(400.0, 150.0, 0.05, deg(-7.0), deg(-3.5), deg(30.0), &error);
         QVERIFY(a && b);
-        QVERIFY(near(b->coefficients.normalPressure_MPa, 4.0 * a->coefficients.normalPressure_MPa, 1e-14));
-        QVERIFY(near(b->coefficients.frictionRatio, a->coefficients.frictionRatio, 1e-14));
-        QVERIFY(near(b->radial_N, a->radial_N, 1e-14));
+        QVERIFY(
+            test::nearRelative(b->coefficients.normalPressure_MPa, 4.0 * a->coefficients.normalPressure_MPa, 1e-14));
+        QVERIFY(test::nearRelative(b->coefficients.frictionRatio, a->coefficients.frictionRatio, 1e-14));
+        QVERIFY(test::nearRelative(b->radial_N, a->radial_N, 1e-14));
     }
 
     // Held-out cuts of the same truth are predicted within 1.5 × the noise's RMS (+ 0.5 N), and a

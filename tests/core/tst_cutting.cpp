@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Cutting forces, roughness, kinematics and insert codes against hand calculations.
+#include "tests/core/test_support.h"
+
 #include "core/cutting/cutting_forces.h"
 #include "core/cutting/cutting_quantities.h"
 #include "core/tooling/iso1832.h"
@@ -12,11 +14,6 @@
 using namespace tolturn;
 
 namespace {
-
-bool near(double value, double reference, double relative)
-{
-    return std::abs(value - reference) <= relative * std::abs(reference);
-}
 
 double deg(double d)
 {
@@ -39,9 +36,10 @@ private Q_SLOTS:
         k.feedToCuttingRatio = 0.5;
         k.passiveToCuttingRatio = 0.25;
         const ForceResult r = kienzleForces(k, 0.2, 2.0, deg(90.0));
-        QVERIFY2(near(r.forces.tangential_N, 854.9, 2e-4), qPrintable(QString::number(r.forces.tangential_N)));
-        QVERIFY(near(r.forces.axial_N, 427.5, 2e-4));
-        QVERIFY(near(r.forces.radial_N, 213.7, 3e-4));
+        QVERIFY2(test::nearRelative(r.forces.tangential_N, 854.9, 2e-4),
+                 qPrintable(QString::number(r.forces.tangential_N)));
+        QVERIFY(test::nearRelative(r.forces.axial_N, 427.5, 2e-4));
+        QVERIFY(test::nearRelative(r.forces.radial_N, 213.7, 3e-4));
         QVERIFY(r.warnings.empty());
     }
 
@@ -58,8 +56,9 @@ private Q_SLOTS:
         k.validChipThicknessMin_mm = 0.15;
         k.validChipThicknessMax_mm = 1.0;
         const ForceResult r = kienzleForces(k, 0.2, 2.0, deg(45.0));
-        QVERIFY2(near(r.forces.tangential_N, 922.6, 2e-4), qPrintable(QString::number(r.forces.tangential_N)));
-        QVERIFY2(near(r.forces.axial_N, 452.7, 2e-4), qPrintable(QString::number(r.forces.axial_N)));
+        QVERIFY2(test::nearRelative(r.forces.tangential_N, 922.6, 2e-4),
+                 qPrintable(QString::number(r.forces.tangential_N)));
+        QVERIFY2(test::nearRelative(r.forces.axial_N, 452.7, 2e-4), qPrintable(QString::number(r.forces.axial_N)));
         // h = 0.1414 mm lies below the stated 0.15 mm: a warning naming the range.
         QCOMPARE(int(r.warnings.size()), 1);
         QVERIFY(r.warnings[0].message.contains(QStringLiteral("0.15–1 mm")));
@@ -79,18 +78,21 @@ private Q_SLOTS:
         k.cutting = {1500.0, 0.22};
         k.feedToCuttingRatio = 0.5;
         k.passiveToCuttingRatio = 0.25;
-        QVERIFY(near(equivalentEnteringAngle_rad(deg(95.0), 0.8, 0.1, 0.5), deg(50.262), 2e-5));
+        QVERIFY(test::nearRelative(equivalentEnteringAngle_rad(deg(95.0), 0.8, 0.1, 0.5), deg(50.262), 2e-5));
         const ForceResult r = kienzleForces(k, 0.1, 0.5, deg(95.0), 0.8);
-        QVERIFY2(near(r.forces.tangential_N, 131.87, 1e-4), qPrintable(QString::number(r.forces.tangential_N)));
-        QVERIFY2(near(r.forces.axial_N, 23.63, 3e-4), qPrintable(QString::number(r.forces.axial_N)));
-        QVERIFY2(near(r.forces.radial_N, 69.83, 2e-4), qPrintable(QString::number(r.forces.radial_N)));
+        QVERIFY2(test::nearRelative(r.forces.tangential_N, 131.87, 1e-4),
+                 qPrintable(QString::number(r.forces.tangential_N)));
+        QVERIFY2(test::nearRelative(r.forces.axial_N, 23.63, 3e-4), qPrintable(QString::number(r.forces.axial_N)));
+        QVERIFY2(test::nearRelative(r.forces.radial_N, 69.83, 2e-4), qPrintable(QString::number(r.forces.radial_N)));
         QVERIFY(r.warnings.empty()); // inside every range eq. 20 states
         // A deep cut, a_p = 5 mm: eq. 20 still (continuous in the depth): tan(gamma_Le) = -0.044208
         // + 0.130913 + 0.4654 (0.8/5) = 0.161169, kappa_eq = 80.844°; h = 0.098726, b = 5.064522;
         // Fc = 1248.21 N; the thrust 697.87 N turned by 14.156° to 40.721°: Fp = 455.20 N.
         const ForceResult deep = kienzleForces(k, 0.1, 5.0, deg(95.0), 0.8);
-        QVERIFY2(near(deep.forces.tangential_N, 1248.21, 1e-5), qPrintable(QString::number(deep.forces.tangential_N)));
-        QVERIFY2(near(deep.forces.radial_N, 455.20, 2e-5), qPrintable(QString::number(deep.forces.radial_N)));
+        QVERIFY2(test::nearRelative(deep.forces.tangential_N, 1248.21, 1e-5),
+                 qPrintable(QString::number(deep.forces.tangential_N)));
+        QVERIFY2(test::nearRelative(deep.forces.radial_N, 455.20, 2e-5),
+                 qPrintable(QString::number(deep.forces.radial_N)));
         // No jump with the depth: 4.999 and 5.001 mm give forces within 0.1 % of each other.
         const double below = kienzleForces(k, 0.1, 4.999, deg(95.0), 0.8).forces.radial_N;
         const double above = kienzleForces(k, 0.1, 5.001, deg(95.0), 0.8).forces.radial_N;
@@ -105,7 +107,7 @@ private Q_SLOTS:
     // = 1.967990, C = 491.998 m/min.
     void taylorConstantFromACatalogueSpeed()
     {
-        QVERIFY(near(taylorConstant_m_min(250.0, 15.0, 0.25), 491.998, 2e-6));
+        QVERIFY(test::nearRelative(taylorConstant_m_min(250.0, 15.0, 0.25), 491.998, 2e-6));
         QCOMPARE(taylorConstant_m_min(300.0, 1.0, 0.3), 300.0); // T = 1 min: C is the speed itself
     }
 
@@ -113,7 +115,7 @@ private Q_SLOTS:
     // A_c = 0.2 - 0.2 (0.8 - 0.793725)/2 = 0.2 - 0.0006275 = 0.1993725 mm². Eq. 16b when r_n < f/2.
     void liDuChipArea()
     {
-        QVERIFY(near(liDuUncutChipArea_mm2(0.2, 1.0, 0.8), 0.1993725, 1e-6));
+        QVERIFY(test::nearRelative(liDuUncutChipArea_mm2(0.2, 1.0, 0.8), 0.1993725, 1e-6));
         QCOMPARE(liDuUncutChipArea_mm2(0.5, 1.0, 0.2), 0.5);
     }
 
@@ -126,11 +128,11 @@ private Q_SLOTS:
         LiDuToolGeometry tool;
         tool.noseRadius_mm = 0.8;
         const double gle = liDuEffectiveLeadAngle_rad(tool, 0.2, 1.0);
-        QVERIFY2(near(gle * 180.0 / std::numbers::pi, 32.38, 2e-4), qPrintable(QString::number(gle)));
+        QVERIFY2(test::nearRelative(gle * 180.0 / std::numbers::pi, 32.38, 2e-4), qPrintable(QString::number(gle)));
         const ForceResult r = liDuForces({2000.0, 0.5}, tool, 0.2, 1.0);
-        QVERIFY(near(r.forces.tangential_N, 398.745, 1e-5));
-        QVERIFY2(near(r.forces.axial_N, 168.37, 3e-4), qPrintable(QString::number(r.forces.axial_N)));
-        QVERIFY2(near(r.forces.radial_N, 106.78, 3e-4), qPrintable(QString::number(r.forces.radial_N)));
+        QVERIFY(test::nearRelative(r.forces.tangential_N, 398.745, 1e-5));
+        QVERIFY2(test::nearRelative(r.forces.axial_N, 168.37, 3e-4), qPrintable(QString::number(r.forces.axial_N)));
+        QVERIFY2(test::nearRelative(r.forces.radial_N, 106.78, 3e-4), qPrintable(QString::number(r.forces.radial_N)));
         QVERIFY(r.warnings.empty());
     }
 
@@ -157,8 +159,8 @@ private Q_SLOTS:
         }
         const LiDuCalibration cal = calibrateLiDu(tool, measurements);
         QVERIFY(cal.coefficients);
-        QVERIFY(near(cal.coefficients->normalPressure_MPa, 2350.0, 1e-9));
-        QVERIFY(near(cal.coefficients->frictionRatio, 0.62, 1e-9));
+        QVERIFY(test::nearRelative(cal.coefficients->normalPressure_MPa, 2350.0, 1e-9));
+        QVERIFY(test::nearRelative(cal.coefficients->frictionRatio, 0.62, 1e-9));
         QVERIFY(cal.rmsResidual_N < 1e-9);
         QVERIFY(!calibrateLiDu(tool, {}).coefficients);
     }
@@ -166,17 +168,17 @@ private Q_SLOTS:
     // Ra = f²/(32 r), Rz = f²/(8 r): f = 0.2, r = 0.8 -> 0.04/25.6 mm = 1.5625 µm; 0.04/6.4 mm = 6.25 µm.
     void roughness()
     {
-        QVERIFY(near(theoreticalRa_um(0.2, 0.8), 1.5625, 1e-12));
-        QVERIFY(near(theoreticalRz_um(0.2, 0.8), 6.25, 1e-12));
+        QVERIFY(test::nearRelative(theoreticalRa_um(0.2, 0.8), 1.5625, 1e-12));
+        QVERIFY(test::nearRelative(theoreticalRz_um(0.2, 0.8), 6.25, 1e-12));
     }
 
     // n = 1000 v/(pi D): 200 m/min on Ø50 -> 1273.24 rpm; P = Fc v = 1000 N * 200 m/min = 3.333 kW;
     // torque 1000 N * 25 mm = 25 N·m.
     void kinematics()
     {
-        QVERIFY(near(spindleSpeed_rpm(200.0, 50.0), 1273.2395, 1e-7));
-        QVERIFY(near(cuttingPower_kW(1000.0, 200.0), 3.3333333, 1e-7));
-        QVERIFY(near(spindleTorque_Nm(1000.0, 50.0), 25.0, 1e-12));
+        QVERIFY(test::nearRelative(spindleSpeed_rpm(200.0, 50.0), 1273.2395, 1e-7));
+        QVERIFY(test::nearRelative(cuttingPower_kW(1000.0, 200.0), 3.3333333, 1e-7));
+        QVERIFY(test::nearRelative(spindleTorque_Nm(1000.0, 50.0), 25.0, 1e-12));
     }
 
     void insertCodes_data()

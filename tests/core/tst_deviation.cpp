@@ -54,11 +54,6 @@ const FeatureDeviation &feature(const DeviationResult &r, const char *id)
     qFatal("no feature %s", id);
 }
 
-bool near(double value, double reference, double relative, double absolute = 0.0)
-{
-    return std::abs(value - reference) <= relative * std::abs(reference) + absolute;
-}
-
 } // namespace
 
 class TestDeviation : public QObject {
@@ -86,9 +81,9 @@ private Q_SLOTS:
             const double bend = d * d * d / (3 * kE * I) + d / (kKappaSolid * kG * A);
             const double wr = 200.0 * bend - 150.0 * r * d * d / (2 * kE * I);
             const double wt = 500.0 * bend;
-            QVERIFY2(near(st.radial.total_mm(), wr, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
-            QVERIFY(near(st.tangential.total_mm(), wt, 1e-6, 1e-12));
-            QVERIFY(near(st.radiusError_mm, std::sqrt((r + wr) * (r + wr) + wt * wt) - r, 1e-6, 1e-12));
+            QVERIFY2(test::nearRelative(st.radial.total_mm(), wr, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
+            QVERIFY(test::nearRelative(st.tangential.total_mm(), wt, 1e-6, 1e-12));
+            QVERIFY(test::nearRelative(st.radiusError_mm, std::sqrt((r + wr) * (r + wr) + wt * wt) - r, 1e-6, 1e-12));
             QCOMPARE(st.radial.spindleChuck_mm, 0.0);
             QCOMPARE(st.radial.toolpost_mm, 0.0);
             QCOMPARE(st.radial.thermal_mm, 0.0);
@@ -119,7 +114,7 @@ private Q_SLOTS:
             const double d = st.z_mm - 40.0, db = d + root;
             const double wr =
                 200.0 * (db * db * db / (3 * kE * I) + d / (kKappaSolid * kG * A)) - 150.0 * r * db * db / (2 * kE * I);
-            QVERIFY2(near(st.radial.total_mm(), wr, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
+            QVERIFY2(test::nearRelative(st.radial.total_mm(), wr, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
             QCOMPARE(st.radial.spindleChuck_mm, 0.0); // the root is the part's, not the machine's
         }
     }
@@ -148,9 +143,9 @@ private Q_SLOTS:
         const double hinge = 1000.0 * as * as * 0.126 * 25.0 / (kE * I2);
         const Station &tip = feature(res, "O4").stations.back();
         QCOMPARE(tip.z_mm, 160.0);
-        QVERIFY2(near(tip.radial.total_mm(), plain + rootPart + hinge, 1e-6, 1e-12),
+        QVERIFY2(test::nearRelative(tip.radial.total_mm(), plain + rootPart + hinge, 1e-6, 1e-12),
                  qPrintable(QStringLiteral("%1 vs %2").arg(tip.radial.total_mm()).arg(plain + rootPart + hinge)));
-        QVERIFY(near(shoulderHingePerDiameter(1.4), 0.057 + 0.069 * 0.15 / 0.35, 1e-12));
+        QVERIFY(test::nearRelative(shoulderHingePerDiameter(1.4), 0.057 + 0.069 * 0.15 / 0.35, 1e-12));
         QCOMPARE(shoulderHingePerDiameter(1.0), 0.0);
         QCOMPARE(shoulderHingePerDiameter(3.0), 0.171); // beyond the runs: the last identified value
     }
@@ -191,7 +186,7 @@ private Q_SLOTS:
         for (const Station &st : feature(res, "O2").stations) {
             const double d = st.z_mm - 30.0;
             const double w = 300.0 * (d * d * d / (3 * kE * I) + d / (kKappaSolid * kG * A));
-            QVERIFY2(near(st.radial.total_mm(), w, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
+            QVERIFY2(test::nearRelative(st.radial.total_mm(), w, 1e-6, 1e-12), qPrintable(QString::number(st.z_mm)));
         }
     }
 
@@ -222,10 +217,10 @@ private Q_SLOTS:
                                    (Fr / k1 - FaD2 * Lc / k2 + Fr * Lc * Lc / k2);
             const double beam =
                 Fr * (z * z * z / (3 * kE * I) + z / (kKappaSolid * kG * A)) - FaD2 * z * z / (2 * kE * I);
-            QVERIFY2(near(st.radial.spindleChuck_mm, spindle, 1e-7), qPrintable(QString::number(z)));
-            QVERIFY2(near(st.radial.workpiece_mm, beam, 1e-6, 1e-12), qPrintable(QString::number(z)));
+            QVERIFY2(test::nearRelative(st.radial.spindleChuck_mm, spindle, 1e-7), qPrintable(QString::number(z)));
+            QVERIFY2(test::nearRelative(st.radial.workpiece_mm, beam, 1e-6, 1e-12), qPrintable(QString::number(z)));
             // Toolpost, eq. 5: 40 mm of a 25 x 25 mm steel shank, E = 210000 MPa.
-            QVERIFY(near(st.radial.toolpost_mm, Fr * 40.0 / (625.0 * 210000.0), 1e-12));
+            QVERIFY(test::nearRelative(st.radial.toolpost_mm, Fr * 40.0 / (625.0 * 210000.0), 1e-12));
         }
     }
 
@@ -269,11 +264,11 @@ private Q_SLOTS:
         const std::pair<const SpringFit &, const SpindleSprings &> fits[] = {{*cal.radial, radial},
                                                                              {*cal.tangential, tangential}};
         for (const auto &[fit, springs] : fits) {
-            QVERIFY2(near(fit.springs.k1_N_per_mm, springs.k1_N_per_mm, 1e-4),
+            QVERIFY2(test::nearRelative(fit.springs.k1_N_per_mm, springs.k1_N_per_mm, 1e-4),
                      qPrintable(QString::number(fit.springs.k1_N_per_mm)));
-            QVERIFY2(near(fit.springs.k2_Nmm_per_rad, springs.k2_Nmm_per_rad, 1e-4),
+            QVERIFY2(test::nearRelative(fit.springs.k2_Nmm_per_rad, springs.k2_Nmm_per_rad, 1e-4),
                      qPrintable(QString::number(fit.springs.k2_Nmm_per_rad)));
-            QVERIFY2(near(fit.springs.k3_Nmm_per_rad, springs.k3_Nmm_per_rad, 1e-4),
+            QVERIFY2(test::nearRelative(fit.springs.k3_Nmm_per_rad, springs.k3_Nmm_per_rad, 1e-4),
                      qPrintable(QString::number(fit.springs.k3_Nmm_per_rad)));
             QVERIFY(fit.rmsResidual_um < 1e-4);
             QCOMPARE(fit.points, 10);
@@ -354,8 +349,8 @@ private Q_SLOTS:
             const double a = st.z_mm, b = L - a;
             const double beam = 250.0 * (a * a * b * b / (3 * kE * I * L) + a * b / (L * kKappaSolid * kG * A));
             const double springs = 250.0 * ((b / L) * (b / L) / kl + (a / L) * (a / L) / kr);
-            QVERIFY2(near(st.radial.workpiece_mm, beam, 1e-6, 1e-12), qPrintable(QString::number(a)));
-            QVERIFY2(near(st.radial.spindleChuck_mm, springs, 1e-6), qPrintable(QString::number(a)));
+            QVERIFY2(test::nearRelative(st.radial.workpiece_mm, beam, 1e-6, 1e-12), qPrintable(QString::number(a)));
+            QVERIFY2(test::nearRelative(st.radial.spindleChuck_mm, springs, 1e-6), qPrintable(QString::number(a)));
         }
     }
 
@@ -371,14 +366,14 @@ private Q_SLOTS:
         const DeviationResult res =
             computeDeviation(barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0), DataLibrary::builtIn(), {});
         QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
-        QVERIFY2(near(res.inputs->forces.tangential_N, 441.73, 2e-5),
+        QVERIFY2(test::nearRelative(res.inputs->forces.tangential_N, 441.73, 2e-5),
                  qPrintable(QString::number(res.inputs->forces.tangential_N)));
-        QVERIFY(near(res.inputs->forces.axial_N, 115.54, 5e-5));
-        QVERIFY(near(res.inputs->forces.radial_N, 218.24, 5e-5));
+        QVERIFY(test::nearRelative(res.inputs->forces.axial_N, 115.54, 5e-5));
+        QVERIFY(test::nearRelative(res.inputs->forces.radial_N, 218.24, 5e-5));
         QVERIFY(res.inputs->notes.join(QLatin1Char(' '))
                     .contains(QStringLiteral("E. Isakov, 'Calculated forces when turning'")));
         // Ra = f^2/(32 r_eps) with r_eps = 0.8 mm from "CNMG 120408".
-        QVERIFY(near(res.theoreticalRa_um, 1.5625, 1e-12));
+        QVERIFY(test::nearRelative(res.theoreticalRa_um, 1.5625, 1e-12));
     }
 
     // The free end face of a Ø30 bar, 160 mm out of a rigid chuck, cut by a facing pass the way the
@@ -402,8 +397,10 @@ private Q_SLOTS:
         const auto end = std::find_if(res.faces.begin(), res.faces.end(),
                                       [](const FaceConicity &f) { return f.featureId == QLatin1String("O3"); });
         QVERIFY(end != res.faces.end());
-        QVERIFY2(near(end->axialRunout_mm * 1000.0, 3.59290, 2e-5), qPrintable(QString::number(end->axialRunout_mm)));
-        QVERIFY2(near(std::abs(end->tanTheta), 2.39527e-4, 2e-5), qPrintable(QString::number(end->tanTheta)));
+        QVERIFY2(test::nearRelative(end->axialRunout_mm * 1000.0, 3.59290, 2e-5),
+                 qPrintable(QString::number(end->axialRunout_mm)));
+        QVERIFY2(test::nearRelative(std::abs(end->tanTheta), 2.39527e-4, 2e-5),
+                 qPrintable(QString::number(end->tanTheta)));
     }
 
     // First-order warm-up along the pass (docs/model.md §5): drift = (a_n n/1000 + a_T (T - T_ref))
@@ -423,14 +420,14 @@ private Q_SLOTS:
         const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), {});
         QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
         const std::vector<Station> &stations = feature(res, "O2").stations;
-        QVERIFY(near(stations.back().radial.thermal_mm * 1000.0, 6.62985, 1e-5));
-        QVERIFY2(near(stations.front().radial.thermal_mm * 1000.0, 6.67803, 1e-5),
+        QVERIFY(test::nearRelative(stations.back().radial.thermal_mm * 1000.0, 6.62985, 1e-5));
+        QVERIFY2(test::nearRelative(stations.front().radial.thermal_mm * 1000.0, 6.67803, 1e-5),
                  qPrintable(QString::number(stations.front().radial.thermal_mm)));
         const double n = 2122.0659;
         for (const Station &st : stations) {
-            QVERIFY(near(st.spindleSpeed_rpm, n, 1e-7));
+            QVERIFY(test::nearRelative(st.spindleSpeed_rpm, n, 1e-7));
             const double t = 30.0 + (200.0 - st.z_mm) / (0.2 * n);
-            QVERIFY2(near(st.radial.thermal_mm * 1000.0, 10.48826 * (1.0 - std::exp(-t / 30.0)), 1e-5),
+            QVERIFY2(test::nearRelative(st.radial.thermal_mm * 1000.0, 10.48826 * (1.0 - std::exp(-t / 30.0)), 1e-5),
                      qPrintable(QString::number(st.z_mm)));
         }
     }

@@ -47,11 +47,6 @@ double steppedCantileverTip(double force, double a, double r1, double b, double 
                     b / (k * g * a2) + a / (k * g * a1));
 }
 
-bool near(double value, double reference, double relative)
-{
-    return std::abs(value - reference) <= relative * std::abs(reference);
-}
-
 // A shaft 200 mm long from a Ø54 bar: Ø50 over z 0–100 (O2), Ø40 over z 100–200 (O4).
 // OP 10 holds the left end 30 mm in the chuck and turns O3, O4, O5; OP 20 holds the finished Ø40
 // (the right end) 40 mm in the chuck and turns O1 and O2.
@@ -131,7 +126,7 @@ void verifyFreeEnd(const Project &view, const char *cut, const char *notCut, dou
     QVERIFY(f != nullptr);
     QCOMPARE(f->stations.back().z_mm, 200.0);
     const double w = f->stations.back().radial.workpiece_mm;
-    QVERIFY2(near(w, expected, 1e-6), qPrintable(QStringLiteral("%1 vs %2").arg(w).arg(expected)));
+    QVERIFY2(test::nearRelative(w, expected, 1e-6), qPrintable(QStringLiteral("%1 vs %2").arg(w).arg(expected)));
 }
 
 QStringList toleranceIds(const Project &p)
@@ -355,7 +350,7 @@ private Q_SLOTS:
         QCOMPARE(tip.z_mm, 200.0);
         QCOMPARE(tip.radial.spindleChuck_mm, 0.0);
         const double expected = steppedCantileverTip(100.0, 70.0, 25.0, 100.0, 20.0);
-        QVERIFY2(near(tip.radial.workpiece_mm, expected, 1e-6),
+        QVERIFY2(test::nearRelative(tip.radial.workpiece_mm, expected, 1e-6),
                  qPrintable(QStringLiteral("%1 vs %2").arg(tip.radial.workpiece_mm).arg(expected)));
         const RangeEvaluation range = evaluateOverStiffnessRange(p, DataLibrary::builtIn());
         QVERIFY(machineAssumptionText(range, DataLibrary::builtIn()).contains(QStringLiteral("collet not measured")));

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Each acceptance condition of Valiño et al. (2008) Fig. 4 with hand-made deviation curves whose
 // extremes are known, and the verdict ladder.
+#include "tests/core/test_support.h"
+
 #include "core/tolerance/evaluation.h"
 
 #include <QTest>
@@ -77,11 +79,6 @@ ToleranceEvaluation evaluate(const Tolerance &t, const DeviationResult &r)
     return evaluateTolerances(p, r).front();
 }
 
-bool near(double a, double b)
-{
-    return std::abs(a - b) < 1e-9;
-}
-
 } // namespace
 
 class TestToleranceEvaluation : public QObject {
@@ -97,8 +94,10 @@ private Q_SLOTS:
         r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -2.0 + 0.04 * z; })};
         const ToleranceEvaluation e = evaluate(diameter("h6"), r);
         QCOMPARE(e.verdict, Verdict::PassesAsProgrammed);
-        QVERIFY(near(*e.predictedMax_um, -4.0) && near(*e.predictedMin_um, -12.0));
-        QVERIFY(near(*e.value_um, 8.0) && near(*e.limit_um, 16.0) && near(*e.utilisation_pct, 50.0));
+        QVERIFY(test::nearAbsolute(*e.predictedMax_um, -4.0, 1e-9) &&
+                test::nearAbsolute(*e.predictedMin_um, -12.0, 1e-9));
+        QVERIFY(test::nearAbsolute(*e.value_um, 8.0, 1e-9) && test::nearAbsolute(*e.limit_um, 16.0, 1e-9) &&
+                test::nearAbsolute(*e.utilisation_pct, 50.0, 1e-9));
         QVERIFY(e.condition.contains(QStringLiteral("eq. 13")));
     }
 
@@ -110,8 +109,8 @@ private Q_SLOTS:
         r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return 3.0 + 0.03 * z; })};
         const ToleranceEvaluation e = evaluate(diameter("h6"), r);
         QCOMPARE(e.verdict, Verdict::PassesAfterOffset);
-        QVERIFY(near(*e.offset_um, -9.0));
-        QVERIFY(near(*e.value_um, 6.0));
+        QVERIFY(test::nearAbsolute(*e.offset_um, -9.0, 1e-9));
+        QVERIFY(test::nearAbsolute(*e.value_um, 6.0, 1e-9));
         QVERIFY(e.condition.contains(QStringLiteral("eq. 15 holds")));
     }
 
@@ -122,8 +121,8 @@ private Q_SLOTS:
         r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return 1e-5 * z * z * z; })};
         const ToleranceEvaluation e = evaluate(diameter("h6"), r);
         QCOMPARE(e.verdict, Verdict::NeedsProfileCorrection);
-        QVERIFY(near(*e.value_um, 20.0));
-        QVERIFY(near(*e.utilisation_pct, 125.0));
+        QVERIFY(test::nearAbsolute(*e.value_um, 20.0, 1e-9));
+        QVERIFY(test::nearAbsolute(*e.utilisation_pct, 125.0, 1e-9));
     }
 
     // Cylindricity (eq. 19) and total radial run-out (§V.J): |delta_TMd - delta_Tmd| <= t. The cubic
@@ -136,13 +135,14 @@ private Q_SLOTS:
         linear.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -2.0 - 0.04 * z; })};
         QCOMPARE(evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic).verdict,
                  Verdict::NeedsProfileCorrection);
-        QVERIFY(near(*evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic).value_um, 10.0));
+        QVERIFY(
+            test::nearAbsolute(*evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic).value_um, 10.0, 1e-9));
         QCOMPARE(evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), linear).verdict,
                  Verdict::PassesAsProgrammed);
         const ToleranceEvaluation runout =
             evaluate(geometric(ToleranceType::TotalRadialRunout, "O2", 12, {QStringLiteral("A")}), cubic);
         QCOMPARE(runout.verdict, Verdict::PassesAsProgrammed);
-        QVERIFY(near(*runout.value_um, 10.0));
+        QVERIFY(test::nearAbsolute(*runout.value_um, 10.0, 1e-9));
     }
 
     // Profile of the cone O3 (r 25 -> 20 over 10 mm: tan(alpha) = 0.5, cos(alpha) = 1/sqrt(1.25) =
@@ -261,12 +261,12 @@ private Q_SLOTS:
         t.lowerDeviation_um = -2.5;
         ToleranceEvaluation e = evaluate(t, r);
         QCOMPARE(e.verdict, Verdict::PassesAsProgrammed);
-        QVERIFY(near(*e.value_um, 5.0) && near(*e.nominal_mm, 110.0));
+        QVERIFY(test::nearAbsolute(*e.value_um, 5.0, 1e-9) && test::nearAbsolute(*e.nominal_mm, 110.0, 1e-9));
         t.upperDeviation_um = 2.0;
         t.lowerDeviation_um = -2.0;
         e = evaluate(t, r);
         QCOMPARE(e.verdict, Verdict::NeedsProfileCorrection);
-        QVERIFY(near(*e.utilisation_pct, 125.0));
+        QVERIFY(test::nearAbsolute(*e.utilisation_pct, 125.0, 1e-9));
     }
 
     // Flatness (eq. 16), parallelism (eq. 23), perpendicularity of a face (eq. 24), total axial
