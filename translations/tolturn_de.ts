@@ -5117,6 +5117,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the keyway of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
         <translation>die Passfedernut aus %1, von z = %2 mm bis z = %3 mm, wurde zum gefrästen Formelement %4; geben Sie ihm Werkzeug, Schnittbedingungen, Schnittkraftkoeffizienten und eine Toleranz, um es auszuwerten</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos; was not read: OpenCascade would not transfer shapes in millimetres (xstep.cascade.unit)</source>
+        <translation>&apos;%1&apos; wurde nicht gelesen: OpenCascade übertrug die Formen nicht in Millimetern (xstep.cascade.unit)</translation>
+    </message>
 </context>
 <context>
     <name>StiffnessCommand</name>

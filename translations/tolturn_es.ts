@@ -5117,6 +5117,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the keyway of %1, from z = %2 mm to z = %3 mm, became milled feature %4; give it a tool, conditions, cutting coefficients and a tolerance to evaluate it</source>
         <translation>el chavetero (%1), de z = %2 mm a z = %3 mm, se ha convertido en el elemento fresado %4; asígnele una herramienta, condiciones, coeficientes de corte y una tolerancia para evaluarlo</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos; was not read: OpenCascade would not transfer shapes in millimetres (xstep.cascade.unit)</source>
+        <translation>&apos;%1&apos; no se ha leído: OpenCascade no transfería las formas en milímetros (xstep.cascade.unit)</translation>
+    </message>
 </context>
 <context>
     <name>StiffnessCommand</name>

@@ -230,13 +230,7 @@ QString referenceProblemText(const QString &path, const cad::ReferenceProblem &p
 TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOptions &options, CadImportResult &result)
 {
     const cad::QuietMessages quiet;
-    // The unit of the transferred shapes, whatever the file's own unit (STEP: the
-    // SI_UNIT/CONVERSION_BASED_UNIT of its context; IGES: the global section's unit flag); set
-    // before the readers are made, like the writer's (step_export.cpp), and the process's own
-    // setting comes back when the shape is out.
-    STEPControl_Controller::Init(); // defines the parameter
-    IGESControl_Controller::Init();
-    const cad::StaticSetting unit("xstep.cascade.unit", "MM");
+    // The shapes are transferred in millimetres (importCadFile sets xstep.cascade.unit).
     STEPControl_Reader step;
     IGESControl_Reader iges;
     XSControl_Reader &reader = format == CadFormat::Step ? static_cast<XSControl_Reader &>(step) : iges;
@@ -727,6 +721,19 @@ CadImportResult importCadFile(const QString &path, const CadImportOptions &optio
     // The whole import under the lock and the signal guard: OpenCascade's global state is shared,
     // and a malformed model can make its algorithms fault anywhere, not only in the reader.
     const std::lock_guard lock(cad::occtMutex());
+    // The unit of the transferred shapes, whatever the file's own unit (STEP: the
+    // SI_UNIT/CONVERSION_BASED_UNIT of its context; IGES: the global section's unit flag); set
+    // before the readers are made, like the writer's (step_export.cpp), and outside runGuarded,
+    // whose jump out of a fault would skip putting the process's own setting back.
+    STEPControl_Controller::Init(); // defines the parameter
+    IGESControl_Controller::Init();
+    const cad::StaticSetting unit("xstep.cascade.unit", "MM");
+    if (!unit.applied()) {
+        fail(result, StepImport::tr("'%1' was not read: OpenCascade would not transfer shapes in millimetres "
+                                    "(xstep.cascade.unit)")
+                         .arg(path));
+        return result;
+    }
     try {
         cad::runGuarded([&] { importInto(path, options, result); });
     } catch (const OSD_Signal &e) {

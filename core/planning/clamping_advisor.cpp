@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -78,8 +79,8 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
 {
     std::vector<ClampingOption> out;
     const auto grip = gripLength(project);
-    for (const ClampingMethod method :
-         {ClampingMethod::Chuck, ClampingMethod::BetweenCentres, ClampingMethod::ChuckTailstock}) {
+    constexpr std::array methods{ClampingMethod::Chuck, ClampingMethod::BetweenCentres, ClampingMethod::ChuckTailstock};
+    for (const ClampingMethod method : methods) {
         ClampingOption o;
         o.method = method;
         const bool chuck = method != ClampingMethod::BetweenCentres;
@@ -100,7 +101,11 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
             continue;
         }
         o.possible = true;
-        o.plan = optimisePlan(*built.problem, options);
+        // Each method its third of the progress, in turn.
+        const auto third = static_cast<double>(out.size()) / static_cast<double>(methods.size());
+        OptimisationOptions part = options;
+        part.progress = Progress(options.progress, third, third + 1.0 / static_cast<double>(methods.size()));
+        o.plan = optimisePlan(*built.problem, part);
         o.reason = describe(o, p);
         out.push_back(o);
     }

@@ -36,6 +36,11 @@ PlanningReport runPlanningJob(const Project &project, const DataLibrary &data, c
         OptimisationOptions c;
         c.progress = Progress(options.progress, 0.7, 1.0);
         report.clamping = adviseClamping(project, data, c);
+        if (c.progress.stopped()) { // a ranking of stopped searches is no ranking
+            report.clamping.clear();
+            report.cancelled = true;
+            return report;
+        }
     }
     (void)options.progress.report(1.0);
     return report;

@@ -91,6 +91,16 @@ private Q_SLOTS:
         w.document()->undoStack()->undo();
         QCOMPARE(feature(w, "O4").from, pt(35, 25));
         QVERIFY(!w.document()->isModified());
+        // The same box on another feature, or after Return, is a step of its own.
+        w.featurePanel()->startDiameterBox()->setValue(51.0);
+        w.profileView()->selectFeature(QStringLiteral("O9")); // the Ø30 journal, z 120 … 149
+        w.featurePanel()->startDiameterBox()->setValue(31.0);
+        QCOMPARE(w.document()->undoStack()->count(), 2);
+        Q_EMIT w.featurePanel()->startDiameterBox()->editingFinished();
+        w.featurePanel()->startDiameterBox()->setValue(32.0);
+        QCOMPARE(w.document()->undoStack()->count(), 3);
+        w.document()->undoStack()->undo();
+        QCOMPARE(feature(w, "O9").from, pt(120, 15.5));
     }
 
     void stepChamferAndDelete()

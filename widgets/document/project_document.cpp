@@ -36,14 +36,18 @@ Diagnostics errorsOf(const Project &project)
 template <typename T>
 class FieldCommand : public QUndoCommand {
 public:
-    FieldCommand(ProjectDocument &doc, T Project::*field, T before, T after, const QString &text,
-                 const QObject *control)
+    struct Source {
+        const QObject *control = nullptr; // the spin box whose steps these are; null: a step of its own
+        quint64 run = 0;                  // ProjectDocument::endRepeatedEdits
+    };
+
+    FieldCommand(ProjectDocument &doc, T Project::*field, T before, T after, const QString &text, Source source)
         : QUndoCommand(text)
         , m_doc(doc)
         , m_field(field)
         , m_before(std::move(before))
         , m_after(std::move(after))
-        , m_control(control)
+        , m_source(source)
     {
     }
 
@@ -52,12 +56,13 @@ public:
     void redo() override { apply(m_after); }
 
     // One id for the edits made by a control; mergeWith tells the controls and members apart.
-    [[nodiscard]] int id() const override { return m_control ? 1 : -1; }
+    [[nodiscard]] int id() const override { return m_source.control ? 1 : -1; }
 
     bool mergeWith(const QUndoCommand *other) override
     {
         const auto *next = dynamic_cast<const FieldCommand<T> *>(other);
-        if (!next || next->m_control != m_control || next->m_field != m_field)
+        if (!next || next->m_source.control != m_source.control || next->m_source.run != m_source.run ||
+            next->m_field != m_field || next->text() != text())
             return false;
         m_after = next->m_after;
         setObsolete(m_after == m_before);
@@ -75,7 +80,7 @@ private:
     T Project::*m_field;
     T m_before;
     T m_after;
-    const QObject *m_control; // the spin box whose steps these are; null: a step of its own
+    Source m_source;
 };
 
 ProjectDocument::ProjectDocument(QObject *parent) : QObject(parent), m_undoStack(new QUndoStack(this))
@@ -233,7 +238,8 @@ Diagnostics ProjectDocument::setDatum(const Datum &datum)
 template <typename T>
 void ProjectDocument::pushField(T Project::*field, const T &value, const QString &description)
 {
-    m_undoStack->push(new FieldCommand<T>(*this, field, m_project.*field, value, description, m_repeatingControl));
+    m_undoStack->push(
+        new FieldCommand<T>(*this, field, m_project.*field, value, description, {m_repeatingControl, m_editRun}));
 }
 
 template <typename T>

@@ -88,9 +88,9 @@ public:
     [[nodiscard]] QString nextToleranceId() const;
 
     // While alive, the document's edits are steps of `control` (a spin box being stepped with its
-    // arrows or typed into): such edits of one member, one after another, are one step in Undo,
-    // which takes the member back to where the first of them found it. Outside such a scope, and
-    // from another control, every edit is a step of its own.
+    // arrows or typed into): such edits of one member under one name, one after another, are one
+    // step in Undo, which takes the member back to where the first of them found it. Outside such
+    // a scope, from another control, and after endRepeatedEdits(), an edit is a step of its own.
     class RepeatedEdits {
     public:
         RepeatedEdits(ProjectDocument &document, const QObject *control);
@@ -102,6 +102,10 @@ public:
         ProjectDocument &m_document;
         const QObject *m_previous;
     };
+
+    // The next steps of any control start a step of their own: the control has lost the focus,
+    // or now edits something else (another feature, another set-up), or was rebuilt.
+    void endRepeatedEdits() { ++m_editRun; }
 
 Q_SIGNALS:
     void projectChanged();
@@ -131,6 +135,7 @@ private:
 
     std::vector<ReadProblem> m_readProblems;
     const QObject *m_repeatingControl = nullptr; // RepeatedEdits
+    quint64 m_editRun = 0;                       // endRepeatedEdits
 
     bool m_hasProject = false;
     QString m_filePath;

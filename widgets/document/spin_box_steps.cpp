@@ -15,6 +15,8 @@ void connectSpinBoxSteps(QDoubleSpinBox *box, ProjectDocument &document, QObject
         const ProjectDocument::RepeatedEdits steps(document, box);
         apply();
     });
+    // Return, or the focus gone elsewhere: the next steps are a step of their own.
+    QObject::connect(box, &QAbstractSpinBox::editingFinished, context, [&document] { document.endRepeatedEdits(); });
 }
 
 } // namespace tolturn

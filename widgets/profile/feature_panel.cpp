@@ -175,6 +175,8 @@ QWidget *FeaturePanel::createBoreGroup()
 
 void FeaturePanel::setFeature(const QString &featureId)
 {
+    if (featureId != m_featureId)
+        m_document.endRepeatedEdits(); // the corner boxes now edit another feature
     m_featureId = featureId;
     m_message->clear();
     showFeature();

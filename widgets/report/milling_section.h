@@ -17,8 +17,8 @@ namespace tolturn::report {
 
 // The section under `heading`, when the project has milled features (nothing otherwise). Each
 // feature is evaluated once (evaluateMilledFeature, which takes up to seconds for a long path);
-// `progress` (0…1 of the section) is told after each, and returning false cancels: the function
-// then returns false and lays out nothing.
+// `progress` (0…1 of the section) is told after each, and a stop cancels: the function then
+// returns false and lays out nothing.
 [[nodiscard]] bool milledFeaturesSection(Layout &layout, const Project &project, const QString &heading,
                                          const Progress &progress = {});
 

@@ -354,7 +354,7 @@ void windowMap(Layout &l, const Project &project, const PlanningReport &r)
 }
 
 void plan(Layout &l, const Project &p, const FinishingOutput &finishing,
-          const std::shared_ptr<const LoadedModel> &learned)
+          const std::shared_ptr<const LoadedModel> &learned, const Progress &progress)
 {
     l.heading(Report::tr("5  Plan"));
     if (!p.planning.cuttingSpeed_m_min) {
@@ -364,6 +364,7 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing,
         PlanningJobOptions o;
         o.windowSize = 64;
         o.learned = learned;
+        o.progress = progress;
         const PlanningReport r = runPlanningJob(p, DataLibrary::builtIn(), o);
         if (r.problem) {
             const PlanResult &pl = r.plan;
@@ -591,7 +592,7 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header, 
         rendered.cancelled = true;
         return rendered;
     }
-    plan(layout, project, finishing, header.learned);
+    plan(layout, project, finishing, header.learned, Progress(progress, 0.4, 0.8));
     feedSchedule(layout, project, header.learned);
     if (!step(0.8) || !report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"),
                                                      Progress(progress, 0.8, 0.95))) {

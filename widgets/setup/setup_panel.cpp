@@ -348,6 +348,8 @@ void SetupPanel::fillChoices()
 
 void SetupPanel::rebuildPassRows(int count)
 {
+    if (static_cast<int>(m_passBoxes.size()) != count)
+        m_document.endRepeatedEdits(); // a new box may take a deleted one's address
     while (static_cast<int>(m_passBoxes.size()) > count) {
         for (QDoubleSpinBox *box : m_passBoxes.back())
             delete box;
@@ -503,6 +505,7 @@ void SetupPanel::setOperation(int index)
 {
     if (index == m_operation)
         return;
+    m_document.endRepeatedEdits(); // the boxes now edit another set-up
     m_operation = index;
     projectChanged();
 }
