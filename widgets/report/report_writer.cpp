@@ -549,7 +549,6 @@ QByteArray pdfOf(const std::vector<std::unique_ptr<QPicture>> &pages, const Proj
 RenderedReport renderReport(const Project &project, const ReportHeader &header, const Progress &progress)
 {
     RenderedReport rendered;
-    auto step = [&progress](double f) { return progress.report(f); };
     const DataLibrary &data = DataLibrary::builtIn();
     const LoadedModel *model = header.learned.get();
     // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
@@ -582,20 +581,20 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header, 
     summary(layout, project, range, assumption);
     drawing(layout, project);
     inputs(layout, project, deviation, finishing);
-    if (!step(0.2)) {
+    if (!progress.report(0.2)) {
         rendered.cancelled = true;
         return rendered;
     }
     deviationPlots(layout, project, deviation, range.stiff, learned);
     verdicts(layout, project, verdictList);
-    if (!step(0.4)) {
+    if (!progress.report(0.4)) {
         rendered.cancelled = true;
         return rendered;
     }
     plan(layout, project, finishing, header.learned, Progress(progress, 0.4, 0.8));
     feedSchedule(layout, project, header.learned);
-    if (!step(0.8) || !report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"),
-                                                     Progress(progress, 0.8, 0.95))) {
+    if (!progress.report(0.8) || !report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"),
+                                                                Progress(progress, 0.8, 0.95))) {
         rendered.cancelled = true;
         return rendered;
     }
