@@ -10,7 +10,6 @@
 #include "widgets/common/project_fields.h"
 #include "widgets/common/table_cells.h"
 #include "widgets/common/table_copy.h"
-#include "widgets/common/worker_threads.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/adaptive_tab.h"
 #include "widgets/planning/planning_data_dialog.h"
@@ -29,9 +28,7 @@
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTableWidget>
-#include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent>
 
 #include <algorithm>
 #include <map>
@@ -101,27 +98,12 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     setObjectName(QStringLiteral("planningPanel"));
     m_apply->setObjectName(QStringLiteral("applyPlan"));
     buildControls();
-    connect(&m_watcher, &QFutureWatcher<PlanningReport>::finished, this, [this] {
-        m_run->setEnabled(!m_document.hasProblems());
-        m_cancel->setEnabled(false);
-        if (m_runOperation != m_operation) { // planned for a set-up no longer shown: not this one's
-            m_progress->setValue(0);
-            Q_EMIT finished();
-            return;
-        }
-        m_report = std::make_unique<PlanningReport>(m_watcher.result());
-        m_progress->setValue(m_report->cancelled ? 0 : 100);
-        showReport();
-        Q_EMIT finished();
-    });
+    connect(&m_runner, &JobRunner::progressChanged, this,
+            [this](double fraction) { m_progress->setValue(static_cast<int>(100.0 * fraction)); });
     projectChanged();
 }
 
-PlanningPanel::~PlanningPanel()
-{
-    cancel();
-    m_watcher.waitForFinished();
-}
+PlanningPanel::~PlanningPanel() = default; // the runner stops the job and waits for it
 
 void PlanningPanel::buildControls()
 {
@@ -343,43 +325,48 @@ void PlanningPanel::editPlanningData()
 
 bool PlanningPanel::isRunning() const
 {
-    return m_watcher.isRunning();
+    return m_runner.isRunning();
 }
 
 void PlanningPanel::optimise()
 {
     if (isRunning() || !m_document.hasProject() || m_document.hasProblems())
         return;
-    m_fraction = std::make_shared<std::atomic<double>>(0.0);
     m_runOperation = m_operation;
     PlanningJobOptions options;
     options.plane = static_cast<WindowPlane>(m_plane->currentData().toInt());
     options.learned = m_learned;
-    auto fraction = m_fraction;
-    m_job = Progress([fraction](double f) {
-        fraction->store(f); // shown by the poll below
-        return true;
-    });
-    options.progress = m_job;
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
     m_progress->setValue(0);
-    auto *poll = new QTimer(this);
-    connect(poll, &QTimer::timeout, this, [this, poll, fraction] {
-        m_progress->setValue(static_cast<int>(100.0 * fraction->load()));
-        if (!isRunning())
-            poll->deleteLater();
-    });
-    poll->start(50);
     const Project project = operationProject(); // a copy: the worker never touches the document
-    m_watcher.setFuture(QtConcurrent::run(
-        workerThreads(), [project, options] { return runPlanningJob(project, DataLibrary::builtIn(), options); }));
+    m_runner.start(
+        [project, options](const Progress &progress) mutable {
+            options.progress = progress;
+            return runPlanningJob(project, DataLibrary::builtIn(), options);
+        },
+        [this](PlanningReport report) { planFinished(std::move(report)); });
     Q_EMIT started();
+}
+
+void PlanningPanel::planFinished(PlanningReport report)
+{
+    m_run->setEnabled(!m_document.hasProblems());
+    m_cancel->setEnabled(false);
+    if (m_runOperation != m_operation) { // planned for a set-up no longer shown: not this one's
+        m_progress->setValue(0);
+        Q_EMIT finished();
+        return;
+    }
+    m_report = std::make_unique<PlanningReport>(std::move(report));
+    m_progress->setValue(m_report->cancelled ? 0 : 100);
+    showReport();
+    Q_EMIT finished();
 }
 
 void PlanningPanel::cancel()
 {
-    m_job.stop();
+    m_runner.cancel();
 }
 
 void PlanningPanel::applyPlan()

@@ -3,11 +3,10 @@
 
 #include "core/learning/machine_learning.h"
 #include "core/planning/planning_report.h"
+#include "widgets/common/job_runner.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
 
-#include <atomic>
 #include <memory>
 
 class QCheckBox;
@@ -94,6 +93,7 @@ Q_SIGNALS:
 private:
     void buildControls();
     void settingsEdited();
+    void planFinished(PlanningReport report);
     void showReport();
     void showWindow();
     void showClamping();
@@ -134,9 +134,7 @@ private:
     QLabel *m_gcodeConditions;
     QPlainTextEdit *m_gcode;
     QPushButton *m_export;
-    QFutureWatcher<PlanningReport> m_watcher;
-    std::shared_ptr<std::atomic<double>> m_fraction;
-    Progress m_job; // the running job's progress, which Cancel stops
+    JobRunner m_runner; // the optimisation, off the window's thread
     std::unique_ptr<PlanningReport> m_report;
     FinishingOutput m_finishing;
     bool m_updatingControls = false;

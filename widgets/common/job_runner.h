@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/common/progress.h"
+#include "widgets/common/worker_threads.h"
+
+#include <QFuture>
+#include <QMetaObject>
+#include <QObject>
+#include <QThread>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <atomic>
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace tolturn {
+
+// Runs the desktop program's long computations on workerThreads() and hands their results back on
+// the thread the runner lives in (EXAMPLES.md item 2, after hotspot's JobTracker). One job at a
+// time: a job started while another runs replaces it; the older one is stopped and its result
+// dropped. The job's Progress reaches the window as progressChanged(), at most one update waiting
+// at a time, so a job that reports often does not flood the event loop; nothing here ever runs the
+// event loop itself. Cancel stops the job through its Progress: the job returns what it has (a
+// result marked cancelled), which is delivered like any other.
+class JobRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit JobRunner(QObject *parent = nullptr);
+    // Stops the jobs still running and waits for them: a job never outlives what it reports to.
+    ~JobRunner() override;
+
+    JobRunner(const JobRunner &) = delete;
+    JobRunner &operator=(const JobRunner &) = delete;
+
+    // From start() until the job's `done` is called.
+    [[nodiscard]] bool isRunning() const { return m_running; }
+
+    // Asks the running job to stop; it still ends through its `done`.
+    void cancel();
+
+    // Runs `work(const Progress &)` on a worker thread; `done(result)` then runs on this object's
+    // thread, unless a newer job has replaced this one or the runner is gone. `work` must not touch
+    // anything the window owns: give it copies.
+    template <class Work, class Done>
+    void start(Work work, Done done);
+
+Q_SIGNALS:
+    void progressChanged(double fraction);
+    // After a job's `done` has run (isRunning() is false again).
+    void finished();
+
+private:
+    struct Job {
+        std::atomic<double> fraction{0.0};
+        std::atomic<bool> updateQueued{false};
+    };
+
+    // A new job: the older one stopped, a Progress whose reports become progressChanged().
+    [[nodiscard]] Progress beginJob(const std::shared_ptr<Job> &job);
+    void showProgress(const std::shared_ptr<Job> &job);
+    // Whether `id` is still the current job; ends it when so.
+    [[nodiscard]] bool endJob(unsigned id);
+    void waitForJobs();
+
+    unsigned m_currentId = 0;
+    std::shared_ptr<Job> m_currentJob;
+    bool m_running = false;
+    Progress m_progress; // the current job's, which cancel() stops
+    std::vector<QFuture<void>> m_futures;
+};
+
+template <class Work, class Done>
+void JobRunner::start(Work work, Done done)
+{
+    using Result = std::invoke_result_t<Work &, const Progress &>;
+    auto job = std::make_shared<Job>();
+    const Progress progress = beginJob(job);
+    const unsigned id = m_currentId;
+    m_futures.push_back(QtConcurrent::run(
+        workerThreads(), [this, id, progress, work = std::move(work), done = std::move(done)]() mutable {
+            auto result = std::make_shared<Result>(work(progress));
+            // Queued: a runner destroyed meanwhile has waited for this job, and its pending call
+            // is dropped with it.
+            QMetaObject::invokeMethod(
+                this,
+                [this, id, result, done = std::move(done)]() mutable {
+                    Q_ASSERT(QThread::currentThread() == thread());
+                    if (!endJob(id))
+                        return; // replaced by a newer job
+                    done(std::move(*result));
+                    Q_EMIT finished();
+                },
+                Qt::QueuedConnection);
+        }));
+}
+
+} // namespace tolturn
