@@ -34,16 +34,7 @@ CadFileController::CadFileController(ProjectDocument &document, FileController &
     connect(&m_reader, &CadReaderProcess::finished, this, &CadFileController::readFinished);
     connect(&m_reader, &CadReaderProcess::progress, this, [this](double fraction) {
         Q_EMIT importProgress(static_cast<int>(100.0 * fraction));
-        if (!m_progress)
-            return;
-        // A shown modal progress dialog runs the event loop in update(), where the reader's
-        // finished() can arrive: readFinished() waits until every update has returned.
-        ++m_progressUpdates; // they nest when the event loop runs inside
-        const bool goOn = m_progress->update(fraction);
-        --m_progressUpdates;
-        if (m_progressUpdates == 0 && std::exchange(m_finishPending, false))
-            QMetaObject::invokeMethod(this, &CadFileController::readFinished, Qt::QueuedConnection);
-        if (!goOn)
+        if (m_progress && !m_progress->update(fraction))
             cancelReading();
     });
 }
@@ -85,10 +76,6 @@ void CadFileController::startReading(const CadImportOptions &options)
 
 void CadFileController::readFinished()
 {
-    if (m_progressUpdates > 0) { // inside the progress dialog's update: finish once it has returned
-        m_finishPending = true;
-        return;
-    }
     m_progress.reset();
     const CadImportResult result = m_reader.result();
     const QString name = QFileInfo(m_path).fileName();

@@ -78,8 +78,6 @@ private:
     std::unique_ptr<TaskProgress> m_progress;
     QString m_path;
     bool m_confirmed = false;       // the second read, with the planner's choice
-    int m_progressUpdates = 0;      // m_progress->update() calls running (they may run the event loop)
-    bool m_finishPending = false;   // the reader finished during one of them
     bool m_cancelRequested = false; // the planner cancelled this read
 };
 

@@ -39,6 +39,10 @@ FileController::FileController(ProjectDocument &document, RecentFiles &recentFil
     , m_recentFiles(recentFiles)
     , m_prompts(prompts)
 {
+    connect(&m_reportJob, &JobRunner::progressChanged, this, [this](double fraction) {
+        if (m_reportProgress && !m_reportProgress->update(fraction))
+            cancelReport();
+    });
 }
 
 QString FileController::fileFilter()
@@ -210,7 +214,7 @@ QString withDefaultSuffix(const QString &path, const QString &suffix)
 
 bool FileController::exportReport()
 {
-    if (!m_document.hasProject())
+    if (!m_document.hasProject() || isWritingReport())
         return false;
     const QString path = m_prompts.chooseReportFile(suggestedExportPath(m_document, QStringLiteral("pdf")));
     return !path.isEmpty() && exportReportTo(withDefaultSuffix(path, QStringLiteral("pdf")));
@@ -218,28 +222,44 @@ bool FileController::exportReport()
 
 bool FileController::exportReportTo(const QString &pdfPath)
 {
-    if (!m_document.hasProject())
+    if (!m_document.hasProject() || isWritingReport())
         return false;
-    // About a tenth of a second for a typical part (docs/benchmarks.md); the plots are widgets,
-    // so the report is drawn on this thread, with a progress dialog that can cancel it.
-    QGuiApplication::setOverrideCursor(QCursor(Qt::WaitCursor));
-    const std::unique_ptr<TaskProgress> progress = m_prompts.startProgress(tr("Writing the report…"));
-    const ReportResult result = writeReport(
-        operationView(m_document.project(), std::min(m_operation, operationCount(m_document.project()) - 1)),
-        {m_document.displayName(), loadPreferences().planner, m_learnedModel ? m_learnedModel() : nullptr}, pdfPath,
-        Progress([&progress](double f) { return !progress || progress->update(f); }));
-    QGuiApplication::restoreOverrideCursor();
-    if (result.cancelled) {
+    // Copies: the worker never touches the document, which the planner may go on editing.
+    const Project project =
+        operationView(m_document.project(), std::min(m_operation, operationCount(m_document.project()) - 1));
+    const ReportHeader header{m_document.displayName(), loadPreferences().planner,
+                              m_learnedModel ? m_learnedModel() : nullptr};
+    m_reportJob.start([project, header](const Progress &progress) { return computeReport(project, header, progress); },
+                      [this, project, header, pdfPath](const std::shared_ptr<const ReportData> &data) {
+                          reportComputed(project, header, pdfPath, data);
+                      });
+    m_reportProgress = m_prompts.startProgress(tr("Writing the report…"));
+    if (m_reportProgress) // after start(): Cancel stops this job
+        m_reportProgress->onCancel([this] { cancelReport(); });
+    return true;
+}
+
+void FileController::reportComputed(const Project &project, const ReportHeader &header, const QString &pdfPath,
+                                    const std::shared_ptr<const ReportData> &data)
+{
+    m_reportProgress.reset();
+    if (!data) {
         Q_EMIT statusMessage(tr("Report cancelled; nothing was written."));
-        return false;
+        Q_EMIT reportFinished(false);
+        return;
     }
+    // The plots are widgets: drawn here, in about a tenth of a second (docs/benchmarks.md).
+    QGuiApplication::setOverrideCursor(QCursor(Qt::WaitCursor));
+    const ReportResult result = writeReport(project, header, *data, pdfPath);
+    QGuiApplication::restoreOverrideCursor();
     if (!result.ok) {
         m_prompts.showError(tr("Cannot export the report"), result.error);
-        return false;
+        Q_EMIT reportFinished(false);
+        return;
     }
     Q_EMIT statusMessage(
         tr("Report written to %1 (%n page(s))", nullptr, result.pages).arg(QDir::toNativeSeparators(pdfPath)));
-    return true;
+    Q_EMIT reportFinished(true);
 }
 
 bool FileController::saveTo(const QString &path)

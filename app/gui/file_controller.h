@@ -3,6 +3,8 @@
 
 #include "core/learning/machine_learning.h"
 #include "core/project/project.h"
+#include "widgets/common/job_runner.h"
+#include "widgets/report/report_writer.h"
 
 #include <QDateTime>
 #include <QObject>
@@ -16,20 +18,22 @@ namespace tolturn {
 class ProjectDocument;
 class RecentFiles;
 
-// What file commands need from the user: a path chosen, an error shown. The main window answers
-// with dialogs; tests answer with fixed paths and record the errors.
-// The progress of a task as the user sees it, for as long as the object lives.
+// The progress of a task as the user sees it, for as long as the object lives. The task runs
+// elsewhere (a worker thread, a child process); the window's own event loop draws the progress and
+// delivers Cancel, so update() never runs the event loop.
 class TaskProgress {
 public:
     virtual ~TaskProgress() = default;
-    // `fraction` done (0…1); false once the user has asked to cancel. May run the event loop.
+    // `fraction` done (0…1); false once the user has asked to cancel.
     [[nodiscard]] virtual bool update(double fraction) = 0;
 
-    // Called as soon as the user asks to cancel, for a task that runs elsewhere and would only
-    // learn of it at its next update.
+    // Called as soon as the user asks to cancel, for a task that would only learn of it at its
+    // next update.
     virtual void onCancel(const std::function<void()> &handler) { Q_UNUSED(handler); }
 };
 
+// What file commands need from the user: a path chosen, an error shown. The main window answers
+// with dialogs; tests answer with fixed paths and record the errors.
 class FilePrompts {
 public:
     enum class SaveChoice { Save, Discard, Cancel };
@@ -44,8 +48,7 @@ public:
     // Asked at start for each copy a crashed session left: true to recover it, false to discard it.
     [[nodiscard]] virtual bool askToRecover(const QString &documentName, const QDateTime &savedAt) = 0;
 
-    // Shown while a long task runs on the GUI thread (the report draws widgets, so it cannot
-    // move off it); none by default.
+    // Shown while a long task runs (the report's computations); none by default.
     [[nodiscard]] virtual std::unique_ptr<TaskProgress> startProgress(const QString &label)
     {
         Q_UNUSED(label);
@@ -83,14 +86,21 @@ public:
     bool saveTo(const QString &path);
     // Offers the autosave copies crashed sessions left in `folder`; true when one was recovered.
     bool offerRecovery(const QString &autosaveFolder);
-    // File > Export Report: the PDF report of the document as it is now (saved or not).
+    // File > Export Report: the PDF report of the document as it is now (saved or not). Its
+    // computations run off the window's thread, with progress and cancel; it is drawn and written
+    // on it, and reportFinished() follows. False when none was started: no document, a report
+    // already being written, no file chosen.
     bool exportReport();
     bool exportReportTo(const QString &pdfPath);
 
-    // What was learned of the machine, when the planner uses it: the report then rests on it.
+    [[nodiscard]] bool isWritingReport() const { return m_reportJob.isRunning(); }
+
+    void cancelReport() { m_reportJob.cancel(); }
+
     // The operation (set-up) the report is of, for a project of several (docs/operations.md).
     void setOperation(int index) { m_operation = index; }
 
+    // What was learned of the machine, when the planner uses it: the report then rests on it.
     void setLearnedModelSource(std::function<std::shared_ptr<const LoadedModel>()> source)
     {
         m_learnedModel = std::move(source);
@@ -108,15 +118,22 @@ Q_SIGNALS:
     void statusMessage(const QString &message);
     // A TolTurn project with wrong values was opened to be repaired (ProjectDocument::problems()).
     void openedWithProblems();
+    // `written`: the report is on disk. Otherwise it was cancelled (said in statusMessage()) or
+    // could not be written (the error shown).
+    void reportFinished(bool written);
 
 private:
     int m_operation = 0;
     bool loadFrom(const QString &readPath, const QString &documentPath);
+    void reportComputed(const Project &project, const ReportHeader &header, const QString &pdfPath,
+                        const std::shared_ptr<const ReportData> &data);
 
     ProjectDocument &m_document;
     RecentFiles &m_recentFiles;
     FilePrompts &m_prompts;
     std::function<std::shared_ptr<const LoadedModel>()> m_learnedModel;
+    JobRunner m_reportJob;
+    std::unique_ptr<TaskProgress> m_reportProgress; // shown while m_reportJob runs
 };
 
 } // namespace tolturn

@@ -33,6 +33,9 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QCoreApplication>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -41,14 +44,16 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QProgressDialog>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QVBoxLayout>
 
 namespace tolturn {
 
@@ -701,30 +706,48 @@ std::optional<CadImportChoice> MainWindow::confirmImport(const QString &fileName
 
 namespace {
 
-// A window-modal progress dialog: setValue() lets the event loop run, so Cancel is seen.
+// A window-modal dialog with a bar and Cancel for a task that runs elsewhere (EXAMPLES.md item 2,
+// after Mayo's task manager dialog): update() only sets the bar, and the window's event loop,
+// running as ever, draws it and delivers Cancel. Shown after 300 ms, so a quick task shows nothing.
 class DialogProgress : public TaskProgress {
 public:
-    DialogProgress(const QString &label, QWidget *parent) : m_dialog(label, MainWindow::tr("Cancel"), 0, 100, parent)
+    DialogProgress(const QString &label, QWidget *parent) : m_dialog(parent), m_bar(new QProgressBar(&m_dialog))
     {
+        m_dialog.setObjectName(QStringLiteral("progressDialog"));
+        m_dialog.setWindowTitle(QCoreApplication::applicationName());
         m_dialog.setWindowModality(Qt::WindowModal);
-        m_dialog.setMinimumDuration(300); // a quick task shows nothing
-        m_dialog.setAutoReset(false);
+        m_dialog.setMinimumWidth(360);
+        m_bar->setRange(0, 100);
+        auto *buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, &m_dialog);
+        buttons->button(QDialogButtonBox::Cancel)->setText(MainWindow::tr("Cancel")); // without Qt's catalogues too
+        auto *layout = new QVBoxLayout(&m_dialog);
+        layout->addWidget(new QLabel(label, &m_dialog));
+        layout->addWidget(m_bar);
+        layout->addWidget(buttons);
+        // Cancel, Escape and the close button all reject.
+        QObject::connect(buttons, &QDialogButtonBox::rejected, &m_dialog, &QDialog::reject);
+        QObject::connect(&m_dialog, &QDialog::rejected, &m_dialog, [this] { m_cancelled = true; });
+        m_delay.setSingleShot(true);
+        QObject::connect(&m_delay, &QTimer::timeout, &m_dialog, &QDialog::show);
+        m_delay.start(300);
     }
 
     bool update(double fraction) override
     {
-        if (!m_dialog.wasCanceled()) // setValue would show a cancelled dialog again
-            m_dialog.setValue(static_cast<int>(100.0 * fraction));
-        return !m_dialog.wasCanceled();
+        m_bar->setValue(static_cast<int>(100.0 * fraction));
+        return !m_cancelled;
     }
 
     void onCancel(const std::function<void()> &handler) override
     {
-        QObject::connect(&m_dialog, &QProgressDialog::canceled, &m_dialog, handler);
+        QObject::connect(&m_dialog, &QDialog::rejected, &m_dialog, handler);
     }
 
 private:
-    QProgressDialog m_dialog;
+    QDialog m_dialog;
+    QProgressBar *m_bar;
+    QTimer m_delay;
+    bool m_cancelled = false;
 };
 
 } // namespace

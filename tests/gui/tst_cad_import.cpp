@@ -28,7 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
+#include <vector>
 
 using namespace tolturn;
 
@@ -65,29 +65,22 @@ public:
 
     void showError(const QString &title, const QString &text) override { error = title + QLatin1Char('\n') + text; }
 
-    // A progress that runs the event loop while it updates, as a shown modal progress dialog does.
-    bool eventLoopProgress = false;
-    bool destroyedInsideUpdate = false;
+    // A progress whose Cancel is pressed at its first update; the fractions it was shown.
+    bool cancelOnUpdate = false;
+    std::vector<double> shownProgress;
 
     std::unique_ptr<TaskProgress> startProgress(const QString &) override
     {
-        if (!eventLoopProgress)
+        if (!cancelOnUpdate)
             return nullptr;
 
         struct Progress : TaskProgress {
             CannedPrompts *owner = nullptr;
-            int depth = 0; // updates running (they nest, as the event loop runs inside)
-            bool first = true;
 
-            ~Progress() override { owner->destroyedInsideUpdate = owner->destroyedInsideUpdate || depth > 0; }
-
-            bool update(double) override
+            bool update(double fraction) override
             {
-                ++depth;
-                if (std::exchange(first, false))
-                    QTest::qWait(2000); // the reader (a fraction of a second) finishes meanwhile
-                --depth;
-                return true;
+                owner->shownProgress.push_back(fraction);
+                return false;
             }
         };
 
@@ -198,20 +191,6 @@ private Q_SLOTS:
         QCOMPARE(f.document.project().clamping.method, ClampingMethod::Chuck);
     }
 
-    // The reader finishing while the progress runs the event loop must not delete the progress
-    // under its own update (a shown modal QProgressDialog does run it).
-    void finishingInsideTheProgressUpdate()
-    {
-        QTemporaryDir dir;
-        const QString step = dir.filePath(QStringLiteral("shaft.step"));
-        QVERIFY(exportProfileToStep(stepped(), step).ok);
-        Fixture f;
-        f.prompts.eventLoopProgress = true;
-        QVERIFY(runImport(f, step));
-        QVERIFY(!f.prompts.destroyedInsideUpdate);
-        QVERIFY(f.document.hasProject());
-    }
-
     // Chuck at the other end: the Ø56 clamping diameter (z 0 … 35 in the model) ends up at
     // z 115 … 150, the Ø30 journal at the left.
     void flipPutsTheOtherEndInTheChuck()
@@ -313,6 +292,21 @@ private Q_SLOTS:
         f.cad.cancelImport();
         QVERIFY(finished.wait(10000));
         QVERIFY2(clock.elapsed() < 5000, qPrintable(QString::number(clock.elapsed())));
+        QVERIFY(finished.last().at(1).toString().contains(QStringLiteral("cancelled")));
+        QVERIFY(!f.document.hasProject());
+    }
+
+    // The progress shown is told the reader's progress, and its Cancel ends the reader.
+    void cancelInTheProgressEndsTheReader()
+    {
+        QTemporaryDir dir;
+        const ReaderProgram hanging(fakeReader(dir, "echo 'progress 0.05' >&2\nexec sleep 600"));
+        Fixture f;
+        f.prompts.cancelOnUpdate = true;
+        QSignalSpy finished(&f.cad, &CadFileController::importFinished);
+        f.cad.importFile(dir.filePath(QStringLiteral("huge.step")));
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(f.prompts.shownProgress, std::vector<double>{0.05});
         QVERIFY(finished.last().at(1).toString().contains(QStringLiteral("cancelled")));
         QVERIFY(!f.document.hasProject());
     }

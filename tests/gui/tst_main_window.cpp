@@ -11,6 +11,7 @@
 #include "core/project/project_validation.h"
 #include "resources/bundled.h"
 #include "widgets/common/length_spin_box.h"
+#include "widgets/common/worker_threads.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/dialogs/help_browser.h"
 #include "widgets/document/project_document.h"
@@ -29,6 +30,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
@@ -38,6 +41,7 @@
 #include <QGraphicsSimpleTextItem>
 #include <QLabel>
 #include <QMessageBox>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
@@ -50,6 +54,13 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QWidgetAction>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <functional>
+#include <future>
+#include <utility>
+#include <vector>
 
 using namespace tolturn;
 using tolturn::test::closeNextMessageBox;
@@ -129,11 +140,12 @@ void answerNextSavePrompt(QMessageBox::StandardButton button, bool *asked)
     });
 }
 
-// Prompts that answer nothing and cancel a long task once it reports `cancelAt` done.
+// Prompts that answer nothing; the progress they show records what it is told, and pressCancel()
+// presses its Cancel.
 class CancellingPrompts : public FilePrompts {
 public:
     std::vector<double> reported;
-    double cancelAt = 0.4;
+    std::function<void()> cancel;
 
     SaveChoice askToSaveChanges(const QString &) override { return SaveChoice::Cancel; }
 
@@ -147,6 +159,8 @@ public:
 
     bool askToRecover(const QString &, const QDateTime &) override { return false; }
 
+    void pressCancel() const { cancel(); }
+
     std::unique_ptr<TaskProgress> startProgress(const QString &) override
     {
         struct Progress : TaskProgress {
@@ -155,14 +169,42 @@ public:
             bool update(double fraction) override
             {
                 owner->reported.push_back(fraction);
-                return fraction < owner->cancelAt;
+                return true;
             }
+
+            void onCancel(const std::function<void()> &handler) override { owner->cancel = handler; }
         };
 
         auto progress = std::make_unique<Progress>();
         progress->owner = this;
         return progress;
     }
+};
+
+// Holds both worker threads until release(), so that a job started meanwhile waits.
+class WorkersHeld {
+public:
+    WorkersHeld()
+    {
+        for (int i = 0; i < 2; ++i)
+            m_held.push_back(QtConcurrent::run(workerThreads(), [gate = m_gate] { gate.wait(); }));
+    }
+
+    ~WorkersHeld() { release(); }
+
+    void release()
+    {
+        if (!std::exchange(m_released, true))
+            m_open.set_value();
+        for (QFuture<void> &f : m_held)
+            f.waitForFinished();
+    }
+
+private:
+    std::promise<void> m_open;
+    std::shared_future<void> m_gate = m_open.get_future().share();
+    std::vector<QFuture<void>> m_held;
+    bool m_released = false;
 };
 
 } // namespace
@@ -540,7 +582,10 @@ private Q_SLOTS:
         QVERIFY(action->isEnabled());
         QTemporaryDir dir;
         const QString pdf = dir.filePath(QStringLiteral("sleeve.pdf"));
+        QSignalSpy finished(w.fileController(), &FileController::reportFinished);
         QVERIFY(w.fileController()->exportReportTo(pdf));
+        QVERIFY(finished.wait(60000));
+        QVERIFY(finished.last().constFirst().toBool());
         QFile file(pdf);
         QVERIFY(file.open(QIODevice::ReadOnly));
         QVERIFY(file.read(5) == "%PDF-");
@@ -548,11 +593,60 @@ private Q_SLOTS:
 
         QString shown;
         closeNextMessageBox(&shown);
-        QVERIFY(!w.fileController()->exportReportTo(QStringLiteral("/nonexistent-folder/r.pdf")));
+        QVERIFY(w.fileController()->exportReportTo(QStringLiteral("/nonexistent-folder/r.pdf")));
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!finished.last().constFirst().toBool());
         QVERIFY2(shown.contains(QStringLiteral("/nonexistent-folder/r.pdf")), qPrintable(shown));
     }
 
-    // Cancelling the report while it is written: nothing on disk, the user told.
+    // The progress of a long task: a window-modal dialog once it has run 300 ms, with its bar, and a
+    // Cancel that reaches the task at once and at its next update.
+    void progressDialogShowsAndCancels()
+    {
+        MainWindow w;
+        w.resize(1000, 700);
+        w.show();
+        const std::unique_ptr<TaskProgress> progress = w.startProgress(QStringLiteral("Reading shaft.step…"));
+        bool cancelled = false;
+        progress->onCancel([&cancelled] { cancelled = true; });
+        auto *dialog = w.findChild<QDialog *>(QStringLiteral("progressDialog"));
+        QVERIFY(dialog);
+        QVERIFY(!dialog->isVisible()); // a quick task shows nothing
+        QVERIFY(progress->update(0.4));
+        QTRY_VERIFY_WITH_TIMEOUT(dialog->isVisible(), 5000);
+        QCOMPARE(dialog->windowModality(), Qt::WindowModal);
+        QCOMPARE(dialog->findChild<QProgressBar *>()->value(), 40);
+        test::saveScreenshot(*dialog, "progress-dialog.png");
+        auto *buttons = dialog->findChild<QDialogButtonBox *>();
+        QVERIFY(buttons);
+        buttons->button(QDialogButtonBox::Cancel)->click();
+        QVERIFY(cancelled);
+        QVERIFY(!progress->update(0.5));
+    }
+
+    // The report is computed off the window's thread: its progress is shown up to the end.
+    void reportProgressIsShown()
+    {
+        ProjectDocument document;
+        RecentFiles recent;
+        CancellingPrompts prompts;
+        FileController files(document, recent, prompts);
+        QVERIFY(files.openFile(example("stepped-shaft-chuck.tolturn")));
+        QSignalSpy finished(&files, &FileController::reportFinished);
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("shaft.pdf"));
+        QVERIFY(files.exportReportTo(pdf));
+        QVERIFY(files.isWritingReport());
+        QVERIFY(!files.exportReportTo(pdf)); // one report at a time
+        QVERIFY(finished.wait(60000));
+        QVERIFY(finished.last().constFirst().toBool());
+        QVERIFY(QFileInfo::exists(pdf));
+        QVERIFY(!prompts.reported.empty());
+        QVERIFY(std::is_sorted(prompts.reported.begin(), prompts.reported.end()));
+        QCOMPARE(prompts.reported.back(), 1.0);
+    }
+
+    // Cancelling the report while it is computed: nothing on disk, the user told.
     void cancellingTheReportWritesNothing()
     {
         ProjectDocument document;
@@ -561,12 +655,19 @@ private Q_SLOTS:
         FileController files(document, recent, prompts);
         QVERIFY(files.openFile(example("stepped-shaft-chuck.tolturn")));
         QSignalSpy messages(&files, &FileController::statusMessage);
+        QSignalSpy finished(&files, &FileController::reportFinished);
         QTemporaryDir dir;
         const QString pdf = dir.filePath(QStringLiteral("cancelled.pdf"));
-        QVERIFY(!files.exportReportTo(pdf));
+        WorkersHeld held; // the report cannot end before Cancel is pressed
+        QVERIFY(files.exportReportTo(pdf));
+        QVERIFY(prompts.cancel); // the progress shown can cancel the report
+        prompts.pressCancel();
+        held.release();
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!finished.last().constFirst().toBool());
         QVERIFY(!QFileInfo::exists(pdf));
-        QCOMPARE(prompts.reported, (std::vector<double>{0.2, 0.4}));
         QVERIFY(messages.last().constFirst().toString().contains(QStringLiteral("cancelled")));
+        QVERIFY(!files.isWritingReport());
     }
 
     // The toolbar's icons are TolTurn's SVGs, drawn sharp at twice the size (High-DPI).

@@ -183,17 +183,24 @@ void errorPlot(Layout &l, const MilledFeature &f, const MilledFeatureEvaluation 
 
 } // namespace
 
-bool milledFeaturesSection(Layout &layout, const Project &project, const QString &heading, const Progress &progress)
+std::optional<std::vector<MilledFeatureEvaluation>> evaluateMilledFeatures(const Project &project,
+                                                                           const Progress &progress)
 {
-    if (project.milledFeatures.empty())
-        return true;
     std::vector<MilledFeatureEvaluation> evaluations;
     const auto count = static_cast<double>(project.milledFeatures.size());
     for (const MilledFeature &f : project.milledFeatures) {
         evaluations.push_back(evaluateMilledFeature(f));
         if (!progress.report(static_cast<double>(evaluations.size()) / count))
-            return false;
+            return std::nullopt;
     }
+    return evaluations;
+}
+
+void milledFeaturesSection(Layout &layout, const Project &project, const QString &heading,
+                           const std::vector<MilledFeatureEvaluation> &evaluations)
+{
+    if (project.milledFeatures.empty())
+        return;
     layout.ensure(160); // the heading, the paragraph and the table's first row together
     layout.heading(heading);
     layout.paragraph(
@@ -208,7 +215,6 @@ bool milledFeaturesSection(Layout &layout, const Project &project, const QString
     for (std::size_t i = 0; i < evaluations.size(); ++i)
         if (evaluations[i].evaluated())
             errorPlot(layout, project.milledFeatures[i], evaluations[i]);
-    return true;
 }
 
 } // namespace tolturn::report

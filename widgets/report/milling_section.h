@@ -6,20 +6,26 @@
 #pragma once
 
 #include "core/common/progress.h"
+#include "core/milling/milled_features.h"
 #include "core/project/project.h"
 #include "widgets/report/report_layout.h"
 
 #include <QString>
 
-#include <functional>
+#include <optional>
+#include <vector>
 
 namespace tolturn::report {
 
-// The section under `heading`, when the project has milled features (nothing otherwise). Each
-// feature is evaluated once (evaluateMilledFeature, which takes up to seconds for a long path);
-// `progress` (0…1 of the section) is told after each, and a stop cancels: the function then
-// returns false and lays out nothing.
-[[nodiscard]] bool milledFeaturesSection(Layout &layout, const Project &project, const QString &heading,
-                                         const Progress &progress = {});
+// Each milled feature of `project` evaluated (evaluateMilledFeature, up to seconds for a long
+// path), in order; `progress` (0…1) is told after each. nullopt when it was stopped. Needs no
+// widget: it can run off the window's thread.
+[[nodiscard]] std::optional<std::vector<MilledFeatureEvaluation>> evaluateMilledFeatures(const Project &project,
+                                                                                         const Progress &progress = {});
+
+// The section under `heading`, when the project has milled features (nothing otherwise), with
+// their `evaluations` (as evaluateMilledFeatures gives them).
+void milledFeaturesSection(Layout &layout, const Project &project, const QString &heading,
+                           const std::vector<MilledFeatureEvaluation> &evaluations);
 
 } // namespace tolturn::report

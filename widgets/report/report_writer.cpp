@@ -34,6 +34,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace tolturn {
 
@@ -353,19 +355,14 @@ void windowMap(Layout &l, const Project &project, const PlanningReport &r)
                     8.5);
 }
 
-void plan(Layout &l, const Project &p, const FinishingOutput &finishing,
-          const std::shared_ptr<const LoadedModel> &learned, const Progress &progress)
+void plan(Layout &l, const Project &p, const FinishingOutput &finishing, const std::optional<PlanningReport> &planned)
 {
     l.heading(Report::tr("5  Plan"));
-    if (!p.planning.cuttingSpeed_m_min) {
+    if (!planned) {
         l.paragraph(
             Report::tr("The project has no planning data (the insert's cutting ranges), so no plan was optimised."));
     } else {
-        PlanningJobOptions o;
-        o.windowSize = 64;
-        o.learned = learned;
-        o.progress = progress;
-        const PlanningReport r = runPlanningJob(p, DataLibrary::builtIn(), o);
+        const PlanningReport &r = *planned;
         if (r.problem) {
             const PlanResult &pl = r.plan;
             l.paragraph(
@@ -405,19 +402,34 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing,
 
 // The finishing pass's feed schedule (docs/adaptive.md §5): each feature's largest feed that holds
 // its tolerances and the pass's limits, and the time it saves against the programmed feed.
-void feedSchedule(Layout &l, const Project &p, const std::shared_ptr<const LoadedModel> &learned)
+struct ScheduledFinishing {
+    FeedSchedule schedule;
+    double before_s = 0.0; // the outer finishing pass at the programmed feed
+    double after_s = 0.0;  // at the scheduled feeds
+};
+
+std::optional<ScheduledFinishing> scheduledFinishing(const Project &p,
+                                                     const std::shared_ptr<const LoadedModel> &learned)
 {
     if (!p.planning.feed_mm_rev)
-        return; // no feed range: nothing to schedule within (the plan section says why)
-    const FeedSchedule s = scheduleProjectFinishingFeeds(p, DataLibrary::builtIn(), learned);
-    if (!s.ok())
-        return;
+        return std::nullopt; // no feed range: nothing to schedule within (the plan section says why)
+    ScheduledFinishing f{scheduleProjectFinishingFeeds(p, DataLibrary::builtIn(), learned)};
+    if (!f.schedule.ok())
+        return std::nullopt;
     GCodeOptions options;
-    const double before =
-        60.0 * outerFinishingTime_min(finishingOutput(p, DataLibrary::builtIn(), options).nominal.passes);
-    options.finishingFeeds_mm_rev = s.feedByFeature();
-    const double after =
-        60.0 * outerFinishingTime_min(finishingOutput(p, DataLibrary::builtIn(), options).nominal.passes);
+    f.before_s = 60.0 * outerFinishingTime_min(finishingOutput(p, DataLibrary::builtIn(), options).nominal.passes);
+    options.finishingFeeds_mm_rev = f.schedule.feedByFeature();
+    f.after_s = 60.0 * outerFinishingTime_min(finishingOutput(p, DataLibrary::builtIn(), options).nominal.passes);
+    return f;
+}
+
+void feedSchedule(Layout &l, const std::optional<ScheduledFinishing> &scheduled)
+{
+    if (!scheduled)
+        return;
+    const FeedSchedule &s = scheduled->schedule;
+    const double before = scheduled->before_s;
+    const double after = scheduled->after_s;
     l.paragraph(Report::tr("Feed schedule of the finishing pass [8]: each feature at the largest feed of the range "
                            "that holds its tolerances and the pass's limits; %1 s at the programmed %2 mm/rev, %3 s "
                            "scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).")
@@ -546,59 +558,81 @@ QByteArray pdfOf(const std::vector<std::unique_ptr<QPicture>> &pages, const Proj
 
 } // namespace
 
-RenderedReport renderReport(const Project &project, const ReportHeader &header, const Progress &progress)
+// What the report computes before it draws (report_writer.h).
+struct ReportData {
+    RangeEvaluation range;   // over the machine's stiffness range, or with what was learned
+    DeviationResult physics; // with what was learned: the physics' own prediction, for the plots
+    std::optional<LearnedCurves> learned;
+    FinishingOutput finishing;
+    std::optional<PlanningReport> plan; // none without the insert's cutting ranges
+    std::optional<ScheduledFinishing> schedule;
+    std::vector<MilledFeatureEvaluation> milled;
+};
+
+std::shared_ptr<const ReportData> computeReport(const Project &project, const ReportHeader &header,
+                                                const Progress &progress)
 {
-    RenderedReport rendered;
+    auto d = std::make_shared<ReportData>();
     const DataLibrary &data = DataLibrary::builtIn();
     const LoadedModel *model = header.learned.get();
     // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
     // and the plan; the plots keep the physics' contributions and add the learned total.
-    DeviationResult physics;
-    RangeEvaluation range =
-        model ? evaluateWithLearned(project, data, *model, &physics) : evaluateOverStiffnessRange(project, data);
-    addReclampingNotes(project, range, data);
-    std::optional<LearnedCurves> learned;
+    d->range =
+        model ? evaluateWithLearned(project, data, *model, &d->physics) : evaluateOverStiffnessRange(project, data);
+    addReclampingNotes(project, d->range, data);
     if (model) {
-        learned = LearnedCurves{learnedAtStations(project, physics, model->model), model->uncertainty_mm(),
-                                model->provenance()};
+        d->learned = LearnedCurves{learnedAtStations(project, d->physics, model->model), model->uncertainty_mm(),
+                                   model->provenance()};
     }
-    const DeviationResult &deviation = model ? physics : range.compliant;
+    d->finishing = model ? finishingOutputFor(project, data, d->range.compliant) : finishingOutput(project, data);
+    if (!progress.report(0.2))
+        return nullptr;
+    if (project.planning.cuttingSpeed_m_min) {
+        PlanningJobOptions o;
+        o.windowSize = 64;
+        o.learned = header.learned;
+        o.progress = Progress(progress, 0.2, 0.8);
+        d->plan = runPlanningJob(project, data, o);
+    }
+    d->schedule = scheduledFinishing(project, header.learned);
+    if (!progress.report(0.85))
+        return nullptr;
+    std::optional<std::vector<MilledFeatureEvaluation>> milled =
+        report::evaluateMilledFeatures(project, Progress(progress, 0.85, 1.0));
+    if (!milled)
+        return nullptr;
+    d->milled = std::move(*milled);
+    (void)progress.report(1.0);
+    return d;
+}
+
+RenderedReport renderReport(const Project &project, const ReportHeader &header, const ReportData &d)
+{
+    RenderedReport rendered;
+    const LoadedModel *model = header.learned.get();
+    const DeviationResult &deviation = model ? d.physics : d.range.compliant;
     std::vector<ToleranceEvaluation> verdictList;
-    for (const ToleranceRangeEvaluation &e : range.tolerances)
+    for (const ToleranceRangeEvaluation &e : d.range.tolerances)
         verdictList.push_back(e.compliant);
-    const FinishingOutput finishing =
-        model ? finishingOutputFor(project, data, range.compliant) : finishingOutput(project, data);
 
     Layout layout;
     titleBlock(layout, project, header);
-    QString assumption = model ? learnedAssumptionText(*model) : machineAssumptionText(range, DataLibrary::builtIn());
+    QString assumption = model ? learnedAssumptionText(*model) : machineAssumptionText(d.range, DataLibrary::builtIn());
     if (project.scope) // one set-up of several: which, and which end of the drawing it holds
         assumption.prepend(Report::tr("%1 (set-up %2 of %3, the %4 end held): ")
                                .arg(project.scope->name)
                                .arg(project.scope->index + 1)
                                .arg(project.scope->count)
                                .arg(displayName(project.clamping.heldEnd)));
-    summary(layout, project, range, assumption);
+    summary(layout, project, d.range, assumption);
     drawing(layout, project);
-    inputs(layout, project, deviation, finishing);
-    if (!progress.report(0.2)) {
-        rendered.cancelled = true;
-        return rendered;
-    }
-    deviationPlots(layout, project, deviation, range.stiff, learned);
+    inputs(layout, project, deviation, d.finishing);
+    deviationPlots(layout, project, deviation, d.range.stiff, d.learned);
     verdicts(layout, project, verdictList);
-    if (!progress.report(0.4)) {
-        rendered.cancelled = true;
-        return rendered;
-    }
-    plan(layout, project, finishing, header.learned, Progress(progress, 0.4, 0.8));
-    feedSchedule(layout, project, header.learned);
-    if (!progress.report(0.8) || !report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"),
-                                                                Progress(progress, 0.8, 0.95))) {
-        rendered.cancelled = true;
-        return rendered;
-    }
-    assumptions(layout, project, model ? range.compliant : deviation);
+    plan(layout, project, d.finishing, d.plan);
+    feedSchedule(layout, d.schedule);
+    report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"), d.milled);
+    assumptions(layout, project, model ? d.range.compliant : deviation);
     // The appendices (for reference, not for the shop floor) open a page unless a third of this
     // one is still free: no page is left holding a few lines.
     if (layout.remaining() < (report::kBottom - report::kMargin) / 3.0)
@@ -611,21 +645,38 @@ RenderedReport renderReport(const Project &project, const ReportHeader &header, 
     return rendered;
 }
 
-ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
-                         const Progress &progress)
+RenderedReport renderReport(const Project &project, const ReportHeader &header, const Progress &progress)
+{
+    const std::shared_ptr<const ReportData> data = computeReport(project, header, progress);
+    if (!data) {
+        RenderedReport cancelled;
+        cancelled.cancelled = true;
+        return cancelled;
+    }
+    return renderReport(project, header, *data);
+}
+
+ReportResult writeReport(const Project &project, const ReportHeader &header, const ReportData &data,
+                         const QString &pdfPath)
 {
     ReportResult result;
-    const RenderedReport rendered = renderReport(project, header, progress);
-    if (rendered.cancelled)
-        return cancelledReport();
+    const RenderedReport rendered = renderReport(project, header, data);
     if (QString error = writeFileAtomically(pdfPath, rendered.pdf); !error.isEmpty()) {
         result.error = std::move(error);
         return result;
     }
     result.ok = true;
     result.pages = rendered.pages;
-    (void)progress.report(1.0);
     return result;
+}
+
+ReportResult writeReport(const Project &project, const ReportHeader &header, const QString &pdfPath,
+                         const Progress &progress)
+{
+    const std::shared_ptr<const ReportData> data = computeReport(project, header, progress);
+    if (!data)
+        return cancelledReport();
+    return writeReport(project, header, *data, pdfPath);
 }
 
 } // namespace tolturn
