@@ -34,9 +34,16 @@
 #include <cmath>
 #include <deque>
 #include <exception>
+#include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace tolturn {
+
+struct CadModel::Bodies {
+    std::vector<TopoDS_Shape> shapes; // solids, else shells, else the one shape of faces
+};
 
 namespace {
 
@@ -44,13 +51,14 @@ struct StepImport {
     Q_DECLARE_TR_FUNCTIONS(StepImport)
 };
 
-enum class CadFormat { Step, Iges };
-
-// Shares of the progress bar: parsing the file, transferring its entities to shapes, tracing
-// the faces (the rest is quick).
+// Shares of importCadFile's progress: parsing the file, transferring its entities to shapes
+// (readCadFile), tracing the faces (extractProfile; the rest is quick).
 constexpr double kReadDone = 0.4;
 constexpr double kTransferDone = 0.8;
 constexpr double kTraceDone = 0.95;
+// The same within each phase's own range.
+constexpr double kParsedShare = kReadDone / kTransferDone;
+constexpr double kTracedShare = (kTraceDone - kTransferDone) / (1.0 - kTransferDone);
 
 // Bytes read from each end of the file to recognise its format.
 constexpr qint64 kSniffBytes = 4096;
@@ -62,16 +70,22 @@ QString num(double v)
     return formatNumber(v);
 }
 
-void fail(CadImportResult &result, const QString &message)
+void fail(Diagnostics &diagnostics, const QString &message)
 {
-    result.diagnostics.push_back(makeError(QStringLiteral("file"), message));
+    diagnostics.push_back(makeError(QStringLiteral("file"), message));
 }
 
-bool report(const CadImportOptions &options, CadImportResult &result, double fraction)
+void fail(CadImportResult &result, const QString &message)
 {
-    if (!options.progress.report(fraction))
-        result.cancelled = true;
-    return !result.cancelled;
+    fail(result.diagnostics, message);
+}
+
+// Tells `progress`; false (and `cancelled` set) once it is stopped.
+bool report(const Progress &progress, bool &cancelled, double fraction)
+{
+    if (!progress.report(fraction))
+        cancelled = true;
+    return !cancelled;
 }
 
 // The format's name, as the milled features' descriptions give the file their faces are from.
@@ -227,41 +241,41 @@ QString referenceProblemText(const QString &path, const cad::ReferenceProblem &p
 }
 
 // Reads and transfers the file (the caller holds the OpenCascade lock); a null shape after an error.
-TopoDS_Shape readShape(const QString &path, CadFormat format, const CadImportOptions &options, CadImportResult &result)
+TopoDS_Shape readShape(const QString &path, CadFormat format, const Progress &progress, CadReadResult &result)
 {
     const cad::QuietMessages quiet;
-    // The shapes are transferred in millimetres (importCadFile sets xstep.cascade.unit).
+    // The shapes are transferred in millimetres (readCadFile sets xstep.cascade.unit).
     STEPControl_Reader step;
     IGESControl_Reader iges;
     XSControl_Reader &reader = format == CadFormat::Step ? static_cast<XSControl_Reader &>(step) : iges;
-    if (!report(options, result, 0.0))
+    if (!report(progress, result.cancelled, 0.0))
         return {};
     const IFSelect_ReturnStatus status = reader.ReadFile(QFile::encodeName(path).constData());
     if (status != IFSelect_RetDone) {
-        fail(result, format == CadFormat::Step
-                         ? StepImport::tr("OpenCascade cannot parse '%1' as a STEP file (ISO 10303-21)").arg(path)
-                         : StepImport::tr("OpenCascade cannot parse '%1' as an IGES file").arg(path));
+        fail(result.diagnostics,
+             format == CadFormat::Step
+                 ? StepImport::tr("OpenCascade cannot parse '%1' as a STEP file (ISO 10303-21)").arg(path)
+                 : StepImport::tr("OpenCascade cannot parse '%1' as an IGES file").arg(path));
         return {};
     }
     if (const QString failure = firstLoadFailure(reader); !failure.isEmpty()) {
-        fail(result, StepImport::tr("'%1' is not a consistent model: %2").arg(path, failure));
+        fail(result.diagnostics, StepImport::tr("'%1' is not a consistent model: %2").arg(path, failure));
         return {};
     }
     if (const auto problem = cad::firstReferenceProblem(reader.WS()->Graph())) {
-        fail(result, referenceProblemText(path, *problem));
+        fail(result.diagnostics, referenceProblemText(path, *problem));
         return {};
     }
-    if (!report(options, result, kReadDone))
+    if (!report(progress, result.cancelled, kParsedShare))
         return {};
-    const Handle(cad::ProgressBridge) bridge =
-        new cad::ProgressBridge(Progress(options.progress, kReadDone, kTransferDone));
+    const Handle(cad::ProgressBridge) bridge = new cad::ProgressBridge(Progress(progress, kParsedShare, 1.0));
     reader.TransferRoots(bridge->Start());
     if (bridge->cancelled()) {
         result.cancelled = true;
         return {};
     }
     if (reader.NbShapes() == 0) {
-        fail(result,
+        fail(result.diagnostics,
              StepImport::tr("'%1' holds no shape that OpenCascade can transfer (no solid, shell or face)").arg(path));
         return {};
     }
@@ -320,21 +334,20 @@ int choose(int requested, int fallback, int count, const QString &field, const Q
     return -1;
 }
 
-int chooseSolid(const std::vector<TopoDS_Shape> &bodies, const CadImportOptions &options, CadImportResult &result)
+int chooseSolid(const CadModel &model, const CadImportOptions &options, CadImportResult &result)
 {
-    for (const TopoDS_Shape &b : bodies)
-        result.solids.push_back(solidInfo(b));
+    result.solids = model.solids();
     const auto largest = std::max_element(result.solids.begin(), result.solids.end(),
                                           [](const auto &a, const auto &b) { return a.volume_mm3 < b.volume_mm3; });
     const int chosen =
-        choose(options.solidIndex, static_cast<int>(largest - result.solids.begin()), static_cast<int>(bodies.size()),
-               QStringLiteral("step.solid"), StepImport::tr("body"), result);
-    if (chosen >= 0 && bodies.size() > 1)
+        choose(options.solidIndex, static_cast<int>(largest - result.solids.begin()),
+               static_cast<int>(result.solids.size()), QStringLiteral("step.solid"), StepImport::tr("body"), result);
+    if (chosen >= 0 && result.solids.size() > 1)
         result.diagnostics.push_back(makeWarning(
             QStringLiteral("step.solid"),
             StepImport::tr("the file holds %1 bodies; body %2 (%3 mm³) is imported, choose another with the solid "
                            "option")
-                .arg(bodies.size())
+                .arg(result.solids.size())
                 .arg(chosen)
                 .arg(num(result.solids[static_cast<std::size_t>(chosen)].volume_mm3))));
     return chosen;
@@ -652,10 +665,10 @@ PartProfile makeProfile(const QString &path, cad::ContourBuild &contours)
     return profile;
 }
 
-void extractProfile(const QString &path, CadFormat format, const TopoDS_Shape &body, const gp_Ax1 &axis,
-                    const CadImportOptions &options, CadImportResult &result)
+void traceProfile(const QString &path, CadFormat format, const TopoDS_Shape &body, const gp_Ax1 &axis,
+                  const CadImportOptions &options, CadImportResult &result)
 {
-    cad::SectionTrace trace = cad::traceSection(body, axis, Progress(options.progress, kTransferDone, kTraceDone));
+    cad::SectionTrace trace = cad::traceSection(body, axis, Progress(options.progress, 0.0, kTracedShare));
     if (trace.cancelled) {
         result.cancelled = true;
         return;
@@ -679,81 +692,132 @@ void extractProfile(const QString &path, CadFormat format, const TopoDS_Shape &b
     result.profile = std::move(profile);
 }
 
-void importInto(const QString &path, const CadImportOptions &options, CadImportResult &result)
+void readInto(const QString &path, const Progress &progress, CadReadResult &result)
 {
     const auto format = formatOf(path);
     if (!format) {
-        fail(result, StepImport::tr("'%1' is not a STEP or IGES file: TolTurn reads files ending in .step, .stp, "
-                                    ".iges or .igs")
-                         .arg(path));
+        fail(result.diagnostics, StepImport::tr("'%1' is not a STEP or IGES file: TolTurn reads files ending in "
+                                                ".step, .stp, .iges or .igs")
+                                     .arg(path));
         return;
     }
     if (const QString problem = checkFile(path, *format); !problem.isEmpty()) {
-        fail(result, problem);
+        fail(result.diagnostics, problem);
         return;
     }
-    const TopoDS_Shape shape = readShape(path, *format, options, result);
+    const TopoDS_Shape shape = readShape(path, *format, progress, result);
     if (shape.IsNull())
         return;
-    const std::vector<TopoDS_Shape> bodies = bodiesOf(shape);
-    if (bodies.empty()) {
-        fail(result, StepImport::tr("'%1' holds no solid, shell or face").arg(path));
+    auto bodies = std::make_shared<CadModel::Bodies>();
+    bodies->shapes = bodiesOf(shape);
+    if (bodies->shapes.empty()) {
+        fail(result.diagnostics, StepImport::tr("'%1' holds no solid, shell or face").arg(path));
         return;
     }
-    result.chosenSolid = chooseSolid(bodies, options, result);
+    std::vector<CadSolidInfo> solids;
+    for (const TopoDS_Shape &b : bodies->shapes)
+        solids.push_back(solidInfo(b));
+    result.model.emplace(path, *format, std::move(bodies), std::move(solids));
+}
+
+void extractInto(const CadModel &model, const CadImportOptions &options, CadImportResult &result)
+{
+    result.chosenSolid = chooseSolid(model, options, result);
     if (result.chosenSolid < 0)
         return;
-    const TopoDS_Shape body = cad::withMaterialInside(bodies[static_cast<std::size_t>(result.chosenSolid)]);
+    const TopoDS_Shape body =
+        cad::withMaterialInside(model.bodies().shapes[static_cast<std::size_t>(result.chosenSolid)]);
     const std::vector<cad::AxisCandidate> axes = cad::findAxes(body);
-    result.chosenAxis = chooseAxis(axes, options, path, result);
+    result.chosenAxis = chooseAxis(axes, options, model.path(), result);
     if (result.chosenAxis < 0)
         return;
-    extractProfile(path, *format, body, axes[static_cast<std::size_t>(result.chosenAxis)].axis, options, result);
+    traceProfile(model.path(), model.format(), body, axes[static_cast<std::size_t>(result.chosenAxis)].axis, options,
+                 result);
     if (result.profile)
-        report(options, result, 1.0);
+        report(options.progress, result.cancelled, 1.0);
+}
+
+// Runs `work` under the OpenCascade lock and the signal guard: OpenCascade's global state is
+// shared, and a malformed model can make its algorithms fault anywhere, not only in the reader.
+// A fault becomes an error on `diagnostics` that names the file.
+template <class Work>
+void guarded(const QString &path, Diagnostics &diagnostics, Work work)
+{
+    try {
+        cad::runGuarded(work);
+    } catch (const OSD_Signal &e) {
+        fail(diagnostics, StepImport::tr("'%1' could not be read: OpenCascade stopped on an invalid model (%2); check "
+                                         "the file in the CAD system that wrote it")
+                              .arg(path, QString::fromLocal8Bit(e.GetMessageString()).trimmed()));
+    } catch (const Standard_Failure &e) {
+        // A stack overflow in a translator arrives here as a bare "System Signal received"
+        // (occt_guard.cpp): the same advice as for the other faults.
+        fail(diagnostics, StepImport::tr("'%1' could not be read: OpenCascade failed on it (%2); check the file in "
+                                         "the CAD system that wrote it")
+                              .arg(path, QString::fromLocal8Bit(e.GetMessageString()).trimmed()));
+    } catch (const std::exception &e) {
+        fail(diagnostics, StepImport::tr("reading '%1' failed: %2").arg(path, QString::fromLocal8Bit(e.what())));
+    }
 }
 
 } // namespace
 
-CadImportResult importCadFile(const QString &path, const CadImportOptions &options)
+CadModel::CadModel(QString path, CadFormat format, std::shared_ptr<const Bodies> bodies,
+                   std::vector<CadSolidInfo> solids)
+    : m_path(std::move(path))
+    , m_format(format)
+    , m_bodies(std::move(bodies))
+    , m_solids(std::move(solids))
 {
-    CadImportResult result;
-    // The whole import under the lock and the signal guard: OpenCascade's global state is shared,
-    // and a malformed model can make its algorithms fault anywhere, not only in the reader.
+}
+
+CadReadResult readCadFile(const QString &path, const Progress &progress)
+{
+    CadReadResult result;
     const std::lock_guard lock(cad::occtMutex());
     // The unit of the transferred shapes, whatever the file's own unit (STEP: the
     // SI_UNIT/CONVERSION_BASED_UNIT of its context; IGES: the global section's unit flag); set
-    // before the readers are made, like the writer's (step_export.cpp), and outside runGuarded,
+    // before the readers are made, like the writer's (step_export.cpp), and outside the guard,
     // whose jump out of a fault would skip putting the process's own setting back.
     STEPControl_Controller::Init(); // defines the parameter
     IGESControl_Controller::Init();
     const cad::StaticSetting unit("xstep.cascade.unit", "MM");
     if (!unit.applied()) {
-        fail(result, StepImport::tr("'%1' was not read: OpenCascade would not transfer shapes in millimetres "
-                                    "(xstep.cascade.unit)")
-                         .arg(path));
+        fail(result.diagnostics, StepImport::tr("'%1' was not read: OpenCascade would not transfer shapes in "
+                                                "millimetres (xstep.cascade.unit)")
+                                     .arg(path));
         return result;
     }
-    try {
-        cad::runGuarded([&] { importInto(path, options, result); });
-    } catch (const OSD_Signal &e) {
-        fail(result, StepImport::tr("'%1' could not be read: OpenCascade stopped on an invalid model (%2); check the "
-                                    "file in the CAD system that wrote it")
-                         .arg(path, QString::fromLocal8Bit(e.GetMessageString()).trimmed()));
-    } catch (const Standard_Failure &e) {
-        // A stack overflow in a translator arrives here as a bare "System Signal received"
-        // (occt_guard.cpp): the same advice as for the other faults.
-        fail(result, StepImport::tr("'%1' could not be read: OpenCascade failed on it (%2); check the file in the CAD "
-                                    "system that wrote it")
-                         .arg(path, QString::fromLocal8Bit(e.GetMessageString()).trimmed()));
-    } catch (const std::exception &e) {
-        fail(result, StepImport::tr("reading '%1' failed: %2").arg(path, QString::fromLocal8Bit(e.what())));
-    }
+    guarded(path, result.diagnostics, [&] { readInto(path, progress, result); });
+    if (result.cancelled || hasErrors(result.diagnostics))
+        result.model.reset();
+    return result;
+}
+
+CadImportResult extractProfile(const CadModel &model, const CadImportOptions &options)
+{
+    CadImportResult result;
+    const std::lock_guard lock(cad::occtMutex());
+    guarded(model.path(), result.diagnostics, [&] { extractInto(model, options, result); });
     if (result.cancelled) {
         result.profile.reset();
         result.milledFeatures.clear();
     }
     return result;
+}
+
+CadImportResult importCadFile(const QString &path, const CadImportOptions &options)
+{
+    CadReadResult read = readCadFile(path, Progress(options.progress, 0.0, kTransferDone));
+    if (!read.model) {
+        CadImportResult result;
+        result.diagnostics = std::move(read.diagnostics);
+        result.cancelled = read.cancelled;
+        return result;
+    }
+    CadImportOptions extraction = options;
+    extraction.progress = Progress(options.progress, kTransferDone, 1.0);
+    return extractProfile(*read.model, extraction);
 }
 
 } // namespace tolturn

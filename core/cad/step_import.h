@@ -8,7 +8,7 @@
 
 #include <QString>
 
-#include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -56,6 +56,51 @@ struct CadImportResult {
     bool cancelled = false;
 };
 
+enum class CadFormat { Step, Iges };
+
+// A STEP or IGES file read and transferred to shapes once (EXAMPLES.md item 3, after Mayo's
+// readFile/transfer): its bodies, from which extractProfile builds a profile as often as the
+// planner picks another body, axis or end. Reading is the slow part; an extraction traces one body.
+// A copy shares the shapes.
+class CadModel {
+public:
+    struct Bodies; // OpenCascade's shapes (step_import.cpp)
+
+    CadModel(QString path, CadFormat format, std::shared_ptr<const Bodies> bodies, std::vector<CadSolidInfo> solids);
+
+    [[nodiscard]] const QString &path() const { return m_path; }
+
+    [[nodiscard]] CadFormat format() const { return m_format; }
+
+    // The bodies, in the file's order (CadImportOptions::solidIndex counts in it).
+    [[nodiscard]] const std::vector<CadSolidInfo> &solids() const { return m_solids; }
+
+    [[nodiscard]] const Bodies &bodies() const { return *m_bodies; }
+
+private:
+    QString m_path;
+    CadFormat m_format;
+    std::shared_ptr<const Bodies> m_bodies;
+    std::vector<CadSolidInfo> m_solids;
+};
+
+struct CadReadResult {
+    std::optional<CadModel> model; // absent after an error and on cancel
+    Diagnostics diagnostics;       // errors naming the file
+    bool cancelled = false;
+};
+
+// Reads a STEP (.step, .stp) or IGES (.iges, .igs) file and transfers it to shapes in millimetres.
+// `progress` is told 0 … 1; a stop cancels. Never throws. Safe on any thread (OpenCascade is
+// locked while it works).
+[[nodiscard]] CadReadResult readCadFile(const QString &path, const Progress &progress = {});
+
+// The half-section of the body, about the axis, with the end that `options` choose, as a TolTurn
+// profile, with the milled features and the notes of what was left out; `options.progress` is told
+// 0 … 1 of this extraction. The result's `solids` are the model's.
+[[nodiscard]] CadImportResult extractProfile(const CadModel &model, const CadImportOptions &options);
+
+// readCadFile, then extractProfile (the progress 80 % reading, 20 % extracting).
 // Reads a STEP (.step, .stp) or IGES (.iges, .igs) file, converting its units to millimetres,
 // finds the rotation axis and returns the half-section of the chosen body as a TolTurn profile.
 // Never throws: every failure is an error diagnostic naming the file.

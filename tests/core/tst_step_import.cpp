@@ -51,6 +51,7 @@
 #include <csignal>
 #include <gp_Ax2.hxx>
 #include <numbers>
+#include <set>
 #include <sys/stat.h>
 
 using namespace tolturn;
@@ -979,6 +980,40 @@ private Q_SLOTS:
         const CadImportResult none = importCadFile(path, options);
         QVERIFY(!none.profile);
         QVERIFY(hasErrors(none.diagnostics));
+    }
+
+    // Read once, extracted for every choice (EXAMPLES.md item 3): the file is gone after the read,
+    // and each body and end comes out as a fresh import of it gives it.
+    void readsOnceAndExtractsEachChoice()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("read-once.step"));
+        writeStep(assembly(), path);
+        const CadReadResult read = readCadFile(path);
+        QVERIFY(read.model && !hasErrors(read.diagnostics));
+        QCOMPARE(read.model->solids().size(), std::size_t{2});
+        QCOMPARE(read.model->format(), CadFormat::Step);
+        QVERIFY(QFile::remove(path));
+        std::set<bool> pins; // which solid was the pin, which the tube
+        for (int i = 0; i < 2; ++i) {
+            for (const bool flip : {false, true}) {
+                CadImportOptions options;
+                options.solidIndex = i;
+                options.flip = flip;
+                const CadImportResult r = extractProfile(*read.model, options);
+                QVERIFY2(r.profile && hasNoErrors(r), qPrintable(errorsOf(r)));
+                QCOMPARE(r.chosenSolid, i);
+                QCOMPARE(r.solids.size(), std::size_t{2});
+                const bool pin = sameContour(r.profile->outer, (flip ? flipped(expectedPin()) : expectedPin()).outer);
+                const PartProfile want = pin ? expectedPin() : expectedTube();
+                compareProfiles(*r.profile, flip ? flipped(want) : want);
+                if (!flip)
+                    pins.insert(pin);
+            }
+        }
+        QCOMPARE(pins.size(), std::size_t{2}); // both bodies, each once
+        CadImportOptions none;
+        none.solidIndex = 2;
+        QVERIFY(hasErrors(extractProfile(*read.model, none).diagnostics));
     }
 
     void exportThenImportRoundTrips_data()
