@@ -1652,6 +1652,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; flats and keyways become milled features, other features that are not turned (cross holes) are listed as warnings.</source>
         <translation>Ein STEP- (.step, .stp) oder IGES-Teil (.iges, .igs) in ein neues Projekt umwandeln: die Außen- und Innenkontur in mm, z = 0 am linken Ende; Abflachungen und Passfedernuten werden zu gefrästen Formelementen, andere nicht gedrehte Formelemente (Querbohrungen) werden als Warnungen aufgeführt.</translation>
     </message>
+    <message>
+        <source>a choice is three whole numbers &quot;SOLID AXIS FLIP&quot; (SOLID and AXIS from 0, -1 for the default; FLIP 0 or 1), not &apos;%1&apos;</source>
+        <translation>eine Wahl besteht aus drei ganzen Zahlen &quot;SOLID AXIS FLIP&quot; (SOLID und AXIS ab 0, -1 für die Vorgabe; FLIP 0 oder 1), nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>With --json: read the file once, print each result as one line, then extract again for each line &quot;SOLID AXIS FLIP&quot; on standard input, until it ends.</source>
+        <translation>Mit --json: die Datei einmal lesen, jedes Ergebnis als eine Zeile ausgeben und dann für jede Zeile &quot;SOLID AXIS FLIP&quot; der Standardeingabe erneut extrahieren, bis diese endet.</translation>
+    </message>
+    <message>
+        <source>--choose needs --json and a project file (-o PROJECT)</source>
+        <translation>--choose braucht --json und eine Projektdatei (-o PROJECT)</translation>
+    </message>
 </context>
 <context>
     <name>InputBounds</name>
@@ -5809,6 +5821,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Exported the part as a revolved solid to %1</source>
         <translation>Das Teil wurde als Rotationskörper nach %1 exportiert</translation>
+    </message>
+    <message>
+        <source>Extracting the part from %1…</source>
+        <translation>Teil wird aus %1 extrahiert …</translation>
     </message>
 </context>
 <context>

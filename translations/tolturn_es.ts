@@ -1652,6 +1652,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Turn a STEP (.step, .stp) or IGES (.iges, .igs) part into a new project: the outer and inner contour in mm, z = 0 at the left end; flats and keyways become milled features, other features that are not turned (cross holes) are listed as warnings.</source>
         <translation>Convertir una pieza STEP (.step, .stp) o IGES (.iges, .igs) en un proyecto nuevo: el contorno exterior e interior en mm, z = 0 en el extremo izquierdo; las caras planas y los chaveteros se convierten en elementos fresados, y los demás elementos que no se tornean (agujeros transversales) se listan como avisos.</translation>
     </message>
+    <message>
+        <source>a choice is three whole numbers &quot;SOLID AXIS FLIP&quot; (SOLID and AXIS from 0, -1 for the default; FLIP 0 or 1), not &apos;%1&apos;</source>
+        <translation>una elección son tres números enteros &quot;SOLID AXIS FLIP&quot; (SOLID y AXIS desde 0, -1 para el valor por defecto; FLIP 0 o 1), no &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>With --json: read the file once, print each result as one line, then extract again for each line &quot;SOLID AXIS FLIP&quot; on standard input, until it ends.</source>
+        <translation>Con --json: leer el archivo una vez, escribir cada resultado en una línea y extraer de nuevo para cada línea &quot;SOLID AXIS FLIP&quot; de la entrada estándar, hasta que termine.</translation>
+    </message>
+    <message>
+        <source>--choose needs --json and a project file (-o PROJECT)</source>
+        <translation>--choose necesita --json y un archivo de proyecto (-o PROJECT)</translation>
+    </message>
 </context>
 <context>
     <name>InputBounds</name>
@@ -5809,6 +5821,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Exported the part as a revolved solid to %1</source>
         <translation>Se ha exportado la pieza como cuerpo de revolución a %1</translation>
+    </message>
+    <message>
+        <source>Extracting the part from %1…</source>
+        <translation>Extrayendo la pieza de %1…</translation>
     </message>
 </context>
 <context>

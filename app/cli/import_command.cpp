@@ -19,6 +19,8 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <optional>
+#include <utility>
 
 namespace tolturn {
 
@@ -92,12 +94,97 @@ QString writeStep(const PartProfile &part, const QString &output, QTextStream &o
     return writeOutput(output, file.readAll(), out);
 }
 
+// The progress on standard error as lines "progress F", a line for each whole percent, flushed for
+// the program that reads them.
+Progress progressLines(QTextStream &err)
+{
+    return Progress([&err, last = -1](double fraction) mutable {
+        if (const int percent = static_cast<int>(100.0 * fraction); percent != last) {
+            last = percent;
+            err << "progress " << QString::number(percent / 100.0, 'f', 2) << Qt::endl;
+        }
+        return true;
+    });
+}
+
+// One choice of --choose: "SOLID AXIS FLIP", three whole numbers (SOLID and AXIS from 0, or -1 for
+// the default; FLIP 0 or 1).
+std::optional<CadImportOptions> parseChoice(const QString &line)
+{
+    const QStringList parts = line.simplified().split(QLatin1Char(' '));
+    if (parts.size() != 3)
+        return std::nullopt;
+    bool ok[3] = {false, false, false};
+    CadImportOptions options;
+    options.solidIndex = parts.at(0).toInt(&ok[0]);
+    options.axisIndex = parts.at(1).toInt(&ok[1]);
+    const int flip = parts.at(2).toInt(&ok[2]);
+    if (!ok[0] || !ok[1] || !ok[2] || options.solidIndex < -1 || options.axisIndex < -1 || (flip != 0 && flip != 1))
+        return std::nullopt;
+    options.flip = flip == 1;
+    return options;
+}
+
+struct ImportTarget {
+    QString file;
+    QString output;
+    QString material;
+    QString machine;
+};
+
+// Writes the project of one extraction and prints its result as one line of JSON.
+void printChoiceResult(const ImportTarget &t, const CadImportResult &r, QTextStream &out, QTextStream &err)
+{
+    const QString problem = writeImported(r, t.output, t.material, t.machine, out);
+    out << QJsonDocument(importJson(t.file, t.output, r, problem.isEmpty())).toJson(QJsonDocument::Compact) << '\n';
+    out.flush();
+    if (!problem.isEmpty())
+        err << programName() << " import: " << problem << Qt::endl;
+}
+
+// --choose: the file is read once; the first result is extracted with `options`, then each line
+// "SOLID AXIS FLIP" on standard input is extracted from what was read, until the input ends. The
+// desktop program reads files this way, so that another body, axis or end is not parsed anew.
+int runChoices(const ImportTarget &t, CadImportOptions options, bool progress, QTextStream &out, QTextStream &err)
+{
+    const Progress whole = progress ? progressLines(err) : Progress();
+    CadReadResult read = readCadFile(t.file, Progress(whole, 0.0, 0.8));
+    if (!read.model) {
+        CadImportResult failed;
+        failed.diagnostics = std::move(read.diagnostics);
+        failed.cancelled = read.cancelled;
+        printChoiceResult(t, failed, out, err);
+        return kExitProblems;
+    }
+    options.progress = Progress(whole, 0.8, 1.0);
+    printChoiceResult(t, extractProfile(*read.model, options), out, err);
+    QTextStream in(stdin);
+    QString line;
+    while (in.readLineInto(&line)) {
+        std::optional<CadImportOptions> choice = parseChoice(line);
+        if (!choice) {
+            err << programName() << " import: "
+                << ImportCommand::tr(
+                       "a choice is three whole numbers \"SOLID AXIS FLIP\" (SOLID and AXIS from 0, -1 for the "
+                       "default; FLIP 0 or 1), not '%1'")
+                       .arg(line)
+                << Qt::endl;
+            return kExitUsage;
+        }
+        if (progress)
+            choice->progress = progressLines(err);
+        printChoiceResult(t, extractProfile(*read.model, *choice), out, err);
+    }
+    return kExitOk;
+}
+
 } // namespace
 
 QString importSynopsis()
 {
     return QStringLiteral(
-        "import [--json] [--flip] [--solid N] [--axis N] [--material ID] [--machine ID] [--progress] -o PROJECT FILE");
+        "import [--json] [--flip] [--solid N] [--axis N] [--material ID] [--machine ID] [--progress] [--choose] -o "
+        "PROJECT FILE");
 }
 
 QString importSummary()
@@ -134,7 +221,11 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption progress(
         QStringLiteral("progress"),
         ImportCommand::tr("Report the progress on standard error, as lines \"progress F\" with F from 0 to 1."));
-    parser.addOptions({json, output, flip, solid, axis, material, machine, progress});
+    const QCommandLineOption choose(
+        QStringLiteral("choose"),
+        ImportCommand::tr("With --json: read the file once, print each result as one line, then extract again for "
+                          "each line \"SOLID AXIS FLIP\" on standard input, until it ends."));
+    parser.addOptions({json, output, flip, solid, axis, material, machine, progress, choose});
     parser.addPositionalArgument(QStringLiteral("file"), ImportCommand::tr("The STEP or IGES file."),
                                  QStringLiteral("FILE"));
     if (const int stop =
@@ -160,15 +251,17 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
             << '\n';
         return kExitUsage;
     }
+    if (parser.isSet(choose)) {
+        if (!parser.isSet(json) || toStandardOutput) {
+            err << programName()
+                << " import: " << ImportCommand::tr("--choose needs --json and a project file (-o PROJECT)") << '\n';
+            return kExitUsage;
+        }
+        return runChoices({file, parser.value(output), parser.value(material), parser.value(machine)}, options,
+                          parser.isSet(progress), out, err);
+    }
     if (parser.isSet(progress))
-        options.progress = Progress([&err, last = -1](double fraction) mutable {
-            // Whole percents: a line for each change, flushed for the program that reads them.
-            if (const int percent = static_cast<int>(100.0 * fraction); percent != last) {
-                last = percent;
-                err << "progress " << QString::number(percent / 100.0, 'f', 2) << Qt::endl;
-            }
-            return true;
-        });
+        options.progress = progressLines(err);
     const CadImportResult r = importCadFile(file, options);
     const QString problem = writeImported(r, parser.value(output), parser.value(material), parser.value(machine), out);
     if (parser.isSet(json)) {

@@ -7,6 +7,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QScopeGuard>
 
 #include <utility>
 
@@ -68,15 +69,25 @@ void CadFileController::cancelReading()
 void CadFileController::startReading(const CadImportOptions &options)
 {
     m_cancelRequested = false;
-    m_progress = m_prompts.startProgress(tr("Reading %1…").arg(QFileInfo(m_path).fileName()));
+    showProgress(tr("Reading %1…").arg(QFileInfo(m_path).fileName()));
+    m_reader.start(m_path, options);
+}
+
+void CadFileController::showProgress(const QString &label)
+{
+    m_progress = m_prompts.startProgress(label);
     if (m_progress)
         m_progress->onCancel([this] { cancelReading(); }); // the child process ends at once
-    m_reader.start(m_path, options);
 }
 
 void CadFileController::readFinished()
 {
     m_progress.reset();
+    // Unless another body, axis or end is asked of it below, the reader is done with the file.
+    const auto closeReader = qScopeGuard([this] {
+        if (!m_reader.isRunning())
+            m_reader.close();
+    });
     const CadImportResult result = m_reader.result();
     const QString name = QFileInfo(m_path).fileName();
     if (result.cancelled || m_cancelRequested) {
@@ -104,14 +115,16 @@ void CadFileController::readFinished()
         openImported(result);
         return;
     }
-    // Another body, axis or end: read again with the choice (the file is parsed anew; OpenCascade
-    // keeps no state between reads).
+    // Another body, axis or end: extracted from what the reader has read (the file is not parsed
+    // again).
     m_confirmed = true;
     CadImportOptions options;
     options.solidIndex = choice->solid;
     options.axisIndex = choice->axis;
     options.flip = choice->flip;
-    startReading(options);
+    m_cancelRequested = false;
+    showProgress(tr("Extracting the part from %1…").arg(name));
+    m_reader.choose(options);
 }
 
 void CadFileController::openImported(const CadImportResult &result)

@@ -67,6 +67,7 @@ Q_SIGNALS:
 
 private:
     void startReading(const CadImportOptions &options);
+    void showProgress(const QString &label);
     void cancelReading();
     void readFinished();
     void openImported(const CadImportResult &result);

@@ -34,7 +34,7 @@ CadReaderProcess::~CadReaderProcess()
 {
     if (m_process) {
         m_process->disconnect(this);
-        if (isRunning()) {
+        if (childAlive()) {
             m_process->kill();
             m_process->waitForFinished(5000);
         }
@@ -58,6 +58,11 @@ void CadReaderProcess::setDefaultProgram(const QString &program)
 
 bool CadReaderProcess::isRunning() const
 {
+    return m_busy;
+}
+
+bool CadReaderProcess::childAlive() const
+{
     return m_process && m_process->state() != QProcess::NotRunning;
 }
 
@@ -77,9 +82,11 @@ void CadReaderProcess::start(const QString &path, const CadImportOptions &option
 {
     m_path = path;
     m_result = {};
+    m_busy = true;
     m_cancelled = false;
     m_stderr.clear();
     m_pending.clear();
+    m_results.clear();
     m_folder = std::make_unique<QTemporaryDir>();
     const QString program = defaultProgram();
     if (!QFileInfo(program).isExecutable()) {
@@ -92,8 +99,9 @@ void CadReaderProcess::start(const QString &path, const CadImportOptions &option
         failed(tr("No temporary folder for the import: %1").arg(m_folder->errorString()));
         return;
     }
-    QStringList args{QStringLiteral("import"), QStringLiteral("--json"), QStringLiteral("--progress"),
-                     QStringLiteral("-o"), m_folder->filePath(QStringLiteral("imported.tolturn"))};
+    QStringList args{QStringLiteral("import"),     QStringLiteral("--json"),
+                     QStringLiteral("--progress"), QStringLiteral("--choose"),
+                     QStringLiteral("-o"),         m_folder->filePath(QStringLiteral("imported.tolturn"))};
     if (options.solidIndex >= 0)
         args << QStringLiteral("--solid") << QString::number(options.solidIndex);
     if (options.axisIndex >= 0)
@@ -106,9 +114,11 @@ void CadReaderProcess::start(const QString &path, const CadImportOptions &option
     retireProcess();
     m_process = std::make_unique<QProcess>();
     connect(m_process.get(), &QProcess::readyReadStandardError, this, &CadReaderProcess::readProgress);
+    connect(m_process.get(), &QProcess::readyReadStandardOutput, this, &CadReaderProcess::readResults);
     connect(m_process.get(), &QProcess::finished, this, &CadReaderProcess::processFinished);
     connect(m_process.get(), &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
         if (error == QProcess::FailedToStart && m_cancelled) {
+            m_busy = false;
             m_result = {};
             m_result.cancelled = true;
             QMetaObject::invokeMethod(this, &CadReaderProcess::finished, Qt::QueuedConnection);
@@ -119,9 +129,32 @@ void CadReaderProcess::start(const QString &path, const CadImportOptions &option
     m_process->start(program, args);
 }
 
+void CadReaderProcess::choose(const CadImportOptions &options)
+{
+    if (m_busy)
+        return;
+    if (!childAlive()) { // it ended (or was never asked to wait): read the file again
+        start(m_path, options);
+        return;
+    }
+    m_result = {};
+    m_busy = true;
+    m_cancelled = false;
+    m_stderr.clear();
+    const QByteArray line = QByteArray::number(options.solidIndex) + ' ' + QByteArray::number(options.axisIndex) + ' ' +
+                            (options.flip ? "1" : "0") + '\n';
+    m_process->write(line);
+}
+
+void CadReaderProcess::close()
+{
+    if (childAlive() && !m_busy)
+        m_process->closeWriteChannel(); // the child ends at the end of its input
+}
+
 void CadReaderProcess::cancel()
 {
-    if (!isRunning())
+    if (!m_busy || !childAlive())
         return;
     m_cancelled = true;
     m_process->kill(); // finished() follows
@@ -152,6 +185,7 @@ QString CadReaderProcess::stderrText() const
 
 void CadReaderProcess::failed(const QString &message)
 {
+    m_busy = false;
     m_result = {};
     m_result.diagnostics.push_back(makeError(QStringLiteral("file"), message));
     // Always after start() has returned, as for a child that runs.
@@ -173,11 +207,53 @@ void CadReaderProcess::takeWrittenPart(bool written)
         m_result.diagnostics.insert(m_result.diagnostics.end(), project.diagnostics.begin(), project.diagnostics.end());
 }
 
+void CadReaderProcess::readResults()
+{
+    m_results += m_process->readAllStandardOutput();
+    if (m_results.size() > kMaxOutputBytes) { // not the reader's output
+        m_process->kill();
+        return;
+    }
+    qsizetype end = 0;
+    while (m_busy && (end = m_results.indexOf('\n')) >= 0) {
+        const QByteArray line = m_results.left(end);
+        m_results.remove(0, end + 1);
+        takeResult(line, 0);
+    }
+}
+
+void CadReaderProcess::takeResult(const QByteArray &json, int exitCode)
+{
+    QJsonParseError error{};
+    const QJsonDocument document = QJsonDocument::fromJson(json, &error);
+    QString problem;
+    std::optional<CadImportResult> read;
+    if (error.error == QJsonParseError::NoError && document.isObject())
+        read = cadImportResultFromJson(document.object(), &problem);
+    if (!read) {
+        failed(tr("The CAD reader gave no result for %1 (exit code %2): %3 %4")
+                   .arg(QFileInfo(m_path).fileName())
+                   .arg(exitCode)
+                   .arg(problem.isEmpty() ? error.errorString() : problem, stderrText()));
+        return;
+    }
+    m_busy = false;
+    m_result = std::move(*read);
+    takeWrittenPart(document.object().value(QStringLiteral("written")).toBool());
+    Q_EMIT finished();
+}
+
 void CadReaderProcess::processFinished(int exitCode, QProcess::ExitStatus status)
 {
     readProgress();
+    if (!m_busy) // it ended after its last result: at the end of its input, or on its own
+        return;
+    readResults();
+    if (!m_busy)
+        return;
     const QString name = QFileInfo(m_path).fileName();
     if (m_cancelled) {
+        m_busy = false;
         m_result = {};
         m_result.cancelled = true;
         Q_EMIT finished();
@@ -189,23 +265,7 @@ void CadReaderProcess::processFinished(int exitCode, QProcess::ExitStatus status
                    .arg(name, stderrText().isEmpty() ? QString() : QStringLiteral("\n") + stderrText()));
         return;
     }
-    QJsonParseError error{};
-    const QByteArray out = m_process->read(kMaxOutputBytes);
-    const QJsonDocument json = QJsonDocument::fromJson(out, &error);
-    QString problem;
-    std::optional<CadImportResult> read;
-    if (error.error == QJsonParseError::NoError && json.isObject())
-        read = cadImportResultFromJson(json.object(), &problem);
-    if (!read) {
-        failed(tr("The CAD reader gave no result for %1 (exit code %2): %3 %4")
-                   .arg(name)
-                   .arg(exitCode)
-                   .arg(problem.isEmpty() ? error.errorString() : problem, stderrText()));
-        return;
-    }
-    m_result = std::move(*read);
-    takeWrittenPart(json.object().value(QStringLiteral("written")).toBool());
-    Q_EMIT finished();
+    takeResult(m_results, exitCode); // a reader that wrote its result without an end of line
 }
 
 } // namespace tolturn

@@ -11,11 +11,13 @@
 
 namespace tolturn {
 
-// Reads a STEP or IGES file in a child process: `tolturn-cli import --json --progress`, the part
-// written to a temporary project file and read back. OpenCascade's translators run on data they
+// Reads a STEP or IGES file in a child process: `tolturn-cli import --json --progress --choose`, the
+// part written to a temporary project file and read back. OpenCascade's translators run on data they
 // trust; whatever a file makes them do (a fault the signal guard cannot turn into an error, a
 // loop, memory without end), it happens in the child, and the window, the document and the
-// unsaved work go on. Cancel ends the child at once, in any phase of the import.
+// unsaved work go on. Cancel ends the child at once, in any phase of the import. The child keeps
+// what it read until close(): choose() extracts another body, axis or end without parsing the file
+// again (EXAMPLES.md item 3).
 class CadReaderProcess : public QObject {
     Q_OBJECT
 public:
@@ -29,7 +31,13 @@ public:
 
     // Starts reading `path` with `options` (their progress callback is not used: see progress()).
     void start(const QString &path, const CadImportOptions &options);
+    // After finished(): the body, axis and end of `options` from the file already read (read
+    // again when the child has ended). finished() follows.
+    void choose(const CadImportOptions &options);
+    // No more choices: the child ends.
+    void close();
     void cancel();
+    // From start() or choose() until finished().
     [[nodiscard]] bool isRunning() const;
 
     // The result once finished() was emitted.
@@ -41,7 +49,11 @@ Q_SIGNALS:
 
 private:
     void retireProcess();
+    [[nodiscard]] bool childAlive() const;
     void readProgress();
+    // Each line of standard output is the result of a read or a choice.
+    void readResults();
+    void takeResult(const QByteArray &json, int exitCode);
     void processFinished(int exitCode, QProcess::ExitStatus status);
     void failed(const QString &message);
     // The part from the project file the child wrote, or why there is none.
@@ -53,6 +65,8 @@ private:
     QString m_path;
     QByteArray m_stderr;  // every line but the progress ones, for the message when the child fails
     QByteArray m_pending; // an incomplete line of standard error
+    QByteArray m_results; // standard output not yet taken
+    bool m_busy = false;  // a read or a choice runs
     bool m_cancelled = false;
     CadImportResult m_result;
 };

@@ -10,6 +10,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -103,6 +104,40 @@ private Q_SLOTS:
         QVERIFY(!got.inner.empty());
         QCOMPARE(got.inner.segments.front().from.r_mm, 22.5);
         QVERIFY(runCli({QStringLiteral("check"), project}).exitCode == 0);
+    }
+
+    // --choose: a result line for the first read, then one per choice on standard input, each from
+    // what was read (the file is deleted after the first result); a malformed choice ends it.
+    void chooseExtractsEachChoiceFromOneRead()
+    {
+        const QString step = m_dir.filePath(QStringLiteral("choose.step"));
+        const QString project = m_dir.filePath(QStringLiteral("choose.tolturn"));
+        const PartProfile sleeve = readPart(example("hollow-sleeve-tailstock.tolturn"));
+        QVERIFY(exportProfileToStep(sleeve, step).ok);
+        QProcess cli;
+        cli.start(QStringLiteral(TOLTURN_CLI_PATH), {QStringLiteral("import"), QStringLiteral("--json"),
+                                                     QStringLiteral("--choose"), QStringLiteral("-o"), project, step});
+        QVERIFY(cli.waitForStarted());
+        const auto nextResult = [&cli] {
+            while (!cli.canReadLine() && cli.waitForReadyRead(60000)) {
+            }
+            return QJsonDocument::fromJson(cli.readLine()).object();
+        };
+        QCOMPARE(nextResult().value(QStringLiteral("written")).toBool(), true);
+        QVERIFY(sameContour(readPart(project).inner, sleeve.inner));
+        QVERIFY(QFile::remove(step));
+        cli.write("-1 -1 1\n");
+        QCOMPARE(nextResult().value(QStringLiteral("written")).toBool(), true);
+        // Flipped: the counterbore (Ø45, at the right end in the example) is now at the left.
+        QCOMPARE(readPart(project).inner.segments.front().from.r_mm, 22.5);
+        cli.write("0 3 0\n"); // the part has one axis
+        const QJsonObject none = nextResult();
+        QCOMPARE(none.value(QStringLiteral("written")).toBool(), false);
+        QVERIFY(QJsonDocument(none).toJson().contains("there is no axis 3"));
+        cli.write("0 0 2\n");
+        QVERIFY(cli.waitForFinished(60000));
+        QCOMPARE(cli.exitCode(), 2);
+        QVERIFY(cli.readAllStandardError().contains("SOLID AXIS FLIP"));
     }
 
     // "-o -": the STEP file and the project on standard output, byte for byte what a file would

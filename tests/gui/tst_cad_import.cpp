@@ -48,6 +48,7 @@ public:
     std::optional<CadImportChoice> choice = CadImportChoice{};
     QString error;
     int confirmations = 0;
+    QString removeOnConfirm;
 
     SaveChoice askToSaveChanges(const QString &) override { return SaveChoice::Discard; }
 
@@ -92,6 +93,8 @@ public:
     std::optional<CadImportChoice> confirmImport(const QString &, const CadImportResult &read) override
     {
         ++confirmations;
+        if (!removeOnConfirm.isEmpty()) // what follows must not need the file again
+            QFile::remove(removeOnConfirm);
         if (choice) {
             choice->solid = read.chosenSolid;
             choice->axis = read.chosenAxis;
@@ -192,7 +195,8 @@ private Q_SLOTS:
     }
 
     // Chuck at the other end: the Ø56 clamping diameter (z 0 … 35 in the model) ends up at
-    // z 115 … 150, the Ø30 journal at the left.
+    // z 115 … 150, the Ø30 journal at the left. The other end comes from what was read: the file is
+    // gone once the planner has chosen.
     void flipPutsTheOtherEndInTheChuck()
     {
         QTemporaryDir dir;
@@ -200,6 +204,7 @@ private Q_SLOTS:
         QVERIFY(exportProfileToStep(stepped(), step).ok);
         Fixture f;
         f.prompts.choice = CadImportChoice{0, 0, true};
+        f.prompts.removeOnConfirm = step;
         QVERIFY(runImport(f, step));
         const PartProfile &got = f.document.project().part;
         bool clampingDiameterAtRight = false;
