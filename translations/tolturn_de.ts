@@ -4592,10 +4592,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Standzeit: %1</translation>
     </message>
     <message>
-        <source>%1 (set-up %2 of %3, the %4 end held): </source>
-        <translation>%1 (Aufspannung %2 von %3, Ende %4 gespannt): </translation>
-    </message>
-    <message>
         <source>z from the held (right) end [mm]</source>
         <translation>z vom gespannten (rechten) Ende [mm]</translation>
     </message>
@@ -4705,6 +4701,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>a cylinder, cone or face about the part axis</source>
         <translation>ein Zylinder, Kegel oder eine Planfläche um die Teileachse</translation>
+    </message>
+</context>
+<context>
+    <name>SetupPrediction</name>
+    <message>
+        <source>%1 (set-up %2 of %3, the %4 end held): </source>
+        <translation>%1 (Aufspannung %2 von %3, Ende %4 gespannt): </translation>
     </message>
 </context>
 <context>
@@ -6850,13 +6853,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The user guide, at the page of the dock you are in (F1)</source>
         <translation>Das Benutzerhandbuch, auf der Seite des Fensterbereichs, in dem Sie arbeiten (F1)</translation>
     </message>
-    <message numerus="yes">
-        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
-        <translation>
-            <numerusform>Nicht berechnet: Das Projekt hat %n Problem, aufgeführt unter Probleme. Doppelklicken Sie darauf, um zu seinem Wert zu gelangen.</numerusform>
-            <numerusform>Nicht berechnet: Das Projekt hat %n Probleme, aufgeführt unter Probleme. Doppelklicken Sie auf eines, um zu seinem Wert zu gelangen.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Problems</source>
         <translation>Probleme</translation>
@@ -6868,10 +6864,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The set-up shown: its part as held, its deflection, verdicts, plan and program</source>
         <translation>Die angezeigte Aufspannung: ihr Teil wie gespannt, ihre Verformung, Bewertungen, Plan und Programm</translation>
-    </message>
-    <message>
-        <source>%1 (set-up %2 of %3, the %4 end held): </source>
-        <translation>%1 (Aufspannung %2 von %3, Ende %4 gespannt): </translation>
     </message>
     <message>
         <source>%1: %2, %3 end held</source>
@@ -8468,6 +8460,16 @@ Ein Beispielteil öffnen: Datei &gt; Beispiel öffnen
 Ein Drehteil aus STEP oder IGES einlesen: Datei &gt; STEP/IGES importieren… (Strg+I)
 Ein neues Teil zeichnen: Datei &gt; Neu (Strg+N), dann seine Formelemente bearbeiten
 Ein Projekt öffnen: Datei &gt; Öffnen… (Strg+O)</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::ProjectAnalysis</name>
+    <message numerus="yes">
+        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
+        <translation>
+            <numerusform>Nicht berechnet: Das Projekt hat %n Problem, aufgeführt unter Probleme. Doppelklicken Sie darauf, um zu seinem Wert zu gelangen.</numerusform>
+            <numerusform>Nicht berechnet: Das Projekt hat %n Probleme, aufgeführt unter Probleme. Doppelklicken Sie auf eines, um zu seinem Wert zu gelangen.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -124,16 +124,6 @@
     </message>
 </context>
 <context>
-    <name>tolturn::MainWindow</name>
-    <message numerus="yes">
-        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
-        <translation>
-            <numerusform>Not computed: the project has %n problem, listed under Problems. Double-click it to go to its value.</numerusform>
-            <numerusform>Not computed: the project has %n problems, listed under Problems. Double-click one to go to its value.</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>tolturn::MeasurementEntryDialog</name>
     <message numerus="yes">
         <source>%n point(s) read from %1.</source>
@@ -195,6 +185,16 @@
         <translation>
             <numerusform>%n problem stops the computation. Double-click it to go to its value; the results return once it is repaired.</numerusform>
             <numerusform>%n problems stop the computation. Double-click one to go to its value; the results return once all are repaired.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::ProjectAnalysis</name>
+    <message numerus="yes">
+        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
+        <translation>
+            <numerusform>Not computed: the project has %n problem, listed under Problems. Double-click it to go to its value.</numerusform>
+            <numerusform>Not computed: the project has %n problems, listed under Problems. Double-click one to go to its value.</numerusform>
         </translation>
     </message>
 </context>

@@ -4592,10 +4592,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Vida de la herramienta: %1</translation>
     </message>
     <message>
-        <source>%1 (set-up %2 of %3, the %4 end held): </source>
-        <translation>%1 (montaje %2 de %3, extremo %4 sujetado): </translation>
-    </message>
-    <message>
         <source>z from the held (right) end [mm]</source>
         <translation>z desde el extremo sujetado (derecho) [mm]</translation>
     </message>
@@ -4705,6 +4701,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>a cylinder, cone or face about the part axis</source>
         <translation>un cilindro, cono o cara alrededor del eje de la pieza</translation>
+    </message>
+</context>
+<context>
+    <name>SetupPrediction</name>
+    <message>
+        <source>%1 (set-up %2 of %3, the %4 end held): </source>
+        <translation>%1 (montaje %2 de %3, extremo %4 sujetado): </translation>
     </message>
 </context>
 <context>
@@ -6850,13 +6853,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The user guide, at the page of the dock you are in (F1)</source>
         <translation>La guía del usuario, en la página del panel en el que está (F1)</translation>
     </message>
-    <message numerus="yes">
-        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
-        <translation>
-            <numerusform>Sin calcular: el proyecto tiene %n problema, listado en Problemas. Haga doble clic en él para ir a su valor.</numerusform>
-            <numerusform>Sin calcular: el proyecto tiene %n problemas, listados en Problemas. Haga doble clic en uno para ir a su valor.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Problems</source>
         <translation>Problemas</translation>
@@ -6868,10 +6864,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The set-up shown: its part as held, its deflection, verdicts, plan and program</source>
         <translation>El montaje mostrado: su pieza tal como está sujetada, su flexión, veredictos, plan y programa</translation>
-    </message>
-    <message>
-        <source>%1 (set-up %2 of %3, the %4 end held): </source>
-        <translation>%1 (montaje %2 de %3, extremo %4 sujetado): </translation>
     </message>
     <message>
         <source>%1: %2, %3 end held</source>
@@ -8468,6 +8460,16 @@ Abrir una pieza de ejemplo: Archivo &gt; Abrir ejemplo
 Importar una pieza torneada de STEP o IGES: Archivo &gt; Importar STEP/IGES… (Ctrl+I)
 Dibujar una pieza nueva: Archivo &gt; Nuevo (Ctrl+N) y editar sus elementos
 Abrir un proyecto: Archivo &gt; Abrir… (Ctrl+O)</translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::ProjectAnalysis</name>
+    <message numerus="yes">
+        <source>Not computed: the project has %n problem(s), listed under Problems. Double-click one to go to its value.</source>
+        <translation>
+            <numerusform>Sin calcular: el proyecto tiene %n problema, listado en Problemas. Haga doble clic en él para ir a su valor.</numerusform>
+            <numerusform>Sin calcular: el proyecto tiene %n problemas, listados en Problemas. Haga doble clic en uno para ir a su valor.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -15,6 +15,7 @@
 #include "widgets/common/project_fields.h"
 #include "widgets/dialogs/about_dialog.h"
 #include "widgets/dialogs/help_browser.h"
+#include "widgets/document/project_analysis.h"
 #include "widgets/document/project_document.h"
 #include "widgets/fe/solid_check_dialog.h"
 #include "widgets/measurements/measurements_panel.h"
@@ -70,6 +71,7 @@ QIcon actionIcon(const char *name)
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
     , m_document(new ProjectDocument(this))
+    , m_analysis(new ProjectAnalysis(*m_document, this))
     , m_recentFiles(new RecentFiles(this))
     , m_files(new FileController(*m_document, *m_recentFiles, *this, this))
     , m_cad(new CadFileController(*m_document, *m_files, *this, this))
@@ -109,6 +111,10 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_cad, &CadFileController::importFinished, this, &MainWindow::showImportMessages);
     connect(m_files, &FileController::openedWithProblems, m_problems, &ProblemNavigator::showFirst);
     connect(m_document, &ProjectDocument::projectChanged, this, &MainWindow::showProject);
+    connect(m_analysis, &ProjectAnalysis::predicted, m_tolerances, &TolerancePanel::showPrediction);
+    connect(m_analysis, &ProjectAnalysis::notPredicted, m_tolerances, &TolerancePanel::showNotPredicted);
+    connect(m_analysis, &ProjectAnalysis::predicted, m_deflection, &DeflectionPanel::showPrediction);
+    connect(m_analysis, &ProjectAnalysis::notPredicted, m_deflection, &DeflectionPanel::clear);
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_recentFiles, &RecentFiles::changed, this, &MainWindow::rebuildRecentMenu);
@@ -510,8 +516,7 @@ void MainWindow::showProject()
         m_measurements->setProject(nullptr);
         m_planning->setLearnedModel(nullptr);
         m_profileView->clearProfile();
-        m_deflection->clear();
-        m_tolerances->showVerdicts({});
+        m_analysis->recompute(); // the results' panels are cleared
         m_summary->clear();
         updateTitle();
         return;
@@ -529,22 +534,9 @@ void MainWindow::showProject()
     m_measurements->setProject(&m_document->project());
     const std::shared_ptr<const LoadedModel> learned = m_measurements->activeModel();
     m_planning->setLearnedModel(learned);
-    if (learned) {
-        showLearnedPrediction(project, *learned);
-    } else {
-        RangeEvaluation range = evaluateOverStiffnessRange(project, DataLibrary::builtIn());
-        addReclampingNotes(project, range, DataLibrary::builtIn());
-        QString assumption = machineAssumptionText(range, DataLibrary::builtIn());
-        if (project.scope)
-            assumption.prepend(tr("%1 (set-up %2 of %3, the %4 end held): ")
-                                   .arg(project.scope->name)
-                                   .arg(project.scope->index + 1)
-                                   .arg(project.scope->count)
-                                   .arg(displayName(project.clamping.heldEnd)));
-        m_tolerances->showVerdicts(std::move(range.tolerances), assumption, range.someSupportRigid);
-        m_deflection->showResult(project, std::move(range.compliant), std::move(range.stiff));
-    }
-    m_planning->projectChanged();
+    m_analysis->setLearnedModel(learned);
+    m_analysis->recompute();
+    m_planning->showProjectOutputs();
     updateSummary();
     updateTitle();
 }
@@ -573,17 +565,9 @@ void MainWindow::updateOperationChoice()
     m_operationBox->setCurrentIndex(m_operation);
     m_operationAction->setVisible(count > 1);
     m_planning->setOperation(m_operation);
+    m_analysis->setOperation(m_operation);
     m_setup->setOperation(m_operation);
     m_files->setOperation(m_operation);
-}
-
-void MainWindow::showLearnedPrediction(const Project &project, const LoadedModel &model)
-{
-    DeviationResult physics;
-    RangeEvaluation learned = evaluateWithLearned(project, DataLibrary::builtIn(), model, &physics);
-    m_tolerances->showVerdicts(std::move(learned.tolerances), learnedAssumptionText(model), false);
-    LearnedCurves curves{learnedAtStations(project, physics, model.model), model.uncertainty_mm(), model.provenance()};
-    m_deflection->showResult(project, std::move(physics), std::nullopt, std::move(curves));
 }
 
 void MainWindow::showProjectWithProblems()
@@ -594,12 +578,9 @@ void MainWindow::showProjectWithProblems()
         return std::any_of(problems.begin(), problems.end(),
                            [&field](const Diagnostic &d) { return fieldCovers(field, d.field) || d.field.isEmpty(); });
     };
-    const QString why = tr("Not computed: the project has %n problem(s), listed under Problems. Double-click one to "
-                           "go to its value.",
-                           nullptr, static_cast<int>(problems.size()));
     // The drawing only of a sound profile; the annotations only where they are sound too.
     if (under(QStringLiteral("part"))) {
-        m_profileView->clearProfile(why);
+        m_profileView->clearProfile(ProjectAnalysis::notComputedText(static_cast<int>(problems.size())));
     } else {
         const bool annotations = !under(QStringLiteral("tolerances")) && !under(QStringLiteral("datums"));
         m_profileView->setClamping(under(QStringLiteral("clamping")) ? std::nullopt
@@ -607,16 +588,8 @@ void MainWindow::showProjectWithProblems()
         m_profileView->setProfile(project.part, annotations ? project.tolerances : std::vector<Tolerance>{},
                                   annotations ? project.datums : std::vector<Datum>{});
     }
-    std::vector<ToleranceRangeEvaluation> rows(project.tolerances.size());
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        rows[i].compliant.toleranceId = project.tolerances[i].id;
-        rows[i].compliant.type = project.tolerances[i].type;
-        rows[i].compliant.featureId = project.tolerances[i].featureId;
-        rows[i].compliant.reason = why;
-    }
-    m_tolerances->showVerdicts(std::move(rows), QString(), false);
-    m_deflection->clear(why);
-    m_planning->projectChanged();
+    m_analysis->recompute(); // not predicted: the results' panels say why
+    m_planning->showProjectOutputs();
     updateSummary();
     updateTitle();
 }

@@ -30,6 +30,7 @@ class PlanningPanel;
 class SetupPanel;
 class TolerancePanel;
 class ProfileView;
+class ProjectAnalysis;
 class ProjectDocument;
 struct LoadedModel;
 class RecentFiles;
@@ -109,7 +110,6 @@ private:
     [[nodiscard]] QDockWidget *createMeasurementsDock();
     [[nodiscard]] QDockWidget *createMillingDock();
     // The verdicts and curves on physics + what was learned of the machine (Measurements dock).
-    void showLearnedPrediction(const Project &project, const LoadedModel &model);
     // A project with problems: what can be shown without computing, and why the rest is not.
     void showProjectWithProblems();
     void showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics);
@@ -134,6 +134,7 @@ private:
     void editPreferences();
 
     ProjectDocument *m_document;
+    ProjectAnalysis *m_analysis; // the set-up's predictions, which the results' panels show
     RecentFiles *m_recentFiles;
     FileController *m_files;
     CadFileController *m_cad;

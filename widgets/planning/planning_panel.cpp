@@ -100,7 +100,7 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     buildControls();
     connect(&m_runner, &JobRunner::progressChanged, this,
             [this](double fraction) { m_progress->setValue(static_cast<int>(100.0 * fraction)); });
-    projectChanged();
+    showProjectOutputs();
 }
 
 PlanningPanel::~PlanningPanel() = default; // the runner stops the job and waits for it
@@ -240,7 +240,7 @@ void PlanningPanel::buildControls()
     });
 }
 
-void PlanningPanel::projectChanged()
+void PlanningPanel::showProjectOutputs()
 {
     if (!m_document.hasProject())
         return;
@@ -388,7 +388,7 @@ void PlanningPanel::setOperation(int index)
     m_report.reset(); // a plan is of one set-up
     m_plan->setText(notRunText());
     m_apply->setEnabled(false);
-    projectChanged();
+    showProjectOutputs();
 }
 
 Project PlanningPanel::operationProject() const

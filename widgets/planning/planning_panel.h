@@ -67,7 +67,7 @@ public:
     [[nodiscard]] QString planText() const;
 
     // Refreshes what follows the project directly (settings, compensation, G-code).
-    void projectChanged();
+    void showProjectOutputs();
     // The operation (set-up) planned, of a project of several (docs/operations.md); 0: the first.
     void setOperation(int index);
 

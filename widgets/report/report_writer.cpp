@@ -3,6 +3,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/library_info.h"
+#include "core/learning/setup_prediction.h"
 #include "core/planning/feed_schedule.h"
 #include "core/planning/planning_report.h"
 #include "core/planning/plausibility.h"
@@ -560,9 +561,7 @@ QByteArray pdfOf(const std::vector<std::unique_ptr<QPicture>> &pages, const Proj
 
 // What the report computes before it draws (report_writer.h).
 struct ReportData {
-    RangeEvaluation range;   // over the machine's stiffness range, or with what was learned
-    DeviationResult physics; // with what was learned: the physics' own prediction, for the plots
-    std::optional<LearnedCurves> learned;
+    SetupPrediction prediction; // the verdicts, the curves and what they rest on
     FinishingOutput finishing;
     std::optional<PlanningReport> plan; // none without the insert's cutting ranges
     std::optional<ScheduledFinishing> schedule;
@@ -576,15 +575,10 @@ std::shared_ptr<const ReportData> computeReport(const Project &project, const Re
     const DataLibrary &data = DataLibrary::builtIn();
     const LoadedModel *model = header.learned.get();
     // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
-    // and the plan; the plots keep the physics' contributions and add the learned total.
-    d->range =
-        model ? evaluateWithLearned(project, data, *model, &d->physics) : evaluateOverStiffnessRange(project, data);
-    addReclampingNotes(project, d->range, data);
-    if (model) {
-        d->learned = LearnedCurves{learnedAtStations(project, d->physics, model->model), model->uncertainty_mm(),
-                                   model->provenance()};
-    }
-    d->finishing = model ? finishingOutputFor(project, data, d->range.compliant) : finishingOutput(project, data);
+    // and the plan as well.
+    d->prediction = predictSetup(project, data, model);
+    d->finishing =
+        model ? finishingOutputFor(project, data, d->prediction.range.compliant) : finishingOutput(project, data);
     if (!progress.report(0.2))
         return nullptr;
     if (project.planning.cuttingSpeed_m_min) {
@@ -609,30 +603,22 @@ std::shared_ptr<const ReportData> computeReport(const Project &project, const Re
 RenderedReport renderReport(const Project &project, const ReportHeader &header, const ReportData &d)
 {
     RenderedReport rendered;
-    const LoadedModel *model = header.learned.get();
-    const DeviationResult &deviation = model ? d.physics : d.range.compliant;
+    const SetupPrediction &prediction = d.prediction;
     std::vector<ToleranceEvaluation> verdictList;
-    for (const ToleranceRangeEvaluation &e : d.range.tolerances)
+    for (const ToleranceRangeEvaluation &e : prediction.range.tolerances)
         verdictList.push_back(e.compliant);
 
     Layout layout;
     titleBlock(layout, project, header);
-    QString assumption = model ? learnedAssumptionText(*model) : machineAssumptionText(d.range, DataLibrary::builtIn());
-    if (project.scope) // one set-up of several: which, and which end of the drawing it holds
-        assumption.prepend(Report::tr("%1 (set-up %2 of %3, the %4 end held): ")
-                               .arg(project.scope->name)
-                               .arg(project.scope->index + 1)
-                               .arg(project.scope->count)
-                               .arg(displayName(project.clamping.heldEnd)));
-    summary(layout, project, d.range, assumption);
+    summary(layout, project, prediction.range, prediction.assumption);
     drawing(layout, project);
-    inputs(layout, project, deviation, d.finishing);
-    deviationPlots(layout, project, deviation, d.range.stiff, d.learned);
+    inputs(layout, project, prediction.deviation, d.finishing);
+    deviationPlots(layout, project, prediction.deviation, prediction.stiffEnd, prediction.learned);
     verdicts(layout, project, verdictList);
     plan(layout, project, d.finishing, d.plan);
     feedSchedule(layout, d.schedule);
     report::milledFeaturesSection(layout, project, Report::tr("6  Milled features"), d.milled);
-    assumptions(layout, project, model ? d.range.compliant : deviation);
+    assumptions(layout, project, prediction.range.compliant);
     // The appendices (for reference, not for the shop floor) open a page unless a third of this
     // one is still free: no page is left holding a few lines.
     if (layout.remaining() < (report::kBottom - report::kMargin) / 3.0)

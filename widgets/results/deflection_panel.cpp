@@ -86,6 +86,11 @@ void DeflectionPanel::showResult(const Project &project, DeviationResult result,
     redraw();
 }
 
+void DeflectionPanel::showPrediction(const Project &project, const SetupPrediction &prediction)
+{
+    showResult(project, prediction.deviation, prediction.stiffEnd, prediction.learned);
+}
+
 void DeflectionPanel::clear(const QString &why)
 {
     m_result = {};

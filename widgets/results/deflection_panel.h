@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/deviation/deviation_model.h"
+#include "core/learning/setup_prediction.h"
 #include "widgets/common/display_units.h"
 
 #include <QWidget>
@@ -20,15 +21,6 @@ class LinePlot;
 // Predicted deviation along z for the open project: total and each contribution (spindle–chuck,
 // toolpost, workpiece, thermal) for the outer or the inner contour, or the diameter error, with
 // the forces used and the assumptions the result rests on.
-// What was learned of the machine from its measured parts, drawn beside the physics
-// (docs/learning.md): the learned correction to the radius error at every station of the result
-// (learnedAtStations), and the RMS error of parts not learned from as its uncertainty.
-struct LearnedCurves {
-    std::vector<std::vector<double>> atStations; // mm of radius, per feature and station
-    double uncertainty_mm = 0.0;
-    QString provenance;
-};
-
 class DeflectionPanel : public QWidget {
     Q_OBJECT
 public:
@@ -61,6 +53,8 @@ public:
     static double totalRadial_mm(const Station &st) { return st.radial.total_mm(); }
 
     // No result: the plot hidden and `why` said (by default, that no part is open).
+    // ProjectAnalysis::predicted: the set-up's curves (its range as a band, or what was learned).
+    void showPrediction(const Project &project, const SetupPrediction &prediction);
     void clear(const QString &why = QString());
 
     void setSide(ContourSide side);

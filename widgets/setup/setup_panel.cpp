@@ -148,8 +148,8 @@ SetupPanel::SetupPanel(ProjectDocument &document, QWidget *parent)
             [this](const CuttingModel &model) { showOutcome(m_document.setCuttingModel(model)); });
     connect(m_forceModel, &ForceModelEditor::environmentEdited, this,
             [this](const Environment &environment) { showOutcome(m_document.setEnvironment(environment)); });
-    connect(&m_document, &ProjectDocument::projectChanged, this, &SetupPanel::projectChanged);
-    projectChanged();
+    connect(&m_document, &ProjectDocument::projectChanged, this, &SetupPanel::showDocumentValues);
+    showDocumentValues();
 }
 
 QWidget *SetupPanel::createPartGroup()
@@ -390,7 +390,7 @@ QString SetupPanel::message() const
     return m_message->text();
 }
 
-void SetupPanel::projectChanged()
+void SetupPanel::showDocumentValues()
 {
     setEnabled(m_document.hasProject());
     if (m_document.hasProject())
@@ -507,7 +507,7 @@ void SetupPanel::setOperation(int index)
         return;
     m_document.endRepeatedEdits(); // the boxes now edit another set-up
     m_operation = index;
-    projectChanged();
+    showDocumentValues();
 }
 
 Project SetupPanel::operationProject() const

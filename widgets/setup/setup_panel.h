@@ -33,7 +33,7 @@ public:
     explicit SetupPanel(ProjectDocument &document, QWidget *parent = nullptr);
 
     // Shows the document's values (after loads, edits, undo and redo).
-    void projectChanged();
+    void showDocumentValues();
 
     [[nodiscard]] QComboBox *materialBox() const { return m_material; }
 

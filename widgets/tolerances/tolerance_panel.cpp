@@ -96,6 +96,31 @@ void TolerancePanel::showVerdicts(std::vector<ToleranceRangeEvaluation> verdicts
     updateButtons();
 }
 
+void TolerancePanel::showPrediction(const Project &project, const SetupPrediction &prediction)
+{
+    Q_UNUSED(project); // the rows are the document's tolerances
+    // What was learned replaces the range: no support is then taken as rigid.
+    showVerdicts(prediction.range.tolerances, prediction.assumption,
+                 !prediction.learned && prediction.range.someSupportRigid);
+}
+
+void TolerancePanel::showNotPredicted(const QString &why)
+{
+    if (why.isEmpty() || !m_document.hasProject()) {
+        showVerdicts(std::vector<ToleranceEvaluation>{});
+        return;
+    }
+    const std::vector<Tolerance> &tolerances = m_document.project().tolerances;
+    std::vector<ToleranceRangeEvaluation> rows(tolerances.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        rows[i].compliant.toleranceId = tolerances[i].id;
+        rows[i].compliant.type = tolerances[i].type;
+        rows[i].compliant.featureId = tolerances[i].featureId;
+        rows[i].compliant.reason = why;
+    }
+    showVerdicts(std::move(rows), QString(), false);
+}
+
 void TolerancePanel::selectTolerance(int index)
 {
     if (index >= 0 && index < m_model->rowCount())

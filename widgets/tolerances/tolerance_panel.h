@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/learning/setup_prediction.h"
 #include "core/tolerance/evaluation.h"
 #include "core/tolerance/range_verdicts.h"
 
@@ -26,6 +27,10 @@ public:
     // The verdicts over the machine's stiffness range, with the banner saying what the supports
     // rest on (`assumption`, empty for a measured machine).
     void showVerdicts(std::vector<ToleranceRangeEvaluation> verdicts, const QString &assumption, bool optimistic);
+    // ProjectAnalysis::predicted: the set-up's verdicts and what they rest on.
+    void showPrediction(const Project &project, const SetupPrediction &prediction);
+    // ProjectAnalysis::notPredicted: no rows without a project; else each tolerance saying `why`.
+    void showNotPredicted(const QString &why);
 
     [[nodiscard]] QLabel *banner() const { return m_banner; }
 
