@@ -9,6 +9,9 @@
 
 #include <QSignalSpy>
 #include <QTest>
+#include <QUndoStack>
+
+#include <vector>
 
 using namespace tolturn;
 
@@ -105,6 +108,40 @@ private Q_SLOTS:
         QCOMPARE(notPredicted.constFirst().constFirst().toString(),
                  ProjectAnalysis::notComputedText(static_cast<int>(document.problems().size())));
         QVERIFY(notPredicted.constFirst().constFirst().toString().startsWith(QStringLiteral("Not computed")));
+    }
+
+    // One projectChanged() per user action (EXAMPLES.md item 6), so that the analysis runs once:
+    // per edit, per merged step of a spin box, and once for a jump of five steps back in Undo.
+    void oneChangeNoticePerAction()
+    {
+        ProjectDocument document;
+        const Project original = example("stepped-shaft-chuck.tolturn");
+        document.load(original, QString());
+        QSignalSpy changed(&document, &ProjectDocument::projectChanged);
+        std::vector<CuttingPass> passes = original.passes;
+        QVERIFY(!passes.empty());
+        for (int i = 1; i <= 5; ++i) {
+            passes.back().feed_mm_rev = original.passes.back().feed_mm_rev + 0.01 * i;
+            QVERIFY(document.setPasses(passes, QStringLiteral("Change cutting conditions")).empty());
+            QCOMPARE(changed.count(), i);
+        }
+        QCOMPARE(document.undoStack()->count(), 5);
+        document.undoStack()->setIndex(0); // five commands undone
+        QCOMPARE(changed.count(), 6);
+        QCOMPARE(document.project(), original);
+        document.undoStack()->redo();
+        QCOMPARE(changed.count(), 7);
+        QCOMPARE(document.project().passes.back().feed_mm_rev, original.passes.back().feed_mm_rev + 0.01);
+        QObject box; // a spin box stepped twice: one step in Undo, a notice per value
+        {
+            const ProjectDocument::RepeatedEdits steps(document, &box);
+            passes.back().feed_mm_rev = 0.31;
+            QVERIFY(document.setPasses(passes, QStringLiteral("Change cutting conditions")).empty());
+            passes.back().feed_mm_rev = 0.32;
+            QVERIFY(document.setPasses(passes, QStringLiteral("Change cutting conditions")).empty());
+        }
+        QCOMPARE(changed.count(), 9);
+        QCOMPARE(document.project().passes.back().feed_mm_rev, 0.32);
     }
 };
 

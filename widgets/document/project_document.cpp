@@ -70,10 +70,12 @@ public:
     }
 
 private:
+    // The document tells its views once the push or the move through the history is over
+    // (ProjectDocument::emitChange), not once per command.
     void apply(const T &value)
     {
         m_doc.m_project.*m_field = value;
-        Q_EMIT m_doc.projectChanged();
+        m_doc.m_changePending = true;
     }
 
     ProjectDocument &m_doc;
@@ -86,6 +88,16 @@ private:
 ProjectDocument::ProjectDocument(QObject *parent) : QObject(parent), m_undoStack(new QUndoStack(this))
 {
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
+    // A push (merged or not), Undo, Redo and a jump through the history (QUndoStack::setIndex,
+    // which undoes or redoes several commands) each end with one indexChanged: one projectChanged
+    // for all the commands they applied.
+    connect(m_undoStack, &QUndoStack::indexChanged, this, &ProjectDocument::emitChange);
+}
+
+void ProjectDocument::emitChange()
+{
+    if (std::exchange(m_changePending, false))
+        Q_EMIT projectChanged();
 }
 
 ProjectDocument::~ProjectDocument() = default;

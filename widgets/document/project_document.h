@@ -117,6 +117,9 @@ private:
     friend class FieldCommand;
 
     Diagnostics check(const Project &candidate) const;
+    // projectChanged() once for the commands applied since the last (EXAMPLES.md item 6, after KDE
+    // Step's emitChanged): at the end of a push, an undo, a redo or a jump through the history.
+    void emitChange();
     // Pushes the edit of one member, unchecked (editField checks first).
     template <typename T>
     void pushField(T Project::*field, const T &value, const QString &description);
@@ -127,6 +130,7 @@ private:
     Diagnostics editOperation(int index, T Operation::*field, const T &value, const QString &description);
 
     Project m_project;
+    bool m_changePending = false; // a command changed m_project since the last projectChanged()
 
     struct ReadProblem {
         Diagnostic diagnostic;
