@@ -8,6 +8,7 @@
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
 #include "core/io/project_file.h"
+#include "core/io/result_json.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
 #include "core/planning/optimiser.h"
@@ -49,100 +50,6 @@ namespace {
 struct CommandLine {
     Q_DECLARE_TR_FUNCTIONS(CommandLine)
 };
-
-constexpr double kUmPerMm = 1000.0;
-
-QJsonObject contributionsJson(const Contributions &c, bool radial)
-{
-    QJsonObject o{{QStringLiteral("total"), c.total_mm() * kUmPerMm},
-                  {QStringLiteral("spindle_chuck"), c.spindleChuck_mm * kUmPerMm},
-                  {QStringLiteral("workpiece"), c.workpiece_mm * kUmPerMm},
-                  {QStringLiteral("boring_bar"), c.boringBar_mm * kUmPerMm}};
-    if (radial) {
-        o.insert(QStringLiteral("toolpost"), c.toolpost_mm * kUmPerMm);
-        o.insert(QStringLiteral("thermal"), c.thermal_mm * kUmPerMm);
-    }
-    return o;
-}
-
-QJsonObject stationJson(const Station &st)
-{
-    return {{QStringLiteral("z_mm"), st.z_mm},
-            {QStringLiteral("nominal_diameter_mm"), 2.0 * st.nominalRadius_mm},
-            {QStringLiteral("spindle_speed_rpm"), st.spindleSpeed_rpm},
-            {QStringLiteral("radial_um"), contributionsJson(st.radial, true)},
-            {QStringLiteral("tangential_um"), contributionsJson(st.tangential, false)},
-            {QStringLiteral("radius_error_um"), st.radiusError_mm * kUmPerMm},
-            {QStringLiteral("diameter_error_um"), 2.0 * st.radiusError_mm * kUmPerMm},
-            {QStringLiteral("section_rotation_urad"), st.sectionRotation_rad * 1e6}};
-}
-
-// The boring bar and its forces (docs/model.md §3.1), as `deflect --json` gives them.
-QJsonObject boringBarJson(const BoringInputs &b)
-{
-    return {{QStringLiteral("holder"), b.holderCode},
-            {QStringLiteral("material"), b.barMaterial},
-            {QStringLiteral("diameter_mm"), b.bar.diameter_mm},
-            {QStringLiteral("overhang_mm"), b.bar.overhang_mm},
-            {QStringLiteral("overhang_ratio"), b.bar.overhangRatio()},
-            {QStringLiteral("max_overhang_ratio"),
-             b.maxOverhangRatio ? QJsonValue(b.maxOverhangRatio->value) : QJsonValue(QJsonValue::Null)},
-            {QStringLiteral("edge_offset_mm"), b.bar.edgeOffset_mm},
-            {QStringLiteral("youngs_modulus_MPa"), b.bar.material.youngsModulus_MPa},
-            {QStringLiteral("tip_compliance_um_per_N"), b.compliance.transverse_mm_per_N() * kUmPerMm},
-            {QStringLiteral("forces_N"), QJsonObject{{QStringLiteral("tangential"), b.forces.tangential_N},
-                                                     {QStringLiteral("axial"), b.forces.axial_N},
-                                                     {QStringLiteral("radial"), b.forces.radial_N}}}};
-}
-
-QJsonObject deviationJson(const QString &file, const Project &project, const DeviationResult &r)
-{
-    const TurningInputs &in = *r.inputs;
-    QJsonArray features;
-    for (const FeatureDeviation &f : r.features) {
-        QJsonArray stations;
-        for (const Station &st : f.stations)
-            stations.append(stationJson(st));
-        features.append(QJsonObject{{QStringLiteral("id"), f.featureId},
-                                    {QStringLiteral("side"), contourName(f.side)},
-                                    {QStringLiteral("type"), keyword(f.kind)},
-                                    {QStringLiteral("stations"), stations}});
-    }
-    QJsonArray faces;
-    for (const FaceConicity &f : r.faces)
-        faces.append(QJsonObject{{QStringLiteral("id"), f.featureId},
-                                 {QStringLiteral("side"), contourName(f.side)},
-                                 {QStringLiteral("z_mm"), f.z_mm},
-                                 {QStringLiteral("tan_theta"), f.tanTheta},
-                                 {QStringLiteral("axial_runout_um"), f.axialRunout_mm * kUmPerMm}});
-    QJsonArray warnings;
-    for (const Diagnostic &d : r.diagnostics)
-        warnings.append(diagnosticJson(d));
-    QJsonObject json{
-        {QStringLiteral("file"), file},
-        {QStringLiteral("material"), project.materialId},
-        {QStringLiteral("clamping"), keyword(project.clamping.method)},
-        {QStringLiteral("force_model"), in.forceModel},
-        {QStringLiteral("pass"), QJsonObject{{QStringLiteral("index"), in.passIndex},
-                                             {QStringLiteral("kind"), keyword(in.pass.kind)},
-                                             {QStringLiteral("cutting_speed_m_min"), in.pass.cuttingSpeed_m_min},
-                                             {QStringLiteral("feed_mm_rev"), in.pass.feed_mm_rev},
-                                             {QStringLiteral("depth_of_cut_mm"), in.pass.depthOfCut_mm}}},
-        {QStringLiteral("forces_N"), QJsonObject{{QStringLiteral("tangential"), in.forces.tangential_N},
-                                                 {QStringLiteral("axial"), in.forces.axial_N},
-                                                 {QStringLiteral("radial"), in.forces.radial_N}}},
-        {QStringLiteral("max_power_kW"), r.maxPower_kW},
-        {QStringLiteral("max_torque_Nm"), r.maxTorque_Nm},
-        {QStringLiteral("theoretical_Ra_um"), r.theoreticalRa_um},
-        {QStringLiteral("theoretical_Rz_um"), r.theoreticalRz_um},
-        {QStringLiteral("notes"), QJsonArray::fromStringList(in.notes)},
-        {QStringLiteral("warnings"), warnings},
-        {QStringLiteral("features"), features},
-        {QStringLiteral("faces"), faces}};
-    if (in.boring)
-        json.insert(QStringLiteral("boring_bar"), boringBarJson(*in.boring));
-    return json;
-}
 
 // The learned correction at every station and the predicted radius error with it; the model's
 // provenance and figures (docs/learning.md).

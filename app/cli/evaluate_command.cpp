@@ -9,6 +9,7 @@
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
 #include "core/io/project_file.h"
+#include "core/io/result_json.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
 #include "core/planning/optimiser.h"
@@ -42,66 +43,6 @@ namespace {
 struct CommandLine {
     Q_DECLARE_TR_FUNCTIONS(CommandLine)
 };
-
-QJsonObject evaluationJson(const ToleranceEvaluation &e)
-{
-    QJsonObject o{{QStringLiteral("id"), e.toleranceId},      {QStringLiteral("type"), keyword(e.type)},
-                  {QStringLiteral("feature"), e.featureId},   {QStringLiteral("verdict"), verdictKeyword(e.verdict)},
-                  {QStringLiteral("condition"), e.condition}, {QStringLiteral("reason"), e.reason}};
-    const std::pair<const char *, std::optional<double>> numbers[] = {{"value_um", e.value_um},
-                                                                      {"limit_um", e.limit_um},
-                                                                      {"utilisation_pct", e.utilisation_pct},
-                                                                      {"nominal_mm", e.nominal_mm},
-                                                                      {"upper_um", e.upper_um},
-                                                                      {"lower_um", e.lower_um},
-                                                                      {"predicted_max_um", e.predictedMax_um},
-                                                                      {"predicted_min_um", e.predictedMin_um},
-                                                                      {"offset_um", e.offset_um}};
-    for (const auto &[key, value] : numbers) {
-        if (value)
-            o.insert(QLatin1String(key), *value);
-    }
-    return o;
-}
-
-QString requiredKindKeyword(RequiredStiffness::Kind kind)
-{
-    switch (kind) {
-    case RequiredStiffness::Kind::Found:
-        return QStringLiteral("found");
-    case RequiredStiffness::Kind::Window:
-        return QStringLiteral("window");
-    case RequiredStiffness::Kind::AnyStiffness:
-        return QStringLiteral("any");
-    case RequiredStiffness::Kind::NotReachable:
-        return QStringLiteral("not_reachable");
-    }
-    return {};
-}
-
-QJsonValue requiredJson(const std::optional<RequiredStiffness> &r)
-{
-    if (!r)
-        return QJsonValue::Null;
-    QJsonObject o{{QStringLiteral("kind"), requiredKindKeyword(r->kind)}};
-    if (r->kind != RequiredStiffness::Kind::NotReachable)
-        o.insert(QStringLiteral("N_per_um"), r->value_N_per_mm / 1000.0);
-    if (r->kind == RequiredStiffness::Kind::Window)
-        o.insert(QStringLiteral("fails_again_at_N_per_um"), r->upper_N_per_mm / 1000.0);
-    return o;
-}
-
-QJsonObject rangeEvaluationJson(const ToleranceRangeEvaluation &e)
-{
-    QJsonObject o = evaluationJson(e.compliant);
-    o.insert(QStringLiteral("range_verdict"), rangeVerdictKeyword(e.range));
-    o.insert(QStringLiteral("range_verdict_text"), rangeVerdictText(e));
-    if (e.stiff)
-        o.insert(QStringLiteral("at_stiff_end"), evaluationJson(*e.stiff));
-    o.insert(QStringLiteral("required_chuck_stiffness"), requiredJson(e.chuck));
-    o.insert(QStringLiteral("required_tailstock_stiffness"), requiredJson(e.tailstock));
-    return o;
-}
 
 // The verdicts on physics + what was learned: one prediction, the machine's measured behaviour in
 // place of its stiffness range (docs/learning.md).

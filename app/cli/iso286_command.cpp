@@ -7,6 +7,7 @@
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
 #include "core/io/project_file.h"
+#include "core/io/result_json.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
 #include "core/planning/optimiser.h"
@@ -39,17 +40,6 @@ namespace {
 struct CommandLine {
     Q_DECLARE_TR_FUNCTIONS(CommandLine)
 };
-
-QJsonObject classLimitsJson(const iso286::ClassLimits &l)
-{
-    return {{QStringLiteral("nominal_mm"), l.nominal_mm},
-            {QStringLiteral("class"), l.toleranceClass},
-            {QStringLiteral("upper_um"), l.upper_um},
-            {QStringLiteral("lower_um"), l.lower_um},
-            {QStringLiteral("it_grade"), l.itName},
-            {QStringLiteral("it_um"), l.it_um},
-            {QStringLiteral("fundamental_um"), l.fundamental_um}};
-}
 
 QString signedUm(double v)
 {

@@ -8,6 +8,7 @@
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
 #include "core/io/project_file.h"
+#include "core/io/result_json.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
 #include "core/planning/optimiser.h"
@@ -43,26 +44,6 @@ struct CommandLine {
     Q_DECLARE_TR_FUNCTIONS(CommandLine)
 };
 
-QJsonObject passJson(const PassConditions &p)
-{
-    return {{QStringLiteral("cutting_speed_m_min"), p.cuttingSpeed_m_min},
-            {QStringLiteral("feed_mm_rev"), p.feed_mm_rev},
-            {QStringLiteral("depth_of_cut_mm"), p.depthOfCut_mm}};
-}
-
-QJsonArray constraintsJson(const std::vector<ConstraintValue> &list)
-{
-    QJsonArray out;
-    for (const ConstraintValue &c : list)
-        out.append(QJsonObject{{QStringLiteral("name"), c.name},
-                               {QStringLiteral("subject"), c.subject},
-                               {QStringLiteral("value"), c.value},
-                               {QStringLiteral("limit"), c.limit},
-                               {QStringLiteral("unit"), c.unit},
-                               {QStringLiteral("violation_pct"), 100.0 * c.violation()}});
-    return out;
-}
-
 QString constraintText(const ConstraintValue &c)
 {
     // Four significant digits: a ratio of 10^270 (degenerate tool-life data) is no row of digits.
@@ -71,40 +52,10 @@ QString constraintText(const ConstraintValue &c)
              QString::number(100.0 * (c.value / c.limit), 'g', 4));
 }
 
-PassConditions roughingOf(const PlanResult &r, const PlanningProblem &problem)
-{
-    PassConditions p = r.candidate.roughing;
-    if (r.candidate.roughingPasses > 0)
-        p.depthOfCut_mm = (problem.radialStock_mm() - r.candidate.finishing.depthOfCut_mm) / r.candidate.roughingPasses;
-    return p;
-}
-
-QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
-{
-    const CandidateEvaluation &e = r.evaluation;
-    return {{QStringLiteral("feasible"), r.feasible},
-            {QStringLiteral("objective"), keyword(problem.project().planning.objective)},
-            {QStringLiteral("objective_value"), e.objective},
-            {QStringLiteral("time_min"), e.time_min},
-            {QStringLiteral("cost"), e.cost},
-            {QStringLiteral("finishing_time_min"), e.finishingTime_min},
-            {QStringLiteral("roughing_time_min"), e.roughingTime_min},
-            {QStringLiteral("tool_edges_per_part"), e.toolEdgesPerPart},
-            {QStringLiteral("finishing"), passJson(r.candidate.finishing)},
-            {QStringLiteral("roughing"), QJsonObject{{QStringLiteral("passes"), r.candidate.roughingPasses},
-                                                     {QStringLiteral("pass"), passJson(roughingOf(r, problem))}}},
-            {QStringLiteral("constraints"), constraintsJson(e.constraints)},
-            {QStringLiteral("binding"), constraintsJson(r.binding)},
-            {QStringLiteral("conflicts"), constraintsJson(r.conflicts)},
-            {QStringLiteral("evaluations"), r.evaluations},
-            {QStringLiteral("timed_out"), r.timedOut},
-            {QStringLiteral("notes"), QJsonArray::fromStringList(r.notes)}};
-}
-
 void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &problem)
 {
     const CandidateEvaluation &e = r.evaluation;
-    const PassConditions rough = roughingOf(r, problem);
+    const PassConditions rough = roughingPassOf(r, problem);
     const QString objective = keyword(problem.project().planning.objective);
     if (r.feasible)
         out << (r.timedOut ? CommandLine::tr("Best plan (%1) found within the time limit").arg(objective)
@@ -256,7 +207,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!plan.feasible)
         return kExitProblems;
     if (parser.isSet(write)) {
-        const PassConditions rough = roughingOf(plan, *built.problem);
+        const PassConditions rough = roughingPassOf(plan, *built.problem);
         // The passes of the operation planned, in the project as its file holds it.
         const int index = view->scope ? view->scope->index : 0;
         std::vector<CuttingPass> &passes =
