@@ -6445,6 +6445,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>%1 mit %n Problemen geöffnet, die vor der Berechnung zu beheben sind</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Computing the report failed: %1</source>
+        <translation>Die Berechnung des Berichts ist fehlgeschlagen: %1</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ForceModelEditor</name>
@@ -8421,6 +8425,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (compensated too: the features no feed holds keep the programmed feed and are compensated at it)</source>
         <translation>Jedes Formelement des Schlichtschnitts mit seinem Vorschub aus dem Plan der Registerkarte Adaptiv drehen (auch kompensiert: die Formelemente, die kein Vorschub hält, behalten den programmierten Vorschub und werden bei ihm kompensiert)</translation>
+    </message>
+    <message>
+        <source>The optimisation failed: %1</source>
+        <translation>Die Optimierung ist fehlgeschlagen: %1</translation>
     </message>
 </context>
 <context>

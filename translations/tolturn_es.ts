@@ -6445,6 +6445,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>%1 abierto con %n problemas que reparar antes de poder calcular</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Computing the report failed: %1</source>
+        <translation>El cálculo del informe ha fallado: %1</translation>
+    </message>
 </context>
 <context>
     <name>tolturn::ForceModelEditor</name>
@@ -8421,6 +8425,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Cut each feature of the finishing pass at its feed of the Adaptive tab&apos;s schedule (compensated too: the features no feed holds keep the programmed feed and are compensated at it)</source>
         <translation>Mecanizar cada elemento de la pasada de acabado con su avance del plan de la pestaña Adaptativo (también compensado: los elementos que ningún avance cumple conservan el avance programado y se compensan con él)</translation>
+    </message>
+    <message>
+        <source>The optimisation failed: %1</source>
+        <translation>La optimización ha fallado: %1</translation>
     </message>
 </context>
 <context>

@@ -136,7 +136,12 @@ struct ImportTarget {
 void printChoiceResult(const ImportTarget &t, const CadImportResult &r, QTextStream &out, QTextStream &err)
 {
     const QString problem = writeImported(r, t.output, t.material, t.machine, out);
-    out << QJsonDocument(importJson(t.file, t.output, r, problem.isEmpty())).toJson(QJsonDocument::Compact) << '\n';
+    // The reason a sound import was not written goes with its result: the reader of these lines
+    // takes each as it comes, before what standard error says after it.
+    CadImportResult shown = r;
+    if (!problem.isEmpty() && !hasErrors(r.diagnostics))
+        shown.diagnostics.push_back(makeError(QStringLiteral("output"), problem));
+    out << QJsonDocument(importJson(t.file, t.output, shown, problem.isEmpty())).toJson(QJsonDocument::Compact) << '\n';
     out.flush();
     if (!problem.isEmpty())
         err << programName() << " import: " << problem << Qt::endl;

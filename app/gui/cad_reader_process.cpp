@@ -81,6 +81,7 @@ void CadReaderProcess::retireProcess()
 void CadReaderProcess::start(const QString &path, const CadImportOptions &options)
 {
     m_path = path;
+    m_choice.reset();
     m_result = {};
     m_busy = true;
     m_cancelled = false;
@@ -141,6 +142,7 @@ void CadReaderProcess::choose(const CadImportOptions &options)
     m_busy = true;
     m_cancelled = false;
     m_stderr.clear();
+    m_choice = options;
     const QByteArray line = QByteArray::number(options.solidIndex) + ' ' + QByteArray::number(options.axisIndex) + ' ' +
                             (options.flip ? "1" : "0") + '\n';
     m_process->write(line);
@@ -238,6 +240,7 @@ void CadReaderProcess::takeResult(const QByteArray &json, int exitCode)
         return;
     }
     m_busy = false;
+    m_choice.reset();
     m_result = std::move(*read);
     takeWrittenPart(document.object().value(QStringLiteral("written")).toBool());
     Q_EMIT finished();
@@ -263,6 +266,14 @@ void CadReaderProcess::processFinished(int exitCode, QProcess::ExitStatus status
         failed(tr("Reading %1 ended the CAD reader (OpenCascade) abnormally; the program and the project are not "
                   "affected. The file is probably damaged: check it in the CAD system that wrote it.%2")
                    .arg(name, stderrText().isEmpty() ? QString() : QStringLiteral("\n") + stderrText()));
+        return;
+    }
+    if (m_choice && m_results.trimmed().isEmpty() && exitCode == 0) {
+        // It ended before it read the choice (its input closed, or it stopped on its own): read
+        // the file again with the choice.
+        const CadImportOptions choice = *m_choice;
+        m_busy = false;
+        start(m_path, choice);
         return;
     }
     takeResult(m_results, exitCode); // a reader that wrote its result without an end of line

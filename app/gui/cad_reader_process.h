@@ -8,6 +8,7 @@
 #include <QTemporaryDir>
 
 #include <memory>
+#include <optional>
 
 namespace tolturn {
 
@@ -63,10 +64,11 @@ private:
     std::unique_ptr<QProcess> m_process;
     std::unique_ptr<QTemporaryDir> m_folder;
     QString m_path;
-    QByteArray m_stderr;  // every line but the progress ones, for the message when the child fails
-    QByteArray m_pending; // an incomplete line of standard error
-    QByteArray m_results; // standard output not yet taken
-    bool m_busy = false;  // a read or a choice runs
+    QByteArray m_stderr;                      // every line but the progress ones, for the message when the child fails
+    QByteArray m_pending;                     // an incomplete line of standard error
+    QByteArray m_results;                     // standard output not yet taken
+    bool m_busy = false;                      // a read or a choice runs
+    std::optional<CadImportOptions> m_choice; // the choice sent to the child and not answered yet
     bool m_cancelled = false;
     CadImportResult m_result;
 };

@@ -43,6 +43,7 @@ FileController::FileController(ProjectDocument &document, RecentFiles &recentFil
         if (m_reportProgress && !m_reportProgress->update(fraction))
             cancelReport();
     });
+    connect(&m_reportJob, &JobRunner::failed, this, &FileController::reportFailed);
 }
 
 QString FileController::fileFilter()
@@ -229,6 +230,7 @@ bool FileController::exportReportTo(const QString &pdfPath)
         operationView(m_document.project(), std::min(m_operation, operationCount(m_document.project()) - 1));
     const ReportHeader header{m_document.displayName(), loadPreferences().planner,
                               m_learnedModel ? m_learnedModel() : nullptr};
+    m_reportCancelled = false;
     m_reportJob.start([project, header](const Progress &progress) { return computeReport(project, header, progress); },
                       [this, project, header, pdfPath](const std::shared_ptr<const ReportData> &data) {
                           reportComputed(project, header, pdfPath, data);
@@ -243,7 +245,7 @@ void FileController::reportComputed(const Project &project, const ReportHeader &
                                     const std::shared_ptr<const ReportData> &data)
 {
     m_reportProgress.reset();
-    if (!data) {
+    if (!data || m_reportCancelled) {
         Q_EMIT statusMessage(tr("Report cancelled; nothing was written."));
         Q_EMIT reportFinished(false);
         return;
@@ -260,6 +262,13 @@ void FileController::reportComputed(const Project &project, const ReportHeader &
     Q_EMIT statusMessage(
         tr("Report written to %1 (%n page(s))", nullptr, result.pages).arg(QDir::toNativeSeparators(pdfPath)));
     Q_EMIT reportFinished(true);
+}
+
+void FileController::reportFailed(const QString &what)
+{
+    m_reportProgress.reset();
+    m_prompts.showError(tr("Cannot export the report"), tr("Computing the report failed: %1").arg(what));
+    Q_EMIT reportFinished(false);
 }
 
 bool FileController::saveTo(const QString &path)

@@ -95,7 +95,11 @@ public:
 
     [[nodiscard]] bool isWritingReport() const { return m_reportJob.isRunning(); }
 
-    void cancelReport() { m_reportJob.cancel(); }
+    void cancelReport()
+    {
+        m_reportCancelled = true; // also when the computations have ended and their result waits
+        m_reportJob.cancel();
+    }
 
     // The operation (set-up) the report is of, for a project of several (docs/operations.md).
     void setOperation(int index) { m_operation = index; }
@@ -127,6 +131,7 @@ private:
     bool loadFrom(const QString &readPath, const QString &documentPath);
     void reportComputed(const Project &project, const ReportHeader &header, const QString &pdfPath,
                         const std::shared_ptr<const ReportData> &data);
+    void reportFailed(const QString &what);
 
     ProjectDocument &m_document;
     RecentFiles &m_recentFiles;
@@ -134,6 +139,7 @@ private:
     std::function<std::shared_ptr<const LoadedModel>()> m_learnedModel;
     JobRunner m_reportJob;
     std::unique_ptr<TaskProgress> m_reportProgress; // shown while m_reportJob runs
+    bool m_reportCancelled = false;
 };
 
 } // namespace tolturn

@@ -109,7 +109,6 @@ private:
     void createProblemsDock();
     [[nodiscard]] QDockWidget *createMeasurementsDock();
     [[nodiscard]] QDockWidget *createMillingDock();
-    // The verdicts and curves on physics + what was learned of the machine (Measurements dock).
     // A project with problems: what can be shown without computing, and why the rest is not.
     void showProjectWithProblems();
     void showImportMessages(bool ok, const QString &heading, const Diagnostics &diagnostics);

@@ -100,10 +100,9 @@ struct CadReadResult {
 // 0 … 1 of this extraction. The result's `solids` are the model's.
 [[nodiscard]] CadImportResult extractProfile(const CadModel &model, const CadImportOptions &options);
 
-// readCadFile, then extractProfile (the progress 80 % reading, 20 % extracting).
-// Reads a STEP (.step, .stp) or IGES (.iges, .igs) file, converting its units to millimetres,
-// finds the rotation axis and returns the half-section of the chosen body as a TolTurn profile.
-// Never throws: every failure is an error diagnostic naming the file.
+// Reads a STEP or IGES file and returns the half-section of the chosen body as a TolTurn profile:
+// readCadFile, then extractProfile (the progress 80 % reading, 20 % extracting). Never throws:
+// every failure is an error diagnostic naming the file.
 [[nodiscard]] CadImportResult importCadFile(const QString &path, const CadImportOptions &options = {});
 
 } // namespace tolturn

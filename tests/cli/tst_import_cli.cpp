@@ -140,6 +140,28 @@ private Q_SLOTS:
         QVERIFY(cli.readAllStandardError().contains("SOLID AXIS FLIP"));
     }
 
+    // A sound part that cannot be written: the reason is in its result line, for a reader that
+    // takes the line before standard error.
+    void chooseSaysWhyAPartWasNotWritten()
+    {
+        const QString step = m_dir.filePath(QStringLiteral("unwritable.step"));
+        QVERIFY(exportProfileToStep(readPart(example("stepped-shaft-chuck.tolturn")), step).ok);
+        QProcess cli;
+        cli.start(QStringLiteral(TOLTURN_CLI_PATH),
+                  {QStringLiteral("import"), QStringLiteral("--json"), QStringLiteral("--choose"), QStringLiteral("-o"),
+                   QStringLiteral("/nonexistent-folder/part.tolturn"), step});
+        cli.closeWriteChannel();
+        QVERIFY(cli.waitForFinished(60000));
+        const QJsonObject result = QJsonDocument::fromJson(cli.readLine()).object();
+        QCOMPARE(result.value(QStringLiteral("written")).toBool(), false);
+        const QJsonArray diagnostics = result.value(QStringLiteral("diagnostics")).toArray();
+        QVERIFY(!diagnostics.isEmpty());
+        const QJsonObject last = diagnostics.last().toObject();
+        QCOMPARE(last.value(QStringLiteral("field")).toString(), QStringLiteral("output"));
+        QVERIFY2(last.value(QStringLiteral("message")).toString().contains(QStringLiteral("/nonexistent-folder")),
+                 qPrintable(last.value(QStringLiteral("message")).toString()));
+    }
+
     // "-o -": the STEP file and the project on standard output, byte for byte what a file would
     // hold, the messages on standard error; a pipe of the two gives the example's contour back.
     void standardOutputForBoth()

@@ -7,10 +7,13 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <QThread>
+#include <QThreadPool>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <chrono>
 #include <future>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 
 using namespace tolturn;
@@ -109,21 +112,60 @@ private Q_SLOTS:
         QCOMPARE(finished.count(), 1);
     }
 
-    // The runner's end stops its job and waits for it; the result goes nowhere.
+    // The runner's end stops its running job and waits for it; the result goes nowhere.
     void aJobDoesNotOutliveItsRunner()
     {
         auto ended = std::make_shared<QString>(); // the job's own result, kept by the job
+        std::promise<void> started;
         int done = 0;
         {
             JobRunner runner;
             runner.start(
-                [ended](const Progress &p) {
+                [ended, &started](const Progress &p) {
+                    started.set_value();
                     *ended = runUntilStopped(p);
                     return *ended;
                 },
                 [&done](const QString &) { ++done; });
+            started.get_future().wait();
         }
         QCOMPARE(*ended, QStringLiteral("stopped"));
+        QCoreApplication::sendPostedEvents();
+        QCOMPARE(done, 0);
+    }
+
+    // A job that throws ends with failed(), saying what it threw; its `done` is not called.
+    void aJobThatThrowsFails()
+    {
+        JobRunner runner;
+        QSignalSpy failed(&runner, &JobRunner::failed);
+        QSignalSpy finished(&runner, &JobRunner::finished);
+        int done = 0;
+        runner.start([](const Progress &) -> int { throw std::runtime_error("out of memory in the mesh"); },
+                     [&done](int) { ++done; });
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(failed.count(), 1);
+        QCOMPARE(failed.constFirst().constFirst().toString(), QStringLiteral("out of memory in the mesh"));
+        QCOMPARE(done, 0);
+        QVERIFY(!runner.isRunning());
+    }
+
+    // At quit the pool drops the jobs that have not started (worker_threads.cpp): the runner's end
+    // does not wait for one of them.
+    void aDroppedJobDoesNotHoldTheRunner()
+    {
+        std::promise<void> open;
+        const std::shared_future<void> gate = open.get_future().share();
+        for (int i = 0; i < 2; ++i) // both workers busy: the job waits in the queue
+            (void)QtConcurrent::run(workerThreads(), [gate] { gate.wait(); });
+        int done = 0;
+        {
+            JobRunner runner;
+            runner.start([](const Progress &) { return 1; }, [&done](int) { ++done; });
+            workerThreads()->clear(); // as at quit
+            open.set_value();
+        } // returns: nothing to wait for
+        QVERIFY(workerThreads()->waitForDone(20000));
         QCoreApplication::sendPostedEvents();
         QCOMPARE(done, 0);
     }

@@ -611,6 +611,7 @@ private Q_SLOTS:
         progress->onCancel([&cancelled] { cancelled = true; });
         auto *dialog = w.findChild<QDialog *>(QStringLiteral("progressDialog"));
         QVERIFY(dialog);
+        QTest::qWait(100);
         QVERIFY(!dialog->isVisible()); // a quick task shows nothing
         QVERIFY(progress->update(0.4));
         QTRY_VERIFY_WITH_TIMEOUT(dialog->isVisible(), 5000);
@@ -668,6 +669,26 @@ private Q_SLOTS:
         QVERIFY(!QFileInfo::exists(pdf));
         QVERIFY(messages.last().constFirst().toString().contains(QStringLiteral("cancelled")));
         QVERIFY(!files.isWritingReport());
+    }
+
+    // Cancel pressed once the computations have ended but before their result is drawn: still
+    // nothing on disk.
+    void cancelAfterTheComputationsWritesNothing()
+    {
+        ProjectDocument document;
+        RecentFiles recent;
+        CancellingPrompts prompts;
+        FileController files(document, recent, prompts);
+        QVERIFY(files.openFile(example("stepped-shaft-chuck.tolturn")));
+        QSignalSpy finished(&files, &FileController::reportFinished);
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("late.pdf"));
+        QVERIFY(files.exportReportTo(pdf));
+        QVERIFY(workerThreads()->waitForDone(60000)); // computed; the result waits in the event queue
+        prompts.pressCancel();
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!finished.last().constFirst().toBool());
+        QVERIFY(!QFileInfo::exists(pdf));
     }
 
     // The toolbar's icons are TolTurn's SVGs, drawn sharp at twice the size (High-DPI).

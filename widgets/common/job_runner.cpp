@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/common/job_runner.h"
 
-#include <algorithm>
-
 namespace tolturn {
 
 JobRunner::JobRunner(QObject *parent) : QObject(parent) {}
@@ -10,7 +8,25 @@ JobRunner::JobRunner(QObject *parent) : QObject(parent) {}
 JobRunner::~JobRunner()
 {
     m_progress.stop();
-    waitForJobs();
+    std::unique_lock lock(m_gate->mutex);
+    m_gate->closed = true;
+    m_gate->idle.wait(lock, [this] { return m_gate->running == 0; });
+}
+
+bool JobRunner::Gate::enter()
+{
+    const std::lock_guard lock(mutex);
+    if (closed)
+        return false;
+    ++running;
+    return true;
+}
+
+void JobRunner::Gate::leave()
+{
+    const std::lock_guard lock(mutex);
+    --running;
+    idle.notify_all();
 }
 
 void JobRunner::cancel()
@@ -21,7 +37,6 @@ void JobRunner::cancel()
 Progress JobRunner::beginJob(const std::shared_ptr<Job> &job)
 {
     m_progress.stop(); // the job this one replaces
-    std::erase_if(m_futures, [](const QFuture<void> &f) { return f.isFinished(); });
     ++m_currentId;
     m_currentJob = job;
     m_running = true;
@@ -51,11 +66,12 @@ bool JobRunner::endJob(unsigned id)
     return true;
 }
 
-void JobRunner::waitForJobs()
+void JobRunner::jobFailed(unsigned id, const QString &what)
 {
-    for (QFuture<void> &f : m_futures)
-        f.waitForFinished();
-    m_futures.clear();
+    if (!endJob(id))
+        return;
+    Q_EMIT failed(what);
+    Q_EMIT finished();
 }
 
 } // namespace tolturn

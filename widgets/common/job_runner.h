@@ -4,17 +4,19 @@
 #include "core/common/progress.h"
 #include "widgets/common/worker_threads.h"
 
-#include <QFuture>
 #include <QMetaObject>
 #include <QObject>
+#include <QString>
 #include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <atomic>
+#include <condition_variable>
+#include <exception>
 #include <memory>
+#include <mutex>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace tolturn {
 
@@ -29,13 +31,14 @@ class JobRunner : public QObject {
     Q_OBJECT
 public:
     explicit JobRunner(QObject *parent = nullptr);
-    // Stops the jobs still running and waits for them: a job never outlives what it reports to.
+    // Stops the jobs still running and waits for them: a job never outlives what it reports to. A
+    // job that has not started yet (the pool is cleared at quit) never will.
     ~JobRunner() override;
 
     JobRunner(const JobRunner &) = delete;
     JobRunner &operator=(const JobRunner &) = delete;
 
-    // From start() until the job's `done` is called.
+    // From start() until the job's `done` is called (or failed() is emitted).
     [[nodiscard]] bool isRunning() const { return m_running; }
 
     // Asks the running job to stop; it still ends through its `done`.
@@ -49,7 +52,9 @@ public:
 
 Q_SIGNALS:
     void progressChanged(double fraction);
-    // After a job's `done` has run (isRunning() is false again).
+    // The job threw instead of returning (`what` says what it threw); `done` is not called.
+    void failed(const QString &what);
+    // After a job's `done` has run, or after failed() (isRunning() is false again).
     void finished();
 
 private:
@@ -58,18 +63,30 @@ private:
         std::atomic<bool> updateQueued{false};
     };
 
+    // The jobs that run on the workers, which the destructor waits for, and whether the runner
+    // still takes their reports.
+    struct Gate {
+        std::mutex mutex;
+        std::condition_variable idle;
+        int running = 0;
+        bool closed = false;
+        // True, and counted, unless the runner is gone.
+        [[nodiscard]] bool enter();
+        void leave();
+    };
+
     // A new job: the older one stopped, a Progress whose reports become progressChanged().
     [[nodiscard]] Progress beginJob(const std::shared_ptr<Job> &job);
     void showProgress(const std::shared_ptr<Job> &job);
     // Whether `id` is still the current job; ends it when so.
     [[nodiscard]] bool endJob(unsigned id);
-    void waitForJobs();
+    void jobFailed(unsigned id, const QString &what);
 
     unsigned m_currentId = 0;
     std::shared_ptr<Job> m_currentJob;
     bool m_running = false;
     Progress m_progress; // the current job's, which cancel() stops
-    std::vector<QFuture<void>> m_futures;
+    std::shared_ptr<Gate> m_gate = std::make_shared<Gate>();
 };
 
 template <class Work, class Done>
@@ -79,22 +96,34 @@ void JobRunner::start(Work work, Done done)
     auto job = std::make_shared<Job>();
     const Progress progress = beginJob(job);
     const unsigned id = m_currentId;
-    m_futures.push_back(QtConcurrent::run(
-        workerThreads(), [this, id, progress, work = std::move(work), done = std::move(done)]() mutable {
-            auto result = std::make_shared<Result>(work(progress));
-            // Queued: a runner destroyed meanwhile has waited for this job, and its pending call
-            // is dropped with it.
-            QMetaObject::invokeMethod(
-                this,
-                [this, id, result, done = std::move(done)]() mutable {
-                    Q_ASSERT(QThread::currentThread() == thread());
-                    if (!endJob(id))
-                        return; // replaced by a newer job
-                    done(std::move(*result));
-                    Q_EMIT finished();
-                },
-                Qt::QueuedConnection);
-        }));
+    // Not waited for through its QFuture: a job the pool drops before it starts never finishes one.
+    (void)QtConcurrent::run(
+        workerThreads(), [this, gate = m_gate, id, progress, work = std::move(work), done = std::move(done)]() mutable {
+            if (!gate->enter())
+                return; // the runner is gone: nothing to report to
+            try {
+                auto result = std::make_shared<Result>(work(progress));
+                // Queued: the runner waits for this job before it goes, and drops its pending calls.
+                QMetaObject::invokeMethod(
+                    this,
+                    [this, id, result, done = std::move(done)]() mutable {
+                        Q_ASSERT(QThread::currentThread() == thread());
+                        if (!endJob(id))
+                            return; // replaced by a newer job
+                        done(std::move(*result));
+                        Q_EMIT finished();
+                    },
+                    Qt::QueuedConnection);
+            } catch (const std::exception &e) {
+                QMetaObject::invokeMethod(
+                    this, [this, id, what = QString::fromLocal8Bit(e.what())] { jobFailed(id, what); },
+                    Qt::QueuedConnection);
+            } catch (...) {
+                QMetaObject::invokeMethod(
+                    this, [this, id] { jobFailed(id, QStringLiteral("unknown exception")); }, Qt::QueuedConnection);
+            }
+            gate->leave();
+        });
 }
 
 } // namespace tolturn

@@ -100,6 +100,13 @@ PlanningPanel::PlanningPanel(ProjectDocument &document, QWidget *parent)
     buildControls();
     connect(&m_runner, &JobRunner::progressChanged, this,
             [this](double fraction) { m_progress->setValue(static_cast<int>(100.0 * fraction)); });
+    connect(&m_runner, &JobRunner::failed, this, [this](const QString &what) {
+        m_run->setEnabled(!m_document.hasProblems());
+        m_cancel->setEnabled(false);
+        m_progress->setValue(0);
+        m_plan->setText(tr("The optimisation failed: %1").arg(what));
+        Q_EMIT finished();
+    });
     showProjectOutputs();
 }
 
