@@ -6,6 +6,7 @@
 #include "core/adaptive/force_control.h"
 #include "core/common/diagnostic.h"
 #include "core/cutting/cutting_forces.h"
+#include "core/io/project_file.h"
 #include "core/part/profile.h"
 #include "core/project/project.h"
 
@@ -22,6 +23,17 @@
 #include <vector>
 
 namespace tolturn::test {
+
+// A bundled example (resources/examples/NAME), read as File > Open reads it; the test stops when it
+// cannot be read.
+inline Project exampleProject(const char *name)
+{
+    const ProjectParseResult read =
+        readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name));
+    if (!read.project)
+        qFatal("cannot read %s", name);
+    return *read.project;
+}
 
 // C45E-N in resources/data/materials.json: E = 210000 MPa, nu = 0.3 (EN 1993-1-1); the shear
 // factor of a solid circle after Cowper (1966).

@@ -22,15 +22,6 @@ using namespace tolturn;
 
 namespace {
 
-Project example(const char *name)
-{
-    const ProjectParseResult r =
-        readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name));
-    if (!r.project)
-        qFatal("cannot read %s", name);
-    return *r.project;
-}
-
 std::shared_ptr<const PlanningProblem> problemFor(const Project &p)
 {
     const PlanningProblem::BuildResult b = PlanningProblem::build(p, DataLibrary::builtIn());
@@ -117,7 +108,7 @@ private Q_SLOTS:
     {
         QFETCH(QString, file);
         QFETCH(double, maxSpeed_rpm);
-        Project p = example(file.toLatin1().constData());
+        Project p = test::exampleProject(file.toLatin1().constData());
         if (maxSpeed_rpm > 0.0)
             p.planning.maxSpindleSpeed_rpm = maxSpeed_rpm;
         const auto problem = problemFor(p);
@@ -171,8 +162,8 @@ private Q_SLOTS:
     void everyConstraintCanBind()
     {
         QFETCH(QString, constraint);
-        Project p = example(constraint == QLatin1String("tolerances") ? "long-shaft-centres.tolturn"
-                                                                      : "stepped-shaft-chuck.tolturn");
+        Project p = test::exampleProject(constraint == QLatin1String("tolerances") ? "long-shaft-centres.tolturn"
+                                                                                   : "stepped-shaft-chuck.tolturn");
         if (constraint == QLatin1String("spindle_speed"))
             p.planning.maxSpindleSpeed_rpm = 2000.0;
         if (constraint == QLatin1String("tool_life")) {
@@ -210,7 +201,7 @@ private Q_SLOTS:
     // feasible, and the conflict is the roughness, by 0.17^2/(32*0.8)*1000/0.5 - 1 = 125.8 %.
     void infeasibleNamesItsConflict()
     {
-        Project p = example("stepped-shaft-chuck.tolturn");
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
         p.planning.maxRa_um = 0.5;
         const PlanResult r = optimisePlan(*problemFor(p));
         QVERIFY(!r.feasible);
@@ -228,7 +219,7 @@ private Q_SLOTS:
     // an overflow of the tool cost that left NLopt's COBYLA looping for ever.
     void degenerateToolLifeIsInfeasibleNotAHang()
     {
-        Project p = example("stepped-shaft-chuck.tolturn");
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
         p.planning.taylorC_m_min = 0.5;
         p.planning.taylorN = 0.01;
         p.planning.minToolLife_min = 15.0;
@@ -254,7 +245,7 @@ private Q_SLOTS:
     // it starts, it stops within its first plans and says so; with the default it finishes untouched.
     void searchStopsAtItsTimeLimit()
     {
-        const auto problem = problemFor(example("stepped-shaft-chuck.tolturn"));
+        const auto problem = problemFor(test::exampleProject("stepped-shaft-chuck.tolturn"));
         OptimisationOptions o;
         o.timeLimit_s = 0.0;
         const PlanResult stopped = optimisePlan(*problem, o);
@@ -275,7 +266,7 @@ private Q_SLOTS:
     // the problem is built, where it used to enumerate every count of passes.
     void hugeStockIsRefusedByName()
     {
-        Project p = example("stepped-shaft-chuck.tolturn");
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
         p.part.stockDiameter_mm = 1e5;
         const PlanningProblem::BuildResult b = PlanningProblem::build(p, DataLibrary::builtIn());
         QVERIFY(!b.problem);
@@ -290,7 +281,7 @@ private Q_SLOTS:
     // Every cell of the window is what a direct evaluation of that plan says.
     void windowAgreesWithDirectEvaluation()
     {
-        const auto problem = problemFor(example("long-shaft-centres.tolturn"));
+        const auto problem = problemFor(test::exampleProject("long-shaft-centres.tolturn"));
         const PlanResult opt = optimisePlan(*problem);
         for (const WindowPlane plane : {WindowPlane::FeedSpeed, WindowPlane::FeedDepth}) {
             WindowOptions o;
@@ -318,7 +309,7 @@ private Q_SLOTS:
     void clampingRanking()
     {
         const std::vector<ClampingOption> ranking =
-            adviseClamping(example("long-shaft-centres.tolturn"), DataLibrary::builtIn());
+            adviseClamping(test::exampleProject("long-shaft-centres.tolturn"), DataLibrary::builtIn());
         QCOMPARE(int(ranking.size()), 3);
         // Feasible ones first, by time; the slender shaft held in a chuck alone cannot hold its k6 journal.
         QVERIFY(ranking[0].plan.feasible && ranking[1].plan.feasible);
@@ -334,7 +325,7 @@ private Q_SLOTS:
     void clampingTiesAreBrokenByTheDecidingTolerance()
     {
         const std::vector<ClampingOption> ranking =
-            adviseClamping(example("stepped-shaft-chuck.tolturn"), DataLibrary::builtIn());
+            adviseClamping(test::exampleProject("stepped-shaft-chuck.tolturn"), DataLibrary::builtIn());
         QCOMPARE(int(ranking.size()), 3);
         const auto used = [](const ClampingOption &o) {
             const QRegularExpression re(
@@ -357,7 +348,7 @@ private Q_SLOTS:
     // edge round moves with it (Ø36 -> 35.983). The untoleranced Ø30 and Ø28 stay at nominal.
     void gcodeAimsAtTheMiddleOfEachZone()
     {
-        const Project p = example("stepped-shaft-chuck.tolturn");
+        const Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
         const QString program = programFor(p, nullptr);
         const std::vector<Move> moves = finishingMoves(program);
         // The face is programmed from X -1.6 (past the axis by the nose radius 0.8 mm, so that the nose
@@ -382,7 +373,7 @@ private Q_SLOTS:
     // finishing cut (f 0.3 mm, ap 2 mm) makes the deviation several micrometres.
     void compensatedGCodeCorrectsByThePredictedDeviation()
     {
-        Project p = example("stepped-shaft-chuck.tolturn");
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
         p.passes.back().feed_mm_rev = 0.3;
         p.passes.back().depthOfCut_mm = 2.0;
         Tolerance t;
@@ -464,7 +455,7 @@ private Q_SLOTS:
         QFETCH(QString, feature);
         QFETCH(double, lowest);
         QFETCH(double, highest);
-        const Project p = example(file.toLatin1().constData());
+        const Project p = test::exampleProject(file.toLatin1().constData());
         const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
         const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(p, d);
         const auto verdict = std::find_if(verdicts.begin(), verdicts.end(), [&](const ToleranceEvaluation &e) {
@@ -514,7 +505,7 @@ private Q_SLOTS:
     //   least time: T = (1/n - 1) t_change = 1.5 min, v = 444.6 m/min, above the insert's 353.6: 353.6.
     void leastCostAndLeastTimeDiffer()
     {
-        Project p = example("stepped-shaft-chuck.tolturn");
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
         const auto n = DataLibrary::builtIn().defaultTaylorExponent();
         QVERIFY(n.has_value());
         QCOMPARE(n->value, 0.25);
@@ -542,7 +533,7 @@ private Q_SLOTS:
     // difference is that of a rigid tilt, F/K (1 - z/L) over the span, so it shrinks with K.
     void planningUsesTheCompliantEndUnlessToldOtherwise()
     {
-        const Project p = example("hollow-sleeve-tailstock.tolturn");
+        const Project p = test::exampleProject("hollow-sleeve-tailstock.tolturn");
         const auto compliant = PlanningProblem::build(p, DataLibrary::builtIn()).problem;
         const auto stiff = PlanningProblem::build(p, DataLibrary::builtIn(), StiffnessEnd::Stiff).problem;
         QVERIFY(compliant && stiff);
@@ -565,7 +556,7 @@ private Q_SLOTS:
     // them every tolerance passes as programmed.
     void slenderPinPassesOnceItIsPlanned()
     {
-        const Project p = example("slender-pin-chuck.tolturn");
+        const Project p = test::exampleProject("slender-pin-chuck.tolturn");
         const RangeEvaluation before = evaluateOverStiffnessRange(p, DataLibrary::builtIn());
         QVERIFY(before.machineIsRange);
         const auto cylindricity = [](const RangeEvaluation &r) { return r.tolerances.at(1); };
@@ -592,7 +583,7 @@ private Q_SLOTS:
     // with a spread within the 8 µm of the cylindricity.
     void thinPinNeedsACompensatedProgram()
     {
-        const Project p = example("thin-pin-compensation.tolturn");
+        const Project p = test::exampleProject("thin-pin-compensation.tolturn");
         const PlanResult plan = optimisePlan(*problemFor(p));
         QVERIFY(!plan.feasible);
         QStringList conflicts;

@@ -207,6 +207,24 @@ private:
     bool m_released = false;
 };
 
+// File > Export Report on the stepped shaft, without a window: the prompts record the progress and
+// can press Cancel; `pdf` is where the report goes.
+struct ReportFixture {
+    ProjectDocument document;
+    RecentFiles recent;
+    CancellingPrompts prompts;
+    FileController files{document, recent, prompts};
+    QSignalSpy finished{&files, &FileController::reportFinished};
+    QTemporaryDir dir;
+    QString pdf = dir.filePath(QStringLiteral("shaft.pdf"));
+
+    ReportFixture()
+    {
+        if (!files.openFile(example("stepped-shaft-chuck.tolturn")))
+            qFatal("cannot open the stepped shaft");
+    }
+};
+
 } // namespace
 
 class TestMainWindow : public QObject {
@@ -628,67 +646,46 @@ private Q_SLOTS:
     // The report is computed off the window's thread: its progress is shown up to the end.
     void reportProgressIsShown()
     {
-        ProjectDocument document;
-        RecentFiles recent;
-        CancellingPrompts prompts;
-        FileController files(document, recent, prompts);
-        QVERIFY(files.openFile(example("stepped-shaft-chuck.tolturn")));
-        QSignalSpy finished(&files, &FileController::reportFinished);
-        QTemporaryDir dir;
-        const QString pdf = dir.filePath(QStringLiteral("shaft.pdf"));
-        QVERIFY(files.exportReportTo(pdf));
-        QVERIFY(files.isWritingReport());
-        QVERIFY(!files.exportReportTo(pdf)); // one report at a time
-        QVERIFY(finished.wait(60000));
-        QVERIFY(finished.last().constFirst().toBool());
-        QVERIFY(QFileInfo::exists(pdf));
-        QVERIFY(!prompts.reported.empty());
-        QVERIFY(std::is_sorted(prompts.reported.begin(), prompts.reported.end()));
-        QCOMPARE(prompts.reported.back(), 1.0);
+        ReportFixture f;
+        QVERIFY(f.files.exportReportTo(f.pdf));
+        QVERIFY(f.files.isWritingReport());
+        QVERIFY(!f.files.exportReportTo(f.pdf)); // one report at a time
+        QVERIFY(f.finished.wait(60000));
+        QVERIFY(f.finished.last().constFirst().toBool());
+        QVERIFY(QFileInfo::exists(f.pdf));
+        QVERIFY(!f.prompts.reported.empty());
+        QVERIFY(std::is_sorted(f.prompts.reported.begin(), f.prompts.reported.end()));
+        QCOMPARE(f.prompts.reported.back(), 1.0);
     }
 
     // Cancelling the report while it is computed: nothing on disk, the user told.
     void cancellingTheReportWritesNothing()
     {
-        ProjectDocument document;
-        RecentFiles recent;
-        CancellingPrompts prompts;
-        FileController files(document, recent, prompts);
-        QVERIFY(files.openFile(example("stepped-shaft-chuck.tolturn")));
-        QSignalSpy messages(&files, &FileController::statusMessage);
-        QSignalSpy finished(&files, &FileController::reportFinished);
-        QTemporaryDir dir;
-        const QString pdf = dir.filePath(QStringLiteral("cancelled.pdf"));
+        ReportFixture f;
+        QSignalSpy messages(&f.files, &FileController::statusMessage);
         WorkersHeld held; // the report cannot end before Cancel is pressed
-        QVERIFY(files.exportReportTo(pdf));
-        QVERIFY(prompts.cancel); // the progress shown can cancel the report
-        prompts.pressCancel();
+        QVERIFY(f.files.exportReportTo(f.pdf));
+        QVERIFY(f.prompts.cancel); // the progress shown can cancel the report
+        f.prompts.pressCancel();
         held.release();
-        QVERIFY(finished.wait(60000));
-        QVERIFY(!finished.last().constFirst().toBool());
-        QVERIFY(!QFileInfo::exists(pdf));
+        QVERIFY(f.finished.wait(60000));
+        QVERIFY(!f.finished.last().constFirst().toBool());
+        QVERIFY(!QFileInfo::exists(f.pdf));
         QVERIFY(messages.last().constFirst().toString().contains(QStringLiteral("cancelled")));
-        QVERIFY(!files.isWritingReport());
+        QVERIFY(!f.files.isWritingReport());
     }
 
     // Cancel pressed once the computations have ended but before their result is drawn: still
     // nothing on disk.
     void cancelAfterTheComputationsWritesNothing()
     {
-        ProjectDocument document;
-        RecentFiles recent;
-        CancellingPrompts prompts;
-        FileController files(document, recent, prompts);
-        QVERIFY(files.openFile(example("stepped-shaft-chuck.tolturn")));
-        QSignalSpy finished(&files, &FileController::reportFinished);
-        QTemporaryDir dir;
-        const QString pdf = dir.filePath(QStringLiteral("late.pdf"));
-        QVERIFY(files.exportReportTo(pdf));
+        ReportFixture f;
+        QVERIFY(f.files.exportReportTo(f.pdf));
         QVERIFY(workerThreads()->waitForDone(60000)); // computed; the result waits in the event queue
-        prompts.pressCancel();
-        QVERIFY(finished.wait(60000));
-        QVERIFY(!finished.last().constFirst().toBool());
-        QVERIFY(!QFileInfo::exists(pdf));
+        f.prompts.pressCancel();
+        QVERIFY(f.finished.wait(60000));
+        QVERIFY(!f.finished.last().constFirst().toBool());
+        QVERIFY(!QFileInfo::exists(f.pdf));
     }
 
     // The toolbar's icons are TolTurn's SVGs, drawn sharp at twice the size (High-DPI).

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The one owner of the set-up's predictions: what it hands the panels for a project, a set-up of
 // several, one with problems and none, against the core's own evaluations of the same set-up.
-#include "core/io/project_file.h"
+#include "tests/core/test_support.h"
+
 #include "core/project/keywords.h"
 #include "core/project/operations.h"
 #include "widgets/document/project_analysis.h"
@@ -14,19 +15,6 @@
 #include <vector>
 
 using namespace tolturn;
-
-namespace {
-
-Project example(const char *name)
-{
-    const ProjectParseResult read =
-        readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name));
-    if (!read.project)
-        qFatal("cannot read %s", name);
-    return *read.project;
-}
-
-} // namespace
 
 class TestProjectAnalysis : public QObject {
     Q_OBJECT
@@ -48,7 +36,7 @@ private Q_SLOTS:
     void predictsTheSetUpOverTheStiffnessRange()
     {
         ProjectDocument document;
-        document.load(example("stepped-shaft-chuck.tolturn"), QString());
+        document.load(test::exampleProject("stepped-shaft-chuck.tolturn"), QString());
         ProjectAnalysis analysis(document);
         QSignalSpy predicted(&analysis, &ProjectAnalysis::predicted);
         analysis.recompute();
@@ -74,7 +62,7 @@ private Q_SLOTS:
     void predictsTheSetUpShown()
     {
         ProjectDocument document;
-        document.load(example("bushing-two-setups.tolturn"), QString());
+        document.load(test::exampleProject("bushing-two-setups.tolturn"), QString());
         ProjectAnalysis analysis(document);
         QSignalSpy predicted(&analysis, &ProjectAnalysis::predicted);
         analysis.setOperation(1);
@@ -95,7 +83,7 @@ private Q_SLOTS:
     void saysWhyAProjectWithProblemsIsNotPredicted()
     {
         ProjectDocument document;
-        Project broken = example("stepped-shaft-chuck.tolturn");
+        Project broken = test::exampleProject("stepped-shaft-chuck.tolturn");
         broken.part.stockDiameter_mm = 1.0; // thinner than the part
         document.load(broken, QString());
         QVERIFY(document.hasProblems());
@@ -115,7 +103,7 @@ private Q_SLOTS:
     void oneChangeNoticePerAction()
     {
         ProjectDocument document;
-        const Project original = example("stepped-shaft-chuck.tolturn");
+        const Project original = test::exampleProject("stepped-shaft-chuck.tolturn");
         document.load(original, QString());
         QSignalSpy changed(&document, &ProjectDocument::projectChanged);
         std::vector<CuttingPass> passes = original.passes;
