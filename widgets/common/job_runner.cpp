@@ -37,7 +37,6 @@ void JobRunner::cancel()
 Progress JobRunner::beginJob(const std::shared_ptr<Job> &job)
 {
     m_progress.stop(); // the job this one replaces
-    ++m_currentId;
     m_currentJob = job;
     m_running = true;
     // The observer runs on the worker: it keeps the fraction and queues one update at a time.
@@ -58,17 +57,17 @@ void JobRunner::showProgress(const std::shared_ptr<Job> &job)
         Q_EMIT progressChanged(job->fraction.load());
 }
 
-bool JobRunner::endJob(unsigned id)
+bool JobRunner::endJob(const std::shared_ptr<Job> &job)
 {
-    if (id != m_currentId)
+    if (job != m_currentJob)
         return false;
     m_running = false;
     return true;
 }
 
-void JobRunner::jobFailed(unsigned id, const QString &what)
+void JobRunner::jobFailed(const std::shared_ptr<Job> &job, const QString &what)
 {
-    if (!endJob(id))
+    if (!endJob(job))
         return;
     Q_EMIT failed(what);
     Q_EMIT finished();

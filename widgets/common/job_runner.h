@@ -78,11 +78,10 @@ private:
     // A new job: the older one stopped, a Progress whose reports become progressChanged().
     [[nodiscard]] Progress beginJob(const std::shared_ptr<Job> &job);
     void showProgress(const std::shared_ptr<Job> &job);
-    // Whether `id` is still the current job; ends it when so.
-    [[nodiscard]] bool endJob(unsigned id);
-    void jobFailed(unsigned id, const QString &what);
+    // Whether `job` is still the current one; ends it when so.
+    [[nodiscard]] bool endJob(const std::shared_ptr<Job> &job);
+    void jobFailed(const std::shared_ptr<Job> &job, const QString &what);
 
-    unsigned m_currentId = 0;
     std::shared_ptr<Job> m_currentJob;
     bool m_running = false;
     Progress m_progress; // the current job's, which cancel() stops
@@ -95,35 +94,34 @@ void JobRunner::start(Work work, Done done)
     using Result = std::invoke_result_t<Work &, const Progress &>;
     auto job = std::make_shared<Job>();
     const Progress progress = beginJob(job);
-    const unsigned id = m_currentId;
     // Not waited for through its QFuture: a job the pool drops before it starts never finishes one.
-    (void)QtConcurrent::run(
-        workerThreads(), [this, gate = m_gate, id, progress, work = std::move(work), done = std::move(done)]() mutable {
-            if (!gate->enter())
-                return; // the runner is gone: nothing to report to
-            try {
-                auto result = std::make_shared<Result>(work(progress));
-                // Queued: the runner waits for this job before it goes, and drops its pending calls.
-                QMetaObject::invokeMethod(
-                    this,
-                    [this, id, result, done = std::move(done)]() mutable {
-                        Q_ASSERT(QThread::currentThread() == thread());
-                        if (!endJob(id))
-                            return; // replaced by a newer job
-                        done(std::move(*result));
-                        Q_EMIT finished();
-                    },
-                    Qt::QueuedConnection);
-            } catch (const std::exception &e) {
-                QMetaObject::invokeMethod(
-                    this, [this, id, what = QString::fromLocal8Bit(e.what())] { jobFailed(id, what); },
-                    Qt::QueuedConnection);
-            } catch (...) {
-                QMetaObject::invokeMethod(
-                    this, [this, id] { jobFailed(id, QStringLiteral("unknown exception")); }, Qt::QueuedConnection);
-            }
-            gate->leave();
-        });
+    (void)QtConcurrent::run(workerThreads(), [this, gate = m_gate, job, progress, work = std::move(work),
+                                              done = std::move(done)]() mutable {
+        if (!gate->enter())
+            return; // the runner is gone: nothing to report to
+        try {
+            auto result = std::make_shared<Result>(work(progress));
+            // Queued: the runner waits for this job before it goes, and drops its pending calls.
+            QMetaObject::invokeMethod(
+                this,
+                [this, job, result, done = std::move(done)]() mutable {
+                    Q_ASSERT(QThread::currentThread() == thread());
+                    if (!endJob(job))
+                        return; // replaced by a newer job
+                    done(std::move(*result));
+                    Q_EMIT finished();
+                },
+                Qt::QueuedConnection);
+        } catch (const std::exception &e) {
+            QMetaObject::invokeMethod(
+                this, [this, job, what = QString::fromLocal8Bit(e.what())] { jobFailed(job, what); },
+                Qt::QueuedConnection);
+        } catch (...) {
+            QMetaObject::invokeMethod(
+                this, [this, job] { jobFailed(job, QStringLiteral("unknown exception")); }, Qt::QueuedConnection);
+        }
+        gate->leave();
+    });
 }
 
 } // namespace tolturn
