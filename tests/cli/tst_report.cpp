@@ -270,6 +270,82 @@ private Q_SLOTS:
         QVERIFY(pdfText(path).contains(QStringLiteral("Stepped shaft")));
     }
 
+    // A long part name fits the title block: set smaller, never cut. Every word of the title and of
+    // the Part field (by its box from pdftotext -bbox) lies inside its own box, worked out from the
+    // layout in points: the block starts at the 48 pt margin; the title is inset 10 pt left and right
+    // and 6 pt from the top, above the row of fields 30 pt below the block's top; the Part cell is
+    // 17 % of the 499 pt text width and 40 pt high. A name too long for the smallest
+    // size ends in an ellipsis.
+    void longPartNameFitsTheTitleBlock_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<bool>("shortened");
+        QTest::newRow("three lines at 9 px") << QStringLiteral("Valve body bored from both ends") << false;
+        QTest::newRow("too long for any size")
+            << QStringLiteral("Hydraulic cylinder piston rod with two ground bearing seats, a thread relief "
+                              "groove and a cross hole for the locking pin, second revision")
+            << true;
+    }
+
+    void longPartNameFitsTheTitleBlock()
+    {
+        QFETCH(QString, name);
+        QFETCH(bool, shortened);
+        tolturn::ProjectParseResult read = tolturn::readProjectFile(example("valve-body-two-bores.tolturn"));
+        QVERIFY(read.project);
+        tolturn::Project project = *read.project;
+        project.part.name = name;
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("long-name.tolturn"));
+        QVERIFY(tolturn::test::writeFile(file, tolturn::serializeProjectJson(project)));
+        const QString pdf = dir.filePath(QStringLiteral("r.pdf"));
+        const Run r = runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, file});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const Run boxes = runProgram(QStringLiteral("pdftotext"), {QStringLiteral("-bbox"), QStringLiteral("-l"),
+                                                                   QStringLiteral("1"), pdf, QStringLiteral("-")});
+        QCOMPARE(boxes.exitCode, 0);
+
+        struct Box {
+            double left, top, right, bottom;
+        };
+
+        const Box title{48.0 + 10.0, 48.0 + 6.0, 48.0 + 499.0 - 10.0, 48.0 + 30.0};
+        const Box partCell{48.0, 48.0 + 30.0, 48.0 + 0.17 * 499.0, 48.0 + 30.0 + 40.0};
+        const Box partValue{partCell.left, partCell.top + 10.0, partCell.right, partCell.bottom}; // below "Part"
+        // The words whose top left corner is in `b` (pdftotext's glyph boxes may start a fraction of a
+        // point above the line Qt set them on), each checked to end inside it.
+        const auto wordsIn = [&](const Box &b) {
+            static const QRegularExpression word(QStringLiteral(
+                "xMin=\"([0-9.]+)\" yMin=\"([0-9.]+)\" xMax=\"([0-9.]+)\" yMax=\"([0-9.]+)\">([^<]*)</word>"));
+            QStringList words;
+            for (auto it = word.globalMatch(boxes.out); it.hasNext();) {
+                const QRegularExpressionMatch m = it.next();
+                const double x0 = m.captured(1).toDouble(), y0 = m.captured(2).toDouble();
+                const double x1 = m.captured(3).toDouble(), y1 = m.captured(4).toDouble();
+                if (x0 < b.left - 1.0 || x0 > b.right || y0 < b.top - 1.0 || y0 > b.bottom)
+                    continue;
+                if (x1 > b.right + 0.5 || y1 > b.bottom + 0.5)
+                    return QStringList{QStringLiteral("'%1' overflows to (%2, %3)").arg(m.captured(5)).arg(x1).arg(y1)};
+                words << m.captured(5);
+            }
+            return words;
+        };
+        const QString titleText = wordsIn(title).join(QLatin1Char(' '));
+        const QString cellText = wordsIn(partValue).join(QLatin1Char(' '));
+        const QString expectedTitle = QStringLiteral("Tolerance report: ") + name;
+        if (!shortened) {
+            QCOMPARE(titleText, expectedTitle);
+            QCOMPARE(cellText, name);
+            return;
+        }
+        for (const QString &shown : {titleText, cellText}) {
+            QVERIFY2(shown.endsWith(QChar(0x2026)), qPrintable(shown));
+            QVERIFY2(shown.size() > 10, qPrintable(shown));
+        }
+        QVERIFY2(expectedTitle.startsWith(titleText.chopped(1).trimmed()), qPrintable(titleText));
+        QVERIFY2(name.startsWith(cellText.chopped(1).trimmed()), qPrintable(cellText));
+    }
+
     // No page holds only a few lines: on every page but the last, the content (words, by their
     // boxes from pdftotext -bbox, the footer left out) reaches below the middle of the page.
     void pagesAreFilled()

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QFont>
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPicture>
 #include <QString>
@@ -37,6 +38,32 @@ inline QFont font(double pixels, bool bold = false)
     f.setPixelSize(static_cast<int>(std::lround(pixels))); // pixels = points here: no DPI surprises on replay
     f.setBold(bold);
     return f;
+}
+
+// Draws `text` wrapped in `box` at the largest size from `largest` down to `smallest` pixels at which
+// it fits; at the smallest, words are dropped from the end behind an ellipsis until it does. A long
+// part name is set smaller, and one too long even then is shortened: it is never cut through a line.
+inline void drawFitted(QPainter &painter, const QRectF &box, const QString &text, int largest, int smallest, bool bold)
+{
+    const int flags = Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap;
+    const auto fits = [&](const QString &shown) {
+        const QRectF needed = painter.boundingRect(QRectF(box.topLeft(), QSizeF(box.width(), 1e4)), flags, shown);
+        return needed.height() <= box.height() && needed.width() <= box.width();
+    };
+    for (int pixels = largest; pixels >= smallest; --pixels) {
+        painter.setFont(font(pixels, bold));
+        if (fits(text))
+            break;
+    }
+    QString shown = text;
+    QStringList words = text.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    while (!fits(shown) && words.size() > 1) {
+        words.removeLast();
+        shown = words.join(QLatin1Char(' ')) + QChar(0x2026);
+    }
+    if (!fits(shown)) // one word wider than the box
+        shown = QFontMetricsF(painter.font()).elidedText(text, Qt::ElideRight, box.width());
+    painter.drawText(box, flags, shown);
 }
 
 // Records the report page by page as pictures (vectors), flowing content down and breaking pages.

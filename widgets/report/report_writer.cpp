@@ -42,6 +42,7 @@ namespace tolturn {
 
 namespace {
 
+using report::drawFitted;
 using report::font;
 using report::kMargin;
 using report::kPageHeight;
@@ -73,12 +74,11 @@ void titleBlock(Layout &l, const Project &p, const ReportHeader &header)
         painter.fillRect(r, QColor(0xf2, 0xf5, 0xf9));
         painter.setPen(QColor(0x1f, 0x4e, 0x9a));
         painter.drawRect(r);
-        painter.setFont(font(16, true));
-        painter.drawText(r.adjusted(10, 6, -10, -60), Qt::AlignLeft | Qt::AlignTop,
-                         Report::tr("Tolerance report: %1").arg(fields.front().second));
+        const double top = r.top() + 30; // the row of fields
+        drawFitted(painter, QRectF(r.left() + 10, r.top() + 6, r.width() - 20, top - r.top() - 6),
+                   Report::tr("Tolerance report: %1").arg(fields.front().second), 16, 12, true);
         const double widths[] = {0.17, 0.14, 0.08, 0.12, 0.15, 0.14, 0.20};
         double x = r.left();
-        const double top = r.top() + 30;
         for (std::size_t i = 0; i < fields.size(); ++i) {
             const QRectF cell(x, top, widths[i] * r.width(), 40);
             painter.setPen(QColor(0xbb, 0xbb, 0xbb));
@@ -87,17 +87,15 @@ void titleBlock(Layout &l, const Project &p, const ReportHeader &header)
             painter.setFont(font(7));
             painter.drawText(cell.adjusted(3, 2, -3, -2), Qt::AlignLeft | Qt::AlignTop, fields[i].first);
             painter.setPen(Qt::black);
-            painter.setFont(font(9, true));
-            painter.drawText(cell.adjusted(3, 12, -3, -2), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
-                             fields[i].second);
+            drawFitted(painter, cell.adjusted(3, 12, -3, -2), fields[i].second, 9, 7, true);
             x += cell.width();
         }
-        painter.setFont(font(8));
-        painter.drawText(
-            r.adjusted(10, 72, -10, -2), Qt::AlignLeft | Qt::AlignTop,
-            Report::tr("Project %1 · written %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
-                .arg(header.projectName, QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")),
-                     tolturnVersion(), dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm)));
+        drawFitted(painter, r.adjusted(10, 72, -10, -2),
+                   Report::tr("Project %1 · written %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
+                       .arg(header.projectName,
+                            QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")), tolturnVersion(),
+                            dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm)),
+                   8, 6, false);
     });
 }
 
