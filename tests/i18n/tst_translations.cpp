@@ -225,6 +225,33 @@ private Q_SLOTS:
         QCOMPARE(iso286::fitTypeKeyword(iso286::FitType::Clearance), QStringLiteral("clearance"));
         QCOMPARE(keyword(ClampingMethod::BetweenCentres), QStringLiteral("centres"));
     }
+
+    // Qt's own texts (the standard buttons of every dialog: Save, Cancel, Yes) come in the same
+    // language as TolTurn's, from Qt's catalogue (Debian's qt6-translations-l10n): a German window
+    // does not ask "Speichern?" above an English "Cancel".
+    void qtStandardButtonsTranslated_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("cancel");
+        QTest::addColumn<QString>("save");
+        QTest::addColumn<QString>("yes");
+        QTest::newRow("German") << QStringLiteral("de") << QStringLiteral("Abbrechen") << QStringLiteral("Speichern")
+                                << QStringLiteral("&Ja");
+        QTest::newRow("Spanish") << QStringLiteral("es") << QStringLiteral("Cancelar") << QStringLiteral("Guardar")
+                                 << QString::fromUtf8("&Sí");
+    }
+
+    void qtStandardButtonsTranslated()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, cancel);
+        QFETCH(QString, save);
+        QFETCH(QString, yes);
+        installTranslations(*QCoreApplication::instance(), QLocale(language));
+        QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), cancel);
+        QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Save"), save);
+        QCOMPARE(QCoreApplication::translate("QPlatformTheme", "&Yes"), yes);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestTranslations)
