@@ -270,33 +270,41 @@ private Q_SLOTS:
         QVERIFY(pdfText(path).contains(QStringLiteral("Stepped shaft")));
     }
 
-    // A long part name fits the title block: set smaller, never cut. Every word of the title and of
-    // the Part field (by its box from pdftotext -bbox) lies inside its own box, worked out from the
-    // layout in points: the block starts at the 48 pt margin; the title is inset 10 pt left and right
-    // and 6 pt from the top, above the row of fields 30 pt below the block's top; the Part cell is
-    // 17 % of the 499 pt text width and 40 pt high. A name too long for the smallest
-    // size ends in an ellipsis.
-    void longPartNameFitsTheTitleBlock_data()
+    // Long names fit the report: set smaller or shortened, never cut through or run over. Every word
+    // of the title, the Part field and the project line (by its box from pdftotext -bbox) lies inside
+    // the box it is drawn in, worked out from the layout in points: the title block starts at the
+    // 48 pt margin; the title is inset 10 pt left and right and 6 pt from the top, above the row of
+    // fields 30 pt below the block's top; the Part field's text is inset 3 pt in a cell 17 % of the
+    // 499 pt text width, 12 pt below the cell's top and 2 pt above its bottom 40 pt down; the project
+    // line is inset 10 pt, 72 pt below the block's top, and keeps its dimensions at its end. In the
+    // footer the name stops before the page count. A name too long for the smallest size ends in an
+    // ellipsis.
+    void longNamesFitTheReport_data()
     {
         QTest::addColumn<QString>("name");
+        QTest::addColumn<QString>("fileName");
         QTest::addColumn<bool>("shortened");
-        QTest::newRow("three lines at 9 px") << QStringLiteral("Valve body bored from both ends") << false;
+        QTest::newRow("three lines at 9 px")
+            << QStringLiteral("Valve body bored from both ends") << QStringLiteral("valve.tolturn") << false;
         QTest::newRow("too long for any size")
             << QStringLiteral("Hydraulic cylinder piston rod with two ground bearing seats, a thread relief "
                               "groove and a cross hole for the locking pin, second revision")
+            << QStringLiteral("hydraulic-cylinder-piston-rod-with-two-ground-bearing-seats-thread-relief-groove-"
+                              "and-cross-hole-for-the-locking-pin-second-revision.tolturn")
             << true;
     }
 
-    void longPartNameFitsTheTitleBlock()
+    void longNamesFitTheReport()
     {
         QFETCH(QString, name);
+        QFETCH(QString, fileName);
         QFETCH(bool, shortened);
         tolturn::ProjectParseResult read = tolturn::readProjectFile(example("valve-body-two-bores.tolturn"));
         QVERIFY(read.project);
         tolturn::Project project = *read.project;
         project.part.name = name;
         QTemporaryDir dir;
-        const QString file = dir.filePath(QStringLiteral("long-name.tolturn"));
+        const QString file = dir.filePath(fileName);
         QVERIFY(tolturn::test::writeFile(file, tolturn::serializeProjectJson(project)));
         const QString pdf = dir.filePath(QStringLiteral("r.pdf"));
         const Run r = runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, file});
@@ -309,41 +317,84 @@ private Q_SLOTS:
             double left, top, right, bottom;
         };
 
-        const Box title{48.0 + 10.0, 48.0 + 6.0, 48.0 + 499.0 - 10.0, 48.0 + 30.0};
-        const Box partCell{48.0, 48.0 + 30.0, 48.0 + 0.17 * 499.0, 48.0 + 30.0 + 40.0};
-        const Box partValue{partCell.left, partCell.top + 10.0, partCell.right, partCell.bottom}; // below "Part"
+        struct Word {
+            QString text;
+            double left, top, right, bottom;
+        };
+
+        std::vector<Word> page;
+        static const QRegularExpression word(QStringLiteral(
+            "xMin=\"([0-9.]+)\" yMin=\"([0-9.]+)\" xMax=\"([0-9.]+)\" yMax=\"([0-9.]+)\">([^<]*)</word>"));
+        for (auto it = word.globalMatch(boxes.out); it.hasNext();) {
+            const QRegularExpressionMatch m = it.next();
+            page.push_back({m.captured(5), m.captured(1).toDouble(), m.captured(2).toDouble(), m.captured(3).toDouble(),
+                            m.captured(4).toDouble()});
+        }
         // The words whose top left corner is in `b` (pdftotext's glyph boxes may start a fraction of a
         // point above the line Qt set them on), each checked to end inside it.
         const auto wordsIn = [&](const Box &b) {
-            static const QRegularExpression word(QStringLiteral(
-                "xMin=\"([0-9.]+)\" yMin=\"([0-9.]+)\" xMax=\"([0-9.]+)\" yMax=\"([0-9.]+)\">([^<]*)</word>"));
             QStringList words;
-            for (auto it = word.globalMatch(boxes.out); it.hasNext();) {
-                const QRegularExpressionMatch m = it.next();
-                const double x0 = m.captured(1).toDouble(), y0 = m.captured(2).toDouble();
-                const double x1 = m.captured(3).toDouble(), y1 = m.captured(4).toDouble();
-                if (x0 < b.left - 1.0 || x0 > b.right || y0 < b.top - 1.0 || y0 > b.bottom)
+            for (const Word &w : page) {
+                if (w.left < b.left - 1.0 || w.left > b.right || w.top < b.top - 1.0 || w.top > b.bottom)
                     continue;
-                if (x1 > b.right + 0.5 || y1 > b.bottom + 0.5)
-                    return QStringList{QStringLiteral("'%1' overflows to (%2, %3)").arg(m.captured(5)).arg(x1).arg(y1)};
-                words << m.captured(5);
+                if (w.right > b.right + 0.5 || w.bottom > b.bottom + 0.5)
+                    return QStringList{
+                        QStringLiteral("'%1' overflows to (%2, %3)").arg(w.text).arg(w.right).arg(w.bottom)};
+                words << w.text;
             }
             return words;
         };
+        const double top = 48.0;
+        const Box title{48.0 + 10.0, top + 6.0, 48.0 + 499.0 - 10.0, top + 30.0};
+        const Box partValue{48.0 + 3.0, top + 30.0 + 12.0, 48.0 + 0.17 * 499.0 - 3.0, top + 30.0 + 40.0 - 2.0};
+        const Box projectLine{48.0 + 10.0, top + 72.0, 48.0 + 499.0 - 10.0, top + 92.0 - 2.0};
         const QString titleText = wordsIn(title).join(QLatin1Char(' '));
         const QString cellText = wordsIn(partValue).join(QLatin1Char(' '));
+        const QStringList projectWords = wordsIn(projectLine);
+        QVERIFY2(projectWords.size() > 5 && projectWords.constLast() == QStringLiteral("mm") &&
+                     projectWords.at(projectWords.size() - 3) == QStringLiteral("stock"),
+                 qPrintable(projectWords.join(QLatin1Char(' '))));
+
+        // The footer, in the bottom margin: the name's words end before the page count begins.
+        constexpr double kFooterTop = 842.0 - 48.0;
+        QStringList footer;
+        double pageCountStart = 0.0;
+        double nameEnd = 0.0;
+        for (const Word &w : page) {
+            if (w.top < kFooterTop - 1.0)
+                continue;
+            if (w.text == QStringLiteral("page"))
+                pageCountStart = w.left;
+            else if (pageCountStart == 0.0) {
+                footer << w.text;
+                nameEnd = std::max(nameEnd, w.right);
+            }
+        }
+        QVERIFY2(pageCountStart > 0.0 && nameEnd < pageCountStart - 1.0,
+                 qPrintable(QStringLiteral("%1 ends at %2, page count at %3")
+                                .arg(footer.join(QLatin1Char(' ')))
+                                .arg(nameEnd)
+                                .arg(pageCountStart)));
+
         const QString expectedTitle = QStringLiteral("Tolerance report: ") + name;
         if (!shortened) {
             QCOMPARE(titleText, expectedTitle);
             QCOMPARE(cellText, name);
+            QVERIFY2(projectWords.contains(fileName), qPrintable(projectWords.join(QLatin1Char(' '))));
+            QVERIFY2(footer.join(QLatin1Char(' ')).endsWith(name), qPrintable(footer.join(QLatin1Char(' '))));
             return;
         }
-        for (const QString &shown : {titleText, cellText}) {
+        for (const QString &shown : {titleText, cellText, footer.join(QLatin1Char(' '))}) {
             QVERIFY2(shown.endsWith(QChar(0x2026)), qPrintable(shown));
             QVERIFY2(shown.size() > 10, qPrintable(shown));
         }
         QVERIFY2(expectedTitle.startsWith(titleText.chopped(1).trimmed()), qPrintable(titleText));
         QVERIFY2(name.startsWith(cellText.chopped(1).trimmed()), qPrintable(cellText));
+        // The file name keeps its start and its extension, shortened in the middle.
+        QVERIFY2(projectWords.at(1).startsWith(QStringLiteral("hydraulic-")) &&
+                     projectWords.at(1).endsWith(QStringLiteral(".tolturn")) &&
+                     projectWords.at(1).contains(QChar(0x2026)),
+                 qPrintable(projectWords.join(QLatin1Char(' '))));
     }
 
     // No page holds only a few lines: on every page but the last, the content (words, by their

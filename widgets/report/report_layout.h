@@ -10,6 +10,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -41,10 +42,13 @@ inline QFont font(double pixels, bool bold = false)
 }
 
 // Draws `text` wrapped in `box` at the largest size from `largest` down to `smallest` pixels at which
-// it fits; at the smallest, words are dropped from the end behind an ellipsis until it does. A long
-// part name is set smaller, and one too long even then is shortened: it is never cut through a line.
+// it fits; at the smallest, words are dropped from the end behind an ellipsis until it does (a word
+// wider than the box is shortened itself only when it is the first). A long part name is set
+// smaller, and one too long even then is shortened: it is never cut through a line. Leaves the
+// painter's font at the size chosen.
 inline void drawFitted(QPainter &painter, const QRectF &box, const QString &text, int largest, int smallest, bool bold)
 {
+    Q_ASSERT(largest >= smallest);
     const int flags = Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap;
     const auto fits = [&](const QString &shown) {
         const QRectF needed = painter.boundingRect(QRectF(box.topLeft(), QSizeF(box.width(), 1e4)), flags, shown);
@@ -62,8 +66,19 @@ inline void drawFitted(QPainter &painter, const QRectF &box, const QString &text
         shown = words.join(QLatin1Char(' ')) + QChar(0x2026);
     }
     if (!fits(shown)) // one word wider than the box
-        shown = QFontMetricsF(painter.font()).elidedText(text, Qt::ElideRight, box.width());
+        shown = QFontMetricsF(painter.font(), painter.device()).elidedText(text, Qt::ElideRight, box.width());
     painter.drawText(box, flags, shown);
+}
+
+// `line`, whose only placeholder %1 stands for `name`, with the name shortened (`mode`) as far as
+// the line must be to fit `width` in the painter's font: the rest of the line (numbers, a page
+// count) is never what is lost.
+inline QString withNameFitted(const QPainter &painter, const QString &line, const QString &name, double width,
+                              Qt::TextElideMode mode = Qt::ElideRight)
+{
+    const QFontMetricsF metrics(painter.font(), painter.device());
+    const double forName = std::max(0.0, width - metrics.horizontalAdvance(QString(line).arg(QString())));
+    return QString(line).arg(metrics.elidedText(name, mode, forName));
 }
 
 // Records the report page by page as pictures (vectors), flowing content down and breaking pages.

@@ -50,6 +50,7 @@ using report::kPlotTextScale;
 using report::kWidth;
 using report::Layout;
 using report::num;
+using report::withNameFitted;
 
 struct Report {
     Q_DECLARE_TR_FUNCTIONS(Report)
@@ -90,12 +91,15 @@ void titleBlock(Layout &l, const Project &p, const ReportHeader &header)
             drawFitted(painter, cell.adjusted(3, 12, -3, -2), fields[i].second, 9, 7, true);
             x += cell.width();
         }
-        drawFitted(painter, r.adjusted(10, 72, -10, -2),
-                   Report::tr("Project %1 · written %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
-                       .arg(header.projectName,
-                            QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")), tolturnVersion(),
-                            dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm)),
-                   8, 6, false);
+        // A long project file name is shortened in the middle, keeping its extension; the dimensions stay.
+        painter.setFont(font(8));
+        const QRectF line = r.adjusted(10, 72, -10, -2);
+        const QString projectLine =
+            Report::tr("Project %1 · written %2 · TolTurn %3 · length %4 mm, stock Ø%5 mm")
+                .arg(QStringLiteral("%1"), QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd hh:mm")),
+                     tolturnVersion(), dimensionText(p.part.length_mm()), dimensionText(p.part.stockDiameter_mm));
+        painter.drawText(line, Qt::AlignLeft | Qt::AlignTop,
+                         withNameFitted(painter, projectLine, header.projectName, line.width(), Qt::ElideMiddle));
     });
 }
 
@@ -545,10 +549,14 @@ QByteArray pdfOf(const std::vector<std::unique_ptr<QPicture>> &pages, const Proj
             painter.restore();
             painter.setFont(font(8));
             painter.setPen(QColor(0x66, 0x66, 0x66));
-            painter.drawText(QRectF(kMargin, kPageHeight - kMargin, kWidth, 14), Qt::AlignLeft | Qt::AlignVCenter,
-                             QStringLiteral("TolTurn %1 — %2").arg(tolturnVersion(), project.part.name));
-            painter.drawText(QRectF(kMargin, kPageHeight - kMargin, kWidth, 14), Qt::AlignRight | Qt::AlignVCenter,
-                             Report::tr("page %1 of %2").arg(i + 1).arg(pages.size()));
+            const QRectF footer(kMargin, kPageHeight - kMargin, kWidth, 14);
+            const QString pageCount = Report::tr("page %1 of %2").arg(i + 1).arg(pages.size());
+            const double forPageCount = QFontMetricsF(painter.font(), painter.device()).horizontalAdvance(pageCount);
+            painter.drawText(
+                footer, Qt::AlignLeft | Qt::AlignVCenter,
+                withNameFitted(painter, QStringLiteral("TolTurn %1 — %2").arg(tolturnVersion(), QStringLiteral("%1")),
+                               project.part.name, footer.width() - forPageCount - 12.0));
+            painter.drawText(footer, Qt::AlignRight | Qt::AlignVCenter, pageCount);
             painter.restore();
         }
     }
