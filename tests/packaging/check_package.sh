@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the .deb with cpack from a configured and built tree, then checks that it installs
 # both programs, the desktop file, the icon, the AppStream metainfo and the examples, and that
-# the desktop file and metainfo pass their validators.
+# the desktop file and metainfo pass their validators, and that it depends on and recommends the
+# packages Qt's plugins, the solid check and the translations need (dpkg-shlibdeps cannot see them).
 set -eu
 build_dir=$1
 source_dir=$2
@@ -32,6 +33,14 @@ case "$depends" in
 *libqt6widgets6*) ;;
 *) echo "Depends lacks libqt6widgets6 (dpkg-shlibdeps did not run?)"; status=1 ;;
 esac
+recommends=$(dpkg-deb -f "$deb" Recommends)
+echo "Recommends: $recommends"
+for wanted in libqt6sql6-psql gmsh calculix-ccx qt6-translations-l10n; do
+    case ", $recommends," in
+    *", $wanted,"*) ;;
+    *) echo "Recommends lacks $wanted"; status=1 ;;
+    esac
+done
 desktop-file-validate "$source_dir/packaging/linux/org.tolturn.TolTurn.desktop"
 appstreamcli validate --no-net --pedantic "$source_dir/packaging/linux/org.tolturn.TolTurn.metainfo.xml" || {
     # pedantic findings are printed; only errors and warnings fail the check
