@@ -12,6 +12,7 @@
 #include "app/gui/main_window.h"
 #include "app/gui/recent_files.h"
 #include "core/cad/step_export.h"
+#include "core/cad/step_import.h"
 #include "core/io/project_file.h"
 #include "widgets/common/diagnostics_panel.h"
 #include "widgets/document/project_document.h"
@@ -213,6 +214,53 @@ private Q_SLOTS:
                 clampingDiameterAtRight || (s.kind == SegmentKind::Cylinder && std::abs(s.from.r_mm - 28.0) < 1e-3 &&
                                             std::abs(s.to.z_mm - 150.0) < 1e-3 && std::abs(s.from.z_mm - 115.0) < 1e-3);
         QVERIFY(clampingDiameterAtRight);
+    }
+
+    // The reader ends when told there are no more choices (its input closed); a choice made after
+    // that reads the file again, in a new reader, and gives the same part as reading it with that
+    // choice at once (importCadFile, in this process). A wrapper logs each reader's start and end.
+    void choiceAfterTheReaderEndedReadsAgain()
+    {
+        QTemporaryDir dir;
+        const QString step = dir.filePath(QStringLiteral("shaft.step"));
+        QVERIFY(exportProfileToStep(stepped(), step).ok);
+        const QString log = dir.filePath(QStringLiteral("readers.log"));
+        const ReaderProgram logged(fakeReader(dir, "echo start >> '" + log.toUtf8() +
+                                                       "'\n'" TOLTURN_CLI_PATH "' \"$@\"\necho end >> '" +
+                                                       log.toUtf8() + "'"));
+        const auto logLines = [&] {
+            QFile file(log);
+            return file.open(QIODevice::ReadOnly)
+                       ? QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts)
+                       : QStringList();
+        };
+        CadReaderProcess reader;
+        QSignalSpy finished(&reader, &CadReaderProcess::finished);
+        reader.start(step, {});
+        QVERIFY(finished.wait(30000));
+        QVERIFY(reader.result().profile);
+        const PartProfile firstRead = *reader.result().profile;
+        QCOMPARE(logLines(), QStringList{QStringLiteral("start")});
+
+        reader.close();
+        QTRY_COMPARE_WITH_TIMEOUT(logLines(), (QStringList{QStringLiteral("start"), QStringLiteral("end")}), 10000);
+
+        CadImportOptions flipped;
+        flipped.flip = true;
+        reader.choose(flipped);
+        QVERIFY(reader.isRunning());
+        QVERIFY(finished.wait(30000));
+        QTRY_COMPARE_WITH_TIMEOUT(logLines().size(), 3, 10000); // start, end, start: a second reader
+        QCOMPARE(logLines().last(), QStringLiteral("start"));
+        const CadImportResult direct = importCadFile(step, flipped);
+        QVERIFY(direct.profile && reader.result().profile);
+        const std::vector<Segment> &want = direct.profile->outer.segments;
+        const std::vector<Segment> &got = reader.result().profile->outer.segments;
+        QCOMPARE(got.size(), want.size());
+        for (std::size_t i = 0; i < want.size(); ++i)
+            QVERIFY2(near(got[i].from, want[i].from) && near(got[i].to, want[i].to), qPrintable(QString::number(i)));
+        // The other end at z = 0: the end face rises to another diameter than in the first read.
+        QVERIFY(!near(got.front().to, firstRead.outer.segments.front().to));
     }
 
     // Not a STEP file: an error naming it, and the open project untouched.
