@@ -42,6 +42,32 @@ QStringList tableRow(const QString &text, const QString &id)
     return line.split(QRegularExpression(QStringLiteral("\\s{2,}")));
 }
 
+// A word of a PDF page and its box in points, as pdftotext -bbox gives them.
+struct Word {
+    QString text;
+    double left, top, right, bottom;
+};
+
+// The words of every page of `pdf`, page by page.
+std::vector<std::vector<Word>> pageWords(const QString &pdf)
+{
+    const Run boxes = runProgram(QStringLiteral("pdftotext"), {QStringLiteral("-bbox"), pdf, QStringLiteral("-")});
+    if (boxes.exitCode != 0)
+        qFatal("pdftotext -bbox failed: %s", qPrintable(boxes.err));
+    static const QRegularExpression word(
+        QStringLiteral("xMin=\"([0-9.]+)\" yMin=\"([0-9.]+)\" xMax=\"([0-9.]+)\" yMax=\"([0-9.]+)\">([^<]*)</word>"));
+    std::vector<std::vector<Word>> pages;
+    for (const QString &page : boxes.out.split(QStringLiteral("<page ")).mid(1)) { // [0] is the document's head
+        pages.emplace_back();
+        for (auto it = word.globalMatch(page); it.hasNext();) {
+            const QRegularExpressionMatch m = it.next();
+            pages.back().push_back({m.captured(5), m.captured(1).toDouble(), m.captured(2).toDouble(),
+                                    m.captured(3).toDouble(), m.captured(4).toDouble()});
+        }
+    }
+    return pages;
+}
+
 // 001's case 1 (a slot at tilt −15°) as a flat on the stepped shaft, with a tool and holder of the
 // paper's springs, made-up coefficients and a 20 µm flatness; the modulus not given (carbide's).
 tolturn::MilledFeature completeFlat()
@@ -309,27 +335,14 @@ private Q_SLOTS:
         const QString pdf = dir.filePath(QStringLiteral("r.pdf"));
         const Run r = runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, file});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const Run boxes = runProgram(QStringLiteral("pdftotext"), {QStringLiteral("-bbox"), QStringLiteral("-l"),
-                                                                   QStringLiteral("1"), pdf, QStringLiteral("-")});
-        QCOMPARE(boxes.exitCode, 0);
+        const std::vector<std::vector<Word>> pages = pageWords(pdf);
+        QVERIFY(!pages.empty());
+        const std::vector<Word> &page = pages.front();
 
         struct Box {
             double left, top, right, bottom;
         };
 
-        struct Word {
-            QString text;
-            double left, top, right, bottom;
-        };
-
-        std::vector<Word> page;
-        static const QRegularExpression word(QStringLiteral(
-            "xMin=\"([0-9.]+)\" yMin=\"([0-9.]+)\" xMax=\"([0-9.]+)\" yMax=\"([0-9.]+)\">([^<]*)</word>"));
-        for (auto it = word.globalMatch(boxes.out); it.hasNext();) {
-            const QRegularExpressionMatch m = it.next();
-            page.push_back({m.captured(5), m.captured(1).toDouble(), m.captured(2).toDouble(), m.captured(3).toDouble(),
-                            m.captured(4).toDouble()});
-        }
         // The words whose top left corner is in `b` (pdftotext's glyph boxes may start a fraction of a
         // point above the line Qt set them on), each checked to end inside it.
         const auto wordsIn = [&](const Box &b) {
@@ -407,22 +420,18 @@ private Q_SLOTS:
             QTemporaryDir dir;
             const QString pdf = dir.filePath(QStringLiteral("r.pdf"));
             QCOMPARE(runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, example(name)}).exitCode, 0);
-            const Run boxes =
-                runProgram(QStringLiteral("pdftotext"), {QStringLiteral("-bbox"), pdf, QStringLiteral("-")});
-            const QStringList pages = boxes.out.split(QStringLiteral("<page "));
-            static const QRegularExpression word(QStringLiteral("yMax=\"([0-9.]+)\""));
-            constexpr double kPageHeight = 842.0;              // A4 in points
-            constexpr double kFooterTop = kPageHeight - 48.0;  // the footer sits in the bottom margin
-            for (qsizetype i = 1; i + 1 < pages.size(); ++i) { // [0] is the document's head
+            const std::vector<std::vector<Word>> pages = pageWords(pdf);
+            constexpr double kPageHeight = 842.0;             // A4 in points
+            constexpr double kFooterTop = kPageHeight - 48.0; // the footer sits in the bottom margin
+            for (std::size_t i = 0; i + 1 < pages.size(); ++i) {
                 double bottom = 0.0;
-                for (auto it = word.globalMatch(pages[i]); it.hasNext();) {
-                    const double y = it.next().captured(1).toDouble();
-                    if (y < kFooterTop)
-                        bottom = std::max(bottom, y);
-                }
-                QVERIFY2(bottom > kPageHeight / 2.0,
-                         qPrintable(
-                             QStringLiteral("%1: page %2 ends at %3 pt").arg(QLatin1String(name)).arg(i).arg(bottom)));
+                for (const Word &w : pages[i])
+                    if (w.bottom < kFooterTop)
+                        bottom = std::max(bottom, w.bottom);
+                QVERIFY2(
+                    bottom > kPageHeight / 2.0,
+                    qPrintable(
+                        QStringLiteral("%1: page %2 ends at %3 pt").arg(QLatin1String(name)).arg(i + 1).arg(bottom)));
             }
         }
     }
