@@ -6,16 +6,20 @@ checked again.
 What clang-tidy finds in a file is a function of what it reads and how it runs. For every source
 the hash covers: the raw text of the source and of every header it reads (so directives, macros
 and NOLINT comments count), the preprocessed translation unit as clang-tidy parses it (with
-__clang_analyzer__ defined; line markers kept, with each header's path and system-header flag),
-the compile command, the .clang-tidy files above it, the clang-tidy binary and its LLVM libraries,
-this script, and the options it passes. tools/tidy-passed.txt records the hash, with the file's
-path, of every file that passed; a file whose hash is recorded is skipped. The hash is taken again
-after a file passes and recorded only if nothing changed meanwhile. The source and build folders
-are replaced by placeholders, so a record made in one checkout holds in another.
+__clang_analyzer__ defined; line markers kept, with each header's path and system-header flag,
+and whether the header filter lets clang-tidy report in it), the compile command, the .clang-tidy
+files above it, the clang-tidy binary and its LLVM libraries, this script, and the options it
+passes. A file whose input cannot all be read (or when clang++ or ldd is missing) gets no hash and
+is always checked. tools/tidy-passed.txt records the hash, with the file's path, of every file that
+passed; a file whose hash is recorded is skipped. The hash is taken again after a file passes and
+recorded only if nothing changed meanwhile. The source and build folders (each under its real path
+and as CMake spells it, which differ in a checkout reached through a symlink) are replaced by
+placeholders, so a record made in one checkout holds in another.
 
 usage: tools/tidy.py BUILD_DIR [FILE...]   every source, or only the FILEs given;
                                           TOLTURN_TIDY_ALL=1 checks even those recorded
 """
+import codecs
 import concurrent.futures
 import fcntl
 import hashlib
@@ -28,7 +32,8 @@ import subprocess
 import sys
 import tempfile
 
-SOURCE_DIR = os.path.realpath(os.path.join(os.path.dirname(__file__), '..'))
+LOGICAL_SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
+SOURCE_DIR = os.path.realpath(LOGICAL_SOURCE_DIR)
 RECORD = os.path.join(SOURCE_DIR, 'tools', 'tidy-passed.txt')
 # The heaviest translation units (tests and widgets, which include the whole GUI) first and the
 # light core ones last, one file per process, so that neither core idles at the end.
@@ -50,25 +55,43 @@ def sources():
 
 
 class Hasher:
-    def __init__(self, build_dir, tidy_binary, options):
-        self.build_dir = build_dir
+    def __init__(self, folders, tidy_binary, options, checked_headers):
+        self.folders = folders  # (spelling, placeholder), longest spelling first
+        self.checked_headers = checked_headers  # the header filter clang-tidy gets, compiled
         self.clang = os.path.join(os.path.dirname(tidy_binary), 'clang++')  # the preprocessor of clang-tidy's LLVM
         self.options = options
         self.raw = {}  # path -> hash of the file's bytes, for this run
         self.fixed = self.tool_identity(tidy_binary)
 
     def neutral(self, text):
-        """`text` with the build and source folders' paths replaced by placeholders."""
-        return text.replace(self.build_dir, '@BUILD@').replace(SOURCE_DIR, '@SOURCE@')
+        """`text` with every spelling of the build and source folders replaced by a placeholder."""
+        for spelling, placeholder in self.folders:
+            text = text.replace(spelling, placeholder)
+        return text
 
     def tool_identity(self, tidy_binary):
+        """The hash of clang-tidy, its libraries, its preprocessor, this script and the options; None,
+        with a message, when one of them cannot be found (then nothing is skipped or recorded)."""
+        if not os.path.exists(self.clang):
+            print(f'tidy: {self.clang} (the preprocessor of this clang-tidy) is missing: '
+                  'every file is checked and none recorded', file=sys.stderr)
+            return None
+        try:
+            run = subprocess.run(['ldd', tidy_binary], capture_output=True, text=True, check=False)
+        except OSError as error:
+            run = subprocess.CompletedProcess([], 1, '', str(error))
+        if run.returncode != 0 and 'not a dynamic executable' not in run.stdout + run.stderr:  # static: none
+            print(f'tidy: the libraries of {tidy_binary} are unknown ({run.stderr.strip()}): '
+                  'every file is checked and none recorded', file=sys.stderr)
+            return None
+        libraries = run.stdout if run.returncode == 0 else ''
         digest = hashlib.sha256()
-        libraries = subprocess.run(['ldd', tidy_binary], capture_output=True, text=True, check=True).stdout
         for path in [tidy_binary, os.path.realpath(__file__), os.path.realpath(self.clang)] + sorted(
                 re.findall(r'=> (\S*(?:clang|LLVM)\S*) ', libraries)):
-            with open(path, 'rb') as f:
-                digest.update(hashlib.file_digest(f, 'sha256').digest() if hasattr(hashlib, 'file_digest')
-                              else hashlib.sha256(f.read()).digest())
+            content = self.file_hash(path)
+            if content is None:
+                return None
+            digest.update(content.encode())
         digest.update(' '.join(self.options).encode())
         return digest.digest()
 
@@ -78,7 +101,7 @@ class Hasher:
                 with open(path, 'rb') as f:
                     self.raw[path] = hashlib.sha256(f.read()).hexdigest()
             except OSError:
-                self.raw[path] = 'unreadable'
+                self.raw[path] = None  # its hash is unknown: the file that reads it is checked
         return self.raw[path]
 
     def configurations(self, path):
@@ -95,6 +118,8 @@ class Hasher:
 
     def input_hash(self, path, entries):
         """The hash of everything clang-tidy reads for `path`, or None (then it is always checked)."""
+        if self.fixed is None:
+            return None
         digest = hashlib.sha256(self.fixed)
         digest.update(self.neutral(os.path.relpath(path, SOURCE_DIR)).encode())
         for entry in entries:
@@ -110,14 +135,23 @@ class Hasher:
             digest.update(self.neutral(run.stdout.decode('utf-8', 'surrogateescape')).encode('utf-8', 'surrogateescape'))
             headers = set()
             for marker in set(LINE_MARKER.findall(run.stdout)):
-                name = marker.decode('utf-8', 'surrogateescape')
+                # The name as written in the marker, with its C escapes (\\, \", octal) undone.
+                name = codecs.escape_decode(marker)[0].decode('utf-8', 'surrogateescape')
                 if not name.startswith('<'):  # not <built-in> or <command line>
                     full = os.path.normpath(os.path.join(entry['directory'], name))
-                    headers.add(f'{self.neutral(full)} {self.file_hash(full)}\n')
+                    content = self.file_hash(full)
+                    if content is None:
+                        return None
+                    # Whether clang-tidy reports in it: the placeholders hide where a build folder lies.
+                    reported = 'reported' if self.checked_headers.search(full) else 'silent'
+                    headers.add(f'{self.neutral(full)} {content} {reported}\n')
             for header in sorted(headers):  # in the order of their neutral paths, the same in every checkout
                 digest.update(header.encode('utf-8', 'surrogateescape'))
         for configuration in self.configurations(path):
-            digest.update(f'{self.neutral(configuration)} {self.file_hash(configuration)}\n'.encode())
+            content = self.file_hash(configuration)
+            if content is None:
+                return None
+            digest.update(f'{self.neutral(configuration)} {content}\n'.encode())
         return digest.hexdigest()
 
 
@@ -174,12 +208,31 @@ def write_record(passed, present):
         print(f'tidy: the record of passed files was not written: {error}', file=sys.stderr)
 
 
-def header_filter():
-    """.clang-tidy's HeaderFilterRegex anchored at this source folder, so that a checkout's own path
-    (which may hold 'app/' or 'tests/') never decides whose headers are checked."""
+def cmake_cache_value(build_dir, name):
+    """A value from the build's CMakeCache.txt, or None."""
+    try:
+        with open(os.path.join(build_dir, 'CMakeCache.txt'), encoding='utf-8') as f:
+            match = re.search(rf'^{name}:[A-Z]+=(.*)$', f.read(), re.MULTILINE)
+    except OSError:
+        return None
+    return match.group(1) if match else None
+
+
+def spellings(*paths):
+    """The distinct absolute spellings of a folder, None and empty ones left out."""
+    return {os.path.normpath(p) for p in paths if p}
+
+
+def header_filter(source_spellings):
+    """.clang-tidy's HeaderFilterRegex, as (the regex clang-tidy gets, its neutral form for the hash).
+    The regex is anchored at this source folder under every spelling clang-tidy may see (the real
+    path and CMake's), so that neither a checkout's own path (which may hold 'app/' or 'tests/')
+    nor a symlink decides whose headers are checked."""
     with open(os.path.join(SOURCE_DIR, '.clang-tidy'), encoding='utf-8') as f:
         match = re.search(r"^HeaderFilterRegex:\s*'([^']*)'", f.read(), re.MULTILINE)
-    return '^' + re.escape(SOURCE_DIR) + '/' + (match.group(1) if match else '.*')
+    below = '/(' + (match.group(1) if match else '.*') + ')'  # grouped: a '|' in it stays anchored
+    anchors = '|'.join(re.sub(r'([.[\]{}()\\*+?^$|])', r'\\\1', s) for s in sorted(source_spellings))
+    return f'^({anchors}){below}', '^@SOURCE@' + below  # llvm::Regex is POSIX ERE: no (?:...)
 
 
 def main():
@@ -196,8 +249,16 @@ def main():
         sys.exit('tidy: no compile command for ' + ', '.join(os.path.relpath(p, SOURCE_DIR) for p in missing))
 
     tidy_binary = os.path.realpath(shutil.which('clang-tidy') or sys.exit('tidy: clang-tidy is not installed'))
-    options = ['--quiet', '--extra-arg=-Wno-everything', '--header-filter=' + header_filter()]
-    hasher = Hasher(build_dir, tidy_binary, [o.replace(SOURCE_DIR, '@SOURCE@') for o in options])
+    source_spellings = spellings(SOURCE_DIR, LOGICAL_SOURCE_DIR, cmake_cache_value(build_dir, 'CMAKE_HOME_DIRECTORY'))
+    build_spellings = spellings(build_dir, os.path.abspath(sys.argv[1]),
+                                cmake_cache_value(build_dir, 'CMAKE_CACHEFILE_DIR'))
+    folders = sorted([(s, '@BUILD@') for s in build_spellings] + [(s, '@SOURCE@') for s in source_spellings],
+                     key=lambda pair: -len(pair[0]))  # the longest first: a build folder inside the source
+    tidy_filter, neutral_filter = header_filter(source_spellings)
+    options = ['--quiet', '--extra-arg=-Wno-everything', '--header-filter=' + tidy_filter]
+    # Python's re and POSIX ERE accept the same paths for this pattern (no back-references).
+    hasher = Hasher(folders, tidy_binary, options[:-1] + ['--header-filter=' + neutral_filter],
+                    re.compile(tidy_filter))
     with concurrent.futures.ThreadPoolExecutor(JOBS) as pool:
         hashes = dict(zip(files, pool.map(lambda p: hasher.input_hash(p, commands[p]), files)))
 
