@@ -120,12 +120,16 @@ void evaluateDiameter(const ProgramTargets &targets, const Tolerance &t, const F
         return;
     const auto [lo, hi] = radiusErrorRange_um(*f);
     // What the program aims at (targetContour): the middle of the zone, or of the zone all the
-    // feature's diameter tolerances allow.
-    double programmed = 0.5 * (*e.upper_um + *e.lower_um);
+    // feature's diameter tolerances allow; an offset must centre the size in that zone too.
+    double aimUpper = *e.upper_um;
+    double aimLower = *e.lower_um;
     for (const DiameterTarget &target : targets.diameters) {
-        if (target.featureId == t.featureId)
-            programmed = 0.5 * (target.upper_um + target.lower_um);
+        if (target.featureId == t.featureId) {
+            aimUpper = target.upper_um;
+            aimLower = target.lower_um;
+        }
     }
+    const double programmed = 0.5 * (aimUpper + aimLower);
     e.predictedMax_um = programmed + 2.0 * hi;
     e.predictedMin_um = programmed + 2.0 * lo;
     const double tolerance = *e.upper_um - *e.lower_um;
@@ -135,9 +139,9 @@ void evaluateDiameter(const ProgramTargets &targets, const Tolerance &t, const F
         e.verdict = Verdict::PassesAsProgrammed;
         say(e.condition,
             [&] { return QString(ToleranceVerdicts::tr("Fig. 4b, eq. 13: D'_Md <= Dn + dDu and D'_md >= Dn + dDl")); });
-    } else if (form <= tolerance) {
+    } else if (form <= aimUpper - aimLower) {
         e.verdict = Verdict::PassesAfterOffset;
-        e.offset_um = 0.5 * (*e.upper_um + *e.lower_um) - 0.5 * (*e.predictedMax_um + *e.predictedMin_um);
+        e.offset_um = programmed - 0.5 * (*e.predictedMax_um + *e.predictedMin_um);
         say(e.condition, [&] {
             return QString(ToleranceVerdicts::tr(
                 "Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| <= t"));
@@ -146,6 +150,13 @@ void evaluateDiameter(const ProgramTargets &targets, const Tolerance &t, const F
             return QString(ToleranceVerdicts::tr(
                                "a constant tool offset of %1 µm on the diameter centres the size in its tolerance")
                                .arg(QString::number(*e.offset_um, 'f', 1)));
+        });
+    } else if (form <= tolerance) {
+        e.verdict = Verdict::NeedsProfileCorrection;
+        say(e.condition, [&] {
+            return QString(ToleranceVerdicts::tr("Fig. 4b, eq. 15 holds for this tolerance, but the form does not fit "
+                                                 "the %1 µm zone that all of the feature's size tolerances allow")
+                               .arg(formatNumber(aimUpper - aimLower)));
         });
     } else {
         e.verdict = Verdict::NeedsProfileCorrection;
@@ -254,6 +265,42 @@ double floatingZoneWidth_um(const std::vector<std::pair<double, double>> &normal
     return 2.0 * worst(0.5 * (lo + hi));
 }
 
+// A constant change dr of the programmed radius moves the surface along its normal by dr cos(alpha)
+// at each station (for a cone the same everywhere, on a round not). The dr [µm] that minimises the
+// largest |delta_n + dr cos(alpha)|, and that value: what a tool offset can do for a located profile
+// zone. Convex in dr: golden-section search over the shifts that can matter.
+std::pair<double, double> centringRadialShift_um(const std::vector<std::pair<double, double>> &normalAndCos)
+{
+    double largest = 0.0;
+    double largestCos = 0.0;
+    for (const auto &[normal, cosine] : normalAndCos) {
+        largest = std::max(largest, std::abs(normal));
+        largestCos = std::max(largestCos, cosine);
+    }
+    const auto worst = [&normalAndCos](double dr) {
+        double w = 0.0;
+        for (const auto &[normal, cosine] : normalAndCos)
+            w = std::max(w, std::abs(normal + dr * cosine));
+        return w;
+    };
+    if (largestCos < 1e-12)
+        return {0.0, largest}; // every normal is axial: no radial shift moves the surface
+    // At the best shift no deviation exceeds `largest`, so |dr| cos_max <= 2 largest.
+    double lo = -2.0 * largest / largestCos;
+    double hi = -lo;
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int i = 0; i < 200 && hi - lo > 1e-13 * (1.0 + std::abs(hi)); ++i) {
+        const double a = hi - ratio * (hi - lo);
+        const double b = lo + ratio * (hi - lo);
+        if (worst(a) <= worst(b))
+            hi = b;
+        else
+            lo = a;
+    }
+    const double best = 0.5 * (lo + hi);
+    return {best, worst(best)};
+}
+
 // Profile of a line or surface (ISO 1101:2017 clause 18, definitions of the line and surface profile tolerances; Valiño
 // et al. 2008 Fig. 4e). The deviation is taken normal to the surface: the radial one times cos(alpha), alpha the angle
 // of the surface to the axis at the station. Without datums the zone floats: it may sit anywhere, so the spread of the
@@ -272,7 +319,8 @@ void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const Fe
     const Contour &target = feature.side == ContourSide::Outer ? targets.outer : targets.inner;
     double largest = -1e300;
     double smallest = 1e300;
-    std::vector<std::pair<double, double>> normals; // (delta_n [µm], axial part of the surface normal)
+    std::vector<std::pair<double, double>> normals;      // (delta_n [µm], axial part of the surface normal)
+    std::vector<std::pair<double, double>> normalAndCos; // (delta_n [µm], cos(alpha))
     for (const Station &st : f->stations) {
         const double h = 1e-4 * std::max(1.0, std::abs(s.to.z_mm - s.from.z_mm));
         const double z0 = std::max(s.from.z_mm, st.z_mm - h);
@@ -287,9 +335,9 @@ void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const Fe
         largest = std::max(largest, normal);
         smallest = std::min(smallest, normal);
         normals.emplace_back(normal, slope / std::sqrt(1.0 + slope * slope));
+        normalAndCos.emplace_back(normal, 1.0 / std::sqrt(1.0 + slope * slope));
     }
     const double zone = t.zone_um.value_or(0.0);
-    const double spread = largest - smallest;
     if (t.datums.isEmpty()) {
         const double floating = floatingZoneWidth_um(normals);
         setValue(e, floating, zone);
@@ -310,24 +358,35 @@ void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const Fe
             return QString(ToleranceVerdicts::tr(
                 "ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2"));
         });
-    } else if (spread <= zone) {
+        return;
+    }
+    // Plain names, not a structured binding: the reasons below capture them (clang 14 refuses that).
+    const std::pair<double, double> centring = centringRadialShift_um(normalAndCos);
+    const double radialShift = centring.first;
+    const double shiftedLargest = centring.second;
+    if (2.0 * shiftedLargest <= zone) {
         e.verdict = Verdict::PassesAfterOffset;
-        e.offset_um = -0.5 * (largest + smallest);
+        e.offset_um = 2.0 * radialShift; // like a size's: the change of the programmed diameter
         say(e.condition, [&] {
-            return QString(
-                ToleranceVerdicts::tr("ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as "
-                                      "programmed; their spread fits in t"));
+            return QString(ToleranceVerdicts::tr("ISO 1101 surface profile, with datums: a delta_n lies outside "
+                                                 "±t/2 as programmed; a constant radial offset brings all within"));
         });
+        const bool straight = s.kind == SegmentKind::Cone || s.kind == SegmentKind::Chamfer;
         say(e.reason, [&] {
-            return QString(
-                ToleranceVerdicts::tr("a constant offset of %1 µm normal to the surface centres it in the zone")
-                    .arg(QString::number(*e.offset_um, 'f', 1)));
+            const QString diameter = QString::number(*e.offset_um, 'f', 1);
+            return straight
+                       ? QString(ToleranceVerdicts::tr("a constant offset of %1 µm on the diameter (%2 µm "
+                                                       "normal to the surface) centres it in the zone")
+                                     .arg(diameter, QString::number(radialShift * normalAndCos.front().second, 'f', 1)))
+                       : QString(ToleranceVerdicts::tr("a constant offset of %1 µm on the diameter brings "
+                                                       "every delta_n within ±t/2")
+                                     .arg(diameter));
         });
     } else {
         e.verdict = Verdict::NeedsProfileCorrection;
         say(e.condition, [&] {
-            return QString(
-                ToleranceVerdicts::tr("ISO 1101 surface profile, with datums: the spread of delta_n exceeds t"));
+            return QString(ToleranceVerdicts::tr(
+                "ISO 1101 surface profile, with datums: no constant offset brings every delta_n within ±t/2"));
         });
     }
 }

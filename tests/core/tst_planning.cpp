@@ -17,6 +17,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 
 using namespace tolturn;
 
@@ -417,6 +418,54 @@ private Q_SLOTS:
         }
         // The correction must be visible in the program, not lost in the 1 µm rounding.
         QVERIFY2(largestCorrection >= 0.002, qPrintable(QString::number(largestCorrection)));
+    }
+
+    // A located profile that passes after an offset lands in its zone when the compensated program is
+    // "machined" through the model. The stepped shaft's taper O5 (Ø50 at z 80 to Ø40 at z 90,
+    // tan(alpha) = 0.5, cos(alpha) = 1/sqrt(1.25)) with 8 µm to datum A: its program moves with the
+    // h6 and g6 sizes beside it, so its normal deviation from the exact profile lies outside ±4 µm
+    // as programmed. At a station the cut radius is the programmed one (read from the program's
+    // move along the taper) plus the radius error; its distance from the exact cone, times
+    // cos(alpha), must lie within ±t/2, less nothing for the 1 µm resolution (0.5 µm on the radius
+    // is inside the margin the offset leaves when it centres the deviation).
+    void locatedConeProfileLandsInItsZoneAfterTheOffset()
+    {
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
+        const auto t3 = std::find_if(p.tolerances.begin(), p.tolerances.end(),
+                                     [](const Tolerance &t) { return t.id == QLatin1String("T3"); });
+        QVERIFY(t3 != p.tolerances.end());
+        t3->datums = {QStringLiteral("A")};
+        t3->zone_um = 8.0;
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(p, d);
+        const auto v = static_cast<std::size_t>(t3 - p.tolerances.begin());
+        QCOMPARE(verdicts.at(v).verdict, Verdict::PassesAfterOffset);
+        const CompensationPlan plan = planCompensation(p, d, verdicts);
+        QCOMPARE(plan.find(QStringLiteral("O5"))->action, CompensationAction::ConstantOffset);
+        const std::vector<Move> moves = finishingMoves(programFor(p, &plan));
+        // The taper's move: from z -60 (its Ø40 end) to z -70 (its Ø50 end), in program coordinates.
+        std::optional<std::pair<Move, Move>> taper;
+        for (std::size_t i = 1; i < moves.size(); ++i) {
+            if (moves[i].g == 1 && std::abs(moves[i].z + 70.0) < 1e-6 && std::abs(moves[i - 1].z + 60.0) < 1e-6 &&
+                std::abs(moves[i].x - 50.0) < 0.1 && std::abs(moves[i - 1].x - 40.0) < 0.1)
+                taper = std::make_pair(moves[i - 1], moves[i]);
+        }
+        QVERIFY(taper);
+        const double cosAlpha = 1.0 / std::sqrt(1.25);
+        const FeatureDeviation *f = nullptr;
+        for (const FeatureDeviation &x : d.features)
+            f = x.featureId == QLatin1String("O5") ? &x : f;
+        QVERIFY(f && f->stations.size() >= 2);
+        double largest = 0.0;
+        for (const Station &st : f->stations) {
+            const double z = st.z_mm - 150.0;
+            const double share = (z - taper->first.z) / (taper->second.z - taper->first.z);
+            const double programmedRadius = 0.5 * (taper->first.x + share * (taper->second.x - taper->first.x));
+            const double exactRadius = 25.0 - 0.5 * (st.z_mm - 80.0);
+            const double normal_um = (programmedRadius + st.radiusError_mm - exactRadius) * cosAlpha * 1000.0;
+            largest = std::max(largest, std::abs(normal_um));
+        }
+        QVERIFY2(largest <= 4.0, qPrintable(QString::number(largest)));
     }
 
     // Each example's program "machined" through the model: the size cut at a station is the

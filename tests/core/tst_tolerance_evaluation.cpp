@@ -151,8 +151,10 @@ private Q_SLOTS:
     // Without a datum the zone floats: the spread must fit, 4.472 <= 5 passes, <= 4.4 does not.
     // With datum A the zone is located on the programmed profile: every delta_n within ±t/2, i.e.
     // 2 x 3.577709 = 7.155418 <= t. With t = 5 it fails as programmed but the spread fits: a normal
-    // offset of -(3.577709 - 0.894427)/2 = -1.341641 µm centres it. The paper's eq. 22 (|3.58| + |-0.89|
-    // = 4.47 <= 5) would have passed it as programmed: it is only a necessary condition.
+    // offset of -(3.577709 - 0.894427)/2 = -1.341641 µm centres it, which is the radius moved by
+    // -1.341641 / cos(alpha) = -1.5 µm (the middle of -1 … +4), -3 µm on the diameter. The paper's
+    // eq. 22 (|3.58| + |-0.89| = 4.47 <= 5) would have passed it as programmed: it is only a
+    // necessary condition.
     void profileOfACone()
     {
         DeviationResult r;
@@ -166,7 +168,7 @@ private Q_SLOTS:
         const ToleranceEvaluation located = evaluate(geometric(ToleranceType::Profile, "O3", 5, a), r);
         QCOMPARE(located.verdict, Verdict::PassesAfterOffset);
         QVERIFY(std::abs(*located.value_um - 7.155418) < 1e-5);
-        QVERIFY(std::abs(*located.offset_um + 1.341641) < 1e-5);
+        QVERIFY2(std::abs(*located.offset_um + 3.0) < 1e-6, qPrintable(QString::number(*located.offset_um)));
         QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 7.2, a), r).verdict, Verdict::PassesAsProgrammed);
         QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 4.4, a), r).verdict, Verdict::NeedsProfileCorrection);
     }
@@ -207,7 +209,8 @@ private Q_SLOTS:
     // diameter) the cone O3 moves with its cylinder by -4 µm on the radius at both ends (its right end
     // meets only the face O4). With no deflection its normal deviation is -4 cos(alpha) = -3.577709 µm
     // everywhere: a floating zone takes it (spread 0), a located one of 5 µm does not (2 x 3.5777 =
-    // 7.155418 µm), but a constant normal offset of +3.577709 µm centres it.
+    // 7.155418 µm), but a constant normal offset of +3.577709 µm centres it: the radius moved back by
+    // the 4 µm, +8 µm on the diameter.
     void profileFollowsTheProgrammedContour()
     {
         Project p = part();
@@ -221,7 +224,7 @@ private Q_SLOTS:
         const ToleranceEvaluation e = evaluateTolerances(p, r).at(1);
         QCOMPARE(e.verdict, Verdict::PassesAfterOffset);
         QVERIFY(std::abs(*e.value_um - 7.155418) < 1e-5);
-        QVERIFY(std::abs(*e.offset_um - 3.577709) < 1e-5);
+        QVERIFY2(std::abs(*e.offset_um - 8.0) < 1e-6, qPrintable(QString::number(*e.offset_um)));
         p.tolerances.back().datums.clear();
         QCOMPARE(evaluateTolerances(p, r).at(1).verdict, Verdict::PassesAsProgrammed);
     }
@@ -229,7 +232,10 @@ private Q_SLOTS:
     // Two size tolerances on one diameter: the program aims at the middle of the zone both allow.
     // h6 (0/-16 µm) and 0/-8 µm: the target is -4 µm. A constant radius error of +3 µm cuts -4 + 6 =
     // +2 µm on the diameter: above both upper limits, so neither passes as programmed (aiming at the
-    // h6 zone's own middle, -8 µm, would have predicted -2 µm and passed).
+    // h6 zone's own middle, -8 µm, would have predicted -2 µm and passed). The offset that centres it
+    // is one for both, into the zone both allow: -4 - 2 = -6 µm (h6's own middle would say -10, and
+    // -12 µm breaks the 0/-8). A form of 11 µm (radius error -3 … +2.5 µm) fits h6's 16 µm but not
+    // the 8 µm both allow: no offset serves both, so both need the profile corrected.
     void twoSizeTolerancesShareOneTarget()
     {
         Project p = part();
@@ -244,6 +250,38 @@ private Q_SLOTS:
         QVERIFY(std::abs(*v.at(0).predictedMax_um - 2.0) < 1e-9);
         QCOMPARE(v.at(0).verdict, Verdict::PassesAfterOffset);
         QCOMPARE(v.at(1).verdict, Verdict::PassesAfterOffset);
+        QVERIFY2(std::abs(*v.at(0).offset_um + 6.0) < 1e-9, qPrintable(QString::number(*v.at(0).offset_um)));
+        QVERIFY2(std::abs(*v.at(1).offset_um + 6.0) < 1e-9, qPrintable(QString::number(*v.at(1).offset_um)));
+
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -3.0 + 0.055 * z; })};
+        const std::vector<ToleranceEvaluation> wide = evaluateTolerances(p, r);
+        QVERIFY(std::abs(*wide.at(0).value_um - 11.0) < 1e-9);
+        QCOMPARE(wide.at(0).verdict, Verdict::NeedsProfileCorrection);
+        QCOMPARE(wide.at(1).verdict, Verdict::NeedsProfileCorrection);
+    }
+
+    // A located profile on a round: a constant radial error of 3 µm on the R5 edge round (Ø50 at
+    // z 100, horizontal there; Ø40 at z 105, vertical there) is 3 µm normal to it at z 100 and 0 at
+    // z 105, so 2 x 3 = 6 µm > t = 5 as programmed. Moving the programmed radius by -3 µm (-6 µm on
+    // the diameter) takes every normal deviation to 0: it passes after that offset. (Half the normal
+    // spread, 1.5 µm, taken as the change of the diameter would have moved the surface by 0.75 µm.)
+    void locatedProfileOfARoundTakesARadialOffset()
+    {
+        Project p = part();
+        Segment &round = p.part.outer.segments.at(2);
+        round.kind = SegmentKind::Radius;
+        round.to = {105, 20};
+        round.arcRadius_mm = 5.0;
+        round.arcDirection = ArcDirection::Clockwise;
+        p.part.outer.segments.at(3).from = {105, 20};
+        p.part.outer.segments.at(3).to = {105, 0};
+        p.tolerances = {geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("A")})};
+        DeviationResult r;
+        r.features = {curve("O3", SegmentKind::Radius, 100, 105, [](double) { return 3.0; })};
+        const ToleranceEvaluation e = evaluateTolerances(p, r).front();
+        QVERIFY(std::abs(*e.value_um - 6.0) < 1e-3);
+        QCOMPARE(e.verdict, Verdict::PassesAfterOffset);
+        QVERIFY2(std::abs(*e.offset_um + 6.0) < 1e-6, qPrintable(QString::number(*e.offset_um)));
     }
 
     // Length between faces O1 and O4 (eq. 11): e_i + e_j = 2 + 3 = 5 µm. ±2.5 (t = 5) passes, ±2 fails.
