@@ -101,8 +101,8 @@ std::vector<ToleranceEvaluation> verdictsWith(const Project &project, const Turn
 // evaluation exactly, without solving the beam again.
 DeviationResult withChuckTranslation(DeviationResult d, double k_N_per_mm)
 {
-    const CuttingForces &f = d.inputs->forces;
     for (FeatureDeviation &feature : d.features) {
+        const CuttingForces &f = d.inputs->forcesOn(feature.side); // a bore is cut by the boring bar's insert
         for (Station &st : feature.stations) {
             st.radial.spindleChuck_mm = f.radial_N / k_N_per_mm;
             st.tangential.spindleChuck_mm = f.tangential_N / k_N_per_mm;

@@ -156,6 +156,38 @@ private Q_SLOTS:
         QVERIFY(verdictAt(t2->chuck->upper_N_per_mm) != Verdict::PassesAsProgrammed);
     }
 
+    // A bore is cut by the boring bar's insert at its own forces, and the chuck's spring moves the
+    // part by those forces: the stiffness a bore's tolerance needs is where its verdict changes when
+    // the chuck stiffness is set directly and the whole model is run again (the valve body's two
+    // bores are cut at conditions whose forces differ from the turning tool's by some 5 %).
+    void requiredChuckStiffnessOfABoreIsTheFullModels()
+    {
+        const ProjectParseResult read =
+            readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/valve-body-two-bores.tolturn"));
+        QVERIFY(read.project);
+        const Project &p = *read.project;
+        const RangeEvaluation r = evaluateOverStiffnessRange(p, DataLibrary::builtIn(), {});
+        QVERIFY(r.compliant.inputs && r.compliant.inputs->boring);
+        int bores = 0;
+        for (std::size_t i = 0; i < r.tolerances.size(); ++i) {
+            const ToleranceRangeEvaluation &e = r.tolerances[i];
+            const auto feature = findFeature(p.part, e.compliant.featureId);
+            if (!feature || feature->side != ContourSide::Inner || !e.chuck ||
+                e.chuck->kind != RequiredStiffness::Kind::Found)
+                continue;
+            ++bores;
+            const auto verdictAt = [&](double k) {
+                DeviationOptions o;
+                o.chuckStiffness_N_per_mm = k;
+                return evaluateTolerances(p, computeDeviation(p, DataLibrary::builtIn(), o)).at(i).verdict;
+            };
+            QVERIFY2(verdictAt(0.99 * e.chuck->value_N_per_mm) != Verdict::PassesAsProgrammed,
+                     qPrintable(e.compliant.toleranceId));
+            QCOMPARE(verdictAt(1.01 * e.chuck->value_N_per_mm), Verdict::PassesAsProgrammed);
+        }
+        QVERIFY(bores > 0);
+    }
+
     // A measured spindle replaces the range: no stiff end, the ordinary verdict.
     void measuredMachineHasNoRange()
     {
