@@ -607,6 +607,34 @@ std::optional<BoringInputs> resolveBoring(const Project &p, const DataLibrary &d
     return bi;
 }
 
+// The shop's conditions the thermal drift depends on (docs/model.md §5). What the project does not
+// give is not taken as the ideal: a machine whose warm-up is not known is taken as warmed through
+// (ten time constants: within 5·10⁻⁵ of its steady drift, the largest; a cold start drifts less),
+// and an ambient temperature not given as the characterisation's reference (no ambient term).
+// Both are said in the notes.
+void environmentOfThermalDrift(const Project &p, TurningInputs &in)
+{
+    constexpr double kWarmTimeConstants = 10.0;
+    in.timeSinceStart_min = p.environment.timeSinceStart_min.value_or(0.0);
+    in.ambientTemperature_C = p.environment.ambientTemperature_C.value_or(20.0);
+    if (!in.thermal)
+        return;
+    const ThermalDrift &t = *in.thermal;
+    if (!p.environment.timeSinceStart_min) {
+        in.timeSinceStart_min = kWarmTimeConstants * t.timeConstant_min;
+        in.notes << DeviationModel::tr("Time since the machine started not given (environment): taken as warmed "
+                                       "through, %1 min (ten time constants), the largest thermal drift.")
+                        .arg(num(in.timeSinceStart_min));
+    }
+    if (!p.environment.ambientTemperature_C) {
+        in.ambientTemperature_C = t.referenceTemperature_C;
+        if (t.drift_um_per_K != 0.0)
+            in.notes << DeviationModel::tr("Ambient temperature not given (environment): taken as the "
+                                           "characterisation's reference, %1 °C, so no drift from it.")
+                            .arg(num(t.referenceTemperature_C));
+    }
+}
+
 } // namespace
 
 InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, const DeviationOptions &options)
@@ -624,7 +652,9 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
                                 p.passes.empty()
                                     ? DeviationModel::tr("there is no cutting pass; the deviation is that of the pass "
                                                          "that finishes the features")
-                                    : DeviationModel::tr("there is no pass %1").arg(in.passIndex)));
+                                    : DeviationModel::tr("there is no pass %1 (the project has %2)")
+                                          .arg(in.passIndex + 1)
+                                          .arg(p.passes.size())));
         return result;
     }
     in.pass = p.passes[static_cast<std::size_t>(in.passIndex)];
@@ -694,8 +724,7 @@ InputsResult resolveTurningInputs(const Project &p, const DataLibrary &data, con
             in.notes << DeviationModel::tr("The bores later operations cut are still solid material (no pre-drilled "
                                            "hole is assumed).");
     }
-    in.timeSinceStart_min = p.environment.timeSinceStart_min.value_or(0.0);
-    in.ambientTemperature_C = p.environment.ambientTemperature_C.value_or(20.0);
+    environmentOfThermalDrift(p, in);
     result.inputs = in;
     return result;
 }

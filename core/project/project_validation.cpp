@@ -5,6 +5,7 @@
 #include "core/part/profile_validation.h"
 #include "core/project/keywords.h"
 #include "core/project/operations.h"
+#include "core/tolerance/iso286.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -134,6 +135,21 @@ bool toleranceFitsFeature(ToleranceType type, SegmentKind kind)
 
 namespace {
 
+// ISO 286-1 does not define every class at every size (j8 above Ø3 mm, for one): a class that has
+// no limits at the feature's diameter is named here, not left for the verdicts to find.
+void checkClassAtSize(const QString &toleranceClass, double nominal_mm, const QString &path, Diagnostics &out)
+{
+    const iso286::LimitsResult limits = iso286::limits(nominal_mm, toleranceClass);
+    if (limits.limits)
+        return;
+    QStringList why;
+    for (const Diagnostic &d : limits.diagnostics)
+        why << d.message;
+    out.push_back(makeError(path + QStringLiteral("iso286"),
+                            ProjectValidation::tr("ISO 286 gives no limits for %1 at Ø%2 mm: %3")
+                                .arg(toleranceClass, num(nominal_mm), why.join(QStringLiteral("; ")))));
+}
+
 void checkSizeLimits(const Tolerance &t, const FeatureRef &feature, const QString &path, Diagnostics &out)
 {
     // Grammar of an ISO 286-1 class: fundamental deviation letter(s) then the IT grade number.
@@ -166,6 +182,8 @@ void checkSizeLimits(const Tolerance &t, const FeatureRef &feature, const QStrin
                           : ProjectValidation::tr("'%1' is a hole class, but feature '%2' is an outer surface: use "
                                                   "small letters (e.g. h6)"))
                         .arg(t.iso286Class, t.featureId)));
+            else
+                checkClassAtSize(t.iso286Class, 2.0 * feature.segment->from.r_mm, path, out);
         }
         return;
     }
@@ -349,6 +367,24 @@ void checkEnvironment(const Environment &e, Diagnostics &out)
                                     .arg(num(*e.ambientTemperature_C))));
 }
 
+// A measured thermal drift needs the shop's conditions; what is missing is not taken as the ideal
+// (docs/model.md §5, resolveTurningInputs), and `check` says so.
+void checkThermalConditions(const Project &p, Diagnostics &out)
+{
+    if (!p.characterisation.thermal)
+        return;
+    if (!p.environment.timeSinceStart_min)
+        out.push_back(makeWarning(QStringLiteral("environment.time_since_start_min"),
+                                  ProjectValidation::tr("not given: the thermal drift is computed for a machine "
+                                                        "warmed through, the largest drift; give the time since the "
+                                                        "machine started")));
+    if (!p.environment.ambientTemperature_C && p.characterisation.thermal->drift_um_per_K != 0.0)
+        out.push_back(makeWarning(QStringLiteral("environment.ambient_temperature_C"),
+                                  ProjectValidation::tr("not given: taken as the characterisation's reference "
+                                                        "temperature, %1 °C, so no drift from it")
+                                      .arg(num(p.characterisation.thermal->referenceTemperature_C))));
+}
+
 void checkRange(const std::optional<ValueRange> &range, const QString &field, Diagnostics &out)
 {
     if (!range)
@@ -372,6 +408,12 @@ void checkPlanning(const Project &p, Diagnostics &out)
                                                      {"handling_time_min", s.handlingTime_min}};
     for (const auto &[name, value] : rates)
         requireNonNegative(value, path + QLatin1String(name), out);
+    // Without the rate the cost of a part is its inserts alone, and without those nothing: a plan at
+    // no cost would be chosen at random, so least cost asks for the rate (docs/planning.md §1).
+    if (s.objective == PlanningObjective::Cost && s.machineRate_per_min == 0.0)
+        out.push_back(makeError(path + QStringLiteral("machine_rate_per_min"),
+                                ProjectValidation::tr("least cost needs the machine and operator rate per minute, "
+                                                      "but it is 0 (or not given)")));
     requirePositive(s.taylorC_m_min, path + QStringLiteral("tool_life.C_m_min"), out);
     if (s.taylorN && (!std::isfinite(*s.taylorN) || *s.taylorN <= 0.0 || *s.taylorN >= 1.0))
         out.push_back(makeError(
@@ -430,6 +472,7 @@ Diagnostics validateProject(const Project &project)
     checkCuttingModel(project, out);
     checkCharacterisation(project, out);
     checkEnvironment(project.environment, out);
+    checkThermalConditions(project, out);
     checkPlanning(project, out);
     checkMilledFeatures(project, out);
     const Diagnostics operations = checkOperations(project);

@@ -7,6 +7,7 @@
 #include "core/deviation/stiffness_calibration.h"
 #include "core/io/project_file.h"
 #include "core/mechanics/beam_corrections.h"
+#include "core/project/project_validation.h"
 
 #include <QTest>
 
@@ -430,6 +431,32 @@ private Q_SLOTS:
             QVERIFY2(test::nearRelative(st.radial.thermal_mm * 1000.0, 10.48826 * (1.0 - std::exp(-t / 30.0)), 1e-5),
                      qPrintable(QString::number(st.z_mm)));
         }
+    }
+
+    // The same machine without the shop's conditions: not a cold machine at 20 °C (no drift at the
+    // start), but one warmed through, 10 tau = 300 min, at the reference temperature, so every
+    // station drifts by the steady a_n n/1000 = 4 x 2.1220659 = 8.48826 µm, less e^-10 of it; and
+    // both results and `check` say what was taken.
+    void thermalWithoutShopConditionsIsWarm()
+    {
+        Project p = barProject(15.0, 200.0, ClampingMethod::Chuck, 40.0);
+        p.characterisation.source = QStringLiteral("test");
+        p.characterisation.thermal = ThermalDrift{4.0, 0.5, 20.0, 30.0};
+        const DeviationResult res = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY2(res.inputs, qPrintable(dump(res.diagnostics)));
+        const double steady = 4.0 * 2.1220659; // reached to within e^-10 = 4.5e-5 of it
+        for (const Station &st : feature(res, "O2").stations)
+            QVERIFY2(test::nearRelative(st.radial.thermal_mm * 1000.0, steady, 1e-4),
+                     qPrintable(QString::number(st.radial.thermal_mm * 1000.0)));
+        QVERIFY(res.inputs->notes.join(QLatin1Char(' ')).contains(QStringLiteral("warmed through, 300 min")));
+        QVERIFY(res.inputs->notes.join(QLatin1Char(' ')).contains(QStringLiteral("reference, 20 °C")));
+        const Diagnostics checked = validateProject(p);
+        for (const char *field : {"environment.time_since_start_min", "environment.ambient_temperature_C"})
+            QVERIFY2(std::any_of(checked.begin(), checked.end(),
+                                 [field](const Diagnostic &d) {
+                                     return d.field == QLatin1String(field) && d.severity == Severity::Warning;
+                                 }),
+                     field);
     }
 
     void examplesComputeWithoutErrors_data()

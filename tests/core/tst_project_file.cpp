@@ -128,6 +128,7 @@ Project everyFieldProject()
     p.characterisation.tailstock = SupportStiffness{4.0e4, 5.0e4};
     p.characterisation.thermal = ThermalDrift{3.5, 0.8, 20.0, 45.0};
     p.environment.timeSinceStart_min = 90.0;
+    p.environment.ambientTemperature_C = 22.5;
     p.clamping = {ClampingMethod::ChuckTailstock, 12.5};
     p.passes = {{PassKind::Roughing, 180.0, 0.28, 2.5}, {PassKind::Finishing, 240.0, 0.08, 0.25}};
     p.datums = {{QStringLiteral("A"), QStringLiteral("I1")}};
@@ -521,6 +522,12 @@ private Q_SLOTS:
             "environment.time_since_start_min", "zero or more, but is -5");
         row("ambient below absolute zero", shaft, {QStringLiteral("environment={\"ambient_temperature_C\": -300}")},
             "environment.ambient_temperature_C", "above absolute zero (-273.15 °C), but is -300 °C");
+        // ISO 286-1 gives j8 only up to Ø3 mm; the bearing seat is Ø50.
+        row("ISO 286 class not defined at the size", shaft, {QStringLiteral("tolerances[0].iso286=\"j8\"")},
+            "tolerances[0].iso286", "gives no limits for j8 at Ø50 mm: shaft j8 is not defined");
+        row("least cost without the machine rate", shaft,
+            {QStringLiteral("planning.objective=\"cost\""), QStringLiteral("planning.machine_rate_per_min=0")},
+            "planning.machine_rate_per_min", "least cost needs the machine and operator rate");
     }
 
     void badInput()

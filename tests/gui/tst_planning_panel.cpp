@@ -24,6 +24,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSignalSpy>
@@ -194,6 +195,37 @@ private Q_SLOTS:
         w.document()->undoStack()->undo();
         QVERIFY(w.document()->project().planning.disabledConstraints.isEmpty());
         QVERIFY(roughness->isChecked());
+    }
+
+    // Least cost without a machine rate would plan at a cost of zero: the choice is refused with the
+    // field named, and the objective box shows the objective the project still has.
+    void leastCostWithoutARateIsRefused()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
+        PlanningSettings s = w.document()->project().planning;
+        s.machineRate_per_min = 0.0;
+        QVERIFY(w.document()->setPlanning(s).empty()); // least time needs no rate
+        QComboBox *objective = nullptr;
+        for (QComboBox *box : w.planningPanel()->findChildren<QComboBox *>()) {
+            if (box->findText(QStringLiteral("Least cost per part")) >= 0)
+                objective = box;
+        }
+        QVERIFY(objective != nullptr);
+        if (objective == nullptr)
+            return;
+        QString said;
+        QTimer::singleShot(0, [&said] {
+            if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+                said = box->text();
+                box->accept();
+            }
+        });
+        objective->setCurrentIndex(objective->findData(static_cast<int>(PlanningObjective::Cost)));
+        QVERIFY2(said.contains(QStringLiteral("planning.machine_rate_per_min: least cost needs the machine")),
+                 qPrintable(said));
+        QCOMPARE(w.document()->project().planning.objective, PlanningObjective::Time);
+        QCOMPARE(objective->currentData().toInt(), static_cast<int>(PlanningObjective::Time));
     }
 
     void planningDataDialogShowsTheFile()

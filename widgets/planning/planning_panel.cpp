@@ -316,7 +316,12 @@ void PlanningPanel::settingsEdited()
         if (box->isEnabled() ? !box->isChecked() : before.contains(keyword))
             s.disabledConstraints << keyword;
     }
-    (void)m_document.setPlanning(s);
+    // A refused choice (least cost without a machine rate) is named and the controls put back.
+    const Diagnostics refused = m_document.setPlanning(s);
+    if (!refused.empty()) {
+        showProjectOutputs();
+        QMessageBox::warning(this, tr("Planning"), refused.front().toString());
+    }
 }
 
 void PlanningPanel::editPlanningData()
