@@ -180,9 +180,10 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
     const QCommandLineOption stations(QStringLiteral("stations"),
                                       CommandLine::tr("Tool positions per turned feature (default 21)."),
                                       QStringLiteral("N"), QStringLiteral("21"));
-    const QCommandLineOption pass(QStringLiteral("pass"),
-                                  CommandLine::tr("Index of the pass (default: the last finishing pass)."),
-                                  QStringLiteral("N"));
+    const QCommandLineOption pass(
+        QStringLiteral("pass"),
+        CommandLine::tr("Number of the pass, 1 for the first (default: the last finishing pass)."),
+        QStringLiteral("N"));
     const QCommandLineOption noInProcess(QStringLiteral("no-in-process"),
                                          CommandLine::tr("Ignore the stock still on the uncut side of the tool."));
     const QCommandLineOption uncorrected(
@@ -215,13 +216,15 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
             << '\n';
         return kExitUsage;
     }
-    if (parser.isSet(pass)) {
-        options.passIndex = parser.value(pass).toInt(&ok);
-        if (!ok || options.passIndex < 0) {
+    if (parser.isSet(pass)) { // counted from 1, as the output and the other commands count passes
+        const int number = parser.value(pass).toInt(&ok);
+        if (!ok || number < 1) {
             err << programName() << " deflect: "
-                << CommandLine::tr("--pass must be a pass index (0, 1, …), not \"%1\"").arg(parser.value(pass)) << '\n';
+                << CommandLine::tr("--pass must be a pass number (1, 2, …), not \"%1\"").arg(parser.value(pass))
+                << '\n';
             return kExitUsage;
         }
+        options.passIndex = number - 1;
     }
     if (parser.isSet(load)) {
         options.loadOverride = parseLoad(parser.value(load));

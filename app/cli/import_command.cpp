@@ -5,6 +5,7 @@
 #include "app/cli/command_line.h"
 #include "core/cad/step_export.h"
 #include "core/cad/step_import.h"
+#include "core/data/data_library.h"
 #include "core/io/cad_import_json.h"
 #include "core/io/project_file.h"
 #include "core/project/project_defaults.h"
@@ -245,6 +246,29 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
     const auto axisIndex = indexOption(parser, axis, err);
     if (!solidIndex || !axisIndex)
         return kExitUsage;
+    // An id the data library does not know would give a project that does not open: refused before
+    // anything is read or written.
+    const DataLibrary &data = DataLibrary::builtIn();
+    if (!data.material(parser.value(material))) {
+        QStringList known;
+        for (const MaterialData &m : data.materials())
+            known << m.id;
+        err << programName() << " import: "
+            << ImportCommand::tr("--material: unknown material \"%1\"; the materials are: %2")
+                   .arg(parser.value(material), known.join(QStringLiteral(", ")))
+            << '\n';
+        return kExitUsage;
+    }
+    if (!data.machine(parser.value(machine))) {
+        QStringList known;
+        for (const MachineData &m : data.machines())
+            known << m.id;
+        err << programName() << " import: "
+            << ImportCommand::tr("--machine: unknown machine \"%1\"; the machines are: %2")
+                   .arg(parser.value(machine), known.join(QStringLiteral(", ")))
+            << '\n';
+        return kExitUsage;
+    }
     const QString file = parser.positionalArguments().constFirst();
     CadImportOptions options;
     options.flip = parser.isSet(flip);

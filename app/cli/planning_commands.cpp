@@ -213,6 +213,19 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
         std::vector<CuttingPass> &passes =
             index == 0 ? project->passes : project->furtherOperations[static_cast<std::size_t>(index - 1)].passes;
         passes.clear();
+        // Fields this program does not know that sat on the old passes belong to none of the new
+        // ones: they are dropped, each named, rather than left to land on another pass.
+        const QString passesPath =
+            index == 0 ? QStringLiteral("passes[") : QStringLiteral("further_operations[%1].passes[").arg(index - 1);
+        auto &unknown = project->unknownFields;
+        for (auto it = unknown.begin(); it != unknown.end();) {
+            if (it->first.startsWith(passesPath)) {
+                err << CommandLine::tr("warning: %1: dropped with the passes it was on").arg(it->first) << '\n';
+                it = unknown.erase(it);
+            } else {
+                ++it;
+            }
+        }
         for (int i = 0; i < plan.candidate.roughingPasses; ++i)
             passes.push_back({PassKind::Roughing, rough.cuttingSpeed_m_min, rough.feed_mm_rev, rough.depthOfCut_mm});
         const PassConditions &f = plan.candidate.finishing;

@@ -37,10 +37,11 @@ QJsonValue fitJson(const std::optional<SpringFit> &fit)
                        {QStringLiteral("points"), fit->points}};
 }
 
-QJsonObject calibrationJson(const StiffnessCalibration &cal)
+// `problems`: everything said about the test bar's project, its measurements and the fit.
+QJsonObject calibrationJson(const StiffnessCalibration &cal, const Diagnostics &problems)
 {
     QJsonArray diagnostics;
-    for (const Diagnostic &d : cal.diagnostics)
+    for (const Diagnostic &d : problems)
         diagnostics.append(diagnosticJson(d));
     return {{QStringLiteral("pivot_distance_mm"), cal.pivotDistance_mm},
             {QStringLiteral("diameter_mm"), cal.diameter_mm},
@@ -84,12 +85,18 @@ void printCalibration(QTextStream &out, const StiffnessCalibration &cal)
         << '\n';
 }
 
-// Stores the fitted springs in `target`'s characterisation, keeping everything else it has.
-QString writeSprings(const QString &target, const StiffnessCalibration &cal, const QString &measurements)
+// Stores the fitted springs in `target`'s characterisation, keeping everything else it has; only
+// in a project for the machine the test bar was cut on (`machineId`).
+QString writeSprings(const QString &target, const StiffnessCalibration &cal, const QString &measurements,
+                     const QString &machineId)
 {
     ProjectParseResult read = readProjectFile(target);
     if (!read.project)
         return read.diagnostics.empty() ? target : read.diagnostics.front().toString();
+    if (read.project->machineId != machineId)
+        return StiffnessCommand::tr("%1 is planned for machine \"%2\", but the test bar was cut on \"%3\": its "
+                                    "springs are that machine's; nothing written")
+            .arg(target, read.project->machineId, machineId);
     const QString source =
         StiffnessCommand::tr("Test bar fit (Valiño et al. 2008 §III), tolturn-cli calibrate-stiffness, %1, %2: "
                              "%3 points, RMS residual %4 µm")
@@ -184,7 +191,7 @@ int runCalibrateStiffness(const QStringList &args, QTextStream &out, QTextStream
         problems.insert(problems.end(), cal.diagnostics.begin(), cal.diagnostics.end());
     }
     if (parser.isSet(json)) {
-        if (const int code = printJson(calibrationJson(cal), out, err, QStringLiteral("calibrate-stiffness"));
+        if (const int code = printJson(calibrationJson(cal, problems), out, err, QStringLiteral("calibrate-stiffness"));
             code != kExitOk)
             return code;
     } else {
@@ -197,7 +204,7 @@ int runCalibrateStiffness(const QStringList &args, QTextStream &out, QTextStream
         return kExitProblems;
     if (parser.isSet(write) || parser.isSet(into)) {
         const QString target = parser.isSet(into) ? parser.value(into) : projectPath;
-        const QString error = writeSprings(target, cal, csvPath);
+        const QString error = writeSprings(target, cal, csvPath, read.project->machineId);
         if (!error.isEmpty()) {
             err << error << '\n';
             return kExitProblems;

@@ -61,7 +61,13 @@ MeasurementRow readRow(const QStringList &cells, const QString &where, const std
         }
         bool ok = false;
         const double v = cell.toDouble(&ok);
-        if (!ok || !std::isfinite(v) || (columns[c].positive && v <= 0.0))
+        // No measured length, deviation, force, speed or time comes near 10⁹ in the columns' units
+        // (mm, µm, N, rpm, min): such a value is a slip, and would overflow the fits downstream.
+        constexpr double kLargestMeasurement = 1e9;
+        if (ok && std::isfinite(v) && std::abs(v) > kLargestMeasurement)
+            out.push_back(makeError(where, MeasurementFiles::tr("%1 must be at most 1e9 in size, not \"%2\"")
+                                               .arg(QLatin1String(columns[c].name), cell)));
+        else if (!ok || !std::isfinite(v) || (columns[c].positive && v <= 0.0))
             out.push_back(makeError(
                 where, MeasurementFiles::tr("%1 must be a number%2, not \"%3\"")
                            .arg(QLatin1String(columns[c].name),

@@ -58,6 +58,30 @@ void checkLibraryEntries(const Project &p, const DataLibrary &data, Diagnostics 
                                       .arg(p.tool.holderCode)));
 }
 
+// What no bore of the part allows: a pilot hole at least as wide as the widest bore leaves nothing to
+// bore, and an edge as far off the bar's axis as the widest bore is across cannot cut inside it (the
+// bar's axis lies inside the bore, so the edge is less than a diameter from the wall opposite).
+void checkBoringGeometry(const Project &p, const Tool &t, Diagnostics &out)
+{
+    double widest = 0.0;
+    for (const Segment &s : p.part.inner.segments) {
+        if (s.kind == SegmentKind::Cylinder)
+            widest = std::max(widest, 2.0 * s.from.r_mm);
+    }
+    if (widest <= 0.0)
+        return;
+    if (t.pilotHoleDiameter_mm && *t.pilotHoleDiameter_mm >= widest)
+        out.push_back(makeError(QStringLiteral("boring_tool.pilot_hole_diameter_mm"),
+                                Plausibility::tr("a pilot hole of Ø%1 mm leaves nothing to bore: the widest bore "
+                                                 "is Ø%2 mm")
+                                    .arg(num(*t.pilotHoleDiameter_mm), num(widest))));
+    if (t.edgeOffset_mm && *t.edgeOffset_mm >= widest)
+        out.push_back(makeError(QStringLiteral("boring_tool.edge_offset_mm"),
+                                Plausibility::tr("an edge %1 mm off the bar's axis cannot cut inside a bore: the "
+                                                 "widest is Ø%2 mm")
+                                    .arg(num(*t.edgeOffset_mm), num(widest))));
+}
+
 // The boring bar (docs/model.md §3.1): a bar the data know, its overhang within the maker's
 // largest L/D; bores without a bar are computed without its bending, which the planner is told.
 void checkBoringTool(const Project &p, const DataLibrary &data, Diagnostics &out)
@@ -71,6 +95,7 @@ void checkBoringTool(const Project &p, const DataLibrary &data, Diagnostics &out
         return;
     }
     const Tool &t = *p.boringTool;
+    checkBoringGeometry(p, t, out);
     const InsertParseResult insert = parseInsertCode(t.insertCode);
     if (!insert.insert) {
         for (const Diagnostic &d : insert.diagnostics)
@@ -224,6 +249,17 @@ void checkOperation(const Project &project, int index, const DataLibrary &data, 
     checkLibraryEntries(view, data, found);
     checkBoringTool(view, data, found);
     checkPasses(view, data, found);
+    // What the computing commands would refuse (a bar's overhang short of the bore or longer than the
+    // bar, say) is refused here too, each field once.
+    if (!hasErrors(found)) {
+        for (const Diagnostic &d : resolveTurningInputs(view, data, {}).diagnostics) {
+            const bool said = std::any_of(found.begin(), found.end(), [&d](const Diagnostic &x) {
+                return x.field == d.field && x.severity == d.severity;
+            });
+            if (d.severity == Severity::Error && !said)
+                found.push_back(d);
+        }
+    }
     const QString prefix = QStringLiteral("further_operations[%1].").arg(index - 1);
     for (Diagnostic &d : found) {
         const bool ofOperation = d.field.startsWith(QLatin1String("tool")) ||

@@ -234,6 +234,10 @@ private Q_SLOTS:
         row("force cell not a number", "feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N\n0.2,one,800,300\n",
             {QStringLiteral("calibrate-forces"), shaftPath, QStringLiteral("IN")}, 1, QStringLiteral("cuts.csv:2"),
             QStringLiteral("cuts.csv"));
+        row("force of 1e300 N",
+            "feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N\n0.15,1.0,1e300,160\n0.25,2.0,900,420\n",
+            {QStringLiteral("calibrate-forces"), shaftPath, QStringLiteral("IN")}, 1,
+            QStringLiteral("tangential_N must be at most 1e9 in size, not \"1e300\""), QStringLiteral("cuts.csv"));
         row("force file without rows", "feed_mm_rev,depth_of_cut_mm,tangential_N,axial_N\n",
             {QStringLiteral("calibrate-forces"), shaftPath, QStringLiteral("IN")}, 1, QStringLiteral("cuts.csv"),
             QStringLiteral("cuts.csv"));

@@ -275,6 +275,27 @@ private Q_SLOTS:
         QVERIFY(r.out.contains(QStringLiteral("face O11")));
     }
 
+    // Passes are counted from 1 everywhere: the stepped shaft's nine passes, its last one the
+    // finishing pass `deflect` takes by default and prints as "Pass 9".
+    void deflectPassCountsFromOne()
+    {
+        const QString shaft = example("stepped-shaft-chuck.tolturn");
+        const Run last = runCli({QStringLiteral("deflect"), QStringLiteral("--pass"), QStringLiteral("9"), shaft});
+        QCOMPARE(last.exitCode, 0);
+        QCOMPARE(last.out, runCli({QStringLiteral("deflect"), shaft}).out);
+        QVERIFY(last.out.contains(QStringLiteral("Pass 9 (")));
+        const Run first = runCli({QStringLiteral("deflect"), QStringLiteral("--pass"), QStringLiteral("1"), shaft});
+        QCOMPARE(first.exitCode, 0);
+        QVERIFY(first.out.contains(QStringLiteral("Pass 1 (")));
+        const Run beyond = runCli({QStringLiteral("deflect"), QStringLiteral("--pass"), QStringLiteral("10"), shaft});
+        QCOMPARE(beyond.exitCode, 1);
+        QVERIFY2(beyond.err.contains(QStringLiteral("there is no pass 10 (the project has 9)")),
+                 qPrintable(beyond.err));
+        const Run zero = runCli({QStringLiteral("deflect"), QStringLiteral("--pass"), QStringLiteral("0"), shaft});
+        QCOMPARE(zero.exitCode, 2);
+        QVERIFY(zero.err.contains(QStringLiteral("--pass must be a pass number (1, 2, …), not \"0\"")));
+    }
+
     void deflectBadLoad()
     {
         const Run r = runCli({QStringLiteral("deflect"), QStringLiteral("--load"), QStringLiteral("100,abc"),
@@ -432,6 +453,35 @@ private Q_SLOTS:
         const Run badLoad = runCli(
             {QStringLiteral("calibrate-stiffness"), QStringLiteral("--load"), QStringLiteral("1,2"), bar, measured});
         QCOMPARE(badLoad.exitCode, 2);
+
+        // With --json the problems of the measurements are in the output too, not dropped.
+        const QString brokenCsv = dir.filePath(QStringLiteral("broken.csv"));
+        QVERIFY(writeFile(brokenCsv, "z_mm,radial_um\n10,abc\n20,3\n30,4\n"));
+        const Run broken = runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--json"),
+                                   QStringLiteral("--pivot"), QStringLiteral("220"), bar, brokenCsv});
+        QCOMPARE(broken.exitCode, 1);
+        const QJsonArray said =
+            QJsonDocument::fromJson(broken.out.toUtf8()).object().value(QStringLiteral("diagnostics")).toArray();
+        QVERIFY2(!said.isEmpty() && QJsonDocument(said).toJson().contains("abc"), qPrintable(broken.out));
+
+        // The springs are the test bar's machine's: a project for another machine is not given them.
+        project.insert(QStringLiteral("machine"), QStringLiteral("okuma-ls"));
+        project.remove(QStringLiteral("characterisation"));
+        const QString other = dir.filePath(QStringLiteral("other.tolturn"));
+        QVERIFY(writeFile(other, QJsonDocument(project).toJson()));
+        QFile before(other);
+        QVERIFY(before.open(QIODevice::ReadOnly));
+        const QByteArray unchanged = before.readAll();
+        before.close();
+        const Run otherMachine = runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--pivot"),
+                                         QStringLiteral("220"), QStringLiteral("--into"), other, bar, measured});
+        QCOMPARE(otherMachine.exitCode, 1);
+        QVERIFY2(otherMachine.err.contains(QStringLiteral("is planned for machine \"okuma-ls\", but the test bar was "
+                                                          "cut on \"haas-st-20\"")),
+                 qPrintable(otherMachine.err));
+        QFile after(other);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), unchanged);
     }
 
     // iso286 and fit against published values: 50 H7 = +25/0 µm, IT7 = 25 µm; 50 g6 = -9/-25 µm
@@ -549,6 +599,35 @@ private Q_SLOTS:
         const Run r = runCli({QStringLiteral("optimize"), path});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains(QStringLiteral("planning.ranges")));
+    }
+
+    // optimize --write replaces the passes: a field this program does not know on an old pass is
+    // dropped and named (it belongs to no new pass), while one elsewhere in the file is kept.
+    void optimizeWriteNamesTheFieldsOfReplacedPasses()
+    {
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonArray passes = doc.value(QStringLiteral("passes")).toArray();
+        QJsonObject last = passes.last().toObject();
+        last.insert(QStringLiteral("coolant"), QStringLiteral("flood"));
+        passes.replace(passes.size() - 1, last);
+        doc.insert(QStringLiteral("passes"), passes);
+        doc.insert(QStringLiteral("shop_note"), QStringLiteral("kept"));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.tolturn"));
+        QVERIFY(writeFile(path, QJsonDocument(doc).toJson()));
+        const Run r = runCli({QStringLiteral("optimize"), QStringLiteral("--write"), path});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains(QStringLiteral("warning: passes[%1].coolant: dropped with the passes it was on")
+                                    .arg(passes.size() - 1)),
+                 qPrintable(r.err));
+        QFile written(path);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        const QJsonObject after = QJsonDocument::fromJson(written.readAll()).object();
+        QCOMPARE(after.value(QStringLiteral("shop_note")).toString(), QStringLiteral("kept"));
+        for (const QJsonValue pass : after.value(QStringLiteral("passes")).toArray())
+            QVERIFY(!pass.toObject().contains(QStringLiteral("coolant")));
     }
 
     void windowCsv()

@@ -202,6 +202,31 @@ private Q_SLOTS:
                                      QStringLiteral("-o"), project, notStep});
         QCOMPARE(badIndex.exitCode, 2);
     }
+
+    // An id the data library does not know is refused before anything is written: a good project
+    // at the output path stays as it was (it would otherwise be replaced by one that does not open).
+    void importUnknownMaterialOrMachineKeepsTheTarget()
+    {
+        const QString project = m_dir.filePath(QStringLiteral("keep.tolturn"));
+        QVERIFY(tolturn::test::writeFile(project, "{\"kept\": true}\n"));
+        const QString step = QStringLiteral(TOLTURN_SOURCE_DIR "/fuzz/corpus/cad/slender-pin.step");
+        const Run machine = runCli({QStringLiteral("import"), QStringLiteral("--machine"), QStringLiteral("nope"),
+                                    QStringLiteral("-o"), project, step});
+        QCOMPARE(machine.exitCode, 2);
+        QVERIFY2(machine.err.contains(QStringLiteral("--machine: unknown machine \"nope\"; the machines are: ")) &&
+                     machine.err.contains(QStringLiteral("haas-st-20")),
+                 qPrintable(machine.err));
+        const Run material = runCli({QStringLiteral("import"), QStringLiteral("--material"), QStringLiteral("cheese"),
+                                     QStringLiteral("-o"), project, step});
+        QCOMPARE(material.exitCode, 2);
+        QVERIFY2(
+            material.err.contains(QStringLiteral("--material: unknown material \"cheese\"; the materials are: ")) &&
+                material.err.contains(QStringLiteral("C45E-N")),
+            qPrintable(material.err));
+        QFile kept(project);
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), QByteArray("{\"kept\": true}\n"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestImportCli)

@@ -265,6 +265,29 @@ private Q_SLOTS:
         turningToolsHole.tool.pilotHoleDiameter_mm = 24.0;
         QVERIFY(hasField(validateProject(turningToolsHole), "tool.pilot_hole_diameter_mm", Severity::Error));
         QVERIFY(!hasField(validateProject(bushing()), "tool.pilot_hole_diameter_mm", Severity::Error));
+
+        // What the computing commands refuse, check refuses: the 60 mm bar above does not reach the
+        // bore's 80 mm. And what no bore allows: a pilot hole as wide as the Ø32 bore leaves nothing
+        // to bore; an edge 32 mm off the bar's axis cannot cut inside it. Ø31.9 and 31.9 mm are
+        // geometrically possible.
+        QVERIFY2(
+            hasField(checkPlausibility(shortBar, DataLibrary::builtIn()), "boring_tool.overhang_mm", Severity::Error),
+            qPrintable(dump(checkPlausibility(shortBar, DataLibrary::builtIn()))));
+        QVERIFY(!hasErrors(checkPlausibility(bushing(), DataLibrary::builtIn())));
+        Project wideHole = bushing();
+        wideHole.boringTool->pilotHoleDiameter_mm = 32.0;
+        QVERIFY(hasField(checkPlausibility(wideHole, DataLibrary::builtIn()), "boring_tool.pilot_hole_diameter_mm",
+                         Severity::Error));
+        wideHole.boringTool->pilotHoleDiameter_mm = 31.9;
+        QVERIFY(!hasField(checkPlausibility(wideHole, DataLibrary::builtIn()), "boring_tool.pilot_hole_diameter_mm",
+                          Severity::Error));
+        Project farEdge = bushing();
+        farEdge.boringTool->edgeOffset_mm = 32.0;
+        QVERIFY(hasField(checkPlausibility(farEdge, DataLibrary::builtIn()), "boring_tool.edge_offset_mm",
+                         Severity::Error));
+        farEdge.boringTool->edgeOffset_mm = 31.9;
+        QVERIFY(!hasField(checkPlausibility(farEdge, DataLibrary::builtIn()), "boring_tool.edge_offset_mm",
+                          Severity::Error));
     }
 
     // The maker's longest overhang (WIDIA: 4 x D for steel shank bars): 120 mm on Ø25 is 4.8 x D,
