@@ -285,10 +285,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Werkzeugpositionen je gedrehtem Formelement (Standard 21).</translation>
     </message>
     <message>
-        <source>Index of the pass (default: the last finishing pass).</source>
-        <translation>Index des Schnitts (Standard: der letzte Schlichtschnitt).</translation>
-    </message>
-    <message>
         <source>Ignore the stock still on the uncut side of the tool.</source>
         <translation>Das noch auf der ungeschnittenen Seite des Werkzeugs stehende Material ignorieren.</translation>
     </message>
@@ -299,10 +295,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--stations must be a whole number from 2 to 100000, not &quot;%1&quot;</source>
         <translation>--stations muss eine ganze Zahl von 2 bis 100000 sein, nicht „%1“</translation>
-    </message>
-    <message>
-        <source>--pass must be a pass index (0, 1, …), not &quot;%1&quot;</source>
-        <translation>--pass muss ein Schnittindex sein (0, 1, …), nicht „%1“</translation>
     </message>
     <message>
         <source>K_n = %1 N/mm², K_f = %2 (Li &amp; Du eq. 15), RMS residual %3 N over %4 cuts</source>
@@ -691,6 +683,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>, %n gefrästes Formelement</numerusform>
             <numerusform>, %n gefräste Formelemente</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Number of the pass, 1 for the first (default: the last finishing pass).</source>
+        <translation>Nummer des Schnitts, 1 für den ersten (Standard: der letzte Schlichtschnitt).</translation>
+    </message>
+    <message>
+        <source>--pass must be a pass number (1, 2, …), not &quot;%1&quot;</source>
+        <translation>--pass muss eine Schnittnummer sein (1, 2, …), nicht „%1“</translation>
+    </message>
+    <message>
+        <source>warning: %1: dropped with the passes it was on</source>
+        <translation>Warnung: %1: mit den Schnitten entfernt, an denen es stand</translation>
     </message>
 </context>
 <context>
@@ -1145,10 +1149,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>es gibt keinen Schnitt; die Abweichung ist die des Schnitts, der die Formelemente fertig bearbeitet</translation>
     </message>
     <message>
-        <source>there is no pass %1</source>
-        <translation>es gibt keinen Schnitt %1</translation>
-    </message>
-    <message>
         <source>unknown machine &quot;%1&quot;; the data library has: %2</source>
         <translation>unbekannte Maschine „%1“; die Datenbibliothek enthält: %2</translation>
     </message>
@@ -1271,6 +1271,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Boring bar overhang not given: taken as the bore&apos;s depth and the program&apos;s clearance off the end face, %1 mm, the least that reaches; a longer overhang bends more.</source>
         <translation>Auskraglänge der Bohrstange nicht angegeben: als Tiefe der Bohrung und der Abstand des Programms von der Stirnfläche angenommen, %1 mm, das Mindeste, das hinreicht; eine größere Auskraglänge biegt sich stärker.</translation>
+    </message>
+    <message>
+        <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest thermal drift.</source>
+        <translation>Zeit seit dem Start der Maschine nicht angegeben (environment): als durchgewärmt angenommen, %1 min (zehn Zeitkonstanten), die größte Wärmedrift.</translation>
+    </message>
+    <message>
+        <source>Ambient temperature not given (environment): taken as the characterisation&apos;s reference, %1 °C, so no drift from it.</source>
+        <translation>Umgebungstemperatur nicht angegeben (environment): als Bezugstemperatur der Charakterisierung angenommen, %1 °C, also keine Drift durch sie.</translation>
+    </message>
+    <message>
+        <source>there is no pass %1 (the project has %2)</source>
+        <translation>es gibt keinen Schnitt %1 (das Projekt hat %2)</translation>
     </message>
 </context>
 <context>
@@ -1663,6 +1675,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--choose needs --json and a project file (-o PROJECT)</source>
         <translation>--choose braucht --json und eine Projektdatei (-o PROJECT)</translation>
+    </message>
+    <message>
+        <source>--material: unknown material &quot;%1&quot;; the materials are: %2</source>
+        <translation>--material: unbekannter Werkstoff „%1“; die Werkstoffe sind: %2</translation>
+    </message>
+    <message>
+        <source>--machine: unknown machine &quot;%1&quot;; the machines are: %2</source>
+        <translation>--machine: unbekannte Maschine „%1“; die Maschinen sind: %2</translation>
     </message>
 </context>
 <context>
@@ -2174,6 +2194,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 must not be empty</source>
         <translation>%1 darf nicht leer sein</translation>
+    </message>
+    <message>
+        <source>%1 must be at most 1e9 in size, not &quot;%2&quot;</source>
+        <translation>%1 darf betragsmäßig höchstens 1e9 sein, nicht „%2“</translation>
     </message>
 </context>
 <context>
@@ -3426,6 +3450,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the groove between %1 and %2 is %3 mm wide, narrower than the nose of %4 (r_e %5 mm, %6 mm across): it cannot reach the groove&apos;s bottom; cut the groove with a grooving insert at most %3 mm wide</source>
         <translation>der Einstich zwischen %1 und %2 ist %3 mm breit, schmaler als die Schneidenecke von %4 (r_e %5 mm, %6 mm breit): sie erreicht den Grund des Einstichs nicht; den Einstich mit einer Einstechplatte von höchstens %3 mm Breite bearbeiten</translation>
     </message>
+    <message>
+        <source>a pilot hole of Ø%1 mm leaves nothing to bore: the widest bore is Ø%2 mm</source>
+        <translation>eine Vorbohrung von Ø%1 mm lässt nichts auszudrehen: die weiteste Bohrung hat Ø%2 mm</translation>
+    </message>
+    <message>
+        <source>an edge %1 mm off the bar&apos;s axis cannot cut inside a bore: the widest is Ø%2 mm</source>
+        <translation>eine Schneide %1 mm neben der Achse der Bohrstange kann in keiner Bohrung schneiden: die weiteste hat Ø%2 mm</translation>
+    </message>
 </context>
 <context>
     <name>PlotExport</name>
@@ -4133,6 +4165,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>only a boring bar starts from a pilot hole: give it in boring_tool</source>
         <translation>nur eine Bohrstange beginnt an einer Vorbohrung: geben Sie sie in boring_tool an</translation>
+    </message>
+    <message>
+        <source>ISO 286 gives no limits for %1 at Ø%2 mm: %3</source>
+        <translation>ISO 286 nennt für %1 bei Ø%2 mm keine Grenzabmaße: %3</translation>
+    </message>
+    <message>
+        <source>not given: the thermal drift is computed for a machine warmed through, the largest drift; give the time since the machine started</source>
+        <translation>nicht angegeben: die Wärmedrift wird für eine durchgewärmte Maschine berechnet, die größte Drift; geben Sie die Zeit seit dem Start der Maschine an</translation>
+    </message>
+    <message>
+        <source>not given: taken as the characterisation&apos;s reference temperature, %1 °C, so no drift from it</source>
+        <translation>nicht angegeben: als Bezugstemperatur der Charakterisierung angenommen, %1 °C, also keine Drift durch sie</translation>
+    </message>
+    <message>
+        <source>least cost needs the machine and operator rate per minute, but it is 0 (or not given)</source>
+        <translation>minimale Kosten brauchen den Maschinen- und Bedienerstundensatz je Minute, er ist aber 0 (oder nicht angegeben)</translation>
     </message>
 </context>
 <context>
@@ -5215,6 +5263,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>--load takes three numbers in newtons, radial,tangential,axial, each at most 1e6, not &quot;%1&quot;</source>
         <translation>--load nimmt drei Zahlen in Newton, radial,tangential,axial, jede höchstens 1e6, nicht &quot;%1&quot;</translation>
     </message>
+    <message>
+        <source>%1 is planned for machine &quot;%2&quot;, but the test bar was cut on &quot;%3&quot;: its springs are that machine&apos;s; nothing written</source>
+        <translation>%1 ist für die Maschine „%2“ geplant, der Prüfstab wurde aber auf „%3“ gedreht: seine Federn sind die jener Maschine; nichts geschrieben</translation>
+    </message>
 </context>
 <context>
     <name>TableCopy</name>
@@ -5267,10 +5319,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</source>
         <translation>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</translation>
-    </message>
-    <message>
-        <source>a constant offset of %1 µm normal to the surface centres it in the zone</source>
-        <translation>eine konstante Korrektur von %1 µm normal zur Oberfläche zentriert sie in der Toleranzzone</translation>
     </message>
     <message>
         <source>there is no feature &apos;%1&apos; in the profile</source>
@@ -5337,20 +5385,32 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>ISO 1101 Flächenform, mit Bezügen (die Zone liegt fest): jedes delta_n innerhalb ±t/2</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as programmed; their spread fits in t</source>
-        <translation>ISO 1101 Flächenform, mit Bezügen: ein delta_n liegt wie programmiert außerhalb ±t/2; ihre Streuung passt in t</translation>
-    </message>
-    <message>
-        <source>ISO 1101 surface profile, with datums: the spread of delta_n exceeds t</source>
-        <translation>ISO 1101 Flächenform, mit Bezügen: die Streuung von delta_n überschreitet t</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
         <translation>ISO 1101 Flächenform, ohne Bezug (die Zone schwimmt längs der Achse): 2 min über dz von max |delta_n - dz n_z| &lt;= t</translation>
     </message>
     <message>
         <source>the predicted deviation of feature %1 is not finite, so nothing can be said of it</source>
         <translation>die vorhergesagte Abweichung von Element %1 ist nicht endlich, daher lässt sich nichts darüber sagen</translation>
+    </message>
+    <message>
+        <source>Fig. 4b, eq. 15 holds for this tolerance, but the form does not fit the %1 µm zone that all of the feature&apos;s size tolerances allow</source>
+        <translation>Fig. 4b, Gl. 15 gilt für diese Toleranz, aber die Form passt nicht in die %1 µm breite Zone, die alle Maßtoleranzen des Formelements zulassen</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as programmed; a constant radial offset brings all within</source>
+        <translation>ISO 1101 Flächenform, mit Bezügen: ein delta_n liegt wie programmiert außerhalb ±t/2; eine konstante radiale Korrektur bringt alle hinein</translation>
+    </message>
+    <message>
+        <source>a constant offset of %1 µm on the diameter (%2 µm normal to the surface) centres it in the zone</source>
+        <translation>eine konstante Korrektur von %1 µm am Durchmesser (%2 µm normal zur Fläche) zentriert es in der Zone</translation>
+    </message>
+    <message>
+        <source>a constant offset of %1 µm on the diameter brings every delta_n within ±t/2</source>
+        <translation>eine konstante Korrektur von %1 µm am Durchmesser bringt jedes delta_n in ±t/2</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with datums: no constant offset brings every delta_n within ±t/2</source>
+        <translation>ISO 1101 Flächenform, mit Bezügen: keine konstante Korrektur bringt jedes delta_n in ±t/2</translation>
     </message>
 </context>
 <context>
@@ -8429,6 +8489,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The optimisation failed: %1</source>
         <translation>Die Optimierung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Planning</source>
+        <translation>Planung</translation>
     </message>
 </context>
 <context>

@@ -285,10 +285,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Posiciones de la herramienta por elemento torneado (por defecto 21).</translation>
     </message>
     <message>
-        <source>Index of the pass (default: the last finishing pass).</source>
-        <translation>Índice de la pasada (por defecto: la última pasada de acabado).</translation>
-    </message>
-    <message>
         <source>Ignore the stock still on the uncut side of the tool.</source>
         <translation>Ignorar el material que aún queda en el lado no cortado de la herramienta.</translation>
     </message>
@@ -299,10 +295,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--stations must be a whole number from 2 to 100000, not &quot;%1&quot;</source>
         <translation>--stations debe ser un número entero de 2 a 100000, no &quot;%1&quot;</translation>
-    </message>
-    <message>
-        <source>--pass must be a pass index (0, 1, …), not &quot;%1&quot;</source>
-        <translation>--pass debe ser un índice de pasada (0, 1, …), no &quot;%1&quot;</translation>
     </message>
     <message>
         <source>K_n = %1 N/mm², K_f = %2 (Li &amp; Du eq. 15), RMS residual %3 N over %4 cuts</source>
@@ -691,6 +683,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>, %n elemento fresado</numerusform>
             <numerusform>, %n elementos fresados</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Number of the pass, 1 for the first (default: the last finishing pass).</source>
+        <translation>Número de la pasada, 1 para la primera (por defecto: la última pasada de acabado).</translation>
+    </message>
+    <message>
+        <source>--pass must be a pass number (1, 2, …), not &quot;%1&quot;</source>
+        <translation>--pass debe ser un número de pasada (1, 2, …), no «%1»</translation>
+    </message>
+    <message>
+        <source>warning: %1: dropped with the passes it was on</source>
+        <translation>aviso: %1: eliminado con las pasadas en las que estaba</translation>
     </message>
 </context>
 <context>
@@ -1145,10 +1149,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no hay ninguna pasada de corte; la desviación es la de la pasada que acaba los elementos</translation>
     </message>
     <message>
-        <source>there is no pass %1</source>
-        <translation>no existe la pasada %1</translation>
-    </message>
-    <message>
         <source>unknown machine &quot;%1&quot;; the data library has: %2</source>
         <translation>máquina desconocida &quot;%1&quot;; la biblioteca de datos contiene: %2</translation>
     </message>
@@ -1271,6 +1271,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Boring bar overhang not given: taken as the bore&apos;s depth and the program&apos;s clearance off the end face, %1 mm, the least that reaches; a longer overhang bends more.</source>
         <translation>Voladizo de la barra de mandrinar no indicado: se toma la profundidad del agujero más la distancia del programa a la cara frontal, %1 mm, lo mínimo que alcanza; un voladizo mayor flecta más.</translation>
+    </message>
+    <message>
+        <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest thermal drift.</source>
+        <translation>Tiempo desde el arranque de la máquina no indicado (environment): se toma como caliente del todo, %1 min (diez constantes de tiempo), la mayor deriva térmica.</translation>
+    </message>
+    <message>
+        <source>Ambient temperature not given (environment): taken as the characterisation&apos;s reference, %1 °C, so no drift from it.</source>
+        <translation>Temperatura ambiente no indicada (environment): se toma la de referencia de la caracterización, %1 °C, sin deriva por ella.</translation>
+    </message>
+    <message>
+        <source>there is no pass %1 (the project has %2)</source>
+        <translation>no hay pasada %1 (el proyecto tiene %2)</translation>
     </message>
 </context>
 <context>
@@ -1663,6 +1675,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--choose needs --json and a project file (-o PROJECT)</source>
         <translation>--choose necesita --json y un archivo de proyecto (-o PROJECT)</translation>
+    </message>
+    <message>
+        <source>--material: unknown material &quot;%1&quot;; the materials are: %2</source>
+        <translation>--material: material desconocido «%1»; los materiales son: %2</translation>
+    </message>
+    <message>
+        <source>--machine: unknown machine &quot;%1&quot;; the machines are: %2</source>
+        <translation>--machine: máquina desconocida «%1»; las máquinas son: %2</translation>
     </message>
 </context>
 <context>
@@ -2174,6 +2194,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 must not be empty</source>
         <translation>%1 no debe estar vacío</translation>
+    </message>
+    <message>
+        <source>%1 must be at most 1e9 in size, not &quot;%2&quot;</source>
+        <translation>%1 debe ser como mucho 1e9 en valor absoluto, no «%2»</translation>
     </message>
 </context>
 <context>
@@ -3426,6 +3450,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the groove between %1 and %2 is %3 mm wide, narrower than the nose of %4 (r_e %5 mm, %6 mm across): it cannot reach the groove&apos;s bottom; cut the groove with a grooving insert at most %3 mm wide</source>
         <translation>la ranura entre %1 y %2 tiene %3 mm de ancho, menos que la punta de %4 (r_e %5 mm, %6 mm de ancho): no puede llegar al fondo de la ranura; mecanice la ranura con una plaquita de ranurar de %3 mm de ancho como máximo</translation>
     </message>
+    <message>
+        <source>a pilot hole of Ø%1 mm leaves nothing to bore: the widest bore is Ø%2 mm</source>
+        <translation>un agujero previo de Ø%1 mm no deja nada que mandrinar: el mayor agujero es de Ø%2 mm</translation>
+    </message>
+    <message>
+        <source>an edge %1 mm off the bar&apos;s axis cannot cut inside a bore: the widest is Ø%2 mm</source>
+        <translation>un filo a %1 mm del eje de la barra no puede cortar dentro de un agujero: el mayor es de Ø%2 mm</translation>
+    </message>
 </context>
 <context>
     <name>PlotExport</name>
@@ -4133,6 +4165,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>only a boring bar starts from a pilot hole: give it in boring_tool</source>
         <translation>solo una barra de mandrinar parte de un agujero previo: indíquelo en boring_tool</translation>
+    </message>
+    <message>
+        <source>ISO 286 gives no limits for %1 at Ø%2 mm: %3</source>
+        <translation>ISO 286 no da diferencias límite para %1 en Ø%2 mm: %3</translation>
+    </message>
+    <message>
+        <source>not given: the thermal drift is computed for a machine warmed through, the largest drift; give the time since the machine started</source>
+        <translation>no indicado: la deriva térmica se calcula para una máquina caliente del todo, la mayor deriva; indique el tiempo desde el arranque de la máquina</translation>
+    </message>
+    <message>
+        <source>not given: taken as the characterisation&apos;s reference temperature, %1 °C, so no drift from it</source>
+        <translation>no indicada: se toma la temperatura de referencia de la caracterización, %1 °C, sin deriva por ella</translation>
+    </message>
+    <message>
+        <source>least cost needs the machine and operator rate per minute, but it is 0 (or not given)</source>
+        <translation>el coste mínimo necesita la tarifa de máquina y operario por minuto, pero es 0 (o no se indicó)</translation>
     </message>
 </context>
 <context>
@@ -5215,6 +5263,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>--load takes three numbers in newtons, radial,tangential,axial, each at most 1e6, not &quot;%1&quot;</source>
         <translation>--load toma tres números en newtons, radial,tangencial,axial, cada uno como mucho 1e6, no &quot;%1&quot;</translation>
     </message>
+    <message>
+        <source>%1 is planned for machine &quot;%2&quot;, but the test bar was cut on &quot;%3&quot;: its springs are that machine&apos;s; nothing written</source>
+        <translation>%1 está planificado para la máquina «%2», pero la barra de prueba se torneó en «%3»: sus muelles son de esa máquina; no se escribió nada</translation>
+    </message>
 </context>
 <context>
     <name>TableCopy</name>
@@ -5267,10 +5319,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</source>
         <translation>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</translation>
-    </message>
-    <message>
-        <source>a constant offset of %1 µm normal to the surface centres it in the zone</source>
-        <translation>una corrección constante de %1 µm normal a la superficie la centra en la zona</translation>
     </message>
     <message>
         <source>there is no feature &apos;%1&apos; in the profile</source>
@@ -5337,20 +5385,32 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>ISO 1101 forma de superficie, con referencias (la zona está situada): cada delta_n dentro de ±t/2</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as programmed; their spread fits in t</source>
-        <translation>ISO 1101 forma de superficie, con referencias: un delta_n queda fuera de ±t/2 tal como está programado; su dispersión cabe en t</translation>
-    </message>
-    <message>
-        <source>ISO 1101 surface profile, with datums: the spread of delta_n exceeds t</source>
-        <translation>ISO 1101 forma de superficie, con referencias: la dispersión de delta_n supera t</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
         <translation>ISO 1101 forma de superficie, sin referencia (la zona flota a lo largo del eje): 2 min sobre dz de max |delta_n - dz n_z| &lt;= t</translation>
     </message>
     <message>
         <source>the predicted deviation of feature %1 is not finite, so nothing can be said of it</source>
         <translation>la desviación prevista del elemento %1 no es finita, así que no se puede decir nada de ella</translation>
+    </message>
+    <message>
+        <source>Fig. 4b, eq. 15 holds for this tolerance, but the form does not fit the %1 µm zone that all of the feature&apos;s size tolerances allow</source>
+        <translation>Fig. 4b, ec. 15 se cumple para esta tolerancia, pero la forma no cabe en la zona de %1 µm que permiten todas las tolerancias de tamaño del elemento</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with datums: a delta_n lies outside ±t/2 as programmed; a constant radial offset brings all within</source>
+        <translation>ISO 1101 perfil de superficie, con referencias: un delta_n queda fuera de ±t/2 tal como está programado; una corrección radial constante los lleva todos dentro</translation>
+    </message>
+    <message>
+        <source>a constant offset of %1 µm on the diameter (%2 µm normal to the surface) centres it in the zone</source>
+        <translation>una corrección constante de %1 µm en el diámetro (%2 µm normal a la superficie) lo centra en la zona</translation>
+    </message>
+    <message>
+        <source>a constant offset of %1 µm on the diameter brings every delta_n within ±t/2</source>
+        <translation>una corrección constante de %1 µm en el diámetro lleva cada delta_n dentro de ±t/2</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with datums: no constant offset brings every delta_n within ±t/2</source>
+        <translation>ISO 1101 perfil de superficie, con referencias: ninguna corrección constante lleva cada delta_n dentro de ±t/2</translation>
     </message>
 </context>
 <context>
@@ -8429,6 +8489,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The optimisation failed: %1</source>
         <translation>La optimización ha fallado: %1</translation>
+    </message>
+    <message>
+        <source>Planning</source>
+        <translation>Planificación</translation>
     </message>
 </context>
 <context>
