@@ -1273,16 +1273,16 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Auskraglänge der Bohrstange nicht angegeben: als Tiefe der Bohrung und der Abstand des Programms von der Stirnfläche angenommen, %1 mm, das Mindeste, das hinreicht; eine größere Auskraglänge biegt sich stärker.</translation>
     </message>
     <message>
-        <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest thermal drift.</source>
-        <translation>Zeit seit dem Start der Maschine nicht angegeben (environment): als durchgewärmt angenommen, %1 min (zehn Zeitkonstanten), die größte Wärmedrift.</translation>
-    </message>
-    <message>
         <source>Ambient temperature not given (environment): taken as the characterisation&apos;s reference, %1 °C, so no drift from it.</source>
         <translation>Umgebungstemperatur nicht angegeben (environment): als Bezugstemperatur der Charakterisierung angenommen, %1 °C, also keine Drift durch sie.</translation>
     </message>
     <message>
         <source>there is no pass %1 (the project has %2)</source>
         <translation>es gibt keinen Schnitt %1 (das Projekt hat %2)</translation>
+    </message>
+    <message>
+        <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest drift of the size (not always of the form).</source>
+        <translation>Zeit seit dem Start der Maschine nicht angegeben (environment): als durchgewärmt angenommen, %1 min (zehn Zeitkonstanten), die größte Drift des Maßes (nicht immer der Form).</translation>
     </message>
 </context>
 <context>
@@ -3387,6 +3387,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The tolerance constraints include what was learned of the machine from its measured parts (%1); parts not learned from were predicted to %2 µm RMS.</source>
         <translation>Die Toleranz-Randbedingungen enthalten, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (%1); nicht gelernte Teile wurden auf %2 µm RMS vorhergesagt.</translation>
     </message>
+    <message>
+        <source>least cost needs the machine and operator rate per minute, but it is %1</source>
+        <translation>minimale Kosten brauchen den Maschinen- und Bedienerstundensatz je Minute, er ist aber %1</translation>
+    </message>
 </context>
 <context>
     <name>Plausibility</name>
@@ -3451,12 +3455,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>der Einstich zwischen %1 und %2 ist %3 mm breit, schmaler als die Schneidenecke von %4 (r_e %5 mm, %6 mm breit): sie erreicht den Grund des Einstichs nicht; den Einstich mit einer Einstechplatte von höchstens %3 mm Breite bearbeiten</translation>
     </message>
     <message>
-        <source>a pilot hole of Ø%1 mm leaves nothing to bore: the widest bore is Ø%2 mm</source>
-        <translation>eine Vorbohrung von Ø%1 mm lässt nichts auszudrehen: die weiteste Bohrung hat Ø%2 mm</translation>
-    </message>
-    <message>
         <source>an edge %1 mm off the bar&apos;s axis cannot cut inside a bore: the widest is Ø%2 mm</source>
         <translation>eine Schneide %1 mm neben der Achse der Bohrstange kann in keiner Bohrung schneiden: die weiteste hat Ø%2 mm</translation>
+    </message>
+    <message>
+        <source>a pilot hole of Ø%1 mm leaves nothing to bore in %2, Ø%3 mm</source>
+        <translation>eine Vorbohrung von Ø%1 mm lässt in %2, Ø%3 mm, nichts auszudrehen</translation>
     </message>
 </context>
 <context>
@@ -4181,6 +4185,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>least cost needs the machine and operator rate per minute, but it is 0 (or not given)</source>
         <translation>minimale Kosten brauchen den Maschinen- und Bedienerstundensatz je Minute, er ist aber 0 (oder nicht angegeben)</translation>
+    </message>
+    <message>
+        <source>the size tolerances of feature %1 allow no common size: one needs at most %2 µm, another at least %3 µm</source>
+        <translation>die Maßtoleranzen des Formelements %1 lassen kein gemeinsames Maß zu: eine verlangt höchstens %2 µm, eine andere mindestens %3 µm</translation>
     </message>
 </context>
 <context>
@@ -8489,10 +8497,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The optimisation failed: %1</source>
         <translation>Die Optimierung ist fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>Planning</source>
-        <translation>Planung</translation>
     </message>
 </context>
 <context>

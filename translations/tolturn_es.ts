@@ -1273,16 +1273,16 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Voladizo de la barra de mandrinar no indicado: se toma la profundidad del agujero más la distancia del programa a la cara frontal, %1 mm, lo mínimo que alcanza; un voladizo mayor flecta más.</translation>
     </message>
     <message>
-        <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest thermal drift.</source>
-        <translation>Tiempo desde el arranque de la máquina no indicado (environment): se toma como caliente del todo, %1 min (diez constantes de tiempo), la mayor deriva térmica.</translation>
-    </message>
-    <message>
         <source>Ambient temperature not given (environment): taken as the characterisation&apos;s reference, %1 °C, so no drift from it.</source>
         <translation>Temperatura ambiente no indicada (environment): se toma la de referencia de la caracterización, %1 °C, sin deriva por ella.</translation>
     </message>
     <message>
         <source>there is no pass %1 (the project has %2)</source>
         <translation>no hay pasada %1 (el proyecto tiene %2)</translation>
+    </message>
+    <message>
+        <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest drift of the size (not always of the form).</source>
+        <translation>Tiempo desde el arranque de la máquina no indicado (environment): se toma como caliente del todo, %1 min (diez constantes de tiempo), la mayor deriva de la cota (no siempre de la forma).</translation>
     </message>
 </context>
 <context>
@@ -3387,6 +3387,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The tolerance constraints include what was learned of the machine from its measured parts (%1); parts not learned from were predicted to %2 µm RMS.</source>
         <translation>Las restricciones de tolerancia incluyen lo aprendido de la máquina a partir de sus piezas medidas (%1); las piezas no aprendidas se predijeron a %2 µm RMS.</translation>
     </message>
+    <message>
+        <source>least cost needs the machine and operator rate per minute, but it is %1</source>
+        <translation>el coste mínimo necesita la tarifa de máquina y operario por minuto, pero es %1</translation>
+    </message>
 </context>
 <context>
     <name>Plausibility</name>
@@ -3451,12 +3455,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>la ranura entre %1 y %2 tiene %3 mm de ancho, menos que la punta de %4 (r_e %5 mm, %6 mm de ancho): no puede llegar al fondo de la ranura; mecanice la ranura con una plaquita de ranurar de %3 mm de ancho como máximo</translation>
     </message>
     <message>
-        <source>a pilot hole of Ø%1 mm leaves nothing to bore: the widest bore is Ø%2 mm</source>
-        <translation>un agujero previo de Ø%1 mm no deja nada que mandrinar: el mayor agujero es de Ø%2 mm</translation>
-    </message>
-    <message>
         <source>an edge %1 mm off the bar&apos;s axis cannot cut inside a bore: the widest is Ø%2 mm</source>
         <translation>un filo a %1 mm del eje de la barra no puede cortar dentro de un agujero: el mayor es de Ø%2 mm</translation>
+    </message>
+    <message>
+        <source>a pilot hole of Ø%1 mm leaves nothing to bore in %2, Ø%3 mm</source>
+        <translation>un agujero previo de Ø%1 mm no deja nada que mandrinar en %2, Ø%3 mm</translation>
     </message>
 </context>
 <context>
@@ -4181,6 +4185,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>least cost needs the machine and operator rate per minute, but it is 0 (or not given)</source>
         <translation>el coste mínimo necesita la tarifa de máquina y operario por minuto, pero es 0 (o no se indicó)</translation>
+    </message>
+    <message>
+        <source>the size tolerances of feature %1 allow no common size: one needs at most %2 µm, another at least %3 µm</source>
+        <translation>las tolerancias de tamaño del elemento %1 no permiten un tamaño común: una exige como mucho %2 µm, otra al menos %3 µm</translation>
     </message>
 </context>
 <context>
@@ -8489,10 +8497,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The optimisation failed: %1</source>
         <translation>La optimización ha fallado: %1</translation>
-    </message>
-    <message>
-        <source>Planning</source>
-        <translation>Planificación</translation>
     </message>
 </context>
 <context>

@@ -622,8 +622,9 @@ void environmentOfThermalDrift(const Project &p, TurningInputs &in)
     const ThermalDrift &t = *in.thermal;
     if (!p.environment.timeSinceStart_min) {
         in.timeSinceStart_min = kWarmTimeConstants * t.timeConstant_min;
-        in.notes << DeviationModel::tr("Time since the machine started not given (environment): taken as warmed "
-                                       "through, %1 min (ten time constants), the largest thermal drift.")
+        in.notes << DeviationModel::tr(
+                        "Time since the machine started not given (environment): taken as warmed "
+                        "through, %1 min (ten time constants), the largest drift of the size (not always of the form).")
                         .arg(num(in.timeSinceStart_min));
     }
     if (!p.environment.ambientTemperature_C) {

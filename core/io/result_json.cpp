@@ -114,7 +114,8 @@ QJsonObject deviationJson(const QString &file, const Project &project, const Dev
         {QStringLiteral("material"), project.materialId},
         {QStringLiteral("clamping"), keyword(project.clamping.method)},
         {QStringLiteral("force_model"), in.forceModel},
-        {QStringLiteral("pass"), QJsonObject{{QStringLiteral("index"), in.passIndex},
+        {QStringLiteral("pass"), QJsonObject{{QStringLiteral("index"), in.passIndex}, // from 0, as in the file's list
+                                             {QStringLiteral("number"), in.passIndex + 1}, // from 1, as --pass
                                              {QStringLiteral("kind"), keyword(in.pass.kind)},
                                              {QStringLiteral("cutting_speed_m_min"), in.pass.cuttingSpeed_m_min},
                                              {QStringLiteral("feed_mm_rev"), in.pass.feed_mm_rev},

@@ -72,40 +72,51 @@ CompensationPlan planCompensation(const Project &project, const DeviationResult 
         c.side = f.side;
         int worst = 0;
         double offset = 0.0;
+        bool locatedProfile = false; // its zone lies on the exact profile, not on the program's target
         for (std::size_t i = 0; i < project.tolerances.size() && i < verdicts.size(); ++i) {
-            if (project.tolerances[i].featureId != f.featureId)
+            const Tolerance &t = project.tolerances[i];
+            if (t.featureId != f.featureId)
                 continue;
-            c.tolerances << project.tolerances[i].id;
+            c.tolerances << t.id;
+            locatedProfile = locatedProfile || (t.type == ToleranceType::Profile && !t.datums.isEmpty());
             const int s = severity(verdicts[i].verdict);
             if (s > worst)
                 worst = s;
             if (verdicts[i].offset_um)
                 offset = *verdicts[i].offset_um;
         }
-        double lo = 1e300;
-        double hi = -1e300;
-        for (const Station &st : f.stations) {
-            lo = std::min(lo, st.radiusError_mm);
-            hi = std::max(hi, st.radiusError_mm);
-        }
-        c.residualBefore_um = std::max(std::abs(lo), std::abs(hi)) * kUmPerMm;
+        // What the feature is to be cut to: the middle of its zone (the target contour), or the exact
+        // profile for a located profile; the error from it as the plain program would cut [mm].
+        const auto aim = [&](const Station &st) {
+            return locatedProfile ? st.nominalRadius_mm
+                                  : targetRadius_mm(target, f.featureId, st.z_mm).value_or(st.nominalRadius_mm);
+        };
+        const auto errorFromAim = [&](const Station &st) {
+            return st.radiusError_mm + targetRadius_mm(target, f.featureId, st.z_mm).value_or(st.nominalRadius_mm) -
+                   aim(st);
+        };
+        double before = 0.0;
+        for (const Station &st : f.stations)
+            before = std::max(before, std::abs(errorFromAim(st)));
+        c.residualBefore_um = before * kUmPerMm;
         c.residualAfter_um = c.residualBefore_um;
         if (worst == 1) {
             // A constant offset of the diameter; the radius errors shift by half of it.
             c.action = CompensationAction::ConstantOffset;
             c.offset_um = offset;
-            c.residualAfter_um =
-                std::max(std::abs(lo * kUmPerMm + 0.5 * offset), std::abs(hi * kUmPerMm + 0.5 * offset));
+            double after = 0.0;
+            for (const Station &st : f.stations)
+                after = std::max(after, std::abs(errorFromAim(st) * kUmPerMm + 0.5 * offset));
+            c.residualAfter_um = after;
         } else if (worst == 2) {
             c.action = CompensationAction::ProfileCorrection;
-            // The target (the middle of the zone) against the deviation: the machined radius is the
-            // programmed one plus the radius error (a bore's is the negative of its material left).
+            // The aim against the deviation: the machined radius is the programmed one plus the
+            // radius error (a bore's is the negative of its material left).
             double residual = 0.0;
             for (const Station &st : f.stations) {
-                const double aim = targetRadius_mm(target, f.featureId, st.z_mm).value_or(st.nominalRadius_mm);
-                const double programmed = toResolution(aim - st.radiusError_mm);
+                const double programmed = toResolution(aim(st) - st.radiusError_mm);
                 c.correctedPath.push_back({st.z_mm, programmed});
-                residual = std::max(residual, std::abs(programmed + st.radiusError_mm - aim));
+                residual = std::max(residual, std::abs(programmed + st.radiusError_mm - aim(st)));
             }
             c.residualAfter_um = residual * kUmPerMm;
         }

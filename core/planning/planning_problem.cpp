@@ -94,6 +94,14 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
                                    "(from its maker's catalogue), with their source")));
         return result;
     }
+    // Without the rate a part would cost its inserts alone, or nothing: a plan at no cost would be
+    // chosen at random (docs/planning.md §1).
+    if (s.objective == PlanningObjective::Cost && !(s.machineRate_per_min > 0.0)) {
+        out.push_back(makeError(QStringLiteral("planning.machine_rate_per_min"),
+                                Planning::tr("least cost needs the machine and operator rate per minute, but it is %1")
+                                    .arg(QString::number(s.machineRate_per_min))));
+        return result;
+    }
     DeviationOptions options;
     options.stationsPerFeature = kStations;
     options.stiffnessEnd = learned ? StiffnessEnd::Compliant : end;

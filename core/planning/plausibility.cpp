@@ -58,23 +58,30 @@ void checkLibraryEntries(const Project &p, const DataLibrary &data, Diagnostics 
                                       .arg(p.tool.holderCode)));
 }
 
-// What no bore of the part allows: a pilot hole at least as wide as the widest bore leaves nothing to
-// bore, and an edge as far off the bar's axis as the widest bore is across cannot cut inside it (the
-// bar's axis lies inside the bore, so the edge is less than a diameter from the wall opposite).
+// What no bore this set-up cuts allows: a pilot hole at least as wide as the narrowest of them leaves
+// nothing to bore there, and an edge as far off the bar's axis as the widest is across cannot cut
+// inside it (the bar's axis lies inside the bore, so the edge is less than a diameter from the wall
+// opposite).
 void checkBoringGeometry(const Project &p, const Tool &t, Diagnostics &out)
 {
+    double narrowest = 1e300;
     double widest = 0.0;
+    QString narrowestId;
     for (const Segment &s : p.part.inner.segments) {
-        if (s.kind == SegmentKind::Cylinder)
-            widest = std::max(widest, 2.0 * s.from.r_mm);
+        if (s.kind != SegmentKind::Cylinder || (p.scope && !p.scope->cutFeatures.contains(s.id)))
+            continue;
+        widest = std::max(widest, 2.0 * s.from.r_mm);
+        if (2.0 * s.from.r_mm < narrowest) {
+            narrowest = 2.0 * s.from.r_mm;
+            narrowestId = s.id;
+        }
     }
     if (widest <= 0.0)
         return;
-    if (t.pilotHoleDiameter_mm && *t.pilotHoleDiameter_mm >= widest)
+    if (t.pilotHoleDiameter_mm && *t.pilotHoleDiameter_mm >= narrowest)
         out.push_back(makeError(QStringLiteral("boring_tool.pilot_hole_diameter_mm"),
-                                Plausibility::tr("a pilot hole of Ø%1 mm leaves nothing to bore: the widest bore "
-                                                 "is Ø%2 mm")
-                                    .arg(num(*t.pilotHoleDiameter_mm), num(widest))));
+                                Plausibility::tr("a pilot hole of Ø%1 mm leaves nothing to bore in %2, Ø%3 mm")
+                                    .arg(num(*t.pilotHoleDiameter_mm), narrowestId, num(narrowest))));
     if (t.edgeOffset_mm && *t.edgeOffset_mm >= widest)
         out.push_back(makeError(QStringLiteral("boring_tool.edge_offset_mm"),
                                 Plausibility::tr("an edge %1 mm off the bar's axis cannot cut inside a bore: the "

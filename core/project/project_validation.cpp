@@ -6,6 +6,7 @@
 #include "core/project/keywords.h"
 #include "core/project/operations.h"
 #include "core/tolerance/iso286.h"
+#include "core/tolerance/target_contour.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -251,6 +252,8 @@ void checkTolerance(const Project &p, const Tolerance &t, const QSet<QString> &d
         checkGeometric(t, datumLabels, path, out);
 }
 
+void checkSizesMeet(const Project &p, Diagnostics &out);
+
 void checkTolerances(const Project &p, Diagnostics &out)
 {
     QSet<QString> datumLabels;
@@ -268,6 +271,27 @@ void checkTolerances(const Project &p, Diagnostics &out)
                 makeError(path + QStringLiteral("id"), ProjectValidation::tr("the id '%1' is used twice").arg(t.id)));
         ids.insert(t.id);
         checkTolerance(p, t, datumLabels, path, out);
+    }
+    if (!hasErrors(out))
+        checkSizesMeet(p, out);
+}
+
+// Two size tolerances on one diameter must allow a common size: the program aims at the middle of
+// the zone both allow (targetContour), and no offset or correction can cut a size neither allows.
+void checkSizesMeet(const Project &p, Diagnostics &out)
+{
+    for (const DiameterTarget &target : diameterTargets(p)) {
+        if (target.upper_um >= target.lower_um)
+            continue;
+        std::size_t last = 0;
+        for (std::size_t i = 0; i < p.tolerances.size(); ++i) {
+            if (p.tolerances[i].featureId == target.featureId && p.tolerances[i].type == ToleranceType::Diameter)
+                last = i;
+        }
+        out.push_back(makeError(QStringLiteral("tolerances[%1]").arg(last),
+                                ProjectValidation::tr("the size tolerances of feature %1 allow no common size: one "
+                                                      "needs at most %2 µm, another at least %3 µm")
+                                    .arg(target.featureId, num(target.upper_um), num(target.lower_um))));
     }
 }
 
@@ -410,10 +434,11 @@ void checkPlanning(const Project &p, Diagnostics &out)
         requireNonNegative(value, path + QLatin1String(name), out);
     // Without the rate the cost of a part is its inserts alone, and without those nothing: a plan at
     // no cost would be chosen at random, so least cost asks for the rate (docs/planning.md §1).
+    // (A warning here: the other commands need no rate; planning refuses to plan without it.)
     if (s.objective == PlanningObjective::Cost && s.machineRate_per_min == 0.0)
-        out.push_back(makeError(path + QStringLiteral("machine_rate_per_min"),
-                                ProjectValidation::tr("least cost needs the machine and operator rate per minute, "
-                                                      "but it is 0 (or not given)")));
+        out.push_back(makeWarning(path + QStringLiteral("machine_rate_per_min"),
+                                  ProjectValidation::tr("least cost needs the machine and operator rate per minute, "
+                                                        "but it is 0 (or not given)")));
     requirePositive(s.taylorC_m_min, path + QStringLiteral("tool_life.C_m_min"), out);
     if (s.taylorN && (!std::isfinite(*s.taylorN) || *s.taylorN <= 0.0 || *s.taylorN >= 1.0))
         out.push_back(makeError(

@@ -287,6 +287,12 @@ private Q_SLOTS:
         const Run first = runCli({QStringLiteral("deflect"), QStringLiteral("--pass"), QStringLiteral("1"), shaft});
         QCOMPARE(first.exitCode, 0);
         QVERIFY(first.out.contains(QStringLiteral("Pass 1 (")));
+        const Run json = runCli({QStringLiteral("deflect"), QStringLiteral("--json"), QStringLiteral("--pass"),
+                                 QStringLiteral("9"), shaft});
+        const QJsonObject pass =
+            QJsonDocument::fromJson(json.out.toUtf8()).object().value(QStringLiteral("pass")).toObject();
+        QCOMPARE(pass.value(QStringLiteral("number")).toInt(), 9);
+        QCOMPARE(pass.value(QStringLiteral("index")).toInt(), 8);
         const Run beyond = runCli({QStringLiteral("deflect"), QStringLiteral("--pass"), QStringLiteral("10"), shaft});
         QCOMPARE(beyond.exitCode, 1);
         QVERIFY2(beyond.err.contains(QStringLiteral("there is no pass 10 (the project has 9)")),

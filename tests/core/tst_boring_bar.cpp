@@ -288,6 +288,14 @@ private Q_SLOTS:
         farEdge.boringTool->edgeOffset_mm = 31.9;
         QVERIFY(!hasField(checkPlausibility(farEdge, DataLibrary::builtIn()), "boring_tool.edge_offset_mm",
                           Severity::Error));
+
+        // Per set-up: the valve body's first set-up bores only I4, Ø25 (OP 20 the Ø32 I1), so a Ø30
+        // pilot hole there leaves nothing to bore, though OP 20's bore is wider.
+        Project valve = test::exampleProject("valve-body-two-bores.tolturn");
+        QVERIFY(!hasErrors(checkPlausibility(valve, DataLibrary::builtIn())));
+        valve.boringTool->pilotHoleDiameter_mm = 30.0;
+        const Diagnostics d = checkPlausibility(valve, DataLibrary::builtIn());
+        QVERIFY2(hasField(d, "boring_tool.pilot_hole_diameter_mm", Severity::Error), qPrintable(dump(d)));
     }
 
     // The maker's longest overhang (WIDIA: 4 x D for steel shank bars): 120 mm on Ø25 is 4.8 x D,

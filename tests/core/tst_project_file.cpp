@@ -523,11 +523,14 @@ private Q_SLOTS:
         row("ambient below absolute zero", shaft, {QStringLiteral("environment={\"ambient_temperature_C\": -300}")},
             "environment.ambient_temperature_C", "above absolute zero (-273.15 °C), but is -300 °C");
         // ISO 286-1 gives j8 only up to Ø3 mm; the bearing seat is Ø50.
+        // h6 on the Ø50 seat is 0/-16 µm; a second size tolerance of +20/+30 µm (in place of the
+        // cylindricity) shares no size with it.
+        row("two sizes with no common size", shaft,
+            {QStringLiteral("tolerances[1]={\"id\": \"T2\", \"type\": \"diameter\", \"feature\": \"O4\", "
+                            "\"upper_um\": 30, \"lower_um\": 20}")},
+            "tolerances[1]", "feature O4 allow no common size: one needs at most 0 µm, another at least 20 µm");
         row("ISO 286 class not defined at the size", shaft, {QStringLiteral("tolerances[0].iso286=\"j8\"")},
             "tolerances[0].iso286", "gives no limits for j8 at Ø50 mm: shaft j8 is not defined");
-        row("least cost without the machine rate", shaft,
-            {QStringLiteral("planning.objective=\"cost\""), QStringLiteral("planning.machine_rate_per_min=0")},
-            "planning.machine_rate_per_min", "least cost needs the machine and operator rate");
     }
 
     void badInput()

@@ -24,7 +24,6 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSignalSpy>
@@ -197,35 +196,24 @@ private Q_SLOTS:
         QVERIFY(roughness->isChecked());
     }
 
-    // Least cost without a machine rate would plan at a cost of zero: the choice is refused with the
-    // field named, and the objective box shows the objective the project still has.
-    void leastCostWithoutARateIsRefused()
+    // Least cost without a machine rate would plan at a cost of zero: the choice is kept (deflection
+    // and verdicts need no rate), but Optimise says what is missing instead of planning.
+    void leastCostWithoutARateIsNotPlanned()
     {
         MainWindow w;
         QVERIFY(w.fileController()->openFile(example("stepped-shaft-chuck.tolturn")));
         PlanningSettings s = w.document()->project().planning;
         s.machineRate_per_min = 0.0;
-        QVERIFY(w.document()->setPlanning(s).empty()); // least time needs no rate
-        QComboBox *objective = nullptr;
-        for (QComboBox *box : w.planningPanel()->findChildren<QComboBox *>()) {
-            if (box->findText(QStringLiteral("Least cost per part")) >= 0)
-                objective = box;
-        }
-        QVERIFY(objective != nullptr);
-        if (objective == nullptr)
-            return;
-        QString said;
-        QTimer::singleShot(0, [&said] {
-            if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
-                said = box->text();
-                box->accept();
-            }
-        });
-        objective->setCurrentIndex(objective->findData(static_cast<int>(PlanningObjective::Cost)));
-        QVERIFY2(said.contains(QStringLiteral("planning.machine_rate_per_min: least cost needs the machine")),
-                 qPrintable(said));
-        QCOMPARE(w.document()->project().planning.objective, PlanningObjective::Time);
-        QCOMPARE(objective->currentData().toInt(), static_cast<int>(PlanningObjective::Time));
+        s.objective = PlanningObjective::Cost;
+        QVERIFY(w.document()->setPlanning(s).empty());
+        PlanningPanel *panel = w.planningPanel();
+        QSignalSpy finished(panel, &PlanningPanel::finished);
+        panel->optimise();
+        QVERIFY(finished.count() == 1 || finished.wait(60000));
+        QVERIFY(panel->report() == nullptr || !panel->report()->plan.feasible);
+        QVERIFY2(panel->planText().contains(QStringLiteral("planning.machine_rate_per_min: least cost needs the "
+                                                           "machine and operator rate")),
+                 qPrintable(panel->planText()));
     }
 
     void planningDataDialogShowsTheFile()

@@ -227,7 +227,8 @@ private Q_SLOTS:
     }
 
     // The ISO 286 picker on the Ø50 bearing seat O4: h6 is 0/-16 µm (ISO 286-2 Table 2), H7 is a
-    // hole class and refused on an outer surface, an unknown letter shows its error as typed.
+    // hole class and refused on an outer surface, an unknown letter shows its error as typed, and a
+    // class that shares no size with the seat's own h6 is refused.
     void dialogShowsLimitsLiveAndRefusesWhatIsWrong()
     {
         const ProjectParseResult read = readProjectFile(example("stepped-shaft-chuck.tolturn"));
@@ -258,11 +259,16 @@ private Q_SLOTS:
         dialog.setIsoClass(QStringLiteral("H7"));
         QVERIFY(!dialog.tryAccept());
         QVERIFY(dialog.problemsText().contains(QStringLiteral("'H7' is a hole class")));
+        // k6 (+2/+18 µm) shares no size with the seat's h6 (0/-16 µm): refused, named; h7 (0/-25) does.
         dialog.setIsoClass(QStringLiteral("k6"));
+        QVERIFY(!dialog.tryAccept());
+        QVERIFY2(dialog.problemsText().contains(QStringLiteral("feature O4 allow no common size")),
+                 qPrintable(dialog.problemsText()));
+        dialog.setIsoClass(QStringLiteral("h7"));
         QVERIFY(dialog.tryAccept());
-        QCOMPARE(applied.iso286Class, QStringLiteral("k6"));
+        QCOMPARE(applied.iso286Class, QStringLiteral("h7"));
         QCOMPARE(applied.featureId, QStringLiteral("O4"));
-        QCOMPARE(calls, 2);
+        QCOMPARE(calls, 3);
 
         ToleranceDialog geometric(project, QStringLiteral("O4"), initial, apply);
         geometric.setCharacteristic(ToleranceType::TotalRadialRunout);

@@ -316,12 +316,7 @@ void PlanningPanel::settingsEdited()
         if (box->isEnabled() ? !box->isChecked() : before.contains(keyword))
             s.disabledConstraints << keyword;
     }
-    // A refused choice (least cost without a machine rate) is named and the controls put back.
-    const Diagnostics refused = m_document.setPlanning(s);
-    if (!refused.empty()) {
-        showProjectOutputs();
-        QMessageBox::warning(this, tr("Planning"), refused.front().toString());
-    }
+    (void)m_document.setPlanning(s);
 }
 
 void PlanningPanel::editPlanningData()
