@@ -216,22 +216,53 @@ void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, Toleranc
     say(e.condition, [&] { return QString(condition); });
 }
 
+// The s that minimises the largest |d_i - s c_i| over the pairs (d_i, c_i), and that largest value.
+// A maximum of absolute values of lines is convex in s: golden-section search over the s that can
+// matter (at the best s no term exceeds max |d_i|, its value at s = 0, so |s| max |c_i| <= 2 max |d_i|).
+std::pair<double, double> leastLargestShift(const std::vector<std::pair<double, double>> &terms)
+{
+    double largest = 0.0;
+    double largestSlope = 0.0;
+    for (const auto &[d, c] : terms) {
+        largest = std::max(largest, std::abs(d));
+        largestSlope = std::max(largestSlope, std::abs(c));
+    }
+    if (largestSlope < 1e-12)
+        return {0.0, largest}; // no shift changes any term
+    const auto worst = [&terms](double shift) {
+        double w = 0.0;
+        for (const auto &[d, c] : terms)
+            w = std::max(w, std::abs(d - shift * c));
+        return w;
+    };
+    double lo = -2.0 * largest / largestSlope;
+    double hi = -lo;
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int i = 0; i < 200 && hi - lo > 1e-13 * (1.0 + std::abs(hi)); ++i) {
+        const double a = hi - ratio * (hi - lo);
+        const double b = lo + ratio * (hi - lo);
+        if (worst(a) <= worst(b))
+            hi = b; // the minimum lies in [lo, b]
+        else
+            lo = a;
+    }
+    const double best = 0.5 * (lo + hi);
+    return {best, worst(best)};
+}
+
 // The width of the narrowest zone of the exact profile that holds every normal deviation when the
 // zone may slide along the axis (the only way a surface of revolution's exact profile can move
 // without a datum and keep its size; ISO 1101 scales it only with the OZ modifier): a slide dz
 // changes the normal distance by dz n_z, so the width is 2 min over dz of max |delta_n - dz n_z|.
-// For a cone n_z is constant and this is the spread of delta_n; for a round it is not. Convex in dz:
-// golden-section search over the slides that can matter.
+// For a cone n_z is constant and this is the spread of delta_n; for a round it is not.
 double floatingZoneWidth_um(const std::vector<std::pair<double, double>> &normals)
 {
-    double largestDeviation = 0.0;
     double largestAxial = 0.0;
     double lowest = 1e300;
     double highest = -1e300;
     double axialLow = 1e300;
     double axialHigh = -1e300;
     for (const auto &[deviation, axial] : normals) {
-        largestDeviation = std::max(largestDeviation, std::abs(deviation));
         largestAxial = std::max(largestAxial, std::abs(axial));
         lowest = std::min(lowest, deviation);
         highest = std::max(highest, deviation);
@@ -242,63 +273,20 @@ double floatingZoneWidth_um(const std::vector<std::pair<double, double>> &normal
         return 0.0;
     if (axialHigh - axialLow < 1e-12 && largestAxial >= 1e-12)
         return highest - lowest; // a cone or a chamfer: the slide is a constant normal offset
-    const auto worst = [&normals](double dz) {
-        double w = 0.0;
-        for (const auto &[deviation, axial] : normals)
-            w = std::max(w, std::abs(deviation - dz * axial));
-        return w;
-    };
-    if (largestAxial < 1e-12)
-        return 2.0 * largestDeviation;
-    // At the best slide no deviation exceeds largestDeviation, so |dz| n_z,max <= 2 largestDeviation.
-    double lo = -2.0 * largestDeviation / largestAxial;
-    double hi = -lo;
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    for (int i = 0; i < 80 && hi - lo > 1e-12 * (1.0 + std::abs(hi)); ++i) {
-        const double a = hi - ratio * (hi - lo);
-        const double b = lo + ratio * (hi - lo);
-        if (worst(a) <= worst(b))
-            hi = b; // the minimum lies in [lo, b]
-        else
-            lo = a;
-    }
-    return 2.0 * worst(0.5 * (lo + hi));
+    return 2.0 * leastLargestShift(normals).second;
 }
 
 // A constant change dr of the programmed radius moves the surface along its normal by dr cos(alpha)
 // at each station (for a cone the same everywhere, on a round not). The dr [µm] that minimises the
 // largest |delta_n + dr cos(alpha)|, and that value: what a tool offset can do for a located profile
-// zone. Convex in dr: golden-section search over the shifts that can matter.
+// zone.
 std::pair<double, double> centringRadialShift_um(const std::vector<std::pair<double, double>> &normalAndCos)
 {
-    double largest = 0.0;
-    double largestCos = 0.0;
-    for (const auto &[normal, cosine] : normalAndCos) {
-        largest = std::max(largest, std::abs(normal));
-        largestCos = std::max(largestCos, cosine);
-    }
-    const auto worst = [&normalAndCos](double dr) {
-        double w = 0.0;
-        for (const auto &[normal, cosine] : normalAndCos)
-            w = std::max(w, std::abs(normal + dr * cosine));
-        return w;
-    };
-    if (largestCos < 1e-12)
-        return {0.0, largest}; // every normal is axial: no radial shift moves the surface
-    // At the best shift no deviation exceeds `largest`, so |dr| cos_max <= 2 largest.
-    double lo = -2.0 * largest / largestCos;
-    double hi = -lo;
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    for (int i = 0; i < 200 && hi - lo > 1e-13 * (1.0 + std::abs(hi)); ++i) {
-        const double a = hi - ratio * (hi - lo);
-        const double b = lo + ratio * (hi - lo);
-        if (worst(a) <= worst(b))
-            hi = b;
-        else
-            lo = a;
-    }
-    const double best = 0.5 * (lo + hi);
-    return {best, worst(best)};
+    std::vector<std::pair<double, double>> terms; // delta_n - dr (-cos(alpha))
+    terms.reserve(normalAndCos.size());
+    for (const auto &[normal, cosine] : normalAndCos)
+        terms.emplace_back(normal, -cosine);
+    return leastLargestShift(terms);
 }
 
 // Profile of a line or surface (ISO 1101:2017 clause 18, definitions of the line and surface profile tolerances; Valiño

@@ -36,6 +36,21 @@ Project part()
     return p;
 }
 
+// part() with an R5 edge round O3 in place of the cone: from Ø50 at z 100 (horizontal there) down to
+// Ø40 at z 105 (vertical there), the face O4 at z 105.
+Project partWithRound()
+{
+    Project p = part();
+    Segment &round = p.part.outer.segments.at(2);
+    round.kind = SegmentKind::Radius;
+    round.to = {105, 20};
+    round.arcRadius_mm = 5.0;
+    round.arcDirection = ArcDirection::Clockwise;
+    p.part.outer.segments.at(3).from = {105, 20};
+    p.part.outer.segments.at(3).to = {105, 0};
+    return p;
+}
+
 Tolerance geometric(ToleranceType type, const char *feature, double zone, const QStringList &datums = {})
 {
     Tolerance t;
@@ -181,14 +196,7 @@ private Q_SLOTS:
     // passes. On the cone O3 of part() a constant radial deviation is a pure slide: spread 0, it passes.
     void floatingProfileOfARoundMaySlideButNotGrow()
     {
-        Project p = part();
-        Segment &round = p.part.outer.segments.at(2);
-        round.kind = SegmentKind::Radius;
-        round.to = {105, 20};
-        round.arcRadius_mm = 5.0;
-        round.arcDirection = ArcDirection::Clockwise;
-        p.part.outer.segments.at(3).from = {105, 20};
-        p.part.outer.segments.at(3).to = {105, 0};
+        Project p = partWithRound();
         p.tolerances = {geometric(ToleranceType::Profile, "O3", 5)};
         DeviationResult r;
         r.features = {curve("O3", SegmentKind::Radius, 100, 105, [](double) { return 3.0; })};
@@ -267,14 +275,7 @@ private Q_SLOTS:
     // spread, 1.5 µm, taken as the change of the diameter would have moved the surface by 0.75 µm.)
     void locatedProfileOfARoundTakesARadialOffset()
     {
-        Project p = part();
-        Segment &round = p.part.outer.segments.at(2);
-        round.kind = SegmentKind::Radius;
-        round.to = {105, 20};
-        round.arcRadius_mm = 5.0;
-        round.arcDirection = ArcDirection::Clockwise;
-        p.part.outer.segments.at(3).from = {105, 20};
-        p.part.outer.segments.at(3).to = {105, 0};
+        Project p = partWithRound();
         p.tolerances = {geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("A")})};
         DeviationResult r;
         r.features = {curve("O3", SegmentKind::Radius, 100, 105, [](double) { return 3.0; })};
