@@ -46,6 +46,16 @@ std::optional<int> indexOption(const QCommandLineParser &parser, const QCommandL
     return std::nullopt;
 }
 
+// The ids of the data library's entries (materials, machines), comma-separated.
+template <typename Entries>
+QString idsOf(const Entries &entries)
+{
+    QStringList ids;
+    for (const auto &entry : entries)
+        ids << entry.id;
+    return ids.join(QStringLiteral(", "));
+}
+
 Project projectFor(const CadImportResult &r, const QString &material, const QString &machine)
 {
     Project p = projectForPart(*r.profile);
@@ -249,24 +259,15 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
     // An id the data library does not know would give a project that does not open: refused before
     // anything is read or written.
     const DataLibrary &data = DataLibrary::builtIn();
-    if (!data.material(parser.value(material))) {
-        QStringList known;
-        for (const MaterialData &m : data.materials())
-            known << m.id;
-        err << programName() << " import: "
-            << ImportCommand::tr("--material: unknown material \"%1\"; the materials are: %2")
-                   .arg(parser.value(material), known.join(QStringLiteral(", ")))
-            << '\n';
-        return kExitUsage;
-    }
-    if (!data.machine(parser.value(machine))) {
-        QStringList known;
-        for (const MachineData &m : data.machines())
-            known << m.id;
-        err << programName() << " import: "
-            << ImportCommand::tr("--machine: unknown machine \"%1\"; the machines are: %2")
-                   .arg(parser.value(machine), known.join(QStringLiteral(", ")))
-            << '\n';
+    QString unknown;
+    if (!data.material(parser.value(material)))
+        unknown = ImportCommand::tr("--material: unknown material \"%1\"; the materials are: %2")
+                      .arg(parser.value(material), idsOf(data.materials()));
+    else if (!data.machine(parser.value(machine)))
+        unknown = ImportCommand::tr("--machine: unknown machine \"%1\"; the machines are: %2")
+                      .arg(parser.value(machine), idsOf(data.machines()));
+    if (!unknown.isEmpty()) {
+        err << programName() << " import: " << unknown << '\n';
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
