@@ -5420,6 +5420,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>ISO 1101 surface profile, with datums: no constant offset brings every delta_n within ±t/2</source>
         <translation>ISO 1101 Flächenform, mit Bezügen: keine konstante Korrektur bringt jedes delta_n in ±t/2</translation>
     </message>
+    <message>
+        <source>a constant tool offset of %1 µm on the diameter centres the size in the %2 µm zone that all of the feature&apos;s size tolerances allow</source>
+        <translation>eine konstante Werkzeugkorrektur von %1 µm auf den Durchmesser zentriert das Maß in der %2 µm breiten Zone, die alle Maßtoleranzen des Formelements zulassen</translation>
+    </message>
 </context>
 <context>
     <name>Toolpath</name>

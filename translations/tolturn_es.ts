@@ -5420,6 +5420,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>ISO 1101 surface profile, with datums: no constant offset brings every delta_n within ±t/2</source>
         <translation>ISO 1101 perfil de superficie, con referencias: ninguna corrección constante lleva cada delta_n dentro de ±t/2</translation>
     </message>
+    <message>
+        <source>a constant tool offset of %1 µm on the diameter centres the size in the %2 µm zone that all of the feature&apos;s size tolerances allow</source>
+        <translation>una corrección constante de la herramienta de %1 µm en el diámetro centra la medida en la zona de %2 µm que permiten todas las tolerancias de tamaño del elemento</translation>
+    </message>
 </context>
 <context>
     <name>Toolpath</name>

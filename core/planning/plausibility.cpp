@@ -269,9 +269,10 @@ void checkOperation(const Project &project, int index, const DataLibrary &data, 
     }
     const QString prefix = QStringLiteral("further_operations[%1].").arg(index - 1);
     for (Diagnostic &d : found) {
-        const bool ofOperation = d.field.startsWith(QLatin1String("tool")) ||
-                                 d.field.startsWith(QLatin1String("boring_tool")) ||
-                                 d.field.startsWith(QLatin1String("passes"));
+        // The set-up's own fields; the rest (part, material, machine) are the first set-up's too.
+        const bool ofOperation =
+            d.field.startsWith(QLatin1String("tool")) || d.field.startsWith(QLatin1String("boring_tool")) ||
+            d.field.startsWith(QLatin1String("passes")) || d.field.startsWith(QLatin1String("clamping"));
         if (index == 0 || ofOperation) {
             if (index > 0)
                 d.field.prepend(prefix);

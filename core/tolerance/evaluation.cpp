@@ -146,10 +146,17 @@ void evaluateDiameter(const ProgramTargets &targets, const Tolerance &t, const F
             return QString(ToleranceVerdicts::tr(
                 "Fig. 4b: eq. 13 fails as programmed, eq. 15 holds: 2|delta_TMd - delta_Tmd| <= t"));
         });
+        const bool sharedZone = aimUpper != *e.upper_um || aimLower != *e.lower_um;
         say(e.reason, [&] {
+            const QString offset = QString::number(*e.offset_um, 'f', 1);
+            if (sharedZone)
+                return QString(
+                    ToleranceVerdicts::tr("a constant tool offset of %1 µm on the diameter centres the size "
+                                          "in the %2 µm zone that all of the feature's size tolerances allow")
+                        .arg(offset, formatNumber(aimUpper - aimLower)));
             return QString(ToleranceVerdicts::tr(
                                "a constant tool offset of %1 µm on the diameter centres the size in its tolerance")
-                               .arg(QString::number(*e.offset_um, 'f', 1)));
+                               .arg(offset));
         });
     } else if (form <= tolerance) {
         e.verdict = Verdict::NeedsProfileCorrection;

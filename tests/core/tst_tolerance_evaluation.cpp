@@ -260,6 +260,9 @@ private Q_SLOTS:
         QCOMPARE(v.at(1).verdict, Verdict::PassesAfterOffset);
         QVERIFY2(std::abs(*v.at(0).offset_um + 6.0) < 1e-9, qPrintable(QString::number(*v.at(0).offset_um)));
         QVERIFY2(std::abs(*v.at(1).offset_um + 6.0) < 1e-9, qPrintable(QString::number(*v.at(1).offset_um)));
+        // h6 is centred in the 8 µm zone both allow, not in its own 16 µm; the 0/-8 zone is its own.
+        QVERIFY2(v.at(0).reason.contains(QStringLiteral("8 µm zone")), qPrintable(v.at(0).reason));
+        QVERIFY2(v.at(1).reason.contains(QStringLiteral("its tolerance")), qPrintable(v.at(1).reason));
 
         r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -3.0 + 0.055 * z; })};
         const std::vector<ToleranceEvaluation> wide = evaluateTolerances(p, r);
