@@ -3,9 +3,9 @@
 
 #include <QCoreApplication>
 #include <QFile>
-#include <QRegularExpression>
 #include <QStringList>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tolturn {
@@ -61,6 +61,12 @@ MeasurementRow readRow(const QStringList &cells, const QString &where, const std
         }
         bool ok = false;
         const double v = cell.toDouble(&ok);
+        if (!ok && cell.contains(QLatin1Char(','))) {
+            out.push_back(makeError(where, MeasurementFiles::tr("%1 must be a number with a decimal point, not \"%2\"")
+                                               .arg(QLatin1String(columns[c].name), cell)));
+            row.emplace_back(std::nullopt);
+            continue;
+        }
         // No measured length, deviation, force, speed or time comes near 10⁹ in the columns' units
         // (mm, µm, N, rpm, min): such a value is a slip, and would overflow the fits downstream.
         constexpr double kLargestMeasurement = 1e9;
@@ -83,7 +89,10 @@ std::optional<std::vector<MeasurementRow>> parseMeasurementTable(const QString &
                                                                  const std::vector<MeasurementColumn> &columns,
                                                                  Diagnostics &out, std::vector<MeasurementTexts> *texts)
 {
-    static const QRegularExpression separator(QStringLiteral("[,;]"));
+    // The header's separator is the file's: a semicolon file may write decimal commas ("49,992"),
+    // which a comma split would cut into two cells and read as 49.
+    QChar separator = QLatin1Char(',');
+    qsizetype headerCells = 0;
     const int errorsBefore = countOf(out, Severity::Error);
     std::vector<qsizetype> columnOf;
     std::vector<MeasurementRow> rows;
@@ -92,12 +101,25 @@ std::optional<std::vector<MeasurementRow>> parseMeasurementTable(const QString &
         const QString line = lines.at(n).trimmed();
         if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
             continue;
-        const QStringList cells = line.split(separator);
         const QString where = QStringLiteral("%1:%2").arg(fileName).arg(n + 1);
         if (columnOf.empty()) {
+            if (line.contains(QLatin1Char(';')))
+                separator = QLatin1Char(';');
+            const QStringList cells = line.split(separator);
+            headerCells = cells.size();
             columnOf = headerColumns(cells, where, columns, out);
             if (countOf(out, Severity::Error) > errorsBefore)
                 return std::nullopt;
+            continue;
+        }
+        const QStringList cells = line.split(separator);
+        const bool beyondHeader = std::any_of(cells.begin() + std::min(headerCells, cells.size()), cells.end(),
+                                              [](const QString &cell) { return !cell.trimmed().isEmpty(); });
+        if (beyondHeader) {
+            out.push_back(makeError(where, MeasurementFiles::tr("the line has %1 cells, the header %2: \"%3\"")
+                                               .arg(cells.size())
+                                               .arg(headerCells)
+                                               .arg(line)));
             continue;
         }
         MeasurementTexts rowTexts{static_cast<int>(n + 1), {}};

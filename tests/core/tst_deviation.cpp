@@ -325,6 +325,22 @@ private Q_SLOTS:
         QVERIFY(!bad.points);
         QCOMPARE(bad.diagnostics.front().field, QStringLiteral("bar.csv:2"));
         QVERIFY(bad.diagnostics.front().message.contains(QStringLiteral("radial_um must be a number, not \"abc\"")));
+        // A semicolon file with decimal commas: the cells are the header's (z 40, radial 12.5), not
+        // "12" and "5" with the "5" dropped.
+        const TestBarReadResult decimalCommas = parseTestBarMeasurements(
+            QStringLiteral("z_mm;radial_um\n40;12,5\n50;13,5\n"), QStringLiteral("bar.csv"));
+        QVERIFY(!decimalCommas.points);
+        QCOMPARE(decimalCommas.diagnostics.front().field, QStringLiteral("bar.csv:2"));
+        QVERIFY2(decimalCommas.diagnostics.front().message.contains(
+                     QStringLiteral("radial_um must be a number with a decimal point, not \"12,5\"")),
+                 qPrintable(dump(decimalCommas.diagnostics)));
+        // A comma file whose line has a cell more than the header is refused, not cut to the header.
+        const TestBarReadResult extraCell =
+            parseTestBarMeasurements(QStringLiteral("z_mm,radial_um\n40,12,5\n50,13.5,\n"), QStringLiteral("b.csv"));
+        QVERIFY(!extraCell.points);
+        QCOMPARE(extraCell.diagnostics.size(), std::size_t(1));
+        QVERIFY2(extraCell.diagnostics.front().message.contains(QStringLiteral("the line has 3 cells, the header 2")),
+                 qPrintable(dump(extraCell.diagnostics)));
         const TestBarReadResult header =
             parseTestBarMeasurements(QStringLiteral("z,radial_um\n"), QStringLiteral("b.csv"));
         QVERIFY(header.diagnostics.front().message.contains(QStringLiteral("lacks the column \"z_mm\"")));
