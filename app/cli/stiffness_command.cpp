@@ -77,8 +77,10 @@ void printCalibration(QTextStream &out, const StiffnessCalibration &cal)
         << fitLine(StiffnessCommand::tr("radial"), *cal.radial) << '\n';
     if (cal.tangential)
         out << fitLine(StiffnessCommand::tr("tangential"), *cal.tangential) << '\n';
-    else
+    else if (cal.tangentialPositions == 0)
         out << StiffnessCommand::tr("  tangential: not measured (no tangential_um column)") << '\n';
+    else
+        out << StiffnessCommand::tr("  tangential: not fitted (the warning above says why)") << '\n';
     out << StiffnessCommand::tr("The bar's own bending and the toolpost, subtracted before the fit: %1 % of the "
                                 "deviation measured farthest from the chuck.")
                .arg(QString::number(100.0 * cal.barShareAtEnd, 'f', 1))
@@ -88,7 +90,7 @@ void printCalibration(QTextStream &out, const StiffnessCalibration &cal)
 // Stores the fitted springs in `target`'s characterisation, keeping everything else it has; only
 // in a project for the machine the test bar was cut on (`machineId`).
 QString writeSprings(const QString &target, const StiffnessCalibration &cal, const QString &measurements,
-                     const QString &machineId)
+                     const QString &machineId, QTextStream &err)
 {
     ProjectParseResult read = readProjectFile(target);
     if (!read.project)
@@ -103,6 +105,8 @@ QString writeSprings(const QString &target, const StiffnessCalibration &cal, con
             .arg(QFileInfo(measurements).fileName(), QDate::currentDate().toString(Qt::ISODate))
             .arg(cal.radial->points)
             .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2));
+    if (const QString stale = staleTangentialSprings(read.project->characterisation, cal); !stale.isEmpty())
+        err << target << ": " << stale << '\n';
     read.project->characterisation = withFittedSprings(read.project->characterisation, cal, source);
     const WriteResult w = writeProjectFile(target, *read.project);
     return w.ok ? QString() : w.error;
@@ -204,7 +208,7 @@ int runCalibrateStiffness(const QStringList &args, QTextStream &out, QTextStream
         return kExitProblems;
     if (parser.isSet(write) || parser.isSet(into)) {
         const QString target = parser.isSet(into) ? parser.value(into) : projectPath;
-        const QString error = writeSprings(target, cal, csvPath, read.project->machineId);
+        const QString error = writeSprings(target, cal, csvPath, read.project->machineId, err);
         if (!error.isEmpty()) {
             err << error << '\n';
             return kExitProblems;

@@ -167,6 +167,33 @@ TestBarReadResult testBarPoints(const std::optional<std::vector<MeasurementRow>>
     return result;
 }
 
+// The tangential springs, where the tangential deviation was measured at three positions or more
+// under a tangential force; a warning that says why not where it was measured but cannot be fitted.
+void fitTangential(const std::vector<std::pair<double, double>> &tangential, StiffnessCalibration &cal)
+{
+    Diagnostics &out = cal.diagnostics;
+    cal.tangentialPositions =
+        static_cast<int>(distinctPositions(tangential, [](const std::pair<double, double> &p) { return p.first; }));
+    if (cal.tangentialPositions == 0)
+        return;
+    if (cal.tangentialPositions < 3) {
+        out.push_back(makeWarning(QStringLiteral("measurements"),
+                                  SpindleCalibration::tr("tangential_um is given at %1 positions z; the fit needs "
+                                                         "three or more: the tangential springs are not fitted")
+                                      .arg(cal.tangentialPositions)));
+        return;
+    }
+    if (!(cal.forces.tangential_N > 0.0)) {
+        out.push_back(makeWarning(QStringLiteral("load"),
+                                  SpindleCalibration::tr("the tangential force is %1 N: the tangential springs are "
+                                                         "not fitted")
+                                      .arg(number(cal.forces.tangential_N))));
+        return;
+    }
+    cal.tangential = fitDirection(tangential, cal.forces.tangential_N, 0.0, cal.pivotDistance_mm,
+                                  SpindleCalibration::tr("tangential"), out);
+}
+
 } // namespace
 
 TestBarReadResult parseTestBarMeasurements(const QString &text, const QString &fileName)
@@ -252,16 +279,30 @@ StiffnessCalibration calibrateSpindleChuck(const Project &testBar, const DataLib
     const double moment = -0.5 * cal.forces.axial_N * cal.diameter_mm; // the feed force at the contact radius
     cal.radial =
         fitDirection(radial, cal.forces.radial_N, moment, pivotDistance_mm, SpindleCalibration::tr("radial"), out);
-    if (distinctPositions(tangential, [](const std::pair<double, double> &p) { return p.first; }) >= 3 &&
-        cal.forces.tangential_N > 0.0)
-        cal.tangential = fitDirection(tangential, cal.forces.tangential_N, 0.0, pivotDistance_mm,
-                                      SpindleCalibration::tr("tangential"), out);
+    fitTangential(tangential, cal);
+    // A fit that failed in either direction is no fit: nothing half-measured reaches a project.
+    if (hasErrors(out)) {
+        cal.radial.reset();
+        cal.tangential.reset();
+    }
     return cal;
+}
+
+QString staleTangentialSprings(const MachineCharacterisation &characterisation, const StiffnessCalibration &cal)
+{
+    if (cal.tangential || !characterisation.spindleTangential || !characterisation.pivotDistance_mm ||
+        *characterisation.pivotDistance_mm == cal.pivotDistance_mm)
+        return {};
+    return SpindleCalibration::tr("the tangential springs were fitted for Lc = %1 mm and do not hold at Lc = %2 mm: "
+                                  "removed; measure the tangential deviation to fit them again")
+        .arg(number(*characterisation.pivotDistance_mm), number(cal.pivotDistance_mm));
 }
 
 MachineCharacterisation withFittedSprings(MachineCharacterisation characterisation, const StiffnessCalibration &cal,
                                           const QString &source)
 {
+    if (!staleTangentialSprings(characterisation, cal).isEmpty())
+        characterisation.spindleTangential.reset();
     characterisation.pivotDistance_mm = cal.pivotDistance_mm;
     if (cal.radial)
         characterisation.spindleRadial = cal.radial->springs;

@@ -44,6 +44,7 @@ struct SpringFit {
 struct StiffnessCalibration {
     std::optional<SpringFit> radial;
     std::optional<SpringFit> tangential; // only when the tangential deviation was measured
+    int tangentialPositions = 0;         // positions z with a tangential deviation measured
     double pivotDistance_mm = 0.0;
     CuttingForces forces;
     double diameter_mm = 0.0;
@@ -61,14 +62,19 @@ struct StiffnessCalibration {
 //   a = F s,  b = 2 F Lc/k2 + M s,  c = F/k1 + (F Lc² + M Lc)/k2,  s = 1/k2 + 1/k3
 // is solved for the springs (tangentially with F_t and M = 0). `load` replaces the forces of the
 // project's force model (measured forces are better). Every spring must come out positive: a
-// negative one is an error that names it and its value.
+// negative one is an error that names it and its value. With any error neither fit is returned.
 [[nodiscard]] StiffnessCalibration calibrateSpindleChuck(const Project &testBar, const DataLibrary &data,
                                                          const std::vector<TestBarPoint> &points,
                                                          double pivotDistance_mm,
                                                          const std::optional<CuttingForces> &load = std::nullopt);
 
+// Why the tangential springs of `characterisation` do not survive `cal`: they were fitted for
+// another Lc and `cal` fits none (the springs depend on Lc). Empty when they survive or there are none.
+[[nodiscard]] QString staleTangentialSprings(const MachineCharacterisation &characterisation,
+                                             const StiffnessCalibration &cal);
+
 // `characterisation` with the fitted springs and their Lc in place (tangential only where they
-// were fitted; everything else kept) and `source` as where the numbers come from.
+// were fitted, stale ones removed, everything else kept) and `source` as where the numbers come from.
 [[nodiscard]] MachineCharacterisation withFittedSprings(MachineCharacterisation characterisation,
                                                         const StiffnessCalibration &cal, const QString &source);
 

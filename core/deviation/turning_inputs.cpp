@@ -211,6 +211,12 @@ void resolveChuck(const Project &p, const DataLibrary &data, const DeviationOpti
         in.chuck.basis = SupportBasis::Measured;
         in.radialLeft = chuckSupport(c, c.spindleRadial);
         in.tangentialLeft = chuckSupport(c, c.spindleTangential);
+        // r = sqrt((r0 ± δ_r)² + δ_t²) (docs/model.md §1): δ_t changes the radius by about δ_t²/2r.
+        if (!c.spindleTangential)
+            in.notes << DeviationModel::tr(
+                "Spindle–chuck tangential springs not measured: the chuck is taken as rigid tangentially (the "
+                "radial springs are measured). A tangential deflection δ_t changes the machined radius by about "
+                "δ_t²/2r only; give tangential_um in the test-bar fit to measure them.");
     } else if (range) {
         in.chuck.basis = SupportBasis::RangeEnd;
         in.chuck.stiffness_N_per_mm = rangeEnd(*range, options.stiffnessEnd);

@@ -451,6 +451,43 @@ private Q_SLOTS:
         QVERIFY(c.spindleRadial && std::abs(c.spindleRadial->k2_Nmm_per_rad / 3e9 - 1.0) < 1e-3);
         QVERIFY(c.source.contains(QStringLiteral("calibrate-stiffness, bar.csv")));
 
+        // A tangential fit that fails fails the command: exit 1, nothing written (the radial fit
+        // alone would have been).
+        QString radialOnly = QStringLiteral("z_mm,radial_um\n");
+        QString fallingTangential = QStringLiteral("z_mm,radial_um,tangential_um\n");
+        for (const QString &line : csv.split(QLatin1Char('\n'), Qt::SkipEmptyParts).mid(1)) {
+            const QStringList cells = line.split(QLatin1Char(','));
+            radialOnly += cells.at(0) + QLatin1Char(',') + cells.at(1) + QLatin1Char('\n');
+            fallingTangential +=
+                QStringLiteral("%1,%2,%3\n").arg(cells.at(0), cells.at(1)).arg(20.0 - 0.1 * cells.at(0).toDouble());
+        }
+        const QString falling = dir.filePath(QStringLiteral("falling.csv"));
+        QVERIFY(writeFile(falling, fallingTangential.toUtf8()));
+        QFile fitted(target);
+        QVERIFY(fitted.open(QIODevice::ReadOnly));
+        const QByteArray fittedBytes = fitted.readAll();
+        fitted.close();
+        const Run failedFit = runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--pivot"),
+                                      QStringLiteral("220"), QStringLiteral("--into"), target, bar, falling});
+        QCOMPARE(failedFit.exitCode, 1);
+        QVERIFY2(failedFit.err.contains(QStringLiteral("tangential fit gives k")), qPrintable(failedFit.err));
+        QVERIFY(!failedFit.err.contains(QStringLiteral("wrote")));
+        QVERIFY(fitted.open(QIODevice::ReadOnly));
+        QCOMPARE(fitted.readAll(), fittedBytes);
+        fitted.close();
+
+        // A radial fit at another Lc removes the tangential springs fitted at 220 mm, and says so.
+        const QString radialCsv = dir.filePath(QStringLiteral("radial.csv"));
+        QVERIFY(writeFile(radialCsv, radialOnly.toUtf8()));
+        const Run newPivot = runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--pivot"),
+                                     QStringLiteral("120"), QStringLiteral("--into"), target, bar, radialCsv});
+        QVERIFY2(newPivot.exitCode == 0, qPrintable(newPivot.err));
+        QVERIFY2(newPivot.err.contains(QStringLiteral("fitted for Lc = 220 mm and do not hold at Lc = 120 mm")),
+                 qPrintable(newPivot.err));
+        const tolturn::ProjectParseResult refitted = tolturn::readProjectFile(target);
+        QVERIFY(refitted.project && !refitted.project->characterisation.spindleTangential);
+        QCOMPARE(refitted.project->characterisation.pivotDistance_mm.value_or(0.0), 120.0);
+
         // Without Lc (the example has no characterisation) the command names the field.
         const Run noPivot =
             runCli({QStringLiteral("calibrate-stiffness"), example("stepped-shaft-chuck.tolturn"), measured});

@@ -274,6 +274,54 @@ private Q_SLOTS:
             QVERIFY(fit.rmsResidual_um < 1e-4);
             QCOMPARE(fit.points, 10);
         }
+
+        // Tangential deviations at two positions only: the radial springs alone, and a warning
+        // that says why the tangential ones are not fitted.
+        std::vector<TestBarPoint> twoTangential = points;
+        for (std::size_t i = 2; i < twoTangential.size(); ++i)
+            twoTangential[i].tangential_um.reset();
+        const StiffnessCalibration radialOnly =
+            calibrateSpindleChuck(p, DataLibrary::builtIn(), twoTangential, Lc, CuttingForces{Ft, Fa, Fr});
+        QVERIFY2(radialOnly.radial && !radialOnly.tangential, qPrintable(dump(radialOnly.diagnostics)));
+        QCOMPARE(radialOnly.tangentialPositions, 2);
+        QVERIFY2(dump(radialOnly.diagnostics).contains(QStringLiteral("tangential_um is given at 2 positions z")),
+                 qPrintable(dump(radialOnly.diagnostics)));
+
+        // A tangential deviation that falls away from the chuck is no spring system: an error, and
+        // then not even the radial springs are returned.
+        std::vector<TestBarPoint> falling = points;
+        for (TestBarPoint &pt : falling)
+            pt.tangential_um = 20.0 - 0.1 * (pt.z_mm - chuckFace);
+        const StiffnessCalibration failed =
+            calibrateSpindleChuck(p, DataLibrary::builtIn(), falling, Lc, CuttingForces{Ft, Fa, Fr});
+        QVERIFY2(dump(failed.diagnostics).contains(QStringLiteral("tangential fit gives k")),
+                 qPrintable(dump(failed.diagnostics)));
+        QVERIFY(!failed.radial && !failed.tangential);
+
+        // Tangential springs fitted for another Lc do not hold at this one: a radial-only fit at
+        // Lc 250 removes those of Lc 200, and keeps those of Lc 250.
+        MachineCharacterisation before;
+        before.pivotDistance_mm = 200.0;
+        before.spindleRadial = radial;
+        before.spindleTangential = tangential;
+        QVERIFY(staleTangentialSprings(before, radialOnly).contains(QStringLiteral("Lc = 200 mm")));
+        const MachineCharacterisation after = withFittedSprings(before, radialOnly, QStringLiteral("test"));
+        QVERIFY(!after.spindleTangential);
+        QCOMPARE(*after.pivotDistance_mm, Lc);
+        before.pivotDistance_mm = Lc;
+        QVERIFY(staleTangentialSprings(before, radialOnly).isEmpty());
+        QVERIFY(withFittedSprings(before, radialOnly, QStringLiteral("test")).spindleTangential == tangential);
+
+        // A project measured radially only says what it takes tangentially.
+        p.characterisation = after;
+        const DeviationResult measured = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(measured.inputs);
+        QVERIFY2(measured.inputs->notes.join(QLatin1Char('\n')).contains(QStringLiteral("rigid tangentially")),
+                 qPrintable(measured.inputs->notes.join(QLatin1Char('\n'))));
+        p.characterisation.spindleTangential = tangential;
+        QVERIFY(!computeDeviation(p, DataLibrary::builtIn(), {})
+                     .inputs->notes.join(QLatin1Char('\n'))
+                     .contains(QStringLiteral("rigid tangentially")));
     }
 
     // Without a tangential column only the radial springs are fitted; a deviation that shrinks
@@ -327,8 +375,8 @@ private Q_SLOTS:
         QVERIFY(bad.diagnostics.front().message.contains(QStringLiteral("radial_um must be a number, not \"abc\"")));
         // A semicolon file with decimal commas: the cells are the header's (z 40, radial 12.5), not
         // "12" and "5" with the "5" dropped.
-        const TestBarReadResult decimalCommas = parseTestBarMeasurements(
-            QStringLiteral("z_mm;radial_um\n40;12,5\n50;13,5\n"), QStringLiteral("bar.csv"));
+        const TestBarReadResult decimalCommas =
+            parseTestBarMeasurements(QStringLiteral("z_mm;radial_um\n40;12,5\n50;13,5\n"), QStringLiteral("bar.csv"));
         QVERIFY(!decimalCommas.points);
         QCOMPARE(decimalCommas.diagnostics.front().field, QStringLiteral("bar.csv:2"));
         QVERIFY2(decimalCommas.diagnostics.front().message.contains(

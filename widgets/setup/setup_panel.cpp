@@ -659,6 +659,8 @@ bool SetupPanel::fitStiffnessFromTestBar(const QString &csvPath)
             .arg(QFileInfo(csvPath).fileName(), QDate::currentDate().toString(Qt::ISODate))
             .arg(cal.radial->points)
             .arg(QString::number(cal.radial->rmsResidual_um, 'f', 2));
+    if (const QString stale = staleTangentialSprings(project.characterisation, cal); !stale.isEmpty())
+        errors << stale;
     const MachineCharacterisation c = withFittedSprings(project.characterisation, cal, source);
     const Diagnostics refused = m_document.setCharacterisation(c);
     if (hasErrors(refused)) {
