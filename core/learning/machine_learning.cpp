@@ -3,6 +3,7 @@
 
 #include "core/io/project_json.h"
 #include "core/learning/learned_model_json.h"
+#include "core/project/operations.h"
 #include "core/tolerance/evaluation.h"
 
 #include <QCoreApplication>
@@ -109,23 +110,37 @@ PartComparison comparePart(const MeasuredPart &part, const DataLibrary &data, co
         out.error = MachineLearningText::tr("the project snapshot of part %1 does not read").arg(part.id);
         return out;
     }
-    const DeviationResult physics = computeDeviation(*read.project, data, {});
-    if (!physics.inputs) {
-        out.error = MachineLearningText::tr("the physics model cannot compute the snapshot of part %1").arg(part.id);
-        return out;
-    }
-    const std::vector<std::vector<double>> learned =
-        model ? learnedAtStations(*read.project, physics, model->model) : std::vector<std::vector<double>>{};
-    for (std::size_t f = 0; f < physics.features.size(); ++f) {
-        PartComparison::Feature feature{physics.features[f].featureId, {}, {}, {}};
-        const std::vector<Station> &stations = physics.features[f].stations;
-        for (std::size_t i = 0; i < stations.size(); ++i) {
-            feature.z_mm.push_back(stations[i].z_mm);
-            feature.physics_mm.push_back(stations[i].radiusError_mm);
-            if (f < learned.size() && i < learned[f].size())
-                feature.learned_mm.push_back(stations[i].radiusError_mm + learned[f][i]);
+    // Each set-up as its predictions have it, drawn in the drawing's frame (z from its left end).
+    const Project &drawn = *read.project;
+    const double length = drawn.part.length_mm();
+    for (int op = 0; op < operationCount(drawn); ++op) {
+        const Project view = operationView(drawn, op);
+        const bool mirrored = view.clamping.heldEnd == PartEnd::Right;
+        const DeviationResult physics = computeDeviation(view, data, {});
+        if (!physics.inputs) {
+            out.error =
+                MachineLearningText::tr("the physics model cannot compute the snapshot of part %1").arg(part.id);
+            return out;
         }
-        out.features.push_back(std::move(feature));
+        const std::vector<std::vector<double>> learned =
+            model ? learnedAtStations(view, physics, model->model) : std::vector<std::vector<double>>{};
+        for (std::size_t f = 0; f < physics.features.size(); ++f) {
+            PartComparison::Feature feature{physics.features[f].featureId, {}, {}, {}};
+            const std::vector<Station> &stations = physics.features[f].stations;
+            for (std::size_t i = 0; i < stations.size(); ++i) {
+                feature.z_mm.push_back(mirrored ? length - stations[i].z_mm : stations[i].z_mm);
+                feature.physics_mm.push_back(stations[i].radiusError_mm);
+                if (f < learned.size() && i < learned[f].size())
+                    feature.learned_mm.push_back(stations[i].radiusError_mm + learned[f][i]);
+            }
+            out.features.push_back(std::move(feature));
+        }
+        if (mirrored) {
+            for (ResidualSample &s : out.measured) {
+                if (operationOf(drawn, s.featureId) == op)
+                    s.z_mm = length - s.z_mm;
+            }
+        }
     }
     return out;
 }

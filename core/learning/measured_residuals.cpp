@@ -3,6 +3,7 @@
 
 #include "core/deviation/deviation_model.h"
 #include "core/io/project_json.h"
+#include "core/project/operations.h"
 #include "core/tolerance/target_contour.h"
 
 #include <QCoreApplication>
@@ -118,7 +119,35 @@ std::optional<CuttingForces> forcesFromCurrents(const MeasuredPart &part, const 
     return e.forces;
 }
 
-// Adds the samples of one part; true when its forces came from its motor currents.
+// One set-up of a measured part's snapshot as the predictions see it (operationView): the part
+// as held, z from the held end, and its physics.
+struct SetUpPhysics {
+    Project view;
+    DeviationResult deviation;
+    ProgramTargets targets;
+    bool mirrored = false; // held at the drawing's right end: z' = L − z
+};
+
+// The set-up that cuts `featureId`, computed once per part.
+const SetUpPhysics *setUpOf(const Project &drawn, const QString &featureId, const DataLibrary &data,
+                            std::map<int, std::optional<SetUpPhysics>> &setUps)
+{
+    const int op = operationOf(drawn, featureId);
+    auto it = setUps.find(op);
+    if (it == setUps.end()) {
+        SetUpPhysics s;
+        s.view = operationView(drawn, op);
+        s.deviation = computeDeviation(s.view, data, {});
+        s.targets = programTargets(s.view);
+        s.mirrored = s.view.clamping.heldEnd == PartEnd::Right;
+        it = setUps.emplace(op, s.deviation.inputs ? std::optional<SetUpPhysics>(std::move(s)) : std::nullopt).first;
+    }
+    return it->second ? &*it->second : nullptr;
+}
+
+// Adds the samples of one part; true when its forces came from its motor currents. Each point is
+// compared with the set-up that cuts its feature, in that set-up's frame (z from the held end), as
+// a prediction of that set-up has it.
 bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const CurrentForceModel *estimator,
                     std::vector<ResidualSample> &out, Diagnostics &warnings)
 {
@@ -130,22 +159,34 @@ bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const Cur
                                                   .arg(part.id)));
         return false;
     }
-    const DeviationResult d = computeDeviation(*read.project, data, {});
-    if (!d.inputs) {
+    const Project &drawn = *read.project;
+    std::map<int, std::optional<SetUpPhysics>> setUps;
+    const SetUpPhysics *first = setUpOf(drawn, {}, data, setUps);
+    if (first == nullptr) {
         warnings.push_back(makeWarning(field, MeasuredResiduals::tr("part %1 is left out: the physics model cannot "
                                                                     "compute its project")
                                                   .arg(part.id)));
         return false;
     }
-    const ProgramTargets targets = programTargets(*read.project);
+    const TurningInputs &firstInputs = *first->deviation.inputs;
     const std::optional<CuttingForces> measured =
-        forcesFromCurrents(part, *read.project, *d.inputs, data, estimator, warnings);
+        forcesFromCurrents(part, first->view, firstInputs, data, estimator, warnings);
+    int unused = 0;
     for (const MeasuredPoint &p : part.points) {
-        auto s = sampleAt(*read.project, d, targets, p.featureId, p.z_mm,
-                          part.timeSinceStart_min.value_or(d.inputs->timeSinceStart_min),
-                          part.ambient_C.value_or(d.inputs->ambientTemperature_C), measured ? &*measured : nullptr);
-        if (!s)
-            continue; // a face or a feature the model does not turn: nothing to compare
+        const SetUpPhysics *setUp = setUpOf(drawn, p.featureId, data, setUps);
+        if (setUp == nullptr) {
+            ++unused;
+            continue;
+        }
+        const double z = setUp->mirrored ? drawn.part.length_mm() - p.z_mm : p.z_mm;
+        const TurningInputs &in = *setUp->deviation.inputs;
+        auto s = sampleAt(setUp->view, setUp->deviation, setUp->targets, p.featureId, z,
+                          part.timeSinceStart_min.value_or(in.timeSinceStart_min),
+                          part.ambient_C.value_or(in.ambientTemperature_C), measured ? &*measured : nullptr);
+        if (!s) {
+            ++unused; // a face or a feature the model does not turn: nothing to compare
+            continue;
+        }
         s->partId = part.id;
         // As the physics model's radius error: machined radius − programmed radius. A radial
         // deviation is recorded as material left, which on a bore is a radius short.
@@ -163,6 +204,13 @@ bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const Cur
         }
         out.push_back(*s);
     }
+    if (unused > 0)
+        warnings.push_back(makeWarning(
+            field, MeasuredResiduals::tr("part %1: %2 of its %3 points are not compared with the physics (on a face or "
+                                         "on a feature its set-up's passes do not turn)")
+                       .arg(part.id)
+                       .arg(unused)
+                       .arg(part.points.size())));
     return measured.has_value();
 }
 

@@ -10,11 +10,13 @@
 #include "core/learning/machine_learning.h"
 #include "core/learning/measured_residuals.h"
 #include "core/planning/planning_problem.h"
+#include "core/project/operations.h"
 #include "core/tolerance/target_contour.h"
 
 #include <QJsonArray>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -281,6 +283,55 @@ private Q_SLOTS:
         QVERIFY2(cv->learnedRms_mm < 1.05 * cv->physicsRms_mm,
                  qPrintable(QStringLiteral("%1 against %2 mm").arg(cv->learnedRms_mm).arg(cv->physicsRms_mm)));
         QVERIFY(cv->physicsRms_mm < 1.2 * truth.noise_mm);
+    }
+
+    // A part of two set-ups: the bore I1 (z 0–50 of the drawing) is cut in OP 20, held at the
+    // drawing's right end (120 mm long). Its points are compared with OP 20's prediction at
+    // z' = 120 − z, as `deflect --operation "OP 20"` gives it, not with OP 10's; a point on the
+    // shoulder face I2 is counted out, and said. The dock's plot draws OP 20 back in the drawing's z.
+    void measuredPointsMeetTheSetUpThatCutThem()
+    {
+        const Project project =
+            *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/bushing-two-setups.tolturn"))
+                 .project;
+        MeasuredPart part;
+        part.id = 7;
+        part.machineId = project.machineId;
+        part.projectJson = serializeProjectJson(project);
+        for (const double z : {10.0, 25.0, 40.0})
+            part.points.push_back({QStringLiteral("I1"), z, MeasuredQuantity::RadialDeviation, 0.0});
+        part.points.push_back({QStringLiteral("I2"), 50.0, MeasuredQuantity::RadialDeviation, 0.0});
+        Diagnostics warnings;
+        const auto samples = residualSamples({part}, DataLibrary::builtIn(), warnings);
+        QCOMPARE(samples.size(), std::size_t(3));
+        const Project op20 = operationView(project, 1);
+        QCOMPARE(op20.clamping.heldEnd, PartEnd::Right);
+        const DeviationResult prediction = computeDeviation(op20, DataLibrary::builtIn(), {});
+        const DeviationResult op10 = computeDeviation(operationView(project, 0), DataLibrary::builtIn(), {});
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+            const double z = 120.0 - part.points[i].z_mm;
+            QCOMPARE(samples[i].z_mm, z);
+            const double expected = interpolated(prediction, QStringLiteral("I1"), z);
+            QVERIFY2(std::abs(samples[i].physics_mm - expected) < 1e-12,
+                     qPrintable(QStringLiteral("%1 against %2 mm").arg(samples[i].physics_mm).arg(expected)));
+            QVERIFY(std::none_of(op10.features.begin(), op10.features.end(),
+                                 [](const FeatureDeviation &f) { return f.featureId == QLatin1String("I1"); }));
+        }
+        QCOMPARE(warnings.size(), std::size_t(1));
+        QVERIFY2(warnings.front().message.contains(QStringLiteral("1 of its 4 points are not compared")),
+                 qPrintable(warnings.front().message));
+
+        const PartComparison plot = comparePart(part, DataLibrary::builtIn());
+        QVERIFY2(plot.error.isEmpty(), qPrintable(plot.error));
+        int bores = 0;
+        for (const PartComparison::Feature &f : plot.features) {
+            if (f.featureId != QLatin1String("I1"))
+                continue;
+            ++bores;
+            QVERIFY(*std::max_element(f.z_mm.begin(), f.z_mm.end()) <= 50.0 + 1e-9);
+        }
+        QCOMPARE(bores, 1);
+        QCOMPARE(plot.measured.front().z_mm, 10.0);
     }
 
     // What is learned survives the store: the same predictions after JSON and back; a damaged
