@@ -43,22 +43,26 @@ PathElement line(ProfilePoint from, ProfilePoint to, const QString &featureId)
     return e;
 }
 
-bool isFace(const PathElement &e)
+// A feature moved by a compensation meets its neighbour across a gap of micrometres. A line (a
+// face, a chamfer, a cone) takes it up by moving its end to meet the other, the neighbour's rather
+// than the moved feature's; only between two arcs is a short line programmed. A step of a few µm
+// beside a corner is a move no control can follow with the nose radius compensated: LinuxCNC
+// refuses it ("Straight feed in concave corner cannot be reached by the tool without gouging").
+void joinMovedFeature(std::vector<PathElement> &out, PathElement &next, bool nextMoved)
 {
-    return !e.arc && std::abs(e.from.z_mm - e.to.z_mm) < kTiny;
-}
-
-// A feature moved by a compensation meets its neighbour: a face next to it takes up the radial step
-// (it stays a face), else a radial step is programmed.
-void joinMovedFeature(std::vector<PathElement> &out, PathElement &next)
-{
-    const bool radialStep = std::abs(out.back().to.z_mm - next.from.z_mm) < kTiny;
-    if (radialStep && isFace(next))
-        next.from = out.back().to;
-    else if (radialStep && isFace(out.back()))
-        out.back().to = next.from;
+    PathElement &previous = out.back();
+    constexpr double kLargestGap_mm = 0.05; // a compensation moves a feature by micrometres
+    const bool small =
+        std::hypot(previous.to.z_mm - next.from.z_mm, previous.to.r_mm - next.from.r_mm) < kLargestGap_mm;
+    const auto takeUp = [&](PathElement &e, bool atEnd) { (atEnd ? e.to : e.from) = atEnd ? next.from : previous.to; };
+    PathElement &neighbour = nextMoved ? previous : next;
+    PathElement &moved = nextMoved ? next : previous;
+    if (small && !neighbour.arc)
+        takeUp(neighbour, nextMoved);
+    else if (small && !moved.arc)
+        takeUp(moved, !nextMoved);
     else
-        out.push_back(line(out.back().to, next.from, next.featureId));
+        out.push_back(line(previous.to, next.from, next.featureId));
 }
 
 ToolMove move(MoveKind kind, ProfilePoint to, const QString &featureId = {})
@@ -254,7 +258,7 @@ std::vector<PathElement> compensatedChain(const Contour &target, const Compensat
             // The stations end at the chuck face; a bore runs on inside the jaws, as drawn there.
             const double zEnd = c->correctedPath.front().z_mm;
             if (!e.arc && std::abs(e.to.z_mm - zEnd) > kTiny && (e.to.z_mm - zEnd) * (e.to.z_mm - e.from.z_mm) > 0.0)
-                pieces.push_back(line(pointAtZ(e, zEnd), e.to, e.featureId));
+                pieces.push_back(line(c->correctedPath.front(), e.to, e.featureId)); // from the corrected radius
         } else {
             if (c && c->action == CompensationAction::ConstantOffset) {
                 const double shift = 0.5e-3 * c->offset_um;
@@ -266,7 +270,7 @@ std::vector<PathElement> compensatedChain(const Contour &target, const Compensat
         }
         for (PathElement p : pieces) {
             if (!out.empty() && std::hypot(out.back().to.z_mm - p.from.z_mm, out.back().to.r_mm - p.from.r_mm) > kTiny)
-                joinMovedFeature(out, p);
+                joinMovedFeature(out, p, c != nullptr && c->action != CompensationAction::None);
             out.push_back(p);
         }
     }

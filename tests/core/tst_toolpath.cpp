@@ -14,6 +14,7 @@
 #include "core/planning/boring_toolpath.h"
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
+#include "core/planning/planning_report.h"
 #include "core/planning/toolpath_detail.h"
 #include "core/project/operations.h"
 #include "core/tolerance/target_contour.h"
@@ -704,6 +705,62 @@ private Q_SLOTS:
         QCOMPARE(fanuc.contains(QStringLiteral("G41 ")), o.nose == NoseHandling::ControlCompensation);
         QCOMPARE(fanuc.contains(QStringLiteral("BORING BAR: PATH OF THE IMAGINARY TOOL TIP")),
                  o.nose == NoseHandling::TipPath);
+    }
+
+    void linuxCncRunsTheCompensatedProgram_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("nose");
+        QTest::addColumn<int>("operation");
+        for (const QString &f : QDir(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples"))
+                                    .entryList({QStringLiteral("*.tolturn")}, QDir::Files)) {
+            for (int k = 0; k < operationCount(example(f)); ++k) {
+                QTest::addRow("%s op %d G42", qPrintable(f), k + 1)
+                    << f << static_cast<int>(NoseHandling::ControlCompensation) << k;
+                QTest::addRow("%s op %d tip path", qPrintable(f), k + 1)
+                    << f << static_cast<int>(NoseHandling::TipPath) << k;
+            }
+        }
+    }
+
+    // The compensated program (`gcode --compensated`) runs through LinuxCNC's interpreter as the
+    // nominal one does. A feature moved by micrometres meets its neighbour without a step of its
+    // own: such a step beside a corner is a move the control cannot follow with the nose radius
+    // compensated ("Straight feed in concave corner cannot be reached by the tool without gouging"),
+    // and the tip path would drop it. The moved feature's radius is where the interpreter cuts.
+    void linuxCncRunsTheCompensatedProgram()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, nose);
+        QFETCH(int, operation);
+        const Project p = operationView(example(file), operation);
+        GCodeOptions o;
+        o.nose = static_cast<NoseHandling>(nose);
+        o.dialect = ControlDialect::LinuxCnc;
+        const FinishingOutput out = finishingOutput(p, DataLibrary::builtIn(), o);
+        QVERIFY(out.deviation.inputs);
+        // No feature the nominal program follows is too tight for the nose in the compensated one.
+        const auto tight = [](const TurningProgram &program) {
+            QStringList said = program.warnings().filter(QStringLiteral("narrower or tighter than the nose"));
+            said.removeDuplicates();
+            return said;
+        };
+        QCOMPARE(tight(out.compensated), tight(out.nominal));
+        Lathe lathe;
+        setUpLathe(lathe, out.deviation.inputs->noseRadius_mm,
+                   out.deviation.inputs->boring ? out.deviation.inputs->boring->noseRadius_mm : 0.4);
+        const QString canonical = runInterpreter(lathe, out.compensated.text);
+        QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
+        // The thin pin's Ø20 is corrected station by station, and its smallest programmed diameter
+        // is in the program (the test is not passed by a program that left the correction out).
+        if (file == QLatin1String("thin-pin-compensation.tolturn")) {
+            const FeatureCompensation *pin = out.compensation.find(QStringLiteral("O4"));
+            QVERIFY(pin && pin->action == CompensationAction::ProfileCorrection);
+            double smallest = 1e9;
+            for (const ProfilePoint &q : pin->correctedPath)
+                smallest = std::min(smallest, q.r_mm);
+            QVERIFY(out.compensated.text.contains(QStringLiteral("X%1").arg(2.0 * smallest, 0, 'f', 3)));
+        }
     }
 
     void linuxCncReproducesTheProfile_data()
