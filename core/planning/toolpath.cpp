@@ -246,13 +246,51 @@ Contour withoutUndercuts(Contour contour, QStringList *bridged)
     return contour;
 }
 
+// The radial correction of a feature at z, linear between its stations (corrected − target radius),
+// held at the end stations beyond them.
+double correctionAt(const std::vector<std::pair<double, double>> &byZ, double z)
+{
+    if (z <= byZ.front().first)
+        return byZ.front().second;
+    for (std::size_t i = 1; i < byZ.size(); ++i) {
+        if (z <= byZ[i].first) {
+            const double t = (z - byZ[i - 1].first) / (byZ[i].first - byZ[i - 1].first);
+            return byZ[i - 1].second + t * (byZ[i].second - byZ[i - 1].second);
+        }
+    }
+    return byZ.back().second;
+}
+
+// A round corrected station by station, as lines short enough that each stays within 0.25 µm of
+// the corrected arc: the sagitta of a chord over the angle θ of an arc of radius R is R(1 − cos θ/2)
+// (a chord between the stations, spaced evenly in z, would cut up to tens of µm into a small round
+// where it turns steep). Each point is the arc's, moved by the stations' correction at its z.
+std::vector<PathElement> correctedArc(const PathElement &arc, const std::vector<ProfilePoint> &stations)
+{
+    std::vector<std::pair<double, double>> byZ;
+    for (const ProfilePoint &st : stations)
+        byZ.emplace_back(st.z_mm, st.r_mm - pointAtZ(arc, st.z_mm).r_mm);
+    std::sort(byZ.begin(), byZ.end());
+    constexpr double kSagitta_mm = 0.25e-3;
+    const double angle = 2.0 * std::acos(1.0 - kSagitta_mm / arc.radius_mm);
+    std::vector<ProfilePoint> points = sampled(arc, angle * arc.radius_mm);
+    for (ProfilePoint &q : points)
+        q.r_mm += correctionAt(byZ, q.z_mm);
+    std::vector<PathElement> out;
+    for (std::size_t i = 1; i < points.size(); ++i)
+        out.push_back(line(points[i - 1], points[i], arc.featureId));
+    return out;
+}
+
 std::vector<PathElement> compensatedChain(const Contour &target, const CompensationPlan *plan)
 {
     std::vector<PathElement> out;
     for (PathElement e : reversedElements(withoutUndercuts(target).segments)) {
         const FeatureCompensation *c = plan ? plan->find(e.featureId) : nullptr;
         std::vector<PathElement> pieces;
-        if (c && c->action == CompensationAction::ProfileCorrection && c->correctedPath.size() >= 2) {
+        if (c && c->action == CompensationAction::ProfileCorrection && c->correctedPath.size() >= 2 && e.arc) {
+            pieces = correctedArc(e, c->correctedPath);
+        } else if (c && c->action == CompensationAction::ProfileCorrection && c->correctedPath.size() >= 2) {
             for (std::size_t j = c->correctedPath.size() - 1; j > 0; --j)
                 pieces.push_back(line(c->correctedPath[j], c->correctedPath[j - 1], e.featureId));
             // The stations end at the chuck face; a bore runs on inside the jaws, as drawn there.

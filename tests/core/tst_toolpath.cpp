@@ -763,6 +763,48 @@ private Q_SLOTS:
         }
     }
 
+    // A profile correction of the stepped shaft's R2 edge round O7 (centre z 118, r 18; material
+    // inside the circle): a 10 µm profile tolerance needs it. Lines between its 21 stations,
+    // evenly spaced in z, would span up to 18° of the round where it turns steep, and their
+    // sagitta R(1 − cos 9°) = 25 µm cuts into the part. The corrected round stays within the
+    // largest station correction plus 0.5 µm of the arc everywhere.
+    void profileCorrectionOfARoundFollowsTheRound()
+    {
+        Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        Tolerance round;
+        round.id = QStringLiteral("T9");
+        round.featureId = QStringLiteral("O7");
+        round.type = ToleranceType::Profile;
+        round.zone_um = 10.0;
+        p.tolerances.push_back(round);
+        const FinishingOutput out = finishingOutput(p, DataLibrary::builtIn(), {});
+        const FeatureCompensation *c = out.compensation.find(QStringLiteral("O7"));
+        QVERIFY(c && c->action == CompensationAction::ProfileCorrection);
+        const ProfilePoint centre{118.0, 18.0};
+        const double radius = 2.0;
+        double largest = 0.0; // the stations' correction, normal to the round
+        for (const ProfilePoint &st : c->correctedPath) {
+            const double dz = st.z_mm - centre.z_mm;
+            const double onArc = centre.r_mm + std::sqrt(std::max(radius * radius - dz * dz, 0.0));
+            largest = std::max(largest, std::abs(st.r_mm - onArc));
+        }
+        QVERIFY(largest > 0.0 && largest < 0.02);
+        const std::vector<PathElement> chain =
+            toolpath_detail::compensatedChain(targetContour(p, ContourSide::Outer), &out.compensation);
+        double worst = 0.0;
+        int pieces = 0;
+        for (const PathElement &e : chain) {
+            if (e.featureId != QLatin1String("O7"))
+                continue;
+            ++pieces;
+            for (const ProfilePoint &q : sampled(e, 0.001))
+                worst = std::max(worst, std::abs(distance(q, centre) - radius));
+        }
+        QVERIFY(pieces > 0);
+        QVERIFY2(worst <= largest + 0.5e-3,
+                 qPrintable(QStringLiteral("%1 mm off the round, stations %2 mm").arg(worst).arg(largest)));
+    }
+
     void linuxCncReproducesTheProfile_data()
     {
         QTest::addColumn<QString>("file");
