@@ -48,12 +48,22 @@ std::optional<double> trailingEdgeAngle_deg(const Tool &tool, double enteringAng
     return 180.0 - enteringAngle_deg - insert.insert->includedAngle_deg;
 }
 
+bool hasFinishingPass(const Project &project)
+{
+    return std::any_of(project.passes.begin(), project.passes.end(),
+                       [](const CuttingPass &p) { return p.kind == PassKind::Finishing; });
+}
+
+// The roughing passes cut before the contour pass. Without a finishing pass the last pass is the
+// contour pass (as the deviation model takes it, choosePass): it is not cut as a level first.
 std::vector<CuttingPass> roughingPasses(const Project &project)
 {
     std::vector<CuttingPass> out;
     for (const CuttingPass &p : project.passes)
         if (p.kind == PassKind::Roughing)
             out.push_back(p);
+    if (!hasFinishingPass(project) && !out.empty())
+        out.pop_back();
     return out;
 }
 
@@ -286,6 +296,11 @@ TurningProgram turningProgram(const Project &project, const DataLibrary &data, c
     pathOptions.clearance_mm = options.clearance_mm;
     program.path = turningToolpath(project, inputs.pass, roughingPasses(project), inputs.noseRadius_mm,
                                    trailingEdgeAngle_deg(project.tool, inputs.enteringAngle_deg), pathOptions);
+    if (!hasFinishingPass(project))
+        program.path.warnings << Programs::tr("The project has no finishing pass: its last pass (%1) is cut along the "
+                                              "contour as the finishing pass, and the passes before it leave it its "
+                                              "depth. Add a finishing pass.")
+                                     .arg(passConditions(inputs.pass));
     for (ToolMove &m : program.path.finishing.moves)
         if (m.kind != MoveKind::Rapid && options.finishingFeeds_mm_rev.contains(m.featureId))
             m.feed_mm_rev = options.finishingFeeds_mm_rev.value(m.featureId);

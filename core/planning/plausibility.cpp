@@ -222,6 +222,11 @@ void checkPasses(const Project &p, const DataLibrary &data, Diagnostics &out)
         }
     }
     checkStockTaken(p, smallest, out);
+    if (!p.passes.empty() && std::none_of(p.passes.begin(), p.passes.end(),
+                                          [](const CuttingPass &pass) { return pass.kind == PassKind::Finishing; }))
+        out.push_back(makeWarning(QStringLiteral("passes"),
+                                  Plausibility::tr("no finishing pass: the last pass is taken as the one that cuts "
+                                                   "the contour to size (the verdicts and the program rest on it)")));
 }
 
 // The passes together cut no deeper than the stock is thick where it is thickest (the bar's

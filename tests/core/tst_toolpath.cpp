@@ -15,6 +15,7 @@
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
 #include "core/planning/planning_report.h"
+#include "core/planning/plausibility.h"
 #include "core/planning/toolpath_detail.h"
 #include "core/project/operations.h"
 #include "core/tolerance/target_contour.h"
@@ -803,6 +804,28 @@ private Q_SLOTS:
         QVERIFY(pieces > 0);
         QVERIFY2(worst <= largest + 0.5e-3,
                  qPrintable(QStringLiteral("%1 mm off the round, stations %2 mm").arg(worst).arg(largest)));
+    }
+
+    // The stepped shaft without its finishing pass: eight roughing passes. The last is the contour
+    // pass (the verdicts rest on it); it is not also cut as a ninth level first, and the program and
+    // `check` say that the finishing pass is missing.
+    void withoutAFinishingPassTheLastPassCutsTheContour()
+    {
+        Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        QCOMPARE(p.passes.back().kind, PassKind::Finishing);
+        p.passes.pop_back();
+        QCOMPARE(p.passes.size(), std::size_t(8));
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(d.inputs);
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, {});
+        QCOMPARE(program.path.roughing.size(), std::size_t(7));
+        QCOMPARE(program.passes.size(), std::size_t(8));
+        QVERIFY2(program.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("has no finishing pass")),
+                 qPrintable(program.warnings().join(QLatin1Char('\n'))));
+        const Diagnostics found = checkPlausibility(p, DataLibrary::builtIn());
+        QVERIFY(std::any_of(found.begin(), found.end(), [](const Diagnostic &x) {
+            return x.field == QLatin1String("passes") && x.message.startsWith(QStringLiteral("no finishing pass"));
+        }));
     }
 
     void linuxCncReproducesTheProfile_data()
