@@ -129,7 +129,7 @@ bool barFits(const BoringBarGeometry &bar, double rTip, double rHole)
 struct BoreFrame {
     std::vector<Segment> target;    // the bore's target segments, left to right
     std::vector<PathElement> chain; // what the finishing pass cuts, right to left
-    double zStop = 0.0;             // the leftmost z the bar reaches
+    double zStop = 0.0;             // the leftmost z of the nose centre: the bore's bottom or the bar's reach
     double rHole = 0.0;             // radius of the hole the bar enters
     double rSafe = 0.0;             // radius of the cutting edge in moves along z
 };
@@ -204,10 +204,13 @@ std::optional<Toolpath> boringToolpath(const Project &project, const CuttingPass
     const double allowance = finishing.depthOfCut_mm;
     const double boreBottom = f.chain.back().to.z_mm;
     // The turret face stays the clearance off the end face: the edge reaches the overhang less it.
+    // That is the nose's leftmost point; its centre, which the paths are planned for, stays r_e
+    // to the right of it, and so does the last point of the wall it cuts.
     const double reach = length + options.clearance_mm - bar.overhang_mm;
-    f.zStop = std::max(boreBottom, reach);
+    f.zStop = boreBottom;
     if (reach > boreBottom + 1e-6) {
-        f.chain = clippedAtLeft(f.chain, reach);
+        f.zStop = reach + bar.noseRadius_mm;
+        f.chain = clippedAtLeft(f.chain, f.zStop);
         path.warnings << Toolpaths::tr("Boring bar %1 reaches z = %2 mm with its overhang of %3 mm: the bore from "
                                        "z = %4 mm to there is not bored. Set a longer overhang.")
                              .arg(bar.holderCode, mm(reach), mm(bar.overhang_mm), mm(boreBottom));
@@ -221,6 +224,10 @@ std::optional<Toolpath> boringToolpath(const Project &project, const CuttingPass
                                        "roughed to Ø%1 mm, its finishing allowance, before this program, and only its "
                                        "finishing pass is programmed.")
                              .arg(mm(2.0 * f.rHole));
+    else if (f.rHole >= smallestBore - 1e-6)
+        path.warnings << Toolpaths::tr("The pilot hole Ø%1 mm is as wide as the bore Ø%2 mm or wider: nothing is left "
+                                       "to bore, and the bore stays the pilot hole's size, not the drawing's.")
+                             .arg(mm(2.0 * f.rHole), mm(2.0 * smallestBore));
     else if (f.rHole > smallestBore - allowance + 1e-6)
         path.warnings << Toolpaths::tr("The pilot hole Ø%1 mm is wider than the bore less its finishing allowance "
                                        "(Ø%2 mm): the finishing pass cuts less than its depth of cut.")

@@ -562,6 +562,18 @@ private Q_SLOTS:
         QVERIFY(none && none->roughing.empty() && none->finishing.moves.empty());
         QVERIFY(none->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("reaches z = 111.000")));
 
+        // A pilot hole wider than the bore (Ø36 in the Ø32 H7 bore): the program cannot make the
+        // bore, and says so rather than that the finishing pass cuts less than its depth.
+        Project wide = bushingFromPilotHole();
+        wide.boringTool->pilotHoleDiameter_mm = 36.0;
+        BoringBarGeometry reaching = stub;
+        reaching.overhang_mm = 115.0;
+        reaching.pilotHoleDiameter_mm = 36.0;
+        const std::optional<Toolpath> scrap = boringToolpath(wide, wide.passes.back(), {}, reaching, ToolpathOptions{});
+        QVERIFY(scrap);
+        QVERIFY2(scrap->warnings.join(QLatin1Char(' ')).contains(QStringLiteral("nothing is left to bore")),
+                 qPrintable(scrap->warnings.join(QLatin1Char('\n'))));
+
         // A through bore corrected station by station: the stations end at the chuck face (z 25), the
         // bore runs on to z 0 inside the jaws, where it is bored as drawn.
         FeatureCompensation corrected;
@@ -666,7 +678,19 @@ private Q_SLOTS:
         QVERIFY2(roughingCentre.empty() || roughClosest >= allowance + re - 0.002,
                  qPrintable(QStringLiteral("into the allowance: %1").arg(roughClosest, 0, 'f', 5)));
 
+        // The bar's edge (the nose's leftmost point, the imaginary tip in z) reaches the overhang
+        // less the 2 mm the turret keeps off the end face, in roughing and finishing alike; the
+        // wall is cut up to r_e right of that.
         const double reach = length + 2.0 - bar.bar.overhang_mm;
+        for (const CanonicalPass &pass : readCanonical(canonical, length)) {
+            for (const PathElement &m : pass.moves) {
+                if (!pass.bore)
+                    continue;
+                for (const ProfilePoint &tip : sampled(m, 0.05))
+                    QVERIFY2(tip.z_mm >= reach - 1e-6,
+                             qPrintable(QStringLiteral("tip at z %1, the bar reaches %2").arg(tip.z_mm).arg(reach)));
+            }
+        }
         const double halfBar = 0.5 * bar.bar.diameter_mm;
         // Inner corners of the bore as the bar sees them: mirrored about the axis, where the bore is
         // an outer contour, a corner turning right.
@@ -692,7 +716,7 @@ private Q_SLOTS:
             for (const ProfilePoint &q : sampled(e, 0.05)) {
                 const bool nearCorner = std::any_of(innerCorners.begin(), innerCorners.end(),
                                                     [&](ProfilePoint c) { return distance(c, q) < re + 1e-6; });
-                if (q.z_mm < reach - 1e-9 || (face && q.r_mm < std::max(drilled, barReach) - 1e-9) || nearCorner)
+                if (q.z_mm < reach + re - 1e-9 || (face && q.r_mm < std::max(drilled, barReach) - 1e-9) || nearCorner)
                     continue;
                 farthest = std::max(farthest, distanceTo(centre, q));
             }
