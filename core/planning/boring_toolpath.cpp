@@ -210,7 +210,7 @@ std::optional<Toolpath> boringToolpath(const Project &project, const CuttingPass
     f.zStop = boreBottom;
     if (reach > boreBottom + 1e-6) {
         f.zStop = reach + bar.noseRadius_mm;
-        f.chain = clippedAtLeft(f.chain, f.zStop);
+        f.chain = clippedAtLeft(f.chain, f.zStop, bar.noseRadius_mm, true);
         path.warnings << Toolpaths::tr("Boring bar %1 reaches z = %2 mm with its overhang of %3 mm: the bore from "
                                        "z = %4 mm to there is not bored. Set a longer overhang.")
                              .arg(bar.holderCode, mm(reach), mm(bar.overhang_mm), mm(boreBottom));

@@ -393,7 +393,8 @@ QString postProcess(const Toolpath &path, const Toolpath *boring, double partLen
     w.line(d.setup);
     w.line(toolCall(d, options.tool));
     const long limit = std::lround(options.spindle.speed_rpm);
-    if (const QString word = spindleLimitWord(d, limit); !word.isEmpty())
+    // No pass that cuts, no speed to limit: a limit of 0 rpm would be a word the control takes literally.
+    if (const QString word = limit > 0 ? spindleLimitWord(d, limit) : QString(); !word.isEmpty())
         w.line(word, options.spindle.reason);
     else
         w.commentLine(options.spindle.reason);

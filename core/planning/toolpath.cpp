@@ -330,14 +330,31 @@ ProfilePoint pointAtZ(const PathElement &e, double zCut)
     return {zCut, (up >= lo && up <= hi) ? up : e.centre.r_mm - h};
 }
 
-// The chain up to where it first passes z = zMin going left.
-std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin)
+// The chain up to where it first passes z = zMin going left. `zMin` is a limit of the nose centre;
+// a face that faces the free end (on an outer contour r rises along it going left, in a bore it
+// falls) is cut with the centre `faceReach_mm` (r_e) right of it, so it is kept while it lies no
+// further left than that.
+std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin, double faceReach_mm,
+                                       bool bore)
 {
+    const auto reachableFace = [&](const PathElement &e) {
+        const bool face = !e.arc && std::abs(e.from.z_mm - e.to.z_mm) < kTiny;
+        const bool facesTheFreeEnd = face && (bore ? e.to.r_mm < e.from.r_mm : e.to.r_mm > e.from.r_mm);
+        return facesTheFreeEnd && e.from.z_mm + faceReach_mm >= zMin - kTiny;
+    };
     std::vector<PathElement> out;
-    for (PathElement e : chain) {
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+        PathElement e = chain[i];
+        if (reachableFace(e)) {
+            out.push_back(e);
+            continue;
+        }
         if (e.from.z_mm <= zMin + kTiny)
             break;
-        if (e.to.z_mm < zMin) {
+        // An element that runs into such a face is cut to its corner: the nose, touching both,
+        // stays r_e right of the face.
+        const bool intoReachableFace = i + 1 < chain.size() && reachableFace(chain[i + 1]);
+        if (e.to.z_mm < zMin && !intoReachableFace) {
             e.to = pointAtZ(e, zMin);
             out.push_back(e);
             break;
@@ -666,7 +683,7 @@ FinishingGeometry finishingGeometry(const Project &project, const ToolpathOption
     const double jaws = leftSupport_mm(project) + options.clearance_mm + noseRadius_mm;
     const auto boundary = operationBoundary_mm(project);
     g.contour = boundary && *boundary > jaws ? clippedAtBoundary(chain, *boundary, project.scope->cutFeatures)
-                                             : clippedAtLeft(chain, jaws);
+                                             : clippedAtLeft(chain, jaws, noseRadius_mm, false);
     return g;
 }
 
@@ -737,9 +754,13 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
                                     "centred before the part is set up.");
     path.notes << Toolpaths::tr("The tool stops %1 mm short of the %2; the stock there is not turned.")
                       .arg(mm(options.clearance_mm), supportName(project.clamping.method));
+    if (path.finishing.moves.empty())
+        path.warnings << Toolpaths::tr("The finishing pass cuts nothing: every outer feature of this set-up lies "
+                                       "within the tool's stop of the %1. Grip the part shorter.")
+                             .arg(supportName(project.clamping.method));
     const double radialStock = 0.5 * project.part.stockDiameter_mm -
                                0.5 * std::max(path.finishing.smallestDiameter_mm, 0.0) - finishing.depthOfCut_mm;
-    if (roughing.empty() && radialStock > 1e-3)
+    if (roughing.empty() && !path.finishing.moves.empty() && radialStock > 1e-3)
         path.warnings << Toolpaths::tr("No roughing pass is planned: the finishing pass would cut up to %1 mm more "
                                        "than its depth of cut.")
                              .arg(mm(radialStock));

@@ -28,8 +28,10 @@ inline constexpr double kEnvelopeStep_mm = 0.02; // grid of the roughing envelop
 // The outline a turning insert cuts of a contour with undercuts; `bridged` gets the ids left out.
 [[nodiscard]] Contour withoutUndercuts(Contour contour, QStringList *bridged = nullptr);
 
-// The chain up to where it first passes z = zMin going left.
-[[nodiscard]] std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin);
+// The chain up to where it first passes z = zMin (a limit of the nose centre) going left; a face that
+// faces the free end is kept while the centre, faceReach_mm right of it, is within the limit.
+[[nodiscard]] std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin,
+                                                     double faceReach_mm, bool bore);
 
 // The point of an element where z = zCut (the element crosses it).
 [[nodiscard]] ProfilePoint pointAtZ(const PathElement &e, double zCut);

@@ -852,6 +852,54 @@ private Q_SLOTS:
         }));
     }
 
+    // The tool stops 2 mm off the jaws with its edge: its nose centre 2 + r_e = 2.8 mm. The stepped
+    // shaft gripped 32.5 mm: its shoulder O3 at z 35 faces the free end and is faced with the centre
+    // r_e right of it, at 35.8 mm, beyond the stop at 35.3: it is in the program (it was dropped, as
+    // if it were a diameter there), and the interpreter's tip keeps 2 mm off the jaws. Gripped
+    // 34.5 mm the stop is at 37.3: O3 is out of reach. The end face at 150 is faced with the centre
+    // at 150.8: gripped 148 mm (stop 150.8) it is cut, gripped 148.5 mm (stop 151.3) nothing is: the
+    // finishing pass cuts nothing, which is said; with no roughing either, no spindle limit of
+    // 0 rpm is written.
+    void facesNearTheJawsAreCutWhereTheNoseReachesThem()
+    {
+        const auto programFor = [](double gripped, ControlDialect dialect = ControlDialect::LinuxCnc,
+                                   bool finishingOnly = false) {
+            Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+            p.clamping.clampedLength_mm = gripped;
+            if (finishingOnly)
+                p.passes.erase(p.passes.begin(), p.passes.end() - 1);
+            const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+            GCodeOptions o;
+            o.dialect = dialect;
+            return turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+        };
+        const auto cuts = [](const TurningProgram &program, const QString &feature) {
+            return std::any_of(program.path.finishing.moves.begin(), program.path.finishing.moves.end(),
+                               [&feature](const ToolMove &m) { return m.featureId == feature; });
+        };
+        const TurningProgram near = programFor(32.5);
+        QVERIFY(cuts(near, QStringLiteral("O3")));
+        Lathe lathe;
+        setUpLathe(lathe, 0.8);
+        const QString canonical = runInterpreter(lathe, near.text);
+        QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
+        for (const CanonicalPass &pass : readCanonical(canonical, 150.0))
+            for (const PathElement &m : pass.moves)
+                for (const ProfilePoint &tip : sampled(m, 0.05))
+                    QVERIFY2(tip.z_mm >= 34.5 - 1e-6, qPrintable(QString::number(tip.z_mm)));
+        QVERIFY(!cuts(programFor(34.5), QStringLiteral("O3")));
+        QVERIFY(cuts(programFor(148.0), QStringLiteral("O11")));
+        const TurningProgram none = programFor(148.5);
+        QVERIFY(none.path.finishing.moves.empty());
+        QVERIFY2(none.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("The finishing pass cuts nothing")),
+                 qPrintable(none.warnings().join(QLatin1Char('\n'))));
+        // Without roughing passes nothing at all is cut: no speed to limit.
+        const TurningProgram nothing = programFor(148.5, ControlDialect::FanucHaas, true);
+        QVERIFY(nothing.path.roughing.empty() && nothing.path.finishing.moves.empty());
+        QVERIFY2(!nothing.text.contains(QStringLiteral("G50 S0")), qPrintable(nothing.text));
+        QVERIFY(!none.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("No roughing pass is planned")));
+    }
+
     void linuxCncReproducesTheProfile_data()
     {
         QTest::addColumn<QString>("file");
