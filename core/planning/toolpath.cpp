@@ -86,31 +86,47 @@ ToolMove moveAlong(const PathElement &e)
 }
 
 // With the control's nose radius compensation a concave arc tighter than the nose is refused (the
-// offset arc would have a negative radius): it is programmed as the corner of its neighbours'
-// lines, which the nose rounds with its own radius. Returns the ids of the arcs so replaced.
-QStringList sharpenTightConcaveArcs(std::vector<PathElement> &chain, double noseRadius_mm)
+// offset arc would have a negative radius): it is programmed as the corner where its neighbours
+// meet, which the nose rounds with its own radius. A neighbour that is a line is extended to the
+// corner; one that is a convex arc is left as it is and its tangent at the joint is programmed on to
+// the corner (the tangent of a convex arc runs outside its material, so the nose cuts nothing of it).
+// A concave arc next to it, or neighbours that do not meet, leave the arc as it is: `kept` gets its
+// id. Returns the ids of the arcs replaced.
+QStringList sharpenTightConcaveArcs(std::vector<PathElement> &chain, double noseRadius_mm, QStringList &kept)
 {
     QStringList replaced;
     for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
         const PathElement &e = chain[i];
         if (!e.arc || e.counterClockwise || e.radius_mm > noseRadius_mm + kTiny)
             continue;
-        PathElement &before = chain[i - 1];
-        PathElement &after = chain[i + 1];
-        if (before.arc || after.arc)
-            continue; // no corner of two lines: left as it is
-        const double d1z = before.to.z_mm - before.from.z_mm, d1r = before.to.r_mm - before.from.r_mm;
-        const double d2z = after.to.z_mm - after.from.z_mm, d2r = after.to.r_mm - after.from.r_mm;
-        const double det = d1z * d2r - d1r * d2z;
-        if (std::abs(det) < 1e-12)
+        const PathElement &before = chain[i - 1];
+        const PathElement &after = chain[i + 1];
+        const ProfilePoint d1 = endTangent(before);
+        const ProfilePoint d2 = startTangent(after);
+        const double det = d1.z_mm * d2.r_mm - d1.r_mm * d2.z_mm;
+        const bool concaveNeighbour =
+            (before.arc && !before.counterClockwise) || (after.arc && !after.counterClockwise);
+        if (concaveNeighbour || std::abs(det) < 1e-12) {
+            kept << e.featureId;
             continue;
-        const double t =
-            ((after.from.z_mm - before.from.z_mm) * d2r - (after.from.r_mm - before.from.r_mm) * d2z) / det;
-        const ProfilePoint corner{before.from.z_mm + t * d1z, before.from.r_mm + t * d1r};
+        }
+        const ProfilePoint p1 = before.to;
+        const ProfilePoint p2 = after.from;
+        const double t = ((p2.z_mm - p1.z_mm) * d2.r_mm - (p2.r_mm - p1.r_mm) * d2.z_mm) / det;
+        const ProfilePoint corner{p1.z_mm + t * d1.z_mm, p1.r_mm + t * d1.r_mm};
         replaced << e.featureId;
-        before.to = corner;
-        after.from = corner;
+        std::vector<PathElement> bridge;
+        if (before.arc)
+            bridge.push_back(line(p1, corner, e.featureId));
+        else
+            chain[i - 1].to = corner;
+        if (after.arc)
+            bridge.push_back(line(corner, p2, e.featureId));
+        else
+            chain[i + 1].from = corner;
         chain.erase(chain.begin() + static_cast<std::ptrdiff_t>(i));
+        chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(i), bridge.begin(), bridge.end());
+        i += bridge.size();
         --i;
     }
     return replaced;
@@ -456,10 +472,16 @@ PassPath contourPass(const std::vector<PathElement> &contour, bool faced, const 
                                       "follow it and leaves it rounded.")
                             .arg(id, mm(noseRadius_mm));
     } else {
-        for (const QString &id : sharpenTightConcaveArcs(programmed, noseRadius_mm))
+        QStringList kept;
+        for (const QString &id : sharpenTightConcaveArcs(programmed, noseRadius_mm, kept))
             warnings << Toolpaths::tr("%1 is tighter than the nose radius %2 mm: it is programmed as the sharp "
                                       "corner it rounds (a control's compensation cannot follow a concave arc "
                                       "tighter than the nose), and the nose leaves it rounded to %2 mm.")
+                            .arg(id, mm(noseRadius_mm));
+        for (const QString &id : kept)
+            warnings << Toolpaths::tr("%1 is tighter than the nose radius %2 mm, and its neighbours give no corner "
+                                      "to program instead: a control's compensation refuses it. Use an insert "
+                                      "with a smaller nose, or --nose tip-path.")
                             .arg(id, mm(noseRadius_mm));
     }
     // The entry move, longer than r_e (a compensation needs that): along -z onto a face that is faced,

@@ -439,6 +439,57 @@ private Q_SLOTS:
         QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
     }
 
+    // A concave R0.5 fillet (tighter than the nose, r_e 0.8) between a convex R2.5 round (on the
+    // Ø36 hub seat, untoleranced here, so programmed at nominal) and the Ø30 journal: the round ends vertical at (z
+    // 120.5, r 15.5), the journal runs at r 15 from z 121. The corner of their tangents is (120.5, 15): the journal is
+    // programmed to it, then a line up the round's tangent to the round, which is programmed as drawn. LinuxCNC runs it
+    // (the fillet as drawn it refuses: "Tool radius not less than arc radius with comp"), and says why.
+    void tightFilletBesideARoundIsProgrammedAsTheTangentsCorner()
+    {
+        Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        std::vector<Segment> &outer = p.part.outer.segments;
+        QCOMPARE(outer[6].id, QStringLiteral("O7"));
+        outer[5].to.r_mm = outer[4].to.r_mm = outer[5].from.r_mm = 18.0; // the Ø36 hub seat O6
+        outer[4].to.r_mm = 18.0;
+        outer[6].from = {118.0, 18.0};
+        outer[6].to = {120.5, 15.5};
+        outer[6].arcRadius_mm = 2.5;
+        Segment fillet;
+        fillet.id = QStringLiteral("O12");
+        fillet.kind = SegmentKind::Radius;
+        fillet.from = {120.5, 15.5};
+        fillet.to = {121.0, 15.0};
+        fillet.arcRadius_mm = 0.5;
+        fillet.arcDirection = ArcDirection::CounterClockwise;
+        outer[7] = fillet; // in place of the face O8
+        outer[8].from = {121.0, 15.0};
+        p.tolerances.erase(std::remove_if(p.tolerances.begin(), p.tolerances.end(),
+                                          [](const Tolerance &t) {
+                                              return t.featureId == QLatin1String("O6") ||
+                                                     t.featureId == QLatin1String("O8") ||
+                                                     t.toFeatureId == QLatin1String("O8");
+                                          }),
+                           p.tolerances.end());
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY2(d.inputs, qPrintable(dump(d.diagnostics)));
+        GCodeOptions o;
+        o.dialect = ControlDialect::LinuxCnc;
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+        QVERIFY2(program.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("O12 is tighter than the nose")),
+                 qPrintable(program.warnings().join(QLatin1Char('\n'))));
+        // Z0 at the right end face (z 150), X on diameter, the tool going left: the journal to the
+        // corner, then up the round's tangent to where the round begins.
+        const qsizetype corner = program.text.indexOf(QStringLiteral("X30.000 Z-29.500"));
+        QVERIFY2(corner > 0, qPrintable(program.text));
+        QVERIFY2(program.text.mid(corner).section(QLatin1Char('\n'), 1, 1).contains(QStringLiteral("X31.000 Z-29.500")),
+                 qPrintable(program.text.mid(corner, 200)));
+        QVERIFY(!program.text.contains(QStringLiteral("R0.500")));
+        Lathe lathe;
+        setUpLathe(lathe, d.inputs->noseRadius_mm);
+        const QString canonical = runInterpreter(lathe, program.text);
+        QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
+    }
+
     // The H7 bushing from a Ø24 pilot hole, by hand. The target is the middle of H7 (0 / +25 µm on
     // Ø32): r = 16.00625 mm; roughed to it less the finishing allowance of 0.5 mm, 15.50625 mm, less
     // the 1 µm the last level stays off it. From r 12 the roughing pass's 1.5 mm give levels (the
