@@ -1284,6 +1284,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest drift of the size (not always of the form).</source>
         <translation>Zeit seit dem Start der Maschine nicht angegeben (environment): als durchgewärmt angenommen, %1 min (zehn Zeitkonstanten), die größte Drift des Maßes (nicht immer der Form).</translation>
     </message>
+    <message>
+        <source>Spindle–chuck tangential springs not measured: the chuck is taken as rigid tangentially (the radial springs are measured). A tangential deflection δ_t changes the machined radius by about δ_t²/2r only; give tangential_um in the test-bar fit to measure them.</source>
+        <translation>Tangentiale Federn Spindel–Futter nicht gemessen: das Futter wird tangential als starr angenommen (die radialen Federn sind gemessen). Eine tangentiale Verformung δ_t ändert den gefertigten Radius nur um etwa δ_t²/2r; geben Sie tangential_um in der Prüfstab-Anpassung an, um sie zu messen.</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>
@@ -1467,6 +1471,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Roughing feed not scheduled: the plan&apos;s settings give no feed range to stay within.</source>
         <translation>Schruppvorschub nicht geplant: die Planungsdaten nennen keinen Vorschubbereich, in dem er bleiben müsste.</translation>
+    </message>
+    <message>
+        <source>The project has no finishing pass: its last pass (%1) is cut along the contour as the finishing pass, and the passes before it leave it its depth. Add a finishing pass.</source>
+        <translation>Das Projekt hat keinen Schlichtschnitt: sein letzter Schnitt (%1) wird als Schlichtschnitt entlang der Kontur gefahren, und die Schnitte davor lassen ihm seine Schnitttiefe. Fügen Sie einen Schlichtschnitt hinzu.</translation>
     </message>
 </context>
 <context>
@@ -2157,6 +2165,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>part %1: its forces are the physics model&apos;s, not estimated from its motor currents</source>
         <translation>Teil %1: Seine Kräfte stammen aus dem Physikmodell, nicht aus seinen Motorströmen geschätzt</translation>
     </message>
+    <message>
+        <source>part %1: %2 of its %3 points are not compared with the physics (on a face or on a feature its set-up&apos;s passes do not turn)</source>
+        <translation>Teil %1: %2 seiner %3 Punkte werden nicht mit der Physik verglichen (auf einer Planfläche oder auf einem Formelement, das die Schnitte seiner Aufspannung nicht drehen)</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>
@@ -2198,6 +2210,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 must be at most 1e9 in size, not &quot;%2&quot;</source>
         <translation>%1 darf betragsmäßig höchstens 1e9 sein, nicht „%2“</translation>
+    </message>
+    <message>
+        <source>%1 must be a number with a decimal point, not &quot;%2&quot;</source>
+        <translation>%1 muss eine Zahl mit Dezimalpunkt sein, nicht „%2“</translation>
+    </message>
+    <message>
+        <source>the line has %1 cells, the header %2: &quot;%3&quot;</source>
+        <translation>die Zeile hat %1 Zellen, die Kopfzeile %2: „%3“</translation>
     </message>
 </context>
 <context>
@@ -3461,6 +3481,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>a pilot hole of Ø%1 mm leaves nothing to bore in %2, Ø%3 mm</source>
         <translation>eine Vorbohrung von Ø%1 mm lässt in %2, Ø%3 mm, nichts auszudrehen</translation>
+    </message>
+    <message>
+        <source>no finishing pass: the last pass is taken as the one that cuts the contour to size (the verdicts and the program rest on it)</source>
+        <translation>kein Schlichtschnitt: der letzte Schnitt wird als der genommen, der die Kontur auf Maß schneidet (die Urteile und das Programm beruhen darauf)</translation>
     </message>
 </context>
 <context>
@@ -5022,6 +5046,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>tangential</source>
         <translation>tangential</translation>
     </message>
+    <message>
+        <source>tangential_um is given at %1 positions z; the fit needs three or more: the tangential springs are not fitted</source>
+        <translation>tangential_um ist an %1 Positionen z angegeben; die Anpassung braucht drei oder mehr: die tangentialen Federn werden nicht angepasst</translation>
+    </message>
+    <message>
+        <source>the tangential force is %1 N: the tangential springs are not fitted</source>
+        <translation>die Tangentialkraft ist %1 N: die tangentialen Federn werden nicht angepasst</translation>
+    </message>
+    <message>
+        <source>the tangential springs were fitted for Lc = %1 mm and do not hold at Lc = %2 mm: removed; measure the tangential deviation to fit them again</source>
+        <translation>die tangentialen Federn wurden für Lc = %1 mm angepasst und gelten nicht bei Lc = %2 mm: entfernt; messen Sie die tangentiale Abweichung, um sie neu anzupassen</translation>
+    </message>
 </context>
 <context>
     <name>StepExport</name>
@@ -5274,6 +5310,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 is planned for machine &quot;%2&quot;, but the test bar was cut on &quot;%3&quot;: its springs are that machine&apos;s; nothing written</source>
         <translation>%1 ist für die Maschine „%2“ geplant, der Prüfstab wurde aber auf „%3“ gedreht: seine Federn sind die jener Maschine; nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>  tangential: not fitted (the warning above says why)</source>
+        <translation>  tangential: nicht angepasst (die Warnung oben sagt, warum)</translation>
     </message>
 </context>
 <context>
@@ -5558,6 +5598,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The bottom of the bore, %1, is a cone or a radius down to the axis: the program finishes it to the axis, without the pilot hole&apos;s and the bar&apos;s limits of a flat bottom. Check that the bar clears the opposite wall there.</source>
         <translation>Der Bohrungsgrund %1 ist ein Kegel oder Radius bis zur Achse: Das Programm schlichtet ihn bis zur Achse, ohne die Grenzen von Vorbohrung und Stange wie bei einem ebenen Grund. Prüfen Sie, dass die Stange dort die gegenüberliegende Wand nicht berührt.</translation>
+    </message>
+    <message>
+        <source>The pilot hole Ø%1 mm is as wide as the bore Ø%2 mm or wider: nothing is left to bore, and the bore stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
+        <translation>Die Vorbohrung Ø%1 mm ist so weit wie die Bohrung Ø%2 mm oder weiter: es bleibt nichts auszudrehen, und die Bohrung behält das Maß der Vorbohrung, nicht das der Zeichnung.</translation>
+    </message>
+    <message>
+        <source>%1 is tighter than the nose radius %2 mm, and its neighbours give no corner to program instead: a control&apos;s compensation refuses it. Use an insert with a smaller nose, or --nose tip-path.</source>
+        <translation>%1 ist enger als der Eckenradius %2 mm, und seine Nachbarn ergeben keine Ecke, die stattdessen programmiert werden kann: die Radiuskorrektur einer Steuerung lehnt es ab. Verwenden Sie eine Wendeschneidplatte mit kleinerem Eckenradius oder --nose tip-path.</translation>
+    </message>
+    <message>
+        <source>The finishing pass cuts nothing: every outer feature of this set-up lies within the tool&apos;s stop of the %1. Grip the part shorter.</source>
+        <translation>Der Schlichtschnitt schneidet nichts: jedes Außenformelement dieser Aufspannung liegt dort, wo das Werkzeug vor %1 anhält. Spannen Sie das Teil kürzer.</translation>
     </message>
 </context>
 <context>

@@ -1284,6 +1284,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Time since the machine started not given (environment): taken as warmed through, %1 min (ten time constants), the largest drift of the size (not always of the form).</source>
         <translation>Tiempo desde el arranque de la máquina no indicado (environment): se toma como caliente del todo, %1 min (diez constantes de tiempo), la mayor deriva de la cota (no siempre de la forma).</translation>
     </message>
+    <message>
+        <source>Spindle–chuck tangential springs not measured: the chuck is taken as rigid tangentially (the radial springs are measured). A tangential deflection δ_t changes the machined radius by about δ_t²/2r only; give tangential_um in the test-bar fit to measure them.</source>
+        <translation>Muelles tangenciales husillo–plato no medidos: el plato se toma como rígido tangencialmente (los muelles radiales están medidos). Una deformación tangencial δ_t cambia el radio mecanizado solo en unos δ_t²/2r; indique tangential_um en el ajuste de la barra de prueba para medirlos.</translation>
+    </message>
 </context>
 <context>
     <name>DriveReadings</name>
@@ -1467,6 +1471,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Roughing feed not scheduled: the plan&apos;s settings give no feed range to stay within.</source>
         <translation>Avance de desbaste no programado: los datos de planificación no dan un rango de avance que respetar.</translation>
+    </message>
+    <message>
+        <source>The project has no finishing pass: its last pass (%1) is cut along the contour as the finishing pass, and the passes before it leave it its depth. Add a finishing pass.</source>
+        <translation>El proyecto no tiene pasada de acabado: su última pasada (%1) se corta a lo largo del contorno como pasada de acabado, y las pasadas anteriores le dejan su profundidad. Añada una pasada de acabado.</translation>
     </message>
 </context>
 <context>
@@ -2157,6 +2165,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>part %1: its forces are the physics model&apos;s, not estimated from its motor currents</source>
         <translation>pieza %1: sus fuerzas son las del modelo físico, no estimadas a partir de sus corrientes de motor</translation>
     </message>
+    <message>
+        <source>part %1: %2 of its %3 points are not compared with the physics (on a face or on a feature its set-up&apos;s passes do not turn)</source>
+        <translation>pieza %1: %2 de sus %3 puntos no se comparan con la física (en una cara o en un elemento que las pasadas de su amarre no tornean)</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>
@@ -2198,6 +2210,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 must be at most 1e9 in size, not &quot;%2&quot;</source>
         <translation>%1 debe ser como mucho 1e9 en valor absoluto, no «%2»</translation>
+    </message>
+    <message>
+        <source>%1 must be a number with a decimal point, not &quot;%2&quot;</source>
+        <translation>%1 debe ser un número con punto decimal, no «%2»</translation>
+    </message>
+    <message>
+        <source>the line has %1 cells, the header %2: &quot;%3&quot;</source>
+        <translation>la línea tiene %1 celdas, la cabecera %2: «%3»</translation>
     </message>
 </context>
 <context>
@@ -3461,6 +3481,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>a pilot hole of Ø%1 mm leaves nothing to bore in %2, Ø%3 mm</source>
         <translation>un agujero previo de Ø%1 mm no deja nada que mandrinar en %2, Ø%3 mm</translation>
+    </message>
+    <message>
+        <source>no finishing pass: the last pass is taken as the one that cuts the contour to size (the verdicts and the program rest on it)</source>
+        <translation>ninguna pasada de acabado: la última pasada se toma como la que lleva el contorno a medida (los veredictos y el programa se basan en ella)</translation>
     </message>
 </context>
 <context>
@@ -5022,6 +5046,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>tangential</source>
         <translation>tangencial</translation>
     </message>
+    <message>
+        <source>tangential_um is given at %1 positions z; the fit needs three or more: the tangential springs are not fitted</source>
+        <translation>tangential_um se da en %1 posiciones z; el ajuste necesita tres o más: los muelles tangenciales no se ajustan</translation>
+    </message>
+    <message>
+        <source>the tangential force is %1 N: the tangential springs are not fitted</source>
+        <translation>la fuerza tangencial es %1 N: los muelles tangenciales no se ajustan</translation>
+    </message>
+    <message>
+        <source>the tangential springs were fitted for Lc = %1 mm and do not hold at Lc = %2 mm: removed; measure the tangential deviation to fit them again</source>
+        <translation>los muelles tangenciales se ajustaron para Lc = %1 mm y no valen para Lc = %2 mm: eliminados; mida la desviación tangencial para ajustarlos de nuevo</translation>
+    </message>
 </context>
 <context>
     <name>StepExport</name>
@@ -5274,6 +5310,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 is planned for machine &quot;%2&quot;, but the test bar was cut on &quot;%3&quot;: its springs are that machine&apos;s; nothing written</source>
         <translation>%1 está planificado para la máquina «%2», pero la barra de prueba se torneó en «%3»: sus muelles son de esa máquina; no se escribió nada</translation>
+    </message>
+    <message>
+        <source>  tangential: not fitted (the warning above says why)</source>
+        <translation>  tangencial: no ajustado (el aviso de arriba dice por qué)</translation>
     </message>
 </context>
 <context>
@@ -5558,6 +5598,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The bottom of the bore, %1, is a cone or a radius down to the axis: the program finishes it to the axis, without the pilot hole&apos;s and the bar&apos;s limits of a flat bottom. Check that the bar clears the opposite wall there.</source>
         <translation>El fondo del agujero, %1, es un cono o un radio hasta el eje: el programa lo acaba hasta el eje, sin los límites del agujero previo y de la barra de un fondo plano. Compruebe que la barra no toca la pared opuesta ahí.</translation>
+    </message>
+    <message>
+        <source>The pilot hole Ø%1 mm is as wide as the bore Ø%2 mm or wider: nothing is left to bore, and the bore stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
+        <translation>El agujero previo de Ø%1 mm es tan ancho como el agujero Ø%2 mm o más: no queda nada que mandrinar, y el agujero se queda con la medida del agujero previo, no la del plano.</translation>
+    </message>
+    <message>
+        <source>%1 is tighter than the nose radius %2 mm, and its neighbours give no corner to program instead: a control&apos;s compensation refuses it. Use an insert with a smaller nose, or --nose tip-path.</source>
+        <translation>%1 es más cerrado que el radio de punta %2 mm, y sus vecinos no dan una esquina que programar en su lugar: la compensación de un control lo rechaza. Use una plaquita con radio de punta menor, o --nose tip-path.</translation>
+    </message>
+    <message>
+        <source>The finishing pass cuts nothing: every outer feature of this set-up lies within the tool&apos;s stop of the %1. Grip the part shorter.</source>
+        <translation>La pasada de acabado no corta nada: todos los elementos exteriores de este amarre quedan donde la herramienta se detiene antes de %1. Sujete la pieza más corta.</translation>
     </message>
 </context>
 <context>
