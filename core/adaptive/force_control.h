@@ -26,8 +26,9 @@ struct ForceControlSettings {
     // smooths noise at the price of a slower answer). A setting of the controller, not a datum.
     double estimatorGain = 1.0;
     // Share of the step from the last command to the feed of the set force taken each period
-    // (1: the whole step; more overdrives the feed drive's lag, less damps the answer). A setting
-    // of the controller, not a datum: controller_tuning.h finds it with the estimator's gain.
+    // (1: the whole step; less damps the answer; more would make the command alternate about the
+    // target, controller_tuning.h). A setting of the controller, not a datum: controller_tuning.h
+    // finds it with the estimator's gain.
     double commandGain = 1.0;
     // Machine noise (004 §2.4): relative standard deviation of the measured force, Gaussian, with
     // a fixed seed so that a run can be repeated. 004 states no level: none unless given.
