@@ -113,6 +113,27 @@ QStringList notesFor(const ProjectControlOptions &options, const TurningInputs &
     return notes;
 }
 
+// The default set force is the force of the programmed feed at the pass's planned depth: where
+// the passes before leave more, the pass cuts deeper and the loop lowers the feed to hold that
+// force, which the planner should know (and the verdicts, computed at the planned depth, are
+// optimistic there).
+void warnWhereDeeperThanPlanned(const PassDepthProfile &pass, Diagnostics &out)
+{
+    if (pass.depth_mm.empty())
+        return;
+    const double deepest = *std::max_element(pass.depth_mm.begin(), pass.depth_mm.end());
+    const double planned = pass.conditions.depthOfCut_mm;
+    constexpr double kSlack = 1.1; // within 10 % the planned depth stands for the pass
+    if (deepest <= kSlack * planned)
+        return;
+    out.push_back(makeWarning(QStringLiteral("passes[%1].depth_of_cut_mm").arg(pass.passIndex),
+                              AdaptiveControl::tr("pass %1 cuts up to %2 mm deep where the plan gives %3 mm: the "
+                                                  "passes before it leave more. The set force is the planned depth's, "
+                                                  "so the loop lowers the feed there; plan the passes to the stock")
+                                  .arg(pass.passIndex + 1)
+                                  .arg(QString::number(deepest, 'f', 3), QString::number(planned, 'f', 3))));
+}
+
 } // namespace
 
 ProjectControlSetup prepareProjectControl(const Project &project, const DataLibrary &data,
@@ -153,6 +174,7 @@ ProjectControlSetup prepareProjectControl(const Project &project, const DataLibr
         if (options.passIndex && pass.passIndex != *options.passIndex)
             continue;
         process.cuttingSpeed_m_min = pass.conditions.cuttingSpeed_m_min;
+        warnWhereDeeperThanPlanned(pass, setup.diagnostics);
         QStringList reasons;
         process.maxFeed_mm_rev = feedCeiling(project, pass.conditions, in.noseRadius_mm, reasons);
         if (!reasons.isEmpty())

@@ -8,11 +8,15 @@
 #include "core/adaptive/feed_drive.h"
 #include "core/adaptive/force_control.h"
 #include "core/adaptive/pass_depth.h"
+#include "core/adaptive/project_control.h"
 #include "core/adaptive/surface_control_models.h"
+#include "core/data/data_library.h"
+#include "core/io/project_file.h"
 
 #include <QJsonDocument>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -190,6 +194,27 @@ private Q_SLOTS:
         }
         QCOMPARE(passes.front().z_mm.front(), 100.0);
         QCOMPARE(passes.front().z_mm.back(), 5.0);
+    }
+
+    // The H7 bushing from Ø65 stock: its roughing pass (1.5 mm) leaves r 32.5 − 1.5 = 31, and the
+    // finishing pass, planned at 0.5 mm, cuts 1.0 mm down to the Ø60 body: the default set force
+    // is the planned depth's, so the loop would halve the feed there; said. From the Ø64 stock the
+    // bushing ships with, 32 − 1.5 = 30.5 leaves the planned 0.5 mm: nothing to say.
+    void deeperThanPlannedIsSaid()
+    {
+        Project p =
+            *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/bushing-bore-h7.tolturn")).project;
+        QCOMPARE(p.part.stockDiameter_mm, 64.0);
+        const auto deeper = [](const ProjectControlSetup &s) {
+            return std::any_of(s.diagnostics.begin(), s.diagnostics.end(), [](const Diagnostic &d) {
+                return d.field == QLatin1String("passes[1].depth_of_cut_mm") &&
+                       d.message.contains(QStringLiteral("cuts up to 1.000 mm deep where the plan gives 0.500 mm"));
+            });
+        };
+        QVERIFY(!deeper(prepareProjectControl(p, DataLibrary::builtIn(), {})));
+        p.part.stockDiameter_mm = 65.0;
+        const ProjectControlSetup setup = prepareProjectControl(p, DataLibrary::builtIn(), {});
+        QVERIFY2(deeper(setup), qPrintable(test::dump(setup.diagnostics)));
     }
 
     // Constant depth 2 mm, the set force 80 % of the programmed feed's: the first command is the
