@@ -457,6 +457,8 @@ int runMillDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     const BallEndDeflection result = ballEndDeflection(in->mill, *tool, in->coefficients, in->cut, in->resolution);
     const double generating = surfaceGenerationHeight_mm(in->mill, in->cut);
+    for (const QString &w : ballEndValidityWarnings(in->mill, *tool, in->cut, result))
+        err << programName() << ' ' << command << ": " << MillingCommand::tr("warning: %1").arg(w) << '\n';
     if (parser.isSet(o.json)) {
         QJsonObject json = summaryJson(*in, summarise(result.forces));
         json.insert(QStringLiteral("surface_normal_error_um"),
@@ -553,6 +555,8 @@ int runMillOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
             planBallEndCut(in->mill, *tool, in->coefficients, in->cut, in->spindle_rpm, *tolerance, *settings);
     }
     const BallEndPlan &plan = planned.plan;
+    for (const QString &w : plan.warnings)
+        err << programName() << ' ' << command << ": " << MillingCommand::tr("warning: %1").arg(w) << '\n';
     if (parser.isSet(o.json)) {
         QJsonObject json{{QStringLiteral("feasible"), plan.feasible},
                          {QStringLiteral("lead_deg"), plan.cut.lead_rad / kDegree},

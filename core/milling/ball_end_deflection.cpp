@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/milling/ball_end_deflection.h"
 
+#include "core/milling/seed_ball_end_cases.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -96,6 +98,32 @@ BallEndDeflection ballEndDeflection(const BallEndMill &mill, const BallEndToolSt
         result.deflection.push_back(d);
     }
     return result;
+}
+
+QStringList ballEndValidityWarnings(const BallEndMill &mill, const BallEndToolStructure &tool, const BallEndCut &cut,
+                                    const BallEndDeflection &deflection)
+{
+    QStringList out;
+    if (engagedBand(mill, cut).low_mm <= 0.0)
+        out << BallEndMilling::tr("the tip of the ball, where the cutting speed is zero, is in the cut (lead %1°, tilt "
+                                  "%2°): the force model takes no account of the rubbing there")
+                   .arg(cut.lead_rad * 180.0 / std::numbers::pi, 0, 'f', 1)
+                   .arg(cut.tilt_rad * 180.0 / std::numbers::pi, 0, 'f', 1);
+    if (cut.lead_rad < 0.0)
+        out << BallEndMilling::tr("the lead is negative (%1°): the feed has a part along the tool axis and the cut "
+                                  "drills, where 001 §5 finds its force model below the measured forces")
+                   .arg(cut.lead_rad * 180.0 / std::numbers::pi, 0, 'f', 1);
+    double peak = 0.0;
+    for (const BallEndForceSample &f : deflection.forces)
+        peak = std::max(peak, std::hypot(f.toolFrame_N.x(), f.toolFrame_N.y()));
+    constexpr double kSeedHolderCalibration_N = 1000.0; // 001 §4
+    if (tool.holderStiffness_N_mm == kSeedHolderStiffness_N_mm &&
+        tool.holderRotational_N_mm_rad == kSeedHolderRotational_N_mm_rad && peak > kSeedHolderCalibration_N)
+        out << BallEndMilling::tr("the lateral force peaks at %1 N, beyond the 1000 N for which 001 calibrated the "
+                                  "holder springs it gives (001 §4): the deflection there is an extrapolation; give "
+                                  "your holder's springs")
+                   .arg(peak, 0, 'f', 0);
+    return out;
 }
 
 } // namespace tolturn

@@ -9,6 +9,8 @@
 
 #include "core/milling/ball_end_forces.h"
 
+#include <QStringList>
+
 #include <string>
 #include <vector>
 
@@ -66,5 +68,13 @@ struct BallEndDeflection {
 [[nodiscard]] BallEndDeflection ballEndDeflection(const BallEndMill &mill, const BallEndToolStructure &tool,
                                                   const MillingForceCoefficients &coefficients, const BallEndCut &cut,
                                                   const BallEndResolution &resolution);
+
+// What a result at this cut rests on beyond 001's validity, one sentence each, for the planner to
+// see beside it: the tip, where the cutting speed is zero, in the cut (the engaged band reaches it);
+// a negative lead, where 001 §5 finds the feed along the axis makes the milling drill and its force
+// model fall short of the measured forces; and 001's holder springs (k 6306 N/mm, k_θ 1.656·10⁷
+// N·mm/rad, "calibrated for forces under 1000 N", 001 §4) under a larger lateral force.
+[[nodiscard]] QStringList ballEndValidityWarnings(const BallEndMill &mill, const BallEndToolStructure &tool,
+                                                  const BallEndCut &cut, const BallEndDeflection &deflection);
 
 } // namespace tolturn

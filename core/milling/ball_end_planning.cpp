@@ -258,6 +258,9 @@ BallEndPlan planBallEndCut(const BallEndMill &mill, const BallEndToolStructure &
     plan.cut.feedPerTooth_mm = checked.largestFeed_mm;
     plan.formError_mm = checked.formError_mm;
     plan.feedRate_mm_min = checked.largestFeed_mm * mill.flutes * spindle_rpm;
+    if (plan.feasible)
+        plan.warnings = ballEndValidityWarnings(
+            mill, tool, plan.cut, ballEndDeflection(mill, tool, coefficients, plan.cut, settings.planResolution));
     return plan;
 }
 

@@ -97,6 +97,7 @@ struct BallEndPlan {
     double feedRate_mm_min = 0.0;
     int evaluations = 0; // of the NLopt refinement
     LeadTiltWindow window;
+    QStringList warnings; // where the planned cut lies beyond 001's validity (ballEndValidityWarnings)
 };
 
 // The lead, tilt and feed per tooth of least machining time, which at a given spindle speed is the

@@ -7,6 +7,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -68,6 +69,49 @@ class TestBallEndPlanning : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+
+    // Where a cut lies beyond 001, said beside its result. The tip cuts where the engaged band
+    // reaches it: θ ≤ γ, θ = acos(cos lead cos tilt), γ = acos(1 − a/R_o) = acos(1 − 0.5/6) = 23.6°;
+    // at lead 10°, tilt 10° (θ = 14.1°) it does, at 30°, 0° it does not. A negative lead drills
+    // (001 §5). 001's holder springs hold under 1000 N of lateral force (001 §4): the peak of
+    // hypot(F_x, F_y) over the revolution, taken here from the forces, decides; at a feed of 0.3
+    // mm/tooth in a 3 mm slot it is above, at 0.02 mm/tooth in the 0.5 mm step-over below, and
+    // another holder's springs carry no such limit.
+    void cutsBeyond001AreSaid()
+    {
+        const auto warnings = [](const BallEndToolStructure &tool, const BallEndCut &cut) {
+            const BallEndDeflection d = ballEndDeflection(kMill, tool, kCoefficients, cut, {60, 120});
+            double peak = 0.0;
+            for (const BallEndForceSample &f : d.forces)
+                peak = std::max(peak, std::hypot(f.toolFrame_N.x(), f.toolFrame_N.y()));
+            return std::make_pair(ballEndValidityWarnings(kMill, tool, cut, d).join(QLatin1Char('\n')), peak);
+        };
+        BallEndCut cut = stepOverCut();
+        cut.feedPerTooth_mm = 0.02;
+        cut.lead_rad = 10.0 * kDegree;
+        cut.tilt_rad = 10.0 * kDegree;
+        const auto [tip, lowPeak] = warnings(kTool, cut);
+        QVERIFY2(tip.contains(QStringLiteral("the tip of the ball")), qPrintable(tip));
+        QVERIFY(!tip.contains(QStringLiteral("lead is negative")));
+        QVERIFY(lowPeak < 1000.0 && !tip.contains(QStringLiteral("1000 N")));
+        cut.lead_rad = 30.0 * kDegree;
+        cut.tilt_rad = 0.0;
+        QVERIFY(warnings(kTool, cut).first.isEmpty());
+        cut.lead_rad = -30.0 * kDegree;
+        QVERIFY(warnings(kTool, cut).first.contains(QStringLiteral("the lead is negative (-30.0°)")));
+
+        BallEndCut slot;
+        slot.kind = BallEndCutKind::Slot;
+        slot.axialDepth_mm = 3.0;
+        slot.feedPerTooth_mm = 0.3;
+        slot.lead_rad = 30.0 * kDegree;
+        const auto [heavy, highPeak] = warnings(kTool, slot);
+        QVERIFY2(highPeak > 1000.0, qPrintable(QString::number(highPeak)));
+        QVERIFY2(heavy.contains(QStringLiteral("beyond the 1000 N")), qPrintable(heavy));
+        BallEndToolStructure ownHolder = kTool;
+        ownHolder.holderStiffness_N_mm = 2.0e4;
+        QVERIFY(!warnings(ownHolder, slot).first.contains(QStringLiteral("1000 N")));
+    }
 
     // δ_N = base + f · perFeed at f = 0.1: {1 + 0.1·10, −2 + 0.1·20, 0.5 − 0.1·30} = {2, 0, −2.5} µm.
     // Floating: the spread 2 − (−2.5) = 4.5 µm; located: 2 · max |δ_N| = 5 µm.

@@ -449,6 +449,9 @@ void MillingPanel::showError(const Inputs &in, const BallEndDeflection &result)
                            .arg(1000.0 * result.greatestSurfaceNormal_mm, 0, 'f', 2)
                            .arg(t_um)
                            .arg(floating ? tr("spread") : tr("±t/2"), verdict));
+    for (const QString &w : ballEndValidityWarnings(in.mill, in.tool, in.cut, result))
+        m_summary->setText(m_summary->text() +
+                           QStringLiteral("<br><b>%1</b> %2").arg(tr("Beyond 001:"), w.toHtmlEscaped()));
 }
 
 void MillingPanel::plan()
@@ -497,6 +500,8 @@ void MillingPanel::showWindow()
                                      .arg(1000.0 * p.formError_mm, 0, 'f', 2)
                                      .arg(legend)
                                : tr("No lead and tilt within ±40° holds the tolerance at any feed. %1").arg(legend));
+    for (const QString &w : p.warnings)
+        m_planSummary->setText(m_planSummary->text() + QLatin1Char('\n') + tr("Beyond 001: %1").arg(w));
 }
 
 void MillingPanel::loadFeature(const MilledFeature &feature)
