@@ -266,7 +266,7 @@ int runDeflect(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitProblems;
     std::optional<LoadedModel> model;
     if (parser.isSet(learned)) {
-        model = loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("deflect"), err);
+        model = loadLearnedModel(parser.value(store), *project, QStringLiteral("deflect"), err);
         if (!model)
             return kExitProblems;
     }

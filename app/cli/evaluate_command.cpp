@@ -49,8 +49,7 @@ struct CommandLine {
 int evaluateLearned(const QString &file, const Project &project, const QString &store, bool json, QTextStream &out,
                     QTextStream &err)
 {
-    const std::optional<LoadedModel> model =
-        loadLearnedModel(store, project.machineId, QStringLiteral("evaluate"), err);
+    const std::optional<LoadedModel> model = loadLearnedModel(store, project, QStringLiteral("evaluate"), err);
     if (!model)
         return kExitProblems;
     const QString provenance = model->provenance();

@@ -146,7 +146,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     std::shared_ptr<const LoadedModel> model;
     if (parser.isSet(learned)) {
         std::optional<LoadedModel> loaded =
-            loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("gcode"), err);
+            loadLearnedModel(parser.value(store), *project, QStringLiteral("gcode"), err);
         if (!loaded)
             return kExitProblems;
         model = std::make_shared<const LoadedModel>(std::move(*loaded));

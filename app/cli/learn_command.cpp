@@ -166,9 +166,10 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
     return kExitOk;
 }
 
-std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId, const QString &command,
+std::optional<LoadedModel> loadLearnedModel(const QString &store, const Project &project, const QString &command,
                                             QTextStream &err)
 {
+    const QString &machineId = project.machineId;
     const QString prefix = programName() + QLatin1Char(' ') + command + QStringLiteral(": ");
     const auto history = openMeasurementStore(store, prefix, err);
     if (!history)
@@ -182,6 +183,12 @@ std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString 
                           .arg(machineId)
                     : error)
             << '\n';
+    if (model) {
+        if (const QString mismatch = learnedPhysicsMismatch(project, *model); !mismatch.isEmpty()) {
+            err << prefix << mismatch << '\n';
+            return std::nullopt;
+        }
+    }
     return model;
 }
 

@@ -15,9 +15,10 @@ namespace tolturn {
 
 int runLearn(const QStringList &args, QTextStream &out, QTextStream &err);
 
-// The newest model learned of `machineId` in the store named `store` (empty: the default), for
-// the commands' --learned; empty after printing why on `err` (no store, no model, a damaged one).
-[[nodiscard]] std::optional<LoadedModel> loadLearnedModel(const QString &store, const QString &machineId,
+// The newest model learned of `project`'s machine in the store named `store` (empty: the default),
+// for the commands' --learned; empty after printing why on `err` (no store, no model, a damaged one,
+// one learned against another characterisation of the machine than the project's).
+[[nodiscard]] std::optional<LoadedModel> loadLearnedModel(const QString &store, const Project &project,
                                                           const QString &command, QTextStream &err);
 
 } // namespace tolturn

@@ -181,7 +181,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
                 << '\n';
             return kExitUsage;
         }
-        auto loaded = loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("optimize"), err);
+        auto loaded = loadLearnedModel(parser.value(store), *project, QStringLiteral("optimize"), err);
         if (!loaded)
             return kExitProblems;
         model = std::make_shared<const LoadedModel>(std::move(*loaded));

@@ -74,7 +74,7 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     ReportHeader header{QFileInfo(file).fileName(), parser.value(planner), nullptr};
     if (parser.isSet(learned)) {
-        auto model = loadLearnedModel(parser.value(store), project->machineId, QStringLiteral("report"), err);
+        auto model = loadLearnedModel(parser.value(store), *project, QStringLiteral("report"), err);
         if (!model)
             return kExitProblems;
         header.learned = std::make_shared<const LoadedModel>(std::move(*model));

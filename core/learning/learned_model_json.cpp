@@ -26,6 +26,8 @@ QJsonObject learnedResidualJson(const LearnedResidual &learned)
     if (learned.network) {
         json.insert(QStringLiteral("network"), rbfNetworkJson(*learned.network, QStringLiteral("mm")));
     }
+    if (learned.learnedAgainst)
+        json.insert(QStringLiteral("learned_against_characterisation"), *learned.learnedAgainst);
     return json;
 }
 
@@ -44,6 +46,10 @@ std::optional<LearnedResidual> learnedResidualFromJson(const QJsonObject &json, 
     }
     learned.geometric = {g.value(QStringLiteral("per_diameter")).toDouble(),
                          g.value(QStringLiteral("per_z")).toDouble(), g.value(QStringLiteral("offset_mm")).toDouble()};
+    if (const QJsonValue basis = json.value(QStringLiteral("learned_against_characterisation")); basis.isObject())
+        learned.learnedAgainst = basis.toObject();
+    else if (!basis.isUndefined())
+        return refuse(QStringLiteral("learned_against_characterisation"));
     if (!json.contains(QStringLiteral("network")))
         return learned;
     constexpr Eigen::Index kInputs = 8; // ResidualSample::inputs

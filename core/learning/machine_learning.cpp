@@ -12,6 +12,7 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <tuple>
 
 namespace tolturn {
 
@@ -23,19 +24,61 @@ struct MachineLearningText {
 
 } // namespace
 
-MachineLearning learnMachine(const std::vector<MeasuredPart> &parts, const DataLibrary &data,
+namespace {
+
+// The parts computed against the physics the newest of them was (physicsBasis): a residual is
+// what the physics missed, so parts against another characterisation of the machine (before a
+// test-bar fit, say) would mix two physics in one model. The others are left out, each said.
+std::vector<MeasuredPart> partsOfOnePhysics(const std::vector<MeasuredPart> &parts, QJsonObject &basis,
+                                            Diagnostics &warnings)
+{
+    std::vector<std::pair<const MeasuredPart *, QJsonObject>> read;
+    for (const MeasuredPart &part : parts) {
+        const ProjectParseResult r = parseProjectJson(part.projectJson);
+        read.emplace_back(&part, r.project ? physicsBasis(*r.project) : QJsonObject());
+    }
+    const auto newest = std::max_element(read.begin(), read.end(), [](const auto &a, const auto &b) {
+        return std::tie(a.first->measuredAt, a.first->id) < std::tie(b.first->measuredAt, b.first->id);
+    });
+    std::vector<MeasuredPart> kept;
+    if (newest == read.end())
+        return kept;
+    basis = newest->second;
+    for (const auto &[part, partBasis] : read) {
+        if (partBasis == basis) {
+            kept.push_back(*part);
+            continue;
+        }
+        warnings.push_back(makeWarning(QStringLiteral("parts[%1]").arg(part->id),
+                                       MachineLearningText::tr("part %1 is left out: its project was computed against "
+                                                               "another characterisation of the machine than the "
+                                                               "newest part %2, and a model learns what one physics "
+                                                               "misses")
+                                           .arg(part->id)
+                                           .arg(newest->first->id)));
+    }
+    return kept;
+}
+
+} // namespace
+
+MachineLearning learnMachine(const std::vector<MeasuredPart> &allParts, const DataLibrary &data,
                              const RbfTrainingOptions &options, const LearningControl &control,
                              const CurrentForceModel *forcesFromCurrents)
 {
     MachineLearning run;
-    run.parts = static_cast<int>(parts.size());
+    run.parts = static_cast<int>(allParts.size());
+    QJsonObject basis;
+    const std::vector<MeasuredPart> parts = partsOfOnePhysics(allParts, basis, run.warnings);
     const std::vector<ResidualSample> samples =
         residualSamples(parts, data, run.warnings, forcesFromCurrents, &run.partsWithCurrentForces);
     run.usablePoints = static_cast<int>(samples.size());
     QString error;
     run.learned = learnResidual(samples, options, &error);
-    if (run.learned)
+    if (run.learned) {
+        run.learned->learnedAgainst = basis;
         run.validation = leaveOnePartOut(samples, options, &error, control);
+    }
     if (!run.ok()) {
         run.cancelled = control.cancelled && control.cancelled();
         run.learned.reset();
@@ -163,6 +206,17 @@ RangeEvaluation evaluateWithLearned(const Project &project, const DataLibrary &d
     // The thermal drift is in what was learned (Li & Du's thermal inputs), measured, not taken as zero.
     r.thermalTakenAsZero = false;
     return r;
+}
+
+QString learnedPhysicsMismatch(const Project &project, const LoadedModel &model)
+{
+    if (!model.model.learnedAgainst || *model.model.learnedAgainst == physicsBasis(project))
+        return {};
+    return MachineLearningText::tr("%1 was learned against another characterisation of %2 than this project's (its "
+                                   "springs, supports or thermal drift differ): what it learned is what that physics "
+                                   "missed, not this one. Learn again from parts cut with this characterisation, or "
+                                   "predict without it")
+        .arg(model.provenance(), model.record.machineId);
 }
 
 QString learnedAssumptionText(const LoadedModel &model)

@@ -87,6 +87,12 @@ struct PartComparison {
 [[nodiscard]] RangeEvaluation evaluateWithLearned(const Project &project, const DataLibrary &data,
                                                   const LoadedModel &model, DeviationResult *physics = nullptr);
 
+// Why `model` cannot be added to the physics of `project`: it was learned against another
+// characterisation of the machine, so its residual is that physics' and would be counted against
+// this one (after a test-bar fit, say, the spindle would be counted twice). Empty when it can, or
+// when the model predates the record of its physics.
+[[nodiscard]] QString learnedPhysicsMismatch(const Project &project, const LoadedModel &model);
+
 // One line on what the prediction rests on, for the banner above the verdicts and the report.
 [[nodiscard]] QString learnedAssumptionText(const LoadedModel &model);
 

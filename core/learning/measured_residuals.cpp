@@ -259,6 +259,13 @@ std::vector<ResidualSample> residualSamples(const std::vector<MeasuredPart> &par
     return out;
 }
 
+QJsonObject physicsBasis(const Project &project)
+{
+    QJsonObject basis = projectJsonObject(project).value(QStringLiteral("characterisation")).toObject();
+    basis.remove(QStringLiteral("source"));
+    return basis;
+}
+
 double LearnedResidual::predict_mm(const ResidualSample &s) const
 {
     const double rest = network ? network->predict(s.predictionInputs) : 0.0;

@@ -9,6 +9,7 @@
 #include "core/tolerance/target_contour.h"
 
 #include <Eigen/Dense>
+#include <QJsonObject>
 
 #include <functional>
 #include <optional>
@@ -70,8 +71,16 @@ struct GeometricError {
 struct LearnedResidual {
     GeometricError geometric;
     std::optional<RbfNetwork> network; // absent when too few samples remain for one
+    // The physics it is a residual of: the machine's characterisation (physicsBasis) of the parts
+    // it was learned from. Absent in a model stored before TolTurn kept it.
+    std::optional<QJsonObject> learnedAgainst;
     [[nodiscard]] double predict_mm(const ResidualSample &s) const;
 };
+
+// What the physics of a project rests on besides the part and the cut: its machine's
+// characterisation (springs, supports, thermal drift) as in the project file, without its source
+// text. Two projects with the same basis have the same machine in the physics model.
+[[nodiscard]] QJsonObject physicsBasis(const Project &project);
 
 [[nodiscard]] std::optional<LearnedResidual> learnResidual(const std::vector<ResidualSample> &samples,
                                                            const RbfTrainingOptions &options, QString *error);

@@ -21,6 +21,10 @@ struct SetupPredictionText {
 SetupPrediction predictSetup(const Project &project, const DataLibrary &data, const LoadedModel *learned)
 {
     SetupPrediction p;
+    // A model of another physics is not added to this one; the banner says why.
+    const QString mismatch = learned ? learnedPhysicsMismatch(project, *learned) : QString();
+    if (!mismatch.isEmpty())
+        learned = nullptr;
     if (learned) {
         // One prediction, physics + learned, for the verdicts; the curves keep the physics'
         // contributions and add the learned total.
@@ -34,6 +38,8 @@ SetupPrediction predictSetup(const Project &project, const DataLibrary &data, co
         p.stiffEnd = p.range.stiff;
         p.assumption = machineAssumptionText(p.range, data);
     }
+    if (!mismatch.isEmpty())
+        p.assumption = SetupPredictionText::tr("%1. Without it: %2").arg(mismatch, p.assumption);
     addReclampingNotes(project, p.range, data);
     if (project.scope) // one set-up of several: which, and which end of the drawing it holds
         p.assumption.prepend(SetupPredictionText::tr("%1 (set-up %2 of %3, the %4 end held): ")

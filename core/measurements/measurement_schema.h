@@ -12,9 +12,9 @@ namespace tolturn::measurements {
 
 // Brings the database from its version to `target`, one step at a time, each in a transaction:
 //  1: measured_parts (one row a part, with its project snapshot) and measured_points;
-//  2: measured_parts.profile_sha256, the checksum of the snapshot's profile (learning takes the
-//     parts of one profile; a part whose profile no longer matches the project is told apart
-//     without parsing every snapshot), filled for the parts already stored; and an index on
+//  2: measured_parts.profile_sha256, the checksum of the snapshot's profile (a part whose profile
+//     no longer matches the project is told apart without parsing every snapshot), filled for
+//     the parts already stored; and an index on
 //     (machine_id, measured_at) for the listing of a machine's parts, newest first;
 //  3: learned_models, what `learn --save` keeps of a machine (the model as JSON, with the parts,
 //     points and cross-validation figures it came with).

@@ -9,6 +9,7 @@
 #include "core/learning/learned_model_json.h"
 #include "core/learning/machine_learning.h"
 #include "core/learning/measured_residuals.h"
+#include "core/learning/setup_prediction.h"
 #include "core/planning/planning_problem.h"
 #include "core/project/operations.h"
 #include "core/tolerance/target_contour.h"
@@ -332,6 +333,61 @@ private Q_SLOTS:
         }
         QCOMPARE(bores, 1);
         QCOMPARE(plot.measured.front().z_mm, 10.0);
+    }
+
+    // A model is the residual of one physics. Parts cut before a test-bar fit (no characterisation)
+    // and after it (measured springs) are two physics: the newest part's is learned, the others
+    // are left out and said. The model keeps that characterisation (through JSON too), and is
+    // refused for a project of another one (the spindle would be counted twice), while the same
+    // springs with another source text are the same physics.
+    void aModelIsLearnedAgainstOnePhysics()
+    {
+        std::vector<MeasuredPart> parts = measuredParts(8, Truth{}, 31);
+        MachineCharacterisation fitted;
+        fitted.source = QStringLiteral("test bar, 2026-11-27");
+        fitted.pivotDistance_mm = 220.0;
+        fitted.spindleRadial = SpindleSprings{1.5e5, 3e9, 1e9};
+        for (std::size_t i = 0; i < parts.size(); ++i) {
+            parts[i].measuredAt = QDateTime(QDate(2026, 11, 1), QTime(8, 0), Qt::UTC).addDays(static_cast<int>(i));
+            if (i < 6) {
+                Project p = *parseProjectJson(parts[i].projectJson).project;
+                p.characterisation = fitted;
+                parts[i].projectJson = serializeProjectJson(p);
+            }
+        }
+        // The two newest parts (days 7 and 8) have no characterisation: theirs is learned.
+        const MachineLearning olderFitted = learnMachine(parts, DataLibrary::builtIn(), {});
+        QVERIFY2(olderFitted.ok(), qPrintable(olderFitted.error));
+        QCOMPARE(olderFitted.validation->parts, 2);
+        QCOMPARE(*olderFitted.learned->learnedAgainst, QJsonObject());
+        int leftOut = 0;
+        for (const Diagnostic &w : olderFitted.warnings)
+            leftOut += w.message.contains(QStringLiteral("another characterisation")) ? 1 : 0;
+        QCOMPARE(leftOut, 6);
+
+        std::reverse(parts.begin(), parts.end()); // ids and times with them: now the fitted are newest
+        for (std::size_t i = 0; i < parts.size(); ++i)
+            parts[i].measuredAt = QDateTime(QDate(2026, 11, 1), QTime(8, 0), Qt::UTC).addDays(static_cast<int>(i));
+        const MachineLearning run = learnMachine(parts, DataLibrary::builtIn(), {});
+        QVERIFY2(run.ok(), qPrintable(run.error));
+        QCOMPARE(run.validation->parts, 6);
+        Project fittedProject = *parseProjectJson(parts.back().projectJson).project;
+        QCOMPARE(*run.learned->learnedAgainst, physicsBasis(fittedProject));
+        QVERIFY(!run.learned->learnedAgainst->contains(QStringLiteral("source")));
+
+        QString error;
+        const auto back = learnedResidualFromJson(learnedResidualJson(*run.learned), &error);
+        QVERIFY2(back && back->learnedAgainst == run.learned->learnedAgainst, qPrintable(error));
+        LoadedModel loaded{learnedModelRecord(QStringLiteral("haas-st-20"), run), *back};
+        QVERIFY(learnedPhysicsMismatch(fittedProject, loaded).isEmpty());
+        fittedProject.characterisation.source = QStringLiteral("the same springs, written down again");
+        QVERIFY(learnedPhysicsMismatch(fittedProject, loaded).isEmpty());
+        fittedProject.characterisation = {};
+        QVERIFY(learnedPhysicsMismatch(fittedProject, loaded).contains(QStringLiteral("another characterisation")));
+        // predictSetup leaves it out and says so where the verdicts are shown.
+        const SetupPrediction p = predictSetup(fittedProject, DataLibrary::builtIn(), &loaded);
+        QVERIFY(!p.learned);
+        QVERIFY2(p.assumption.contains(QStringLiteral("another characterisation")), qPrintable(p.assumption));
     }
 
     // What is learned survives the store: the same predictions after JSON and back; a damaged

@@ -285,7 +285,7 @@ void PlanningPanel::showProjectOutputs()
     m_updatingControls = false;
     if (!m_report && !isRunning())
         m_plan->setText(notRunText());
-    m_adaptive->setProject(operationProject(), m_learned);
+    m_adaptive->setProject(operationProject(), learnedFor(operationProject()));
     showFinishing();
 }
 
@@ -342,7 +342,7 @@ void PlanningPanel::optimise()
     m_runOperation = m_operation;
     PlanningJobOptions options;
     options.plane = static_cast<WindowPlane>(m_plane->currentData().toInt());
-    options.learned = m_learned;
+    options.learned = learnedFor(operationProject());
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
     m_progress->setValue(0);
@@ -599,13 +599,20 @@ void PlanningPanel::applySplit()
         QMessageBox::warning(this, tr("Make These Operations"), refused.front().toString());
 }
 
+// The learned model where it was learned against this project's physics, else none (the banner
+// above the verdicts says why, predictSetup).
+std::shared_ptr<const LoadedModel> PlanningPanel::learnedFor(const Project &project) const
+{
+    return m_learned && learnedPhysicsMismatch(project, *m_learned).isEmpty() ? m_learned : nullptr;
+}
+
 void PlanningPanel::setLearnedModel(std::shared_ptr<const LoadedModel> model)
 {
     if (model == m_learned)
         return;
     m_learned = std::move(model);
     if (m_document.hasProject() && !m_document.hasProblems())
-        m_adaptive->setProject(operationProject(), m_learned);
+        m_adaptive->setProject(operationProject(), learnedFor(operationProject()));
     showFinishing();
 }
 
@@ -623,8 +630,8 @@ void PlanningPanel::showFinishing()
     }
     const Project project = operationProject();
     DeviationResult deviation = computeDeviation(project, DataLibrary::builtIn(), {});
-    if (m_learned)
-        deviation = withLearnedResidual(project, std::move(deviation), m_learned->model, m_learned->provenance());
+    if (const auto learned = learnedFor(project))
+        deviation = withLearnedResidual(project, std::move(deviation), learned->model, learned->provenance());
     // A scheduled program is compensated from the scheduled pass's deviation.
     if (!options.finishingFeeds_mm_rev.isEmpty())
         deviation = scheduledDeviation(m_adaptive->schedule(), deviation);

@@ -103,6 +103,7 @@ private:
     void applySplit();
     // The project of the operation planned: what the optimiser, the program and the markers use.
     [[nodiscard]] Project operationProject() const;
+    [[nodiscard]] std::shared_ptr<const LoadedModel> learnedFor(const Project &project) const;
 
     ProjectDocument &m_document;
     int m_operation = 0;

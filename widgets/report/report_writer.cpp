@@ -581,8 +581,11 @@ std::shared_ptr<const ReportData> computeReport(const Project &project, const Re
     const DataLibrary &data = DataLibrary::builtIn();
     const LoadedModel *model = header.learned.get();
     // With what was learned: one prediction, physics + learned, for the verdicts, the compensation
-    // and the plan as well.
+    // and the plan as well. A model of another physics is left out (the first page says why).
     d->prediction = predictSetup(project, data, model);
+    const std::shared_ptr<const LoadedModel> learned =
+        model && learnedPhysicsMismatch(project, *model).isEmpty() ? header.learned : nullptr;
+    model = learned.get();
     d->finishing =
         model ? finishingOutputFor(project, data, d->prediction.range.compliant) : finishingOutput(project, data);
     if (!progress.report(0.2))
@@ -590,11 +593,11 @@ std::shared_ptr<const ReportData> computeReport(const Project &project, const Re
     if (project.planning.cuttingSpeed_m_min) {
         PlanningJobOptions o;
         o.windowSize = 64;
-        o.learned = header.learned;
+        o.learned = learned;
         o.progress = Progress(progress, 0.2, 0.8);
         d->plan = runPlanningJob(project, data, o);
     }
-    d->schedule = scheduledFinishing(project, header.learned);
+    d->schedule = scheduledFinishing(project, learned);
     if (!progress.report(0.85))
         return nullptr;
     std::optional<std::vector<MilledFeatureEvaluation>> milled =
