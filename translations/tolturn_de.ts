@@ -54,6 +54,10 @@
         <source>pass %1: the adaptive run was stopped after %2 h of cutting short of the end of the pass: the set force asks for a feed the pass hardly advances at</source>
         <translation>Schnitt %1: der adaptive Lauf wurde nach %2 h Schnittzeit vor dem Ende des Schnitts abgebrochen: die Sollkraft verlangt einen Vorschub, bei dem der Schnitt kaum vorankommt</translation>
     </message>
+    <message>
+        <source>pass %1 cuts up to %2 mm deep where the plan gives %3 mm: the passes before it leave more. The set force is the planned depth&apos;s, so the loop lowers the feed there; plan the passes to the stock</source>
+        <translation>Schnitt %1 schneidet bis %2 mm tief, wo der Plan %3 mm vorsieht: die Schnitte davor lassen mehr stehen. Die Sollkraft ist die der geplanten Schnitttiefe, also senkt die Regelung dort den Vorschub; planen Sie die Schnitte passend zum Rohteil</translation>
+    </message>
 </context>
 <context>
     <name>AtomicFile</name>
@@ -131,6 +135,18 @@
     <message>
         <source>axial depth: %1 mm is not within the ball, 0 to %2 mm at lead %3° and tilt %4° (001 models the ball only)</source>
         <translation>Axiale Zustellung: %1 mm liegt nicht innerhalb der Kugel, 0 bis %2 mm bei Anstellwinkel %3° und Kippwinkel %4° (001 modelliert nur die Kugel)</translation>
+    </message>
+    <message>
+        <source>the tip of the ball, where the cutting speed is zero, is in the cut (lead %1°, tilt %2°): the force model takes no account of the rubbing there</source>
+        <translation>die Spitze der Kugel, wo die Schnittgeschwindigkeit null ist, ist im Schnitt (Anstellwinkel %1°, Kippwinkel %2°): das Kraftmodell berücksichtigt das Reiben dort nicht</translation>
+    </message>
+    <message>
+        <source>the lead is negative (%1°): the feed has a part along the tool axis and the cut drills, where 001 §5 finds its force model below the measured forces</source>
+        <translation>der Anstellwinkel ist negativ (%1°): der Vorschub hat einen Anteil entlang der Werkzeugachse und der Schnitt bohrt, wo 001 §5 sein Kraftmodell unter den gemessenen Kräften findet</translation>
+    </message>
+    <message>
+        <source>the lateral force peaks at %1 N, beyond the 1000 N for which 001 calibrated the holder springs it gives (001 §4): the deflection there is an extrapolation; give your holder&apos;s springs</source>
+        <translation>die Querkraft erreicht %1 N, mehr als die 1000 N, für die 001 die angegebenen Federn der Aufnahme kalibriert hat (001 §4): die Verformung dort ist extrapoliert; geben Sie die Federn Ihrer Aufnahme an</translation>
     </message>
 </context>
 <context>
@@ -2071,6 +2087,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>%n verwendbare Punkte</numerusform>
         </translation>
     </message>
+    <message>
+        <source>part %1 is left out: its project was computed against another characterisation of the machine than the newest part %2, and a model learns what one physics misses</source>
+        <translation>Teil %1 bleibt außen vor: sein Projekt wurde mit einer anderen Charakterisierung der Maschine berechnet als das neueste Teil %2, und ein Modell lernt, was eine Physik verfehlt</translation>
+    </message>
+    <message>
+        <source>%1 was learned against another characterisation of %2 than this project&apos;s (its springs, supports or thermal drift differ): what it learned is what that physics missed, not this one. Learn again from parts cut with this characterisation, or predict without it</source>
+        <translation>%1 wurde mit einer anderen Charakterisierung von %2 gelernt als der dieses Projekts (ihre Federn, Auflager oder Wärmedrift unterscheiden sich): was es gelernt hat, ist, was jene Physik verfehlte, nicht diese. Lernen Sie neu aus Teilen, die mit dieser Charakterisierung gefertigt wurden, oder sagen Sie ohne es voraus</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredParts</name>
@@ -2961,6 +2985,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--save plans at evaluate&apos;s resolution (200 slices, 360 angles): leave out --slices and --angles</source>
         <translation>--save plant mit der Auflösung von evaluate (200 Scheiben, 360 Winkel): --slices und --angles weglassen</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
     </message>
 </context>
 <context>
@@ -4788,6 +4816,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 (set-up %2 of %3, the %4 end held): </source>
         <translation>%1 (Aufspannung %2 von %3, Ende %4 gespannt): </translation>
+    </message>
+    <message>
+        <source>%1. Without it: %2</source>
+        <translation>%1. Ohne es: %2</translation>
     </message>
 </context>
 <context>
@@ -7944,6 +7976,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>A profile with datums needs its datums (A, B).</source>
         <translation>Ein Profil mit Bezügen braucht seine Bezüge (A, B).</translation>
+    </message>
+    <message>
+        <source>Beyond 001:</source>
+        <translation>Außerhalb von 001:</translation>
+    </message>
+    <message>
+        <source>Beyond 001: %1</source>
+        <translation>Außerhalb von 001: %1</translation>
     </message>
 </context>
 <context>

@@ -54,6 +54,10 @@
         <source>pass %1: the adaptive run was stopped after %2 h of cutting short of the end of the pass: the set force asks for a feed the pass hardly advances at</source>
         <translation>pasada %1: la simulación adaptativa se detuvo tras %2 h de corte antes del final de la pasada: la fuerza de consigna exige un avance con el que la pasada apenas progresa</translation>
     </message>
+    <message>
+        <source>pass %1 cuts up to %2 mm deep where the plan gives %3 mm: the passes before it leave more. The set force is the planned depth&apos;s, so the loop lowers the feed there; plan the passes to the stock</source>
+        <translation>la pasada %1 corta hasta %2 mm de profundidad donde el plan da %3 mm: las pasadas anteriores dejan más. La fuerza de consigna es la de la profundidad planificada, así que el lazo baja el avance allí; planifique las pasadas según la pieza en bruto</translation>
+    </message>
 </context>
 <context>
     <name>AtomicFile</name>
@@ -131,6 +135,18 @@
     <message>
         <source>axial depth: %1 mm is not within the ball, 0 to %2 mm at lead %3° and tilt %4° (001 models the ball only)</source>
         <translation>profundidad axial: %1 mm no está dentro de la bola, de 0 a %2 mm con lead %3° y tilt %4° (001 modela solo la bola)</translation>
+    </message>
+    <message>
+        <source>the tip of the ball, where the cutting speed is zero, is in the cut (lead %1°, tilt %2°): the force model takes no account of the rubbing there</source>
+        <translation>la punta de la bola, donde la velocidad de corte es cero, está en el corte (lead %1°, tilt %2°): el modelo de fuerzas no tiene en cuenta el rozamiento allí</translation>
+    </message>
+    <message>
+        <source>the lead is negative (%1°): the feed has a part along the tool axis and the cut drills, where 001 §5 finds its force model below the measured forces</source>
+        <translation>el ángulo lead es negativo (%1°): el avance tiene una parte a lo largo del eje de la herramienta y el corte taladra, donde 001 §5 encuentra su modelo de fuerzas por debajo de las fuerzas medidas</translation>
+    </message>
+    <message>
+        <source>the lateral force peaks at %1 N, beyond the 1000 N for which 001 calibrated the holder springs it gives (001 §4): the deflection there is an extrapolation; give your holder&apos;s springs</source>
+        <translation>la fuerza lateral llega a %1 N, más que los 1000 N para los que 001 calibró los muelles del portaherramientas que da (001 §4): la deformación allí es una extrapolación; indique los muelles de su portaherramientas</translation>
     </message>
 </context>
 <context>
@@ -2071,6 +2087,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>%n puntos utilizables</numerusform>
         </translation>
     </message>
+    <message>
+        <source>part %1 is left out: its project was computed against another characterisation of the machine than the newest part %2, and a model learns what one physics misses</source>
+        <translation>la pieza %1 queda fuera: su proyecto se calculó con otra caracterización de la máquina que la pieza más reciente %2, y un modelo aprende lo que falta a una sola física</translation>
+    </message>
+    <message>
+        <source>%1 was learned against another characterisation of %2 than this project&apos;s (its springs, supports or thermal drift differ): what it learned is what that physics missed, not this one. Learn again from parts cut with this characterisation, or predict without it</source>
+        <translation>%1 se aprendió con otra caracterización de %2 distinta de la de este proyecto (sus muelles, apoyos o deriva térmica difieren): lo que aprendió es lo que faltaba a aquella física, no a esta. Aprenda de nuevo con piezas cortadas con esta caracterización, o prediga sin él</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredParts</name>
@@ -2961,6 +2985,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--save plans at evaluate&apos;s resolution (200 slices, 360 angles): leave out --slices and --angles</source>
         <translation>--save planifica con la resolución de evaluate (200 rodajas, 360 ángulos): omita --slices y --angles</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>aviso: %1</translation>
     </message>
 </context>
 <context>
@@ -4788,6 +4816,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 (set-up %2 of %3, the %4 end held): </source>
         <translation>%1 (montaje %2 de %3, extremo %4 sujetado): </translation>
+    </message>
+    <message>
+        <source>%1. Without it: %2</source>
+        <translation>%1. Sin él: %2</translation>
     </message>
 </context>
 <context>
@@ -7944,6 +7976,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>A profile with datums needs its datums (A, B).</source>
         <translation>Un perfil con referencias necesita sus referencias (A, B).</translation>
+    </message>
+    <message>
+        <source>Beyond 001:</source>
+        <translation>Fuera de 001:</translation>
+    </message>
+    <message>
+        <source>Beyond 001: %1</source>
+        <translation>Fuera de 001: %1</translation>
     </message>
 </context>
 <context>
