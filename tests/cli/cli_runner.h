@@ -38,6 +38,13 @@ inline Run runCli(const QStringList &args)
     return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
 }
 
+// What `path` holds; empty when it cannot be read (compare with a file's bytes before a command).
+[[nodiscard]] inline QByteArray fileBytes(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
 inline QString example(const char *name)
 {
     return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);

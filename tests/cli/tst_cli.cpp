@@ -463,18 +463,14 @@ private Q_SLOTS:
         }
         const QString falling = dir.filePath(QStringLiteral("falling.csv"));
         QVERIFY(writeFile(falling, fallingTangential.toUtf8()));
-        QFile fitted(target);
-        QVERIFY(fitted.open(QIODevice::ReadOnly));
-        const QByteArray fittedBytes = fitted.readAll();
-        fitted.close();
+        const QByteArray fittedBytes = fileBytes(target);
+        QVERIFY(!fittedBytes.isEmpty());
         const Run failedFit = runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--pivot"),
                                       QStringLiteral("220"), QStringLiteral("--into"), target, bar, falling});
         QCOMPARE(failedFit.exitCode, 1);
         QVERIFY2(failedFit.err.contains(QStringLiteral("tangential fit gives k")), qPrintable(failedFit.err));
         QVERIFY(!failedFit.err.contains(QStringLiteral("wrote")));
-        QVERIFY(fitted.open(QIODevice::ReadOnly));
-        QCOMPARE(fitted.readAll(), fittedBytes);
-        fitted.close();
+        QCOMPARE(fileBytes(target), fittedBytes);
 
         // A radial fit at another Lc removes the tangential springs fitted at 220 mm, and says so.
         const QString radialCsv = dir.filePath(QStringLiteral("radial.csv"));
@@ -512,19 +508,15 @@ private Q_SLOTS:
         project.remove(QStringLiteral("characterisation"));
         const QString other = dir.filePath(QStringLiteral("other.tolturn"));
         QVERIFY(writeFile(other, QJsonDocument(project).toJson()));
-        QFile before(other);
-        QVERIFY(before.open(QIODevice::ReadOnly));
-        const QByteArray unchanged = before.readAll();
-        before.close();
+        const QByteArray unchanged = fileBytes(other);
+        QVERIFY(!unchanged.isEmpty());
         const Run otherMachine = runCli({QStringLiteral("calibrate-stiffness"), QStringLiteral("--pivot"),
                                          QStringLiteral("220"), QStringLiteral("--into"), other, bar, measured});
         QCOMPARE(otherMachine.exitCode, 1);
         QVERIFY2(otherMachine.err.contains(QStringLiteral("is planned for machine \"okuma-ls\", but the test bar was "
                                                           "cut on \"haas-st-20\"")),
                  qPrintable(otherMachine.err));
-        QFile after(other);
-        QVERIFY(after.open(QIODevice::ReadOnly));
-        QCOMPARE(after.readAll(), unchanged);
+        QCOMPARE(fileBytes(other), unchanged);
     }
 
     // iso286 and fit against published values: 50 H7 = +25/0 µm, IT7 = 25 µm; 50 g6 = -9/-25 µm
