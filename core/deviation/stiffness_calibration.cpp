@@ -279,6 +279,14 @@ StiffnessCalibration calibrateSpindleChuck(const Project &testBar, const DataLib
     const double moment = -0.5 * cal.forces.axial_N * cal.diameter_mm; // the feed force at the contact radius
     cal.radial =
         fitDirection(radial, cal.forces.radial_N, moment, pivotDistance_mm, SpindleCalibration::tr("radial"), out);
+    // Three positions fit a z² + b z + c exactly: the residual is zero whatever the scatter, and
+    // each spring then rests on the measurement's own error (0.1 µm of it moved k1 by half).
+    if (distinctPositions(radial, [](const std::pair<double, double> &p) { return p.first; }) == 3)
+        out.push_back(
+            makeWarning(QStringLiteral("measurements"),
+                        SpindleCalibration::tr("three positions z fit a z² + b z + c exactly: the RMS "
+                                               "residual of 0 says nothing of the measurement's scatter, "
+                                               "which goes into the springs whole; measure at four or more")));
     fitTangential(tangential, cal);
     // A fit that failed in either direction is no fit: nothing half-measured reaches a project.
     if (hasErrors(out)) {

@@ -12,6 +12,7 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace tolturn {
@@ -45,6 +46,19 @@ std::vector<MeasuredPart> partsOfOnePhysics(const std::vector<MeasuredPart> &par
         return kept;
     basis = newest->second;
     for (const auto &[part, partBasis] : read) {
+        // The same part stored twice (the same snapshot, time and points) is one part: as two, its
+        // twin would count as a part not learned from in the leave-one-part-out figures.
+        const auto twin = std::find_if(kept.begin(), kept.end(), [part = part](const MeasuredPart &k) {
+            return k.projectJson == part->projectJson && k.measuredAt == part->measuredAt && k.points == part->points;
+        });
+        if (twin != kept.end()) {
+            warnings.push_back(makeWarning(QStringLiteral("parts[%1]").arg(part->id),
+                                           MachineLearningText::tr("part %1 is left out: it is part %2 stored again "
+                                                                   "(the same project, time and points)")
+                                               .arg(part->id)
+                                               .arg(twin->id)));
+            continue;
+        }
         if (partBasis == basis) {
             kept.push_back(*part);
             continue;
@@ -60,6 +74,46 @@ std::vector<MeasuredPart> partsOfOnePhysics(const std::vector<MeasuredPart> &par
     return kept;
 }
 
+// The geometric plane a·φ + b·z + c is determined only where the points spread in both the
+// diameter and z independently: points on one diameter, at one z, or along a line where the two
+// move together (a cone) leave the split between the terms to the solver, and the plane then
+// extrapolates along the undetermined direction off the measured line.
+void warnWhereThePlaneIsUndetermined(const std::vector<ResidualSample> &samples, Diagnostics &warnings)
+{
+    if (samples.size() < 3)
+        return;
+    double meanD = 0.0, meanZ = 0.0;
+    for (const ResidualSample &s : samples) {
+        meanD += s.diameter_mm;
+        meanZ += s.z_mm;
+    }
+    meanD /= static_cast<double>(samples.size());
+    meanZ /= static_cast<double>(samples.size());
+    double dd = 0.0, zz = 0.0, dz = 0.0;
+    for (const ResidualSample &s : samples) {
+        dd += (s.diameter_mm - meanD) * (s.diameter_mm - meanD);
+        zz += (s.z_mm - meanZ) * (s.z_mm - meanZ);
+        dz += (s.diameter_mm - meanD) * (s.z_mm - meanZ);
+    }
+    constexpr double kNoSpread_mm2 = 1e-12;
+    constexpr double kCollinear = 0.99; // |correlation| of diameter and z
+    QString why;
+    if (dd < kNoSpread_mm2 || zz < kNoSpread_mm2)
+        why =
+            MachineLearningText::tr("the measured points lie on one %1")
+                .arg(dd < kNoSpread_mm2 ? MachineLearningText::tr("diameter") : MachineLearningText::tr("position z"));
+    else if (std::abs(dz) / std::sqrt(dd * zz) > kCollinear)
+        why = MachineLearningText::tr("the measured points' diameters and positions z move together (correlation %1)")
+                  .arg(dz / std::sqrt(dd * zz), 0, 'f', 3);
+    if (!why.isEmpty())
+        warnings.push_back(makeWarning(
+            QStringLiteral("points"),
+            MachineLearningText::tr("%1: the geometric error's split between diameter and z is not determined, and "
+                                    "what was learned holds along the measured points only; measure features of other "
+                                    "diameters at other z")
+                .arg(why)));
+}
+
 } // namespace
 
 MachineLearning learnMachine(const std::vector<MeasuredPart> &allParts, const DataLibrary &data,
@@ -73,6 +127,7 @@ MachineLearning learnMachine(const std::vector<MeasuredPart> &allParts, const Da
     const std::vector<ResidualSample> samples =
         residualSamples(parts, data, run.warnings, forcesFromCurrents, &run.partsWithCurrentForces);
     run.usablePoints = static_cast<int>(samples.size());
+    warnWhereThePlaneIsUndetermined(samples, run.warnings);
     QString error;
     run.learned = learnResidual(samples, options, &error);
     if (run.learned) {

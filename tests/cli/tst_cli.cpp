@@ -16,6 +16,7 @@
 #include <numbers>
 
 using tolturn::test::example;
+using tolturn::test::fileBytes;
 using tolturn::test::Run;
 using tolturn::test::runCli;
 using tolturn::test::writeFile;

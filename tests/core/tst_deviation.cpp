@@ -275,6 +275,15 @@ private Q_SLOTS:
             QCOMPARE(fit.points, 10);
         }
 
+        // Ten positions are redundant, three are not: the fit passes through them exactly, and
+        // says that its zero residual tells nothing of the scatter.
+        QVERIFY(!dump(cal.diagnostics).contains(QStringLiteral("three positions z fit")));
+        const StiffnessCalibration exact = calibrateSpindleChuck(
+            p, DataLibrary::builtIn(), {points[0], points[4], points[9]}, Lc, CuttingForces{Ft, Fa, Fr});
+        QVERIFY(exact.radial && exact.radial->rmsResidual_um < 1e-9);
+        QVERIFY2(dump(exact.diagnostics).contains(QStringLiteral("three positions z fit a z² + b z + c exactly")),
+                 qPrintable(dump(exact.diagnostics)));
+
         // Tangential deviations at two positions only: the radial springs alone, and a warning
         // that says why the tangential ones are not fitted.
         std::vector<TestBarPoint> twoTangential = points;

@@ -390,6 +390,46 @@ private Q_SLOTS:
         QVERIFY2(p.assumption.contains(QStringLiteral("another characterisation")), qPrintable(p.assumption));
     }
 
+    // A part stored twice is one part: its twin would otherwise be "a part not learned from" and
+    // predicted perfectly in the leave-one-part-out figures.
+    void aPartStoredTwiceIsOnePart()
+    {
+        std::vector<MeasuredPart> parts = measuredParts(4, Truth{}, 41);
+        MeasuredPart twin = parts.front();
+        twin.id = 99;
+        parts.push_back(twin);
+        const MachineLearning run = learnMachine(parts, DataLibrary::builtIn(), {});
+        QVERIFY2(run.ok(), qPrintable(run.error));
+        QCOMPARE(run.validation->parts, 4);
+        QVERIFY(std::any_of(run.warnings.begin(), run.warnings.end(), [](const Diagnostic &w) {
+            return w.message == QStringLiteral("part 99 is left out: it is part 1 stored again (the same project, "
+                                               "time and points)");
+        }));
+    }
+
+    // Points on the cone O5 only (Ø50 at z 80 to Ø40 at z 90): diameter and z move together
+    // (correlation −1), so the plane's split between them is not determined: said. Points on the
+    // three journals at several z each are not so.
+    void aPlaneAlongOneLineIsSaid()
+    {
+        const Points cone{{QStringLiteral("O5"), 81.0},
+                          {QStringLiteral("O5"), 83.5},
+                          {QStringLiteral("O5"), 86.0},
+                          {QStringLiteral("O5"), 88.5}};
+        const auto said = [](const MachineLearning &run) {
+            return std::any_of(run.warnings.begin(), run.warnings.end(), [](const Diagnostic &w) {
+                return w.message.contains(QStringLiteral("split between diameter and z is not determined"));
+            });
+        };
+        const MachineLearning onTheCone = learnMachine(
+            measuredParts(3, Truth{}, 51, "stepped-shaft-chuck.tolturn", cone), DataLibrary::builtIn(), {});
+        QVERIFY(said(onTheCone));
+        QVERIFY(std::any_of(onTheCone.warnings.begin(), onTheCone.warnings.end(), [](const Diagnostic &w) {
+            return w.message.contains(QStringLiteral("(correlation -1.000)"));
+        }));
+        QVERIFY(!said(learnMachine(measuredParts(3, Truth{}, 51), DataLibrary::builtIn(), {})));
+    }
+
     // What is learned survives the store: the same predictions after JSON and back; a damaged
     // model is refused by field.
     // The optimiser's tolerance constraints with what was learned: a learned taper of 0.1 µm of
