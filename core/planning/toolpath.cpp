@@ -782,7 +782,8 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
                              .arg(supportName(project.clamping.method));
     const double radialStock = 0.5 * project.part.stockDiameter_mm -
                                0.5 * std::max(path.finishing.smallestDiameter_mm, 0.0) - finishing.depthOfCut_mm;
-    if (roughing.empty() && !path.finishing.moves.empty() && radialStock > 1e-3)
+    const double turned = path.finishing.smallestDiameter_mm; // none where the pass only faces
+    if (roughing.empty() && std::isfinite(turned) && turned > 0.0 && radialStock > 1e-3)
         path.warnings << Toolpaths::tr("No roughing pass is planned: the finishing pass would cut up to %1 mm more "
                                        "than its depth of cut.")
                              .arg(mm(radialStock));

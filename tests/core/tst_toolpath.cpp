@@ -944,6 +944,13 @@ private Q_SLOTS:
         QVERIFY(none.path.finishing.moves.empty());
         QVERIFY2(none.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("The finishing pass cuts nothing")),
                  qPrintable(none.warnings().join(QLatin1Char('\n'))));
+        // The end face alone (gripped 148 mm, no roughing): no turned diameter, but the spindle is
+        // still limited, at the speed of the face's largest diameter, Ø28 at 250 m/min:
+        // 1000 · 250 / (π · 28) = 2842.1, so 2843 rpm (without it G96 runs up to the axis).
+        const TurningProgram facing = programFor(148.0, ControlDialect::FanucHaas, true);
+        QVERIFY(facing.path.roughing.empty() && !facing.path.finishing.moves.empty());
+        QVERIFY2(facing.text.contains(QStringLiteral("G50 S2843")), qPrintable(facing.text));
+        QVERIFY(!facing.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("No roughing pass is planned")));
         // Without roughing passes nothing at all is cut: no speed to limit.
         const TurningProgram nothing = programFor(148.5, ControlDialect::FanucHaas, true);
         QVERIFY(nothing.path.roughing.empty() && nothing.path.finishing.moves.empty());
