@@ -43,26 +43,31 @@ PathElement line(ProfilePoint from, ProfilePoint to, const QString &featureId)
     return e;
 }
 
-// A feature moved by a compensation meets its neighbour across a gap of micrometres. A line (a
-// face, a chamfer, a cone) takes it up by moving its end to meet the other, the neighbour's rather
-// than the moved feature's; only between two arcs is a short line programmed. A step of a few µm
-// beside a corner is a move no control can follow with the nose radius compensated: LinuxCNC
-// refuses it ("Straight feed in concave corner cannot be reached by the tool without gouging").
-void joinMovedFeature(std::vector<PathElement> &out, PathElement &next, bool nextMoved)
+// A feature moved by a compensation meets its neighbour across a gap of micrometres. The neighbour
+// takes it up where that changes nothing the verdicts judge: a face (a radial gap leaves it the same
+// plane), or a line no tolerance is on (a chamfer, say) by moving its end, a gap small against its
+// length. A step of a few µm beside a corner is a move no control can follow with the nose radius
+// compensated (LinuxCNC: "Straight feed in concave corner cannot be reached by the tool without
+// gouging"), so it is programmed only where neither holds: beside a round or a toleranced feature.
+// The moved feature itself is never moved back.
+void joinMovedFeature(std::vector<PathElement> &out, PathElement &next, bool nextMoved, const CompensationPlan *plan)
 {
     PathElement &previous = out.back();
-    constexpr double kLargestGap_mm = 0.05; // a compensation moves a feature by micrometres
-    const bool small =
-        std::hypot(previous.to.z_mm - next.from.z_mm, previous.to.r_mm - next.from.r_mm) < kLargestGap_mm;
-    const auto takeUp = [&](PathElement &e, bool atEnd) { (atEnd ? e.to : e.from) = atEnd ? next.from : previous.to; };
     PathElement &neighbour = nextMoved ? previous : next;
-    PathElement &moved = nextMoved ? next : previous;
-    if (small && !neighbour.arc)
-        takeUp(neighbour, nextMoved);
-    else if (small && !moved.arc)
-        takeUp(moved, !nextMoved);
-    else
+    const double gapZ = next.from.z_mm - previous.to.z_mm;
+    const double gap = std::hypot(gapZ, next.from.r_mm - previous.to.r_mm);
+    const double length = std::hypot(neighbour.to.z_mm - neighbour.from.z_mm, neighbour.to.r_mm - neighbour.from.r_mm);
+    const bool face = !neighbour.arc && std::abs(neighbour.from.z_mm - neighbour.to.z_mm) < kTiny;
+    const FeatureCompensation *c = plan ? plan->find(neighbour.featureId) : nullptr;
+    const bool toleranced = c != nullptr && !c->tolerances.isEmpty();
+    const bool radialGap = std::abs(gapZ) < kTiny;
+    const bool takesItUp = !neighbour.arc && gap < 0.5 * length && ((face && radialGap) || (!face && !toleranced));
+    if (!takesItUp)
         out.push_back(line(previous.to, next.from, next.featureId));
+    else if (nextMoved)
+        previous.to = next.from;
+    else
+        next.from = previous.to;
 }
 
 ToolMove move(MoveKind kind, ProfilePoint to, const QString &featureId = {})
@@ -324,7 +329,7 @@ std::vector<PathElement> compensatedChain(const Contour &target, const Compensat
         }
         for (PathElement p : pieces) {
             if (!out.empty() && std::hypot(out.back().to.z_mm - p.from.z_mm, out.back().to.r_mm - p.from.r_mm) > kTiny)
-                joinMovedFeature(out, p, c != nullptr && c->action != CompensationAction::None);
+                joinMovedFeature(out, p, c != nullptr && c->action != CompensationAction::None, plan);
             out.push_back(p);
         }
     }

@@ -12,6 +12,7 @@
 #include "core/part/profile_geometry.h"
 #include "core/part/undercuts.h"
 #include "core/planning/boring_toolpath.h"
+#include "core/planning/compensation.h"
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
 #include "core/planning/planning_report.h"
@@ -879,6 +880,55 @@ private Q_SLOTS:
         QVERIFY(pieces > 0);
         QVERIFY2(worst <= largest + 0.5e-3,
                  qPrintable(QStringLiteral("%1 mm off the round, stations %2 mm").arg(worst).arg(largest)));
+    }
+
+    // Where a moved feature meets its neighbour: the stepped shaft's cone O5 (Ø50 at z 80 to Ø40 at
+    // z 90) corrected by +3 µm of radius between the toleranced O4 (h6) and O6 (g6), and O6 itself
+    // moved by an offset of -10 µm on the diameter next to the R2 round O7. A toleranced cylinder
+    // is not tilted to take up a gap (a short line joins), and a moved feature is not moved back
+    // beside a round: O4 and O6 stay at their programmed radius all along.
+    void movedFeaturesLeaveTolerancedNeighboursAsProgrammed()
+    {
+        const Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        const Contour target = targetContour(p, ContourSide::Outer);
+        const auto radiusOf = [&target](const char *id) {
+            for (const Segment &seg : target.segments)
+                if (seg.id == QLatin1String(id))
+                    return seg.from.r_mm;
+            return -1.0;
+        };
+        CompensationPlan plan;
+        FeatureCompensation cone;
+        cone.featureId = QStringLiteral("O5");
+        cone.tolerances << QStringLiteral("T3");
+        cone.action = CompensationAction::ProfileCorrection;
+        cone.correctedPath = {{80.0, radiusOf("O4") + 0.003}, {85.0, 22.5 + 0.003}, {90.0, radiusOf("O6") + 0.003}};
+        FeatureCompensation seat;
+        seat.featureId = QStringLiteral("O4");
+        seat.tolerances << QStringLiteral("T1");
+        FeatureCompensation hub;
+        hub.featureId = QStringLiteral("O6");
+        hub.tolerances << QStringLiteral("T4");
+        hub.action = CompensationAction::ConstantOffset;
+        hub.offset_um = -10.0;
+        plan.features = {cone, seat, hub};
+        const std::vector<PathElement> chain = toolpath_detail::compensatedChain(target, &plan);
+        int seen = 0;
+        for (const PathElement &e : chain) {
+            const double expected = e.featureId == QLatin1String("O4")   ? radiusOf("O4")
+                                    : e.featureId == QLatin1String("O6") ? radiusOf("O6") - 0.005
+                                                                         : -1.0;
+            if (expected < 0.0 || std::abs(e.from.z_mm - e.to.z_mm) < 1e-9)
+                continue; // not O4 or O6, or a joining step
+            ++seen;
+            QVERIFY2(std::abs(e.from.r_mm - expected) < 1e-12 && std::abs(e.to.r_mm - expected) < 1e-12,
+                     qPrintable(QStringLiteral("%1: r %2 to %3, not %4")
+                                    .arg(e.featureId)
+                                    .arg(e.from.r_mm, 0, 'f', 6)
+                                    .arg(e.to.r_mm, 0, 'f', 6)
+                                    .arg(expected, 0, 'f', 6)));
+        }
+        QCOMPARE(seen, 2);
     }
 
     // The stepped shaft without its finishing pass: eight roughing passes. The last is the contour
