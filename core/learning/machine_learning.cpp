@@ -210,6 +210,13 @@ PartComparison comparePart(const MeasuredPart &part, const DataLibrary &data, co
     }
     // Each set-up as its predictions have it, drawn in the drawing's frame (z from its left end).
     const Project &drawn = *read.project;
+    // A model of another physics than this part's is not added to it (learnedPhysicsMismatch).
+    if (model) {
+        if (const QString mismatch = learnedPhysicsMismatch(drawn, *model); !mismatch.isEmpty()) {
+            out.warnings.push_back(makeWarning(QStringLiteral("model"), mismatch));
+            model = nullptr;
+        }
+    }
     const double length = drawn.part.length_mm();
     for (int op = 0; op < operationCount(drawn); ++op) {
         const Project view = operationView(drawn, op);

@@ -225,8 +225,9 @@ std::optional<Toolpath> boringToolpath(const Project &project, const CuttingPass
                                        "finishing pass is programmed.")
                              .arg(mm(2.0 * f.rHole));
     else if (f.rHole >= smallestBore - 1e-6)
-        path.warnings << Toolpaths::tr("The pilot hole Ø%1 mm is as wide as the bore Ø%2 mm or wider: nothing is left "
-                                       "to bore, and the bore stays the pilot hole's size, not the drawing's.")
+        path.warnings << Toolpaths::tr("The pilot hole Ø%1 mm is as wide as the bore's narrowest Ø%2 mm or wider: "
+                                       "nothing is left to bore there, and it stays the pilot hole's size, not the "
+                                       "drawing's.")
                              .arg(mm(2.0 * f.rHole), mm(2.0 * smallestBore));
     else if (f.rHole > smallestBore - allowance + 1e-6)
         path.warnings << Toolpaths::tr("The pilot hole Ø%1 mm is wider than the bore less its finishing allowance "

@@ -781,7 +781,10 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
                                     "centred before the part is set up.");
     path.notes << Toolpaths::tr("The tool stops %1 mm short of the %2; the stock there is not turned.")
                       .arg(mm(options.clearance_mm), supportName(project.clamping.method));
-    if (path.finishing.moves.empty())
+    const bool turnsOuterFeatures = std::any_of(
+        project.part.outer.segments.begin(), project.part.outer.segments.end(),
+        [&project](const Segment &seg) { return !project.scope || project.scope->cutFeatures.contains(seg.id); });
+    if (path.finishing.moves.empty() && turnsOuterFeatures) // a set-up that only bores turns nothing outside
         path.warnings << Toolpaths::tr("The finishing pass cuts nothing: every outer feature of this set-up lies "
                                        "within the tool's stop of the %1. Grip the part shorter.")
                              .arg(supportName(project.clamping.method));

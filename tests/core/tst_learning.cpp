@@ -384,6 +384,13 @@ private Q_SLOTS:
         QVERIFY(learnedPhysicsMismatch(fittedProject, loaded).isEmpty());
         fittedProject.characterisation = {};
         QVERIFY(learnedPhysicsMismatch(fittedProject, loaded).contains(QStringLiteral("another characterisation")));
+        // The dock's plot of a part cut before the fit draws the physics without it, and says why.
+        const PartComparison before = comparePart(parts.front(), DataLibrary::builtIn(), &loaded);
+        QVERIFY(!before.features.empty() && before.features.front().learned_mm.empty());
+        QVERIFY(std::any_of(before.warnings.begin(), before.warnings.end(), [](const Diagnostic &w) {
+            return w.message.contains(QStringLiteral("another characterisation"));
+        }));
+        QVERIFY(!comparePart(parts.back(), DataLibrary::builtIn(), &loaded).features.front().learned_mm.empty());
         // predictSetup leaves it out and says so where the verdicts are shown.
         const SetupPrediction p = predictSetup(fittedProject, DataLibrary::builtIn(), &loaded);
         QVERIFY(!p.learned);

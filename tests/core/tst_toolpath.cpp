@@ -1001,6 +1001,16 @@ private Q_SLOTS:
         QVERIFY(facing.path.roughing.empty() && !facing.path.finishing.moves.empty());
         QVERIFY2(facing.text.contains(QStringLiteral("G50 S2843")), qPrintable(facing.text));
         QVERIFY(!facing.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("No roughing pass is planned")));
+        // A set-up that only bores (the valve body's OP 20 given its bores alone) turns nothing
+        // outside by design: no "cuts nothing" warning for its outer pass.
+        Project valve = example(QStringLiteral("valve-body-two-bores.tolturn"));
+        valve.furtherOperations.front().features = {QStringLiteral("I1"), QStringLiteral("I2")};
+        const Project boresOnly = operationView(valve, 1);
+        const DeviationResult vd = computeDeviation(boresOnly, DataLibrary::builtIn(), {});
+        QVERIFY2(vd.inputs, qPrintable(dump(vd.diagnostics)));
+        const TurningProgram bores = turningProgram(boresOnly, DataLibrary::builtIn(), *vd.inputs, {});
+        QVERIFY(bores.path.finishing.moves.empty());
+        QVERIFY(!bores.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("The finishing pass cuts nothing")));
         // Without roughing passes nothing at all is cut: no speed to limit.
         const TurningProgram nothing = programFor(148.5, ControlDialect::FanucHaas, true);
         QVERIFY(nothing.path.roughing.empty() && nothing.path.finishing.moves.empty());
