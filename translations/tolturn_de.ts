@@ -2095,6 +2095,30 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 was learned against another characterisation of %2 than this project&apos;s (its springs, supports or thermal drift differ): what it learned is what that physics missed, not this one. Learn again from parts cut with this characterisation, or predict without it</source>
         <translation>%1 wurde mit einer anderen Charakterisierung von %2 gelernt als der dieses Projekts (ihre Federn, Auflager oder Wärmedrift unterscheiden sich): was es gelernt hat, ist, was jene Physik verfehlte, nicht diese. Lernen Sie neu aus Teilen, die mit dieser Charakterisierung gefertigt wurden, oder sagen Sie ohne es voraus</translation>
     </message>
+    <message>
+        <source>part %1 is left out: it is part %2 stored again (the same project, time and points)</source>
+        <translation>Teil %1 bleibt außen vor: es ist Teil %2, noch einmal gespeichert (dasselbe Projekt, dieselbe Zeit, dieselben Punkte)</translation>
+    </message>
+    <message>
+        <source>the measured points lie on one %1</source>
+        <translation>die gemessenen Punkte liegen auf einem einzigen Wert: %1</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>Durchmesser</translation>
+    </message>
+    <message>
+        <source>position z</source>
+        <translation>Position z</translation>
+    </message>
+    <message>
+        <source>the measured points&apos; diameters and positions z move together (correlation %1)</source>
+        <translation>Durchmesser und Positionen z der gemessenen Punkte ändern sich gemeinsam (Korrelation %1)</translation>
+    </message>
+    <message>
+        <source>%1: the geometric error&apos;s split between diameter and z is not determined, and what was learned holds along the measured points only; measure features of other diameters at other z</source>
+        <translation>%1: die Aufteilung des geometrischen Fehlers auf Durchmesser und z ist nicht bestimmt, und das Gelernte gilt nur entlang der gemessenen Punkte; messen Sie Formelemente anderer Durchmesser an anderen z</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredParts</name>
@@ -5090,6 +5114,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the tangential springs were fitted for Lc = %1 mm and do not hold at Lc = %2 mm: removed; measure the tangential deviation to fit them again</source>
         <translation>die tangentialen Federn wurden für Lc = %1 mm angepasst und gelten nicht bei Lc = %2 mm: entfernt; messen Sie die tangentiale Abweichung, um sie neu anzupassen</translation>
     </message>
+    <message>
+        <source>three positions z fit a z² + b z + c exactly: the RMS residual of 0 says nothing of the measurement&apos;s scatter, which goes into the springs whole; measure at four or more</source>
+        <translation>drei Positionen z werden von a z² + b z + c exakt getroffen: der RMS-Rest von 0 sagt nichts über die Streuung der Messung, die ganz in die Federn eingeht; messen Sie an vier oder mehr</translation>
+    </message>
 </context>
 <context>
     <name>StepExport</name>
@@ -5632,16 +5660,16 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Der Bohrungsgrund %1 ist ein Kegel oder Radius bis zur Achse: Das Programm schlichtet ihn bis zur Achse, ohne die Grenzen von Vorbohrung und Stange wie bei einem ebenen Grund. Prüfen Sie, dass die Stange dort die gegenüberliegende Wand nicht berührt.</translation>
     </message>
     <message>
-        <source>The pilot hole Ø%1 mm is as wide as the bore Ø%2 mm or wider: nothing is left to bore, and the bore stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
-        <translation>Die Vorbohrung Ø%1 mm ist so weit wie die Bohrung Ø%2 mm oder weiter: es bleibt nichts auszudrehen, und die Bohrung behält das Maß der Vorbohrung, nicht das der Zeichnung.</translation>
-    </message>
-    <message>
         <source>%1 is tighter than the nose radius %2 mm, and its neighbours give no corner to program instead: a control&apos;s compensation refuses it. Use an insert with a smaller nose, or --nose tip-path.</source>
         <translation>%1 ist enger als der Eckenradius %2 mm, und seine Nachbarn ergeben keine Ecke, die stattdessen programmiert werden kann: die Radiuskorrektur einer Steuerung lehnt es ab. Verwenden Sie eine Wendeschneidplatte mit kleinerem Eckenradius oder --nose tip-path.</translation>
     </message>
     <message>
         <source>The finishing pass cuts nothing: every outer feature of this set-up lies within the tool&apos;s stop of the %1. Grip the part shorter.</source>
         <translation>Der Schlichtschnitt schneidet nichts: jedes Außenformelement dieser Aufspannung liegt dort, wo das Werkzeug vor %1 anhält. Spannen Sie das Teil kürzer.</translation>
+    </message>
+    <message>
+        <source>The pilot hole Ø%1 mm is as wide as the bore&apos;s narrowest Ø%2 mm or wider: nothing is left to bore there, and it stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
+        <translation>Die Vorbohrung Ø%1 mm ist so weit wie die engste Stelle der Bohrung, Ø%2 mm, oder weiter: dort bleibt nichts auszudrehen, und sie behält das Maß der Vorbohrung, nicht das der Zeichnung.</translation>
     </message>
 </context>
 <context>

@@ -2095,6 +2095,30 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 was learned against another characterisation of %2 than this project&apos;s (its springs, supports or thermal drift differ): what it learned is what that physics missed, not this one. Learn again from parts cut with this characterisation, or predict without it</source>
         <translation>%1 se aprendió con otra caracterización de %2 distinta de la de este proyecto (sus muelles, apoyos o deriva térmica difieren): lo que aprendió es lo que faltaba a aquella física, no a esta. Aprenda de nuevo con piezas cortadas con esta caracterización, o prediga sin él</translation>
     </message>
+    <message>
+        <source>part %1 is left out: it is part %2 stored again (the same project, time and points)</source>
+        <translation>la pieza %1 queda fuera: es la pieza %2 guardada otra vez (el mismo proyecto, hora y puntos)</translation>
+    </message>
+    <message>
+        <source>the measured points lie on one %1</source>
+        <translation>los puntos medidos están en un solo valor de %1</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>diámetro</translation>
+    </message>
+    <message>
+        <source>position z</source>
+        <translation>posición z</translation>
+    </message>
+    <message>
+        <source>the measured points&apos; diameters and positions z move together (correlation %1)</source>
+        <translation>los diámetros y las posiciones z de los puntos medidos cambian juntos (correlación %1)</translation>
+    </message>
+    <message>
+        <source>%1: the geometric error&apos;s split between diameter and z is not determined, and what was learned holds along the measured points only; measure features of other diameters at other z</source>
+        <translation>%1: el reparto del error geométrico entre diámetro y z no está determinado, y lo aprendido vale solo a lo largo de los puntos medidos; mida elementos de otros diámetros en otras z</translation>
+    </message>
 </context>
 <context>
     <name>MeasuredParts</name>
@@ -5090,6 +5114,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the tangential springs were fitted for Lc = %1 mm and do not hold at Lc = %2 mm: removed; measure the tangential deviation to fit them again</source>
         <translation>los muelles tangenciales se ajustaron para Lc = %1 mm y no valen para Lc = %2 mm: eliminados; mida la desviación tangencial para ajustarlos de nuevo</translation>
     </message>
+    <message>
+        <source>three positions z fit a z² + b z + c exactly: the RMS residual of 0 says nothing of the measurement&apos;s scatter, which goes into the springs whole; measure at four or more</source>
+        <translation>tres posiciones z se ajustan exactamente a a z² + b z + c: el residuo RMS de 0 no dice nada de la dispersión de la medición, que pasa entera a los muelles; mida en cuatro o más</translation>
+    </message>
 </context>
 <context>
     <name>StepExport</name>
@@ -5632,16 +5660,16 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>El fondo del agujero, %1, es un cono o un radio hasta el eje: el programa lo acaba hasta el eje, sin los límites del agujero previo y de la barra de un fondo plano. Compruebe que la barra no toca la pared opuesta ahí.</translation>
     </message>
     <message>
-        <source>The pilot hole Ø%1 mm is as wide as the bore Ø%2 mm or wider: nothing is left to bore, and the bore stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
-        <translation>El agujero previo de Ø%1 mm es tan ancho como el agujero Ø%2 mm o más: no queda nada que mandrinar, y el agujero se queda con la medida del agujero previo, no la del plano.</translation>
-    </message>
-    <message>
         <source>%1 is tighter than the nose radius %2 mm, and its neighbours give no corner to program instead: a control&apos;s compensation refuses it. Use an insert with a smaller nose, or --nose tip-path.</source>
         <translation>%1 es más cerrado que el radio de punta %2 mm, y sus vecinos no dan una esquina que programar en su lugar: la compensación de un control lo rechaza. Use una plaquita con radio de punta menor, o --nose tip-path.</translation>
     </message>
     <message>
         <source>The finishing pass cuts nothing: every outer feature of this set-up lies within the tool&apos;s stop of the %1. Grip the part shorter.</source>
         <translation>La pasada de acabado no corta nada: todos los elementos exteriores de este amarre quedan donde la herramienta se detiene antes de %1. Sujete la pieza más corta.</translation>
+    </message>
+    <message>
+        <source>The pilot hole Ø%1 mm is as wide as the bore&apos;s narrowest Ø%2 mm or wider: nothing is left to bore there, and it stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
+        <translation>El agujero previo de Ø%1 mm es tan ancho como el tramo más estrecho del agujero, Ø%2 mm, o más: allí no queda nada que mandrinar, y se queda con la medida del agujero previo, no la del plano.</translation>
     </message>
 </context>
 <context>
