@@ -314,7 +314,8 @@ std::vector<PathElement> compensatedChain(const Contour &target, const Compensat
         } else if (c && c->action == CompensationAction::ProfileCorrection && c->correctedPath.size() >= 2) {
             for (std::size_t j = c->correctedPath.size() - 1; j > 0; --j)
                 pieces.push_back(line(c->correctedPath[j], c->correctedPath[j - 1], e.featureId));
-            // The stations end at the chuck face; a bore runs on inside the jaws, as drawn there.
+            // The stations end at the chuck face; a bore runs on inside the jaws, from the last corrected
+            // radius to the drawn one at its end.
             const double zEnd = c->correctedPath.front().z_mm;
             if (!e.arc && std::abs(e.to.z_mm - zEnd) > kTiny && (e.to.z_mm - zEnd) * (e.to.z_mm - e.from.z_mm) > 0.0)
                 pieces.push_back(line(c->correctedPath.front(), e.to, e.featureId)); // from the corrected radius

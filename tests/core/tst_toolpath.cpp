@@ -627,7 +627,7 @@ private Q_SLOTS:
                  qPrintable(scrap->warnings.join(QLatin1Char('\n'))));
 
         // A through bore corrected station by station: the stations end at the chuck face (z 25), the
-        // bore runs on to z 0 inside the jaws, where it is bored as drawn.
+        // bore runs on to z 0 inside the jaws, from the last corrected radius to the drawn one.
         FeatureCompensation corrected;
         corrected.featureId = QStringLiteral("I1");
         corrected.side = ContourSide::Inner;
