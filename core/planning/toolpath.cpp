@@ -289,6 +289,7 @@ double correctionAt(const std::vector<std::pair<double, double>> &byZ, double z)
 std::vector<PathElement> correctedArc(const PathElement &arc, const std::vector<ProfilePoint> &stations)
 {
     std::vector<std::pair<double, double>> byZ;
+    byZ.reserve(stations.size());
     for (const ProfilePoint &st : stations)
         byZ.emplace_back(st.z_mm, st.r_mm - pointAtZ(arc, st.z_mm).r_mm);
     std::sort(byZ.begin(), byZ.end());
