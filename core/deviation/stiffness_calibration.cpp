@@ -127,6 +127,12 @@ std::size_t distinctPositions(const Range &points, Position position)
     return distinct.size();
 }
 
+// The same for (x, deviation) pairs of one direction, as the fits take them.
+std::size_t distinctPositions(const std::vector<std::pair<double, double>> &xy)
+{
+    return distinctPositions(xy, [](const std::pair<double, double> &p) { return p.first; });
+}
+
 bool checkSetUp(const Project &bar, const std::vector<TestBarPoint> &points, double pivot_mm, Diagnostics &out)
 {
     if (bar.clamping.method != ClampingMethod::Chuck)
@@ -172,8 +178,7 @@ TestBarReadResult testBarPoints(const std::optional<std::vector<MeasurementRow>>
 void fitTangential(const std::vector<std::pair<double, double>> &tangential, StiffnessCalibration &cal)
 {
     Diagnostics &out = cal.diagnostics;
-    cal.tangentialPositions =
-        static_cast<int>(distinctPositions(tangential, [](const std::pair<double, double> &p) { return p.first; }));
+    cal.tangentialPositions = static_cast<int>(distinctPositions(tangential));
     if (cal.tangentialPositions == 0)
         return;
     if (cal.tangentialPositions < 3) {
@@ -281,7 +286,7 @@ StiffnessCalibration calibrateSpindleChuck(const Project &testBar, const DataLib
         fitDirection(radial, cal.forces.radial_N, moment, pivotDistance_mm, SpindleCalibration::tr("radial"), out);
     // Three positions fit a z² + b z + c exactly: the residual is zero whatever the scatter, and
     // each spring then rests on the measurement's own error (0.1 µm of it moved k1 by half).
-    if (distinctPositions(radial, [](const std::pair<double, double> &p) { return p.first; }) == 3)
+    if (distinctPositions(radial) == 3)
         out.push_back(
             makeWarning(QStringLiteral("measurements"),
                         SpindleCalibration::tr("three positions z fit a z² + b z + c exactly: the RMS "
