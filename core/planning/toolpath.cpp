@@ -356,7 +356,9 @@ ProfilePoint pointAtZ(const PathElement &e, double zCut)
 // The chain up to where it first passes z = zMin going left. `zMin` is a limit of the nose centre;
 // a face that faces the free end (on an outer contour r rises along it going left, in a bore it
 // falls) is cut with the centre `faceReach_mm` (r_e) right of it, so it is kept while it lies no
-// further left than that.
+// further left than that. So is a concave fillet tighter than the nose in front of such a face: the
+// nose, touching the face, does not touch the fillet (it is programmed as the corner, see
+// sharpenTightConcaveArcs), so it does not stop the nose short of the face.
 std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, double zMin, double faceReach_mm,
                                        bool bore)
 {
@@ -365,10 +367,18 @@ std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, do
         const bool facesTheFreeEnd = face && (bore ? e.to.r_mm < e.from.r_mm : e.to.r_mm > e.from.r_mm);
         return facesTheFreeEnd && e.from.z_mm + faceReach_mm >= zMin - kTiny;
     };
+    const auto tightConcaveFillet = [&](const PathElement &e) { // concave: turning away from the material
+        return e.arc && e.radius_mm <= faceReach_mm + kTiny && e.counterClockwise == bore;
+    };
+    const auto leadsIntoReachableFace = [&](std::size_t j) {
+        while (j < chain.size() && tightConcaveFillet(chain[j]))
+            ++j;
+        return j < chain.size() && reachableFace(chain[j]);
+    };
     std::vector<PathElement> out;
     for (std::size_t i = 0; i < chain.size(); ++i) {
         PathElement e = chain[i];
-        if (reachableFace(e)) {
+        if (reachableFace(e) || (tightConcaveFillet(e) && leadsIntoReachableFace(i + 1))) {
             out.push_back(e);
             continue;
         }
@@ -376,8 +386,7 @@ std::vector<PathElement> clippedAtLeft(const std::vector<PathElement> &chain, do
             break;
         // An element that runs into such a face is cut to its corner: the nose, touching both,
         // stays r_e right of the face.
-        const bool intoReachableFace = i + 1 < chain.size() && reachableFace(chain[i + 1]);
-        if (e.to.z_mm < zMin && !intoReachableFace) {
+        if (e.to.z_mm < zMin && !leadsIntoReachableFace(i + 1)) {
             e.to = pointAtZ(e, zMin);
             out.push_back(e);
             break;
@@ -624,15 +633,29 @@ std::vector<PathElement> clippedAtBoundary(const std::vector<PathElement> &chain
     return out;
 }
 
+// Whether the finishing contour reaches the left end of segment `s`: clippedAtLeft keeps a face the
+// nose reaches, and a tight fillet in front of it, though they lie left of the nose centre's stop.
+bool turnedToItsLeftEnd(const std::vector<PathElement> &contour, const Segment &s)
+{
+    // More than a compensation moves a face (micrometres), less than a stop that leaves stock.
+    constexpr double kOnLeftEnd_mm = 0.01;
+    const double left = std::min(s.from.z_mm, s.to.z_mm);
+    return std::any_of(contour.begin(), contour.end(), [&s, left](const PathElement &e) {
+        return e.featureId == s.id && std::min(e.from.z_mm, e.to.z_mm) <= left + kOnLeftEnd_mm;
+    });
+}
+
 // Features outside the jaws (or the driver) that reach closer to them than the tool goes.
-void warnWhereTheJawsKeepTheToolOff(const Project &project, double zReached_mm, double clearance_mm,
-                                    QStringList &warnings)
+void warnWhereTheJawsKeepTheToolOff(const Project &project, const std::vector<PathElement> &finishingContour,
+                                    double zReached_mm, double clearance_mm, QStringList &warnings)
 {
     const double support = leftSupport_mm(project);
     QStringList features;
     for (const Segment &s : project.part.outer.segments) {
         if (project.scope && !project.scope->cutFeatures.contains(s.id))
             continue; // another operation turns it
+        if (turnedToItsLeftEnd(finishingContour, s))
+            continue;
         const double zMin = std::min(s.from.z_mm, s.to.z_mm);
         const double zMax = std::max(s.from.z_mm, s.to.z_mm);
         if (zMax > support + kTiny && zMin < zReached_mm - 1e-6)
@@ -771,7 +794,7 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
     else
         path.warnings << Toolpaths::tr("The trailing edge angle of the tool is not known (holder entering angle and "
                                        "insert shape): falling contours are not checked.");
-    warnWhereTheJawsKeepTheToolOff(project, leftSupport_mm(project) + options.clearance_mm + noseRadius_mm,
+    warnWhereTheJawsKeepTheToolOff(project, g.contour, leftSupport_mm(project) + options.clearance_mm + noseRadius_mm,
                                    options.clearance_mm, path.warnings);
     warnAtUndercuts(project, path.warnings);
     if (const auto boundary = operationBoundary_mm(project))

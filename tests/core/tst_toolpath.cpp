@@ -980,6 +980,9 @@ private Q_SLOTS:
         };
         const TurningProgram near = programFor(32.5);
         QVERIFY(cuts(near, QStringLiteral("O3")));
+        // The jaws warning names the clamping diameter, not the shoulder it now faces.
+        QVERIFY2(near.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("O2 reaches within 2.800 mm")),
+                 qPrintable(near.warnings().join(QLatin1Char('\n'))));
         Lathe lathe;
         setUpLathe(lathe, 0.8);
         const QString canonical = runInterpreter(lathe, near.text);
@@ -1016,6 +1019,64 @@ private Q_SLOTS:
         QVERIFY(nothing.path.roughing.empty() && nothing.path.finishing.moves.empty());
         QVERIFY2(!nothing.text.contains(QStringLiteral("G50 S0")), qPrintable(nothing.text));
         QVERIFY(!none.warnings().join(QLatin1Char(' ')).contains(QStringLiteral("No roughing pass is planned")));
+    }
+
+    // A concave R0.4 fillet (tighter than the nose, r_e 0.8) between the shoulder O3 (face at z 35)
+    // and the bearing seat O4 (r 25, now from z 35.4). Gripped 32.9 mm, the nose centre stops at
+    // 32.9 + 2 + 0.8 = 35.7 mm; touching the shoulder it is at 35 + 0.8 = 35.8 mm, so the shoulder is
+    // faced, although the seat ends at 35.4 mm, left of the stop. The fillet is programmed as the
+    // corner (35, 25); the tool's leftmost point is the face, 35 mm, right of the jaws' 34.9 mm.
+    // The jaws warning names the clamping diameter O2 only: O3 and the fillet are cut to their
+    // left ends.
+    void shoulderBehindATightFilletIsFacedWhereTheNoseReachesIt()
+    {
+        Project p = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        p.clamping.clampedLength_mm = 32.9;
+        std::vector<Segment> &outer = p.part.outer.segments;
+        QCOMPARE(outer[2].id, QStringLiteral("O3"));
+        outer[2].to.r_mm = 25.4;
+        outer[3].from.z_mm = 35.4;
+        Segment fillet;
+        fillet.id = QStringLiteral("O12");
+        fillet.kind = SegmentKind::Radius;
+        fillet.from = {35.0, 25.4};
+        fillet.to = {35.4, 25.0};
+        fillet.arcRadius_mm = 0.4;
+        fillet.arcDirection = ArcDirection::CounterClockwise;
+        outer.insert(outer.begin() + 3, fillet);
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY2(d.inputs, qPrintable(dump(d.diagnostics)));
+        QCOMPARE(d.inputs->noseRadius_mm, 0.8);
+        GCodeOptions o;
+        o.dialect = ControlDialect::LinuxCnc;
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+        const auto cuts = [&program](const QString &feature) {
+            return std::any_of(program.path.finishing.moves.begin(), program.path.finishing.moves.end(),
+                               [&feature](const ToolMove &m) { return m.featureId == feature; });
+        };
+        QVERIFY(cuts(QStringLiteral("O3")));
+        // Z0 at the right end face (z 150), X on diameter: the seat, Ø50 h6 at the middle of its zone
+        // (IT6 over 30–50 mm is 16 µm: 50 − 0.008 = 49.992), runs to the corner at z 35, and the
+        // shoulder is faced from there.
+        const qsizetype corner = program.text.indexOf(QStringLiteral("X49.992 Z-115.000"));
+        QVERIFY2(corner > 0, qPrintable(program.text.right(600)));
+        QVERIFY2(
+            program.text.mid(corner).section(QLatin1Char('\n'), 1, 1).contains(QStringLiteral("X56.000 Z-115.000")),
+            qPrintable(program.text.mid(corner, 200)));
+        const QStringList warnings = program.warnings();
+        const auto jaws = std::find_if(warnings.begin(), warnings.end(), [](const QString &w) {
+            return w.contains(QStringLiteral("of the chuck face, where the tool does not go"));
+        });
+        QVERIFY2(jaws != warnings.end() && jaws->startsWith(QStringLiteral("O2 reaches within 2.800 mm")),
+                 qPrintable(warnings.join(QLatin1Char('\n'))));
+        Lathe lathe;
+        setUpLathe(lathe, d.inputs->noseRadius_mm);
+        const QString canonical = runInterpreter(lathe, program.text);
+        QVERIFY2(!canonical.startsWith(QStringLiteral("ERROR")), qPrintable(canonical));
+        for (const CanonicalPass &pass : readCanonical(canonical, 150.0))
+            for (const PathElement &m : pass.moves)
+                for (const ProfilePoint &tip : sampled(m, 0.05))
+                    QVERIFY2(tip.z_mm >= 34.9 - 1e-6, qPrintable(QString::number(tip.z_mm)));
     }
 
     void linuxCncReproducesTheProfile_data()
