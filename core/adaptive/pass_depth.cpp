@@ -78,6 +78,14 @@ std::vector<PassDepthProfile> passDepthProfiles(const Project &project, double l
             finishingIndex = static_cast<int>(i);
         }
     }
+    // A plan without a finishing pass is programmed with its last pass along the contour, the passes
+    // before it leaving it its depth (gcode.cpp, turningProgram): so it is taken here.
+    if (!finishing && !roughing.empty()) {
+        finishing = roughing.back();
+        finishingIndex = roughingIndex.back();
+        roughing.pop_back();
+        roughingIndex.pop_back();
+    }
     const double allowance = finishing ? finishing->depthOfCut_mm : 0.0;
     std::vector<double> surface(z.size(), 0.5 * part.stockDiameter_mm); // S_0
     std::vector<PassDepthProfile> out;

@@ -31,7 +31,8 @@ struct PassDepthProfile {
     [[nodiscard]] double nextCut_mm(double z, double air_mm) const;
 };
 
-// One profile per pass of the project's plan (roughing passes in order, then the finishing pass),
+// One profile per pass of the project's plan (roughing passes in order, then the finishing pass; a
+// plan without one has its last pass cut along the contour, as the program cuts it),
 // sampled every `step_mm` from the right end face to `leftEnd_mm` (where the tool stops short of
 // the jaws or the driver).
 [[nodiscard]] std::vector<PassDepthProfile> passDepthProfiles(const Project &project, double leftEnd_mm,

@@ -196,6 +196,27 @@ private Q_SLOTS:
         QCOMPARE(passes.front().z_mm.back(), 5.0);
     }
 
+    // The same plan without its finishing pass: the program cuts the last roughing pass (3 mm)
+    // along the contour, and the passes before it leave it its 3 mm (gcode.cpp). Left of the
+    // shoulder (r 20): levels max(22, 23) and max(19, 23), so 2 and 0, then 3 to the contour; right
+    // of it (r 15): 22 and 19, so 3 and 3, then 4.
+    void withoutAFinishingPassTheLastPassCutsTheContour()
+    {
+        Project p = steppedShaft();
+        QCOMPARE(p.passes.back().kind, PassKind::Finishing);
+        p.passes.pop_back();
+        const std::vector<PassDepthProfile> passes = passDepthProfiles(p, 5.0, 0.5);
+        QCOMPARE(passes.size(), std::size_t{3});
+        const std::vector<double> left{2.0, 0.0, 3.0};
+        const std::vector<double> right{3.0, 3.0, 4.0};
+        for (std::size_t k = 0; k < passes.size(); ++k) {
+            QCOMPARE(passes[k].passIndex, static_cast<int>(k));
+            QVERIFY2(std::abs(passes[k].depthAt(25.0) - left[k]) < 1e-9, qPrintable(QString::number(k)));
+            QVERIFY2(std::abs(passes[k].depthAt(75.0) - right[k]) < 1e-9, qPrintable(QString::number(k)));
+        }
+        QVERIFY(std::abs(passes.back().cutDiameterAt(25.0) - 40.0) < 1e-9);
+    }
+
     // The H7 bushing from Ø65 stock: its roughing pass (1.5 mm) leaves r 32.5 − 1.5 = 31, and the
     // finishing pass, planned at 0.5 mm, cuts 1.0 mm down to the Ø60 body: the default set force
     // is the planned depth's, so the loop would halve the feed there; said. From the Ø64 stock the
