@@ -5,6 +5,7 @@
 #include "app/cli/command_line.h"
 #include "app/cli/learn_command.h"
 #include "app/cli/milled_feature_output.h"
+#include "core/common/diagnostic.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -66,6 +67,9 @@ int evaluateLearned(const QString &file, const Project &project, const QString &
         QJsonArray list;
         for (const ToleranceEvaluation &e : verdicts)
             list.append(evaluationJson(e));
+        QJsonArray diagnostics; // where the plan lies outside what was measured, say
+        for (const Diagnostic &d : deviation.diagnostics)
+            diagnostics.append(diagnosticJson(d));
         return printJson(
             QJsonObject{{QStringLiteral("file"), file},
                         {QStringLiteral("learned"),
@@ -75,6 +79,7 @@ int evaluateLearned(const QString &file, const Project &project, const QString &
                                      {QStringLiteral("physics_rms_um"), 1000.0 * model->record.physicsRms_mm},
                                      {QStringLiteral("learned_rms_um"), 1000.0 * model->record.learnedRms_mm}}},
                         {QStringLiteral("notes"), QJsonArray::fromStringList(deviation.inputs->notes)},
+                        {QStringLiteral("diagnostics"), diagnostics},
                         {QStringLiteral("tolerances"), list}},
             out, err, QStringLiteral("evaluate"));
     }

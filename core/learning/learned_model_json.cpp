@@ -4,8 +4,11 @@
 #include "core/learning/rbf_json.h"
 
 #include <QCoreApplication>
+#include <QJsonArray>
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 namespace tolturn {
 
@@ -14,6 +17,39 @@ namespace {
 struct LearnedModelJson {
     Q_DECLARE_TR_FUNCTIONS(LearnedModelJson)
 };
+
+// The keys of LearnedDomain in the model's "learned_from" object, each a [min, max] pair.
+constexpr std::array<std::pair<const char *, LearnedDomain::Span LearnedDomain::*>, 4> kDomainKeys{{
+    {"spindle_speed_rpm", &LearnedDomain::spindleSpeed_rpm},
+    {"feed_mm_rev", &LearnedDomain::feed_mm_rev},
+    {"diameter_mm", &LearnedDomain::diameter_mm},
+    {"z_mm", &LearnedDomain::z_mm},
+}};
+
+QJsonObject domainJson(const LearnedDomain &domain)
+{
+    QJsonObject json;
+    for (const auto &[key, span] : kDomainKeys)
+        json.insert(QLatin1String(key), QJsonArray{(domain.*span).min, (domain.*span).max});
+    return json;
+}
+
+// Empty with `field` naming the key that is not a [min, max] pair of finite numbers, min <= max.
+std::optional<LearnedDomain> domainFromJson(const QJsonObject &json, QString &field)
+{
+    LearnedDomain domain;
+    for (const auto &[key, span] : kDomainKeys) {
+        const QJsonArray pair = json.value(QLatin1String(key)).toArray();
+        const double min = pair.at(0).toDouble(std::nan(""));
+        const double max = pair.at(1).toDouble(std::nan(""));
+        if (pair.size() != 2 || !std::isfinite(min) || !std::isfinite(max) || min > max) {
+            field = QLatin1String(key);
+            return std::nullopt;
+        }
+        domain.*span = {min, max};
+    }
+    return domain;
+}
 
 } // namespace
 
@@ -28,6 +64,8 @@ QJsonObject learnedResidualJson(const LearnedResidual &learned)
     }
     if (learned.learnedAgainst)
         json.insert(QStringLiteral("learned_against_characterisation"), *learned.learnedAgainst);
+    if (learned.learnedFrom)
+        json.insert(QStringLiteral("learned_from"), domainJson(*learned.learnedFrom));
     return json;
 }
 
@@ -50,6 +88,12 @@ std::optional<LearnedResidual> learnedResidualFromJson(const QJsonObject &json, 
         learned.learnedAgainst = basis.toObject();
     else if (!basis.isUndefined())
         return refuse(QStringLiteral("learned_against_characterisation"));
+    if (const QJsonValue from = json.value(QStringLiteral("learned_from")); !from.isUndefined()) {
+        QString key;
+        learned.learnedFrom = domainFromJson(from.toObject(), key);
+        if (!learned.learnedFrom)
+            return refuse(QStringLiteral("learned_from.") + key);
+    }
     if (!json.contains(QStringLiteral("network")))
         return learned;
     constexpr Eigen::Index kInputs = 8; // ResidualSample::inputs

@@ -7,6 +7,7 @@
 #include "core/tolerance/target_contour.h"
 
 #include <QCoreApplication>
+#include <QSet>
 
 #include <algorithm>
 #include <cmath>
@@ -145,6 +146,42 @@ const SetUpPhysics *setUpOf(const Project &drawn, const QString &featureId, cons
     return it->second ? &*it->second : nullptr;
 }
 
+// The samples a prediction has at every station of a deviation result (its features in order,
+// their stations in order): none where the model does not turn a point.
+std::vector<std::vector<std::optional<ResidualSample>>>
+stationSamples(const Project &project, const DeviationResult &deviation, const ProgramTargets &targets)
+{
+    std::vector<std::vector<std::optional<ResidualSample>>> out;
+    if (!deviation.inputs)
+        return out;
+    for (const FeatureDeviation &f : deviation.features) {
+        std::vector<std::optional<ResidualSample>> feature;
+        for (const Station &st : f.stations)
+            feature.push_back(sampleAt(project, deviation, targets, f.featureId, st.z_mm,
+                                       deviation.inputs->timeSinceStart_min, deviation.inputs->ambientTemperature_C));
+        out.push_back(std::move(feature));
+    }
+    return out;
+}
+
+// The spans of the conditions of `samples` (not empty): ResidualSample::inputs [0] spindle speed,
+// [1] feed, [7] z, and the programmed diameter.
+LearnedDomain domainOf(const std::vector<ResidualSample> &samples)
+{
+    const auto span = [&samples](const std::function<double(const ResidualSample &)> &of) {
+        LearnedDomain::Span s{of(samples.front()), of(samples.front())};
+        for (const ResidualSample &r : samples) {
+            s.min = std::min(s.min, of(r));
+            s.max = std::max(s.max, of(r));
+        }
+        return s;
+    };
+    return {span([](const ResidualSample &r) { return r.predictionInputs[0]; }),
+            span([](const ResidualSample &r) { return r.predictionInputs[1]; }),
+            span([](const ResidualSample &r) { return r.diameter_mm; }),
+            span([](const ResidualSample &r) { return r.predictionInputs[7]; })};
+}
+
 // Adds the samples of one part; true when its forces came from its motor currents. Each point is
 // compared with the set-up that cuts its feature, in that set-up's frame (z from the held end), as
 // a prediction of that set-up has it.
@@ -172,6 +209,7 @@ bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const Cur
     const std::optional<CuttingForces> measured =
         forcesFromCurrents(part, first->view, firstInputs, data, estimator, warnings);
     int unused = 0;
+    int withModelForces = 0; // points of later set-ups while the currents are the first's
     for (const MeasuredPoint &p : part.points) {
         const SetUpPhysics *setUp = setUpOf(drawn, p.featureId, data, setUps);
         if (setUp == nullptr) {
@@ -180,9 +218,14 @@ bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const Cur
         }
         const double z = setUp->mirrored ? drawn.part.length_mm() - p.z_mm : p.z_mm;
         const TurningInputs &in = *setUp->deviation.inputs;
+        // The drives' readings are of the first set-up's finishing cut (docs/learning.md): the
+        // forces of another set-up's cut are the force model's.
+        const bool currentsOfThisCut = measured && setUp == first;
+        if (measured && !currentsOfThisCut)
+            ++withModelForces;
         auto s = sampleAt(setUp->view, setUp->deviation, setUp->targets, p.featureId, z,
                           part.timeSinceStart_min.value_or(in.timeSinceStart_min),
-                          part.ambient_C.value_or(in.ambientTemperature_C), measured ? &*measured : nullptr);
+                          part.ambient_C.value_or(in.ambientTemperature_C), currentsOfThisCut ? &*measured : nullptr);
         if (!s) {
             ++unused; // a face or a feature the model does not turn: nothing to compare
             continue;
@@ -211,6 +254,13 @@ bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const Cur
                        .arg(part.id)
                        .arg(unused)
                        .arg(part.points.size())));
+    if (withModelForces > 0)
+        warnings.push_back(makeWarning(
+            QStringLiteral("parts[%1].drive").arg(part.id),
+            MeasuredResiduals::tr("part %1: its motor currents are of the first set-up's finishing cut; %2 points "
+                                  "cut in a later set-up are compared at the force model's forces")
+                .arg(part.id)
+                .arg(withModelForces)));
     return measured.has_value();
 }
 
@@ -304,6 +354,7 @@ std::optional<LearnedResidual> learnResidual(const std::vector<ResidualSample> &
         geometric = fitGeometric(samples, networkPart);
     }
     learned.geometric = *geometric;
+    learned.learnedFrom = domainOf(samples);
     // The network's last fit was to the plane before; once more to the final plane.
     Eigen::VectorXd y(n);
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -373,18 +424,54 @@ std::vector<std::vector<double>> learnedAtStations(const Project &project, const
                                                    const LearnedResidual &learned, const ProgramTargets &targets)
 {
     std::vector<std::vector<double>> out;
-    if (!deviation.inputs)
-        return out;
-    for (const FeatureDeviation &f : deviation.features) {
-        std::vector<double> feature;
-        for (const Station &st : f.stations) {
-            const auto s = sampleAt(project, deviation, targets, f.featureId, st.z_mm,
-                                    deviation.inputs->timeSinceStart_min, deviation.inputs->ambientTemperature_C);
-            feature.push_back(s ? learned.predict_mm(*s) : 0.0);
-        }
-        out.push_back(std::move(feature));
+    for (const std::vector<std::optional<ResidualSample>> &feature : stationSamples(project, deviation, targets)) {
+        std::vector<double> learnedAt;
+        for (const std::optional<ResidualSample> &s : feature)
+            learnedAt.push_back(s ? learned.predict_mm(*s) : 0.0);
+        out.push_back(std::move(learnedAt));
     }
     return out;
+}
+
+QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation, const LearnedResidual &learned)
+{
+    if (!learned.learnedFrom)
+        return {};
+    // The verdicts' features: an untoleranced chamfer no part was measured on is not a reason.
+    QSet<QString> toleranced;
+    for (const Tolerance &t : project.tolerances)
+        toleranced.insert(t.featureId);
+    std::vector<ResidualSample> planned;
+    for (const auto &feature : stationSamples(project, deviation, programTargets(project)))
+        for (const std::optional<ResidualSample> &s : feature)
+            if (s && toleranced.contains(s->featureId))
+                planned.push_back(*s);
+    if (planned.empty())
+        return {};
+    const LearnedDomain plan = domainOf(planned);
+    const LearnedDomain &measured = *learned.learnedFrom;
+    QStringList outside;
+    const auto check = [&outside](const QString &what, LearnedDomain::Span p, LearnedDomain::Span m, int decimals) {
+        // A tenth of the span, or 1 % of the value where the parts have (almost) none: the Gaussians
+        // reach that far, and the mid-zone target of another tolerance is not another condition.
+        const double margin = std::max(0.1 * (m.max - m.min), 0.01 * std::max(std::abs(m.min), std::abs(m.max)));
+        if (p.min >= m.min - margin && p.max <= m.max + margin)
+            return;
+        const auto span = [decimals](LearnedDomain::Span s) {
+            return QStringLiteral("%1–%2").arg(s.min, 0, 'f', decimals).arg(s.max, 0, 'f', decimals);
+        };
+        outside << MeasuredResiduals::tr("%1 %2 (measured parts %3)").arg(what, span(p), span(m));
+    };
+    check(MeasuredResiduals::tr("spindle speed [rpm]"), plan.spindleSpeed_rpm, measured.spindleSpeed_rpm, 0);
+    check(MeasuredResiduals::tr("feed [mm/rev]"), plan.feed_mm_rev, measured.feed_mm_rev, 3);
+    check(MeasuredResiduals::tr("diameter [mm]"), plan.diameter_mm, measured.diameter_mm, 1);
+    check(MeasuredResiduals::tr("z [mm]"), plan.z_mm, measured.z_mm, 1);
+    if (outside.isEmpty())
+        return {};
+    return MeasuredResiduals::tr("This plan lies outside the conditions the learned model was measured at: %1. "
+                                 "There its network falls back to the geometric plane, so the prediction is "
+                                 "little more than the physics; measure parts cut at these conditions.")
+        .arg(outside.join(QStringLiteral("; ")));
 }
 
 void addLearnedResidual(const Project &project, DeviationResult &deviation, const LearnedResidual &learned,
@@ -401,12 +488,15 @@ void addLearnedResidual(const Project &project, DeviationResult &deviation, cons
 DeviationResult withLearnedResidual(const Project &project, DeviationResult deviation, const LearnedResidual &learned,
                                     const QString &provenance)
 {
+    const QString outside = outsideLearnedDomain(project, deviation, learned);
     addLearnedResidual(project, deviation, learned, programTargets(project));
     if (deviation.inputs)
         deviation.inputs->notes << MeasuredResiduals::tr(
                                        "The predicted radius errors include what was learned from measured parts (%1): "
                                        "the machine's measured behaviour replaces its stiffness range.")
                                        .arg(provenance);
+    if (!outside.isEmpty())
+        deviation.diagnostics.push_back(makeWarning(QStringLiteral("learned"), outside));
     return deviation;
 }
 

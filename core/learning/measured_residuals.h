@@ -66,6 +66,23 @@ struct GeometricError {
     }
 };
 
+// The conditions the parts a model was learned from were cut and measured at, each as the smallest
+// and largest value among its points. The network is a sum of Gaussians: away from them it falls
+// back to the plane, so a prediction outside them gets little of what was learned.
+struct LearnedDomain {
+    struct Span {
+        double min = 0.0;
+        double max = 0.0;
+        friend bool operator==(const Span &, const Span &) = default;
+    };
+
+    Span spindleSpeed_rpm;
+    Span feed_mm_rev;
+    Span diameter_mm;
+    Span z_mm;
+    friend bool operator==(const LearnedDomain &, const LearnedDomain &) = default;
+};
+
 // What was learned of a machine: the residual of the physics model = geometric error + an RBF
 // network of the rest over Li & Du's inputs.
 struct LearnedResidual {
@@ -74,6 +91,8 @@ struct LearnedResidual {
     // The physics it is a residual of: the machine's characterisation (physicsBasis) of the parts
     // it was learned from. Absent in a model stored before TolTurn kept it.
     std::optional<QJsonObject> learnedAgainst;
+    // Where it was learned. Absent in a model stored before TolTurn kept it.
+    std::optional<LearnedDomain> learnedFrom;
     [[nodiscard]] double predict_mm(const ResidualSample &s) const;
 };
 
@@ -118,6 +137,14 @@ learnedAtStations(const Project &project, const DeviationResult &deviation, cons
 // candidate, with the program's targets computed once).
 void addLearnedResidual(const Project &project, DeviationResult &deviation, const LearnedResidual &learned,
                         const ProgramTargets &targets);
+
+// Where the stations of the toleranced features of a deviation result of `project` lie outside the
+// conditions `learned` was
+// learned from (spindle speed, feed, diameter, z; beyond each span by more than a tenth of it, or
+// 1 % of its value where it is narrower): one line naming each with the plan's and the measured
+// parts' span, empty when none is or the model does not record them.
+[[nodiscard]] QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation,
+                                           const LearnedResidual &learned);
 
 // The deviation result with what was learned added to every station's radius error (the
 // predicted machined radius then being physics + learned), and a note saying so, naming

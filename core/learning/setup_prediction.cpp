@@ -32,6 +32,8 @@ SetupPrediction predictSetup(const Project &project, const DataLibrary &data, co
         p.learned = LearnedCurves{learnedAtStations(project, p.deviation, learned->model), learned->uncertainty_mm(),
                                   learned->provenance()};
         p.assumption = learnedAssumptionText(*learned);
+        if (const QString outside = outsideLearnedDomain(project, p.deviation, learned->model); !outside.isEmpty())
+            p.assumption += QStringLiteral(". ") + outside;
     } else {
         p.range = evaluateOverStiffnessRange(project, data);
         p.deviation = p.range.compliant;

@@ -6,6 +6,7 @@
 #include "core/data/data_library.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/project_file.h"
+#include "core/io/project_json.h"
 #include "core/tolerance/target_contour.h"
 
 #include <QJsonArray>
@@ -230,6 +231,21 @@ private Q_SLOTS:
             ++sizes;
         }
         QVERIFY(sizes >= 2);
+        // Every part was cut at the plan's finishing feed, 0.1 mm/rev: a plan at 0.2 lies outside
+        // what was measured, and the verdicts say so.
+        QVERIFY(QJsonDocument::fromJson(judged.out.toUtf8())[QStringLiteral("diagnostics")].toArray().isEmpty());
+        tolturn::Project coarser = p;
+        QCOMPARE(coarser.passes.back().feed_mm_rev, 0.1);
+        coarser.passes.back().feed_mm_rev = 0.2;
+        const QString coarserFile = m_dir.filePath(QStringLiteral("coarser.tolturn"));
+        QVERIFY(writeFile(coarserFile, tolturn::serializeProjectJson(coarser)));
+        const auto outside = runCli({QStringLiteral("evaluate"), QStringLiteral("--learned"), QStringLiteral("--json"),
+                                     QStringLiteral("--store"), learnStore, coarserFile});
+        QVERIFY2(outside.exitCode == 0, qPrintable(outside.err));
+        const QJsonArray said = QJsonDocument::fromJson(outside.out.toUtf8())[QStringLiteral("diagnostics")].toArray();
+        QVERIFY2(said.size() == 1 && said[0][QStringLiteral("message")].toString().contains(
+                                         QStringLiteral("feed [mm/rev] 0.200–0.200 (measured parts 0.100–0.100)")),
+                 qPrintable(outside.out));
         // The optimiser plans with it and says so; with a stiffness end as well it is a usage error.
         const auto planned = runCli({QStringLiteral("optimize"), QStringLiteral("--learned"), QStringLiteral("--json"),
                                      QStringLiteral("--time-limit"), QStringLiteral("20"), QStringLiteral("--store"),

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The learning algorithms of Li & Du (003): the geometric error's straight line (eq. 4) and the
 // hybrid RBF network of appendix A, on data generated here from a known truth with noise.
+#include "tests/core/test_support.h"
+
 #include "core/data/data_library.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/project_file.h"
@@ -20,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <random>
 
 using namespace tolturn;
@@ -80,6 +83,29 @@ Eigen::VectorXd predictions(const RbfNetwork &net, const Eigen::MatrixXd &x)
     for (Eigen::Index i = 0; i < x.rows(); ++i)
         f[i] = net.predict(x.row(i).transpose());
     return f;
+}
+
+// The first stage of Li & Du trained on calibration cuts with F_t = 40 N/A · ΔI_s and
+// F_a = 25 N/A · ΔI_a.
+std::optional<CurrentForceModel> currentEstimator()
+{
+    std::vector<ForceCalibrationSample> cuts;
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 5; ++j) {
+            const double spindle = 1.0 + 1.5 * i;
+            const double feed = 0.5 + 0.3 * i;
+            ForceCalibrationSample c;
+            c.drive = {5.0 + spindle, 5.0, 0.0, 100.0 + 20.0 * j, 0.0, 1.0 + feed, 1.0, 100.0 + 40.0 * j};
+            c.tangential_N = 40.0 * spindle;
+            c.axial_N = 25.0 * feed;
+            cuts.push_back(c);
+        }
+    }
+    QString error;
+    auto estimator = trainCurrentForceModel(cuts, currentForceTrainingOptions(), &error);
+    if (!estimator)
+        qWarning("%s", qPrintable(error));
+    return estimator;
 }
 
 // What the "true" machine adds to TolTurn's physics in the generated shop: chuck springs at half
@@ -513,21 +539,8 @@ private Q_SLOTS:
     // without the estimator, the force model's.
     void forcesFromMotorCurrentsFeedTheNetwork()
     {
-        std::vector<ForceCalibrationSample> cuts;
-        for (int i = 0; i < 8; ++i) {
-            for (int j = 0; j < 5; ++j) {
-                const double spindle = 1.0 + 1.5 * i;
-                const double feed = 0.5 + 0.3 * i;
-                ForceCalibrationSample c;
-                c.drive = {5.0 + spindle, 5.0, 0.0, 100.0 + 20.0 * j, 0.0, 1.0 + feed, 1.0, 100.0 + 40.0 * j};
-                c.tangential_N = 40.0 * spindle;
-                c.axial_N = 25.0 * feed;
-                cuts.push_back(c);
-            }
-        }
-        QString error;
-        const auto estimator = trainCurrentForceModel(cuts, currentForceTrainingOptions(), &error);
-        QVERIFY2(estimator, qPrintable(error));
+        const auto estimator = currentEstimator();
+        QVERIFY(estimator);
         Project project;
         double target = 0.0;
         MeasuredPart part = shaftPart(project, target);
@@ -549,6 +562,40 @@ private Q_SLOTS:
         QVERIFY(std::abs(physics[0].inputs[5] - samples[0].inputs[5]) > 1.0); // so the check above can fail
         // A prediction (and a part left out) has the force model's forces: no currents when planning.
         QCOMPARE(samples[0].predictionInputs[5], in.forces.axial_N);
+    }
+
+    // The drives' readings are of the first set-up's finishing cut: a point OP 10 turns (O4) learns
+    // at the 35 N axial force they give (F_a = 25 N/A · 1.4 A), points OP 20 turns (O2) at OP 20's
+    // force model's, and the warning counts them.
+    void motorCurrentsAreTheFirstSetUpsCut()
+    {
+        const auto estimator = currentEstimator();
+        QVERIFY(estimator);
+        const Project project =
+            *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/bushing-two-setups.tolturn"))
+                 .project;
+        MeasuredPart part;
+        part.id = 9;
+        part.machineId = project.machineId;
+        part.projectJson = serializeProjectJson(project);
+        part.points = {{QStringLiteral("O4"), 90.0, MeasuredQuantity::RadialDeviation, 0.0},
+                       {QStringLiteral("O2"), 20.0, MeasuredQuantity::RadialDeviation, 0.0},
+                       {QStringLiteral("O2"), 30.0, MeasuredQuantity::RadialDeviation, 0.0}};
+        part.drive = DriveReading{10.5, 5.0, 0.0, 140.0, 0.0, 2.4, 1.0, 180.0};
+        Diagnostics warnings;
+        const auto samples = residualSamples({part}, DataLibrary::builtIn(), warnings, &*estimator);
+        QCOMPARE(samples.size(), std::size_t(3));
+        QVERIFY2(std::abs(samples[0].inputs[5] - 35.0) < 0.7, qPrintable(QString::number(samples[0].inputs[5])));
+        const TurningInputs op20 = *computeDeviation(operationView(project, 1), DataLibrary::builtIn(), {}).inputs;
+        QVERIFY(std::abs(op20.forces.axial_N - 35.0) > 1.0); // so the checks can fail
+        for (std::size_t i = 1; i < samples.size(); ++i)
+            QCOMPARE(samples[i].inputs[5], op20.forces.axial_N);
+        QVERIFY2(std::any_of(warnings.begin(), warnings.end(),
+                             [](const Diagnostic &d) {
+                                 return d.message.contains(
+                                     QStringLiteral("2 points cut in a later set-up are compared at the force model"));
+                             }),
+                 qPrintable(tolturn::test::dump(warnings)));
     }
 
     void learnedModelRoundTrips()
@@ -573,6 +620,80 @@ private Q_SLOTS:
         damaged[QStringLiteral("network")] = network;
         QVERIFY(!learnedResidualFromJson(damaged, &error).has_value());
         QVERIFY2(error.contains(QStringLiteral("network.radii")), qPrintable(error));
+        QVERIFY(learned->learnedFrom.has_value());
+        QVERIFY(back->learnedFrom == learned->learnedFrom);
+        QJsonObject reversed = json;
+        QJsonObject from = reversed.value(QStringLiteral("learned_from")).toObject();
+        from[QStringLiteral("feed_mm_rev")] = QJsonArray{0.3, 0.1};
+        reversed[QStringLiteral("learned_from")] = from;
+        QVERIFY(!learnedResidualFromJson(reversed, &error).has_value());
+        QVERIFY2(error.contains(QStringLiteral("learned_from.feed_mm_rev")), qPrintable(error));
+    }
+
+    // The generated shop cuts its parts at feeds 0.1–0.3 mm/rev and 150–300 m/min, measured at
+    // z 40–146 on the Ø30, Ø40 and Ø50 journals. The model keeps those spans (the spindle speed at
+    // G96, n = 1000 v / (π D), from the slowest part on Ø50 to the fastest on Ø30), and a plan
+    // whose feed lies beyond them by more than a tenth of the span is said; one at a part's own
+    // conditions is not. Nor is the spindle speed, which a feed does not change at G96.
+    void aPlanOutsideTheMeasuredConditionsIsSaid()
+    {
+        const std::vector<MeasuredPart> parts = measuredParts(8, Truth{}, 41);
+        Diagnostics warnings;
+        const auto samples = residualSamples(parts, DataLibrary::builtIn(), warnings);
+        QString error;
+        const auto learned = learnResidual(samples, {}, &error);
+        QVERIFY2(learned && learned->learnedFrom, qPrintable(error));
+        double fMin = 1e9, fMax = 0.0, vMin = 1e9, vMax = 0.0;
+        for (const MeasuredPart &part : parts) {
+            const Project p = *parseProjectJson(part.projectJson).project;
+            fMin = std::min(fMin, p.passes.back().feed_mm_rev);
+            fMax = std::max(fMax, p.passes.back().feed_mm_rev);
+            vMin = std::min(vMin, p.passes.back().cuttingSpeed_m_min);
+            vMax = std::max(vMax, p.passes.back().cuttingSpeed_m_min);
+        }
+        const LearnedDomain &from = *learned->learnedFrom;
+        QCOMPARE(from.feed_mm_rev.min, fMin);
+        QCOMPARE(from.feed_mm_rev.max, fMax);
+        QCOMPARE(from.z_mm.min, 40.0);
+        QCOMPARE(from.z_mm.max, 146.0);
+        QVERIFY2(std::abs(from.diameter_mm.min - 30.0) < 0.05 && std::abs(from.diameter_mm.max - 50.0) < 0.05,
+                 qPrintable(QStringLiteral("%1 %2").arg(from.diameter_mm.min).arg(from.diameter_mm.max)));
+        const double nMin = 1000.0 * vMin / (std::numbers::pi * 50.0);
+        const double nMax = 1000.0 * vMax / (std::numbers::pi * 30.0);
+        QVERIFY2(std::abs(from.spindleSpeed_rpm.min / nMin - 1.0) < 2e-3 &&
+                     std::abs(from.spindleSpeed_rpm.max / nMax - 1.0) < 2e-3,
+                 qPrintable(QStringLiteral("%1 %2 against %3 %4")
+                                .arg(from.spindleSpeed_rpm.min)
+                                .arg(from.spindleSpeed_rpm.max)
+                                .arg(nMin)
+                                .arg(nMax)));
+
+        Project plan = *parseProjectJson(parts.front().projectJson).project;
+        const auto outside = [&](const Project &p) {
+            return outsideLearnedDomain(p, computeDeviation(p, DataLibrary::builtIn(), {}), *learned);
+        };
+        QVERIFY2(outside(plan).isEmpty(), qPrintable(outside(plan)));
+        // A twentieth of the span beyond the fastest feed is within the Gaussians' reach; three
+        // twentieths are not.
+        plan.passes.back().feed_mm_rev = fMax + 0.05 * (fMax - fMin);
+        QVERIFY2(outside(plan).isEmpty(), qPrintable(outside(plan)));
+        const double beyond = fMax + 0.15 * (fMax - fMin);
+        plan.passes.back().feed_mm_rev = beyond;
+        const QString said = outside(plan);
+        QVERIFY2(said.contains(QStringLiteral("feed [mm/rev] %1–%1 (measured parts %2–%3)")
+                                   .arg(beyond, 0, 'f', 3)
+                                   .arg(fMin, 0, 'f', 3)
+                                   .arg(fMax, 0, 'f', 3)),
+                 qPrintable(said));
+        QVERIFY2(!said.contains(QStringLiteral("z [mm]")) && !said.contains(QStringLiteral("diameter")) &&
+                     !said.contains(QStringLiteral("spindle speed")),
+                 qPrintable(said));
+        // The banner above the verdicts says it too.
+        LoadedModel model;
+        model.model = *learned;
+        model.record.machineId = plan.machineId;
+        QVERIFY2(predictSetup(plan, DataLibrary::builtIn(), &model).assumption.contains(said),
+                 qPrintable(predictSetup(plan, DataLibrary::builtIn(), &model).assumption));
     }
 
     // An input that never varied in training (the same ambient for every part) changes nothing
