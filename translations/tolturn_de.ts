@@ -2217,6 +2217,34 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>part %1: %2 of its %3 points are not compared with the physics (on a face or on a feature its set-up&apos;s passes do not turn)</source>
         <translation>Teil %1: %2 seiner %3 Punkte werden nicht mit der Physik verglichen (auf einer Planfläche oder auf einem Formelement, das die Schnitte seiner Aufspannung nicht drehen)</translation>
     </message>
+    <message>
+        <source>part %1: its motor currents are of the first set-up&apos;s finishing cut; %2 points cut in a later set-up are compared at the force model&apos;s forces</source>
+        <translation>Teil %1: seine Motorströme gehören zum Schlichtschnitt der ersten Aufspannung; %2 Punkte, die in einer späteren Aufspannung geschnitten wurden, werden mit den Kräften des Kraftmodells verglichen</translation>
+    </message>
+    <message>
+        <source>%1 %2 (measured parts %3)</source>
+        <translation>%1 %2 (gemessene Teile %3)</translation>
+    </message>
+    <message>
+        <source>spindle speed [rpm]</source>
+        <translation>Spindeldrehzahl [1/min]</translation>
+    </message>
+    <message>
+        <source>feed [mm/rev]</source>
+        <translation>Vorschub [mm/U]</translation>
+    </message>
+    <message>
+        <source>diameter [mm]</source>
+        <translation>Durchmesser [mm]</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>This plan lies outside the conditions the learned model was measured at: %1. There its network falls back to the geometric plane, so the prediction is little more than the physics; measure parts cut at these conditions.</source>
+        <translation>Dieser Plan liegt außerhalb der Bedingungen, unter denen das gelernte Modell gemessen wurde: %1. Dort fällt sein Netz auf die geometrische Ebene zurück, die Vorhersage ist also kaum mehr als die Physik; messen Sie Teile, die unter diesen Bedingungen geschnitten wurden.</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>

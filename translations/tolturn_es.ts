@@ -2217,6 +2217,34 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>part %1: %2 of its %3 points are not compared with the physics (on a face or on a feature its set-up&apos;s passes do not turn)</source>
         <translation>pieza %1: %2 de sus %3 puntos no se comparan con la física (en una cara o en un elemento que las pasadas de su amarre no tornean)</translation>
     </message>
+    <message>
+        <source>part %1: its motor currents are of the first set-up&apos;s finishing cut; %2 points cut in a later set-up are compared at the force model&apos;s forces</source>
+        <translation>pieza %1: sus corrientes de motor son del corte de acabado de la primera sujeción; %2 puntos cortados en una sujeción posterior se comparan con las fuerzas del modelo de fuerzas</translation>
+    </message>
+    <message>
+        <source>%1 %2 (measured parts %3)</source>
+        <translation>%1 %2 (piezas medidas %3)</translation>
+    </message>
+    <message>
+        <source>spindle speed [rpm]</source>
+        <translation>velocidad del husillo [rpm]</translation>
+    </message>
+    <message>
+        <source>feed [mm/rev]</source>
+        <translation>avance [mm/rev]</translation>
+    </message>
+    <message>
+        <source>diameter [mm]</source>
+        <translation>diámetro [mm]</translation>
+    </message>
+    <message>
+        <source>z [mm]</source>
+        <translation>z [mm]</translation>
+    </message>
+    <message>
+        <source>This plan lies outside the conditions the learned model was measured at: %1. There its network falls back to the geometric plane, so the prediction is little more than the physics; measure parts cut at these conditions.</source>
+        <translation>Este plan queda fuera de las condiciones en las que se midió el modelo aprendido: %1. Allí su red vuelve al plano geométrico, de modo que la predicción es poco más que la física; mida piezas cortadas en estas condiciones.</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>
