@@ -2245,6 +2245,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>This plan lies outside the conditions the learned model was measured at: %1. There its network falls back to the geometric plane, so the prediction is little more than the physics; measure parts cut at these conditions.</source>
         <translation>Dieser Plan liegt außerhalb der Bedingungen, unter denen das gelernte Modell gemessen wurde: %1. Dort fällt sein Netz auf die geometrische Ebene zurück, die Vorhersage ist also kaum mehr als die Physik; messen Sie Teile, die unter diesen Bedingungen geschnitten wurden.</translation>
     </message>
+    <message>
+        <source>with part %1 left out: %2</source>
+        <translation>ohne Teil %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>

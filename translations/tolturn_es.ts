@@ -2245,6 +2245,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>This plan lies outside the conditions the learned model was measured at: %1. There its network falls back to the geometric plane, so the prediction is little more than the physics; measure parts cut at these conditions.</source>
         <translation>Este plan queda fuera de las condiciones en las que se midió el modelo aprendido: %1. Allí su red vuelve al plano geométrico, de modo que la predicción es poco más que la física; mida piezas cortadas en estas condiciones.</translation>
     </message>
+    <message>
+        <source>with part %1 left out: %2</source>
+        <translation>sin la pieza %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>MeasurementCsv</name>

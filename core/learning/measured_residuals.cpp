@@ -396,8 +396,12 @@ std::optional<CrossValidation> leaveOnePartOut(const std::vector<ResidualSample>
                 training.push_back(s);
         }
         const auto model = learnResidual(training, options, error);
-        if (!model)
+        if (!model) {
+            // The count is of the other parts' points, not of all: say which fold it is.
+            if (error && !error->isEmpty())
+                *error = MeasuredResiduals::tr("with part %1 left out: %2").arg(part).arg(*error);
             return std::nullopt;
+        }
         for (const std::size_t i : rows) {
             const ResidualSample &s = samples[i];
             physics += s.residual_mm() * s.residual_mm();

@@ -598,6 +598,21 @@ private Q_SLOTS:
                  qPrintable(tolturn::test::dump(warnings)));
     }
 
+    // Leaving out the part that holds most of the points leaves too few to learn from: the message
+    // names the fold, since its count (1) is not the store's (13).
+    void aFoldWithTooFewPointsIsNamed()
+    {
+        std::vector<MeasuredPart> parts = measuredParts(2, Truth{}, 5);
+        parts[1].points.resize(1);
+        Diagnostics warnings;
+        const auto samples = residualSamples(parts, DataLibrary::builtIn(), warnings);
+        QCOMPARE(samples.size(), std::size_t(13));
+        QString error;
+        QVERIFY2(learnResidual(samples, {}, &error), qPrintable(error));
+        QVERIFY(!leaveOnePartOut(samples, {}, &error));
+        QCOMPARE(error, QStringLiteral("with part 1 left out: 1 measured points; learning needs at least 3"));
+    }
+
     void learnedModelRoundTrips()
     {
         Diagnostics warnings;
