@@ -2035,6 +2035,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 of %2 parts learned from forces estimated from their motor currents</source>
         <translation>%1 von %2 Teilen lernten aus Kräften, die aus ihren Motorströmen geschätzt wurden</translation>
     </message>
+    <message>
+        <source>  learned at: %1</source>
+        <translation>  gelernt bei: %1</translation>
+    </message>
 </context>
 <context>
     <name>LearnedModelJson</name>
@@ -2234,20 +2238,16 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Vorschub [mm/U]</translation>
     </message>
     <message>
-        <source>diameter [mm]</source>
-        <translation>Durchmesser [mm]</translation>
-    </message>
-    <message>
-        <source>z [mm]</source>
-        <translation>z [mm]</translation>
-    </message>
-    <message>
-        <source>This plan lies outside the conditions the learned model was measured at: %1. There its network falls back to the geometric plane, so the prediction is little more than the physics; measure parts cut at these conditions.</source>
-        <translation>Dieser Plan liegt außerhalb der Bedingungen, unter denen das gelernte Modell gemessen wurde: %1. Dort fällt sein Netz auf die geometrische Ebene zurück, die Vorhersage ist also kaum mehr als die Physik; messen Sie Teile, die unter diesen Bedingungen geschnitten wurden.</translation>
-    </message>
-    <message>
         <source>with part %1 left out: %2</source>
         <translation>ohne Teil %1: %2</translation>
+    </message>
+    <message>
+        <source>spindle speed %1 rpm, feed %2 mm/rev, diameter %3 mm, z %4 mm</source>
+        <translation>Spindeldrehzahl %1 1/min, Vorschub %2 mm/U, Durchmesser %3 mm, z %4 mm</translation>
+    </message>
+    <message>
+        <source>This plan is cut at other conditions than the parts the learned model was measured on: %1. There what was learned is extrapolated (a condition the parts did not vary is taken to have no effect, and the network&apos;s correction fades away from the conditions it learned at); measure parts cut at these conditions</source>
+        <translation>Dieser Plan wird unter anderen Bedingungen geschnitten als die Teile, an denen das gelernte Modell gemessen wurde: %1. Dort wird das Gelernte extrapoliert (eine Bedingung, die die Teile nicht variierten, gilt als wirkungslos, und die Korrektur des Netzes klingt fern der gelernten Bedingungen ab); messen Sie Teile, die unter diesen Bedingungen geschnitten wurden</translation>
     </message>
 </context>
 <context>
@@ -7502,6 +7502,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the store or the machine changed meanwhile; the model was kept in %1</source>
         <translation>Speicher oder Maschine haben sich inzwischen geändert; das Modell wurde in %1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Learned at %1.</source>
+        <translation>Gelernt bei %1.</translation>
     </message>
 </context>
 <context>

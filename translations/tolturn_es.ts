@@ -2035,6 +2035,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 of %2 parts learned from forces estimated from their motor currents</source>
         <translation>%1 de %2 piezas aprendieron de fuerzas estimadas a partir de sus corrientes de motor</translation>
     </message>
+    <message>
+        <source>  learned at: %1</source>
+        <translation>  aprendido con: %1</translation>
+    </message>
 </context>
 <context>
     <name>LearnedModelJson</name>
@@ -2234,20 +2238,16 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>avance [mm/rev]</translation>
     </message>
     <message>
-        <source>diameter [mm]</source>
-        <translation>diámetro [mm]</translation>
-    </message>
-    <message>
-        <source>z [mm]</source>
-        <translation>z [mm]</translation>
-    </message>
-    <message>
-        <source>This plan lies outside the conditions the learned model was measured at: %1. There its network falls back to the geometric plane, so the prediction is little more than the physics; measure parts cut at these conditions.</source>
-        <translation>Este plan queda fuera de las condiciones en las que se midió el modelo aprendido: %1. Allí su red vuelve al plano geométrico, de modo que la predicción es poco más que la física; mida piezas cortadas en estas condiciones.</translation>
-    </message>
-    <message>
         <source>with part %1 left out: %2</source>
         <translation>sin la pieza %1: %2</translation>
+    </message>
+    <message>
+        <source>spindle speed %1 rpm, feed %2 mm/rev, diameter %3 mm, z %4 mm</source>
+        <translation>velocidad del husillo %1 rpm, avance %2 mm/rev, diámetro %3 mm, z %4 mm</translation>
+    </message>
+    <message>
+        <source>This plan is cut at other conditions than the parts the learned model was measured on: %1. There what was learned is extrapolated (a condition the parts did not vary is taken to have no effect, and the network&apos;s correction fades away from the conditions it learned at); measure parts cut at these conditions</source>
+        <translation>Este plan se corta en otras condiciones que las piezas con las que se midió el modelo aprendido: %1. Allí lo aprendido se extrapola (una condición que las piezas no variaron se considera sin efecto, y la corrección de la red se desvanece lejos de las condiciones aprendidas); mida piezas cortadas en estas condiciones</translation>
     </message>
 </context>
 <context>
@@ -7502,6 +7502,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the store or the machine changed meanwhile; the model was kept in %1</source>
         <translation>el almacén o la máquina cambiaron entretanto; el modelo se guardó en %1</translation>
+    </message>
+    <message>
+        <source>Learned at %1.</source>
+        <translation>Aprendido con %1.</translation>
     </message>
 </context>
 <context>

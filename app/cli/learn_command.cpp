@@ -4,6 +4,7 @@
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
 #include "core/data/data_library.h"
+#include "core/learning/learned_model_json.h"
 #include "core/learning/machine_learning.h"
 #include "core/measurements/measurement_store.h"
 
@@ -144,11 +145,13 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
                                                   {QStringLiteral("radius_scale"), learned->network->radiusScale},
                                                   {QStringLiteral("leave_one_out_rms_um"),
                                                    1000.0 * learned->network->leaveOneOutRms}}},
+                                     {QStringLiteral("learned_from"), learnedDomainJson(*learned->learnedFrom)},
                                      {QStringLiteral("cross_validation"),
                                       QJsonObject{{QStringLiteral("physics_rms_um"), 1000.0 * cv->physicsRms_mm},
                                                   {QStringLiteral("learned_rms_um"), 1000.0 * cv->learnedRms_mm}}}},
                          out, err, QStringLiteral("learn"));
     out << LearnCommand::tr("%1: %2 parts, %3 measured points").arg(machineId).arg(cv->parts).arg(cv->points) << '\n'
+        << LearnCommand::tr("  learned at: %1").arg(learnedDomainText(*learned->learnedFrom)) << '\n'
         << LearnCommand::tr("  geometric error: %1 µm per mm of diameter, %2 µm per mm along z (taper), %3 µm offset")
                .arg(QString::number(1000.0 * g.perDiameter, 'g', 3), QString::number(1000.0 * g.perZ, 'g', 3),
                     QString::number(1000.0 * g.offset_mm, 'f', 2))

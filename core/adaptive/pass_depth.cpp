@@ -111,8 +111,10 @@ std::vector<PassDepthProfile> passDepthProfiles(const Project &project, double l
             below[i] = std::max(level, contour[i] + allowance);
         take(*roughing[k], roughingIndex[k], below);
     }
-    if (finishing)
+    if (finishing) {
         take(*finishing, finishingIndex, contour);
+        out.back().conditions.kind = PassKind::Finishing; // it cuts the finished surface: Ra, Rz hold
+    }
     return out;
 }
 

@@ -26,14 +26,6 @@ constexpr std::array<std::pair<const char *, LearnedDomain::Span LearnedDomain::
     {"z_mm", &LearnedDomain::z_mm},
 }};
 
-QJsonObject domainJson(const LearnedDomain &domain)
-{
-    QJsonObject json;
-    for (const auto &[key, span] : kDomainKeys)
-        json.insert(QLatin1String(key), QJsonArray{(domain.*span).min, (domain.*span).max});
-    return json;
-}
-
 // Empty with `field` naming the key that is not a [min, max] pair of finite numbers, min <= max.
 std::optional<LearnedDomain> domainFromJson(const QJsonObject &json, QString &field)
 {
@@ -53,6 +45,14 @@ std::optional<LearnedDomain> domainFromJson(const QJsonObject &json, QString &fi
 
 } // namespace
 
+QJsonObject learnedDomainJson(const LearnedDomain &domain)
+{
+    QJsonObject json;
+    for (const auto &[key, span] : kDomainKeys)
+        json.insert(QLatin1String(key), QJsonArray{(domain.*span).min, (domain.*span).max});
+    return json;
+}
+
 QJsonObject learnedResidualJson(const LearnedResidual &learned)
 {
     QJsonObject json{
@@ -65,7 +65,7 @@ QJsonObject learnedResidualJson(const LearnedResidual &learned)
     if (learned.learnedAgainst)
         json.insert(QStringLiteral("learned_against_characterisation"), *learned.learnedAgainst);
     if (learned.learnedFrom)
-        json.insert(QStringLiteral("learned_from"), domainJson(*learned.learnedFrom));
+        json.insert(QStringLiteral("learned_from"), learnedDomainJson(*learned.learnedFrom));
     return json;
 }
 

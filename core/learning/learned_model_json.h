@@ -14,6 +14,10 @@ namespace tolturn {
 // error's plane and the network (scaling, centres, radii, weights, and its figures).
 [[nodiscard]] QJsonObject learnedResidualJson(const LearnedResidual &learned);
 
+// The spans a model was learned at ("learned_from" in its JSON), each key a [min, max] pair:
+// spindle_speed_rpm, feed_mm_rev, diameter_mm, z_mm.
+[[nodiscard]] QJsonObject learnedDomainJson(const LearnedDomain &domain);
+
 // Back from JSON; empty, with `error` naming the field, when a value is missing, not finite or of
 // the wrong size.
 [[nodiscard]] std::optional<LearnedResidual> learnedResidualFromJson(const QJsonObject &json, QString *error);

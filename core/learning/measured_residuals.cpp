@@ -182,6 +182,11 @@ LearnedDomain domainOf(const std::vector<ResidualSample> &samples)
             span([](const ResidualSample &r) { return r.predictionInputs[7]; })};
 }
 
+QString spanText(LearnedDomain::Span s, int decimals)
+{
+    return QStringLiteral("%1–%2").arg(s.min, 0, 'f', decimals).arg(s.max, 0, 'f', decimals);
+}
+
 // Adds the samples of one part; true when its forces came from its motor currents. Each point is
 // compared with the set-up that cuts its feature, in that set-up's frame (z from the held end), as
 // a prediction of that set-up has it.
@@ -221,8 +226,6 @@ bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const Cur
         // The drives' readings are of the first set-up's finishing cut (docs/learning.md): the
         // forces of another set-up's cut are the force model's.
         const bool currentsOfThisCut = measured && setUp == first;
-        if (measured && !currentsOfThisCut)
-            ++withModelForces;
         auto s = sampleAt(setUp->view, setUp->deviation, setUp->targets, p.featureId, z,
                           part.timeSinceStart_min.value_or(in.timeSinceStart_min),
                           part.ambient_C.value_or(in.ambientTemperature_C), currentsOfThisCut ? &*measured : nullptr);
@@ -230,6 +233,8 @@ bool addPartSamples(const MeasuredPart &part, const DataLibrary &data, const Cur
             ++unused; // a face or a feature the model does not turn: nothing to compare
             continue;
         }
+        if (measured && !currentsOfThisCut)
+            ++withModelForces;
         s->partId = part.id;
         // As the physics model's radius error: machined radius − programmed radius. A radial
         // deviation is recorded as material left, which on a bore is a radius short.
@@ -437,6 +442,13 @@ std::vector<std::vector<double>> learnedAtStations(const Project &project, const
     return out;
 }
 
+QString learnedDomainText(const LearnedDomain &domain)
+{
+    return MeasuredResiduals::tr("spindle speed %1 rpm, feed %2 mm/rev, diameter %3 mm, z %4 mm")
+        .arg(spanText(domain.spindleSpeed_rpm, 0), spanText(domain.feed_mm_rev, 3), spanText(domain.diameter_mm, 1),
+             spanText(domain.z_mm, 1));
+}
+
 QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation, const LearnedResidual &learned)
 {
     if (!learned.learnedFrom)
@@ -461,20 +473,19 @@ QString outsideLearnedDomain(const Project &project, const DeviationResult &devi
         const double margin = std::max(0.1 * (m.max - m.min), 0.01 * std::max(std::abs(m.min), std::abs(m.max)));
         if (p.min >= m.min - margin && p.max <= m.max + margin)
             return;
-        const auto span = [decimals](LearnedDomain::Span s) {
-            return QStringLiteral("%1–%2").arg(s.min, 0, 'f', decimals).arg(s.max, 0, 'f', decimals);
-        };
-        outside << MeasuredResiduals::tr("%1 %2 (measured parts %3)").arg(what, span(p), span(m));
+        outside << MeasuredResiduals::tr("%1 %2 (measured parts %3)")
+                       .arg(what, spanText(p, decimals), spanText(m, decimals));
     };
+    // The cutting conditions only: the diameters and z of the points are where the parts were
+    // measured (a micrometer reading in the middle of each journal), which the plane in them spans.
     check(MeasuredResiduals::tr("spindle speed [rpm]"), plan.spindleSpeed_rpm, measured.spindleSpeed_rpm, 0);
     check(MeasuredResiduals::tr("feed [mm/rev]"), plan.feed_mm_rev, measured.feed_mm_rev, 3);
-    check(MeasuredResiduals::tr("diameter [mm]"), plan.diameter_mm, measured.diameter_mm, 1);
-    check(MeasuredResiduals::tr("z [mm]"), plan.z_mm, measured.z_mm, 1);
     if (outside.isEmpty())
         return {};
-    return MeasuredResiduals::tr("This plan lies outside the conditions the learned model was measured at: %1. "
-                                 "There its network falls back to the geometric plane, so the prediction is "
-                                 "little more than the physics; measure parts cut at these conditions.")
+    return MeasuredResiduals::tr("This plan is cut at other conditions than the parts the learned model was "
+                                 "measured on: %1. There what was learned is extrapolated (a condition the parts "
+                                 "did not vary is taken to have no effect, and the network's correction fades "
+                                 "away from the conditions it learned at); measure parts cut at these conditions")
         .arg(outside.join(QStringLiteral("; ")));
 }
 
@@ -500,7 +511,7 @@ DeviationResult withLearnedResidual(const Project &project, DeviationResult devi
                                        "the machine's measured behaviour replaces its stiffness range.")
                                        .arg(provenance);
     if (!outside.isEmpty())
-        deviation.diagnostics.push_back(makeWarning(QStringLiteral("learned"), outside));
+        deviation.diagnostics.push_back(makeWarning(QStringLiteral("learned"), outside + QLatin1Char('.')));
     return deviation;
 }
 

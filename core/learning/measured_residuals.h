@@ -83,6 +83,10 @@ struct LearnedDomain {
     friend bool operator==(const LearnedDomain &, const LearnedDomain &) = default;
 };
 
+// The spans in words, for the command line and the Measurements dock: "spindle speed 955–3183
+// rpm, feed 0.100–0.300 mm/rev, diameter 30.0–50.0 mm, z 40.0–146.0 mm".
+[[nodiscard]] QString learnedDomainText(const LearnedDomain &domain);
+
 // What was learned of a machine: the residual of the physics model = geometric error + an RBF
 // network of the rest over Li & Du's inputs.
 struct LearnedResidual {
@@ -138,11 +142,11 @@ learnedAtStations(const Project &project, const DeviationResult &deviation, cons
 void addLearnedResidual(const Project &project, DeviationResult &deviation, const LearnedResidual &learned,
                         const ProgramTargets &targets);
 
-// Where the stations of the toleranced features of a deviation result of `project` lie outside the
-// conditions `learned` was
-// learned from (spindle speed, feed, diameter, z; beyond each span by more than a tenth of it, or
-// 1 % of its value where it is narrower): one line naming each with the plan's and the measured
-// parts' span, empty when none is or the model does not record them.
+// Where the stations of the toleranced features of a deviation result of `project` are cut at other
+// conditions than `learned` was learned at (spindle speed and feed; beyond each span by more than a
+// tenth of it, or 1 % of its value where it is narrower): one line naming each with the plan's and
+// the measured parts' span, without a closing full stop; empty when none is or the model does not
+// record them.
 [[nodiscard]] QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation,
                                            const LearnedResidual &learned);
 

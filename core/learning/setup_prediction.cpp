@@ -33,7 +33,7 @@ SetupPrediction predictSetup(const Project &project, const DataLibrary &data, co
                                   learned->provenance()};
         p.assumption = learnedAssumptionText(*learned);
         if (const QString outside = outsideLearnedDomain(project, p.deviation, learned->model); !outside.isEmpty())
-            p.assumption += QStringLiteral(". ") + outside;
+            p.assumption += QStringLiteral(". ") + outside; // both without a full stop, which the report adds
     } else {
         p.range = evaluateOverStiffnessRange(project, data);
         p.deviation = p.range.compliant;

@@ -177,6 +177,10 @@ private Q_SLOTS:
         QVERIFY2(learned.exitCode == 0, qPrintable(learned.err));
         const QJsonObject result = QJsonDocument::fromJson(learned.out.toUtf8()).object();
         QCOMPARE(result.value(QStringLiteral("parts")).toInt(), 6);
+        // Every part at the plan's finishing feed, 0.1 mm/rev; the points' z from the stations.
+        const QJsonArray feeds = result[QStringLiteral("learned_from")][QStringLiteral("feed_mm_rev")].toArray();
+        QVERIFY2(feeds.size() == 2 && feeds[0].toDouble() == 0.1 && feeds[1].toDouble() == 0.1,
+                 qPrintable(learned.out));
         const QJsonObject cv = result.value(QStringLiteral("cross_validation")).toObject();
         QVERIFY2(std::abs(cv.value(QStringLiteral("physics_rms_um")).toDouble() - 5.0) < 1e-6, qPrintable(learned.out));
         QVERIFY2(cv.value(QStringLiteral("learned_rms_um")).toDouble() < 0.1, qPrintable(learned.out));

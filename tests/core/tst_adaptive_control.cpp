@@ -215,6 +215,8 @@ private Q_SLOTS:
             QVERIFY2(std::abs(passes[k].depthAt(75.0) - right[k]) < 1e-9, qPrintable(QString::number(k)));
         }
         QVERIFY(std::abs(passes.back().cutDiameterAt(25.0) - 40.0) < 1e-9);
+        // It cuts the finished surface: the loop holds its feed to the drawing's roughness.
+        QCOMPARE(passes.back().conditions.kind, PassKind::Finishing);
     }
 
     // The H7 bushing from Ø65 stock: its roughing pass (1.5 mm) leaves r 32.5 − 1.5 = 31, and the

@@ -247,6 +247,10 @@ private Q_SLOTS:
                  qPrintable(QString::number(panel.model()->record.physicsRms_mm)));
         QVERIFY(panel.model()->record.learnedRms_mm < 1e-4);
         QVERIFY2(panel.modelText().contains(QStringLiteral("physics alone 5.0 µm RMS")), qPrintable(panel.modelText()));
+        // And where it holds: every part cut at the stepped shaft's finishing feed.
+        QVERIFY2(panel.modelText().contains(QStringLiteral("Learned at spindle speed")) &&
+                     panel.modelText().contains(QStringLiteral("feed 0.100–0.100 mm/rev")),
+                 qPrintable(panel.modelText()));
         // A part against the predictions: its points, the physics and physics + learned.
         QSignalSpy shown(&panel, &MeasurementsPanel::comparisonShown);
         panel.comparePart(1);

@@ -424,13 +424,18 @@ QString MeasurementsPanel::modelText() const
                   "conditions and times of day they cover, the better.")
             .arg(m_project->machineId);
     const LearnedModelRecord &r = m_model->record;
-    return tr("Model %1, learned %2 from %3 parts (%4 points). Parts not learned from (leave one part out): "
-              "physics alone %5 µm RMS, physics + learned %6 µm RMS.")
-        .arg(r.id)
-        .arg(QLocale().toString(r.trainedAt.toLocalTime(), QLocale::ShortFormat))
-        .arg(r.parts)
-        .arg(r.points)
-        .arg(QString::number(r.physicsRms_mm * kUmPerMm, 'f', 1), QString::number(r.learnedRms_mm * kUmPerMm, 'f', 1));
+    QString text = tr("Model %1, learned %2 from %3 parts (%4 points). Parts not learned from (leave one part out): "
+                      "physics alone %5 µm RMS, physics + learned %6 µm RMS.")
+                       .arg(r.id)
+                       .arg(QLocale().toString(r.trainedAt.toLocalTime(), QLocale::ShortFormat))
+                       .arg(r.parts)
+                       .arg(r.points)
+                       .arg(QString::number(r.physicsRms_mm * kUmPerMm, 'f', 1),
+                            QString::number(r.learnedRms_mm * kUmPerMm, 'f', 1));
+    // Where it holds: away from these conditions the network falls back to its plane.
+    if (m_model->model.learnedFrom)
+        text += QLatin1Char(' ') + tr("Learned at %1.").arg(learnedDomainText(*m_model->model.learnedFrom));
+    return text;
 }
 
 void MeasurementsPanel::showModel()
