@@ -85,6 +85,23 @@ Eigen::VectorXd predictions(const RbfNetwork &net, const Eigen::MatrixXd &x)
     return f;
 }
 
+// The bushing turned in two set-ups (OP 20 bores I1 and turns O1, O2 held at the right end).
+Project twoSetUpBushing()
+{
+    return *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/bushing-two-setups.tolturn"))
+                .project;
+}
+
+// A measured part of `project`, without points.
+MeasuredPart partOf(const Project &project, qint64 id)
+{
+    MeasuredPart part;
+    part.id = id;
+    part.machineId = project.machineId;
+    part.projectJson = serializeProjectJson(project);
+    return part;
+}
+
 // The first stage of Li & Du trained on calibration cuts with F_t = 40 N/A · ΔI_s and
 // F_a = 25 N/A · ΔI_a.
 std::optional<CurrentForceModel> currentEstimator()
@@ -318,13 +335,8 @@ private Q_SLOTS:
     // shoulder face I2 is counted out, and said. The dock's plot draws OP 20 back in the drawing's z.
     void measuredPointsMeetTheSetUpThatCutThem()
     {
-        const Project project =
-            *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/bushing-two-setups.tolturn"))
-                 .project;
-        MeasuredPart part;
-        part.id = 7;
-        part.machineId = project.machineId;
-        part.projectJson = serializeProjectJson(project);
+        const Project project = twoSetUpBushing();
+        MeasuredPart part = partOf(project, 7);
         for (const double z : {10.0, 25.0, 40.0})
             part.points.push_back({QStringLiteral("I1"), z, MeasuredQuantity::RadialDeviation, 0.0});
         part.points.push_back({QStringLiteral("I2"), 50.0, MeasuredQuantity::RadialDeviation, 0.0});
@@ -572,13 +584,8 @@ private Q_SLOTS:
     {
         const auto estimator = currentEstimator();
         QVERIFY(estimator);
-        const Project project =
-            *readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/bushing-two-setups.tolturn"))
-                 .project;
-        MeasuredPart part;
-        part.id = 9;
-        part.machineId = project.machineId;
-        part.projectJson = serializeProjectJson(project);
+        const Project project = twoSetUpBushing();
+        MeasuredPart part = partOf(project, 9);
         part.points = {{QStringLiteral("O4"), 90.0, MeasuredQuantity::RadialDeviation, 0.0},
                        {QStringLiteral("O2"), 20.0, MeasuredQuantity::RadialDeviation, 0.0},
                        {QStringLiteral("O2"), 30.0, MeasuredQuantity::RadialDeviation, 0.0},

@@ -37,6 +37,20 @@ using tolturn::test::dump;
 
 namespace {
 
+// A concave fillet of an outer contour, O12, from `from` down to `to` going right (counter-clockwise
+// with z to the right and r up).
+Segment concaveFillet(ProfilePoint from, ProfilePoint to, double radius_mm)
+{
+    Segment fillet;
+    fillet.id = QStringLiteral("O12");
+    fillet.kind = SegmentKind::Radius;
+    fillet.from = from;
+    fillet.to = to;
+    fillet.arcRadius_mm = radius_mm;
+    fillet.arcDirection = ArcDirection::CounterClockwise;
+    return fillet;
+}
+
 Project example(const QString &name)
 {
     const ProjectParseResult r = readProjectFile(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + name);
@@ -455,14 +469,7 @@ private Q_SLOTS:
         outer[6].from = {118.0, 18.0};
         outer[6].to = {120.5, 15.5};
         outer[6].arcRadius_mm = 2.5;
-        Segment fillet;
-        fillet.id = QStringLiteral("O12");
-        fillet.kind = SegmentKind::Radius;
-        fillet.from = {120.5, 15.5};
-        fillet.to = {121.0, 15.0};
-        fillet.arcRadius_mm = 0.5;
-        fillet.arcDirection = ArcDirection::CounterClockwise;
-        outer[7] = fillet; // in place of the face O8
+        outer[7] = concaveFillet({120.5, 15.5}, {121.0, 15.0}, 0.5); // in place of the face O8
         outer[8].from = {121.0, 15.0};
         p.tolerances.erase(std::remove_if(p.tolerances.begin(), p.tolerances.end(),
                                           [](const Tolerance &t) {
@@ -1037,14 +1044,7 @@ private Q_SLOTS:
         QCOMPARE(outer[2].id, QStringLiteral("O3"));
         outer[2].to.r_mm = 25.4;
         outer[3].from.z_mm = 35.4;
-        Segment fillet;
-        fillet.id = QStringLiteral("O12");
-        fillet.kind = SegmentKind::Radius;
-        fillet.from = {35.0, 25.4};
-        fillet.to = {35.4, 25.0};
-        fillet.arcRadius_mm = 0.4;
-        fillet.arcDirection = ArcDirection::CounterClockwise;
-        outer.insert(outer.begin() + 3, fillet);
+        outer.insert(outer.begin() + 3, concaveFillet({35.0, 25.4}, {35.4, 25.0}, 0.4));
         const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
         QVERIFY2(d.inputs, qPrintable(dump(d.diagnostics)));
         QCOMPARE(d.inputs->noseRadius_mm, 0.8);
