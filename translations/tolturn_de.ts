@@ -2242,12 +2242,24 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>ohne Teil %1: %2</translation>
     </message>
     <message>
-        <source>spindle speed %1 rpm, feed %2 mm/rev, diameter %3 mm, z %4 mm</source>
-        <translation>Spindeldrehzahl %1 1/min, Vorschub %2 mm/U, Durchmesser %3 mm, z %4 mm</translation>
-    </message>
-    <message>
         <source>This plan is cut at other conditions than the parts the learned model was measured on: %1. There what was learned is extrapolated (a condition the parts did not vary is taken to have no effect, and the network&apos;s correction fades away from the conditions it learned at); measure parts cut at these conditions</source>
         <translation>Dieser Plan wird unter anderen Bedingungen geschnitten als die Teile, an denen das gelernte Modell gemessen wurde: %1. Dort wird das Gelernte extrapoliert (eine Bedingung, die die Teile nicht variierten, gilt als wirkungslos, und die Korrektur des Netzes klingt fern der gelernten Bedingungen ab); messen Sie Teile, die unter diesen Bedingungen geschnitten wurden</translation>
+    </message>
+    <message>
+        <source>spindle speed %1 rpm, feed %2 mm/rev, passive force %3 N, %4 min since start, ambient %5 °C, diameter %6 mm, z %7 mm</source>
+        <translation>Spindeldrehzahl %1 1/min, Vorschub %2 mm/U, Passivkraft %3 N, %4 min seit Start, Umgebung %5 °C, Durchmesser %6 mm, z %7 mm</translation>
+    </message>
+    <message>
+        <source>passive force [N]</source>
+        <translation>Passivkraft [N]</translation>
+    </message>
+    <message>
+        <source>time since start [min]</source>
+        <translation>Zeit seit Start [min]</translation>
+    </message>
+    <message>
+        <source>ambient temperature [°C]</source>
+        <translation>Umgebungstemperatur [°C]</translation>
     </message>
 </context>
 <context>

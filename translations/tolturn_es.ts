@@ -2242,12 +2242,24 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>sin la pieza %1: %2</translation>
     </message>
     <message>
-        <source>spindle speed %1 rpm, feed %2 mm/rev, diameter %3 mm, z %4 mm</source>
-        <translation>velocidad del husillo %1 rpm, avance %2 mm/rev, diámetro %3 mm, z %4 mm</translation>
-    </message>
-    <message>
         <source>This plan is cut at other conditions than the parts the learned model was measured on: %1. There what was learned is extrapolated (a condition the parts did not vary is taken to have no effect, and the network&apos;s correction fades away from the conditions it learned at); measure parts cut at these conditions</source>
         <translation>Este plan se corta en otras condiciones que las piezas con las que se midió el modelo aprendido: %1. Allí lo aprendido se extrapola (una condición que las piezas no variaron se considera sin efecto, y la corrección de la red se desvanece lejos de las condiciones aprendidas); mida piezas cortadas en estas condiciones</translation>
+    </message>
+    <message>
+        <source>spindle speed %1 rpm, feed %2 mm/rev, passive force %3 N, %4 min since start, ambient %5 °C, diameter %6 mm, z %7 mm</source>
+        <translation>velocidad del husillo %1 rpm, avance %2 mm/rev, fuerza pasiva %3 N, %4 min desde el arranque, ambiente %5 °C, diámetro %6 mm, z %7 mm</translation>
+    </message>
+    <message>
+        <source>passive force [N]</source>
+        <translation>fuerza pasiva [N]</translation>
+    </message>
+    <message>
+        <source>time since start [min]</source>
+        <translation>tiempo desde el arranque [min]</translation>
+    </message>
+    <message>
+        <source>ambient temperature [°C]</source>
+        <translation>temperatura ambiente [°C]</translation>
     </message>
 </context>
 <context>

@@ -19,9 +19,12 @@ struct LearnedModelJson {
 };
 
 // The keys of LearnedDomain in the model's "learned_from" object, each a [min, max] pair.
-constexpr std::array<std::pair<const char *, LearnedDomain::Span LearnedDomain::*>, 4> kDomainKeys{{
+constexpr std::array<std::pair<const char *, LearnedDomain::Span LearnedDomain::*>, 7> kDomainKeys{{
     {"spindle_speed_rpm", &LearnedDomain::spindleSpeed_rpm},
     {"feed_mm_rev", &LearnedDomain::feed_mm_rev},
+    {"passive_force_N", &LearnedDomain::passiveForce_N},
+    {"time_since_start_min", &LearnedDomain::timeSinceStart_min},
+    {"ambient_C", &LearnedDomain::ambient_C},
     {"diameter_mm", &LearnedDomain::diameter_mm},
     {"z_mm", &LearnedDomain::z_mm},
 }};

@@ -15,7 +15,8 @@ namespace tolturn {
 [[nodiscard]] QJsonObject learnedResidualJson(const LearnedResidual &learned);
 
 // The spans a model was learned at ("learned_from" in its JSON), each key a [min, max] pair:
-// spindle_speed_rpm, feed_mm_rev, diameter_mm, z_mm.
+// spindle_speed_rpm, feed_mm_rev, passive_force_N, time_since_start_min, ambient_C, diameter_mm,
+// z_mm.
 [[nodiscard]] QJsonObject learnedDomainJson(const LearnedDomain &domain);
 
 // Back from JSON; empty, with `error` naming the field, when a value is missing, not finite or of

@@ -164,8 +164,9 @@ stationSamples(const Project &project, const DeviationResult &deviation, const P
     return out;
 }
 
-// The spans of the conditions of `samples` (not empty): ResidualSample::inputs [0] spindle speed,
-// [1] feed, [7] z, and the programmed diameter.
+// The spans of the conditions of `samples` (not empty) as the network saw them (ResidualSample::
+// inputs: [0] spindle speed, [1] feed, [2] time since start, [3] ambient, [6] radial force, [7] z),
+// and the programmed diameter.
 LearnedDomain domainOf(const std::vector<ResidualSample> &samples)
 {
     const auto span = [&samples](const std::function<double(const ResidualSample &)> &of) {
@@ -176,10 +177,10 @@ LearnedDomain domainOf(const std::vector<ResidualSample> &samples)
         }
         return s;
     };
-    return {span([](const ResidualSample &r) { return r.predictionInputs[0]; }),
-            span([](const ResidualSample &r) { return r.predictionInputs[1]; }),
-            span([](const ResidualSample &r) { return r.diameter_mm; }),
-            span([](const ResidualSample &r) { return r.predictionInputs[7]; })};
+    const auto input = [&span](Eigen::Index i) { return span([i](const ResidualSample &r) { return r.inputs[i]; }); };
+    return {input(0), input(1), input(6),
+            input(2), input(3), span([](const ResidualSample &r) { return r.diameter_mm; }),
+            input(7)};
 }
 
 QString spanText(LearnedDomain::Span s, int decimals)
@@ -444,8 +445,10 @@ std::vector<std::vector<double>> learnedAtStations(const Project &project, const
 
 QString learnedDomainText(const LearnedDomain &domain)
 {
-    return MeasuredResiduals::tr("spindle speed %1 rpm, feed %2 mm/rev, diameter %3 mm, z %4 mm")
-        .arg(spanText(domain.spindleSpeed_rpm, 0), spanText(domain.feed_mm_rev, 3), spanText(domain.diameter_mm, 1),
+    return MeasuredResiduals::tr("spindle speed %1 rpm, feed %2 mm/rev, passive force %3 N, %4 min since start, "
+                                 "ambient %5 °C, diameter %6 mm, z %7 mm")
+        .arg(spanText(domain.spindleSpeed_rpm, 0), spanText(domain.feed_mm_rev, 3), spanText(domain.passiveForce_N, 0),
+             spanText(domain.timeSinceStart_min, 0), spanText(domain.ambient_C, 1), spanText(domain.diameter_mm, 1),
              spanText(domain.z_mm, 1));
 }
 
@@ -480,6 +483,9 @@ QString outsideLearnedDomain(const Project &project, const DeviationResult &devi
     // measured (a micrometer reading in the middle of each journal), which the plane in them spans.
     check(MeasuredResiduals::tr("spindle speed [rpm]"), plan.spindleSpeed_rpm, measured.spindleSpeed_rpm, 0);
     check(MeasuredResiduals::tr("feed [mm/rev]"), plan.feed_mm_rev, measured.feed_mm_rev, 3);
+    check(MeasuredResiduals::tr("passive force [N]"), plan.passiveForce_N, measured.passiveForce_N, 0);
+    check(MeasuredResiduals::tr("time since start [min]"), plan.timeSinceStart_min, measured.timeSinceStart_min, 0);
+    check(MeasuredResiduals::tr("ambient temperature [°C]"), plan.ambient_C, measured.ambient_C, 1);
     if (outside.isEmpty())
         return {};
     return MeasuredResiduals::tr("This plan is cut at other conditions than the parts the learned model was "

@@ -78,13 +78,17 @@ struct LearnedDomain {
 
     Span spindleSpeed_rpm;
     Span feed_mm_rev;
+    Span passiveForce_N; // the network's radial force input: the depth of cut shows in it
+    Span timeSinceStart_min;
+    Span ambient_C;
     Span diameter_mm;
     Span z_mm;
     friend bool operator==(const LearnedDomain &, const LearnedDomain &) = default;
 };
 
 // The spans in words, for the command line and the Measurements dock: "spindle speed 955–3183
-// rpm, feed 0.100–0.300 mm/rev, diameter 30.0–50.0 mm, z 40.0–146.0 mm".
+// rpm, feed 0.100–0.300 mm/rev, passive force 40–95 N, 0–240 min since start, ambient 18.0–26.0
+// °C, diameter 30.0–50.0 mm, z 40.0–146.0 mm".
 [[nodiscard]] QString learnedDomainText(const LearnedDomain &domain);
 
 // What was learned of a machine: the residual of the physics model = geometric error + an RBF
@@ -143,10 +147,10 @@ void addLearnedResidual(const Project &project, DeviationResult &deviation, cons
                         const ProgramTargets &targets);
 
 // Where the stations of the toleranced features of a deviation result of `project` are cut at other
-// conditions than `learned` was learned at (spindle speed and feed; beyond each span by more than a
-// tenth of it, or 1 % of its value where it is narrower): one line naming each with the plan's and
-// the measured parts' span, without a closing full stop; empty when none is or the model does not
-// record them.
+// conditions than `learned` was learned at (spindle speed, feed, passive force, time since start
+// and ambient temperature; beyond each span by more than a tenth of it, or 1 % of its value where
+// it is narrower): one line naming each with the plan's and the measured parts' span, without a
+// closing full stop; empty when none is or the model does not record them.
 [[nodiscard]] QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation,
                                            const LearnedResidual &learned);
 

@@ -692,7 +692,14 @@ private Q_SLOTS:
                                 .arg(nMin)
                                 .arg(nMax)));
 
-        Project plan = *parseProjectJson(parts.front().projectJson).project;
+        // The first part's plan, at its time since start and ambient temperature (which the parts
+        // record, not their snapshots).
+        const auto firstPartsPlan = [&parts] {
+            Project p = *parseProjectJson(parts.front().projectJson).project;
+            p.environment = {parts.front().ambient_C, parts.front().timeSinceStart_min};
+            return p;
+        };
+        Project plan = firstPartsPlan();
         const auto outside = [&](const Project &p) {
             return outsideLearnedDomain(p, computeDeviation(p, DataLibrary::builtIn(), {}), *learned);
         };
@@ -723,6 +730,30 @@ private Q_SLOTS:
         QVERIFY2(!said.contains(QStringLiteral("z [mm]")) && !said.contains(QStringLiteral("diameter")) &&
                      !said.contains(QStringLiteral("spindle speed")),
                  qPrintable(said));
+        // The network's other conditions: the time since start and the ambient temperature of the
+        // parts (the generated shop's 0–240 min and 18–26 °C), and the passive force, which a
+        // fourfold finishing depth takes beyond the parts'.
+        double tMin = 1e9, tMax = 0.0, aMin = 1e9, aMax = 0.0;
+        for (const MeasuredPart &part : parts) {
+            tMin = std::min(tMin, *part.timeSinceStart_min);
+            tMax = std::max(tMax, *part.timeSinceStart_min);
+            aMin = std::min(aMin, *part.ambient_C);
+            aMax = std::max(aMax, *part.ambient_C);
+        }
+        QCOMPARE(from.timeSinceStart_min.min, tMin);
+        QCOMPARE(from.timeSinceStart_min.max, tMax);
+        QCOMPARE(from.ambient_C.min, aMin);
+        QCOMPARE(from.ambient_C.max, aMax);
+        Project other = firstPartsPlan();
+        other.environment.ambientTemperature_C = aMax + 0.15 * (aMax - aMin);
+        QVERIFY2(outside(other).contains(QStringLiteral("ambient temperature [°C] %1–%1 (measured parts %2–%3)")
+                                             .arg(*other.environment.ambientTemperature_C, 0, 'f', 1)
+                                             .arg(aMin, 0, 'f', 1)
+                                             .arg(aMax, 0, 'f', 1)),
+                 qPrintable(outside(other)));
+        other = firstPartsPlan();
+        other.passes.back().depthOfCut_mm *= 4.0;
+        QVERIFY2(outside(other).contains(QStringLiteral("passive force [N]")), qPrintable(outside(other)));
         // The banner above the verdicts says it too.
         LoadedModel model;
         model.model = *learned;
