@@ -156,6 +156,7 @@ stationSamples(const Project &project, const DeviationResult &deviation, const P
         return out;
     for (const FeatureDeviation &f : deviation.features) {
         std::vector<std::optional<ResidualSample>> feature;
+        feature.reserve(f.stations.size());
         for (const Station &st : f.stations)
             feature.push_back(sampleAt(project, deviation, targets, f.featureId, st.z_mm,
                                        deviation.inputs->timeSinceStart_min, deviation.inputs->ambientTemperature_C));
@@ -436,6 +437,7 @@ std::vector<std::vector<double>> learnedAtStations(const Project &project, const
     std::vector<std::vector<double>> out;
     for (const std::vector<std::optional<ResidualSample>> &feature : stationSamples(project, deviation, targets)) {
         std::vector<double> learnedAt;
+        learnedAt.reserve(feature.size());
         for (const std::optional<ResidualSample> &s : feature)
             learnedAt.push_back(s ? learned.predict_mm(*s) : 0.0);
         out.push_back(std::move(learnedAt));
