@@ -454,7 +454,9 @@ QString learnedDomainText(const LearnedDomain &domain)
              spanText(domain.z_mm, 1));
 }
 
-QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation, const LearnedResidual &learned)
+// outsideLearnedDomain with the program's targets computed by the caller.
+static QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation,
+                                    const LearnedResidual &learned, const ProgramTargets &targets)
 {
     if (!learned.learnedFrom)
         return {};
@@ -463,7 +465,7 @@ QString outsideLearnedDomain(const Project &project, const DeviationResult &devi
     for (const Tolerance &t : project.tolerances)
         toleranced.insert(t.featureId);
     std::vector<ResidualSample> planned;
-    for (const auto &feature : stationSamples(project, deviation, programTargets(project)))
+    for (const auto &feature : stationSamples(project, deviation, targets))
         for (const std::optional<ResidualSample> &s : feature)
             if (s && toleranced.contains(s->featureId))
                 planned.push_back(*s);
@@ -497,6 +499,11 @@ QString outsideLearnedDomain(const Project &project, const DeviationResult &devi
         .arg(outside.join(QStringLiteral("; ")));
 }
 
+QString outsideLearnedDomain(const Project &project, const DeviationResult &deviation, const LearnedResidual &learned)
+{
+    return outsideLearnedDomain(project, deviation, learned, programTargets(project));
+}
+
 void addLearnedResidual(const Project &project, DeviationResult &deviation, const LearnedResidual &learned,
                         const ProgramTargets &targets)
 {
@@ -511,8 +518,9 @@ void addLearnedResidual(const Project &project, DeviationResult &deviation, cons
 DeviationResult withLearnedResidual(const Project &project, DeviationResult deviation, const LearnedResidual &learned,
                                     const QString &provenance)
 {
-    const QString outside = outsideLearnedDomain(project, deviation, learned);
-    addLearnedResidual(project, deviation, learned, programTargets(project));
+    const ProgramTargets targets = programTargets(project);
+    const QString outside = outsideLearnedDomain(project, deviation, learned, targets);
+    addLearnedResidual(project, deviation, learned, targets);
     if (deviation.inputs)
         deviation.inputs->notes << MeasuredResiduals::tr(
                                        "The predicted radius errors include what was learned from measured parts (%1): "

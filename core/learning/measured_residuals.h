@@ -67,8 +67,8 @@ struct GeometricError {
 };
 
 // The conditions the parts a model was learned from were cut and measured at, each as the smallest
-// and largest value among its points. The network is a sum of Gaussians: away from them it falls
-// back to the plane, so a prediction outside them gets little of what was learned.
+// and largest value among its points. Outside them what was learned is extrapolated: the network's
+// Gaussians fade away from them, and a condition the parts did not vary is taken to have no effect.
 struct LearnedDomain {
     struct Span {
         double min = 0.0;
@@ -156,7 +156,8 @@ void addLearnedResidual(const Project &project, DeviationResult &deviation, cons
 
 // The deviation result with what was learned added to every station's radius error (the
 // predicted machined radius then being physics + learned), and a note saying so, naming
-// `provenance` ("haas-st-20, model 3, 30 parts"). Faces keep the physics' conicity.
+// `provenance` ("haas-st-20, model 3, 30 parts"); a warning with the field "learned" where the plan
+// lies outside what was learned (outsideLearnedDomain). Faces keep the physics' conicity.
 [[nodiscard]] DeviationResult withLearnedResidual(const Project &project, DeviationResult deviation,
                                                   const LearnedResidual &learned, const QString &provenance);
 

@@ -32,8 +32,10 @@ SetupPrediction predictSetup(const Project &project, const DataLibrary &data, co
         p.learned = LearnedCurves{learnedAtStations(project, p.deviation, learned->model), learned->uncertainty_mm(),
                                   learned->provenance()};
         p.assumption = learnedAssumptionText(*learned);
-        if (const QString outside = outsideLearnedDomain(project, p.deviation, learned->model); !outside.isEmpty())
-            p.assumption += QStringLiteral(". ") + outside; // both without a full stop, which the report adds
+        // Where the plan lies outside what the model was learned at: withLearnedResidual said it.
+        for (const Diagnostic &d : p.range.compliant.diagnostics)
+            if (d.field == QLatin1String("learned")) // without its full stop, which the report adds
+                p.assumption += QStringLiteral(". ") + d.message.chopped(d.message.endsWith(QLatin1Char('.')) ? 1 : 0);
     } else {
         p.range = evaluateOverStiffnessRange(project, data);
         p.deviation = p.range.compliant;

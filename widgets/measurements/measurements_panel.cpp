@@ -432,7 +432,7 @@ QString MeasurementsPanel::modelText() const
                        .arg(r.points)
                        .arg(QString::number(r.physicsRms_mm * kUmPerMm, 'f', 1),
                             QString::number(r.learnedRms_mm * kUmPerMm, 'f', 1));
-    // Where it holds: away from these conditions the network falls back to its plane.
+    // Where it holds: away from these conditions what was learned is extrapolated.
     if (m_model->model.learnedFrom)
         text += QLatin1Char(' ') + tr("Learned at %1.").arg(learnedDomainText(*m_model->model.learnedFrom));
     return text;
