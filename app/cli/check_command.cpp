@@ -3,6 +3,7 @@
 
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
+#include "core/common/finding_groups.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -101,8 +102,9 @@ int runCheck(const QStringList &args, QTextStream &out, QTextStream &err)
                                        {QStringLiteral("diagnostics"), list}});
             continue;
         }
-        for (const Diagnostic &d : result.diagnostics)
-            err << file << ": " << d.toString() << '\n';
+        // A finding repeated on several passes is told once, with the passes it is on.
+        for (const FindingGroup &g : groupedByIndex(result.diagnostics))
+            err << file << ": " << groupText(g) << '\n';
         if (valid)
             out << file << ": " << CommandLine::tr("ok") << " — " << projectSummary(*result.project) << '\n';
     }

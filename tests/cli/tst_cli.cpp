@@ -2,6 +2,7 @@
 // tolturn-cli as a user runs it: the real binary, its output streams and exit codes.
 #include "tests/cli/cli_runner.h"
 
+#include "core/common/finding_groups.h"
 #include "core/cutting/cutting_forces.h"
 #include "core/io/project_file.h"
 
@@ -91,7 +92,45 @@ private Q_SLOTS:
                  qPrintable(r.err));
         QVERIFY(
             r.err.contains(QStringLiteral("hollow-sleeve-tailstock.tolturn: warning: passes[5].feed_mm_rev: 0.08")));
+        // The stepped shaft roughs in passes 0–7, all at 200 m/min, below the range's 201.2 m/min: one
+        // line for the eight passes, not eight lines.
+        QVERIFY2(r.err.contains(QStringLiteral("stepped-shaft-chuck.tolturn: warning: passes[0–7].cutting_speed_m_min: "
+                                               "200 m/min is outside the insert's published range 201.2–353.6")),
+                 qPrintable(r.err));
+        QCOMPARE(r.err.count(QStringLiteral("stepped-shaft-chuck.tolturn: warning: passes[")), 2);
         QVERIFY(!r.err.contains(QStringLiteral("error")));
+    }
+
+    // Findings alike but for the index of their array are told once; different messages, members,
+    // severities or arrays stay apart, and the indices are listed as met.
+    void repeatedFindingsAreToldOnce()
+    {
+        using tolturn::makeError;
+        using tolturn::makeWarning;
+        const tolturn::Diagnostics findings{
+            makeWarning(QStringLiteral("passes[3].feed_mm_rev"), QStringLiteral("low")),
+            makeWarning(QStringLiteral("material"), QStringLiteral("unknown")),
+            makeWarning(QStringLiteral("passes[1].feed_mm_rev"), QStringLiteral("low")),
+            makeWarning(QStringLiteral("passes[2].feed_mm_rev"), QStringLiteral("high")),
+            makeError(QStringLiteral("passes[4].feed_mm_rev"), QStringLiteral("low")),
+            makeWarning(QStringLiteral("passes[5].depth_of_cut_mm"), QStringLiteral("low")),
+            makeWarning(QStringLiteral("further_operations[5].feed_mm_rev"), QStringLiteral("low")),
+            makeWarning(QStringLiteral("passes[7].feed_mm_rev"), QStringLiteral("low")),
+        };
+        const std::vector<tolturn::FindingGroup> groups = tolturn::groupedByIndex(findings);
+        QStringList lines;
+        for (const tolturn::FindingGroup &g : groups)
+            lines << tolturn::groupText(g);
+        QCOMPARE(lines, QStringList({QStringLiteral("warning: passes[3, 1, 7].feed_mm_rev: low"),
+                                     QStringLiteral("warning: material: unknown"),
+                                     QStringLiteral("warning: passes[2].feed_mm_rev: high"),
+                                     QStringLiteral("error: passes[4].feed_mm_rev: low"),
+                                     QStringLiteral("warning: passes[5].depth_of_cut_mm: low"),
+                                     QStringLiteral("warning: further_operations[5].feed_mm_rev: low")}));
+        QCOMPARE(tolturn::numberList({2, 3, 4, 5}), QStringLiteral("2–5"));
+        QCOMPARE(tolturn::numberList({2, 3}), QStringLiteral("2, 3"));
+        QCOMPARE(tolturn::numberList({2, 4, 5}), QStringLiteral("2, 4, 5"));
+        QCOMPARE(tolturn::numberList({1, 0, 5, 4}), QStringLiteral("1, 0, 5, 4")); // ends 4 apart, not a run
     }
 
     // Names that the data library does not know are errors of check, each naming what it has.

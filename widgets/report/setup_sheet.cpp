@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/report/setup_sheet.h"
 
+#include "core/common/finding_groups.h"
 #include "core/data/data_library.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
@@ -42,17 +43,6 @@ QString fieldWords(const QString &key)
 }
 
 // "1-8", "1, 3", "2".
-QString passNumbers(const std::vector<int> &numbers)
-{
-    const bool consecutive = numbers.back() - numbers.front() + 1 == static_cast<int>(numbers.size());
-    if (numbers.size() > 2 && consecutive)
-        return QStringLiteral("%1–%2").arg(numbers.front()).arg(numbers.back());
-    QStringList list;
-    for (int n : numbers)
-        list << QString::number(n);
-    return list.join(QStringLiteral(", "));
-}
-
 QPainterPath silhouette(const Project &project, const std::function<QPointF(double, double)> &at)
 {
     QPainterPath path;
@@ -160,28 +150,24 @@ void setupSheet(Layout &l, const Project &p, const FinishingOutput &finishing)
 
 QStringList findingsInWords(const Diagnostics &findings)
 {
-    static const QRegularExpression passField(QStringLiteral("^passes\\[(\\d+)\\]\\.(\\w+)$"));
-    std::vector<std::pair<QString, std::vector<int>>> grouped; // (severity, what, message) -> pass numbers
     QStringList out;
-    for (const Diagnostic &d : findings) {
+    for (const FindingGroup &g : groupedByIndex(findings)) {
+        const Diagnostic &d = g.finding;
         const QString severity = d.severity == Severity::Error ? SetupSheet::tr("Error") : SetupSheet::tr("Warning");
-        const auto m = passField.match(d.field);
-        if (!m.hasMatch()) {
-            out << QStringLiteral("%1: %2 %3").arg(severity, fieldWords(d.field), d.message);
+        if (g.array != QLatin1String("passes")) {
+            for (const int i : g.indices.empty() ? std::vector<int>{-1} : g.indices) {
+                const QString field = i < 0 ? d.field : QStringLiteral("%1[%2].%3").arg(g.array).arg(i).arg(g.member);
+                out << QStringLiteral("%1: %2 %3").arg(severity, fieldWords(field), d.message);
+            }
             continue;
         }
-        const QString key = severity + QLatin1Char('\n') + fieldWords(m.captured(2)) + QLatin1Char('\n') + d.message;
-        auto it = std::find_if(grouped.begin(), grouped.end(), [&](const auto &g) { return g.first == key; });
-        if (it == grouped.end())
-            grouped.push_back({key, {}});
-        it = std::find_if(grouped.begin(), grouped.end(), [&](const auto &g) { return g.first == key; });
-        it->second.push_back(m.captured(1).toInt() + 1);
-    }
-    for (const auto &[key, numbers] : grouped) {
-        const QStringList parts = key.split(QLatin1Char('\n'));
+        std::vector<int> numbers; // pass numbers count from 1
+        numbers.reserve(g.indices.size());
+        for (const int i : g.indices)
+            numbers.push_back(i + 1);
         const QString passes = numbers.size() == 1 ? SetupSheet::tr("pass %1").arg(numbers.front())
-                                                   : SetupSheet::tr("passes %1").arg(passNumbers(numbers));
-        out << QStringLiteral("%1 (%2): %3 %4").arg(parts.at(0), passes, parts.at(1), parts.at(2));
+                                                   : SetupSheet::tr("passes %1").arg(numberList(numbers));
+        out << QStringLiteral("%1 (%2): %3 %4").arg(severity, passes, fieldWords(g.member), d.message);
     }
     return out;
 }
