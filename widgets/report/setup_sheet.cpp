@@ -7,6 +7,7 @@
 #include "core/tooling/iso1832.h"
 
 #include <QCoreApplication>
+#include <QFontMetricsF>
 #include <QPainterPath>
 #include <QRegularExpression>
 
@@ -42,18 +43,19 @@ QString fieldWords(const QString &key)
     return words.replace(QLatin1Char('_'), QLatin1Char(' '));
 }
 
-// "1-8", "1, 3", "2".
-QPainterPath silhouette(const Project &project, const std::function<QPointF(double, double)> &at)
+// The section of segments [first, last) mirrored about the axis: the part's outline, or a bore's.
+QPainterPath silhouette(const std::vector<Segment> &segments, std::size_t first, std::size_t last,
+                        const std::function<QPointF(double, double)> &at)
 {
     QPainterPath path;
-    const std::vector<Segment> &outer = project.part.outer.segments;
-    if (outer.empty())
+    if (first >= last)
         return path;
-    path.moveTo(at(outer.front().from.z_mm, outer.front().from.r_mm));
-    for (const Segment &s : outer)
-        path.lineTo(at(s.to.z_mm, s.to.r_mm));
-    for (std::size_t i = outer.size(); i-- > 0;) // clang 14 cannot use views::reverse
-        path.lineTo(at(outer[i].from.z_mm, -outer[i].from.r_mm));
+    path.moveTo(at(segments[first].from.z_mm, segments[first].from.r_mm));
+    for (std::size_t i = first; i < last; ++i)
+        path.lineTo(at(segments[i].to.z_mm, segments[i].to.r_mm));
+    path.lineTo(at(segments[last - 1].to.z_mm, -segments[last - 1].to.r_mm));
+    for (std::size_t i = last; i-- > first;) // clang 14 cannot use views::reverse
+        path.lineTo(at(segments[i].from.z_mm, -segments[i].from.r_mm));
     path.closeSubpath();
     return path;
 }
@@ -75,19 +77,26 @@ void drawClamping(QPainter &painter, const QRectF &rect, const Project &project)
     const double radius = 0.5 * project.part.stockDiameter_mm;
     if (length <= 0.0 || radius <= 0.0)
         return;
+    painter.save();
+    painter.setFont(font(7.5));
+    // The chuck body spans ±1.5 R; a line of text below it (the grip) must stay inside the block.
+    const double textHeight = QFontMetricsF(painter.font()).height() + 2.0;
     const double margin = 0.14 * length;
-    const double scale = std::min(rect.width() / (length + 2.0 * margin), rect.height() / (3.2 * radius));
+    const double scale = std::min(rect.width() / (length + 2.0 * margin),
+                                  std::max(rect.height() - 2.0 * textHeight, 1.0) / (3.0 * radius));
     const QPointF origin(rect.center().x() - 0.5 * length * scale, rect.center().y());
     auto at = [&](double z, double r) { return QPointF(origin.x() + z * scale, origin.y() - r * scale); };
-    painter.save();
     painter.setPen(QPen(QColor(0x1f, 0x4e, 0x9a), 1.0));
     painter.setBrush(QColor(0xdd, 0xe6, 0xf2));
-    painter.drawPath(silhouette(project, at));
+    const std::vector<Segment> &outer = project.part.outer.segments;
+    painter.drawPath(silhouette(outer, 0, outer.size(), at));
+    painter.setBrush(Qt::white);
+    for (const auto &[first, last] : project.part.inner.pieces()) // the bores
+        painter.drawPath(silhouette(project.part.inner.segments, first, last, at));
     painter.setPen(QPen(QColor(0xcc, 0x33, 0x33), 0.6, Qt::DashDotLine));
     painter.drawLine(at(-0.5 * margin, 0.0), at(length + 0.5 * margin, 0.0)); // axis
     painter.setPen(QPen(Qt::black, 0.8));
     painter.setBrush(QColor(0x99, 0x99, 0x99));
-    painter.setFont(font(7.5));
     const ClampingMethod method = project.clamping.method;
     const double grip = project.clamping.clampedLength_mm;
     if (method != ClampingMethod::BetweenCentres) {
@@ -97,10 +106,11 @@ void drawClamping(QPainter &painter, const QRectF &rect, const Project &project)
             painter.drawRect(QRectF(at(0.0, side * (gripRadius + jaw)), at(grip, side * gripRadius)).normalized());
         painter.setBrush(QColor(0xbb, 0xbb, 0xbb));
         painter.drawRect(QRectF(at(-margin * 0.6, 1.5 * radius), at(0.0, -1.5 * radius)).normalized()); // chuck body
-        painter.drawText(
-            QRectF(at(-margin, -1.55 * radius), QSizeF(rect.width() / 2.0, 12)), Qt::AlignLeft | Qt::AlignTop,
-            method == ClampingMethod::Collet ? SetupSheet::tr("collet: %1 mm held").arg(num(grip, 1))
-                                             : SetupSheet::tr("chuck: %1 mm in the jaws").arg(num(grip, 1)));
+        painter.drawText(QRectF(at(-margin, -1.5 * radius) + QPointF(0.0, 2.0), QSizeF(rect.width() / 2.0, textHeight)),
+                         Qt::AlignLeft | Qt::AlignTop,
+                         method == ClampingMethod::Collet
+                             ? SetupSheet::tr("collet: %1 mm held").arg(num(grip, 1))
+                             : SetupSheet::tr("chuck: %1 mm in the jaws").arg(num(grip, 1)));
     } else {
         drawCentre(painter, at(0.0, 0.0), 0.35 * margin * scale, true);
         painter.drawText(QRectF(at(-margin, -1.1 * radius), QSizeF(scale * 2.0 * margin, 12)), Qt::AlignLeft,
