@@ -167,7 +167,7 @@ QStringList findingsInWords(const Diagnostics &findings)
         if (g.array != QLatin1String("passes")) {
             for (const int i : g.indices.empty() ? std::vector<int>{-1} : g.indices) {
                 const QString field = i < 0 ? d.field : QStringLiteral("%1[%2].%3").arg(g.array).arg(i).arg(g.member);
-                out << QStringLiteral("%1: %2 %3").arg(severity, fieldWords(field), d.message);
+                out << QStringLiteral("%1 (%2): %3").arg(severity, fieldWords(field), d.message);
             }
             continue;
         }

@@ -21,8 +21,9 @@ void drawClamping(QPainter &painter, const QRectF &rect, const Project &project)
 // The clamping drawing, the passes of the program and the program line.
 void setupSheet(Layout &layout, const Project &project, const FinishingOutput &finishing);
 
-// Findings in a machinist's words: "Passes 1-8: cutting speed 200 m/min is outside …" rather than
-// "passes[0].cutting_speed_m_min: …", equal findings of several passes given once.
+// Findings in a machinist's words: "Warning (passes 1–8): cutting speed 200 m/min is outside …" rather
+// than "passes[0].cutting_speed_m_min: …", equal findings of several passes given once; other fields
+// in brackets the same way: "Warning (boring tool): the part has bores but …".
 [[nodiscard]] QStringList findingsInWords(const Diagnostics &findings);
 
 } // namespace tolturn::report

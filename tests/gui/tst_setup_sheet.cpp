@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The report's clamping sketch (set-up sheet) drawn into an image: it stays inside the block the
+// The report's set-up sheet. Its clamping sketch drawn into an image: it stays inside the block the
 // report gives it (the grip's label too), a bore is drawn open and the section is mirrored about
-// the axis, for each kind of clamping.
+// the axis, for each kind of clamping. Its findings in words, as a machinist reads them.
 #include "tests/core/test_support.h"
 
 #include "widgets/report/setup_sheet.h"
@@ -58,7 +58,7 @@ int asymmetricPixels(const QImage &image, int rows)
 
 } // namespace
 
-class TestReportDrawing : public QObject {
+class TestSetupSheet : public QObject {
     Q_OBJECT
 private Q_SLOTS:
 
@@ -96,7 +96,29 @@ private Q_SLOTS:
                  qPrintable(QString::number(asymmetricPixels(sleeve, rows))));
         QVERIFY(asymmetricPixels(shaft, rows) < rows * 480 / 100);
     }
+
+    // Written out by hand: the passes counted from 1 and a run of them given once, other fields named
+    // in words in brackets before the message (not run into it: "Warning: boring tool the part has
+    // bores"), in the findings' order.
+    void findingsAreToldInWords()
+    {
+        Diagnostics findings;
+        for (int i = 0; i < 8; ++i)
+            findings.push_back(makeWarning(QStringLiteral("passes[%1].cutting_speed_m_min").arg(i),
+                                           QStringLiteral("200 m/min is outside the range")));
+        findings.push_back(makeWarning(QStringLiteral("passes[8].feed_mm_rev"), QStringLiteral("0.1 mm/rev is low")));
+        findings.push_back(makeWarning(QStringLiteral("boring_tool"), QStringLiteral("the part has bores")));
+        findings.push_back(makeError(QStringLiteral("boring_tool.overhang_mm"), QStringLiteral("300 mm is long")));
+        const QStringList words = report::findingsInWords(findings);
+        const QStringList expected{
+            QStringLiteral("Warning (passes 1–8): cutting speed 200 m/min is outside the range"),
+            QStringLiteral("Warning (pass 9): feed 0.1 mm/rev is low"),
+            QStringLiteral("Warning (boring tool): the part has bores"),
+            QStringLiteral("Error (tool overhang): 300 mm is long"),
+        };
+        QCOMPARE(words, expected);
+    }
 };
 
-QTEST_MAIN(TestReportDrawing)
-#include "tst_report_drawing.moc"
+QTEST_MAIN(TestSetupSheet)
+#include "tst_setup_sheet.moc"
