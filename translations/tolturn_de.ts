@@ -5533,10 +5533,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>nicht auswertbar</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2</source>
-        <translation>ISO 1101 Flächenform, mit Bezügen (die Zone liegt fest): jedes delta_n innerhalb ±t/2</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
         <translation>ISO 1101 Flächenform, ohne Bezug (die Zone schwimmt längs der Achse): 2 min über dz von max |delta_n - dz n_z| &lt;= t</translation>
     </message>
@@ -5567,6 +5563,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>a constant tool offset of %1 µm on the diameter centres the size in the %2 µm zone that all of the feature&apos;s size tolerances allow</source>
         <translation>eine konstante Werkzeugkorrektur von %1 µm auf den Durchmesser zentriert das Maß in der %2 µm breiten Zone, die alle Maßtoleranzen des Formelements zulassen</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile to a datum axis only (the zone may slide along it): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
+        <translation>ISO 1101 Flächenform, nur zu einer Bezugsachse (die Zone darf längs ihr gleiten): 2 min über dz von max |delta_n - dz n_z| &lt;= t</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with a datum that locates it along the axis: every delta_n within ±t/2</source>
+        <translation>ISO 1101 Flächenform, mit einem Bezug, der sie längs der Achse festlegt: jedes delta_n innerhalb ±t/2</translation>
     </message>
 </context>
 <context>

@@ -5533,10 +5533,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no se puede evaluar</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2</source>
-        <translation>ISO 1101 forma de superficie, con referencias (la zona está situada): cada delta_n dentro de ±t/2</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
         <translation>ISO 1101 forma de superficie, sin referencia (la zona flota a lo largo del eje): 2 min sobre dz de max |delta_n - dz n_z| &lt;= t</translation>
     </message>
@@ -5567,6 +5563,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>a constant tool offset of %1 µm on the diameter centres the size in the %2 µm zone that all of the feature&apos;s size tolerances allow</source>
         <translation>una corrección constante de la herramienta de %1 µm en el diámetro centra la medida en la zona de %2 µm que permiten todas las tolerancias de tamaño del elemento</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile to a datum axis only (the zone may slide along it): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
+        <translation>ISO 1101 forma de superficie, solo respecto a un eje de referencia (la zona puede deslizarse a lo largo de él): 2 min sobre dz de max |delta_n - dz n_z| &lt;= t</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, with a datum that locates it along the axis: every delta_n within ±t/2</source>
+        <translation>ISO 1101 forma de superficie, con una referencia que la sitúa a lo largo del eje: cada delta_n dentro de ±t/2</translation>
     </message>
 </context>
 <context>

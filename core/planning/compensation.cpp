@@ -78,7 +78,7 @@ CompensationPlan planCompensation(const Project &project, const DeviationResult 
             if (t.featureId != f.featureId)
                 continue;
             c.tolerances << t.id;
-            locatedProfile = locatedProfile || (t.type == ToleranceType::Profile && !t.datums.isEmpty());
+            locatedProfile = locatedProfile || (t.type == ToleranceType::Profile && profileZoneIsLocated(project, t));
             const int s = severity(verdicts[i].verdict);
             if (s > worst)
                 worst = s;

@@ -298,12 +298,12 @@ std::pair<double, double> centringRadialShift_um(const std::vector<std::pair<dou
 
 // Profile of a line or surface (ISO 1101:2017 clause 18, definitions of the line and surface profile tolerances; Valiño
 // et al. 2008 Fig. 4e). The deviation is taken normal to the surface: the radial one times cos(alpha), alpha the angle
-// of the surface to the axis at the station. Without datums the zone floats: it may sit anywhere, so the spread of the
-// normal deviations must fit in t. With datums the zone is located on the theoretically exact profile, which the
-// program follows: every normal deviation lies within ±t/2. The paper's eq. 22, delta_TMd + delta_Tmd <= t /
-// cos(alpha), is only necessary for either and is not used (MODEL §3).
+// of the surface to the axis at the station. Without datums, or to a datum axis only (a datum cylinder), the zone may
+// slide along the axis. With a datum that fixes a point on the axis (profileZoneIsLocated) the zone is located on the
+// theoretically exact profile, which the program follows: every normal deviation lies within ±t/2. The paper's eq. 22,
+// delta_TMd + delta_Tmd <= t / cos(alpha), is only necessary for either and is not used (MODEL §3).
 void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const FeatureRef &feature,
-                     const DeviationResult &r, ToleranceEvaluation &e)
+                     const DeviationResult &r, bool located, ToleranceEvaluation &e)
 {
     const FeatureDeviation *f = stationsOf(r, t.featureId);
     if (!f) {
@@ -333,25 +333,29 @@ void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const Fe
         normalAndCos.emplace_back(normal, 1.0 / std::sqrt(1.0 + slope * slope));
     }
     const double zone = t.zone_um.value_or(0.0);
-    if (t.datums.isEmpty()) {
+    if (!located) {
         const double floating = floatingZoneWidth_um(normals);
         setValue(e, floating, zone);
         e.verdict = floating <= zone ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
         say(e.condition, [&] {
-            return QString(ToleranceVerdicts::tr(
-                "ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max "
-                "|delta_n - dz n_z| <= t"));
+            return t.datums.isEmpty()
+                       ? QString(ToleranceVerdicts::tr(
+                             "ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz "
+                             "of max |delta_n - dz n_z| <= t"))
+                       : QString(ToleranceVerdicts::tr(
+                             "ISO 1101 surface profile to a datum axis only (the zone may slide along it): 2 min "
+                             "over dz of max |delta_n - dz n_z| <= t"));
         });
         return;
     }
     // Located zone: the deciding value is twice the largest distance from the exact profile.
-    const double located = 2.0 * std::max(std::abs(largest), std::abs(smallest));
-    setValue(e, located, zone);
-    if (located <= zone) {
+    const double fromExact = 2.0 * std::max(std::abs(largest), std::abs(smallest));
+    setValue(e, fromExact, zone);
+    if (fromExact <= zone) {
         e.verdict = Verdict::PassesAsProgrammed;
         say(e.condition, [&] {
             return QString(ToleranceVerdicts::tr(
-                "ISO 1101 surface profile, with datums (the zone is located): every delta_n within ±t/2"));
+                "ISO 1101 surface profile, with a datum that locates it along the axis: every delta_n within ±t/2"));
         });
         return;
     }
@@ -437,7 +441,7 @@ ToleranceEvaluation evaluateOne(const Project &p, const ProgramTargets &targets,
         evaluateRadialSpread(t, r, e, ToleranceVerdicts::tr("Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| <= t"));
         break;
     case ToleranceType::Profile:
-        evaluateProfile(targets, t, *feature, r, e);
+        evaluateProfile(targets, t, *feature, r, profileZoneIsLocated(p, t), e);
         break;
     case ToleranceType::Coaxiality:
         notPredicted(e, ToleranceVerdicts::tr(
@@ -497,6 +501,16 @@ std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, cons
         refuseNonFinite(out.back());
     }
     return out;
+}
+
+bool profileZoneIsLocated(const Project &project, const Tolerance &tolerance)
+{
+    return std::any_of(project.datums.begin(), project.datums.end(), [&](const Datum &d) {
+        if (!tolerance.datums.contains(d.label))
+            return false;
+        const auto feature = findFeature(project.part, d.featureId);
+        return feature && feature->segment->kind != SegmentKind::Cylinder;
+    });
 }
 
 QString verdictKeyword(Verdict verdict)

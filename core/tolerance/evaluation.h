@@ -57,6 +57,12 @@ enum class EvaluationDetail {
                                                                   EvaluationDetail detail = EvaluationDetail::WithText,
                                                                   const ProgramTargets *targets = nullptr);
 
+// Whether a profile tolerance's zone is located along the axis (ISO 1101:2017 clause 18; ISO 5459:2011,
+// the invariance classes of datum features): a datum on a face (a plane), a cone, a chamfer or a round
+// (which each fix a point on the axis) holds the zone where the exact profile is. A datum on a
+// cylinder is only an axis: the zone may still slide along it, as without a datum.
+[[nodiscard]] bool profileZoneIsLocated(const Project &project, const Tolerance &tolerance);
+
 [[nodiscard]] QString verdictKeyword(Verdict verdict); // "passes", "passes_after_offset", ...
 [[nodiscard]] QString verdictName(Verdict verdict);    // for people, translated
 

@@ -423,7 +423,8 @@ private Q_SLOTS:
 
     // A located profile the compensated program must bring into its zone lands there when that program
     // is "machined" through the model. The stepped shaft's taper O5 (Ø50 at z 80 to Ø40 at z 90,
-    // tan(alpha) = 0.5, cos(alpha) = 1/sqrt(1.25)) to datum A: its plain program moves with the h6 and
+    // tan(alpha) = 0.5, cos(alpha) = 1/sqrt(1.25)) to datums A (the axis of O4) and B (the shoulder face
+    // O3, which locates the zone along the axis): its plain program moves with the h6 and
     // g6 sizes beside it, so its normal deviation from the exact profile lies outside the zone as
     // programmed. With 8 µm a constant offset suffices, with 3 µm the profile is corrected. At each
     // station the cut radius is the programmed one (read from the program's moves along the taper)
@@ -450,7 +451,8 @@ private Q_SLOTS:
         const auto t3 = std::find_if(p.tolerances.begin(), p.tolerances.end(),
                                      [](const Tolerance &t) { return t.id == QLatin1String("T3"); });
         QVERIFY(t3 != p.tolerances.end());
-        t3->datums = {QStringLiteral("A")};
+        p.datums.push_back({QStringLiteral("B"), QStringLiteral("O3")}); // the shoulder face at z 35
+        t3->datums = {QStringLiteral("A"), QStringLiteral("B")};
         t3->zone_um = zone;
         const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
         const std::vector<ToleranceEvaluation> verdicts = evaluateTolerances(p, d);

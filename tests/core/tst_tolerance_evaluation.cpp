@@ -164,7 +164,10 @@ private Q_SLOTS:
     // 0.894427), ISO 1101: the radial error runs linearly from -1 µm to +4 µm, so the normal deviation
     // from -0.894427 to +3.577709 µm (spread 4.472136 µm).
     // Without a datum the zone floats: the spread must fit, 4.472 <= 5 passes, <= 4.4 does not.
-    // With datum A the zone is located on the programmed profile: every delta_n within ±t/2, i.e.
+    // Datum A is the cylinder O2, an axis only: the zone may still slide along it, so the value is the
+    // floating one (ISO 5459: a cylinder fixes no point on its axis).
+    // With datum B (the face O1, a plane that fixes the zone along the axis) the zone is located on the
+    // programmed profile: every delta_n within ±t/2, i.e.
     // 2 x 3.577709 = 7.155418 <= t. With t = 5 it fails as programmed but the spread fits: a normal
     // offset of -(3.577709 - 0.894427)/2 = -1.341641 µm centres it, which is the radius moved by
     // -1.341641 / cos(alpha) = -1.5 µm (the middle of -1 … +4), -3 µm on the diameter. The paper's
@@ -179,7 +182,12 @@ private Q_SLOTS:
         QVERIFY(std::abs(*floating.value_um - 4.472136) < 1e-5);
         QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 4.4), r).verdict, Verdict::NeedsProfileCorrection);
 
-        const QStringList a{QStringLiteral("A")};
+        const ToleranceEvaluation toAnAxis =
+            evaluate(geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("A")}), r);
+        QCOMPARE(toAnAxis.verdict, Verdict::PassesAsProgrammed);
+        QVERIFY(std::abs(*toAnAxis.value_um - 4.472136) < 1e-5);
+
+        const QStringList a{QStringLiteral("A"), QStringLiteral("B")};
         const ToleranceEvaluation located = evaluate(geometric(ToleranceType::Profile, "O3", 5, a), r);
         QCOMPARE(located.verdict, Verdict::PassesAfterOffset);
         QVERIFY(std::abs(*located.value_um - 7.155418) < 1e-5);
@@ -216,14 +224,15 @@ private Q_SLOTS:
     // The program aims at the target contour: with Ø50 h6 on O2 (middle of the zone -8 µm on the
     // diameter) the cone O3 moves with its cylinder by -4 µm on the radius at both ends (its right end
     // meets only the face O4). With no deflection its normal deviation is -4 cos(alpha) = -3.577709 µm
-    // everywhere: a floating zone takes it (spread 0), a located one of 5 µm does not (2 x 3.5777 =
+    // everywhere: a floating zone takes it (spread 0), so does one to datum A (an axis), a zone located
+    // by the face B of 5 µm does not (2 x 3.5777 =
     // 7.155418 µm), but a constant normal offset of +3.577709 µm centres it: the radius moved back by
     // the 4 µm, +8 µm on the diameter.
     void profileFollowsTheProgrammedContour()
     {
         Project p = part();
         Tolerance h6 = diameter("h6");
-        Tolerance located = geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("A")});
+        Tolerance located = geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("B")});
         located.id = QStringLiteral("P");
         p.tolerances = {h6, located};
         DeviationResult r;
@@ -233,6 +242,8 @@ private Q_SLOTS:
         QCOMPARE(e.verdict, Verdict::PassesAfterOffset);
         QVERIFY(std::abs(*e.value_um - 7.155418) < 1e-5);
         QVERIFY2(std::abs(*e.offset_um - 8.0) < 1e-6, qPrintable(QString::number(*e.offset_um)));
+        p.tolerances.back().datums = QStringList{QStringLiteral("A")}; // an axis: the zone slides
+        QCOMPARE(evaluateTolerances(p, r).at(1).verdict, Verdict::PassesAsProgrammed);
         p.tolerances.back().datums.clear();
         QCOMPARE(evaluateTolerances(p, r).at(1).verdict, Verdict::PassesAsProgrammed);
     }
@@ -271,7 +282,7 @@ private Q_SLOTS:
         QCOMPARE(wide.at(1).verdict, Verdict::NeedsProfileCorrection);
     }
 
-    // A located profile on a round: a constant radial error of 3 µm on the R5 edge round (Ø50 at
+    // A profile on a round located by the face B: a constant radial error of 3 µm on the R5 edge round (Ø50 at
     // z 100, horizontal there; Ø40 at z 105, vertical there) is 3 µm normal to it at z 100 and 0 at
     // z 105, so 2 x 3 = 6 µm > t = 5 as programmed. Moving the programmed radius by -3 µm (-6 µm on
     // the diameter) takes every normal deviation to 0: it passes after that offset. (Half the normal
@@ -279,7 +290,7 @@ private Q_SLOTS:
     void locatedProfileOfARoundTakesARadialOffset()
     {
         Project p = partWithRound();
-        p.tolerances = {geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("A")})};
+        p.tolerances = {geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("B")})};
         DeviationResult r;
         r.features = {curve("O3", SegmentKind::Radius, 100, 105, [](double) { return 3.0; })};
         const ToleranceEvaluation e = evaluateTolerances(p, r).front();
