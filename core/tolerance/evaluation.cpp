@@ -50,12 +50,15 @@ const FaceConicity *faceOf(const DeviationResult &r, const QString &id)
     return nullptr;
 }
 
-// Extremes of the radius error along a feature [µm].
+// Extremes of the radius error along a feature [µm]; not a number when a station's is not finite
+// (std::min and std::max would pass over it, and the rest would decide; refuseNonFinite refuses it).
 std::pair<double, double> radiusErrorRange_um(const FeatureDeviation &f)
 {
     double lo = 1e300;
     double hi = -1e300;
     for (const Station &st : f.stations) {
+        if (!std::isfinite(st.radiusError_mm))
+            return {std::nan(""), std::nan("")};
         lo = std::min(lo, st.radiusError_mm * kUmPerMm);
         hi = std::max(hi, st.radiusError_mm * kUmPerMm);
     }
@@ -134,7 +137,7 @@ void evaluateDiameter(const ProgramTargets &targets, const Tolerance &t, const F
     e.predictedMin_um = programmed + 2.0 * lo;
     const double tolerance = *e.upper_um - *e.lower_um;
     const double form = *e.predictedMax_um - *e.predictedMin_um;
-    setValue(e, form, tolerance);
+    setValue(e, form, aimUpper - aimLower); // the zone the form must fit: the one all size tolerances allow
     if (*e.predictedMax_um <= *e.upper_um && *e.predictedMin_um >= *e.lower_um) {
         e.verdict = Verdict::PassesAsProgrammed;
         say(e.condition,
@@ -327,6 +330,10 @@ void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const Fe
         const double aimed = targetRadius_mm(target, t.featureId, st.z_mm).value_or(nominal);
         const double deviation = st.radiusError_mm + aimed - nominal;
         const double normal = deviation * kUmPerMm / std::sqrt(1.0 + slope * slope); // delta cos(alpha)
+        if (!std::isfinite(normal)) {
+            setValue(e, normal, t.zone_um.value_or(0.0)); // refuseNonFinite refuses it
+            return;
+        }
         largest = std::max(largest, normal);
         smallest = std::min(smallest, normal);
         normals.emplace_back(normal, slope / std::sqrt(1.0 + slope * slope));

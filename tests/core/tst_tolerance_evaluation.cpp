@@ -278,8 +278,30 @@ private Q_SLOTS:
         r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -3.0 + 0.055 * z; })};
         const std::vector<ToleranceEvaluation> wide = evaluateTolerances(p, r);
         QVERIFY(std::abs(*wide.at(0).value_um - 11.0) < 1e-9);
+        // The limit is the zone the form must fit, 8 µm for both: 11/8 = 137.5 % used, not h6's 11/16.
+        for (const ToleranceEvaluation &e : wide) {
+            QCOMPARE(*e.limit_um, 8.0);
+            QVERIFY2(std::abs(*e.utilisation_pct - 137.5) < 1e-9, qPrintable(QString::number(*e.utilisation_pct)));
+        }
         QCOMPARE(wide.at(0).verdict, Verdict::NeedsProfileCorrection);
         QCOMPARE(wide.at(1).verdict, Verdict::NeedsProfileCorrection);
+    }
+
+    // One station whose deviation is not a number decides nothing: std::min and std::max skip a NaN, so
+    // the finite stations alone (1 µm everywhere: a pass) would have decided.
+    void aStationThatIsNotANumberDecidesNothing()
+    {
+        const auto oneNaN = [](double z) { return z == 50.0 || z == 105.0 ? std::nan("") : 1.0; };
+        DeviationResult r;
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, oneNaN),
+                      curve("O3", SegmentKind::Cone, 100, 110, oneNaN)};
+        QCOMPARE(evaluate(diameter("h6"), r).verdict, Verdict::CannotEvaluate);
+        QCOMPARE(evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), r).verdict, Verdict::CannotEvaluate);
+        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 5), r).verdict, Verdict::CannotEvaluate);
+        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("B")}), r).verdict,
+                 Verdict::CannotEvaluate);
+        r.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double) { return 1.0; })};
+        QCOMPARE(evaluate(diameter("h6"), r).verdict, Verdict::PassesAsProgrammed); // the same, all finite
     }
 
     // A profile on a round located by the face B: a constant radial error of 3 µm on the R5 edge round (Ø50 at
