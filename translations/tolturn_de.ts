@@ -712,6 +712,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>warning: %1: dropped with the passes it was on</source>
         <translation>Warnung: %1: mit den Schnitten entfernt, an denen es stand</translation>
     </message>
+    <message>
+        <source>the output &apos;%1&apos; is the input file &apos;%2&apos;: give another output file, so that the input is not overwritten</source>
+        <translation>die Ausgabe '%1' ist die Eingabedatei '%2': geben Sie eine andere Ausgabedatei an, damit die Eingabe nicht überschrieben wird</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

@@ -712,6 +712,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>warning: %1: dropped with the passes it was on</source>
         <translation>aviso: %1: eliminado con las pasadas en las que estaba</translation>
     </message>
+    <message>
+        <source>the output &apos;%1&apos; is the input file &apos;%2&apos;: give another output file, so that the input is not overwritten</source>
+        <translation>la salida '%1' es el archivo de entrada '%2': indique otro archivo de salida para que la entrada no se sobrescriba</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

@@ -11,6 +11,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileDevice>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -87,6 +88,19 @@ std::optional<Project> selectOperation(const Project &project, const QCommandLin
                    .arg(names.join(QStringLiteral(", ")), names.front())
             << '\n';
     return operationView(project, static_cast<int>(index));
+}
+
+QString overwritesInput(const QString &output, const QString &input)
+{
+    if (isStandardOutput(output))
+        return {};
+    const QFileInfo target(output);
+    const QFileInfo source(input);
+    if (!target.exists() || !source.exists() || target.canonicalFilePath() != source.canonicalFilePath())
+        return {};
+    return CommandLine::tr("the output '%1' is the input file '%2': give another output file, so that the input is "
+                           "not overwritten")
+        .arg(output, input);
 }
 
 QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out)

@@ -72,6 +72,10 @@ inline constexpr double kMaxLoad_N = 1e6;
     return path == QLatin1String("-");
 }
 
+// An error message when `output` is the file `input` (after symbolic links), which writing the
+// output would destroy; empty otherwise (also for "-" and for an output that does not exist yet).
+[[nodiscard]] QString overwritesInput(const QString &output, const QString &input);
+
 // Writes a command's output (text, or a PDF or STEP file) to a file atomically, or to standard
 // output for "-". Returns an error message, empty on success.
 [[nodiscard]] QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out);

@@ -135,6 +135,10 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     }
     options.nose = *handling;
     const QString file = parser.positionalArguments().constFirst();
+    if (const QString problem = overwritesInput(parser.value(output), file); !problem.isEmpty()) {
+        err << programName() << " gcode: " << problem << '\n';
+        return kExitUsage;
+    }
     const std::optional<Project> whole = readProject(file, err);
     if (!whole)
         return kExitProblems;

@@ -271,6 +271,10 @@ int runImport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
+    if (const QString problem = overwritesInput(parser.value(output), file); !problem.isEmpty()) {
+        err << programName() << " import: " << problem << '\n';
+        return kExitUsage;
+    }
     CadImportOptions options;
     options.flip = parser.isSet(flip);
     options.solidIndex = *solidIndex;
@@ -348,6 +352,10 @@ int runExportStep(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
+    if (const QString problem = overwritesInput(parser.value(output), file); !problem.isEmpty()) {
+        err << programName() << " export-step: " << problem << '\n';
+        return kExitUsage;
+    }
     const ProjectParseResult read = readProjectFile(file);
     for (const Diagnostic &d : read.diagnostics)
         err << file << ": " << d.toString() << '\n';

@@ -298,6 +298,12 @@ int runExport(const QStringList &args, QTextStream &out, QTextStream &err)
         err << prefix(action) << MeasurementsCommand::tr("give part numbers or --machine ID") << '\n';
         return kExitUsage;
     }
+    if (const QString problem =
+            overwritesInput(parser.value(QStringLiteral("output")), parser.value(QStringLiteral("store")));
+        !problem.isEmpty()) {
+        err << prefix(action) << problem << '\n';
+        return kExitUsage;
+    }
     std::vector<qint64> ids;
     for (const QString &text : parser.positionalArguments()) {
         const auto id = partId(text, action, err);

@@ -65,6 +65,10 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
+    if (const QString problem = overwritesInput(parser.value(output), file); !problem.isEmpty()) {
+        err << programName() << " report: " << problem << '\n';
+        return kExitUsage;
+    }
     const std::optional<Project> whole = readProject(file, err);
     if (!whole)
         return kExitProblems;

@@ -278,6 +278,24 @@ private Q_SLOTS:
         row("write of an infeasible plan", shaftWith(QStringLiteral("planning.max_ra_um"), 0.05),
             {QStringLiteral("optimize"), QStringLiteral("--write"), QStringLiteral("IN")}, 1,
             QStringLiteral("roughness"));
+        // An output that is the input (by another spelling of its path too) would destroy it.
+        const QByteArray project = QJsonDocument(shaft()).toJson();
+        const QString overInput = QStringLiteral("is the input file");
+        row("G-code over its project", project,
+            {QStringLiteral("gcode"), QStringLiteral("-o"), QStringLiteral("IN"), QStringLiteral("IN")}, 2, overInput);
+        row("report over its project", project,
+            {QStringLiteral("report"), QStringLiteral("-o"), QStringLiteral("DIR/./p.tolturn"), QStringLiteral("IN")},
+            2, overInput);
+        row("STEP over its project", project,
+            {QStringLiteral("export-step"), QStringLiteral("-o"), QStringLiteral("IN"), QStringLiteral("IN")}, 2,
+            overInput);
+        row("project over its STEP file", "ISO-10303-21;\n",
+            {QStringLiteral("import"), QStringLiteral("-o"), QStringLiteral("IN"), QStringLiteral("IN")}, 2, overInput,
+            QStringLiteral("part.step"));
+        row("CSV over its measurement store", "SQLite format 3",
+            {QStringLiteral("measurements"), QStringLiteral("export"), QStringLiteral("1"), QStringLiteral("--store"),
+             QStringLiteral("IN"), QStringLiteral("-o"), QStringLiteral("IN")},
+            2, overInput, QStringLiteral("m.sqlite"));
         row("optimiser time limit of zero", QJsonDocument(shaft()).toJson(),
             {QStringLiteral("optimize"), QStringLiteral("--time-limit"), QStringLiteral("0"), QStringLiteral("IN")}, 2,
             QStringLiteral("--time-limit is from 0.01 to 3600 seconds, not \"0\""));
