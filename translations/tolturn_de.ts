@@ -714,7 +714,7 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>the output &apos;%1&apos; is the input file &apos;%2&apos;: give another output file, so that the input is not overwritten</source>
-        <translation>die Ausgabe '%1' ist die Eingabedatei '%2': geben Sie eine andere Ausgabedatei an, damit die Eingabe nicht überschrieben wird</translation>
+        <translation>die Ausgabe &apos;%1&apos; ist die Eingabedatei &apos;%2&apos;: geben Sie eine andere Ausgabedatei an, damit die Eingabe nicht überschrieben wird</translation>
     </message>
 </context>
 <context>
@@ -4313,6 +4313,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the size tolerances of feature %1 allow no common size: one needs at most %2 µm, another at least %3 µm</source>
         <translation>die Maßtoleranzen des Formelements %1 lassen kein gemeinsames Maß zu: eine verlangt höchstens %2 µm, eine andere mindestens %3 µm</translation>
+    </message>
+    <message>
+        <source>%1 is below %2, the least the program can state; it would be written as zero</source>
+        <translation>%1 liegt unter %2, dem kleinsten Wert, den das Programm angeben kann; er würde als null geschrieben</translation>
     </message>
 </context>
 <context>

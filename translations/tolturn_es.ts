@@ -714,7 +714,7 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>the output &apos;%1&apos; is the input file &apos;%2&apos;: give another output file, so that the input is not overwritten</source>
-        <translation>la salida '%1' es el archivo de entrada '%2': indique otro archivo de salida para que la entrada no se sobrescriba</translation>
+        <translation>la salida &apos;%1&apos; es el archivo de entrada &apos;%2&apos;: indique otro archivo de salida para que la entrada no se sobrescriba</translation>
     </message>
 </context>
 <context>
@@ -4313,6 +4313,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the size tolerances of feature %1 allow no common size: one needs at most %2 µm, another at least %3 µm</source>
         <translation>las tolerancias de tamaño del elemento %1 no permiten un tamaño común: una exige como mucho %2 µm, otra al menos %3 µm</translation>
+    </message>
+    <message>
+        <source>%1 is below %2, the least the program can state; it would be written as zero</source>
+        <translation>%1 está por debajo de %2, el menor valor que el programa puede indicar; se escribiría como cero</translation>
     </message>
 </context>
 <context>

@@ -75,10 +75,19 @@ void checkPasses(const std::vector<CuttingPass> &passes, const QString &prefix, 
         const std::pair<const char *, double> values[] = {{"cutting_speed_m_min", pass.cuttingSpeed_m_min},
                                                           {"feed_mm_rev", pass.feed_mm_rev},
                                                           {"depth_of_cut_mm", pass.depthOfCut_mm}};
-        for (const auto &[name, value] : values) {
+        // The least the program can state (post_processor.cpp): G96 S in whole m/min, F and the
+        // coordinates in thousandths of a mm; less would be written as zero.
+        const double leastWritten[] = {1.0, 0.001, 0.001};
+        for (std::size_t k = 0; k < std::size(values); ++k) {
+            const auto &[name, value] = values[k];
             if (!std::isfinite(value) || value <= 0.0)
                 out.push_back(makeError(path + QLatin1String(name),
                                         ProjectValidation::tr("must be above zero, but is %1").arg(num(value))));
+            else if (value < leastWritten[k])
+                out.push_back(makeError(path + QLatin1String(name),
+                                        ProjectValidation::tr("%1 is below %2, the least the program can state; it "
+                                                              "would be written as zero")
+                                            .arg(num(value), num(leastWritten[k]))));
         }
     }
 }

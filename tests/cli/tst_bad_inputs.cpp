@@ -139,6 +139,12 @@ private Q_SLOTS:
         // Values out of their range, by type, or beyond the input bounds.
         row("negative feed", shaftWith(QStringLiteral("passes[8].feed_mm_rev"), -0.1), check, 1,
             QStringLiteral("passes[8].feed_mm_rev: must be above zero, but is -0.1"));
+        // Below the program's resolution (G96 S in whole m/min, F in thousandths): it would write F0.000, S0.
+        row("feed the program writes as zero", shaftWith(QStringLiteral("passes[8].feed_mm_rev"), 0.0004), check, 1,
+            QStringLiteral("passes[8].feed_mm_rev: 0.0004 is below 0.001, the least the program can state"));
+        row("speed the program writes as zero", shaftWith(QStringLiteral("passes[0].cutting_speed_m_min"), 0.4),
+            {QStringLiteral("gcode"), QStringLiteral("-o"), QStringLiteral("DIR/p.nc"), QStringLiteral("IN")}, 1,
+            QStringLiteral("passes[0].cutting_speed_m_min: 0.4 is below 1"));
         row("feed as text", shaftWith(QStringLiteral("passes[8].feed_mm_rev"), QStringLiteral("0.1")), check, 1,
             QStringLiteral("passes[8].feed_mm_rev"));
         row("depth 1e300", shaftWith(QStringLiteral("passes[0].depth_of_cut_mm"), 1e300), check, 1,
