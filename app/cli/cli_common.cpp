@@ -3,8 +3,10 @@
 
 #include "app/cli/command_line.h"
 #include "core/common/atomic_file.h"
+#include "core/data/data_library.h"
 #include "core/io/project_file.h"
 #include "core/measurements/measurement_store.h"
+#include "core/planning/plausibility.h"
 #include "core/project/operations.h"
 
 #include <QCommandLineOption>
@@ -55,7 +57,18 @@ std::optional<Project> readProject(const QString &file, QTextStream &err)
     const ProjectParseResult read = readProjectFile(file);
     for (const Diagnostic &d : read.diagnostics)
         err << file << ": " << d.toString() << '\n';
-    return read.project;
+    if (!read.project)
+        return std::nullopt;
+    // What `check` calls an error (an unknown material, no pass, a bar that does not fit the pilot
+    // hole) stops every command, as the file's own errors do; its warnings are `check`'s to give.
+    bool refused = false;
+    for (const Diagnostic &d : checkPlausibility(*read.project, DataLibrary::builtIn())) {
+        if (d.severity == Severity::Error) {
+            err << file << ": " << d.toString() << '\n';
+            refused = true;
+        }
+    }
+    return refused ? std::nullopt : read.project;
 }
 
 QCommandLineOption operationOption()

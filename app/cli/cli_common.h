@@ -54,7 +54,8 @@ inline constexpr double kMaxLoad_N = 1e6;
                                                           const QCommandLineOption &option, long long lo, long long hi,
                                                           const QString &command, QTextStream &err);
 
-// Reads a project for a command, printing its problems as "FILE: severity: field: message".
+// Reads a project for a command, printing its problems as "FILE: severity: field: message"; none
+// when the file, or `check` (checkPlausibility), finds an error in it.
 [[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err);
 
 // --operation NAME, for the commands that work on one set-up of a project (docs/operations.md).

@@ -145,6 +145,13 @@ private Q_SLOTS:
         row("speed the program writes as zero", shaftWith(QStringLiteral("passes[0].cutting_speed_m_min"), 0.4),
             {QStringLiteral("gcode"), QStringLiteral("-o"), QStringLiteral("DIR/p.nc"), QStringLiteral("IN")}, 1,
             QStringLiteral("passes[0].cutting_speed_m_min: 0.4 is below 1"));
+        // What `check` calls an error stops the other commands too: no report of it is written.
+        row("report of an unknown material", shaftWith(QStringLiteral("material"), QStringLiteral("Unobtainium")),
+            {QStringLiteral("report"), QStringLiteral("-o"), QStringLiteral("DIR/r.pdf"), QStringLiteral("IN")}, 1,
+            QStringLiteral("material: unknown material \"Unobtainium\""));
+        row("G-code without a pass", shaftWith(QStringLiteral("passes"), QJsonArray()),
+            {QStringLiteral("gcode"), QStringLiteral("-o"), QStringLiteral("DIR/p.nc"), QStringLiteral("IN")}, 1,
+            QStringLiteral("error: passes"));
         row("feed as text", shaftWith(QStringLiteral("passes[8].feed_mm_rev"), QStringLiteral("0.1")), check, 1,
             QStringLiteral("passes[8].feed_mm_rev"));
         row("depth 1e300", shaftWith(QStringLiteral("passes[0].depth_of_cut_mm"), 1e300), check, 1,
