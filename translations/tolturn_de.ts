@@ -723,6 +723,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the face&apos;s conicity needs a correction along Z, which TolTurn does not generate: reduce the feed or change the clamping</source>
         <translation>die Konizität der Planfläche erfordert eine Korrektur entlang Z, die TolTurn nicht erzeugt: verringern Sie den Vorschub oder ändern Sie die Aufspannung</translation>
     </message>
+    <message>
+        <source>%1: the correction, %2 µm, is larger than the finishing depth of cut %3 mm: the prediction, made for that depth, does not hold there and the correction is not a program to run; support the part (tailstock, steady rest), cut less or check the machine&apos;s data</source>
+        <translation>%1: die Korrektur, %2 µm, ist größer als die Schlichtschnitttiefe %3 mm: die Vorhersage, für diese Tiefe gemacht, gilt dort nicht, und die Korrektur ist kein Programm, das man laufen lassen kann; stützen Sie das Teil (Reitstock, Lünette), schneiden Sie weniger tief oder prüfen Sie die Maschinendaten</translation>
+    </message>
 </context>
 <context>
     <name>ControlCommand</name>

@@ -723,6 +723,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the face&apos;s conicity needs a correction along Z, which TolTurn does not generate: reduce the feed or change the clamping</source>
         <translation>la conicidad de la cara requiere una corrección en Z, que TolTurn no genera: reduzca el avance o cambie la sujeción</translation>
     </message>
+    <message>
+        <source>%1: the correction, %2 µm, is larger than the finishing depth of cut %3 mm: the prediction, made for that depth, does not hold there and the correction is not a program to run; support the part (tailstock, steady rest), cut less or check the machine&apos;s data</source>
+        <translation>%1: la corrección, %2 µm, es mayor que la profundidad de corte de acabado %3 mm: la predicción, hecha para esa profundidad, no vale ahí y la corrección no es un programa que se pueda ejecutar; apoye la pieza (contrapunto, luneta), corte menos o revise los datos de la máquina</translation>
+    </message>
 </context>
 <context>
     <name>ControlCommand</name>

@@ -177,6 +177,14 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
         err << file << ": " << d.toString() << '\n';
     if (!finishing.deviation.inputs)
         return kExitProblems;
+    if (parser.isSet(compensated)) {
+        const QStringList beyond =
+            correctionsBeyondTheCut(finishing.compensation, finishing.deviation.inputs->pass.depthOfCut_mm);
+        for (const QString &line : beyond)
+            err << file << ": error: " << line << '\n';
+        if (!beyond.isEmpty())
+            return kExitProblems;
+    }
     const TurningProgram &program = parser.isSet(compensated) ? finishing.compensated : finishing.nominal;
     if (const QString problem = writeOutput(parser.value(output), program.text.toUtf8(), out); !problem.isEmpty()) {
         err << problem << '\n';

@@ -47,6 +47,21 @@ const FeatureCompensation *CompensationPlan::find(const QString &featureId) cons
     return nullptr;
 }
 
+QStringList correctionsBeyondTheCut(const CompensationPlan &plan, double depthOfCut_mm)
+{
+    QStringList out;
+    for (const FeatureCompensation &c : plan.features) {
+        if (c.action == CompensationAction::None || c.residualBefore_um <= depthOfCut_mm * 1000.0)
+            continue;
+        out << Compensation::tr("%1: the correction, %2 µm, is larger than the finishing depth of cut "
+                                "%3 mm: the prediction, made for that depth, does not hold there and the "
+                                "correction is not a program to run; support the part (tailstock, steady rest), "
+                                "cut less or check the machine's data")
+                   .arg(c.featureId, QString::number(c.residualBefore_um, 'f', 1), formatNumber(depthOfCut_mm));
+    }
+    return out;
+}
+
 QString compensationKeyword(CompensationAction action)
 {
     switch (action) {

@@ -34,6 +34,12 @@ struct CompensationPlan {
 [[nodiscard]] CompensationPlan planCompensation(const Project &project, const DeviationResult &deviation,
                                                 const std::vector<ToleranceEvaluation> &verdicts);
 
+// The features whose correction is larger than the finishing depth of cut, with why, one line each:
+// the part would spring out of the cut (deviation_model.cpp says so), the model linear in the forces
+// of that depth does not hold, and such a correction is not a program to run (it may even cross the
+// axis). Empty when every correction is within the cut.
+[[nodiscard]] QStringList correctionsBeyondTheCut(const CompensationPlan &plan, double depthOfCut_mm);
+
 [[nodiscard]] QString compensationKeyword(CompensationAction action); // "none", "offset", "profile"
 
 } // namespace tolturn

@@ -125,7 +125,9 @@ PassSummary summarise(const PassPath &pass, ContourSide side, double limit_rpm)
             e.centre = m.centre;
             e.radius_mm = m.radius_mm;
             e.counterClockwise = m.kind == MoveKind::ArcCounterClockwise;
-            const std::vector<ProfilePoint> points = sampled(e, 0.05);
+            // 0.05 mm steps (n changes with r under G96), at most 2000 on a move: a face's time
+            // is then within far less than its 0.01 min as printed.
+            const std::vector<ProfilePoint> points = sampled(e, 0.05, 2000);
             for (std::size_t i = 1; i < points.size(); ++i) {
                 const double length =
                     std::hypot(points[i].z_mm - points[i - 1].z_mm, points[i].r_mm - points[i - 1].r_mm);

@@ -273,11 +273,23 @@ std::vector<PathElement> translated(std::vector<PathElement> chain, double dz_mm
     return chain;
 }
 
-std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm)
+namespace {
+
+// The number of steps of `length` at `step`, at least 1 and at most `most` (a path kilometres long,
+// from a deviation that is not physical, must not take the machine's memory; nor overflow an int).
+int stepsAlong(double length_mm, double step_mm, int most)
+{
+    const double steps = std::ceil(length_mm / step_mm);
+    return std::isfinite(steps) ? std::clamp(static_cast<int>(std::min(steps, double(most))), 1, most) : most;
+}
+
+} // namespace
+
+std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm, int mostSteps)
 {
     std::vector<ProfilePoint> out;
     if (!e.arc) {
-        const int n = std::max(1, static_cast<int>(std::ceil(norm(e.to - e.from) / step_mm)));
+        const int n = stepsAlong(norm(e.to - e.from), step_mm, mostSteps);
         for (int i = 0; i <= n; ++i)
             out.push_back(e.from + (static_cast<double>(i) / n) * (e.to - e.from));
         return out;
@@ -291,7 +303,7 @@ std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm)
     else
         while (a1 > a0)
             a1 -= turn;
-    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(a1 - a0) * e.radius_mm / step_mm)));
+    const int n = stepsAlong(std::abs(a1 - a0) * e.radius_mm, step_mm, mostSteps);
     for (int i = 0; i <= n; ++i) {
         const double a = a0 + (a1 - a0) * static_cast<double>(i) / n;
         out.push_back({e.centre.z_mm + e.radius_mm * std::cos(a), e.centre.r_mm + e.radius_mm * std::sin(a)});

@@ -43,8 +43,9 @@ struct PathElement {
 // Moves every point (and arc centre) of a chain by (dz, dr).
 [[nodiscard]] std::vector<PathElement> translated(std::vector<PathElement> chain, double dz_mm, double dr_mm);
 
-// Points along an element at most `step_mm` apart, both ends included.
-[[nodiscard]] std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm);
+// Points along an element at most `step_mm` apart, both ends included, in at most `mostSteps` steps
+// (then further apart).
+[[nodiscard]] std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm, int mostSteps = 100000);
 
 // The upper envelope of the disc of radius `distance_mm` swept along a contour: for each z of a
 // regular grid, the highest r that a point at `distance_mm` from the contour has (the region a

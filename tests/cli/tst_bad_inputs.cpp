@@ -152,6 +152,16 @@ private Q_SLOTS:
         row("G-code without a pass", shaftWith(QStringLiteral("passes"), QJsonArray()),
             {QStringLiteral("gcode"), QStringLiteral("-o"), QStringLiteral("DIR/p.nc"), QStringLiteral("IN")}, 1,
             QStringLiteral("error: passes"));
+        // A thermal drift of 10 mm per 1000 rpm: the correction (about 28 mm) is far more than the
+        // finishing depth of 0.5 mm, and would program diameters below zero.
+        QJsonObject drift;
+        drift.insert(QStringLiteral("source"), QStringLiteral("a test"));
+        drift.insert(QStringLiteral("thermal"), QJsonObject{{QStringLiteral("drift_um_per_1000rpm"), 10000.0},
+                                                            {QStringLiteral("time_constant_min"), 10.0}});
+        row("a correction deeper than the cut", shaftWith(QStringLiteral("characterisation"), drift),
+            {QStringLiteral("gcode"), QStringLiteral("--compensated"), QStringLiteral("-o"), QStringLiteral("DIR/p.nc"),
+             QStringLiteral("IN")},
+            1, QStringLiteral("is larger than the finishing depth of cut 0.5 mm"));
         row("feed as text", shaftWith(QStringLiteral("passes[8].feed_mm_rev"), QStringLiteral("0.1")), check, 1,
             QStringLiteral("passes[8].feed_mm_rev"));
         row("depth 1e300", shaftWith(QStringLiteral("passes[0].depth_of_cut_mm"), 1e300), check, 1,

@@ -274,6 +274,31 @@ class TestToolpath : public QObject {
     Q_OBJECT
 private Q_SLOTS:
 
+    // Points every 0.05 mm: a 10 mm line has 200 steps, both ends exact. A path kilometres long (a
+    // compensation from a deviation that is not physical) is bounded by the steps asked for, and one
+    // whose length overflows an int is too: it took gigabytes before (an int overflow, then 1e9 points).
+    void samplingIsBoundedOnAbsurdPaths()
+    {
+        const std::vector<ProfilePoint> short10 = sampled(lineElement(0, 10, 10, 10), 0.05);
+        QCOMPARE(short10.size(), std::size_t{201});
+        QCOMPARE(short10.back().z_mm, 10.0);
+        QVERIFY(std::abs(short10[1].z_mm - 0.05) < 1e-12);
+        const std::vector<ProfilePoint> long1km = sampled(lineElement(0, 10, 1e6, 10), 0.05, 2000);
+        QCOMPARE(long1km.size(), std::size_t{2001});
+        QCOMPARE(long1km.back().z_mm, 1e6);
+        QCOMPARE(sampled(lineElement(0, 10, 1e300, 10), 0.05).size(), std::size_t{100001});
+        PathElement arc;
+        arc.arc = true;
+        arc.from = {1e9, 0.0};
+        arc.to = {0.0, 1e9};
+        arc.centre = {0.0, 0.0};
+        arc.radius_mm = 1e9;
+        arc.counterClockwise = true;
+        const std::vector<ProfilePoint> quarter = sampled(arc, 0.05, 2000);
+        QCOMPARE(quarter.size(), std::size_t{2001});
+        QCOMPARE(quarter.back().r_mm, 1e9);
+    }
+
     // Offset by r = 0.8 to the right of the travel. Up the end face (z 100, r 0 -> 20), then left along
     // the Ø40 cylinder: a convex corner, closed by an arc of 0.8 about (100, 20) from (100.8, 20) to
     // (100, 20.8). Then left along the cylinder to z 60 and up a shoulder to r 25 (its face looks to
