@@ -2751,6 +2751,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the ball is where it was at the point before</source>
         <translation>die Kugel steht dort, wo sie am vorigen Punkt stand</translation>
     </message>
+    <message>
+        <source>the predicted deflection is not finite: the tool&apos;s data lie beyond what the model computes</source>
+        <translation>die vorhergesagte Durchbiegung ist nicht endlich: die Daten des Werkzeugs liegen jenseits dessen, was das Modell berechnet</translation>
+    </message>
 </context>
 <context>
     <name>MillingCommand</name>

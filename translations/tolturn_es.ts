@@ -2751,6 +2751,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the ball is where it was at the point before</source>
         <translation>la bola está donde estaba en el punto anterior</translation>
     </message>
+    <message>
+        <source>the predicted deflection is not finite: the tool&apos;s data lie beyond what the model computes</source>
+        <translation>la deflexión prevista no es finita: los datos de la herramienta quedan fuera de lo que el modelo calcula</translation>
+    </message>
 </context>
 <context>
     <name>MillingCommand</name>

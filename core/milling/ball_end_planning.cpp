@@ -158,8 +158,10 @@ double formError_mm(const SurfaceErrorLine &line, double feedPerTooth_mm, Surfac
         return 0.0;
     double least = line.base_mm.front() + feedPerTooth_mm * line.perFeed_mm_mm.front();
     double greatest = least;
-    for (std::size_t m = 1; m < line.base_mm.size(); ++m) {
+    for (std::size_t m = 0; m < line.base_mm.size(); ++m) {
         const double v = line.base_mm[m] + feedPerTooth_mm * line.perFeed_mm_mm[m];
+        if (!std::isfinite(v))
+            return std::nan(""); // decides nothing: std::min and std::max would pass over it
         least = std::min(least, v);
         greatest = std::max(greatest, v);
     }

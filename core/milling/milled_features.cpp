@@ -195,6 +195,10 @@ MilledFeatureEvaluation evaluateMilledFeature(const MilledFeature &feature, cons
     try {
         const SurfaceErrorLine line = evaluateStations(*in, featureStations(feature, in->mill, in->cut), resolution, e);
         e.formError_mm = formError_mm(line, in->cut.feedPerTooth_mm, in->tolerance.zone);
+        if (!std::isfinite(e.formError_mm))
+            throw std::domain_error(MilledFeatures::tr("the predicted deflection is not finite: the tool's data "
+                                                       "lie beyond what the model computes")
+                                        .toStdString());
         e.margin_mm = in->tolerance.tolerance_mm - e.formError_mm;
         e.passes = e.margin_mm >= 0.0;
         e.holdingFeedPerTooth_mm = largestFeedPerTooth_mm(line, in->tolerance, in->cut.feedPerTooth_mm);

@@ -295,6 +295,14 @@ private Q_SLOTS:
         MilledFeature noModulus = flat();
         noModulus.tool->youngsModulus_N_mm2.reset();
         QVERIFY(evaluateMilledFeature(noModulus).carbideAssumed);
+        // A shank of 1e-300 mm bends without bound: the deflection is not finite, and a flat whose
+        // NaN stations were passed over was said to pass with a form error of 0.
+        MilledFeature thread = flat();
+        thread.tool->equivalentDiameter_mm = 1e-300;
+        const MilledFeatureEvaluation notFinite = evaluateMilledFeature(thread);
+        QVERIFY(!notFinite.evaluated());
+        QVERIFY(!notFinite.passes);
+        QVERIFY2(notFinite.refusal.contains(QStringLiteral("not finite")), qPrintable(notFinite.refusal));
     }
 
     // check: an unknown datum, a flatness with datums, a path axis into the surface, a shared id are
