@@ -77,6 +77,10 @@
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>&apos;%1&apos; kann nicht gespeichert werden: %2</translation>
     </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: it is not a regular file (a folder, a device or a pipe)</source>
+        <translation>'%1' kann nicht geschrieben werden: es ist keine gewöhnliche Datei (ein Ordner, ein Gerät oder eine Pipe)</translation>
+    </message>
 </context>
 <context>
     <name>BallEndMilling</name>

@@ -77,6 +77,10 @@
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>no se puede guardar &apos;%1&apos;: %2</translation>
     </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: it is not a regular file (a folder, a device or a pipe)</source>
+        <translation>no se puede escribir '%1': no es un archivo normal (una carpeta, un dispositivo o una tubería)</translation>
+    </message>
 </context>
 <context>
     <name>BallEndMilling</name>

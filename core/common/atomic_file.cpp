@@ -71,8 +71,15 @@ QFileDevice::Permissions permissionsForWrite(const QString &path)
     return p;
 }
 
-QString writeFileAtomically(const QString &path, const QByteArray &data)
+QString writeFileAtomically(const QString &givenPath, const QByteArray &data)
 {
+    // A link is followed: the file it names is replaced, not the link by a file of its own.
+    const QFileInfo given(givenPath);
+    const QString resolved = given.isSymLink() ? given.canonicalFilePath() : QString();
+    const QString path = !given.isSymLink() ? givenPath : resolved.isEmpty() ? given.symLinkTarget() : resolved;
+    if (QFileInfo target(path); target.exists() && !target.isFile())
+        return AtomicFile::tr("cannot write '%1': it is not a regular file (a folder, a device or a pipe)")
+            .arg(givenPath);
     QTemporaryFile temp(QFileInfo(path).absoluteDir().filePath(QStringLiteral(".tolturn-XXXXXX")));
     if (!temp.open())
         return AtomicFile::tr("cannot write '%1': %2").arg(path, temp.errorString());

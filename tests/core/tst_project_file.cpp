@@ -354,6 +354,28 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(pending));
     }
 
+    // Through a link the file it names is written and the link stays a link; a pipe (or a folder) is
+    // not replaced by a file: it is refused, naming the path.
+    void atomicWriteFollowsLinksAndRefusesPipes()
+    {
+        QTemporaryDir dir;
+        const QString real = dir.filePath(QStringLiteral("real.nc"));
+        const QString link = dir.filePath(QStringLiteral("link.nc"));
+        QCOMPARE(writeFileAtomically(real, "old"), QString());
+        QVERIFY(QFile::link(real, link));
+        QCOMPARE(writeFileAtomically(link, "new"), QString());
+        QVERIFY(QFileInfo(link).isSymLink());
+        QFile f(real);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("new"));
+        const QString pipe = dir.filePath(QStringLiteral("fifo.nc"));
+        QCOMPARE(::mkfifo(QFile::encodeName(pipe).constData(), 0600), 0);
+        const QString refused = writeFileAtomically(pipe, "x");
+        QVERIFY2(refused.contains(pipe) && refused.contains(QStringLiteral("not a regular file")), qPrintable(refused));
+        QVERIFY(!QFileInfo(pipe).isFile());
+        QCOMPARE(writeFileAtomically(dir.path(), "x").contains(QStringLiteral("not a regular file")), true);
+    }
+
     void unknownFieldIsOnlyAWarning()
     {
         const QByteArray json = edited(exampleJson(QStringLiteral("stepped-shaft-chuck.tolturn")),
