@@ -72,6 +72,19 @@ double distance(ProfilePoint a, ProfilePoint b)
     return std::hypot(a.z_mm - b.z_mm, a.r_mm - b.r_mm);
 }
 
+// An arc from `from` to `to` about `centre` (its radius their distance), counter-clockwise or not.
+PathElement arcElement(ProfilePoint from, ProfilePoint to, ProfilePoint centre, bool counterClockwise)
+{
+    PathElement e;
+    e.arc = true;
+    e.from = from;
+    e.to = to;
+    e.centre = centre;
+    e.radius_mm = distance(to, centre);
+    e.counterClockwise = counterClockwise;
+    return e;
+}
+
 // Distance from a point to a line segment or to an arc (centre, radius, from, to, sense).
 double distanceTo(const PathElement &e, ProfilePoint p)
 {
@@ -145,13 +158,7 @@ std::vector<CanonicalPass> readCanonical(const QString &text, double length_mm)
             at = to;
         } else if (line.contains(QStringLiteral("ARC_FEED("))) {
             const auto v = values(QStringLiteral("ARC_FEED")); // Z end, X end, Z centre, X centre, turn
-            PathElement e;
-            e.arc = true;
-            e.from = at;
-            e.to = {v[0] + length_mm, v[1]};
-            e.centre = {v[2] + length_mm, v[3]};
-            e.radius_mm = distance(e.to, e.centre);
-            e.counterClockwise = v[4] > 0;
+            const PathElement e = arcElement(at, {v[0] + length_mm, v[1]}, {v[2] + length_mm, v[3]}, v[4] > 0);
             passes.back().moves.push_back(e);
             at = e.to;
         }
@@ -287,14 +294,8 @@ private Q_SLOTS:
         QCOMPARE(long1km.size(), std::size_t{2001});
         QCOMPARE(long1km.back().z_mm, 1e6);
         QCOMPARE(sampled(lineElement(0, 10, 1e300, 10), 0.05).size(), std::size_t{100001});
-        PathElement arc;
-        arc.arc = true;
-        arc.from = {1e9, 0.0};
-        arc.to = {0.0, 1e9};
-        arc.centre = {0.0, 0.0};
-        arc.radius_mm = 1e9;
-        arc.counterClockwise = true;
-        const std::vector<ProfilePoint> quarter = sampled(arc, 0.05, 2000);
+        const std::vector<ProfilePoint> quarter =
+            sampled(arcElement({1e9, 0.0}, {0.0, 1e9}, {0.0, 0.0}, true), 0.05, 2000);
         QCOMPARE(quarter.size(), std::size_t{2001});
         QCOMPARE(quarter.back().r_mm, 1e9);
     }
@@ -336,13 +337,7 @@ private Q_SLOTS:
     // A concave edge round smaller than the nose cannot be followed: it is named and left as a corner.
     void concaveRoundTighterThanTheNoseIsNamed()
     {
-        PathElement round;
-        round.arc = true;
-        round.from = {60.5, 20.0};
-        round.to = {60.0, 20.5};
-        round.centre = {60.5, 20.5};
-        round.radius_mm = 0.5;
-        round.counterClockwise = false;
+        PathElement round = arcElement({60.5, 20.0}, {60.0, 20.5}, {60.5, 20.5}, false);
         round.featureId = QStringLiteral("R1");
         QStringList dropped;
         const std::vector<PathElement> o =
