@@ -108,8 +108,10 @@ void constraints(unsigned m, double *result, unsigned, const double *u, double *
 {
     auto *c = static_cast<Context *>(data);
     const CandidateEvaluation e = c->evaluate(u);
-    for (unsigned i = 0; i < m && i < e.constraints.size(); ++i)
-        result[i] = finiteOrWorst(e.constraints[i].violation());
+    // A constraint this candidate does not have (no roughing stock left, say) does not apply
+    // to it: satisfied, never the garbage NLopt's buffer holds.
+    for (unsigned i = 0; i < m; ++i)
+        result[i] = i < e.constraints.size() ? finiteOrWorst(e.constraints[i].violation()) : -1.0;
 }
 
 std::vector<double> runSearch(nlopt::algorithm algorithm, Context &context, std::vector<double> start, int evaluations,

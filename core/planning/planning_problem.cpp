@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace tolturn {
@@ -336,9 +337,13 @@ std::vector<ConstraintValue> PlanningProblem::toleranceConstraintsOf(const Devia
         return out;
     for (const ToleranceEvaluation &e :
          evaluateTolerances(m_project, deviation, EvaluationDetail::ValuesOnly, &m_targets)) {
-        if (e.value_um && e.limit_um && *e.limit_um > 0.0)
-            out.push_back(
-                {QStringLiteral("tolerances"), e.toleranceId, *e.value_um, *e.limit_um, QStringLiteral("µm")});
+        // A deviation that is not finite at these conditions violates the tolerance without
+        // bound: dropping it would let the search take the conditions that overflow as feasible,
+        // and would change the number of constraints NLopt was given.
+        const double value = e.deviationNotFinite ? std::numeric_limits<double>::infinity() : e.value_um.value_or(0.0);
+        const double limit = e.limit_um.value_or(0.0);
+        if ((e.value_um || e.deviationNotFinite) && limit > 0.0)
+            out.push_back({QStringLiteral("tolerances"), e.toleranceId, value, limit, QStringLiteral("µm")});
     }
     return out;
 }

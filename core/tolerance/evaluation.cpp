@@ -475,6 +475,7 @@ void refuseNonFinite(ToleranceEvaluation &e)
     for (const auto &v : numbers) {
         if (v && !std::isfinite(*v)) {
             e.verdict = Verdict::CannotEvaluate;
+            e.deviationNotFinite = true;
             e.value_um.reset();
             e.utilisation_pct.reset();
             say(e.reason, [&] {

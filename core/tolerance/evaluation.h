@@ -40,6 +40,9 @@ struct ToleranceEvaluation {
     std::optional<double> predictedMax_um;
     std::optional<double> predictedMin_um;
     std::optional<double> offset_um; // constant change of the size that centres it (PassesAfterOffset)
+    // The deviation predicted for the feature is not finite (an overflow): CannotEvaluate, yet
+    // the tolerance still binds the conditions, so the optimiser counts it as violated.
+    bool deviationNotFinite = false;
     Diagnostics diagnostics;
 };
 

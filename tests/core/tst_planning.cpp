@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -214,6 +215,33 @@ private Q_SLOTS:
         QVERIFY(roughness != r.conflicts.end());
         QVERIFY2(std::abs(roughness->violation() - (0.17 * 0.17 / (32 * 0.8) * 1000.0 / 0.5 - 1.0)) < 1e-3,
                  qPrintable(QString::number(roughness->violation())));
+    }
+
+    // A deviation that overflows at some conditions is a violated tolerance there, never a
+    // tolerance left out: the search would take those conditions as feasible, and NLopt, given
+    // one constraint per tolerance, would read a shorter list.
+    void nonFiniteDeviationViolatesItsTolerance()
+    {
+        const auto problem = problemFor(test::exampleProject("stepped-shaft-chuck.tolturn"));
+        const PassConditions pass{200.0, 0.1, 0.5};
+        DeviationResult deviation = problem->finishingDeviation(pass);
+        const std::vector<ConstraintValue> finite = problem->toleranceConstraintsOf(deviation);
+        QVERIFY(!finite.empty());
+        const QString id = finite.front().subject;
+        const QString feature = [&] {
+            for (const Tolerance &t : problem->project().tolerances)
+                if (t.id == id)
+                    return t.featureId;
+            return QString();
+        }();
+        for (FeatureDeviation &f : deviation.features)
+            if (f.featureId == feature)
+                f.stations.front().radiusError_mm = std::numeric_limits<double>::quiet_NaN();
+        const std::vector<ConstraintValue> poisoned = problem->toleranceConstraintsOf(deviation);
+        QCOMPARE(poisoned.size(), finite.size());
+        QCOMPARE(poisoned.front().subject, id);
+        QVERIFY(poisoned.front().violation() > 1e9);
+        QCOMPARE(poisoned.front().limit, finite.front().limit);
     }
 
     // Degenerate inputs a fuzzer found (issue 14) end with a named result, never a hang.
