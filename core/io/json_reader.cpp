@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QLocale>
 #include <QRegularExpression>
 
 #include <cmath>
@@ -27,7 +28,9 @@ QString describeJsonValue(const QJsonValue &value)
     case QJsonValue::Bool:
         return value.toBool() ? JsonReading::tr("true") : JsonReading::tr("false");
     case QJsonValue::Double:
-        return JsonReading::tr("the number %1").arg(formatNumber(value.toDouble()));
+        // As the file has it, to the last digit: 1.0000000000000002 is not the whole number 1.
+        return JsonReading::tr("the number %1")
+            .arg(QString::number(value.toDouble(), 'g', QLocale::FloatingPointShortest));
     case QJsonValue::String:
         return JsonReading::tr("the text \"%1\"").arg(value.toString());
     case QJsonValue::Array:

@@ -191,6 +191,24 @@ std::optional<ValueRange> readRange(JsonObjectReader &parent, const QString &key
     return range;
 }
 
+// A list of texts; `expected` says what each is ("expected a feature id, found the number 1").
+QStringList readTextList(JsonObjectReader &r, const QString &key, const QString &expected, Diagnostics &out)
+{
+    QStringList items;
+    const auto json = r.array(key, Presence::Optional);
+    if (!json)
+        return items;
+    for (qsizetype i = 0; i < json->size(); ++i) {
+        if (json->at(i).isString())
+            items << json->at(i).toString();
+        else
+            out.push_back(
+                makeError(elementPath(r.fieldPath(key), i),
+                          ProjectJson::tr("expected %1, found %2").arg(expected, describeJsonValue(json->at(i)))));
+    }
+    return items;
+}
+
 PlanningSettings readPlanning(const QJsonObject &json, Diagnostics &out)
 {
     JsonObjectReader r(json, QStringLiteral("planning"), out);
@@ -224,10 +242,8 @@ PlanningSettings readPlanning(const QJsonObject &json, Diagnostics &out)
     p.maxPower_kW = r.number(QStringLiteral("max_power_kW"), Presence::Optional);
     p.maxTorque_Nm = r.number(QStringLiteral("max_torque_Nm"), Presence::Optional);
     p.maxSpindleSpeed_rpm = r.number(QStringLiteral("max_spindle_speed_rpm"), Presence::Optional);
-    if (const auto off = r.array(QStringLiteral("disabled_constraints"), Presence::Optional)) {
-        for (const QJsonValue v : *off)
-            p.disabledConstraints << v.toString();
-    }
+    p.disabledConstraints =
+        readTextList(r, QStringLiteral("disabled_constraints"), ProjectJson::tr("a constraint name"), out);
     r.finish();
     return p;
 }
@@ -289,23 +305,6 @@ CuttingPass readPass(JsonObjectReader &r)
     return p;
 }
 
-QStringList readTextList(JsonObjectReader &r, const QString &key, Diagnostics &out)
-{
-    QStringList items;
-    const auto json = r.array(key, Presence::Optional);
-    if (!json)
-        return items;
-    for (qsizetype i = 0; i < json->size(); ++i) {
-        if (json->at(i).isString())
-            items << json->at(i).toString();
-        else
-            out.push_back(
-                makeError(elementPath(r.fieldPath(key), i),
-                          ProjectJson::tr("expected a feature id, found %1").arg(describeJsonValue(json->at(i)))));
-    }
-    return items;
-}
-
 // One of "further_operations" (format version 2, docs/project-format.md).
 Operation readOperation(JsonObjectReader &r, Diagnostics &out)
 {
@@ -318,7 +317,7 @@ Operation readOperation(JsonObjectReader &r, Diagnostics &out)
     if (const auto tool = r.object(QStringLiteral("boring_tool"), Presence::Optional))
         op.boringTool = readTool(*tool, r.fieldPath(QStringLiteral("boring_tool")), out);
     op.passes = readList<CuttingPass>(r, QStringLiteral("passes"), out, readPass);
-    op.features = readTextList(r, QStringLiteral("features"), out);
+    op.features = readTextList(r, QStringLiteral("features"), ProjectJson::tr("a feature id"), out);
     return op;
 }
 
@@ -328,23 +327,6 @@ Datum readDatum(JsonObjectReader &r)
     d.label = r.text(QStringLiteral("label"), Presence::Required).value_or(QString());
     d.featureId = r.text(QStringLiteral("feature"), Presence::Required).value_or(QString());
     return d;
-}
-
-QStringList readDatumLabels(JsonObjectReader &r, Diagnostics &out)
-{
-    QStringList labels;
-    const auto json = r.array(QStringLiteral("datums"), Presence::Optional);
-    if (!json)
-        return labels;
-    for (qsizetype i = 0; i < json->size(); ++i) {
-        if (!json->at(i).isString())
-            out.push_back(
-                makeError(elementPath(r.fieldPath(QStringLiteral("datums")), i),
-                          ProjectJson::tr("expected a datum letter, found %1").arg(describeJsonValue(json->at(i)))));
-        else
-            labels << json->at(i).toString();
-    }
-    return labels;
 }
 
 Tolerance readTolerance(JsonObjectReader &r, Diagnostics &out)
@@ -363,7 +345,7 @@ Tolerance readTolerance(JsonObjectReader &r, Diagnostics &out)
         t.lowerDeviation_um = r.number(QStringLiteral("lower_um"), Presence::Optional);
     } else {
         t.zone_um = r.number(QStringLiteral("value_um"), Presence::Required);
-        t.datums = readDatumLabels(r, out);
+        t.datums = readTextList(r, QStringLiteral("datums"), ProjectJson::tr("a datum letter"), out);
     }
     return t;
 }
@@ -436,7 +418,7 @@ MilledTolerance readMilledTolerance(const QJsonObject &json, const QString &path
                                               ProjectJson::tr("milled tolerance type"))
                  .value_or(MilledToleranceType::Flatness);
     t.zone_um = r.number(QStringLiteral("value_um"), Presence::Required).value_or(0.0);
-    t.datums = readDatumLabels(r, out);
+    t.datums = readTextList(r, QStringLiteral("datums"), ProjectJson::tr("a datum letter"), out);
     r.finish();
     return t;
 }

@@ -290,12 +290,19 @@ void checkTolerances(const Project &p, Diagnostics &out)
 void checkSizesMeet(const Project &p, Diagnostics &out)
 {
     for (const DiameterTarget &target : diameterTargets(p)) {
-        if (target.upper_um >= target.lower_um)
+        if (target.upper_um > target.lower_um)
             continue;
         std::size_t last = 0;
         for (std::size_t i = 0; i < p.tolerances.size(); ++i) {
             if (p.tolerances[i].featureId == target.featureId && p.tolerances[i].type == ToleranceType::Diameter)
                 last = i;
+        }
+        if (target.upper_um == target.lower_um) {
+            out.push_back(makeError(QStringLiteral("tolerances[%1]").arg(last),
+                                    ProjectValidation::tr("the size tolerances of feature %1 leave a zone of no width "
+                                                          "(both limits at %2 µm), which no cut can hold")
+                                        .arg(target.featureId, num(target.upper_um))));
+            continue;
         }
         out.push_back(makeError(QStringLiteral("tolerances[%1]").arg(last),
                                 ProjectValidation::tr("the size tolerances of feature %1 allow no common size: one "
@@ -473,9 +480,10 @@ void checkPlanning(const Project &p, Diagnostics &out)
         {"max_torque_Nm", s.maxTorque_Nm}, {"max_spindle_speed_rpm", s.maxSpindleSpeed_rpm}};
     for (const auto &[name, value] : limits)
         requirePositive(value, path + QLatin1String(name), out);
-    for (const QString &name : s.disabledConstraints) {
+    for (qsizetype i = 0; i < s.disabledConstraints.size(); ++i) {
+        const QString &name = s.disabledConstraints.at(i);
         if (!planningConstraintKeywords().contains(name))
-            out.push_back(makeError(path + QStringLiteral("disabled_constraints"),
+            out.push_back(makeError(path + QStringLiteral("disabled_constraints[%1]").arg(i),
                                     ProjectValidation::tr("unknown constraint \"%1\"; the constraints are: %2")
                                         .arg(name, planningConstraintKeywords().join(QStringLiteral(", ")))));
     }

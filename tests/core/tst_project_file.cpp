@@ -470,6 +470,15 @@ private Q_SLOTS:
         };
         row("not a TolTurn file", shaft, {QStringLiteral("format=\"cam-job\"")}, "format", "\"cam-job\"");
         row("unknown version", shaft, {QStringLiteral("version=3")}, "version", "unknown format version 3");
+        // The number as the file has it: shortened to 10 digits it read "found the number 1".
+        row("version not quite whole", shaft, {QStringLiteral("version=1.0000000000000002")}, "version",
+            "expected a whole number, found the number 1.0000000000000002");
+        // Each constraint left out is named by its place in the list.
+        row("constraint name that is a number", shaft, {QStringLiteral("planning.disabled_constraints=[\"power\", 1]")},
+            "planning.disabled_constraints[1]", "expected a constraint name, found the number 1");
+        row("unknown constraint left out", shaft,
+            {QStringLiteral("planning.disabled_constraints=[\"power\", \"speeed\"]")},
+            "planning.disabled_constraints[1]", "unknown constraint \"speeed\"");
         row("version not a number", shaft, {QStringLiteral("version=\"1\"")}, "version", "the text \"1\"");
         row("missing material", shaft, {QStringLiteral("material=<delete>")}, "material", "required but missing");
         row("stock not a number", shaft, {QStringLiteral("part.stock_diameter_mm=\"sixty\"")}, "part.stock_diameter_mm",
@@ -551,6 +560,11 @@ private Q_SLOTS:
             {QStringLiteral("tolerances[1]={\"id\": \"T2\", \"type\": \"diameter\", \"feature\": \"O4\", "
                             "\"upper_um\": 30, \"lower_um\": 20}")},
             "tolerances[1]", "feature O4 allow no common size: one needs at most 0 µm, another at least 20 µm");
+        // h6 (0/-16 µm) and +10/0 µm share only the nominal size: a zone no cut can hold.
+        row("two sizes sharing one size", shaft,
+            {QStringLiteral("tolerances[1]={\"id\": \"T2\", \"type\": \"diameter\", \"feature\": \"O4\", "
+                            "\"upper_um\": 10, \"lower_um\": 0}")},
+            "tolerances[1]", "feature O4 leave a zone of no width (both limits at 0 µm)");
         row("ISO 286 class not defined at the size", shaft, {QStringLiteral("tolerances[0].iso286=\"j8\"")},
             "tolerances[0].iso286", "gives no limits for j8 at Ø50 mm: shaft j8 is not defined");
     }
