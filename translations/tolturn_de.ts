@@ -79,7 +79,7 @@
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: it is not a regular file (a folder, a device or a pipe)</source>
-        <translation>'%1' kann nicht geschrieben werden: es ist keine gewöhnliche Datei (ein Ordner, ein Gerät oder eine Pipe)</translation>
+        <translation>&apos;%1&apos; kann nicht geschrieben werden: es ist keine gewöhnliche Datei (ein Ordner, ein Gerät oder eine Pipe)</translation>
     </message>
 </context>
 <context>
@@ -4084,10 +4084,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Schnittart</translation>
     </message>
     <message>
-        <source>expected a datum letter, found %1</source>
-        <translation>erwartet: ein Bezugsbuchstabe, gefunden: %1</translation>
-    </message>
-    <message>
         <source>tolerance type</source>
         <translation>Toleranzart</translation>
     </message>
@@ -4106,10 +4102,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>part end</source>
         <translation>Teilende</translation>
-    </message>
-    <message>
-        <source>expected a feature id, found %1</source>
-        <translation>erwartet: eine Formelement-ID, gefunden: %1</translation>
     </message>
     <message>
         <source>unknown format version %1; this TolTurn reads versions 1 to %2</source>
@@ -4138,6 +4130,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>milled feature kind</source>
         <translation>Art des gefrästen Formelements</translation>
+    </message>
+    <message>
+        <source>expected %1, found %2</source>
+        <translation>erwartet: %1, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>a constraint name</source>
+        <translation>der Name einer Randbedingung</translation>
+    </message>
+    <message>
+        <source>a feature id</source>
+        <translation>eine Formelement-ID</translation>
+    </message>
+    <message>
+        <source>a datum letter</source>
+        <translation>ein Bezugsbuchstabe</translation>
     </message>
 </context>
 <context>
@@ -4329,6 +4337,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 is below %2, the least the program can state; it would be written as zero</source>
         <translation>%1 liegt unter %2, dem kleinsten Wert, den das Programm angeben kann; er würde als null geschrieben</translation>
+    </message>
+    <message>
+        <source>the size tolerances of feature %1 leave a zone of no width (both limits at %2 µm), which no cut can hold</source>
+        <translation>die Maßtoleranzen von Element %1 lassen eine Zone ohne Breite (beide Grenzen bei %2 µm), die kein Schnitt halten kann</translation>
     </message>
 </context>
 <context>

@@ -79,7 +79,7 @@
     </message>
     <message>
         <source>cannot write &apos;%1&apos;: it is not a regular file (a folder, a device or a pipe)</source>
-        <translation>no se puede escribir '%1': no es un archivo normal (una carpeta, un dispositivo o una tubería)</translation>
+        <translation>no se puede escribir &apos;%1&apos;: no es un archivo normal (una carpeta, un dispositivo o una tubería)</translation>
     </message>
 </context>
 <context>
@@ -4084,10 +4084,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>tipo de pasada</translation>
     </message>
     <message>
-        <source>expected a datum letter, found %1</source>
-        <translation>se esperaba una letra de referencia y se ha encontrado %1</translation>
-    </message>
-    <message>
         <source>tolerance type</source>
         <translation>tipo de tolerancia</translation>
     </message>
@@ -4106,10 +4102,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>part end</source>
         <translation>extremo de la pieza</translation>
-    </message>
-    <message>
-        <source>expected a feature id, found %1</source>
-        <translation>se esperaba un identificador de elemento y se ha encontrado %1</translation>
     </message>
     <message>
         <source>unknown format version %1; this TolTurn reads versions 1 to %2</source>
@@ -4138,6 +4130,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>milled feature kind</source>
         <translation>tipo de elemento fresado</translation>
+    </message>
+    <message>
+        <source>expected %1, found %2</source>
+        <translation>se esperaba %1 y se ha encontrado %2</translation>
+    </message>
+    <message>
+        <source>a constraint name</source>
+        <translation>un nombre de restricción</translation>
+    </message>
+    <message>
+        <source>a feature id</source>
+        <translation>un identificador de elemento</translation>
+    </message>
+    <message>
+        <source>a datum letter</source>
+        <translation>una letra de referencia</translation>
     </message>
 </context>
 <context>
@@ -4329,6 +4337,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 is below %2, the least the program can state; it would be written as zero</source>
         <translation>%1 está por debajo de %2, el menor valor que el programa puede indicar; se escribiría como cero</translation>
+    </message>
+    <message>
+        <source>the size tolerances of feature %1 leave a zone of no width (both limits at %2 µm), which no cut can hold</source>
+        <translation>las tolerancias dimensionales del elemento %1 dejan una zona sin anchura (ambos límites en %2 µm), que ningún corte puede mantener</translation>
     </message>
 </context>
 <context>

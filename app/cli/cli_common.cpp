@@ -52,7 +52,7 @@ int parseCommand(QCommandLineParser &parser, const QString &name, const QString 
     return -1;
 }
 
-std::optional<Project> readProject(const QString &file, QTextStream &err)
+std::optional<Project> readProject(const QString &file, QTextStream &err, MissingPasses missingPasses)
 {
     const ProjectParseResult read = readProjectFile(file);
     for (const Diagnostic &d : read.diagnostics)
@@ -62,8 +62,9 @@ std::optional<Project> readProject(const QString &file, QTextStream &err)
     // What `check` calls an error (an unknown material, no pass, a bar that does not fit the pilot
     // hole) stops every command, as the file's own errors do; its warnings are `check`'s to give.
     bool refused = false;
+    const bool planned = missingPasses == MissingPasses::Planned && read.project->passes.empty();
     for (const Diagnostic &d : checkPlausibility(*read.project, DataLibrary::builtIn())) {
-        if (d.severity == Severity::Error) {
+        if (d.severity == Severity::Error && !(planned && d.field == QLatin1String("passes"))) {
             err << file << ": " << d.toString() << '\n';
             refused = true;
         }
@@ -114,6 +115,15 @@ QString overwritesInput(const QString &output, const QString &input)
     return CommandLine::tr("the output '%1' is the input file '%2': give another output file, so that the input is "
                            "not overwritten")
         .arg(output, input);
+}
+
+QString overwritesStore(const QString &output, const QString &store)
+{
+    const std::optional<StoreLocation> location =
+        store.isEmpty() ? std::optional<StoreLocation>(defaultStoreLocation()) : storeLocationFromText(store, nullptr);
+    if (!location || location->kind != StoreLocation::Kind::SQLite)
+        return {}; // a store that cannot be named is refused when it is opened; a server is no file
+    return overwritesInput(output, location->file);
 }
 
 QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out)

@@ -56,7 +56,9 @@ inline constexpr double kMaxLoad_N = 1e6;
 
 // Reads a project for a command, printing its problems as "FILE: severity: field: message"; none
 // when the file, or `check` (checkPlausibility), finds an error in it.
-[[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err);
+enum class MissingPasses { Refused, Planned }; // the optimiser plans a project without passes
+[[nodiscard]] std::optional<Project> readProject(const QString &file, QTextStream &err,
+                                                 MissingPasses missingPasses = MissingPasses::Refused);
 
 // --operation NAME, for the commands that work on one set-up of a project (docs/operations.md).
 [[nodiscard]] QCommandLineOption operationOption();
@@ -76,6 +78,8 @@ inline constexpr double kMaxLoad_N = 1e6;
 // An error message when `output` is the file `input` (after symbolic links), which writing the
 // output would destroy; empty otherwise (also for "-" and for an output that does not exist yet).
 [[nodiscard]] QString overwritesInput(const QString &output, const QString &input);
+// The same for the measurement store --store names (its default when empty), when it is a file.
+[[nodiscard]] QString overwritesStore(const QString &output, const QString &store);
 
 // Writes a command's output (text, or a PDF or STEP file) to a file atomically, or to standard
 // output for "-". Returns an error message, empty on success.

@@ -135,7 +135,10 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     }
     options.nose = *handling;
     const QString file = parser.positionalArguments().constFirst();
-    if (const QString problem = overwritesInput(parser.value(output), file); !problem.isEmpty()) {
+    QString problem = overwritesInput(parser.value(output), file);
+    if (problem.isEmpty() && parser.isSet(learned))
+        problem = overwritesStore(parser.value(output), parser.value(store));
+    if (!problem.isEmpty()) {
         err << programName() << " gcode: " << problem << '\n';
         return kExitUsage;
     }

@@ -299,7 +299,7 @@ int runExport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     if (const QString problem =
-            overwritesInput(parser.value(QStringLiteral("output")), parser.value(QStringLiteral("store")));
+            overwritesStore(parser.value(QStringLiteral("output")), parser.value(QStringLiteral("store")));
         !problem.isEmpty()) {
         err << prefix(action) << problem << '\n';
         return kExitUsage;

@@ -92,7 +92,7 @@ std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, 
                                                            const QString &command, QTextStream &err,
                                                            std::optional<Project> *project = nullptr)
 {
-    const std::optional<Project> whole = readProject(file, err);
+    const std::optional<Project> whole = readProject(file, err, MissingPasses::Planned);
     if (!whole)
         return nullptr;
     const std::optional<Project> read = selectOperation(*whole, parser, command, err);
@@ -150,7 +150,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
             << '\n';
         return kExitUsage;
     }
-    std::optional<Project> project = readProject(file, err);
+    std::optional<Project> project = readProject(file, err, MissingPasses::Planned);
     if (!project)
         return kExitProblems;
     if (parser.isSet(objective)) {

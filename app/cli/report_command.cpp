@@ -65,7 +65,10 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         return kExitUsage;
     }
     const QString file = parser.positionalArguments().constFirst();
-    if (const QString problem = overwritesInput(parser.value(output), file); !problem.isEmpty()) {
+    QString problem = overwritesInput(parser.value(output), file);
+    if (problem.isEmpty() && parser.isSet(learned))
+        problem = overwritesStore(parser.value(output), parser.value(store));
+    if (!problem.isEmpty()) {
         err << programName() << " report: " << problem << '\n';
         return kExitUsage;
     }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <thread>
 
@@ -237,7 +238,8 @@ BallEndPlan planBallEndCut(const BallEndMill &mill, const BallEndToolStructure &
     plan.window = leadTiltWindow(mill, tool, coefficients, cut, tolerance, settings);
     const double highest = settings.highestFeedPerTooth_mm;
     const auto cellObjective = [&](const LeadTiltCell &c) {
-        return planObjective({c.onBall, c.largestFeed_mm, c.formError_mm}, tolerance, highest);
+        const double value = planObjective({c.onBall, c.largestFeed_mm, c.formError_mm}, tolerance, highest);
+        return std::isnan(value) ? std::numeric_limits<double>::infinity() : value; // keeps min_element's order
     };
     const auto best = std::min_element(
         plan.window.cells.begin(), plan.window.cells.end(),

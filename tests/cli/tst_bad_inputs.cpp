@@ -149,9 +149,12 @@ private Q_SLOTS:
         row("report of an unknown material", shaftWith(QStringLiteral("material"), QStringLiteral("Unobtainium")),
             {QStringLiteral("report"), QStringLiteral("-o"), QStringLiteral("DIR/r.pdf"), QStringLiteral("IN")}, 1,
             QStringLiteral("material: unknown material \"Unobtainium\""));
-        row("G-code without a pass", shaftWith(QStringLiteral("passes"), QJsonArray()),
+        row("G-code with an unknown boring bar",
+            shaftWith(QStringLiteral("boring_tool"),
+                      QJsonObject{{QStringLiteral("holder"), QStringLiteral("XYZ 99")},
+                                  {QStringLiteral("insert"), QStringLiteral("CCMT 09T304")}}),
             {QStringLiteral("gcode"), QStringLiteral("-o"), QStringLiteral("DIR/p.nc"), QStringLiteral("IN")}, 1,
-            QStringLiteral("error: passes"));
+            QStringLiteral("boring_tool.holder: \"XYZ 99\" is not a boring bar"));
         // A thermal drift of 10 mm per 1000 rpm: the correction (about 28 mm) is far more than the
         // finishing depth of 0.5 mm, and would program diameters below zero.
         QJsonObject drift;
@@ -318,6 +321,16 @@ private Q_SLOTS:
         row("CSV over its measurement store", "SQLite format 3",
             {QStringLiteral("measurements"), QStringLiteral("export"), QStringLiteral("1"), QStringLiteral("--store"),
              QStringLiteral("IN"), QStringLiteral("-o"), QStringLiteral("IN")},
+            2, overInput, QStringLiteral("m.sqlite"));
+        // With --learned the store is an input too: the program or report must not replace it.
+        const QString example = QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/stepped-shaft-chuck.tolturn");
+        row("G-code over its measurement store", "SQLite format 3",
+            {QStringLiteral("gcode"), QStringLiteral("--learned"), QStringLiteral("--store"), QStringLiteral("IN"),
+             QStringLiteral("-o"), QStringLiteral("DIR/./m.sqlite"), example},
+            2, overInput, QStringLiteral("m.sqlite"));
+        row("report over its measurement store", "SQLite format 3",
+            {QStringLiteral("report"), QStringLiteral("--learned"), QStringLiteral("--store"), QStringLiteral("IN"),
+             QStringLiteral("-o"), QStringLiteral("IN"), example},
             2, overInput, QStringLiteral("m.sqlite"));
         row("optimiser time limit of zero", QJsonDocument(shaft()).toJson(),
             {QStringLiteral("optimize"), QStringLiteral("--time-limit"), QStringLiteral("0"), QStringLiteral("IN")}, 2,

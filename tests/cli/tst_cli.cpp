@@ -676,6 +676,27 @@ private Q_SLOTS:
         QVERIFY(r.err.contains(QStringLiteral("planning.ranges")));
     }
 
+    // A project without passes is the optimiser's to plan: --write gives it passes, each with the
+    // cutting data the plan chose (check calls the missing passes an error; optimize does not).
+    void optimizePlansAProjectWithoutPasses()
+    {
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        doc.insert(QStringLiteral("passes"), QJsonArray());
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.tolturn"));
+        QVERIFY(writeFile(path, QJsonDocument(doc).toJson()));
+        QCOMPARE(runCli({QStringLiteral("check"), path}).exitCode, 1);
+        const Run r = runCli({QStringLiteral("optimize"), QStringLiteral("--time-limit"), QStringLiteral("5"),
+                              QStringLiteral("--write"), path});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile written(path);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        QVERIFY(
+            !QJsonDocument::fromJson(written.readAll()).object().value(QStringLiteral("passes")).toArray().isEmpty());
+    }
+
     // optimize --write replaces the passes: a field this program does not know on an old pass is
     // dropped and named (it belongs to no new pass), while one elsewhere in the file is kept.
     void optimizeWriteNamesTheFieldsOfReplacedPasses()

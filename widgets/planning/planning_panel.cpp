@@ -660,6 +660,9 @@ void PlanningPanel::showFinishing()
                         .arg(program.checksum);
     about = about.toHtmlEscaped();
     QStringList warnings = program.warnings();
+    if (m_compensated->isChecked() && m_finishing.deviation.inputs)
+        warnings += correctionsBeyondTheCut(m_finishing.compensation,
+                                            m_finishing.deviation.inputs->pass.depthOfCut_mm); // not exported
     for (QString &w : warnings)
         w = w.toHtmlEscaped(); // each line escaped, the breaks between them not
     if (!warnings.isEmpty())
@@ -676,6 +679,12 @@ QString PlanningPanel::gcodeText() const
 
 QString PlanningPanel::exportGCode(const QString &path) const
 {
+    if (m_compensated->isChecked() && m_finishing.deviation.inputs) {
+        const QStringList beyond =
+            correctionsBeyondTheCut(m_finishing.compensation, m_finishing.deviation.inputs->pass.depthOfCut_mm);
+        if (!beyond.isEmpty())
+            return beyond.join(QLatin1Char('\n'));
+    }
     return writeFileAtomically(path, gcodeText().toUtf8());
 }
 
