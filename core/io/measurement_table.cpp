@@ -34,6 +34,13 @@ std::vector<qsizetype> headerColumns(const QStringList &cells, const QString &wh
         trimmed << cell.trimmed();
     for (const MeasurementColumn &c : columns) {
         columnOf.push_back(trimmed.indexOf(QLatin1String(c.name)));
+        // Twice named, either column could be meant: which one is read must not be a guess.
+        if (const qsizetype again = trimmed.lastIndexOf(QLatin1String(c.name)); again != columnOf.back())
+            out.push_back(makeError(where, MeasurementFiles::tr("the header names the column \"%1\" twice, as "
+                                                                "columns %2 and %3")
+                                               .arg(QLatin1String(c.name))
+                                               .arg(columnOf.back() + 1)
+                                               .arg(again + 1)));
         if (columnOf.back() < 0 && c.required)
             out.push_back(makeError(where, MeasurementFiles::tr("the header lacks the column \"%1\"; it needs %2")
                                                .arg(QLatin1String(c.name), requiredNames(columns))));
@@ -96,7 +103,10 @@ std::optional<std::vector<MeasurementRow>> parseMeasurementTable(const QString &
     const int errorsBefore = countOf(out, Severity::Error);
     std::vector<qsizetype> columnOf;
     std::vector<MeasurementRow> rows;
-    const QStringList lines = text.split(QLatin1Char('\n'));
+    // Lines end in LF, CR LF or, from old Mac spreadsheets, CR alone: one file of one line otherwise.
+    QString normalised = text;
+    normalised.replace(QStringLiteral("\r\n"), QStringLiteral("\n")).replace(QLatin1Char('\r'), QLatin1Char('\n'));
+    const QStringList lines = normalised.split(QLatin1Char('\n'));
     for (qsizetype n = 0; n < lines.size(); ++n) {
         const QString line = lines.at(n).trimmed();
         if (line.isEmpty() || line.startsWith(QLatin1Char('#')))

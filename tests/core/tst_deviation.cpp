@@ -398,6 +398,22 @@ private Q_SLOTS:
         QCOMPARE(extraCell.diagnostics.size(), std::size_t(1));
         QVERIFY2(extraCell.diagnostics.front().message.contains(QStringLiteral("the line has 3 cells, the header 2")),
                  qPrintable(dump(extraCell.diagnostics)));
+        // A column named twice is refused, not read from the first of them.
+        const TestBarReadResult twice = parseTestBarMeasurements(
+            QStringLiteral("z_mm,radial_um,radial_um\n40,12.5,13.5\n"), QStringLiteral("b.csv"));
+        QVERIFY(!twice.points);
+        QVERIFY2(twice.diagnostics.front().message.contains(
+                     QStringLiteral("names the column \"radial_um\" twice, as columns 2 and 3")),
+                 qPrintable(dump(twice.diagnostics)));
+        // Lines ended by CR alone (old Mac spreadsheets) are lines: two points, the second on line 3.
+        const TestBarReadResult crOnly =
+            parseTestBarMeasurements(QStringLiteral("z_mm,radial_um\r40,12.5\r50,abc\r"), QStringLiteral("b.csv"));
+        QVERIFY(!crOnly.points);
+        QCOMPARE(crOnly.diagnostics.front().field, QStringLiteral("b.csv:3"));
+        const TestBarReadResult crLf =
+            parseTestBarMeasurements(QStringLiteral("z_mm,radial_um\r\n40,12.5\r\n50,13\r\n"), QStringLiteral("b.csv"));
+        QVERIFY2(crLf.points && crLf.points->size() == 2, qPrintable(dump(crLf.diagnostics)));
+        QCOMPARE(crLf.points->at(1).radial_um, 13.0);
         const TestBarReadResult header =
             parseTestBarMeasurements(QStringLiteral("z,radial_um\n"), QStringLiteral("b.csv"));
         QVERIFY(header.diagnostics.front().message.contains(QStringLiteral("lacks the column \"z_mm\"")));
