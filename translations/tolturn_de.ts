@@ -720,6 +720,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>the output &apos;%1&apos; is the input file &apos;%2&apos;: give another output file, so that the input is not overwritten</source>
         <translation>die Ausgabe &apos;%1&apos; ist die Eingabedatei &apos;%2&apos;: geben Sie eine andere Ausgabedatei an, damit die Eingabe nicht überschrieben wird</translation>
     </message>
+    <message>
+        <source>there is no measurement store %1: &apos;measurements add&apos; stores the first part in it</source>
+        <translation>es gibt keinen Messwertspeicher %1: 'measurements add' legt das erste Teil darin ab</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -2322,6 +2326,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the line has %1 cells, the header %2: &quot;%3&quot;</source>
         <translation>die Zeile hat %1 Zellen, die Kopfzeile %2: „%3“</translation>
+    </message>
+    <message>
+        <source>the header names the column &quot;%1&quot; twice, as columns %2 and %3</source>
+        <translation>die Kopfzeile nennt die Spalte „%1“ zweimal, als Spalten %2 und %3</translation>
     </message>
 </context>
 <context>

@@ -720,6 +720,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>the output &apos;%1&apos; is the input file &apos;%2&apos;: give another output file, so that the input is not overwritten</source>
         <translation>la salida &apos;%1&apos; es el archivo de entrada &apos;%2&apos;: indique otro archivo de salida para que la entrada no se sobrescriba</translation>
     </message>
+    <message>
+        <source>there is no measurement store %1: &apos;measurements add&apos; stores the first part in it</source>
+        <translation>no hay ningún almacén de mediciones %1: 'measurements add' guarda en él la primera pieza</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -2322,6 +2326,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the line has %1 cells, the header %2: &quot;%3&quot;</source>
         <translation>la línea tiene %1 celdas, la cabecera %2: «%3»</translation>
+    </message>
+    <message>
+        <source>the header names the column &quot;%1&quot; twice, as columns %2 and %3</source>
+        <translation>la cabecera nombra la columna &quot;%1&quot; dos veces, como columnas %2 y %3</translation>
     </message>
 </context>
 <context>

@@ -224,11 +224,20 @@ QCommandLineOption measurementStoreOption()
             QStringLiteral("STORE")};
 }
 
-std::unique_ptr<MeasurementStore> openMeasurementStore(const QString &store, const QString &prefix, QTextStream &err)
+std::unique_ptr<MeasurementStore> openMeasurementStore(const QString &store, const QString &prefix, QTextStream &err,
+                                                       StoreAccess access)
 {
     QString error;
     const std::optional<StoreLocation> location =
         store.isEmpty() ? std::optional<StoreLocation>(defaultStoreLocation()) : storeLocationFromText(store, &error);
+    if (location && access == StoreAccess::Read && location->kind == StoreLocation::Kind::SQLite &&
+        !QFileInfo::exists(location->file)) {
+        err << prefix
+            << CommandLine::tr("there is no measurement store %1: 'measurements add' stores the first part in it")
+                   .arg(location->file)
+            << '\n';
+        return nullptr;
+    }
     std::unique_ptr<MeasurementStore> opened = location ? MeasurementStore::open(*location, &error) : nullptr;
     if (!opened)
         err << prefix << error << '\n';

@@ -95,8 +95,11 @@ enum class MissingPasses { Refused, Planned }; // the optimiser plans a project 
 [[nodiscard]] QCommandLineOption measurementStoreOption();
 
 // The measurement store named by `store` (an SQLite file or a postgresql:// address; empty: the
-// per-user file), opened; null after printing why on `err` after `prefix`.
+// per-user file), opened; null after printing why on `err` after `prefix`. Only a command that
+// stores parts makes an SQLite store that is not there; one that reads it is told there is none.
+enum class StoreAccess { Read, Store };
 [[nodiscard]] std::unique_ptr<MeasurementStore> openMeasurementStore(const QString &store, const QString &prefix,
-                                                                     QTextStream &err);
+                                                                     QTextStream &err,
+                                                                     StoreAccess access = StoreAccess::Read);
 
 } // namespace tolturn

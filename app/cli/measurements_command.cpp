@@ -35,7 +35,8 @@ QString prefix(const QString &action)
 
 std::unique_ptr<MeasurementStore> openStore(const QCommandLineParser &parser, const QString &action, QTextStream &err)
 {
-    return openMeasurementStore(parser.value(QStringLiteral("store")), prefix(action), err);
+    return openMeasurementStore(parser.value(QStringLiteral("store")), prefix(action), err,
+                                action == QLatin1String("add") ? StoreAccess::Store : StoreAccess::Read);
 }
 
 std::optional<double> numberOption(const QCommandLineParser &parser, const QString &name, const QString &action,

@@ -9,6 +9,7 @@
 #include "core/io/project_json.h"
 #include "core/tolerance/target_contour.h"
 
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -345,6 +346,22 @@ private Q_SLOTS:
                                     example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(unread.exitCode, 2);
         QVERIFY2(unread.err.contains(QStringLiteral("not.json: not a JSON object")), qPrintable(unread.err));
+    }
+
+    // Reading a store that is not there says so and makes none: before, learn and list made an
+    // empty SQLite file at a mistyped path and reported no parts in it.
+    void missingStoreIsNotMade()
+    {
+        const QString missing = m_dir.filePath(QStringLiteral("mistyped.sqlite"));
+        const auto learn = runCli({QStringLiteral("learn"), QStringLiteral("--machine"), QStringLiteral("L1"),
+                                   QStringLiteral("--store"), missing});
+        QCOMPARE(learn.exitCode, 1);
+        QVERIFY2(learn.err.contains(QStringLiteral("there is no measurement store %1").arg(missing)),
+                 qPrintable(learn.err));
+        const auto list =
+            runCli({QStringLiteral("measurements"), QStringLiteral("list"), QStringLiteral("--store"), missing});
+        QCOMPARE(list.exitCode, 1);
+        QVERIFY(!QFileInfo::exists(missing));
     }
 
     // A database that is not there: named by its address (without the password).
