@@ -22,6 +22,8 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -419,6 +421,40 @@ private Q_SLOTS:
         QVERIFY(file.open(QIODevice::ReadOnly));
         QCOMPARE(QString::fromUtf8(file.readAll()), w.planningPanel()->gcodeText());
         QVERIFY(!w.planningPanel()->exportGCode(QStringLiteral("/nonexistent-folder/x.nc")).isEmpty());
+    }
+
+    // A thermal drift of 10 mm per 1000 rpm asks for a correction of about 28 mm against a finishing
+    // depth of 0.5 mm: the compensated program is shown with why it is no program to run, and is
+    // not exported, as gcode --compensated refuses it; the nominal program still is.
+    void exportRefusesACorrectionDeeperThanTheCut()
+    {
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        project.insert(
+            QStringLiteral("characterisation"),
+            QJsonObject{{QStringLiteral("source"), QStringLiteral("a test")},
+                        {QStringLiteral("thermal"), QJsonObject{{QStringLiteral("drift_um_per_1000rpm"), 10000.0},
+                                                                {QStringLiteral("time_constant_min"), 10.0}}}});
+        QTemporaryDir dir;
+        const QString projectPath = dir.filePath(QStringLiteral("drift.tolturn"));
+        QFile out(projectPath);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(QJsonDocument(project).toJson());
+        out.close();
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(projectPath));
+        PlanningPanel *panel = w.planningPanel();
+        panel->findChild<QCheckBox *>(QStringLiteral("gcodeCompensated"))->setChecked(true);
+        const QString beyond = QStringLiteral("is larger than the finishing depth of cut 0.5 mm");
+        QVERIFY2(panel->findChild<QLabel *>(QStringLiteral("gcodeConditions"))->text().contains(beyond),
+                 qPrintable(panel->findChild<QLabel *>(QStringLiteral("gcodeConditions"))->text()));
+        const QString path = dir.filePath(QStringLiteral("finish.nc"));
+        QVERIFY(panel->exportGCode(path).contains(beyond));
+        QVERIFY(!QFile::exists(path));
+        panel->findChild<QCheckBox *>(QStringLiteral("gcodeCompensated"))->setChecked(false);
+        QVERIFY(panel->exportGCode(path).isEmpty());
+        QVERIFY(QFile::exists(path));
     }
 };
 
