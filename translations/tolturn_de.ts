@@ -194,10 +194,6 @@
         <translation>Kosten</translation>
     </message>
     <message>
-        <source>%1 by %2 %</source>
-        <translation>%1 um %2 %</translation>
-    </message>
-    <message>
         <source>no plan meets every constraint: %1</source>
         <translation>kein Plan erfüllt alle Randbedingungen: %1</translation>
     </message>
@@ -722,7 +718,11 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>there is no measurement store %1: &apos;measurements add&apos; stores the first part in it</source>
-        <translation>es gibt keinen Messwertspeicher %1: 'measurements add' legt das erste Teil darin ab</translation>
+        <translation>es gibt keinen Messwertspeicher %1: &apos;measurements add&apos; legt das erste Teil darin ab</translation>
+    </message>
+    <message>
+        <source>the output &apos;%1&apos; is the measurement store &apos;%2&apos;: give another output file, so that the store is not overwritten</source>
+        <translation>die Ausgabe '%1' ist der Messwertspeicher '%2': geben Sie eine andere Ausgabedatei an, damit der Speicher nicht überschrieben wird</translation>
     </message>
 </context>
 <context>
@@ -3442,10 +3442,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>zwei Aufspannungen heißen &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>operation &quot;%1&quot; has no cutting pass</source>
-        <translation>Aufspannung &quot;%1&quot; hat keinen Schnitt</translation>
-    </message>
-    <message>
         <source>operation &quot;%1&quot; cuts no feature</source>
         <translation>Aufspannung &quot;%1&quot; bearbeitet kein Formelement</translation>
     </message>
@@ -3530,6 +3526,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>least cost needs the machine and operator rate per minute, but it is %1</source>
         <translation>minimale Kosten brauchen den Maschinen- und Bedienerstundensatz je Minute, er ist aber %1</translation>
+    </message>
+    <message>
+        <source>with a predicted value that is not finite</source>
+        <translation>mit einem vorhergesagten Wert, der nicht endlich ist</translation>
+    </message>
+    <message>
+        <source>by %1 %</source>
+        <translation>um %1 %</translation>
     </message>
 </context>
 <context>
@@ -4608,10 +4612,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 Schruppschnitte bei vc %6 m/min, f %7 mm/rev.</translation>
     </message>
     <message>
-        <source>%1 violated by %2 %</source>
-        <translation>%1 um %2 % verletzt</translation>
-    </message>
-    <message>
         <source>Binding: %1.</source>
         <translation>Begrenzend: %1.</translation>
     </message>
@@ -4842,6 +4842,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>6  Milled features</source>
         <translation>6  Gefräste Formelemente</translation>
+    </message>
+    <message>
+        <source>%1 violated %2</source>
+        <translation>%1 %2 verletzt</translation>
     </message>
 </context>
 <context>
@@ -8531,10 +8535,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Begrenzend: %1 (%2 von %3 %4)</translation>
     </message>
     <message>
-        <source>Violated: %1 by %2 %</source>
-        <translation>Verletzt: %1 um %2 %</translation>
-    </message>
-    <message>
         <source>Note: </source>
         <translation>Hinweis: </translation>
     </message>
@@ -8713,6 +8713,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The optimisation failed: %1</source>
         <translation>Die Optimierung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Violated: %1 %2</source>
+        <translation>Verletzt: %1 %2</translation>
     </message>
 </context>
 <context>

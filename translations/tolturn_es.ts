@@ -194,10 +194,6 @@
         <translation>coste</translation>
     </message>
     <message>
-        <source>%1 by %2 %</source>
-        <translation>%1 en un %2 %</translation>
-    </message>
-    <message>
         <source>no plan meets every constraint: %1</source>
         <translation>ningún plan cumple todas las restricciones: %1</translation>
     </message>
@@ -722,7 +718,11 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>there is no measurement store %1: &apos;measurements add&apos; stores the first part in it</source>
-        <translation>no hay ningún almacén de mediciones %1: 'measurements add' guarda en él la primera pieza</translation>
+        <translation>no hay ningún almacén de mediciones %1: &apos;measurements add&apos; guarda en él la primera pieza</translation>
+    </message>
+    <message>
+        <source>the output &apos;%1&apos; is the measurement store &apos;%2&apos;: give another output file, so that the store is not overwritten</source>
+        <translation>la salida '%1' es el almacén de mediciones '%2': indique otro archivo de salida para que el almacén no se sobrescriba</translation>
     </message>
 </context>
 <context>
@@ -3442,10 +3442,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>dos operaciones se llaman &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>operation &quot;%1&quot; has no cutting pass</source>
-        <translation>la operación &quot;%1&quot; no tiene ninguna pasada de corte</translation>
-    </message>
-    <message>
         <source>operation &quot;%1&quot; cuts no feature</source>
         <translation>la operación &quot;%1&quot; no mecaniza ningún elemento</translation>
     </message>
@@ -3530,6 +3526,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>least cost needs the machine and operator rate per minute, but it is %1</source>
         <translation>el coste mínimo necesita la tarifa de máquina y operario por minuto, pero es %1</translation>
+    </message>
+    <message>
+        <source>with a predicted value that is not finite</source>
+        <translation>con un valor previsto que no es finito</translation>
+    </message>
+    <message>
+        <source>by %1 %</source>
+        <translation>en un %1 %</translation>
     </message>
 </context>
 <context>
@@ -4608,10 +4612,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 pasadas de desbaste a vc %6 m/min, f %7 mm/rev.</translation>
     </message>
     <message>
-        <source>%1 violated by %2 %</source>
-        <translation>%1: incumplida en un %2 %</translation>
-    </message>
-    <message>
         <source>Binding: %1.</source>
         <translation>Restricciones activas: %1.</translation>
     </message>
@@ -4842,6 +4842,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>6  Milled features</source>
         <translation>6  Elementos fresados</translation>
+    </message>
+    <message>
+        <source>%1 violated %2</source>
+        <translation>%1: incumplida %2</translation>
     </message>
 </context>
 <context>
@@ -8531,10 +8535,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Restricción activa: %1 (%2 de %3 %4)</translation>
     </message>
     <message>
-        <source>Violated: %1 by %2 %</source>
-        <translation>Restricción incumplida: %1 en un %2 %</translation>
-    </message>
-    <message>
         <source>Note: </source>
         <translation>Nota: </translation>
     </message>
@@ -8713,6 +8713,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The optimisation failed: %1</source>
         <translation>La optimización ha fallado: %1</translation>
+    </message>
+    <message>
+        <source>Violated: %1 %2</source>
+        <translation>Restricción incumplida: %1 %2</translation>
     </message>
 </context>
 <context>

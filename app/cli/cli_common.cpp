@@ -62,9 +62,21 @@ std::optional<Project> readProject(const QString &file, QTextStream &err, Missin
     // What `check` calls an error (an unknown material, no pass, a bar that does not fit the pilot
     // hole) stops every command, as the file's own errors do; its warnings are `check`'s to give.
     bool refused = false;
-    const bool planned = missingPasses == MissingPasses::Planned && read.project->passes.empty();
-    for (const Diagnostic &d : checkPlausibility(*read.project, DataLibrary::builtIn())) {
-        if (d.severity == Severity::Error && !(planned && d.field == QLatin1String("passes"))) {
+    const Project &project = *read.project;
+    // "passes" or "further_operations[i].passes" of a set-up that has none: the optimiser plans them.
+    const auto planned = [&](const QString &field) {
+        if (missingPasses != MissingPasses::Planned)
+            return false;
+        if (field == QLatin1String("passes"))
+            return project.passes.empty();
+        for (std::size_t i = 0; i < project.furtherOperations.size(); ++i) {
+            if (field == QStringLiteral("further_operations[%1].passes").arg(i))
+                return project.furtherOperations[i].passes.empty();
+        }
+        return false;
+    };
+    for (const Diagnostic &d : checkPlausibility(project, DataLibrary::builtIn())) {
+        if (d.severity == Severity::Error && !planned(d.field)) {
             err << file << ": " << d.toString() << '\n';
             refused = true;
         }
@@ -104,13 +116,23 @@ std::optional<Project> selectOperation(const Project &project, const QCommandLin
     return operationView(project, static_cast<int>(index));
 }
 
-QString overwritesInput(const QString &output, const QString &input)
+namespace {
+
+// Whether writing `output` would replace `input`, by any spelling of its path or a link to it.
+bool replaces(const QString &output, const QString &input)
 {
     if (isStandardOutput(output))
-        return {};
+        return false;
     const QFileInfo target(output);
     const QFileInfo source(input);
-    if (!target.exists() || !source.exists() || target.canonicalFilePath() != source.canonicalFilePath())
+    return target.exists() && source.exists() && target.canonicalFilePath() == source.canonicalFilePath();
+}
+
+} // namespace
+
+QString overwritesInput(const QString &output, const QString &input)
+{
+    if (!replaces(output, input))
         return {};
     return CommandLine::tr("the output '%1' is the input file '%2': give another output file, so that the input is "
                            "not overwritten")
@@ -123,7 +145,11 @@ QString overwritesStore(const QString &output, const QString &store)
         store.isEmpty() ? std::optional<StoreLocation>(defaultStoreLocation()) : storeLocationFromText(store, nullptr);
     if (!location || location->kind != StoreLocation::Kind::SQLite)
         return {}; // a store that cannot be named is refused when it is opened; a server is no file
-    return overwritesInput(output, location->file);
+    if (!replaces(output, location->file))
+        return {};
+    return CommandLine::tr("the output '%1' is the measurement store '%2': give another output file, so that the "
+                           "store is not overwritten")
+        .arg(output, location->file);
 }
 
 QString writeOutput(const QString &path, const QByteArray &data, QTextStream &out)

@@ -46,6 +46,9 @@ struct CommandLine {
 
 QString constraintText(const ConstraintValue &c)
 {
+    if (!std::isfinite(c.value))
+        return QStringLiteral("%1: %2 (limit %3 %4)")
+            .arg(c.label(), c.violatedBy(), QString::number(c.limit, 'g', 4), c.unit);
     // Four significant digits: a ratio of 10^270 (degenerate tool-life data) is no row of digits.
     return QStringLiteral("%1: %2 of %3 %4 (%5 %)")
         .arg(c.label(), QString::number(c.value, 'g', 4), QString::number(c.limit, 'g', 4), c.unit,
@@ -313,7 +316,7 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
     const QString file = oneProjectFile(parser, QStringLiteral("advise-clamping"), err);
     if (file.isEmpty())
         return kExitUsage;
-    const std::optional<Project> whole = readProject(file, err);
+    const std::optional<Project> whole = readProject(file, err, MissingPasses::Planned); // it plans them
     if (!whole)
         return kExitProblems;
     const std::optional<Project> project = selectOperation(*whole, parser, QStringLiteral("advise-clamping"), err);

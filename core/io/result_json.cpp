@@ -7,6 +7,7 @@
 
 #include <QJsonValue>
 
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -179,13 +180,20 @@ QJsonObject passJson(const PassConditions &p)
 QJsonArray constraintsJson(const std::vector<ConstraintValue> &list)
 {
     QJsonArray out;
-    for (const ConstraintValue &c : list)
-        out.append(QJsonObject{{QStringLiteral("name"), c.name},
-                               {QStringLiteral("subject"), c.subject},
-                               {QStringLiteral("value"), c.value},
-                               {QStringLiteral("limit"), c.limit},
-                               {QStringLiteral("unit"), c.unit},
-                               {QStringLiteral("violation_pct"), 100.0 * c.violation()}});
+    for (const ConstraintValue &c : list) {
+        QJsonObject o{{QStringLiteral("name"), c.name},
+                      {QStringLiteral("subject"), c.subject},
+                      {QStringLiteral("limit"), c.limit},
+                      {QStringLiteral("unit"), c.unit}};
+        // A value that is not finite has no number in JSON: it is said, and has no value.
+        if (std::isfinite(c.value)) {
+            o.insert(QStringLiteral("value"), c.value);
+            o.insert(QStringLiteral("violation_pct"), 100.0 * c.violation());
+        } else {
+            o.insert(QStringLiteral("not_finite"), true);
+        }
+        out.append(o);
+    }
     return out;
 }
 

@@ -68,7 +68,7 @@ QString describe(const ClampingOption &o, const Project &p)
     }
     QStringList violated;
     for (const ConstraintValue &c : o.plan.conflicts)
-        violated << ClampingAdvice::tr("%1 by %2 %").arg(c.label(), QString::number(100.0 * c.violation(), 'f', 0));
+        violated << QStringLiteral("%1 %2").arg(c.label(), c.violatedBy());
     return ClampingAdvice::tr("no plan meets every constraint: %1").arg(violated.join(QStringLiteral(", ")));
 }
 

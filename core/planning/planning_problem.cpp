@@ -58,6 +58,13 @@ QString ConstraintValue::label() const
     return QStringLiteral("%1 (%2)").arg(name, subject);
 }
 
+QString ConstraintValue::violatedBy() const
+{
+    if (!std::isfinite(value))
+        return Planning::tr("with a predicted value that is not finite");
+    return Planning::tr("by %1 %").arg(QString::number(100.0 * violation(), 'g', 4));
+}
+
 bool CandidateEvaluation::feasible(double slack) const
 {
     return std::all_of(constraints.begin(), constraints.end(),

@@ -45,6 +45,9 @@ struct ConstraintValue {
     [[nodiscard]] double violation() const { return limit > 0.0 ? value / limit - 1.0 : (value > 0.0 ? 1e9 : -1.0); }
 
     [[nodiscard]] QString label() const; // "tolerance T1", "power (finishing)"
+    // How far it is violated, for people: "by 12.5 %", or that the value is not finite (a
+    // deviation that overflows at these conditions, PlanningProblem::toleranceConstraintsOf).
+    [[nodiscard]] QString violatedBy() const;
 };
 
 struct CandidateEvaluation {

@@ -379,9 +379,8 @@ Diagnostics checkOperations(const Project &project)
         else if (!names.insert(op.name).second)
             out.push_back(makeError(path + QStringLiteral(".name"),
                                     Operations::tr("two operations are named \"%1\"").arg(op.name)));
-        if (op.passes.empty())
-            out.push_back(makeError(path + QStringLiteral(".passes"),
-                                    Operations::tr("operation \"%1\" has no cutting pass").arg(op.name)));
+        // An operation without passes is check's to refuse (checkPlausibility), as the first one's
+        // is: the optimiser plans the passes of a set-up that has none yet.
         if (op.features.isEmpty())
             out.push_back(makeError(path + QStringLiteral(".features"),
                                     Operations::tr("operation \"%1\" cuts no feature").arg(op.name)));

@@ -318,20 +318,21 @@ private Q_SLOTS:
         row("project over its STEP file", "ISO-10303-21;\n",
             {QStringLiteral("import"), QStringLiteral("-o"), QStringLiteral("IN"), QStringLiteral("IN")}, 2, overInput,
             QStringLiteral("part.step"));
+        const QString overStore = QStringLiteral("is the measurement store");
         row("CSV over its measurement store", "SQLite format 3",
             {QStringLiteral("measurements"), QStringLiteral("export"), QStringLiteral("1"), QStringLiteral("--store"),
              QStringLiteral("IN"), QStringLiteral("-o"), QStringLiteral("IN")},
-            2, overInput, QStringLiteral("m.sqlite"));
+            2, overStore, QStringLiteral("m.sqlite"));
         // With --learned the store is an input too: the program or report must not replace it.
         const QString example = QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/stepped-shaft-chuck.tolturn");
         row("G-code over its measurement store", "SQLite format 3",
             {QStringLiteral("gcode"), QStringLiteral("--learned"), QStringLiteral("--store"), QStringLiteral("IN"),
              QStringLiteral("-o"), QStringLiteral("DIR/./m.sqlite"), example},
-            2, overInput, QStringLiteral("m.sqlite"));
+            2, overStore, QStringLiteral("m.sqlite"));
         row("report over its measurement store", "SQLite format 3",
             {QStringLiteral("report"), QStringLiteral("--learned"), QStringLiteral("--store"), QStringLiteral("IN"),
              QStringLiteral("-o"), QStringLiteral("IN"), example},
-            2, overInput, QStringLiteral("m.sqlite"));
+            2, overStore, QStringLiteral("m.sqlite"));
         row("optimiser time limit of zero", QJsonDocument(shaft()).toJson(),
             {QStringLiteral("optimize"), QStringLiteral("--time-limit"), QStringLiteral("0"), QStringLiteral("IN")}, 2,
             QStringLiteral("--time-limit is from 0.01 to 3600 seconds, not \"0\""));

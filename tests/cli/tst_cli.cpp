@@ -697,6 +697,39 @@ private Q_SLOTS:
             !QJsonDocument::fromJson(written.readAll()).object().value(QStringLiteral("passes")).toArray().isEmpty());
     }
 
+    // The same for a later set-up: OP 20 of the two-set-up bushing without passes is planned by
+    // optimize, window and advise-clamping, and refused by every command that cuts it as it is.
+    void optimizePlansAnOperationWithoutPasses()
+    {
+        QFile source(example("bushing-two-setups.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonArray operations = doc.value(QStringLiteral("further_operations")).toArray();
+        QJsonObject op20 = operations.at(0).toObject();
+        op20.insert(QStringLiteral("passes"), QJsonArray());
+        operations.replace(0, op20);
+        doc.insert(QStringLiteral("further_operations"), operations);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.tolturn"));
+        QVERIFY(writeFile(path, QJsonDocument(doc).toJson()));
+        const QString op = QStringLiteral("OP 20");
+        const Run check = runCli({QStringLiteral("check"), path});
+        QCOMPARE(check.exitCode, 1);
+        QVERIFY2(check.out.contains(QStringLiteral("further_operations[0].passes")) ||
+                     check.err.contains(QStringLiteral("further_operations[0].passes")),
+                 qPrintable(check.out + check.err));
+        for (const QString &command :
+             {QStringLiteral("optimize"), QStringLiteral("window"), QStringLiteral("advise-clamping")}) {
+            const Run r = runCli({command, QStringLiteral("--operation"), op, path});
+            QVERIFY2(r.exitCode == 0, qPrintable(command + QLatin1Char(' ') + r.err));
+        }
+        const Run gcode = runCli({QStringLiteral("gcode"), QStringLiteral("--operation"), op, QStringLiteral("-o"),
+                                  dir.filePath(QStringLiteral("p.nc")), path});
+        QCOMPARE(gcode.exitCode, 1);
+        QVERIFY2(gcode.err.contains(QStringLiteral("further_operations[0].passes")), qPrintable(gcode.err));
+        QCOMPARE(runCli({QStringLiteral("evaluate"), QStringLiteral("--operation"), op, path}).exitCode, 1);
+    }
+
     // optimize --write replaces the passes: a field this program does not know on an old pass is
     // dropped and named (it belongs to no new pass), while one elsewhere in the file is kept.
     void optimizeWriteNamesTheFieldsOfReplacedPasses()

@@ -9,6 +9,8 @@
 #include <QJsonArray>
 #include <QTest>
 
+#include <limits>
+
 using namespace tolturn;
 
 namespace {
@@ -125,6 +127,26 @@ private Q_SLOTS:
         const QJsonObject o = constraintsJson({c}).at(0).toObject();
         QCOMPARE(o.value(QStringLiteral("name")).toString(), QStringLiteral("power"));
         QVERIFY(near(o.value(QStringLiteral("violation_pct")).toDouble(), 20.0));
+    }
+
+    // A tolerance whose deviation overflows (toleranceConstraintsOf) has no number to write: JSON
+    // cannot hold infinity, and a null would leave a hole. It is said instead, with its limit.
+    void constraintNotFiniteIsSaid()
+    {
+        ConstraintValue c;
+        c.name = QStringLiteral("tolerances");
+        c.subject = QStringLiteral("T1");
+        c.value = std::numeric_limits<double>::infinity();
+        c.limit = 16.0;
+        c.unit = QStringLiteral("µm");
+        const QJsonObject o = constraintsJson({c}).at(0).toObject();
+        QVERIFY(o.value(QStringLiteral("not_finite")).toBool());
+        QVERIFY(!o.contains(QStringLiteral("value")));
+        QVERIFY(!o.contains(QStringLiteral("violation_pct")));
+        QCOMPARE(o.value(QStringLiteral("limit")).toDouble(), 16.0);
+        QCOMPARE(c.violatedBy(), QStringLiteral("with a predicted value that is not finite"));
+        c.value = 20.0; // 20 µm against 16 µm: 25 % over
+        QCOMPARE(c.violatedBy(), QStringLiteral("by 25 %"));
     }
 
     // ISO 286-2 Table 2 (holes H) and ISO 286-1 Table 1: Ø50 H7 is +25/0 µm, IT7 = 25 µm over 30 to

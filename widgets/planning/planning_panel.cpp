@@ -443,7 +443,7 @@ void PlanningPanel::showReport()
         lines << tr("Binding: %1 (%2 of %3 %4)")
                      .arg(c.label(), QString::number(c.value, 'g', 4), QString::number(c.limit, 'g', 4), c.unit);
     for (const ConstraintValue &c : r.conflicts)
-        lines << tr("Violated: %1 by %2 %").arg(c.label(), number(100.0 * c.violation(), 1));
+        lines << tr("Violated: %1 %2").arg(c.label(), c.violatedBy());
     for (const QString &n : r.notes)
         lines << tr("Note: ") + n;
     m_plan->setText(lines.join(QLatin1Char('\n')));

@@ -383,7 +383,7 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing, const s
             for (const ConstraintValue &c : pl.binding)
                 binding << c.label();
             for (const ConstraintValue &c : pl.conflicts)
-                binding << Report::tr("%1 violated by %2 %").arg(c.label(), num(100.0 * c.violation(), 1));
+                binding << Report::tr("%1 violated %2").arg(c.label(), c.violatedBy());
             if (!binding.isEmpty())
                 l.paragraph(Report::tr("Binding: %1.").arg(binding.join(QStringLiteral(", "))));
             windowMap(l, p, r);
