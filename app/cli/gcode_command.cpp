@@ -189,8 +189,8 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
             return kExitProblems;
     }
     const TurningProgram &program = parser.isSet(compensated) ? finishing.compensated : finishing.nominal;
-    if (const QString problem = writeOutput(parser.value(output), program.text.toUtf8(), out); !problem.isEmpty()) {
-        err << problem << '\n';
+    if (const QString unwritten = writeOutput(parser.value(output), program.text.toUtf8(), out); !unwritten.isEmpty()) {
+        err << unwritten << '\n';
         return kExitProblems;
     }
     err << file << ": " << GCodeCommand::tr("dialect %1").arg(program.dialectReason) << '\n';

@@ -87,8 +87,8 @@ int runReport(const QStringList &args, QTextStream &out, QTextStream &err)
         header.learned = std::make_shared<const LoadedModel>(std::move(*model));
     }
     const RenderedReport report = renderReport(*project, header);
-    if (const QString problem = writeOutput(parser.value(output), report.pdf, out); !problem.isEmpty()) {
-        err << programName() << " report: " << problem << '\n';
+    if (const QString unwritten = writeOutput(parser.value(output), report.pdf, out); !unwritten.isEmpty()) {
+        err << programName() << " report: " << unwritten << '\n';
         return kExitProblems;
     }
     (isStandardOutput(parser.value(output)) ? err : out)
