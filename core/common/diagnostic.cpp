@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/common/diagnostic.h"
 
+#include <QLocale>
+
 #include <algorithm>
 
 namespace tolturn {
@@ -53,6 +55,14 @@ Diagnostic makeWarning(const QString &field, const QString &message)
 QString formatNumber(double value)
 {
     return QString::number(value, 'g', 10);
+}
+
+QString formatNumberExactly(double value)
+{
+    // Ten digits where they hold the number (1000000000, 0.0004), else every digit it needs.
+    if (const QString tenDigits = formatNumber(value); tenDigits.toDouble() == value)
+        return tenDigits;
+    return QString::number(value, 'g', QLocale::FloatingPointShortest);
 }
 
 } // namespace tolturn

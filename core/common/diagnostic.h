@@ -37,5 +37,8 @@ using Diagnostics = std::vector<Diagnostic>;
 
 // Number formatting for messages: shortest form that round-trips to the shown precision.
 [[nodiscard]] QString formatNumber(double value);
+// A number as a file has it, to the last digit that tells it apart (5000.0000001 is not 5000):
+// for messages about values a user wrote, and for limits compared with them.
+[[nodiscard]] QString formatNumberExactly(double value);
 
 } // namespace tolturn

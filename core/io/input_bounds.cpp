@@ -99,7 +99,7 @@ void check(const QJsonValue &v, const QString &path, Diagnostics &out)
         const InputBound &b = boundFor(path);
         if (!std::isfinite(x) || std::abs(x) > b.max)
             out.push_back(makeError(path, InputBounds::tr("%1 is beyond what TolTurn computes with: at most %2%3")
-                                              .arg(formatNumber(x), formatNumber(b.max),
+                                              .arg(formatNumberExactly(x), formatNumber(b.max),
                                                    b.unit.isEmpty() ? QString() : QStringLiteral(" ") + b.unit)));
     } else if (v.isArray()) {
         const QJsonArray array = v.toArray();

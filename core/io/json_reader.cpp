@@ -4,7 +4,6 @@
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QLocale>
 #include <QRegularExpression>
 
 #include <cmath>
@@ -29,8 +28,7 @@ QString describeJsonValue(const QJsonValue &value)
         return value.toBool() ? JsonReading::tr("true") : JsonReading::tr("false");
     case QJsonValue::Double:
         // As the file has it, to the last digit: 1.0000000000000002 is not the whole number 1.
-        return JsonReading::tr("the number %1")
-            .arg(QString::number(value.toDouble(), 'g', QLocale::FloatingPointShortest));
+        return JsonReading::tr("the number %1").arg(formatNumberExactly(value.toDouble()));
     case QJsonValue::String:
         return JsonReading::tr("the text \"%1\"").arg(value.toString());
     case QJsonValue::Array:

@@ -22,9 +22,10 @@ struct ProjectValidation {
     Q_DECLARE_TR_FUNCTIONS(ProjectValidation)
 };
 
+// The values checked here are the file's: quoted as written (5.0000000001 is not 5).
 QString num(double v)
 {
-    return formatNumber(v);
+    return formatNumberExactly(v);
 }
 
 void requireText(const QString &value, const QString &field, const QString &what, Diagnostics &out)
@@ -287,10 +288,13 @@ void checkTolerances(const Project &p, Diagnostics &out)
 
 // Two size tolerances on one diameter must allow a common size: the program aims at the middle of
 // the zone both allow (targetContour), and no offset or correction can cut a size neither allows.
+// A zone narrower than the program's step on the diameter (X to 0.001 mm, post_processor.cpp
+// coordinate()) cannot be aimed at either: the rounded target may lie outside it.
 void checkSizesMeet(const Project &p, Diagnostics &out)
 {
+    constexpr double kProgramStep_um = 1.0;
     for (const DiameterTarget &target : diameterTargets(p)) {
-        if (target.upper_um > target.lower_um)
+        if (target.upper_um - target.lower_um >= kProgramStep_um)
             continue;
         std::size_t last = 0;
         for (std::size_t i = 0; i < p.tolerances.size(); ++i) {
@@ -302,6 +306,14 @@ void checkSizesMeet(const Project &p, Diagnostics &out)
                                     ProjectValidation::tr("the size tolerances of feature %1 leave a zone of no width "
                                                           "(both limits at %2 µm), which no cut can hold")
                                         .arg(target.featureId, num(target.upper_um))));
+            continue;
+        }
+        if (target.upper_um > target.lower_um) {
+            out.push_back(makeError(QStringLiteral("tolerances[%1]").arg(last),
+                                    ProjectValidation::tr("the size tolerances of feature %1 leave a zone from %2 to "
+                                                          "%3 µm, narrower than the 1 µm step of the program's "
+                                                          "diameters: no program can aim into it")
+                                        .arg(target.featureId, num(target.lower_um), num(target.upper_um))));
             continue;
         }
         out.push_back(makeError(QStringLiteral("tolerances[%1]").arg(last),

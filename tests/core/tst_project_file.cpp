@@ -565,6 +565,17 @@ private Q_SLOTS:
             {QStringLiteral("tolerances[1]={\"id\": \"T2\", \"type\": \"diameter\", \"feature\": \"O4\", "
                             "\"upper_um\": 10, \"lower_um\": 0}")},
             "tolerances[1]", "feature O4 leave a zone of no width (both limits at 0 µm)");
+        // h6 (0/-16 µm) and +10/-0.5 µm share a zone of 0.5 µm: the program states X to 1 µm.
+        row("two sizes sharing half a micrometre", shaft,
+            {QStringLiteral("tolerances[1]={\"id\": \"T2\", \"type\": \"diameter\", \"feature\": \"O4\", "
+                            "\"upper_um\": 10, \"lower_um\": -0.5}")},
+            "tolerances[1]", "feature O4 leave a zone from -0.5 to 0 µm, narrower than the 1 µm step");
+        // h6 allows down to -16 µm, the second size at most -16.0000000001 µm: quoted as written
+        // (to ten digits both would read -16 and the message would contradict itself).
+        row("two sizes a hair apart", shaft,
+            {QStringLiteral("tolerances[1]={\"id\": \"T2\", \"type\": \"diameter\", \"feature\": \"O4\", "
+                            "\"upper_um\": -16.0000000001, \"lower_um\": -30}")},
+            "tolerances[1]", "one needs at most -16.0000000001 µm, another at least -16 µm");
         row("ISO 286 class not defined at the size", shaft, {QStringLiteral("tolerances[0].iso286=\"j8\"")},
             "tolerances[0].iso286", "gives no limits for j8 at Ø50 mm: shaft j8 is not defined");
     }
