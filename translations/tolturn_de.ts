@@ -209,6 +209,10 @@
         <source>; deciding: %1, %2 of %3 %4 (%5 % used)</source>
         <translation>; entscheidend: %1, %2 von %3 %4 (%5 % genutzt)</translation>
     </message>
+    <message>
+        <source>no cylinder at the right end of the part for the chuck jaws to grip</source>
+        <translation>kein Zylinder am rechten Ende des Teils, an dem die Spannbacken greifen können</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -722,7 +726,7 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
     <message>
         <source>the output &apos;%1&apos; is the measurement store &apos;%2&apos;: give another output file, so that the store is not overwritten</source>
-        <translation>die Ausgabe '%1' ist der Messwertspeicher '%2': geben Sie eine andere Ausgabedatei an, damit der Speicher nicht überschrieben wird</translation>
+        <translation>die Ausgabe &apos;%1&apos; ist der Messwertspeicher &apos;%2&apos;: geben Sie eine andere Ausgabedatei an, damit der Speicher nicht überschrieben wird</translation>
     </message>
 </context>
 <context>
@@ -3535,6 +3539,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>by %1 %</source>
         <translation>um %1 %</translation>
     </message>
+    <message>
+        <source>the stock leaves %1 mm to remove on the radius of the outer profile, less than the insert&apos;s smallest depth of cut (%2 mm, planning.ranges.depth_of_cut_mm): no pass can take it</source>
+        <translation>das Rohteil lässt am Radius der Außenkontur %1 mm abzutragen, weniger als die kleinste Schnitttiefe der Wendeschneidplatte (%2 mm, planning.ranges.depth_of_cut_mm): kein Schnitt kann das abnehmen</translation>
+    </message>
+    <message>
+        <source>the stock leaves %1 mm to remove on the radius, between what %2 and %3 passes at depths of cut from %4 to %5 mm (planning.ranges.depth_of_cut_mm) can take: at most %6 mm, at least %7 mm</source>
+        <translation>das Rohteil lässt am Radius %1 mm abzutragen, zwischen dem, was %2 und %3 Schnitte mit Schnitttiefen von %4 bis %5 mm (planning.ranges.depth_of_cut_mm) abnehmen können: höchstens %6 mm, mindestens %7 mm</translation>
+    </message>
 </context>
 <context>
     <name>Plausibility</name>
@@ -4353,6 +4365,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the size tolerances of feature %1 leave a zone of no width (both limits at %2 µm), which no cut can hold</source>
         <translation>die Maßtoleranzen von Element %1 lassen eine Zone ohne Breite (beide Grenzen bei %2 µm), die kein Schnitt halten kann</translation>
+    </message>
+    <message>
+        <source>the size tolerances of feature %1 leave a zone from %2 to %3 µm, narrower than the 1 µm step of the program&apos;s diameters: no program can aim into it</source>
+        <translation>die Maßtoleranzen von Element %1 lassen eine Zone von %2 bis %3 µm, schmaler als der Schritt von 1 µm der Durchmesser im Programm: kein Programm kann hineinzielen</translation>
     </message>
 </context>
 <context>

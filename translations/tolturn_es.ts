@@ -209,6 +209,10 @@
         <source>; deciding: %1, %2 of %3 %4 (%5 % used)</source>
         <translation>; decisiva: %1, %2 de %3 %4 (%5 % utilizado)</translation>
     </message>
+    <message>
+        <source>no cylinder at the right end of the part for the chuck jaws to grip</source>
+        <translation>no hay ningún cilindro en el extremo derecho de la pieza que puedan sujetar las garras del plato</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -722,7 +726,7 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
     <message>
         <source>the output &apos;%1&apos; is the measurement store &apos;%2&apos;: give another output file, so that the store is not overwritten</source>
-        <translation>la salida '%1' es el almacén de mediciones '%2': indique otro archivo de salida para que el almacén no se sobrescriba</translation>
+        <translation>la salida &apos;%1&apos; es el almacén de mediciones &apos;%2&apos;: indique otro archivo de salida para que el almacén no se sobrescriba</translation>
     </message>
 </context>
 <context>
@@ -3535,6 +3539,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>by %1 %</source>
         <translation>en un %1 %</translation>
     </message>
+    <message>
+        <source>the stock leaves %1 mm to remove on the radius of the outer profile, less than the insert&apos;s smallest depth of cut (%2 mm, planning.ranges.depth_of_cut_mm): no pass can take it</source>
+        <translation>el material en bruto deja %1 mm por quitar en el radio del perfil exterior, menos que la menor profundidad de corte de la plaquita (%2 mm, planning.ranges.depth_of_cut_mm): ninguna pasada puede quitarlo</translation>
+    </message>
+    <message>
+        <source>the stock leaves %1 mm to remove on the radius, between what %2 and %3 passes at depths of cut from %4 to %5 mm (planning.ranges.depth_of_cut_mm) can take: at most %6 mm, at least %7 mm</source>
+        <translation>el material en bruto deja %1 mm por quitar en el radio, entre lo que pueden quitar %2 y %3 pasadas con profundidades de corte de %4 a %5 mm (planning.ranges.depth_of_cut_mm): como mucho %6 mm, como mínimo %7 mm</translation>
+    </message>
 </context>
 <context>
     <name>Plausibility</name>
@@ -4353,6 +4365,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the size tolerances of feature %1 leave a zone of no width (both limits at %2 µm), which no cut can hold</source>
         <translation>las tolerancias dimensionales del elemento %1 dejan una zona sin anchura (ambos límites en %2 µm), que ningún corte puede mantener</translation>
+    </message>
+    <message>
+        <source>the size tolerances of feature %1 leave a zone from %2 to %3 µm, narrower than the 1 µm step of the program&apos;s diameters: no program can aim into it</source>
+        <translation>las tolerancias dimensionales del elemento %1 dejan una zona de %2 a %3 µm, más estrecha que el paso de 1 µm de los diámetros del programa: ningún programa puede apuntar a ella</translation>
     </message>
 </context>
 <context>

@@ -18,7 +18,9 @@ struct ClampingAdvice {
     Q_DECLARE_TR_FUNCTIONS(ClampingAdvice)
 };
 
-// Length a chuck can grip: the project's own, or the first outer cylinder (at most a third of the part).
+// Length a chuck can grip: the project's own, or the first outer cylinder (at most a third of the
+// part). z runs from the held end: an operation's view of a part held at its right end is mirrored
+// (operationView).
 std::optional<double> gripLength(const Project &p)
 {
     if (p.clamping.method != ClampingMethod::BetweenCentres && p.clamping.clampedLength_mm > 0.0)
@@ -85,7 +87,9 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         o.method = method;
         const bool chuck = method != ClampingMethod::BetweenCentres;
         if (chuck && !grip) {
-            o.reason = ClampingAdvice::tr("no cylinder at the left end of the part for the chuck jaws to grip");
+            o.reason = project.clamping.heldEnd == PartEnd::Right
+                           ? ClampingAdvice::tr("no cylinder at the right end of the part for the chuck jaws to grip")
+                           : ClampingAdvice::tr("no cylinder at the left end of the part for the chuck jaws to grip");
             out.push_back(o);
             continue;
         }

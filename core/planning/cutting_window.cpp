@@ -32,9 +32,11 @@ void fillColumns(const PlanningProblem &problem, CuttingWindow &w, int firstColu
 {
     for (int column = firstColumn; column < w.columns && !cancel; column += step) {
         const double feed = lerp(w.feed, column, w.columns);
-        // In the feed–speed plane the tolerance constraints depend on the feed only: once per column.
+        // In the feed–speed plane the tolerance constraints depend on the feed only, unless the
+        // thermal drift or a learned residual brings in the spindle speed: then once per column.
+        const bool perColumn = w.plane == WindowPlane::FeedSpeed && !problem.tolerancesDependOnCuttingSpeed();
         std::vector<ConstraintValue> tolerances;
-        if (w.plane == WindowPlane::FeedSpeed) {
+        if (perColumn) {
             PassConditions pass = w.base.finishing;
             pass.feed_mm_rev = feed;
             tolerances = problem.toleranceConstraints(pass);
@@ -47,8 +49,7 @@ void fillColumns(const PlanningProblem &problem, CuttingWindow &w, int firstColu
                 c.finishing.cuttingSpeed_m_min = y;
             else
                 c.finishing.depthOfCut_mm = y;
-            const CandidateEvaluation e =
-                problem.evaluate(c, w.plane == WindowPlane::FeedSpeed ? &tolerances : nullptr);
+            const CandidateEvaluation e = problem.evaluate(c, perColumn ? &tolerances : nullptr);
             WindowCell &cell = w.cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(w.columns) +
                                        static_cast<std::size_t>(column)];
             cell.x = feed;

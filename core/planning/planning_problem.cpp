@@ -23,6 +23,46 @@ struct Planning {
 constexpr double kPi = std::numbers::pi;
 constexpr int kStations = 11; // tool positions per feature for tolerances and times
 
+// The passes of a plan are one finishing pass and k equal roughing passes, each within the insert's
+// range of depth of cut [a_min, a_max] (planBox): k + 1 passes take a radial stock from
+// (k + 1) a_min to (k + 1) a_max. A stock outside every such span, or needing more passes than
+// the optimiser plans, has no plan; said here, with the numbers, instead of an empty plan.
+std::optional<Diagnostic> uncuttableStock(double stock_mm, const ValueRange &depth)
+{
+    const QString field = QStringLiteral("part.stock_diameter_mm");
+    constexpr double kSlack = 1e-9;
+    if (stock_mm < depth.min - kSlack)
+        return makeError(field, Planning::tr("the stock leaves %1 mm to remove on the radius of the outer profile, "
+                                             "less than the insert's smallest depth of cut (%2 mm, "
+                                             "planning.ranges.depth_of_cut_mm): no pass can take it")
+                                    .arg(formatNumber(stock_mm), formatNumber(depth.min)));
+    // As roughingPassRange() counts them, before its cap: the finishing pass at the largest depth.
+    const double fewest = std::ceil((stock_mm - depth.max) / depth.max - 1e-9);
+    if (fewest > kMaxRoughingPasses)
+        return makeError(
+            field,
+            Planning::tr("the stock leaves %1 mm to remove on the radius: at least %2 roughing passes at the insert's "
+                         "largest depth of cut (%3 mm), and the optimiser plans up to %4; turn from a smaller bar")
+                .arg(formatNumber(stock_mm))
+                .arg(formatNumber(fewest))
+                .arg(formatNumber(depth.max))
+                .arg(kMaxRoughingPasses));
+    // The fewest passes that can take it (fewest + 1 with the finishing pass) must not be too many
+    // at the smallest depth.
+    const int passes = static_cast<int>(std::max(fewest, 0.0)) + 1;
+    if (stock_mm < passes * depth.min - kSlack)
+        return makeError(field, Planning::tr("the stock leaves %1 mm to remove on the radius, between what %2 and %3 "
+                                             "passes at depths of cut from %4 to %5 mm "
+                                             "(planning.ranges.depth_of_cut_mm) can take: at most %6 mm, at least "
+                                             "%7 mm")
+                                    .arg(formatNumber(stock_mm))
+                                    .arg(passes - 1)
+                                    .arg(passes)
+                                    .arg(formatNumber(depth.min), formatNumber(depth.max),
+                                         formatNumber((passes - 1) * depth.max), formatNumber(passes * depth.min)));
+    return std::nullopt;
+}
+
 } // namespace
 
 bool constraintHasLimit(const Project &project, const DataLibrary &data, const QString &constraint)
@@ -173,17 +213,8 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
         }
         p.m_finishPaths.push_back(std::move(path));
     }
-    // As roughingPassRange() counts them, before its cap: the finishing pass at the largest depth.
-    if (const double fewest = std::ceil((p.m_radialStock_mm - p.m_depth.max) / p.m_depth.max - 1e-9);
-        fewest > kMaxRoughingPasses) {
-        out.push_back(makeError(
-            QStringLiteral("part.stock_diameter_mm"),
-            Planning::tr("the stock leaves %1 mm to remove on the radius: at least %2 roughing passes at the insert's "
-                         "largest depth of cut (%3 mm), and the optimiser plans up to %4; turn from a smaller bar")
-                .arg(formatNumber(p.m_radialStock_mm))
-                .arg(formatNumber(fewest))
-                .arg(formatNumber(p.m_depth.max))
-                .arg(kMaxRoughingPasses)));
+    if (std::optional<Diagnostic> uncuttable = uncuttableStock(p.m_radialStock_mm, p.m_depth)) {
+        out.push_back(std::move(*uncuttable));
         return result;
     }
     if (!s.taylorC_m_min || !s.taylorN)

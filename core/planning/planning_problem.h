@@ -100,6 +100,14 @@ public:
                                                const std::vector<ConstraintValue> *tolerances = nullptr) const;
     // The tolerance constraints of a finishing pass (the deviation it leaves against each tolerance).
     [[nodiscard]] std::vector<ConstraintValue> toleranceConstraints(const PassConditions &pass) const;
+
+    // Whether those constraints change with the cutting speed (the spindle speed's thermal drift,
+    // a learned residual): when they do not, a window may compute them once per feed.
+    [[nodiscard]] bool tolerancesDependOnCuttingSpeed() const
+    {
+        return m_inputs.thermal.has_value() || m_learned != nullptr;
+    }
+
     // The same problem for a finishing pass of a fixed depth, its deviation on the stations and the
     // in-process section the verdicts use (computeDeviation): the optimiser's table is built for the
     // smallest depth of the range, which is safe while the depth is searched but not what a given

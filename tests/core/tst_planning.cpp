@@ -9,6 +9,7 @@
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
 #include "core/planning/gcode.h"
+#include "core/project/operations.h"
 #include "core/project/project_validation.h"
 #include "core/tolerance/range_verdicts.h"
 
@@ -308,10 +309,57 @@ private Q_SLOTS:
                  qPrintable(b.diagnostics.back().message));
     }
 
+    // Radial stock 16 mm (Ø60 bar, the end chamfer down to Ø28). k + 1 passes at depths from a_min
+    // to a_max take (k + 1) a_min to (k + 1) a_max: with 20-30 mm none can take 16 mm, with 9-10 mm
+    // one pass takes at most 10 mm and two at least 18 mm. Refused by name, not an empty plan.
+    void stockNoPassCanTakeIsRefusedByName_data()
+    {
+        QTest::addColumn<double>("smallestDepth");
+        QTest::addColumn<double>("largestDepth");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("thinner than the smallest cut")
+            << 20.0 << 30.0
+            << QStringLiteral("leaves 16 mm to remove on the radius of the outer profile, less than the insert's "
+                              "smallest depth of cut (20 mm");
+        QTest::newRow("between one pass and two")
+            << 9.0 << 10.0 << QStringLiteral("between what 1 and 2 passes at depths of cut from 9 to 10 mm");
+        QTest::newRow("their limits") << 9.0 << 10.0 << QStringLiteral("at most 10 mm, at least 18 mm");
+    }
+
+    void stockNoPassCanTakeIsRefusedByName()
+    {
+        QFETCH(double, smallestDepth);
+        QFETCH(double, largestDepth);
+        QFETCH(QString, expected);
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
+        p.planning.depthOfCut_mm = ValueRange{smallestDepth, largestDepth};
+        const PlanningProblem::BuildResult b = PlanningProblem::build(p, DataLibrary::builtIn());
+        QVERIFY(!b.problem);
+        QVERIFY(!b.diagnostics.empty());
+        QCOMPARE(b.diagnostics.back().field, QStringLiteral("part.stock_diameter_mm"));
+        QVERIFY2(b.diagnostics.back().message.contains(expected), qPrintable(b.diagnostics.back().message));
+    }
+
     // Every cell of the window is what a direct evaluation of that plan says.
+    // With a thermal drift of the spindle warming up during the pass (200 µm per 1000 rpm on a cold
+    // machine, an illustrative value made large so that it binds) the tolerances change with the
+    // cutting speed along a column of the feed-speed window: each cell has its own.
+    void windowAgreesWithDirectEvaluation_data()
+    {
+        QTest::addColumn<bool>("thermalDrift");
+        QTest::newRow("as drawn") << false;
+        QTest::newRow("thermal drift") << true;
+    }
+
     void windowAgreesWithDirectEvaluation()
     {
-        const auto problem = problemFor(test::exampleProject("long-shaft-centres.tolturn"));
+        QFETCH(bool, thermalDrift);
+        Project project = test::exampleProject("long-shaft-centres.tolturn");
+        if (thermalDrift) {
+            project.characterisation.thermal = ThermalDrift{200.0, 0.0, 20.0, 5.0};
+            project.environment.timeSinceStart_min = 0.0;
+        }
+        const auto problem = problemFor(project);
         const PlanResult opt = optimisePlan(*problem);
         for (const WindowPlane plane : {WindowPlane::FeedSpeed, WindowPlane::FeedDepth}) {
             WindowOptions o;
@@ -347,6 +395,31 @@ private Q_SLOTS:
         QCOMPARE(ranking[2].method, ClampingMethod::Chuck);
         QVERIFY(!ranking[2].plan.feasible);
         QVERIFY(ranking[2].reason.contains(QStringLiteral("tolerance")));
+    }
+
+    // Held at its right end, the stepped shaft's journal (O9) made a cone: the right end has no
+    // cylinder for the jaws, and the reason names that end, not the left one (which has Ø56).
+    void noGripIsSaidAtTheHeldEnd()
+    {
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
+        p.clamping.method = ClampingMethod::BetweenCentres;
+        p.clamping.clampedLength_mm = 0.0;
+        p.clamping.heldEnd = PartEnd::Right;
+        Segment &journal = p.part.outer.segments[8];
+        QCOMPARE(journal.id, QStringLiteral("O9"));
+        journal.kind = SegmentKind::Cone;
+        journal.to.r_mm = 14.5;
+        p.part.outer.segments[9].from.r_mm = 14.5;
+        const std::vector<ClampingOption> ranking = adviseClamping(operationView(p, 0), DataLibrary::builtIn());
+        int ungripped = 0;
+        for (const ClampingOption &o : ranking) {
+            if (o.method == ClampingMethod::BetweenCentres)
+                continue;
+            QVERIFY(!o.possible);
+            QCOMPARE(o.reason, QStringLiteral("no cylinder at the right end of the part for the chuck jaws to grip"));
+            ++ungripped;
+        }
+        QCOMPARE(ungripped, 2);
     }
 
     // Equal times (the stepped shaft in a chuck, with or without the tailstock, both 1.173 min: the
