@@ -4,6 +4,7 @@
 #include "app/cli/cli_common.h"
 #include "app/cli/command_line.h"
 #include "app/cli/learn_command.h"
+#include "core/common/csv.h"
 #include "core/common/library_info.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
@@ -284,7 +285,7 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
         for (const WindowCell &c : w.cells)
             out << QString::number(c.x, 'g', 8) << ',' << QString::number(c.y, 'g', 8) << ','
                 << QString::number(c.objective, 'g', 8) << ',' << (c.feasible ? 1 : 0) << ','
-                << (c.feasible ? QString() : QLatin1Char('"') + c.bindingLabel + QLatin1Char('"')) << '\n';
+                << (c.feasible ? QString() : csvField(c.bindingLabel)) << '\n';
         return kExitOk;
     }
     int feasible = 0;
@@ -324,6 +325,11 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
         return kExitUsage;
     const std::vector<ClampingOption> options = adviseClamping(*project, DataLibrary::builtIn());
     const std::optional<SplitProposal> split = proposeSplit(*whole);
+    // The ranking is printed with each method's reason; a project no method can plan (no ranges
+    // of the insert, say) is a problem with the input, as optimize says.
+    const int exitCode = std::any_of(options.begin(), options.end(), [](const ClampingOption &o) { return o.possible; })
+                             ? kExitOk
+                             : kExitProblems;
     if (parser.isSet(json)) {
         QJsonArray list;
         int rank = 1;
@@ -349,7 +355,8 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
                             {QStringLiteral("held_end"), keyword(split->second.clamping.heldEnd)},
                             {QStringLiteral("clamped_length_mm"), split->second.clamping.clampedLength_mm},
                             {QStringLiteral("features"), QJsonArray::fromStringList(split->second.features)}});
-        return printJson(result, out, err, QStringLiteral("advise-clamping"));
+        const int printed = printJson(result, out, err, QStringLiteral("advise-clamping"));
+        return printed != kExitOk ? printed : exitCode;
     }
     int rank = 1;
     for (const ClampingOption &o : options)
@@ -358,7 +365,7 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
         out << CommandLine::tr("Split into operations: %1 (Edit > Operations…, or further_operations in the file)")
                    .arg(split->reason)
             << '\n';
-    return kExitOk;
+    return exitCode;
 }
 
 } // namespace tolturn

@@ -770,12 +770,44 @@ private Q_SLOTS:
         QCOMPARE(lines.first(), QStringLiteral("feed_mm_rev,cutting_speed_m_min,objective,feasible,binding"));
         // At the largest feed (0.399 mm/rev) Ra = 0.399^2/(32*0.8) mm = 6.2 µm > 1.6: bounded by roughness.
         QVERIFY(lines.at(8).startsWith(QStringLiteral("0.399,")));
-        QVERIFY(lines.at(8).endsWith(QStringLiteral(",0,\"roughness (Ra)\"")));
+        QVERIFY(lines.at(8).endsWith(QStringLiteral(",0,roughness (Ra)")));
         QVERIFY(lines.at(1).startsWith(QStringLiteral("0.17,201.2,")));
         QVERIFY(lines.at(1).endsWith(QStringLiteral(",1,")));
         const Run bad = runCli({QStringLiteral("window"), QStringLiteral("--plane"), QStringLiteral("speed-depth"),
                                 example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(bad.exitCode, 2);
+    }
+
+    // A binding constraint's label is one CSV field (RFC 4180 §2.6-2.7) even when the tolerance's id
+    // holds a quote and a comma: the long shaft on a cold machine whose spindle drifts 200 µm per
+    // 1000 rpm (an illustrative value, made large so that tolerance T4 binds).
+    void windowCsvQuotesTheBindingLabel()
+    {
+        QTemporaryDir dir;
+        QFile source(example("long-shaft-centres.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        project.insert(
+            QStringLiteral("characterisation"),
+            QJsonObject{{QStringLiteral("source"), QStringLiteral("test")},
+                        {QStringLiteral("thermal"), QJsonObject{{QStringLiteral("drift_um_per_1000rpm"), 200.0},
+                                                                {QStringLiteral("time_constant_min"), 5.0}}}});
+        project.insert(QStringLiteral("environment"), QJsonObject{{QStringLiteral("time_since_start_min"), 0.0}});
+        QJsonArray tolerances = project.value(QStringLiteral("tolerances")).toArray();
+        QJsonObject t4 = tolerances.at(3).toObject();
+        QCOMPARE(t4.value(QStringLiteral("id")).toString(), QStringLiteral("T4"));
+        t4.insert(QStringLiteral("id"), QStringLiteral("T\"4,k6"));
+        tolerances.replace(3, t4);
+        project.insert(QStringLiteral("tolerances"), tolerances);
+        const QString file = dir.filePath(QStringLiteral("quoted.tolturn"));
+        QVERIFY(writeFile(file, QJsonDocument(project).toJson()));
+        const Run r = runCli({QStringLiteral("window"), QStringLiteral("--plane"), QStringLiteral("feed-speed"),
+                              QStringLiteral("--csv"), QStringLiteral("--size"), QStringLiteral("6"), file});
+        QCOMPARE(r.exitCode, 0);
+        int quoted = 0;
+        for (const QString &line : r.out.trimmed().split(QLatin1Char('\n')))
+            quoted += line.endsWith(QStringLiteral(",0,\"tolerance T\"\"4,k6\"")) ? 1 : 0;
+        QVERIFY2(quoted > 0, qPrintable(r.out));
     }
 
     void adviseClampingJson()
@@ -790,6 +822,29 @@ private Q_SLOTS:
         QVERIFY(ranking.at(0).toObject().value(QStringLiteral("feasible")).toBool());
         QCOMPARE(ranking.at(2).toObject().value(QStringLiteral("method")).toString(), QStringLiteral("chuck"));
         QVERIFY(!ranking.at(2).toObject().value(QStringLiteral("reason")).toString().isEmpty());
+    }
+
+    // Without the insert's ranges no method can be planned: each says why, and the exit code says
+    // the input has a problem, as optimize's does.
+    void adviseClampingWithoutRangesIsAProblem()
+    {
+        QTemporaryDir dir;
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject planning = project.value(QStringLiteral("planning")).toObject();
+        planning.remove(QStringLiteral("ranges"));
+        project.insert(QStringLiteral("planning"), planning);
+        const QString file = dir.filePath(QStringLiteral("no-ranges.tolturn"));
+        QVERIFY(writeFile(file, QJsonDocument(project).toJson()));
+        const Run r = runCli({QStringLiteral("advise-clamping"), file});
+        QCOMPARE(r.exitCode, 1);
+        const QStringList lines = r.out.trimmed().split(QLatin1Char('\n'));
+        QVERIFY2(lines.size() >= 3, qPrintable(r.out)); // the three methods, then the split the jaws call for
+        for (int i = 0; i < 3; ++i)
+            QVERIFY2(lines.at(i).contains(QStringLiteral("planning.ranges")), qPrintable(lines.at(i)));
+        const Run json = runCli({QStringLiteral("advise-clamping"), QStringLiteral("--json"), file});
+        QCOMPARE(json.exitCode, 1);
     }
 
     // gcode --feed-schedule --compensated on the thin pin: O4 (T1 Ø20 h7, held at no feed of the
