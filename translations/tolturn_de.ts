@@ -457,10 +457,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>geben Sie eine Projektdatei an, --plane feed-speed oder feed-depth, --size von 2 bis 4096</translation>
     </message>
     <message>
-        <source>%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6</source>
-        <translation>Fenster %1 × %2, %3 % zulässig; Optimum bei f = %4 mm/rev, %5 = %6</translation>
-    </message>
-    <message>
         <source>  bounded by %1 (%2 points beyond it)</source>
         <translation>  begrenzt durch %1 (%2 Punkte jenseits davon)</translation>
     </message>
@@ -727,6 +723,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the output &apos;%1&apos; is the measurement store &apos;%2&apos;: give another output file, so that the store is not overwritten</source>
         <translation>die Ausgabe &apos;%1&apos; ist der Messwertspeicher &apos;%2&apos;: geben Sie eine andere Ausgabedatei an, damit der Speicher nicht überschrieben wird</translation>
+    </message>
+    <message>
+        <source>optimum at f = %1 mm/rev, %2 = %3</source>
+        <translation>Optimum bei f = %1 mm/rev, %2 = %3</translation>
+    </message>
+    <message>
+        <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2 = %3</source>
+        <translation>kein Plan erfüllt alle Randbedingungen; der Plan mit der geringsten Verletzung bei f = %1 mm/rev, %2 = %3</translation>
+    </message>
+    <message>
+        <source>%1 × %2 window, %3 % feasible; %4</source>
+        <translation>Fenster %1 × %2, %3 % zulässig; %4</translation>
     </message>
 </context>
 <context>

@@ -457,10 +457,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>indique un archivo de proyecto, --plane feed-speed o feed-depth, --size de 2 a 4096</translation>
     </message>
     <message>
-        <source>%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6</source>
-        <translation>ventana de %1 × %2, %3 % factible; óptimo en f = %4 mm/rev, %5 = %6</translation>
-    </message>
-    <message>
         <source>  bounded by %1 (%2 points beyond it)</source>
         <translation>  limitada por %1 (%2 puntos fuera de ella)</translation>
     </message>
@@ -727,6 +723,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the output &apos;%1&apos; is the measurement store &apos;%2&apos;: give another output file, so that the store is not overwritten</source>
         <translation>la salida &apos;%1&apos; es el almacén de mediciones &apos;%2&apos;: indique otro archivo de salida para que el almacén no se sobrescriba</translation>
+    </message>
+    <message>
+        <source>optimum at f = %1 mm/rev, %2 = %3</source>
+        <translation>óptimo en f = %1 mm/rev, %2 = %3</translation>
+    </message>
+    <message>
+        <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2 = %3</source>
+        <translation>ningún plan cumple todas las restricciones; el que menos las incumple, en f = %1 mm/rev, %2 = %3</translation>
+    </message>
+    <message>
+        <source>%1 × %2 window, %3 % feasible; %4</source>
+        <translation>ventana de %1 × %2, %3 % factible; %4</translation>
     </message>
 </context>
 <context>

@@ -91,25 +91,29 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
         out << CommandLine::tr("note: ") << note << '\n';
 }
 
-// Loads a project and builds its planning problem; prints problems and returns null on failure.
-std::shared_ptr<const PlanningProblem> loadPlanningProblem(const QString &file, const QCommandLineParser &parser,
-                                                           const QString &command, QTextStream &err,
-                                                           std::optional<Project> *project = nullptr)
+// A project's planning problem, or the exit code of why there is none (its problems printed).
+struct LoadedProblem {
+    std::shared_ptr<const PlanningProblem> problem;
+    int exitCode = kExitProblems;
+};
+
+// Loads a project and builds the planning problem of the operation --operation names: an unknown
+// operation is a usage error, as optimize says.
+LoadedProblem loadPlanningProblem(const QString &file, const QCommandLineParser &parser, const QString &command,
+                                  QTextStream &err)
 {
     const std::optional<Project> whole = readProject(file, err, MissingPasses::Planned);
     if (!whole)
-        return nullptr;
+        return {};
     const std::optional<Project> read = selectOperation(*whole, parser, command, err);
     if (!read)
-        return nullptr;
-    if (project != nullptr)
-        *project = read;
+        return {nullptr, kExitUsage};
     const PlanningProblem::BuildResult built = PlanningProblem::build(*read, DataLibrary::builtIn());
     for (const Diagnostic &d : built.diagnostics) {
         if (d.severity == Severity::Error)
             err << file << ": " << d.toString() << '\n';
     }
-    return built.problem;
+    return {built.problem, built.problem ? kExitOk : kExitProblems};
 }
 
 } // namespace
@@ -267,10 +271,11 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
             << '\n';
         return kExitUsage;
     }
-    const auto problem =
+    const LoadedProblem loaded =
         loadPlanningProblem(parser.positionalArguments().constFirst(), parser, QStringLiteral("window"), err);
-    if (!problem)
-        return kExitProblems;
+    if (!loaded.problem)
+        return loaded.exitCode;
+    const auto &problem = loaded.problem;
     const PlanResult plan = optimisePlan(*problem);
     WindowOptions options;
     options.columns = options.rows = n;
@@ -291,14 +296,19 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
     int feasible = 0;
     for (const WindowCell &c : w.cells)
         feasible += c.feasible ? 1 : 0;
-    out << CommandLine::tr("%1 × %2 window, %3 % feasible; optimum at f = %4 mm/rev, %5 = %6")
+    // The window lies around the optimum, or around the plan that violates the constraints least.
+    const QString centre =
+        (plan.feasible ? CommandLine::tr("optimum at f = %1 mm/rev, %2 = %3")
+                       : CommandLine::tr("no plan meets every constraint; the one that violates "
+                                         "them least at f = %1 mm/rev, %2 = %3"))
+            .arg(QString::number(w.base.finishing.feed_mm_rev, 'f', 3), yName,
+                 QString::number(which == WindowPlane::FeedSpeed ? w.base.finishing.cuttingSpeed_m_min
+                                                                 : w.base.finishing.depthOfCut_mm,
+                                 'f', 3));
+    out << CommandLine::tr("%1 × %2 window, %3 % feasible; %4")
                .arg(w.columns)
                .arg(w.rows)
-               .arg(QString::number(100.0 * feasible / static_cast<double>(w.cells.size()), 'f', 1),
-                    QString::number(w.base.finishing.feed_mm_rev, 'f', 3), yName,
-                    QString::number(which == WindowPlane::FeedSpeed ? w.base.finishing.cuttingSpeed_m_min
-                                                                    : w.base.finishing.depthOfCut_mm,
-                                    'f', 3))
+               .arg(QString::number(100.0 * feasible / static_cast<double>(w.cells.size()), 'f', 1), centre)
         << '\n';
     for (const auto &[label, cells] : w.boundaries())
         out << CommandLine::tr("  bounded by %1 (%2 points beyond it)").arg(label).arg(cells) << '\n';

@@ -281,12 +281,16 @@ private Q_SLOTS:
             QJsonDocument::fromJson(json.out.toUtf8()).object().value(QStringLiteral("operations")).toArray();
         QCOMPARE(ops.size(), 2);
         QCOMPARE(ops.at(1).toObject().value(QStringLiteral("held_end")).toString(), QStringLiteral("right"));
-        const Run unknown = runCli({QStringLiteral("deflect"), QStringLiteral("--operation"), QStringLiteral("OP 30"),
-                                    example("bushing-two-setups.tolturn")});
-        QCOMPARE(unknown.exitCode, 2);
-        QVERIFY2(unknown.err.contains(QStringLiteral("--operation: the project has no operation \"OP 30\"; it has: "
-                                                     "OP 10, OP 20")),
-                 qPrintable(unknown.err));
+        // An operation the project does not have is a usage error (exit 2) for every command that
+        // takes one.
+        for (const char *command : {"deflect", "optimize", "window", "advise-clamping"}) {
+            const Run unknown = runCli({QString::fromLatin1(command), QStringLiteral("--operation"),
+                                        QStringLiteral("OP 30"), example("bushing-two-setups.tolturn")});
+            QVERIFY2(unknown.exitCode == 2, command);
+            QVERIFY2(unknown.err.contains(QStringLiteral("--operation: the project has no operation \"OP 30\"; it "
+                                                         "has: OP 10, OP 20")),
+                     qPrintable(unknown.err));
+        }
     }
 
     // An overhang beyond the maker's 4 x D for a steel bar is a warning of check.
@@ -808,6 +812,12 @@ private Q_SLOTS:
         for (const QString &line : r.out.trimmed().split(QLatin1Char('\n')))
             quoted += line.endsWith(QStringLiteral(",0,\"tolerance T\"\"4,k6\"")) ? 1 : 0;
         QVERIFY2(quoted > 0, qPrintable(r.out));
+        // No point of this window is feasible: its centre is not called an optimum.
+        const Run summary = runCli({QStringLiteral("window"), QStringLiteral("--size"), QStringLiteral("6"), file});
+        QCOMPARE(summary.exitCode, 0);
+        QVERIFY2(summary.out.startsWith(QStringLiteral("6 × 6 window, 0.0 % feasible; no plan meets every "
+                                                       "constraint; the one that violates them least at f = ")),
+                 qPrintable(summary.out));
     }
 
     void adviseClampingJson()
