@@ -68,9 +68,8 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
         out << CommandLine::tr("No plan meets every constraint; the one that violates them least");
     out << '\n';
     out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part")
-               .arg(QString::number(e.time_min, 'f', 3), QString::number(e.finishingTime_min, 'f', 3),
-                    QString::number(e.roughingTime_min, 'f', 3), QString::number(e.cost, 'f', 2),
-                    QString::number(e.toolEdgesPerPart, 'f', 3))
+               .arg(formatFixed(e.time_min, 3), formatFixed(e.finishingTime_min, 3), formatFixed(e.roughingTime_min, 3),
+                    formatFixed(e.cost, 2), formatFixed(e.toolEdgesPerPart, 3))
         << '\n';
     out << CommandLine::tr("  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
                .arg(QString::number(r.candidate.finishing.cuttingSpeed_m_min, 'f', 1),

@@ -4,6 +4,7 @@
 #include <QLocale>
 
 #include <algorithm>
+#include <cmath>
 
 namespace tolturn {
 
@@ -57,10 +58,15 @@ QString formatNumber(double value)
     return QString::number(value, 'g', 10);
 }
 
+QString formatFixed(double value, int decimals)
+{
+    return std::abs(value) < 1e9 ? QString::number(value, 'f', decimals) : QString::number(value, 'g', 4);
+}
+
 QString formatNumberExactly(double value)
 {
     // Ten digits where they hold the number (1000000000, 0.0004), else every digit it needs.
-    if (const QString tenDigits = formatNumber(value); tenDigits.toDouble() == value)
+    if (QString tenDigits = formatNumber(value); tenDigits.toDouble() == value)
         return tenDigits;
     return QString::number(value, 'g', QLocale::FloatingPointShortest);
 }

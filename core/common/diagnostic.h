@@ -40,5 +40,8 @@ using Diagnostics = std::vector<Diagnostic>;
 // A number as a file has it, to the last digit that tells it apart (5000.0000001 is not 5000):
 // for messages about values a user wrote, and for limits compared with them.
 [[nodiscard]] QString formatNumberExactly(double value);
+// An amount to `decimals` places, or to four significant digits once it is too large for a row of
+// digits to be read (degenerate tool-life data make the time per part 10^260 min).
+[[nodiscard]] QString formatFixed(double value, int decimals);
 
 } // namespace tolturn

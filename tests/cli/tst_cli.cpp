@@ -10,6 +10,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -818,6 +819,31 @@ private Q_SLOTS:
         QVERIFY2(summary.out.startsWith(QStringLiteral("6 × 6 window, 0.0 % feasible; no plan meets every "
                                                        "constraint; the one that violates them least at f = ")),
                  qPrintable(summary.out));
+    }
+
+    // Degenerate Taylor data (C = 0.5 m/min, n = 0.01: T = (C/v)^(1/n) ≈ 10^-260 min at 201 m/min)
+    // makes the time per part astronomically large: printed to four digits with its exponent, not as
+    // a row of 260 digits.
+    void optimizePrintsAHugeTimeReadably()
+    {
+        QTemporaryDir dir;
+        QFile source(example("stepped-shaft-chuck.tolturn"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject planning = project.value(QStringLiteral("planning")).toObject();
+        planning.insert(QStringLiteral("tool_life"), QJsonObject{{QStringLiteral("C_m_min"), 0.5},
+                                                                 {QStringLiteral("n"), 0.01},
+                                                                 {QStringLiteral("min_minutes"), 15.0},
+                                                                 {QStringLiteral("source"), QStringLiteral("test")}});
+        project.insert(QStringLiteral("planning"), planning);
+        const QString file = dir.filePath(QStringLiteral("degenerate.tolturn"));
+        QVERIFY(writeFile(file, QJsonDocument(project).toJson()));
+        const Run r = runCli({QStringLiteral("optimize"), QStringLiteral("--time-limit"), QStringLiteral("5"), file});
+        QCOMPARE(r.exitCode, 1);
+        const QRegularExpression time(
+            QStringLiteral("time per part \\d\\.\\d{0,3}e\\+\\d{2,3} min \\(finishing \\d+\\.\\d{3}, roughing "));
+        QVERIFY2(time.match(r.out).hasMatch(), qPrintable(r.out));
+        QVERIFY2(!QRegularExpression(QStringLiteral("\\d{12}")).match(r.out).hasMatch(), qPrintable(r.out));
     }
 
     void adviseClampingJson()

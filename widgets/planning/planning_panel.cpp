@@ -2,6 +2,7 @@
 #include "widgets/planning/planning_panel.h"
 
 #include "core/common/atomic_file.h"
+#include "core/common/diagnostic.h"
 #include "core/deviation/deviation_model.h"
 #include "core/planning/gcode.h"
 #include "core/planning/planning_problem.h"
@@ -65,7 +66,7 @@ void setupTable(QTableWidget *table, const QStringList &headers)
 
 QString number(double v, int decimals)
 {
-    return QString::number(v, 'f', decimals);
+    return formatFixed(v, decimals);
 }
 
 } // namespace

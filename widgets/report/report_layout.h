@@ -3,6 +3,8 @@
 // vector pictures, page breaks where a block would not fit.
 #pragma once
 
+#include "core/common/diagnostic.h"
+
 #include <QFont>
 #include <QFontMetricsF>
 #include <QPainter>
@@ -30,7 +32,7 @@ constexpr double kPlotTextScale = 1.5;
 // A number with a fixed count of decimals, as the report's tables print it.
 inline QString num(double v, int decimals)
 {
-    return QString::number(v, 'f', decimals);
+    return formatFixed(v, decimals);
 }
 
 inline QFont font(double pixels, bool bold = false)
