@@ -213,6 +213,10 @@
         <source>no cylinder at the right end of the part for the chuck jaws to grip</source>
         <translation>kein Zylinder am rechten Ende des Teils, an dem die Spannbacken greifen können</translation>
     </message>
+    <message>
+        <source>; the right end face is held by a centre: it is faced and centred before the set-up, not in this time</source>
+        <translation>; die rechte Stirnfläche hält eine Spitze: sie wird vor dem Aufspannen plangedreht und zentriert, nicht in dieser Zeit</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -3554,6 +3558,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>the stock leaves %1 mm to remove on the radius, between what %2 and %3 passes at depths of cut from %4 to %5 mm (planning.ranges.depth_of_cut_mm) can take: at most %6 mm, at least %7 mm</source>
         <translation>das Rohteil lässt am Radius %1 mm abzutragen, zwischen dem, was %2 und %3 Schnitte mit Schnitttiefen von %4 bis %5 mm (planning.ranges.depth_of_cut_mm) abnehmen können: höchstens %6 mm, mindestens %7 mm</translation>
+    </message>
+    <message>
+        <source>The program has no finishing moves (see the G-code&apos;s warnings): the finishing time is taken as zero.</source>
+        <translation>Das Programm hat keine Schlichtbewegungen (siehe die Warnungen des G-Codes): die Schlichtzeit wird als null angenommen.</translation>
+    </message>
+    <message>
+        <source>The bores are not in the finishing time: the program does not bore them (see the G-code&apos;s notes).</source>
+        <translation>Die Bohrungen sind nicht in der Schlichtzeit: das Programm dreht sie nicht aus (siehe die Hinweise des G-Codes).</translation>
     </message>
 </context>
 <context>

@@ -213,6 +213,10 @@
         <source>no cylinder at the right end of the part for the chuck jaws to grip</source>
         <translation>no hay ningún cilindro en el extremo derecho de la pieza que puedan sujetar las garras del plato</translation>
     </message>
+    <message>
+        <source>; the right end face is held by a centre: it is faced and centred before the set-up, not in this time</source>
+        <translation>; la cara frontal derecha la sujeta un punto: se refrenta y se hace el centro antes del amarre, no en este tiempo</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -3554,6 +3558,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>the stock leaves %1 mm to remove on the radius, between what %2 and %3 passes at depths of cut from %4 to %5 mm (planning.ranges.depth_of_cut_mm) can take: at most %6 mm, at least %7 mm</source>
         <translation>el material en bruto deja %1 mm por quitar en el radio, entre lo que pueden quitar %2 y %3 pasadas con profundidades de corte de %4 a %5 mm (planning.ranges.depth_of_cut_mm): como mucho %6 mm, como mínimo %7 mm</translation>
+    </message>
+    <message>
+        <source>The program has no finishing moves (see the G-code&apos;s warnings): the finishing time is taken as zero.</source>
+        <translation>El programa no tiene movimientos de acabado (vea los avisos del código G): el tiempo de acabado se toma como cero.</translation>
+    </message>
+    <message>
+        <source>The bores are not in the finishing time: the program does not bore them (see the G-code&apos;s notes).</source>
+        <translation>Los agujeros no están en el tiempo de acabado: el programa no los mandrina (vea las notas del código G).</translation>
     </message>
 </context>
 <context>

@@ -111,9 +111,18 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         part.progress = Progress(options.progress, third, third + 1.0 / static_cast<double>(methods.size()));
         o.plan = optimisePlan(*built.problem, part);
         o.reason = describe(o, p);
+        if (!holdsOneEndOnly(method)) // the toolpath does not face an end a centre holds
+            o.reason += ClampingAdvice::tr("; the right end face is held by a centre: it is faced and centred before "
+                                           "the set-up, not in this time");
         out.push_back(o);
     }
-    std::stable_sort(out.begin(), out.end(), [](const ClampingOption &a, const ClampingOption &b) {
+    rankClampingOptions(out);
+    return out;
+}
+
+void rankClampingOptions(std::vector<ClampingOption> &options)
+{
+    std::stable_sort(options.begin(), options.end(), [](const ClampingOption &a, const ClampingOption &b) {
         auto group = [](const ClampingOption &o) { return !o.possible ? 2 : (!o.plan.feasible ? 1 : 0); };
         if (group(a) != group(b))
             return group(a) < group(b);
@@ -126,7 +135,6 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         // Equal times or costs: the plan with more margin on its tightest tolerance first.
         return group(a) == 0 && tightestUtilisation(a.plan.evaluation) < tightestUtilisation(b.plan.evaluation);
     });
-    return out;
 }
 
 } // namespace tolturn

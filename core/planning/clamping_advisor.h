@@ -24,4 +24,9 @@ struct ClampingOption {
 [[nodiscard]] std::vector<ClampingOption> adviseClamping(const Project &project, const DataLibrary &data,
                                                          const OptimisationOptions &options = {});
 
+// The ranking adviseClamping gives: feasible plans by their objective (equal within 1e-6 of it:
+// the one with more margin on its tightest tolerance first), then infeasible ones by how much they
+// violate, then the methods the part does not allow. Stable: equal options keep their order.
+void rankClampingOptions(std::vector<ClampingOption> &options);
+
 } // namespace tolturn

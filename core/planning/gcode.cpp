@@ -4,7 +4,7 @@
 #include "core/common/library_info.h"
 #include "core/planning/boring_toolpath.h"
 #include "core/planning/feed_schedule.h"
-#include "core/planning/path_geometry.h"
+#include "core/planning/pass_time.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 
@@ -12,8 +12,6 @@
 #include <QCryptographicHash>
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
 namespace tolturn {
 
@@ -98,14 +96,6 @@ QString conditionsText(const Toolpath &path)
     return parts.join(QStringLiteral("; "));
 }
 
-// Spindle speed on radius r under G96 with the limit [rpm].
-double spindleSpeed_rpm(double cuttingSpeed_m_min, double r_mm, double limit_rpm)
-{
-    if (r_mm <= 1e-9)
-        return limit_rpm;
-    return std::min(limit_rpm, 1000.0 * cuttingSpeed_m_min / (2.0 * std::numbers::pi * r_mm));
-}
-
 PassSummary summarise(const PassPath &pass, ContourSide side, double limit_rpm)
 {
     PassSummary s;
@@ -115,34 +105,14 @@ PassSummary summarise(const PassPath &pass, ContourSide side, double limit_rpm)
     s.conditions = pass.conditions;
     s.lowestSpeed_rpm = limit_rpm;
     s.highestSpeed_rpm = 0.0;
-    std::optional<ProfilePoint> at;
-    for (const ToolMove &m : pass.moves) {
-        if (m.kind != MoveKind::Rapid && at) {
-            PathElement e;
-            e.from = *at;
-            e.to = m.to;
-            e.arc = m.kind != MoveKind::Feed;
-            e.centre = m.centre;
-            e.radius_mm = m.radius_mm;
-            e.counterClockwise = m.kind == MoveKind::ArcCounterClockwise;
-            // 0.05 mm steps (n changes with r under G96), at most 2000 on a move: a face's time
-            // is then within far less than its 0.01 min as printed.
-            const std::vector<ProfilePoint> points = sampled(e, 0.05, 2000);
-            for (std::size_t i = 1; i < points.size(); ++i) {
-                const double length =
-                    std::hypot(points[i].z_mm - points[i - 1].z_mm, points[i].r_mm - points[i - 1].r_mm);
-                const double r = 0.5 * (points[i].r_mm + points[i - 1].r_mm);
-                const double n = spindleSpeed_rpm(pass.conditions.cuttingSpeed_m_min, r, limit_rpm);
-                s.time_min += length / (m.feed_mm_rev.value_or(pass.conditions.feed_mm_rev) * n);
-            }
-            for (const ProfilePoint &q : points) {
-                const double n = spindleSpeed_rpm(pass.conditions.cuttingSpeed_m_min, q.r_mm, limit_rpm);
-                s.lowestSpeed_rpm = std::min(s.lowestSpeed_rpm, n);
-                s.highestSpeed_rpm = std::max(s.highestSpeed_rpm, n);
-            }
+    const std::vector<FeedStep> steps = feedSteps(pass);
+    s.time_min = feedTime_min(steps, pass.conditions.cuttingSpeed_m_min, pass.conditions.feed_mm_rev, limit_rpm);
+    for (const FeedStep &step : steps)
+        for (const ProfilePoint &q : {step.from, step.to}) {
+            const double n = g96SpindleSpeed_rpm(pass.conditions.cuttingSpeed_m_min, q.r_mm, limit_rpm);
+            s.lowestSpeed_rpm = std::min(s.lowestSpeed_rpm, n);
+            s.highestSpeed_rpm = std::max(s.highestSpeed_rpm, n);
         }
-        at = m.to;
-    }
     return s;
 }
 
@@ -274,6 +244,16 @@ QStringList programHeader(const Project &project, const TurningProgram &program,
 }
 
 } // namespace
+
+std::vector<PassPath> finishingPasses(const Project &project, const TurningInputs &inputs)
+{
+    Toolpath turning = turningToolpath(project, inputs.pass, roughingPasses(project), inputs.noseRadius_mm,
+                                       trailingEdgeAngle_deg(project.tool, inputs.enteringAngle_deg), {});
+    std::vector<PassPath> passes{turning.finishing};
+    if (const std::optional<Toolpath> boring = boringPath(project, inputs, {}, turning))
+        passes.push_back(boring->finishing);
+    return passes;
+}
 
 TurningProgram turningProgram(const Project &project, const DataLibrary &data, const TurningInputs &inputs,
                               const GCodeOptions &options)

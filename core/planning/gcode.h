@@ -76,6 +76,10 @@ struct TurningProgram {
 [[nodiscard]] TurningProgram turningProgram(const Project &project, const DataLibrary &data,
                                             const TurningInputs &inputs, const GCodeOptions &options);
 
+// The finishing passes turningProgram cuts, without the program around them: the outer contour's,
+// then the bores' where the set-up bores them. The planner times these (planning_problem.h).
+[[nodiscard]] std::vector<PassPath> finishingPasses(const Project &project, const TurningInputs &inputs);
+
 // The control dialect of a machine in the data library, if it has a CNC control.
 [[nodiscard]] std::optional<ControlDialect> machineDialect(const DataLibrary &data, const QString &machineId);
 

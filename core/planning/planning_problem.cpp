@@ -3,6 +3,8 @@
 
 #include "core/cutting/cutting_quantities.h"
 #include "core/part/profile_geometry.h"
+#include "core/planning/gcode.h"
+#include "core/planning/post_processor.h"
 #include "core/tolerance/evaluation.h"
 
 #include <QCoreApplication>
@@ -200,9 +202,7 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     p.m_stockDiameter_mm = project.part.stockDiameter_mm;
     const double stockRadius = 0.5 * project.part.stockDiameter_mm;
     for (const FeatureInfluence &f : p.m_table.features) {
-        std::vector<std::pair<double, double>> path;
         for (std::size_t i = 0; i < f.z_mm.size(); ++i) {
-            path.emplace_back(f.z_mm[i], 2.0 * f.nominalRadius_mm[i]);
             p.m_largestCutDiameter_mm = std::max(p.m_largestCutDiameter_mm, 2.0 * f.nominalRadius_mm[i]);
             if (f.side == ContourSide::Inner)
                 p.m_largestBoreDiameter_mm = std::max(p.m_largestBoreDiameter_mm, 2.0 * f.nominalRadius_mm[i]);
@@ -211,8 +211,8 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
                 p.m_radialStock_mm = std::max(p.m_radialStock_mm, stockRadius - f.nominalRadius_mm[i]);
             }
         }
-        p.m_finishPaths.push_back(std::move(path));
     }
+    p.timeFinishingPasses(finishingPasses(withPass, p.m_inputs));
     if (std::optional<Diagnostic> uncuttable = uncuttableStock(p.m_radialStock_mm, p.m_depth)) {
         out.push_back(std::move(*uncuttable));
         return result;
@@ -264,24 +264,38 @@ std::optional<double> PlanningProblem::toolLife_min(double cuttingSpeed_m_min) c
     return std::pow(*s.taylorC_m_min / cuttingSpeed_m_min, 1.0 / *s.taylorN); // Taylor (1907): v T^n = C
 }
 
-// Time of the finishing pass along every turned feature: dt = dz / (f n(z)), with n = 1000 v/(pi D)
-// at constant cutting speed (G96) and capped at the machine's maximum (the program's spindle limit); trapezoidal rule.
+void PlanningProblem::timeFinishingPasses(const std::vector<PassPath> &passes)
+{
+    m_speedLimitingDiameter_mm = std::numeric_limits<double>::infinity();
+    for (const PassPath &pass : passes) {
+        const std::vector<FeedStep> steps = feedSteps(pass);
+        m_finishingSteps.insert(m_finishingSteps.end(), steps.begin(), steps.end());
+        if (const double d = speedLimitingDiameter_mm(pass); d > 0.0)
+            m_speedLimitingDiameter_mm = std::min(m_speedLimitingDiameter_mm, d);
+    }
+    if (m_finishingSteps.empty())
+        m_notes << Planning::tr("The program has no finishing moves (see the G-code's warnings): the finishing time is "
+                                "taken as zero.");
+    const bool bores = std::any_of(m_table.features.begin(), m_table.features.end(),
+                                   [](const FeatureInfluence &f) { return f.side == ContourSide::Inner; });
+    if (bores && passes.size() < 2)
+        m_notes << Planning::tr("The bores are not in the finishing time: the program does not bore them (see the "
+                                "G-code's notes).");
+}
+
+// Time of the finishing passes as the program cuts them (pass_time.h): every feed move, faces,
+// cones and arcs at their length, at constant cutting speed (G96) under the spindle limit the
+// program sets, the speed v_f needs on the speed-limiting diameter or the machine's if lower
+// (post_processor.h; a roughing pass at a higher speed could raise the program's limit, which
+// only shortens a face's run to the axis, so this time is not less than the program's).
 double PlanningProblem::finishingTime_min(const PassConditions &pass) const
 {
-    double time = 0.0;
-    for (const auto &path : m_finishPaths) {
-        for (std::size_t i = 1; i < path.size(); ++i) {
-            auto perMm = [&](double diameter) {
-                double n = spindleSpeed_rpm(pass.cuttingSpeed_m_min, std::max(diameter, 1e-3));
-                if (m_maxSpeed_rpm)
-                    n = std::min(n, *m_maxSpeed_rpm);
-                return 1.0 / (pass.feed_mm_rev * n);
-            };
-            const double dz = path[i].first - path[i - 1].first;
-            time += 0.5 * dz * (perMm(path[i].second) + perMm(path[i - 1].second));
-        }
-    }
-    return time;
+    double limit_rpm = std::numeric_limits<double>::infinity();
+    if (std::isfinite(m_speedLimitingDiameter_mm))
+        limit_rpm = std::ceil(spindleSpeed_rpm(pass.cuttingSpeed_m_min, m_speedLimitingDiameter_mm));
+    if (m_maxSpeed_rpm)
+        limit_rpm = std::min(limit_rpm, *m_maxSpeed_rpm);
+    return feedTime_min(m_finishingSteps, pass.cuttingSpeed_m_min, pass.feed_mm_rev, limit_rpm);
 }
 
 // Material the roughing passes remove: the bar down to the finishing allowance over every outer

@@ -5,6 +5,7 @@
 #include "core/data/data_library.h"
 #include "core/deviation/deviation_model.h"
 #include "core/learning/machine_learning.h"
+#include "core/planning/pass_time.h"
 #include "core/project/project.h"
 #include "core/tolerance/target_contour.h"
 
@@ -150,6 +151,7 @@ public:
 private:
     PlanningProblem() = default;
     [[nodiscard]] CuttingForces forces(double feed_mm_rev, double depth_mm) const;
+    void timeFinishingPasses(const std::vector<PassPath> &passes);
     [[nodiscard]] double finishingTime_min(const PassConditions &pass) const;
     [[nodiscard]] double roughingVolume_mm3(double finishingDepth_mm) const;
     void addPassLimits(const QString &subject, const PassConditions &pass, const CuttingForces &f,
@@ -173,8 +175,10 @@ private:
     double m_stockDiameter_mm = 0.0;
     std::optional<double> m_maxPower_kW, m_maxTorque_Nm, m_maxSpeed_rpm;
     QStringList m_notes;
-    // Turned stations (z, diameter) of every feature the finishing pass cuts, for its time.
-    std::vector<std::vector<std::pair<double, double>>> m_finishPaths;
+    // The feed moves of the finishing passes the program cuts (pass_time.h), for their time, and
+    // the diameter on which they need their highest spindle speed (the program's G50 at v_f).
+    std::vector<FeedStep> m_finishingSteps;
+    double m_speedLimitingDiameter_mm = 0.0;
     // Outer stations (z, radius) for the roughing volume.
     std::vector<std::pair<double, double>> m_outerProfile;
 };

@@ -331,26 +331,29 @@ QString displayName(ControlDialect dialect)
     return Post::tr("Fanuc / Haas");
 }
 
+double speedLimitingDiameter_mm(const PassPath &pass)
+{
+    // A pass that only faces has no smallest turned diameter: under G96 its speed would run up to
+    // the machine's at the axis. Its limit is the speed at the largest diameter it faces, so the
+    // spindle holds that speed inwards (the cutting speed falls towards the axis).
+    if (std::isfinite(pass.smallestDiameter_mm) && pass.smallestDiameter_mm > 0.0)
+        return pass.smallestDiameter_mm;
+    double diameter = 0.0;
+    for (const ToolMove &m : pass.moves)
+        if (m.kind != MoveKind::Rapid && !m.featureId.isEmpty()) // a cut, not the entry or exit
+            diameter = std::max(diameter, 2.0 * std::abs(m.to.r_mm));
+    return diameter;
+}
+
 SpindleLimit spindleLimit(const std::vector<const Toolpath *> &paths, std::optional<double> machineLimit_rpm)
 {
     double needed = 0.0;
     double atDiameter = 0.0;
     double atSpeed = 0.0;
     auto consider = [&](const PassPath &p) {
-        if (p.moves.empty())
+        const double diameter = p.moves.empty() ? 0.0 : speedLimitingDiameter_mm(p);
+        if (diameter <= 0.0)
             return;
-        // A pass that only faces has no smallest turned diameter: under G96 its speed would run up to
-        // the machine's at the axis. Its limit is the speed at the largest diameter it faces, so the
-        // spindle holds that speed inwards (the cutting speed falls towards the axis).
-        double diameter = p.smallestDiameter_mm;
-        if (!std::isfinite(diameter) || diameter <= 0.0) {
-            diameter = 0.0;
-            for (const ToolMove &m : p.moves)
-                if (m.kind != MoveKind::Rapid && !m.featureId.isEmpty()) // a cut, not the entry or exit
-                    diameter = std::max(diameter, 2.0 * std::abs(m.to.r_mm));
-            if (diameter <= 0.0)
-                return;
-        }
         const double n = 1000.0 * p.conditions.cuttingSpeed_m_min / (std::numbers::pi * diameter);
         if (n > needed) {
             needed = n;

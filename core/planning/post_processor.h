@@ -41,6 +41,13 @@ struct SpindleLimit {
     QString reason; // how it was formed, for the program header and people
 };
 
+// The diameter on which a pass needs its highest spindle speed under G96: the smallest it turns,
+// or for a pass that only faces, the largest it faces (the spindle holds that speed inwards).
+// 0 when the pass cuts nothing.
+[[nodiscard]] double speedLimitingDiameter_mm(const PassPath &pass);
+
+// The spindle limit a program sets (G50, LIMS): the highest speed any of its passes needs under
+// G96 on its speed-limiting diameter, rounded up to 1 rpm, or the machine's limit if lower.
 [[nodiscard]] SpindleLimit spindleLimit(const std::vector<const Toolpath *> &paths,
                                         std::optional<double> machineLimit_rpm);
 

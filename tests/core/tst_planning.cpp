@@ -422,25 +422,55 @@ private Q_SLOTS:
         QCOMPARE(ungripped, 2);
     }
 
-    // Equal times (the stepped shaft in a chuck, with or without the tailstock, both 1.173 min: the
-    // finishing pass is the same) are told apart by the tightest tolerance's margin, which the
-    // reason states: value, limit and the share used, value/limit.
-    void clampingTiesAreBrokenByTheDecidingTolerance()
+    // Every feasible method's reason states its deciding tolerance (value, limit and the share
+    // used), and a method with a centre in the right end says that end face is not in its time
+    // (its program does not face it).
+    void clampingReasonsNameTheDecidingTolerance()
     {
         const std::vector<ClampingOption> ranking =
             adviseClamping(test::exampleProject("stepped-shaft-chuck.tolturn"), DataLibrary::builtIn());
         QCOMPARE(int(ranking.size()), 3);
-        const auto used = [](const ClampingOption &o) {
-            const QRegularExpression re(
-                QStringLiteral("deciding: tolerance \\S+, ([\\d.]+) of ([\\d.]+) µm \\((\\d+) % used\\)"));
-            const auto m = re.match(o.reason);
-            return m.hasMatch() ? m.captured(1).toDouble() / m.captured(2).toDouble() : -1.0;
+        const QRegularExpression deciding(
+            QStringLiteral("deciding: tolerance \\S+, ([\\d.]+) of ([\\d.]+) µm \\((\\d+) % used\\)"));
+        for (const ClampingOption &o : ranking) {
+            const auto m = deciding.match(o.reason);
+            QVERIFY2(m.hasMatch(), qPrintable(o.reason));
+            // The share from the unrounded values: within 0.5 % and the 0.05 µm the value is rounded by.
+            const double limit = m.captured(2).toDouble();
+            QVERIFY2(std::abs(m.captured(3).toDouble() - 100.0 * m.captured(1).toDouble() / limit) <=
+                         0.5 + 100.0 * 0.05 / limit,
+                     qPrintable(o.reason));
+            QCOMPARE(o.reason.contains(QStringLiteral("right end face is held by a centre")),
+                     !holdsOneEndOnly(o.method));
+        }
+    }
+
+    // Equal times are told apart by the tightest tolerance's margin, whichever comes first; a
+    // difference in time beyond 1e-6 of it decides before any margin.
+    void clampingTiesAreBrokenByTheDecidingTolerance()
+    {
+        const auto option = [](ClampingMethod method, double time_min, double tolerance_um) {
+            ClampingOption o;
+            o.method = method;
+            o.possible = true;
+            o.plan.feasible = true;
+            o.plan.evaluation.objective = time_min;
+            o.plan.evaluation.constraints.push_back(
+                {QStringLiteral("tolerances"), QStringLiteral("T1"), tolerance_um, 20.0, QStringLiteral("µm")});
+            return o;
         };
-        for (const ClampingOption &o : ranking)
-            QVERIFY2(used(o) > 0.0, qPrintable(o.reason));
-        QVERIFY(std::abs(ranking[0].plan.evaluation.objective - ranking[1].plan.evaluation.objective) < 1e-6);
-        QVERIFY2(used(ranking[0]) <= used(ranking[1]) + 0.01,
-                 qPrintable(ranking[0].reason + QLatin1Char('|') + ranking[1].reason));
+        for (const bool tightFirst : {true, false}) {
+            std::vector<ClampingOption> options{option(ClampingMethod::Chuck, 1.2, 9.0),
+                                                option(ClampingMethod::ChuckTailstock, 1.2, 4.0)};
+            if (!tightFirst)
+                std::swap(options[0], options[1]);
+            rankClampingOptions(options);
+            QCOMPARE(options[0].method, ClampingMethod::ChuckTailstock); // 4 of 20 µm before 9 of 20 µm
+        }
+        std::vector<ClampingOption> options{option(ClampingMethod::ChuckTailstock, 1.2 + 1e-5, 4.0),
+                                            option(ClampingMethod::Chuck, 1.2, 9.0)};
+        rankClampingOptions(options);
+        QCOMPARE(options[0].method, ClampingMethod::Chuck);
     }
 
     // The program of the stepped shaft follows its outer contour from the right end face to the chuck
@@ -721,6 +751,74 @@ private Q_SLOTS:
         QVERIFY(std::abs(time.candidate.finishing.cuttingSpeed_m_min - 353.6) < 0.5);
         QVERIFY(cost.evaluation.cost < time.evaluation.cost);
         QVERIFY(time.evaluation.time_min < cost.evaluation.time_min);
+    }
+
+    // The finishing time of the slender pin without its tolerances (every size at nominal), by hand
+    // from the program's finishing moves: under G96 n = K/r with K = 1000 v/(2 pi), capped at the
+    // program's limit ceil(1000 v/(pi 28)) (the smallest turned diameter, the chamfer's Ø28); the
+    // nose radius 0.8 mm and the 2 mm clearance put the entry 3.6 mm right of the face at r = -0.8,
+    // the exit at z = 35 + 2 + 0.8 = 37.8 out to the safe diameter 40 + 2 x 2 = 44 (r 22).
+    // Along a line at n = K/r the time per mm is r/(f K): a face from r1 to r2 takes
+    // (r2^2 - r1^2)/(2 f K), a length L at mean radius rm takes L rm/(f K); below r_c = K/n_lim at
+    // n_lim: length/(f n_lim).
+    void finishingTimeFollowsTheProgramsMoves()
+    {
+        Project p = test::exampleProject("slender-pin-chuck.tolturn");
+        p.tolerances.clear();
+        const auto problem = problemFor(p);
+        const double v = 250.0;
+        const double f = 0.25;
+        PlanCandidate c;
+        c.finishing = {v, f, 1.5};
+        c.roughing = {200.0, 0.3, 0.0};
+        c.roughingPasses = problem->roughingPassRange(1.5).first;
+        const CandidateEvaluation e = problem->evaluate(c);
+
+        const double K = 1000.0 * v / (2.0 * kPi);
+        const double nLimit = std::ceil(1000.0 * v / (kPi * 28.0)); // 2843 rpm
+        const double rc = K / nLimit;                               // 13.995 mm
+        const double entry = 3.6 / (f * nLimit);
+        const double faceAtLimit = (rc + 0.8) / (f * nLimit);
+        const double faceAtG96 = (14.0 * 14.0 - rc * rc) / (2.0 * f * K);
+        const double chamfer = std::sqrt(2.0) * 14.5 / (f * K); // 1 x 45 degrees, r 14 to 15
+        const double pin = (124.0 - 37.8) * 15.0 / (f * K);
+        const double exit = (22.0 * 22.0 - 15.0 * 15.0) / (2.0 * f * K);
+        const double expected = entry + faceAtLimit + faceAtG96 + chamfer + pin + exit;
+        QVERIFY2(
+            std::abs(e.finishingTime_min / expected - 1.0) < 1e-6,
+            qPrintable(QStringLiteral("%1 vs %2 min").arg(e.finishingTime_min, 0, 'f', 7).arg(expected, 0, 'f', 7)));
+    }
+
+    // The planner's finishing time is the program's: the project's passes set to the plan's, the
+    // set-up sheet's finishing passes (the outer contour's and the bores') take as long.
+    void finishingTimeIsTheProgramsTime_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("stepped shaft") << QStringLiteral("stepped-shaft-chuck.tolturn");
+        QTest::newRow("bushing with its bore") << QStringLiteral("bushing-bore-h7.tolturn");
+        QTest::newRow("long shaft between centres") << QStringLiteral("long-shaft-centres.tolturn");
+    }
+
+    void finishingTimeIsTheProgramsTime()
+    {
+        QFETCH(QString, file);
+        Project p = test::exampleProject(file.toLatin1().constData());
+        const auto problem = problemFor(p);
+        const PlanResult plan = optimisePlan(*problem);
+        p.passes = problem->passesOf(plan.candidate);
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(d.inputs.has_value());
+        const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, {});
+        double programTime = 0.0;
+        int finishingPasses = 0;
+        for (const PassSummary &s : program.passes)
+            if (s.kind == PassKind::Finishing) {
+                programTime += s.time_min;
+                ++finishingPasses;
+            }
+        QCOMPARE(finishingPasses, file.startsWith(QLatin1String("bushing")) ? 2 : 1);
+        QVERIFY2(std::abs(plan.evaluation.finishingTime_min / programTime - 1.0) < 1e-9,
+                 qPrintable(QStringLiteral("%1 vs %2 min").arg(plan.evaluation.finishingTime_min).arg(programTime)));
     }
 
     // Planning is for the compliant end of the chuck's range unless told otherwise. On the sleeve in

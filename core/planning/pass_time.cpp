@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/planning/pass_time.h"
+
+#include "core/planning/path_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tolturn {
+
+std::vector<FeedStep> feedSteps(const PassPath &pass)
+{
+    std::vector<FeedStep> steps;
+    std::optional<ProfilePoint> at;
+    for (const ToolMove &m : pass.moves) {
+        if (m.kind != MoveKind::Rapid && at) {
+            PathElement e;
+            e.from = *at;
+            e.to = m.to;
+            e.arc = m.kind != MoveKind::Feed;
+            e.centre = m.centre;
+            e.radius_mm = m.radius_mm;
+            e.counterClockwise = m.kind == MoveKind::ArcCounterClockwise;
+            const std::vector<ProfilePoint> points = sampled(e, 0.05, 2000);
+            for (std::size_t i = 1; i < points.size(); ++i)
+                steps.push_back({points[i - 1], points[i], m.feed_mm_rev});
+        }
+        at = m.to;
+    }
+    return steps;
+}
+
+double g96SpindleSpeed_rpm(double cuttingSpeed_m_min, double r_mm, double limit_rpm)
+{
+    if (r_mm <= 1e-9)
+        return limit_rpm;
+    return std::min(limit_rpm, 1000.0 * cuttingSpeed_m_min / (2.0 * std::numbers::pi * r_mm));
+}
+
+double feedTime_min(const std::vector<FeedStep> &steps, double cuttingSpeed_m_min, double feed_mm_rev, double limit_rpm)
+{
+    double time = 0.0;
+    for (const FeedStep &s : steps) {
+        const double length = std::hypot(s.to.z_mm - s.from.z_mm, s.to.r_mm - s.from.r_mm);
+        const double r = 0.5 * (s.to.r_mm + s.from.r_mm);
+        time += length / (s.feed_mm_rev.value_or(feed_mm_rev) * g96SpindleSpeed_rpm(cuttingSpeed_m_min, r, limit_rpm));
+    }
+    return time;
+}
+
+} // namespace tolturn
