@@ -281,6 +281,40 @@ void PlanningProblem::timeFinishingPasses(const std::vector<PassPath> &passes)
     if (bores && passes.size() < 2)
         m_notes << Planning::tr("The bores are not in the finishing time: the program does not bore them (see the "
                                 "G-code's notes).");
+    if (passes.size() >= 2)
+        keepTheBoredProfile(passes[1]);
+}
+
+// The bore the boring bar bores (the inner contour, as deep as its finishing pass cuts), out of
+// the pilot hole, for the roughing volume; without a pilot hole the program takes the bore as
+// roughed before it, so there is nothing to keep.
+void PlanningProblem::keepTheBoredProfile(const PassPath &boring)
+{
+    const std::optional<double> pilot =
+        m_project.boringTool ? m_project.boringTool->pilotHoleDiameter_mm : std::optional<double>();
+    if (!pilot)
+        return;
+    double deepest = std::numeric_limits<double>::infinity();
+    for (const ToolMove &m : boring.moves)
+        if (m.kind != MoveKind::Rapid && !m.featureId.isEmpty())
+            deepest = std::min(deepest, m.to.z_mm);
+    m_pilotRadius_mm = 0.5 * *pilot;
+    const auto keep = [&](double z, double r) {
+        m_boredProfile.emplace_back(z, r);
+        m_boreRadialStock_mm = std::max(m_boreRadialStock_mm, r - m_pilotRadius_mm);
+    };
+    for (const Segment &segment : m_project.part.inner.segments) {
+        const std::vector<ProfilePoint> points = samplePoints(segment);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const ProfilePoint &q = points[i];
+            if (i > 0 && points[i - 1].z_mm < deepest && q.z_mm > deepest) { // where the bar stops
+                const double t = (deepest - points[i - 1].z_mm) / (q.z_mm - points[i - 1].z_mm);
+                keep(deepest, points[i - 1].r_mm + t * (q.r_mm - points[i - 1].r_mm));
+            }
+            if (q.z_mm >= deepest)
+                keep(q.z_mm, q.r_mm);
+        }
+    }
 }
 
 // Time of the finishing passes as the program cuts them (pass_time.h): every feed move, faces,
@@ -298,23 +332,39 @@ double PlanningProblem::finishingTime_min(const PassConditions &pass) const
     return feedTime_min(m_finishingSteps, pass.cuttingSpeed_m_min, pass.feed_mm_rev, limit_rpm);
 }
 
+namespace {
+
+// The integral of area(r) dz along stations (z, r) in z order, trapezoidal; a step back in z (the
+// next feature) adds nothing.
+double volumeAlong(const std::vector<std::pair<double, double>> &stations, const std::function<double(double)> &area)
+{
+    double volume = 0.0;
+    for (std::size_t i = 1; i < stations.size(); ++i) {
+        const double dz = stations[i].first - stations[i - 1].first;
+        if (dz > 0.0)
+            volume += 0.5 * dz * (area(stations[i].second) + area(stations[i - 1].second));
+    }
+    return volume;
+}
+
+} // namespace
+
 // Material the roughing passes remove: the bar down to the finishing allowance over every outer
-// turned feature, V = integral of pi ((D_s/2)^2 - (r + a_f)^2) dz.
+// turned feature, V = integral of pi ((D_s/2)^2 - (r + a_f)^2) dz, and the bores out from the pilot
+// hole r_p to their finishing allowance, V = integral of pi ((r - a_f)^2 - r_p^2) dz where
+// r - a_f > r_p (the boring bar roughs at the roughing passes' depths, boring_toolpath.h).
 double PlanningProblem::roughingVolume_mm3(double finishingDepth_mm) const
 {
     const double rs = 0.5 * m_stockDiameter_mm;
-    double volume = 0.0;
-    for (std::size_t i = 1; i < m_outerProfile.size(); ++i) {
-        const double dz = m_outerProfile[i].first - m_outerProfile[i - 1].first;
-        if (dz <= 0.0)
-            continue;
-        auto area = [&](double r) {
-            const double rf = std::min(r + finishingDepth_mm, rs);
-            return kPi * (rs * rs - rf * rf);
-        };
-        volume += 0.5 * dz * (area(m_outerProfile[i].second) + area(m_outerProfile[i - 1].second));
-    }
-    return volume;
+    const double outer = volumeAlong(m_outerProfile, [&](double r) {
+        const double rf = std::min(r + finishingDepth_mm, rs);
+        return kPi * (rs * rs - rf * rf);
+    });
+    const double bores = volumeAlong(m_boredProfile, [&](double r) {
+        const double rf = std::max(r - finishingDepth_mm, m_pilotRadius_mm);
+        return kPi * (rf * rf - m_pilotRadius_mm * m_pilotRadius_mm);
+    });
+    return outer + bores;
 }
 
 std::pair<int, int> PlanningProblem::roughingPassRange(double finishingDepth_mm) const
@@ -456,10 +506,14 @@ CandidateEvaluation PlanningProblem::evaluate(const PlanCandidate &c,
             e.constraints.push_back({QStringLiteral("roughing_depth"), QStringLiteral("roughing"), m_depth.min,
                                      roughing.depthOfCut_mm, QStringLiteral("mm")}); // a_min <= a_r
         }
-    } else if (leftForRoughing > 1e-9 && isEnabled(QStringLiteral("roughing_depth"))) {
+    } else if (isEnabled(QStringLiteral("roughing_depth"))) {
         // No roughing pass but stock left: the finishing pass would have to take it all.
-        e.constraints.push_back(
-            {QStringLiteral("roughing_depth"), QStringLiteral("roughing"), leftForRoughing, 0.0, QStringLiteral("mm")});
+        if (leftForRoughing > 1e-9)
+            e.constraints.push_back({QStringLiteral("roughing_depth"), QStringLiteral("roughing"), leftForRoughing, 0.0,
+                                     QStringLiteral("mm")});
+        if (const double leftInBores = m_boreRadialStock_mm - c.finishing.depthOfCut_mm; leftInBores > 1e-9)
+            e.constraints.push_back(
+                {QStringLiteral("roughing_depth"), QStringLiteral("boring"), leftInBores, 0.0, QStringLiteral("mm")});
     }
     const auto lifeFinishing = toolLife_min(c.finishing.cuttingSpeed_m_min);
     const auto lifeRoughing = toolLife_min(roughing.cuttingSpeed_m_min);

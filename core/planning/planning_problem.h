@@ -152,6 +152,7 @@ private:
     PlanningProblem() = default;
     [[nodiscard]] CuttingForces forces(double feed_mm_rev, double depth_mm) const;
     void timeFinishingPasses(const std::vector<PassPath> &passes);
+    void keepTheBoredProfile(const PassPath &boring);
     [[nodiscard]] double finishingTime_min(const PassConditions &pass) const;
     [[nodiscard]] double roughingVolume_mm3(double finishingDepth_mm) const;
     void addPassLimits(const QString &subject, const PassConditions &pass, const CuttingForces &f,
@@ -179,8 +180,11 @@ private:
     // the diameter on which they need their highest spindle speed (the program's G50 at v_f).
     std::vector<FeedStep> m_finishingSteps;
     double m_speedLimitingDiameter_mm = 0.0;
-    // Outer stations (z, radius) for the roughing volume.
+    // Outer stations (z, radius) for the roughing volume, and the bored ones out of the pilot hole.
     std::vector<std::pair<double, double>> m_outerProfile;
+    std::vector<std::pair<double, double>> m_boredProfile;
+    double m_pilotRadius_mm = 0.0;
+    double m_boreRadialStock_mm = 0.0; // the most the boring bar takes off a radius: bore less pilot hole
 };
 
 } // namespace tolturn

@@ -789,6 +789,47 @@ private Q_SLOTS:
             qPrintable(QStringLiteral("%1 vs %2 min").arg(e.finishingTime_min, 0, 'f', 7).arg(expected, 0, 'f', 7)));
     }
 
+    // The bushing's bore (Ø32 through, from a Ø28 pilot hole) is roughed by the boring bar as deep as
+    // its finishing pass bores it: its program's Z-92.2 (the bar's 95 mm overhang less the 2 mm
+    // clearance and the 0.8 mm nose radius), so over 92.2 mm of the 110 mm bore. With a finishing
+    // allowance of 0.5 mm the bar takes the pilot hole out to r = 16 - 0.5: the roughing time grows
+    // by pi 92.2 (15.5^2 - 14^2) / (1000 v f a_r) against the same plan without a pilot hole (the bore
+    // then taken as roughed before the program, boring_toolpath.h). With no roughing pass that stock
+    // is the finishing pass's, which the plan refuses by name.
+    void boreRoughingIsInTheRoughingTime()
+    {
+        Project p = test::exampleProject("bushing-bore-h7.tolturn");
+        QVERIFY(p.boringTool && p.boringTool->pilotHoleDiameter_mm == 28.0);
+        const auto withPilot = problemFor(p);
+        p.boringTool->pilotHoleDiameter_mm.reset();
+        const auto withoutPilot = problemFor(p);
+        PlanCandidate c;
+        c.finishing = {220.0, 0.2, 0.5};
+        c.roughing = {200.0, 0.3, 0.0};
+        c.roughingPasses = 1;
+        const CandidateEvaluation bored = withPilot->evaluate(c);
+        const CandidateEvaluation roughed = withoutPilot->evaluate(c);
+        const double outerStock = 32.0 - 30.0; // the Ø64 bar over the Ø60 outside
+        const double ar = outerStock - 0.5;    // one roughing pass
+        const double expected = kPi * 92.2 * (15.5 * 15.5 - 14.0 * 14.0) / (1000.0 * 200.0 * 0.3 * ar);
+        QVERIFY2(std::abs((bored.roughingTime_min - roughed.roughingTime_min) / expected - 1.0) < 1e-9,
+                 qPrintable(QStringLiteral("%1 - %2 vs %3 min")
+                                .arg(bored.roughingTime_min)
+                                .arg(roughed.roughingTime_min)
+                                .arg(expected)));
+
+        c.finishing.depthOfCut_mm = 1.5;
+        c.roughingPasses = 0;
+        const CandidateEvaluation unroughed = withPilot->evaluate(c);
+        const auto leftInBore =
+            std::find_if(unroughed.constraints.begin(), unroughed.constraints.end(), [](const ConstraintValue &v) {
+                return v.subject == QLatin1String("boring") && v.name == QLatin1String("roughing_depth");
+            });
+        QVERIFY(leftInBore != unroughed.constraints.end());
+        QVERIFY(std::abs(leftInBore->value - (16.0 - 14.0 - 1.5)) < 1e-9);
+        QVERIFY(!unroughed.feasible());
+    }
+
     // The planner's finishing time is the program's: the project's passes set to the plan's, the
     // set-up sheet's finishing passes (the outer contour's and the bores') take as long.
     void finishingTimeIsTheProgramsTime_data()
