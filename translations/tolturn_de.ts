@@ -740,6 +740,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 × %2 window, %3 % feasible; %4</source>
         <translation>Fenster %1 × %2, %3 % zulässig; %4</translation>
     </message>
+    <message>
+        <source>%1%2: the value is empty; give one, or leave the option out for its default</source>
+        <translation>%1%2: der Wert ist leer; geben Sie einen an, oder lassen Sie die Option für ihren Standardwert weg</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

@@ -740,6 +740,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 × %2 window, %3 % feasible; %4</source>
         <translation>ventana de %1 × %2, %3 % factible; %4</translation>
     </message>
+    <message>
+        <source>%1%2: the value is empty; give one, or leave the option out for its default</source>
+        <translation>%1%2: el valor está vacío; indique uno, u omita la opción para su valor predeterminado</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>

@@ -19,6 +19,7 @@
 #include <QJsonObject>
 #include <QTextStream>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tolturn {
@@ -43,6 +44,19 @@ int parseCommand(QCommandLineParser &parser, const QString &name, const QString 
     if (!parser.parse(args)) {
         err << programName() << ' ' << name << ": " << parser.errorText() << '\n';
         return kExitUsage;
+    }
+    // An option given an empty value (--store "") is refused: taken as given it would quietly mean
+    // the option's default (the default store, no planner, ...), which is not what was typed.
+    for (const QString &option : parser.optionNames()) {
+        const QStringList values = parser.values(option);
+        if (std::any_of(values.begin(), values.end(), [](const QString &v) { return v.isEmpty(); })) {
+            const QString dashes = option.size() == 1 ? QStringLiteral("-") : QStringLiteral("--");
+            err << programName() << ' ' << name << ": "
+                << CommandLine::tr("%1%2: the value is empty; give one, or leave the option out for its default")
+                       .arg(dashes, option)
+                << '\n';
+            return kExitUsage;
+        }
     }
     if (parser.isSet(help)) {
         out << CommandLine::tr("Usage: %1 %2").arg(programName(), synopsis) << "\n\n"

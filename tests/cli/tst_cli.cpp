@@ -267,6 +267,37 @@ private Q_SLOTS:
     // A bushing bored from both ends in two set-ups: evaluate judges each on its own; the
     // coaxiality of the two seats, cut in different set-ups, holds only if clamping again costs
     // less than its 20 µm zone (the deflection predicts none of it).
+    // An option given an empty value is a usage error naming it, not its default: "--store ''"
+    // would otherwise read the default measurement store, "-o ''" write nowhere.
+    void emptyOptionValueIsAUsageError_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        const QString shaft = example("stepped-shaft-chuck.tolturn");
+        QTest::newRow("evaluate --store") << QStringList{QStringLiteral("evaluate"), QStringLiteral("--learned"),
+                                                         QStringLiteral("--store"), QString(), shaft}
+                                          << QStringLiteral("--store: the value is empty");
+        QTest::newRow("measurements list --store")
+            << QStringList{QStringLiteral("measurements"), QStringLiteral("list"), QStringLiteral("--store"), QString()}
+            << QStringLiteral("--store: the value is empty");
+        QTest::newRow("gcode -o") << QStringList{QStringLiteral("gcode"), QStringLiteral("-o"), QString(), shaft}
+                                  << QStringLiteral("-o: the value is empty");
+        QTest::newRow("report --planner")
+            << QStringList{QStringLiteral("report"), QStringLiteral("--planner"), QString(),
+                           QStringLiteral("-o"),     QStringLiteral("-"),         shaft}
+            << QStringLiteral("--planner: the value is empty");
+    }
+
+    void emptyOptionValueIsAUsageError()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const Run r = runCli(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+
     void evaluateOperations()
     {
         const Run r = runCli({QStringLiteral("evaluate"), example("bushing-two-setups.tolturn")});
