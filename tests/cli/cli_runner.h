@@ -3,6 +3,8 @@
 // exit code. Shared by the command-line tests.
 #pragma once
 
+#include "tests/examples.h"
+
 #include <QFile>
 #include <QProcess>
 #include <QString>
@@ -43,11 +45,6 @@ inline Run runCli(const QStringList &args)
 {
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-inline QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
 }
 
 } // namespace tolturn::test

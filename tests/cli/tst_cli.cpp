@@ -18,6 +18,8 @@
 #include <numbers>
 
 using tolturn::test::example;
+using tolturn::test::exampleBytes;
+using tolturn::test::exampleJson;
 using tolturn::test::fileBytes;
 using tolturn::test::Run;
 using tolturn::test::runCli;
@@ -137,9 +139,7 @@ private Q_SLOTS:
     // Names that the data library does not know are errors of check, each naming what it has.
     void checkUnknownLibraryEntries()
     {
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QByteArray text = source.readAll();
+        QByteArray text = exampleBytes("stepped-shaft-chuck.tolturn");
         text.replace("\"haas-st-20\"", "\"nope-lathe\"");
         text.replace("\"C45E-N\"", "\"unobtainium\"");
         text.replace("\"PCLNR 2525M12\"", "\"XXXXR 2525M12\"");
@@ -167,9 +167,7 @@ private Q_SLOTS:
 
     void checkBadFileNamesFieldAndValue()
     {
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QByteArray text = source.readAll();
+        QByteArray text = exampleBytes("stepped-shaft-chuck.tolturn");
         text.replace("\"method\": \"chuck\"", "\"method\": \"magnet\"");
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("bad.tolturn"));
@@ -328,9 +326,7 @@ private Q_SLOTS:
     // An overhang beyond the maker's 4 x D for a steel bar is a warning of check.
     void checkBoringBarOverhang()
     {
-        QFile source(example("bushing-bore-h7.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QByteArray text = source.readAll();
+        QByteArray text = exampleBytes("bushing-bore-h7.tolturn");
         text.replace("\"overhang_mm\": 95", "\"overhang_mm\": 110");
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("long-bar.tolturn"));
@@ -389,9 +385,7 @@ private Q_SLOTS:
 
     void deflectUnknownMaterial()
     {
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QByteArray text = source.readAll();
+        QByteArray text = exampleBytes("stepped-shaft-chuck.tolturn");
         text.replace("\"material\": \"C45E-N\"", "\"material\": \"kryptonite\"");
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("bad.tolturn"));
@@ -459,9 +453,7 @@ private Q_SLOTS:
     void calibrateStiffnessRoundTrip()
     {
         QTemporaryDir dir;
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject project = exampleJson("stepped-shaft-chuck.tolturn");
         const QString target = dir.filePath(QStringLiteral("part.tolturn"));
         QVERIFY(writeFile(target, QJsonDocument(project).toJson()));
         auto springs = [](double k1, double k2, double k3) {
@@ -695,9 +687,7 @@ private Q_SLOTS:
 
     void optimizeWithoutRangesIsAnError()
     {
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject doc = exampleJson("stepped-shaft-chuck.tolturn");
         QJsonObject planning = doc.value(QStringLiteral("planning")).toObject();
         planning.remove(QStringLiteral("ranges"));
         doc.insert(QStringLiteral("planning"), planning);
@@ -716,9 +706,7 @@ private Q_SLOTS:
     // cutting data the plan chose (check calls the missing passes an error; optimize does not).
     void optimizePlansAProjectWithoutPasses()
     {
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject doc = exampleJson("stepped-shaft-chuck.tolturn");
         doc.insert(QStringLiteral("passes"), QJsonArray());
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("p.tolturn"));
@@ -737,9 +725,7 @@ private Q_SLOTS:
     // optimize, window and advise-clamping, and refused by every command that cuts it as it is.
     void optimizePlansAnOperationWithoutPasses()
     {
-        QFile source(example("bushing-two-setups.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject doc = exampleJson("bushing-two-setups.tolturn");
         QJsonArray operations = doc.value(QStringLiteral("further_operations")).toArray();
         QJsonObject op20 = operations.at(0).toObject();
         op20.insert(QStringLiteral("passes"), QJsonArray());
@@ -770,9 +756,7 @@ private Q_SLOTS:
     // dropped and named (it belongs to no new pass), while one elsewhere in the file is kept.
     void optimizeWriteNamesTheFieldsOfReplacedPasses()
     {
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject doc = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject doc = exampleJson("stepped-shaft-chuck.tolturn");
         QJsonArray passes = doc.value(QStringLiteral("passes")).toArray();
         QJsonObject last = passes.last().toObject();
         last.insert(QStringLiteral("coolant"), QStringLiteral("flood"));
@@ -820,9 +804,7 @@ private Q_SLOTS:
     void windowCsvQuotesTheBindingLabel()
     {
         QTemporaryDir dir;
-        QFile source(example("long-shaft-centres.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject project = exampleJson("long-shaft-centres.tolturn");
         project.insert(
             QStringLiteral("characterisation"),
             QJsonObject{{QStringLiteral("source"), QStringLiteral("test")},
@@ -858,9 +840,7 @@ private Q_SLOTS:
     void optimizePrintsAHugeTimeReadably()
     {
         QTemporaryDir dir;
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject project = exampleJson("stepped-shaft-chuck.tolturn");
         QJsonObject planning = project.value(QStringLiteral("planning")).toObject();
         planning.insert(QStringLiteral("tool_life"), QJsonObject{{QStringLiteral("C_m_min"), 0.5},
                                                                  {QStringLiteral("n"), 0.01},
@@ -896,9 +876,7 @@ private Q_SLOTS:
     void adviseClampingWithoutRangesIsAProblem()
     {
         QTemporaryDir dir;
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject project = exampleJson("stepped-shaft-chuck.tolturn");
         QJsonObject planning = project.value(QStringLiteral("planning")).toObject();
         planning.remove(QStringLiteral("ranges"));
         project.insert(QStringLiteral("planning"), planning);

@@ -170,9 +170,7 @@ private Q_SLOTS:
             std::abs(reference - tableValue) < 5e-5,
             qPrintable(QStringLiteral("closed form %1 µm, table %2 µm").arg(reference, 0, 'f', 6).arg(tableValue)));
 
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject project = exampleJson("stepped-shaft-chuck.tolturn");
         project.insert(QStringLiteral("part"), QJsonObject{{QStringLiteral("name"), QStringLiteral("validation bar")},
                                                            {QStringLiteral("stock_diameter_mm"), 64.0},
                                                            {QStringLiteral("outer"), outer},

@@ -2,6 +2,8 @@
 // Autosave and recovery: a copy exists only while there are unsaved changes, a running session's
 // copy is never offered, and a copy a crash left is offered at the next start and recovered as
 // a modified document belonging to its original file.
+#include "tests/examples.h"
+
 #include "app/gui/autosave.h"
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
@@ -22,10 +24,7 @@ using namespace tolturn;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 // Clicks "Recover" or "Discard" in the next recovery question.
 void answerNextRecoverPrompt(bool recover)

@@ -2,6 +2,7 @@
 // File > Import STEP/IGES and Export STEP, offscreen: the file is read off the GUI thread, the
 // planner's choice of chuck end is applied, the part opens as a new project; a bad file or a
 // cancel leaves the open project as it was.
+#include "tests/examples.h"
 #include "tests/gui/modal.h"
 #include "tests/gui/screenshot.h"
 
@@ -35,10 +36,7 @@ using namespace tolturn;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 // Answers with a fixed file and choice; records what it was shown.
 class CannedPrompts

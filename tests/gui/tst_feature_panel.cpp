@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The profile editor's Feature dock driven on the stepped-shaft example: exact entry of a
 // corner, a step, a chamfer, a delete; each one undoable step; refusals leave the part alone.
+#include "tests/examples.h"
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/file_controller.h"
@@ -22,10 +23,7 @@ using namespace tolturn;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 const Segment &feature(const MainWindow &w, const char *id)
 {

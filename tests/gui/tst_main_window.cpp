@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop program's main window, offscreen: open an example, see its drawing, survive bad
 // files with a dialog and the document untouched, save, recent files, About.
+#include "tests/examples.h"
 #include "tests/gui/milled_features_fixture.h"
 #include "tests/gui/modal.h"
 #include "tests/gui/screenshot.h"
@@ -67,10 +68,7 @@ using tolturn::test::closeNextMessageBox;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 QList<QGraphicsItem *> itemsOfKind(const MainWindow &w, const QString &kind)
 {

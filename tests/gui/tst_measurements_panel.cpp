@@ -3,6 +3,7 @@
 // background, typing a part in (bad cells named by row and column), learning with progress and
 // cancel, the window's verdicts and curves with what was learned, an unreachable shop database.
 // With TOLTURN_SCREENSHOTS=DIR the window with the dock is saved as DIR/measurements.png.
+#include "tests/examples.h"
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/main_window.h"
@@ -41,10 +42,7 @@ namespace {
 
 constexpr int kWait_ms = 60000;
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QLatin1String(name);
-}
+using tolturn::test::example;
 
 Project steppedShaft()
 {

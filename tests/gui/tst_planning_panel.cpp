@@ -2,6 +2,7 @@
 // The planning panel offscreen: the optimisation runs off the GUI thread and fills the plan, the
 // window map, the clamping ranking; applying the plan is undoable; constraints switch on and off;
 // G-code preview and export. With TOLTURN_SCREENSHOTS=DIR the window is saved as DIR/planning.png.
+#include "tests/examples.h"
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/main_window.h"
@@ -41,10 +42,8 @@ using namespace tolturn;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
+using tolturn::test::exampleJson;
 
 } // namespace
 
@@ -428,9 +427,7 @@ private Q_SLOTS:
     // not exported, as gcode --compensated refuses it; the nominal program still is.
     void exportRefusesACorrectionDeeperThanTheCut()
     {
-        QFile source(example("stepped-shaft-chuck.tolturn"));
-        QVERIFY(source.open(QIODevice::ReadOnly));
-        QJsonObject project = QJsonDocument::fromJson(source.readAll()).object();
+        QJsonObject project = exampleJson("stepped-shaft-chuck.tolturn");
         project.insert(
             QStringLiteral("characterisation"),
             QJsonObject{{QStringLiteral("source"), QStringLiteral("a test")},

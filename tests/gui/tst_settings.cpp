@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Edit > Preferences: display units (mm/µm or in/µin) and the language, stored in the settings;
 // the units change every view at once and never the document.
+#include "tests/examples.h"
+
 #include "app/gui/file_controller.h"
 #include "app/gui/main_window.h"
 #include "app/gui/settings_dialog.h"
@@ -34,10 +36,7 @@ using namespace tolturn;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 QStringList dimensionTexts(const MainWindow &w)
 {

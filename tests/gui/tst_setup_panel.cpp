@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Set-up dock driven as a user drives it: each change is one undoable edit, the deflection
 // curves follow it, and a refused value is put back with a message naming the field and value.
+#include "tests/examples.h"
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/file_controller.h"
@@ -35,10 +36,7 @@ using namespace tolturn;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 // What a user's choice in a combo box does: select the item, then the box reports it.
 void choose(QComboBox *box, const QVariant &data)

@@ -4,6 +4,7 @@
 // the dialog, closing it while it runs cancels, and the project is never changed. With
 // TOLTURN_SCREENSHOTS=DIR the dialog with its results is saved as DIR/solid-check.png.
 #include "tests/core/test_support.h"
+#include "tests/examples.h"
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/file_controller.h"
@@ -38,10 +39,7 @@ namespace {
 constexpr int kRunTimeout_ms = 120000;
 constexpr double kCoarseMesh_mm = 8.0;
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 Project steppedShaft()
 {

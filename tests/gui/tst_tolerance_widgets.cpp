@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Tolerances in the desktop program, offscreen: the verdict model, undoable edits that change the
 // verdicts, the tolerance dialog's live ISO 286 limits and its refusals, feature selection.
+#include "tests/examples.h"
 #include "tests/gui/screenshot.h"
 
 #include "app/gui/main_window.h"
@@ -30,10 +31,7 @@ using namespace tolturn;
 
 namespace {
 
-QString example(const char *name)
-{
-    return QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples/") + QString::fromLatin1(name);
-}
+using tolturn::test::example;
 
 int rowOf(const ToleranceVerdictModel *model, const QString &id)
 {
