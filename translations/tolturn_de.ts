@@ -217,6 +217,10 @@
         <source>; the right end face is held by a centre: it is faced and centred before the set-up, not in this time</source>
         <translation>; die rechte Stirnfläche hält eine Spitze: sie wird vor dem Aufspannen plangedreht und zentriert, nicht in dieser Zeit</translation>
     </message>
+    <message>
+        <source>; not held to: %1</source>
+        <translation>; nicht berücksichtigt: %1</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -3570,6 +3574,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The bores are not in the finishing time: the program does not bore them (see the G-code&apos;s notes).</source>
         <translation>Die Bohrungen sind nicht in der Schlichtzeit: das Programm dreht sie nicht aus (siehe die Hinweise des G-Codes).</translation>
+    </message>
+    <message>
+        <source>Not among the plan&apos;s constraints: %1.</source>
+        <translation>Nicht unter den Nebenbedingungen des Plans: %1.</translation>
     </message>
 </context>
 <context>

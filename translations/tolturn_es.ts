@@ -217,6 +217,10 @@
         <source>; the right end face is held by a centre: it is faced and centred before the set-up, not in this time</source>
         <translation>; la cara frontal derecha la sujeta un punto: se refrenta y se hace el centro antes del amarre, no en este tiempo</translation>
     </message>
+    <message>
+        <source>; not held to: %1</source>
+        <translation>; no se tiene en cuenta: %1</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -3570,6 +3574,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The bores are not in the finishing time: the program does not bore them (see the G-code&apos;s notes).</source>
         <translation>Los agujeros no están en el tiempo de acabado: el programa no los mandrina (vea las notas del código G).</translation>
+    </message>
+    <message>
+        <source>Not among the plan&apos;s constraints: %1.</source>
+        <translation>No está entre las restricciones del plan: %1.</translation>
     </message>
 </context>
 <context>

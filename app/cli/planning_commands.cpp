@@ -351,6 +351,11 @@ int runAdviseClamping(const QStringList &args, QTextStream &out, QTextStream &er
                               {QStringLiteral("reason"), o.reason}};
             if (o.possible)
                 entry.insert(QStringLiteral("objective_value"), o.plan.evaluation.objective);
+            QJsonArray notHeld;
+            for (const ToleranceLeftOut &t : o.tolerancesNotHeld)
+                notHeld.append(
+                    QJsonObject{{QStringLiteral("tolerance"), t.toleranceId}, {QStringLiteral("reason"), t.reason}});
+            entry.insert(QStringLiteral("tolerances_not_held"), notHeld);
             list.append(entry);
         }
         QJsonObject result{{QStringLiteral("file"), file},

@@ -2,6 +2,7 @@
 #include "core/planning/clamping_advisor.h"
 
 #include "core/project/keywords.h"
+#include "core/project/operations.h"
 
 #include <QCoreApplication>
 
@@ -30,7 +31,7 @@ std::optional<double> gripLength(const Project &p)
             continue; // the end face and its edge break
         if (s.kind != SegmentKind::Cylinder)
             return std::nullopt;
-        return std::min(s.to.z_mm, p.part.length_mm() / 3.0);
+        return proposedGripLength_mm(s.to.z_mm, p.part.length_mm());
     }
     return std::nullopt;
 }
@@ -111,6 +112,9 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         part.progress = Progress(options.progress, third, third + 1.0 / static_cast<double>(methods.size()));
         o.plan = optimisePlan(*built.problem, part);
         o.reason = describe(o, p);
+        o.tolerancesNotHeld = built.problem->unconstrainedTolerances();
+        if (!o.tolerancesNotHeld.empty())
+            o.reason += ClampingAdvice::tr("; not held to: %1").arg(leftOutText(o.tolerancesNotHeld));
         if (!holdsOneEndOnly(method)) // the toolpath does not face an end a centre holds
             o.reason += ClampingAdvice::tr("; the right end face is held by a centre: it is faced and centred before "
                                            "the set-up, not in this time");
@@ -123,17 +127,26 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
 void rankClampingOptions(std::vector<ClampingOption> &options)
 {
     std::stable_sort(options.begin(), options.end(), [](const ClampingOption &a, const ClampingOption &b) {
-        auto group = [](const ClampingOption &o) { return !o.possible ? 2 : (!o.plan.feasible ? 1 : 0); };
+        enum Group { HoldsAll, LeavesSome, Infeasible, NotPossible };
+        auto group = [](const ClampingOption &o) {
+            if (!o.possible)
+                return NotPossible;
+            if (!o.plan.feasible)
+                return Infeasible;
+            return o.tolerancesNotHeld.empty() ? HoldsAll : LeavesSome;
+        };
         if (group(a) != group(b))
             return group(a) < group(b);
-        if (group(a) == 1)
+        if (group(a) == NotPossible)
+            return false;
+        if (group(a) == Infeasible)
             return a.plan.evaluation.totalViolation() < b.plan.evaluation.totalViolation();
         const double ea = a.plan.evaluation.objective;
         const double eb = b.plan.evaluation.objective;
-        if (group(a) == 0 && std::abs(ea - eb) > 1e-6 * std::max({1.0, std::abs(ea), std::abs(eb)}))
+        if (std::abs(ea - eb) > 1e-6 * std::max({1.0, std::abs(ea), std::abs(eb)}))
             return ea < eb;
         // Equal times or costs: the plan with more margin on its tightest tolerance first.
-        return group(a) == 0 && tightestUtilisation(a.plan.evaluation) < tightestUtilisation(b.plan.evaluation);
+        return tightestUtilisation(a.plan.evaluation) < tightestUtilisation(b.plan.evaluation);
     });
 }
 

@@ -12,11 +12,11 @@ struct ClampingOption {
     double clampedLength_mm = 0.0;
     bool possible = false;
     PlanResult plan;
+    std::vector<ToleranceLeftOut> tolerancesNotHeld; // those this set-up cannot hold (a feature in the jaws)
     QString reason;
 };
 
-// The plan for chuck, between centres and chuck + tailstock, ranked: feasible plans by their
-// objective, then infeasible ones by how much they violate, then those the part does not allow
+// The plan for chuck, between centres and chuck + tailstock, ranked (rankClampingOptions)
 // (Valiño et al. 2008 §VII: the error model "can be useful for deciding the most suitable clamping
 // method"). A chuck grips the first outer cylinder of the part, past the end face's edge break (the
 // project's clamped length when it is held in a chuck already, else to that cylinder's end, at
@@ -24,9 +24,11 @@ struct ClampingOption {
 [[nodiscard]] std::vector<ClampingOption> adviseClamping(const Project &project, const DataLibrary &data,
                                                          const OptimisationOptions &options = {});
 
-// The ranking adviseClamping gives: feasible plans by their objective (equal within 1e-6 of it:
-// the one with more margin on its tightest tolerance first), then infeasible ones by how much they
-// violate, then the methods the part does not allow. Stable: equal options keep their order.
+// The ranking adviseClamping gives: feasible plans that hold every tolerance by their objective
+// (equal within 1e-6 of it: the one with more margin on its tightest tolerance first), then
+// feasible plans that leave a tolerance to another set-up (a feature in the jaws) in the same
+// order, then infeasible ones by how much they violate, then the methods the part does not allow.
+// Stable: equal options keep their order.
 void rankClampingOptions(std::vector<ClampingOption> &options);
 
 } // namespace tolturn

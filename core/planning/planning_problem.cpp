@@ -229,8 +229,35 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     if (!p.m_maxSpeed_rpm)
         p.m_notes << Planning::tr("No spindle speed limit known (machine data or planning.max_spindle_speed_rpm): "
                                   "spindle speed is not constrained.");
+    p.noteUnconstrainedTolerances();
     result.problem = problem;
     return result;
+}
+
+QString leftOutText(const std::vector<ToleranceLeftOut> &tolerances)
+{
+    QStringList texts;
+    for (const ToleranceLeftOut &t : tolerances)
+        texts << t.text();
+    return texts.join(QStringLiteral("; "));
+}
+
+// The tolerances that cannot be among the constraints, each with why (a feature in the jaws or
+// beyond the supports, limits that cannot be formed), once at the smallest conditions of the
+// ranges: a plan that leaves one out says so where the plan is read.
+void PlanningProblem::noteUnconstrainedTolerances()
+{
+    if (!isEnabled(QStringLiteral("tolerances")))
+        return;
+    const PassConditions smallest{m_speed.min, m_feed.min, m_depth.min};
+    for (const ToleranceEvaluation &e :
+         evaluateTolerances(m_project, finishingDeviation(smallest), EvaluationDetail::WithText, &m_targets)) {
+        if (e.verdict != Verdict::CannotEvaluate || e.deviationNotFinite)
+            continue; // held to, or one the cutting forces do not decide (NotPredicted: the verdicts say why)
+        m_unconstrained.push_back({e.toleranceId, e.reason});
+    }
+    if (!m_unconstrained.empty())
+        m_notes << Planning::tr("Not among the plan's constraints: %1.").arg(leftOutText(m_unconstrained));
 }
 
 std::vector<CuttingPass> PlanningProblem::passesOf(const PlanCandidate &c) const

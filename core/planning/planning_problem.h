@@ -24,6 +24,18 @@ struct PassConditions {
     double depthOfCut_mm = 0.0;
 };
 
+// A tolerance a plan cannot hold to (its feature in the jaws or beyond the supports, limits that
+// cannot be formed), and why, in words.
+struct ToleranceLeftOut {
+    QString toleranceId;
+    QString reason;
+
+    [[nodiscard]] QString text() const { return QStringLiteral("%1 (%2)").arg(toleranceId, reason); } // "T3 (why)"
+};
+
+// "T3 (why); T5 (why)".
+[[nodiscard]] QString leftOutText(const std::vector<ToleranceLeftOut> &tolerances);
+
 // A plan: the finishing pass over the finishing allowance, and `roughingPasses` equal roughing
 // passes that take the rest of the stock (docs/planning.md §1).
 struct PlanCandidate {
@@ -146,6 +158,9 @@ public:
 
     [[nodiscard]] QStringList notes() const { return m_notes; }
 
+    // The tolerances that cannot be constraints of the plan, each with why.
+    [[nodiscard]] const std::vector<ToleranceLeftOut> &unconstrainedTolerances() const { return m_unconstrained; }
+
     [[nodiscard]] const std::shared_ptr<const LoadedModel> &learned() const { return m_learned; }
 
 private:
@@ -153,6 +168,7 @@ private:
     [[nodiscard]] CuttingForces forces(double feed_mm_rev, double depth_mm) const;
     void timeFinishingPasses(const std::vector<PassPath> &passes);
     void keepTheBoredProfile(const PassPath &boring);
+    void noteUnconstrainedTolerances();
     [[nodiscard]] double finishingTime_min(const PassConditions &pass) const;
     [[nodiscard]] double roughingVolume_mm3(double finishingDepth_mm) const;
     void addPassLimits(const QString &subject, const PassConditions &pass, const CuttingForces &f,
@@ -176,6 +192,7 @@ private:
     double m_stockDiameter_mm = 0.0;
     std::optional<double> m_maxPower_kW, m_maxTorque_Nm, m_maxSpeed_rpm;
     QStringList m_notes;
+    std::vector<ToleranceLeftOut> m_unconstrained; // noteUnconstrainedTolerances()
     // The feed moves of the finishing passes the program cuts (pass_time.h), for their time, and
     // the diameter on which they need their highest spindle speed (the program's G50 at v_f).
     std::vector<FeedStep> m_finishingSteps;

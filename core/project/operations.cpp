@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace tolturn {
@@ -344,7 +345,7 @@ std::optional<SplitProposal> proposeSplit(const Project &project, QString *why)
         return say(Operations::tr("there is no outer cylinder to hold the part by at its other end"));
     // The grip lies right of every feature the first set-up's jaws cover, so the second set-up's
     // jaws leave them free.
-    const double gripLength = std::min(grip->to.z_mm - grip->from.z_mm, length / 3.0);
+    const double gripLength = proposedGripLength_mm(grip->to.z_mm - grip->from.z_mm, length);
     SplitProposal proposal;
     Operation &op = proposal.second;
     op.name = QStringLiteral("OP 20");
@@ -361,6 +362,11 @@ std::optional<SplitProposal> proposeSplit(const Project &project, QString *why)
             .arg(inJaws.join(QStringLiteral(", ")), operationName(project, 0), formatNumber(first.clampedLength_mm),
                  formatNumber(gripLength), grip->id, formatNumber(2.0 * grip->to.r_mm), op.name);
     return proposal;
+}
+
+double proposedGripLength_mm(double available_mm, double partLength_mm)
+{
+    return std::floor(10.0 * std::min(available_mm, partLength_mm / 3.0) + 1e-9) / 10.0;
 }
 
 Diagnostics checkOperations(const Project &project)

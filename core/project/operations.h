@@ -73,6 +73,11 @@ struct SplitProposal {
     QString reason;
 };
 
+// The length a chuck grips on a cylinder of `available_mm`, at most a third of a part of
+// `partLength_mm` (a longer grip leaves too little to turn; the third is this program's rule),
+// rounded down to the 0.1 mm a setter sets a jaw stop to.
+[[nodiscard]] double proposedGripLength_mm(double available_mm, double partLength_mm);
+
 [[nodiscard]] std::optional<SplitProposal> proposeSplit(const Project &project, QString *why = nullptr);
 
 // Named findings about the operations: names, features that do not exist or are named twice, a

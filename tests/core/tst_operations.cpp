@@ -427,7 +427,8 @@ private Q_SLOTS:
 
     // One set-up held 30 mm at the left end: the jaws cover O1 and O2, so the split proposed turns
     // the part end for end and holds it on O4, the cylinder at the other end, for a third of the
-    // part (200/3 mm; O4 is 100 mm long), to turn O1 and O2. Applied, the project is sound.
+    // part (200/3 mm, O4 being 100 mm long) down to the 0.1 mm a jaw stop is set to: 66.6 mm, to
+    // turn O1 and O2. Applied, the project is sound.
     void splitIsProposedForFeaturesInTheJaws()
     {
         Project p = twoOperationShaft();
@@ -436,7 +437,8 @@ private Q_SLOTS:
         QVERIFY(split.has_value());
         QCOMPARE(split->second.features, (QStringList{QStringLiteral("O1"), QStringLiteral("O2")}));
         QCOMPARE(split->second.clamping.heldEnd, PartEnd::Right);
-        QCOMPARE(split->second.clamping.clampedLength_mm, 200.0 / 3.0);
+        QCOMPARE(split->second.clamping.clampedLength_mm, 66.6);
+        QVERIFY2(split->reason.contains(QStringLiteral("hold it 66.6 mm on")), qPrintable(split->reason));
         QVERIFY2(split->reason.contains(QStringLiteral("on O4 Ø40")), qPrintable(split->reason));
         p.furtherOperations = {split->second};
         QVERIFY2(validateProject(p).empty(), qPrintable(dump(validateProject(p))));

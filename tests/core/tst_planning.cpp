@@ -389,9 +389,20 @@ private Q_SLOTS:
         const std::vector<ClampingOption> ranking =
             adviseClamping(test::exampleProject("long-shaft-centres.tolturn"), DataLibrary::builtIn());
         QCOMPARE(int(ranking.size()), 3);
-        // Feasible ones first, by time; the slender shaft held in a chuck alone cannot hold its k6 journal.
-        QVERIFY(ranking[0].plan.feasible && ranking[1].plan.feasible);
-        QVERIFY(ranking[0].plan.evaluation.objective <= ranking[1].plan.evaluation.objective);
+        // A chuck grips the first cylinder, O3 (z 1 to 120), for min(120, 500/3) = 120 mm: all of
+        // it, so its diameter T3 is not turned in a set-up with the chuck. Between centres holds
+        // every tolerance and comes first, though chuck + tailstock is faster (it turns less);
+        // the slender shaft held in a chuck alone cannot hold its k6 journal.
+        QCOMPARE(ranking[0].method, ClampingMethod::BetweenCentres);
+        QVERIFY(ranking[0].plan.feasible && ranking[0].tolerancesNotHeld.empty());
+        QCOMPARE(ranking[1].method, ClampingMethod::ChuckTailstock);
+        QCOMPARE(ranking[1].clampedLength_mm, 120.0);
+        QVERIFY(ranking[1].plan.feasible);
+        QCOMPARE(int(ranking[1].tolerancesNotHeld.size()), 1);
+        QCOMPARE(ranking[1].tolerancesNotHeld.front().toleranceId, QStringLiteral("T3"));
+        QVERIFY2(ranking[1].reason.contains(QStringLiteral("not held to: T3 (feature O3 is not cut")),
+                 qPrintable(ranking[1].reason));
+        QVERIFY(ranking[1].plan.evaluation.objective < ranking[0].plan.evaluation.objective);
         QCOMPARE(ranking[2].method, ClampingMethod::Chuck);
         QVERIFY(!ranking[2].plan.feasible);
         QVERIFY(ranking[2].reason.contains(QStringLiteral("tolerance")));
@@ -446,7 +457,8 @@ private Q_SLOTS:
     }
 
     // Equal times are told apart by the tightest tolerance's margin, whichever comes first; a
-    // difference in time beyond 1e-6 of it decides before any margin.
+    // difference in time beyond 1e-6 of it decides before any margin, and holding every tolerance
+    // before any time.
     void clampingTiesAreBrokenByTheDecidingTolerance()
     {
         const auto option = [](ClampingMethod method, double time_min, double tolerance_um) {
@@ -471,6 +483,10 @@ private Q_SLOTS:
                                             option(ClampingMethod::Chuck, 1.2, 9.0)};
         rankClampingOptions(options);
         QCOMPARE(options[0].method, ClampingMethod::Chuck);
+        // A faster plan that leaves a tolerance to another set-up comes after one that holds all.
+        options[0].tolerancesNotHeld.push_back({QStringLiteral("T3"), QStringLiteral("in the jaws")});
+        rankClampingOptions(options);
+        QCOMPARE(options[0].method, ClampingMethod::ChuckTailstock);
     }
 
     // The program of the stepped shaft follows its outer contour from the right end face to the chuck
