@@ -152,10 +152,11 @@ void checkTolerance(const Project &p, const MilledFeature &f, const QString &pat
     QSet<QString> labels;
     for (const Datum &d : p.datums)
         labels.insert(d.label);
-    for (const QString &label : t.datums) {
-        if (!labels.contains(label))
-            out.push_back(makeError(path + QStringLiteral("tolerance.datums"),
-                                    MilledFeatureCheck::tr("there is no datum '%1' in the project").arg(label)));
+    for (qsizetype j = 0; j < t.datums.size(); ++j) {
+        if (!labels.contains(t.datums.at(j)))
+            out.push_back(
+                makeError(path + QStringLiteral("tolerance.datums[%1]").arg(j),
+                          MilledFeatureCheck::tr("there is no datum '%1' in the project").arg(t.datums.at(j))));
     }
 }
 

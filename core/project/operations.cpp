@@ -390,13 +390,13 @@ Diagnostics checkOperations(const Project &project)
         if (op.features.isEmpty())
             out.push_back(makeError(path + QStringLiteral(".features"),
                                     Operations::tr("operation \"%1\" cuts no feature").arg(op.name)));
-        for (const QString &id : op.features) {
+        for (qsizetype j = 0; j < op.features.size(); ++j) {
+            const QString &id = op.features.at(j);
+            const QString field = path + QStringLiteral(".features[%1]").arg(j);
             if (!ids.contains(id))
-                out.push_back(makeError(path + QStringLiteral(".features"),
-                                        Operations::tr("there is no feature \"%1\"").arg(id)));
+                out.push_back(makeError(field, Operations::tr("there is no feature \"%1\"").arg(id)));
             else if (!named.insert(id).second)
-                out.push_back(makeError(path + QStringLiteral(".features"),
-                                        Operations::tr("feature %1 is named by two operations").arg(id)));
+                out.push_back(makeError(field, Operations::tr("feature %1 is named by two operations").arg(id)));
         }
     }
     if (hasErrors(out))

@@ -223,11 +223,11 @@ void checkGeometric(const Tolerance &t, const QSet<QString> &datumLabels, const 
             makeError(path + QStringLiteral("datums"),
                       ProjectValidation::tr("a %1 tolerance is defined relative to a datum, but none is given")
                           .arg(keyword(t.type))));
-    for (const QString &label : t.datums) {
-        if (!datumLabels.contains(label))
-            out.push_back(
-                makeError(path + QStringLiteral("datums"),
-                          ProjectValidation::tr("datum '%1' is not defined in the project's datums").arg(label)));
+    for (qsizetype j = 0; j < t.datums.size(); ++j) {
+        if (!datumLabels.contains(t.datums.at(j)))
+            out.push_back(makeError(
+                path + QStringLiteral("datums[%1]").arg(j),
+                ProjectValidation::tr("datum '%1' is not defined in the project's datums").arg(t.datums.at(j))));
     }
 }
 

@@ -318,7 +318,7 @@ private Q_SLOTS:
         p.milledFeatures.back().id = f.id;
         const Diagnostics findings = validateProject(p);
         const QString all = listed(findings);
-        QVERIFY2(hasFinding(findings, QStringLiteral("milled_features[0].tolerance.datums"), QStringLiteral("'Q'"),
+        QVERIFY2(hasFinding(findings, QStringLiteral("milled_features[0].tolerance.datums[0]"), QStringLiteral("'Q'"),
                             Severity::Error),
                  qPrintable(all));
         QVERIFY2(hasFinding(findings, QStringLiteral("milled_features[0].tolerance.datums"),

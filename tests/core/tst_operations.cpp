@@ -472,12 +472,15 @@ private Q_SLOTS:
                  qPrintable(dump(d)));
 
         Project unknown = twoOperationShaft();
-        unknown.furtherOperations.front().features << QStringLiteral("O9");
+        unknown.furtherOperations.front().features << QStringLiteral("O9"); // after O1 and O2: index 2
+        QCOMPARE(unknown.furtherOperations.front().features.size(), 3);
         d = validateProject(unknown);
-        QVERIFY2(
-            std::any_of(d.begin(), d.end(),
-                        [](const Diagnostic &x) { return x.message.contains(QLatin1String("no feature \"O9\"")); }),
-            qPrintable(dump(d)));
+        QVERIFY2(std::any_of(d.begin(), d.end(),
+                             [](const Diagnostic &x) {
+                                 return x.field == QLatin1String("further_operations[0].features[2]") &&
+                                        x.message.contains(QLatin1String("no feature \"O9\""));
+                             }),
+                 qPrintable(dump(d)));
 
         Project twice = twoOperationShaft();
         Operation op30 = twice.furtherOperations.front();

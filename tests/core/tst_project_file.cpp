@@ -528,8 +528,8 @@ private Q_SLOTS:
             "unknown tolerance type \"roundness\"");
         row("geometric tolerance without datum", shaft, {QStringLiteral("tolerances[4].datums=[]")},
             "tolerances[4].datums", "relative to a datum, but none is given");
-        row("undefined datum", shaft, {QStringLiteral("tolerances[4].datums=[\"B\"]")}, "tolerances[4].datums",
-            "datum 'B' is not defined");
+        row("undefined datum", shaft, {QStringLiteral("tolerances[4].datums=[\"A\", \"B\"]")},
+            "tolerances[4].datums[1]", "datum 'B' is not defined");
         row("hole class on shaft", shaft, {QStringLiteral("tolerances[0].iso286=\"H7\"")}, "tolerances[0].iso286",
             "'H7' is a hole class");
         row("malformed ISO 286 class", shaft, {QStringLiteral("tolerances[0].iso286=\"h66\"")}, "tolerances[0].iso286",
