@@ -3,7 +3,7 @@
 # Renders the screenshots of the main views for the README and docs/ under Xvfb, by running the
 # GUI tests that drive those views with TOLTURN_SCREENSHOTS set, and writes the PDF report of the
 # stepped-shaft example as PNG pages (poppler's pdftoppm): the window at 1366 x 768 and 1600 x 1000,
-# its first start, the planning dock, the feature editor, the import dialog, the solid check,
+# its first start, the planning dock (its cutting window and clamping ranking), the feature editor, the import dialog, the solid check,
 # the Milling dock, every report page.
 # Usage: tools/screenshots.sh [BUILD_DIR] [OUT_DIR]   (defaults: build/dev docs/images)
 set -eu

@@ -118,6 +118,10 @@ private Q_SLOTS:
         QCOMPARE(panel->clampingTable()->rowCount(), 3);
         // Between centres holds every tolerance; a chuck would grip O3 and leave its T3 to another set-up.
         QCOMPARE(panel->clampingTable()->item(0, 1)->text(), QStringLiteral("between centres"));
+        // Green for the set-up that holds every tolerance, amber for the one that leaves T3 in the jaws.
+        QCOMPARE(panel->clampingTable()->item(0, 2)->background().color(), QColor(0xc7, 0xe9, 0xc0));
+        QCOMPARE(panel->clampingTable()->item(1, 1)->text(), QStringLiteral("chuck + tailstock"));
+        QCOMPARE(panel->clampingTable()->item(1, 2)->background().color(), QColor(0xfd, 0xe3, 0xc8));
         QVERIFY(panel->compensationTable()->rowCount() >= 5);
         // The program cuts the project's passes (four roughing levels, then the finishing pass at
         // 230 m/min), in the dialect of the machine's control, which the tab names; another dialect
@@ -139,6 +143,9 @@ private Q_SLOTS:
         w.findChild<QDockWidget *>(QStringLiteral("planningDock"))->raise();
         QTest::qWait(50);
         saveScreenshot(w, "planning.png");
+        panel->findChild<QTabWidget *>()->setCurrentWidget(panel->clampingTable()->parentWidget());
+        QTest::qWait(50);
+        saveScreenshot(w, "planning-clamping.png");
 
         // Apply the optimal passes, undo them.
         ProjectDocument *doc = w.document();

@@ -569,9 +569,13 @@ void PlanningPanel::showClamping()
         m_clamping->setItem(i, 0, readOnlyCell(QString::number(i + 1)));
         m_clamping->setItem(i, 1, readOnlyCell(displayName(o.method)));
         m_clamping->setItem(i, 2, readOnlyCell(o.reason));
-        const QColor background = !o.possible       ? QColor(0xee, 0xee, 0xee)
-                                  : o.plan.feasible ? QColor(0xc7, 0xe9, 0xc0)
-                                                    : QColor(0xfc, 0xae, 0x91);
+        // Grey: not possible; green: holds every tolerance; amber: feasible, but leaves a tolerance
+        // to another set-up (a feature in the jaws); red: no plan meets every constraint.
+        QColor background(0xfc, 0xae, 0x91);
+        if (!o.possible)
+            background = QColor(0xee, 0xee, 0xee);
+        else if (o.plan.feasible)
+            background = o.tolerancesNotHeld.empty() ? QColor(0xc7, 0xe9, 0xc0) : QColor(0xfd, 0xe3, 0xc8);
         for (int c = 0; c < 3; ++c)
             m_clamping->item(i, c)->setBackground(background);
     }
