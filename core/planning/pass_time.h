@@ -30,4 +30,26 @@ struct FeedStep {
 [[nodiscard]] double feedTime_min(const std::vector<FeedStep> &steps, double cuttingSpeed_m_min, double feed_mm_rev,
                                   double limit_rpm);
 
+// The time of the same steps for many speeds and feeds (the planner evaluates thousands): the
+// steps' middle radii sorted, with the running sums of their lengths from the axis outwards and
+// of length x radius from the outside inwards. Under G96 with a limit, the steps on radii below
+// r_c = 1000 v / (2 pi limit) run at the limit and the others at n = 1000 v / (2 pi r), so
+// t = (sum below r_c of length / limit + sum above of length r 2 pi / (1000 v)) / f, found with one
+// binary search; the same sum as feedTime_min. The steps' own feeds are not kept: the pass's feed
+// throughout.
+class FeedTimeTable {
+public:
+    FeedTimeTable() = default;
+    explicit FeedTimeTable(const std::vector<FeedStep> &steps);
+
+    [[nodiscard]] double time_min(double cuttingSpeed_m_min, double feed_mm_rev, double limit_rpm) const;
+
+    [[nodiscard]] bool empty() const { return m_radius_mm.empty(); }
+
+private:
+    std::vector<double> m_radius_mm;  // middle radius of each step, ascending
+    std::vector<double> m_lengthUpTo; // [i]: total length of steps 0..i-1
+    std::vector<double> m_momentFrom; // [i]: total length x radius of steps i..n-1
+};
+
 } // namespace tolturn

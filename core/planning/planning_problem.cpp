@@ -294,13 +294,15 @@ std::optional<double> PlanningProblem::toolLife_min(double cuttingSpeed_m_min) c
 void PlanningProblem::timeFinishingPasses(const std::vector<PassPath> &passes)
 {
     m_speedLimitingDiameter_mm = std::numeric_limits<double>::infinity();
+    std::vector<FeedStep> finishingSteps;
     for (const PassPath &pass : passes) {
         const std::vector<FeedStep> steps = feedSteps(pass);
-        m_finishingSteps.insert(m_finishingSteps.end(), steps.begin(), steps.end());
+        finishingSteps.insert(finishingSteps.end(), steps.begin(), steps.end());
         if (const double d = speedLimitingDiameter_mm(pass); d > 0.0)
             m_speedLimitingDiameter_mm = std::min(m_speedLimitingDiameter_mm, d);
     }
-    if (m_finishingSteps.empty())
+    m_finishingTimes = FeedTimeTable(finishingSteps);
+    if (finishingSteps.empty())
         m_notes << Planning::tr("The program has no finishing moves (see the G-code's warnings): the finishing time is "
                                 "taken as zero.");
     const bool bores = std::any_of(m_table.features.begin(), m_table.features.end(),
@@ -356,7 +358,7 @@ double PlanningProblem::finishingTime_min(const PassConditions &pass) const
         limit_rpm = std::ceil(spindleSpeed_rpm(pass.cuttingSpeed_m_min, m_speedLimitingDiameter_mm));
     if (m_maxSpeed_rpm)
         limit_rpm = std::min(limit_rpm, *m_maxSpeed_rpm);
-    return feedTime_min(m_finishingSteps, pass.cuttingSpeed_m_min, pass.feed_mm_rev, limit_rpm);
+    return m_finishingTimes.time_min(pass.cuttingSpeed_m_min, pass.feed_mm_rev, limit_rpm);
 }
 
 namespace {

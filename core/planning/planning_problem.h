@@ -195,7 +195,7 @@ private:
     std::vector<ToleranceLeftOut> m_unconstrained; // noteUnconstrainedTolerances()
     // The feed moves of the finishing passes the program cuts (pass_time.h), for their time, and
     // the diameter on which they need their highest spindle speed (the program's G50 at v_f).
-    std::vector<FeedStep> m_finishingSteps;
+    FeedTimeTable m_finishingTimes;
     double m_speedLimitingDiameter_mm = 0.0;
     // Outer stations (z, radius) for the roughing volume, and the bored ones out of the pilot hole.
     std::vector<std::pair<double, double>> m_outerProfile;
