@@ -69,7 +69,10 @@ int main(int argc, char *argv[])
     std::printf("optimisation: median %.1f ms, %d evaluations, feasible %d, time %.3f min per part\n", optimise,
                 plan.evaluations, plan.feasible ? 1 : 0, plan.evaluation.time_min);
     const double build = medianMilliseconds(21, [&] { (void)PlanningProblem::build(project, DataLibrary::builtIn()); });
-    std::printf("problem set-up (inputs, influence table): median %.2f ms\n", build);
+    std::printf("problem set-up (inputs, influence table, finishing passes' tool paths): median %.2f ms\n", build);
+    const double depth = plan.candidate.finishing.depthOfCut_mm;
+    const double table = medianMilliseconds(21, [&] { (void)built.problem->forFinishingDepth(depth); });
+    std::printf("influence table at the optimum's depth (%.3f mm): median %.2f ms\n", depth, table);
 
     for (const auto &[windowPlane, name] :
          {std::pair{WindowPlane::FeedSpeed, "feed-speed"}, std::pair{WindowPlane::FeedDepth, "feed-depth"}}) {

@@ -3512,6 +3512,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>The search stopped at its time limit of %1 s after %2 plans: the plan shown is the best found by then, not necessarily the optimum.</source>
         <translation>Die Suche endete an ihrer Zeitgrenze von %1 s nach %2 Plänen: der gezeigte Plan ist der bis dahin beste, nicht unbedingt das Optimum.</translation>
     </message>
+    <message>
+        <source>On the section its own finishing depth (%1 mm) leaves, the plan the search found violated %2 %3; the speeds and feeds were searched again at depth %4 mm.</source>
+        <translation>Auf dem Querschnitt, den seine eigene Schlichttiefe (%1 mm) lässt, verletzte der gefundene Plan %2 %3; Schnittgeschwindigkeit und Vorschub wurden bei der Tiefe %4 mm erneut gesucht.</translation>
+    </message>
 </context>
 <context>
     <name>Planning</name>

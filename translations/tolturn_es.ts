@@ -3512,6 +3512,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>The search stopped at its time limit of %1 s after %2 plans: the plan shown is the best found by then, not necessarily the optimum.</source>
         <translation>La búsqueda se detuvo en su límite de tiempo de %1 s tras %2 planes: el plan mostrado es el mejor hallado hasta entonces, no necesariamente el óptimo.</translation>
     </message>
+    <message>
+        <source>On the section its own finishing depth (%1 mm) leaves, the plan the search found violated %2 %3; the speeds and feeds were searched again at depth %4 mm.</source>
+        <translation>En la sección que deja su propia profundidad de acabado (%1 mm), el plan encontrado incumplía %2 %3; la velocidad de corte y el avance se buscaron de nuevo a la profundidad de %4 mm.</translation>
+    </message>
 </context>
 <context>
     <name>Planning</name>

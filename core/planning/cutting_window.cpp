@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <map>
+#include <memory>
 #include <thread>
 
 namespace tolturn {
@@ -81,14 +82,21 @@ CuttingWindow cuttingWindow(const PlanningProblem &problem, WindowPlane plane, c
     w.other = plane == WindowPlane::FeedSpeed ? problem.speedRange() : problem.depthRange();
     w.base = base;
     w.cells.resize(static_cast<std::size_t>(w.columns) * static_cast<std::size_t>(w.rows));
+    // In the feed–speed plane every point cuts at the base's depth: its tolerances on the section
+    // that depth leaves, as the optimum's are (optimiser.cpp, checkAtItsOwnDepth). The feed–depth
+    // plane keeps the search's table of the smallest depth.
+    std::shared_ptr<const PlanningProblem> atDepth;
+    if (plane == WindowPlane::FeedSpeed)
+        atDepth = problem.forFinishingDepth(base.finishing.depthOfCut_mm);
+    const PlanningProblem &judged = atDepth ? *atDepth : problem;
     std::atomic<int> done{0};
     std::atomic<bool> cancel{false};
     const int threads = std::max(1, options.threads);
     std::vector<std::thread> workers;
     for (int t = 1; t < threads; ++t)
-        workers.emplace_back(fillColumns, std::cref(problem), std::ref(w), t, threads, std::cref(options),
+        workers.emplace_back(fillColumns, std::cref(judged), std::ref(w), t, threads, std::cref(options),
                              std::ref(done), std::ref(cancel));
-    fillColumns(problem, w, 0, threads, options, done, cancel);
+    fillColumns(judged, w, 0, threads, options, done, cancel);
     for (std::thread &t : workers)
         t.join();
     w.cancelled = cancel;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/planning/optimiser.h"
 
+#include "core/common/diagnostic.h"
+
 #include <QCoreApplication>
 #include <nlopt.hpp>
 
@@ -212,6 +214,37 @@ SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEval
     return outcome;
 }
 
+// The speeds and feeds searched again with the finishing depth fixed at `depth_mm`, on the
+// influence table of the section that depth leaves (PlanningProblem::forFinishingDepth): from
+// `start` with the constraints (COBYLA) when it is given, else a global search first.
+SearchOutcome searchAtDepth(const PlanningProblem &atDepth, int k, double depth_mm, int evaluations, PlanResult &result,
+                            Clock::time_point deadline, const std::optional<PlanCandidate> &start = std::nullopt)
+{
+    PlanBox box = planBox(atDepth, k);
+    box.lower[2] = box.upper[2] = depth_mm;
+    Context c(atDepth, k, box, Progress(), deadline);
+    c.budget = 2 * evaluations;
+    std::vector<double> u(5, 0.5);
+    if (start) {
+        const std::vector<double> x{start->finishing.cuttingSpeed_m_min, start->finishing.feed_mm_rev, depth_mm,
+                                    start->roughing.cuttingSpeed_m_min, start->roughing.feed_mm_rev};
+        for (std::size_t i = 0; i < u.size(); ++i)
+            u[i] = box.upper[i] > box.lower[i]
+                       ? std::clamp((x[i] - box.lower[i]) / (box.upper[i] - box.lower[i]), 0.0, 1.0)
+                       : 0.0;
+    } else {
+        u = runSearch(nlopt::GN_DIRECT_L, c, u, evaluations, penalised, false);
+    }
+    if (!c.timedOut)
+        u = runSearch(nlopt::LN_COBYLA, c, u, evaluations, objectiveOnly, true);
+    result.evaluations += c.evaluations;
+    result.timedOut = result.timedOut || c.timedOut;
+    SearchOutcome outcome;
+    outcome.candidate = candidateAt(c.denormalise(u.data()), k);
+    outcome.evaluation = atDepth.evaluate(outcome.candidate);
+    return outcome;
+}
+
 // Plans in order of merit: a feasible one before any infeasible one; feasible ones by their
 // objective, infeasible ones by how much they violate (a number added to a huge one would not
 // tell them apart).
@@ -229,6 +262,57 @@ Rank rank(const CandidateEvaluation &e)
 {
     const bool feasible = e.feasible(1e-6);
     return {!feasible, feasible ? e.objective : e.totalViolation()};
+}
+
+} // namespace
+
+namespace {
+
+// The searches evaluate the tolerances on the influence table of the smallest finishing depth
+// (the thinnest section left, docs/planning.md §3). That errs on the safe side for a size, but a
+// form's spread (cylindricity, a profile without datums) can grow with a stiffer section. So the
+// optimum's speeds and feeds are searched again on the table of its own depth, as `evaluate`
+// judges the plan: a plan held there keeps the better of the two; when a tolerance is violated
+// there and the search at that depth finds nothing feasible, the search goes on at the smallest
+// depth, where the first table is exact, for every number of roughing passes that allows it.
+void checkAtItsOwnDepth(const PlanningProblem &problem, const std::vector<int> &counts,
+                        const OptimisationOptions &options, PlanResult &result, Clock::time_point deadline)
+{
+    const int k = result.candidate.roughingPasses;
+    const double depth = result.candidate.finishing.depthOfCut_mm;
+    const auto atDepth = problem.forFinishingDepth(depth);
+    result.evaluation = atDepth->evaluate(result.candidate);
+    if (result.evaluation.feasible(1e-6)) {
+        const SearchOutcome best =
+            searchAtDepth(*atDepth, k, depth, options.localEvaluations, result, deadline, result.candidate);
+        // Held there too, with the slack the smallest depth's table kept: the search at this depth
+        // takes it up, so a tolerance that binds is at its limit on the section that is cut.
+        if (rank(best.evaluation) < rank(result.evaluation)) {
+            result.candidate = best.candidate;
+            result.evaluation = best.evaluation;
+        }
+        return;
+    }
+    const ConstraintValue violated = *result.evaluation.mostViolated();
+    SearchOutcome best = searchAtDepth(*atDepth, k, depth, options.localEvaluations, result, deadline);
+    const double smallest = problem.depthRange().min;
+    for (const int passes : counts) {
+        if (best.evaluation.feasible(1e-6) || result.timedOut)
+            break;
+        const PlanBox box = planBox(problem, passes);
+        if (box.empty() || box.lower[2] > smallest + 1e-9)
+            continue;
+        const SearchOutcome o = searchAtDepth(problem, passes, smallest, options.localEvaluations, result, deadline);
+        if (rank(o.evaluation) < rank(best.evaluation))
+            best = o;
+    }
+    result.notes << Optimiser::tr("On the section its own finishing depth (%1 mm) leaves, the plan the search found "
+                                  "violated %2 %3; the speeds and feeds were searched again at depth %4 mm.")
+                        .arg(formatFixed(depth, 3), violated.label(), violated.violatedBy(),
+                             formatFixed(best.candidate.finishing.depthOfCut_mm, 3));
+    result.feasible = best.evaluation.feasible(1e-6);
+    result.candidate = best.candidate;
+    result.evaluation = best.evaluation;
 }
 
 } // namespace
@@ -307,6 +391,8 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
             result.evaluation = e;
         }
     }
+    if (result.feasible && goOn())
+        checkAtItsOwnDepth(problem, counts, options, result, deadline);
     if (!result.feasible) {
         for (const ConstraintValue &v : result.evaluation.constraints) {
             if (v.violation() > 1e-6)

@@ -93,7 +93,9 @@ private Q_SLOTS:
         QVERIFY(finished.count() == 1 || finished.wait(60000));
         QVERIFY(panel->report() != nullptr);
         QVERIFY(panel->report()->plan.feasible);
-        QVERIFY(panel->planText().contains(QStringLiteral("Binding: tolerance T4")));
+        // Judged on the section its own finishing depth leaves, the k6 journal T4 keeps a little of
+        // its zone, and the roughness binds.
+        QVERIFY2(panel->planText().contains(QStringLiteral("Binding: roughness (Ra)")), qPrintable(panel->planText()));
         // The plan per pass: as many rows as passes, the finishing pass last at the optimal speed; the
         // cost in the currency of the preferences.
         const PlanResult &plan = panel->report()->plan;
