@@ -45,11 +45,20 @@ int parseCommand(QCommandLineParser &parser, const QString &name, const QString 
         err << programName() << ' ' << name << ": " << parser.errorText() << '\n';
         return kExitUsage;
     }
+    if (parser.isSet(help)) {
+        out << CommandLine::tr("Usage: %1 %2").arg(programName(), synopsis) << "\n\n"
+            << parser.helpText().section(QLatin1Char('\n'), 2);
+        return kExitOk;
+    }
     // An option given an empty value (--store "") is refused: taken as given it would quietly mean
-    // the option's default (the default store, no planner, ...), which is not what was typed.
+    // the option's default (the default store, the first operation, ...), which is not what was
+    // typed. Free text (a note, who measured, a planner's name) may be empty: it is then none.
+    static const QStringList freeText{QStringLiteral("by"), QStringLiteral("method"), QStringLiteral("note"),
+                                      QStringLiteral("planner"), QStringLiteral("text")};
     for (const QString &option : parser.optionNames()) {
         const QStringList values = parser.values(option);
-        if (std::any_of(values.begin(), values.end(), [](const QString &v) { return v.isEmpty(); })) {
+        if (!freeText.contains(option) &&
+            std::any_of(values.begin(), values.end(), [](const QString &v) { return v.isEmpty(); })) {
             const QString dashes = option.size() == 1 ? QStringLiteral("-") : QStringLiteral("--");
             err << programName() << ' ' << name << ": "
                 << CommandLine::tr("%1%2: the value is empty; give one, or leave the option out for its default")
@@ -57,11 +66,6 @@ int parseCommand(QCommandLineParser &parser, const QString &name, const QString 
                 << '\n';
             return kExitUsage;
         }
-    }
-    if (parser.isSet(help)) {
-        out << CommandLine::tr("Usage: %1 %2").arg(programName(), synopsis) << "\n\n"
-            << parser.helpText().section(QLatin1Char('\n'), 2);
-        return kExitOk;
     }
     return -1;
 }

@@ -266,7 +266,8 @@ private Q_SLOTS:
     // coaxiality of the two seats, cut in different set-ups, holds only if clamping again costs
     // less than its 20 µm zone (the deflection predicts none of it).
     // An option given an empty value is a usage error naming it, not its default: "--store ''"
-    // would otherwise read the default measurement store, "-o ''" write nowhere.
+    // would otherwise read the default measurement store, "--operation ''" take the first one,
+    // "-o ''" write nowhere. Free text may be empty ("--planner ''": no name), and --help still helps.
     void emptyOptionValueIsAUsageError_data()
     {
         QTest::addColumn<QStringList>("args");
@@ -280,10 +281,9 @@ private Q_SLOTS:
             << QStringLiteral("--store: the value is empty");
         QTest::newRow("gcode -o") << QStringList{QStringLiteral("gcode"), QStringLiteral("-o"), QString(), shaft}
                                   << QStringLiteral("-o: the value is empty");
-        QTest::newRow("report --planner")
-            << QStringList{QStringLiteral("report"), QStringLiteral("--planner"), QString(),
-                           QStringLiteral("-o"),     QStringLiteral("-"),         shaft}
-            << QStringLiteral("--planner: the value is empty");
+        QTest::newRow("evaluate --operation")
+            << QStringList{QStringLiteral("evaluate"), QStringLiteral("--operation"), QString(), shaft}
+            << QStringLiteral("--operation: the value is empty");
     }
 
     void emptyOptionValueIsAUsageError()
@@ -294,6 +294,17 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
         QVERIFY(r.out.isEmpty());
+    }
+
+    void emptyFreeTextIsNone()
+    {
+        const QString shaft = example("stepped-shaft-chuck.tolturn");
+        const Run report = runCli({QStringLiteral("report"), QStringLiteral("--planner"), QString(),
+                                   QStringLiteral("-o"), QStringLiteral("-"), shaft});
+        QVERIFY2(report.exitCode == 0 && report.out.startsWith(QStringLiteral("%PDF")), qPrintable(report.err));
+        const Run help = runCli({QStringLiteral("gcode"), QStringLiteral("-o"), QString(), QStringLiteral("--help")});
+        QCOMPARE(help.exitCode, 0);
+        QVERIFY(help.out.contains(QStringLiteral("Usage:")));
     }
 
     void evaluateOperations()
