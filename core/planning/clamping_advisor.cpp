@@ -141,9 +141,11 @@ void rankClampingOptions(std::vector<ClampingOption> &options)
             return false;
         if (group(a) == Infeasible)
             return a.plan.evaluation.totalViolation() < b.plan.evaluation.totalViolation();
-        const double ea = a.plan.evaluation.objective;
-        const double eb = b.plan.evaluation.objective;
-        if (std::abs(ea - eb) > 1e-6 * std::max({1.0, std::abs(ea), std::abs(eb)}))
+        // Objectives to the millionth of a minute or of the currency: equal there is equal, which
+        // keeps the order strict and weak (a tolerance of 1e-6 between neighbours would chain).
+        const double ea = std::round(a.plan.evaluation.objective * 1e6);
+        const double eb = std::round(b.plan.evaluation.objective * 1e6);
+        if (ea != eb)
             return ea < eb;
         // Equal times or costs: the plan with more margin on its tightest tolerance first.
         return tightestUtilisation(a.plan.evaluation) < tightestUtilisation(b.plan.evaluation);

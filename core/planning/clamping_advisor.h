@@ -25,7 +25,7 @@ struct ClampingOption {
                                                          const OptimisationOptions &options = {});
 
 // The ranking adviseClamping gives: feasible plans that hold every tolerance by their objective
-// (equal within 1e-6 of it: the one with more margin on its tightest tolerance first), then
+// (equal to the millionth: the one with more margin on its tightest tolerance first), then
 // feasible plans that leave a tolerance to another set-up (a feature in the jaws) in the same
 // order, then infeasible ones by how much they violate, then the methods the part does not allow.
 // Stable: equal options keep their order.

@@ -218,11 +218,12 @@ SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEval
 // influence table of the section that depth leaves (PlanningProblem::forFinishingDepth): from
 // `start` with the constraints (COBYLA) when it is given, else a global search first.
 SearchOutcome searchAtDepth(const PlanningProblem &atDepth, int k, double depth_mm, int evaluations, PlanResult &result,
-                            Clock::time_point deadline, const std::optional<PlanCandidate> &start = std::nullopt)
+                            const Progress &progress, Clock::time_point deadline,
+                            const std::optional<PlanCandidate> &start = std::nullopt)
 {
     PlanBox box = planBox(atDepth, k);
     box.lower[2] = box.upper[2] = depth_mm;
-    Context c(atDepth, k, box, Progress(), deadline);
+    Context c(atDepth, k, box, progress, deadline);
     c.budget = 2 * evaluations;
     std::vector<double> u(5, 0.5);
     if (start) {
@@ -239,6 +240,7 @@ SearchOutcome searchAtDepth(const PlanningProblem &atDepth, int k, double depth_
         u = runSearch(nlopt::LN_COBYLA, c, u, evaluations, objectiveOnly, true);
     result.evaluations += c.evaluations;
     result.timedOut = result.timedOut || c.timedOut;
+    result.cancelled = result.cancelled || c.cancelled;
     SearchOutcome outcome;
     outcome.candidate = candidateAt(c.denormalise(u.data()), k);
     outcome.evaluation = atDepth.evaluate(outcome.candidate);
@@ -274,17 +276,19 @@ namespace {
 // optimum's speeds and feeds are searched again on the table of its own depth, as `evaluate`
 // judges the plan: a plan held there keeps the better of the two; when a tolerance is violated
 // there and the search at that depth finds nothing feasible, the search goes on at the smallest
-// depth, where the first table is exact, for every number of roughing passes that allows it.
+// depth (on its table with the stations `evaluate` uses) for every number of roughing passes
+// that allows it.
 void checkAtItsOwnDepth(const PlanningProblem &problem, const std::vector<int> &counts,
                         const OptimisationOptions &options, PlanResult &result, Clock::time_point deadline)
 {
     const int k = result.candidate.roughingPasses;
     const double depth = result.candidate.finishing.depthOfCut_mm;
     const auto atDepth = problem.forFinishingDepth(depth);
+    const Progress afterTheRun(options.progress, 1.0, 1.0); // a stop still cancels
     result.evaluation = atDepth->evaluate(result.candidate);
     if (result.evaluation.feasible(1e-6)) {
-        const SearchOutcome best =
-            searchAtDepth(*atDepth, k, depth, options.localEvaluations, result, deadline, result.candidate);
+        const SearchOutcome best = searchAtDepth(*atDepth, k, depth, options.localEvaluations, result, afterTheRun,
+                                                 deadline, result.candidate);
         // Held there too, with the slack the smallest depth's table kept: the search at this depth
         // takes it up, so a tolerance that binds is at its limit on the section that is cut.
         if (rank(best.evaluation) < rank(result.evaluation)) {
@@ -294,17 +298,24 @@ void checkAtItsOwnDepth(const PlanningProblem &problem, const std::vector<int> &
         return;
     }
     const ConstraintValue violated = *result.evaluation.mostViolated();
-    SearchOutcome best = searchAtDepth(*atDepth, k, depth, options.localEvaluations, result, deadline);
+    // The plan as judged at its own depth stays unless a search does better (one stopped at the
+    // time limit may not).
+    SearchOutcome best{result.candidate, result.evaluation};
+    const auto keepIfBetter = [&best](const SearchOutcome &o) {
+        if (rank(o.evaluation) < rank(best.evaluation))
+            best = o;
+    };
+    keepIfBetter(searchAtDepth(*atDepth, k, depth, options.localEvaluations, result, afterTheRun, deadline));
     const double smallest = problem.depthRange().min;
+    const auto atSmallest = problem.forFinishingDepth(smallest); // with the stations `evaluate` judges at
     for (const int passes : counts) {
-        if (best.evaluation.feasible(1e-6) || result.timedOut)
+        if (best.evaluation.feasible(1e-6) || result.timedOut || result.cancelled)
             break;
         const PlanBox box = planBox(problem, passes);
         if (box.empty() || box.lower[2] > smallest + 1e-9)
             continue;
-        const SearchOutcome o = searchAtDepth(problem, passes, smallest, options.localEvaluations, result, deadline);
-        if (rank(o.evaluation) < rank(best.evaluation))
-            best = o;
+        keepIfBetter(
+            searchAtDepth(*atSmallest, passes, smallest, options.localEvaluations, result, afterTheRun, deadline));
     }
     result.notes << Optimiser::tr("On the section its own finishing depth (%1 mm) leaves, the plan the search found "
                                   "violated %2 %3; the speeds and feeds were searched again at depth %4 mm.")

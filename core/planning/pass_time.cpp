@@ -71,6 +71,8 @@ FeedTimeTable::FeedTimeTable(const std::vector<FeedStep> &steps)
 
 double FeedTimeTable::time_min(double cuttingSpeed_m_min, double feed_mm_rev, double limit_rpm) const
 {
+    if (m_radius_mm.empty())
+        return 0.0; // no feed move: no time, as feedTime_min
     // n = min(limit, 1000 v / (2 pi r)), and the limit on r <= 1e-9 (g96SpindleSpeed_rpm): the
     // first step at G96 is the first whose radius is above both.
     const double perRadius = 1000.0 * cuttingSpeed_m_min / (2.0 * std::numbers::pi); // n r [rpm mm]
