@@ -193,6 +193,19 @@ struct SearchOutcome {
     CandidateEvaluation evaluation;
 };
 
+// A search's end: its evaluations, stop and time-out added to the run's, and the plan at the point
+// it ended on, evaluated by the problem it searched.
+SearchOutcome finishSearch(const Context &c, const std::vector<double> &u, PlanResult &result)
+{
+    result.evaluations += c.evaluations;
+    result.cancelled = result.cancelled || c.cancelled;
+    result.timedOut = result.timedOut || c.timedOut;
+    SearchOutcome outcome;
+    outcome.candidate = candidateAt(c.denormalise(u.data()), c.roughingPasses);
+    outcome.evaluation = c.problem->evaluate(outcome.candidate);
+    return outcome;
+}
+
 // Global search (penalised DIRECT-L) and, when `localEvaluations` > 0, a local refinement with
 // the constraints (COBYLA), for one number of roughing passes.
 SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEvaluations, int localEvaluations,
@@ -205,13 +218,7 @@ SearchOutcome searchPasses(const PlanningProblem &problem, int k, int globalEval
         runSearch(nlopt::GN_DIRECT_L, c, std::vector<double>(5, 0.5), globalEvaluations, penalised, false);
     if (!c.cancelled && !c.timedOut && localEvaluations > 0)
         u = runSearch(nlopt::LN_COBYLA, c, u, localEvaluations, objectiveOnly, true);
-    result.evaluations += c.evaluations;
-    result.cancelled = result.cancelled || c.cancelled;
-    result.timedOut = result.timedOut || c.timedOut;
-    SearchOutcome outcome;
-    outcome.candidate = candidateAt(c.denormalise(u.data()), k);
-    outcome.evaluation = problem.evaluate(outcome.candidate);
-    return outcome;
+    return finishSearch(c, u, result);
 }
 
 // The speeds and feeds searched again with the finishing depth fixed at `depth_mm`, on the
@@ -238,13 +245,7 @@ SearchOutcome searchAtDepth(const PlanningProblem &atDepth, int k, double depth_
     }
     if (!c.timedOut)
         u = runSearch(nlopt::LN_COBYLA, c, u, evaluations, objectiveOnly, true);
-    result.evaluations += c.evaluations;
-    result.timedOut = result.timedOut || c.timedOut;
-    result.cancelled = result.cancelled || c.cancelled;
-    SearchOutcome outcome;
-    outcome.candidate = candidateAt(c.denormalise(u.data()), k);
-    outcome.evaluation = atDepth.evaluate(outcome.candidate);
-    return outcome;
+    return finishSearch(c, u, result);
 }
 
 // Plans in order of merit: a feasible one before any infeasible one; feasible ones by their
