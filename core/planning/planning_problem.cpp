@@ -512,6 +512,23 @@ void PlanningProblem::addFinishingLimits(const PassConditions &pass, const Cutti
                        QStringLiteral("×D")});
 }
 
+// The boring bar roughs the bores out of the pilot hole at the roughing passes' feed, speed and
+// depth (boring_toolpath.h): its deepest cut is a_r, or the bore's stock above the finishing
+// allowance where that is less. Its own insert's forces at that cut, on the largest bore, are
+// checked against the same limits as the turning tool's (power, torque, force, spindle speed,
+// tool life).
+void PlanningProblem::addBoreRoughingLimits(const PassConditions &roughing, double finishingDepth_mm,
+                                            std::vector<ConstraintValue> &out) const
+{
+    const double leftInBores = m_boreRadialStock_mm - finishingDepth_mm;
+    if (!m_boringForceModel || leftInBores <= 1e-9)
+        return;
+    PassConditions bar = roughing;
+    bar.depthOfCut_mm = std::min(roughing.depthOfCut_mm, leftInBores);
+    addPassLimits(QStringLiteral("boring roughing"), bar, m_boringForceModel(bar.feed_mm_rev, bar.depthOfCut_mm),
+                  m_largestBoreDiameter_mm, out);
+}
+
 CandidateEvaluation PlanningProblem::evaluate(const PlanCandidate &c,
                                               const std::vector<ConstraintValue> *tolerances) const
 {
@@ -529,6 +546,7 @@ CandidateEvaluation PlanningProblem::evaluate(const PlanCandidate &c,
         e.roughingTime_min = roughingVolume_mm3(c.finishing.depthOfCut_mm) /
                              (1000.0 * roughing.cuttingSpeed_m_min * roughing.feed_mm_rev * roughing.depthOfCut_mm);
         addPassLimits(QStringLiteral("roughing"), roughing, e.roughingForces, m_stockDiameter_mm, e.constraints);
+        addBoreRoughingLimits(roughing, c.finishing.depthOfCut_mm, e.constraints);
         if (isEnabled(QStringLiteral("roughing_depth"))) {
             e.constraints.push_back({QStringLiteral("roughing_depth"), QStringLiteral("roughing"),
                                      roughing.depthOfCut_mm, m_depth.max, QStringLiteral("mm")});

@@ -175,6 +175,8 @@ private:
                        double largestDiameter_mm, std::vector<ConstraintValue> &out) const;
     void addFinishingLimits(const PassConditions &pass, const CuttingForces &f,
                             std::vector<ConstraintValue> &out) const;
+    void addBoreRoughingLimits(const PassConditions &roughing, double finishingDepth_mm,
+                               std::vector<ConstraintValue> &out) const;
     [[nodiscard]] std::optional<double> toolLife_min(double cuttingSpeed_m_min) const;
 
     Project m_project;

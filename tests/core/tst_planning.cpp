@@ -888,6 +888,50 @@ private Q_SLOTS:
         QVERIFY(!unroughed.feasible());
     }
 
+    // The boring bar's roughing out of the pilot hole is held to the machine's limits with the bar's
+    // own insert: at the roughing feed and speed, as deep as the roughing pass or the bore's stock
+    // above the finishing allowance where that is less, the torque on the largest bore (Ø32).
+    void boreRoughingIsHeldToTheMachinesLimits()
+    {
+        Project p = test::exampleProject("bushing-bore-h7.tolturn");
+        p.boringTool->pilotHoleDiameter_mm = 30.0; // a bore stock of 1 mm on the radius
+        p.planning.maxForce_N = 5000.0;            // limits to be checked against, whatever the machine data give
+        p.planning.maxPower_kW = 15.0;
+        p.planning.maxTorque_Nm = 200.0;
+        const auto problem = problemFor(p);
+        PlanCandidate c;
+        c.finishing = {220.0, 0.2, 0.5};
+        c.roughing = {200.0, 0.3, 0.0};
+        c.roughingPasses = 1; // a_r = 2 - 0.5 = 1.5 mm outside, the bar takes 1 - 0.5 = 0.5 mm
+        const CandidateEvaluation e = problem->evaluate(c);
+        const auto find = [&](const char *name) {
+            const auto it = std::find_if(e.constraints.begin(), e.constraints.end(), [&](const ConstraintValue &v) {
+                return v.subject == QLatin1String("boring roughing") && v.name == QLatin1String(name);
+            });
+            return it == e.constraints.end() ? nullptr : &*it;
+        };
+        const ConstraintValue *power = find("power");
+        const ConstraintValue *torque = find("torque");
+        const ConstraintValue *force = find("force");
+        QVERIFY(power && torque && force);
+        // P = Fc v / 60000 [kW], T = Fc D / 2000 [N·m]: T / P = 30 D / v whatever Fc is.
+        QVERIFY(std::abs(torque->value / power->value / (30.0 * 32.0 / 200.0) - 1.0) < 1e-9);
+        QVERIFY(std::abs(force->value / power->value / (60000.0 / 200.0) - 1.0) < 1e-9);
+        // The same bar and insert at that feed and depth as a finishing pass cut the same force.
+        const std::vector<ConstraintValue> asFinishing = problem->finishingLimits({200.0, 0.3, 0.5});
+        const auto bar = std::find_if(asFinishing.begin(), asFinishing.end(), [](const ConstraintValue &v) {
+            return v.subject == QLatin1String("boring") && v.name == QLatin1String("force");
+        });
+        QVERIFY(bar != asFinishing.end());
+        QVERIFY(std::abs(force->value / bar->value - 1.0) < 1e-9);
+
+        c.finishing.depthOfCut_mm = 1.0; // nothing left in the bore for the bar to rough
+        c.roughingPasses = 1;
+        const CandidateEvaluation finishedBore = problem->evaluate(c);
+        QVERIFY(std::none_of(finishedBore.constraints.begin(), finishedBore.constraints.end(),
+                             [](const ConstraintValue &v) { return v.subject == QLatin1String("boring roughing"); }));
+    }
+
     // The planner's finishing time is the program's: the project's passes set to the plan's, the
     // set-up sheet's finishing passes (the outer contour's and the bores') take as long.
     void finishingTimeIsTheProgramsTime_data()
