@@ -748,6 +748,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1%2: the value is empty; give one, or leave the option out for its default</source>
         <translation>%1%2: der Wert ist leer; geben Sie einen an, oder lassen Sie die Option für ihren Standardwert weg</translation>
     </message>
+    <message>
+        <source>  to meet it: </source>
+        <translation>  um sie einzuhalten: </translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -3583,6 +3587,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Not among the plan&apos;s constraints: %1.</source>
         <translation>Nicht unter den Nebenbedingungen des Plans: %1.</translation>
     </message>
+    <message>
+        <source>%1, the boring bar&apos;s insert</source>
+        <translation>%1, die Wendeschneidplatte der Bohrstange</translation>
+    </message>
 </context>
 <context>
     <name>Plausibility</name>
@@ -4490,6 +4498,25 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>Remedies</name>
+    <message>
+        <source>%1 ≤ %2 µm needs a feed of at most %3 mm/rev with the nose radius %4 mm (%5)</source>
+        <translation>%1 ≤ %2 µm verlangt einen Vorschub von höchstens %3 mm/U mit dem Eckenradius %4 mm (%5)</translation>
+    </message>
+    <message>
+        <source>, below the feed range, which starts at %1 mm/rev; at that feed it needs a nose radius of at least %2 mm.</source>
+        <translation>, unterhalb des Vorschubbereichs, der bei %1 mm/U beginnt; bei diesem Vorschub verlangt sie einen Eckenradius von mindestens %2 mm.</translation>
+    </message>
+    <message>
+        <source>A tool life of %1 min (%2) needs a cutting speed of at most %3 m/min (Taylor C = %4 m/min, n = %5)</source>
+        <translation>Eine Standzeit von %1 min (%2) verlangt eine Schnittgeschwindigkeit von höchstens %3 m/min (Taylor C = %4 m/min, n = %5)</translation>
+    </message>
+    <message>
+        <source>, below the speed range, which starts at %1 m/min; at that speed it needs an insert grade with C of at least %2 m/min.</source>
+        <translation>, unterhalb des Geschwindigkeitsbereichs, der bei %1 m/min beginnt; bei dieser Geschwindigkeit verlangt sie eine Schneidstoffsorte mit C von mindestens %2 m/min.</translation>
+    </message>
+</context>
+<context>
     <name>Report</name>
     <message>
         <source>Tolerance report: %1</source>
@@ -4898,6 +4925,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1 violated %2</source>
         <translation>%1 %2 verletzt</translation>
+    </message>
+    <message>
+        <source>To meet it: %1</source>
+        <translation>Um sie einzuhalten: %1</translation>
     </message>
 </context>
 <context>
@@ -8769,6 +8800,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Violated: %1 %2</source>
         <translation>Verletzt: %1 %2</translation>
+    </message>
+    <message>
+        <source>To meet it: </source>
+        <translation>Um sie einzuhalten: </translation>
     </message>
 </context>
 <context>

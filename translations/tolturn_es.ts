@@ -748,6 +748,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1%2: the value is empty; give one, or leave the option out for its default</source>
         <translation>%1%2: el valor está vacío; indique uno, u omita la opción para su valor predeterminado</translation>
     </message>
+    <message>
+        <source>  to meet it: </source>
+        <translation>  para cumplirla: </translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -3583,6 +3587,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Not among the plan&apos;s constraints: %1.</source>
         <translation>No está entre las restricciones del plan: %1.</translation>
     </message>
+    <message>
+        <source>%1, the boring bar&apos;s insert</source>
+        <translation>%1, la plaquita de la barra de mandrinar</translation>
+    </message>
 </context>
 <context>
     <name>Plausibility</name>
@@ -4490,6 +4498,25 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>Remedies</name>
+    <message>
+        <source>%1 ≤ %2 µm needs a feed of at most %3 mm/rev with the nose radius %4 mm (%5)</source>
+        <translation>%1 ≤ %2 µm requiere un avance de como máximo %3 mm/rev con el radio de punta %4 mm (%5)</translation>
+    </message>
+    <message>
+        <source>, below the feed range, which starts at %1 mm/rev; at that feed it needs a nose radius of at least %2 mm.</source>
+        <translation>, por debajo del rango de avance, que empieza en %1 mm/rev; con ese avance requiere un radio de punta de al menos %2 mm.</translation>
+    </message>
+    <message>
+        <source>A tool life of %1 min (%2) needs a cutting speed of at most %3 m/min (Taylor C = %4 m/min, n = %5)</source>
+        <translation>Una vida de herramienta de %1 min (%2) requiere una velocidad de corte de como máximo %3 m/min (Taylor C = %4 m/min, n = %5)</translation>
+    </message>
+    <message>
+        <source>, below the speed range, which starts at %1 m/min; at that speed it needs an insert grade with C of at least %2 m/min.</source>
+        <translation>, por debajo del rango de velocidad, que empieza en %1 m/min; a esa velocidad requiere una calidad de plaquita con C de al menos %2 m/min.</translation>
+    </message>
+</context>
+<context>
     <name>Report</name>
     <message>
         <source>Tolerance report: %1</source>
@@ -4898,6 +4925,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1 violated %2</source>
         <translation>%1: incumplida %2</translation>
+    </message>
+    <message>
+        <source>To meet it: %1</source>
+        <translation>Para cumplirla: %1</translation>
     </message>
 </context>
 <context>
@@ -8769,6 +8800,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Violated: %1 %2</source>
         <translation>Restricción incumplida: %1 %2</translation>
+    </message>
+    <message>
+        <source>To meet it: </source>
+        <translation>Para cumplirla: </translation>
     </message>
 </context>
 <context>

@@ -86,6 +86,8 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
         out << CommandLine::tr("  binding: ") << constraintText(c) << '\n';
     for (const ConstraintValue &c : r.conflicts)
         out << CommandLine::tr("  violated: ") << constraintText(c) << '\n';
+    for (const QString &remedy : r.remedies)
+        out << CommandLine::tr("  to meet it: ") << remedy << '\n';
     for (const QString &note : r.notes)
         out << CommandLine::tr("note: ") << note << '\n';
 }

@@ -31,6 +31,31 @@ double theoreticalRz_um(double feed_mm_rev, double noseRadius_mm)
     return 1000.0 * feed_mm_rev * feed_mm_rev / (8.0 * noseRadius_mm);
 }
 
+double feedForRa_mm_rev(double ra_um, double noseRadius_mm)
+{
+    return std::sqrt(32.0 * noseRadius_mm * ra_um / 1000.0);
+}
+
+double feedForRz_mm_rev(double rz_um, double noseRadius_mm)
+{
+    return std::sqrt(8.0 * noseRadius_mm * rz_um / 1000.0);
+}
+
+double noseRadiusForRa_mm(double ra_um, double feed_mm_rev)
+{
+    return 1000.0 * feed_mm_rev * feed_mm_rev / (32.0 * ra_um);
+}
+
+double noseRadiusForRz_mm(double rz_um, double feed_mm_rev)
+{
+    return 1000.0 * feed_mm_rev * feed_mm_rev / (8.0 * rz_um);
+}
+
+double speedForToolLife_m_min(double taylorC_m_min, double toolLife_min, double exponent)
+{
+    return taylorC_m_min / std::pow(toolLife_min, exponent);
+}
+
 double taylorConstant_m_min(double cuttingSpeed_m_min, double toolLife_min, double exponent)
 {
     return cuttingSpeed_m_min * std::pow(toolLife_min, exponent);

@@ -16,9 +16,18 @@ namespace tolturn {
 // Principles, 2nd ed., OUP 2005, §21): Ra ≈ f² / (32 r_eps), Rz ≈ f² / (8 r_eps). Results in µm.
 [[nodiscard]] double theoreticalRa_um(double feed_mm_rev, double noseRadius_mm);
 [[nodiscard]] double theoreticalRz_um(double feed_mm_rev, double noseRadius_mm);
+// The same relations solved for the largest feed [mm/rev] that leaves a roughness, and for the
+// smallest nose radius [mm] that leaves it at a feed: f = sqrt(32 r Ra), r = f² / (32 Ra) (Rz: 8).
+[[nodiscard]] double feedForRa_mm_rev(double ra_um, double noseRadius_mm);
+[[nodiscard]] double feedForRz_mm_rev(double rz_um, double noseRadius_mm);
+[[nodiscard]] double noseRadiusForRa_mm(double ra_um, double feed_mm_rev);
+[[nodiscard]] double noseRadiusForRz_mm(double rz_um, double feed_mm_rev);
 
 // Taylor (1907), v T^n = C: the constant C [m/min] from a speed v [m/min] that gives a tool life
 // T [min], as an insert catalogue states its recommended speed at a reference life.
 [[nodiscard]] double taylorConstant_m_min(double cuttingSpeed_m_min, double toolLife_min, double exponent);
+// The same solved for the highest cutting speed [m/min] that gives at least a tool life T [min]:
+// v = C T^-n.
+[[nodiscard]] double speedForToolLife_m_min(double taylorC_m_min, double toolLife_min, double exponent);
 
 } // namespace tolturn

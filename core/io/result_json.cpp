@@ -222,6 +222,7 @@ QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
             {QStringLiteral("constraints"), constraintsJson(e.constraints)},
             {QStringLiteral("binding"), constraintsJson(r.binding)},
             {QStringLiteral("conflicts"), constraintsJson(r.conflicts)},
+            {QStringLiteral("what_it_would_take"), QJsonArray::fromStringList(r.remedies)},
             {QStringLiteral("evaluations"), r.evaluations},
             {QStringLiteral("timed_out"), r.timedOut},
             {QStringLiteral("notes"), QJsonArray::fromStringList(r.notes)}};

@@ -2,6 +2,7 @@
 #include "core/planning/optimiser.h"
 
 #include "core/common/diagnostic.h"
+#include "core/planning/remedies.h"
 
 #include <QCoreApplication>
 #include <nlopt.hpp>
@@ -407,8 +408,11 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
         checkAtItsOwnDepth(problem, counts, options, result, deadline);
     if (!result.feasible) {
         for (const ConstraintValue &v : result.evaluation.constraints) {
-            if (v.violation() > 1e-6)
-                result.conflicts.push_back(v);
+            if (v.violation() <= 1e-6)
+                continue;
+            result.conflicts.push_back(v);
+            if (const QString remedy = whatItWouldTake(problem, v); !remedy.isEmpty())
+                result.remedies << remedy;
         }
     }
     if (result.timedOut)

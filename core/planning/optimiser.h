@@ -26,6 +26,7 @@ struct PlanResult {
     CandidateEvaluation evaluation;
     std::vector<ConstraintValue> binding;   // within 1 % of their limit at the optimum
     std::vector<ConstraintValue> conflicts; // when infeasible: violated at the least-violating plan
+    QStringList remedies;                   // what it would take to meet them, where a closed form says (remedies.h)
     int evaluations = 0;
     QStringList notes;
 };

@@ -193,9 +193,14 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     p.m_targets = programTargets(withPass);
     // The roughness limit holds for every surface: the bores' with the boring bar's insert.
     p.m_roughnessNoseRadius_mm = p.m_inputs.noseRadius_mm;
-    if (p.m_inputs.boring && std::any_of(p.m_table.features.begin(), p.m_table.features.end(),
-                                         [](const FeatureInfluence &f) { return f.side == ContourSide::Inner; }))
-        p.m_roughnessNoseRadius_mm = std::min(p.m_roughnessNoseRadius_mm, p.m_inputs.boring->noseRadius_mm);
+    p.m_roughnessInsert = project.tool.insertCode;
+    if (p.m_inputs.boring &&
+        std::any_of(p.m_table.features.begin(), p.m_table.features.end(),
+                    [](const FeatureInfluence &f) { return f.side == ContourSide::Inner; }) &&
+        p.m_inputs.boring->noseRadius_mm < p.m_roughnessNoseRadius_mm) {
+        p.m_roughnessNoseRadius_mm = p.m_inputs.boring->noseRadius_mm;
+        p.m_roughnessInsert = Planning::tr("%1, the boring bar's insert").arg(project.boringTool->insertCode);
+    }
     p.m_maxPower_kW = s.maxPower_kW ? s.maxPower_kW : p.m_inputs.maxPower_kW;
     p.m_maxTorque_Nm = s.maxTorque_Nm;
     p.m_maxSpeed_rpm = s.maxSpindleSpeed_rpm ? s.maxSpindleSpeed_rpm : p.m_inputs.maxSpindleSpeed_rpm;

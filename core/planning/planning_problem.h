@@ -149,6 +149,12 @@ public:
 
     [[nodiscard]] const ValueRange &depthRange() const { return m_depth; }
 
+    // The nose radius the roughness limits are checked with: the smaller of the tools that cut the
+    // features (the boring bar's insert in the bores), and that insert, for people.
+    [[nodiscard]] double roughnessNoseRadius_mm() const { return m_roughnessNoseRadius_mm; }
+
+    [[nodiscard]] const QString &roughnessInsert() const { return m_roughnessInsert; }
+
     // Radial stock between the bar and the deepest turned feature [mm].
     [[nodiscard]] double radialStock_mm() const { return m_radialStock_mm; }
 
@@ -191,6 +197,7 @@ private:
     double m_largestCutDiameter_mm = 0.0;
     double m_largestBoreDiameter_mm = 0.0;
     double m_roughnessNoseRadius_mm = 0.0; // the smaller nose radius of the tools that cut the features
+    QString m_roughnessInsert;             // the insert that has it, for people
     double m_stockDiameter_mm = 0.0;
     std::optional<double> m_maxPower_kW, m_maxTorque_Nm, m_maxSpeed_rpm;
     QStringList m_notes;

@@ -696,6 +696,28 @@ private Q_SLOTS:
         QVERIFY(roughness);
     }
 
+    // An infeasible plan: exit code 1, the violated roughness in `conflicts` and what it would take
+    // in `what_it_would_take` (the valve body's OP 10, f <= sqrt(32 * 0.4 * 0.0016) = 0.143 mm/rev),
+    // and in the text after "to meet it:".
+    void optimizeSaysWhatItWouldTake()
+    {
+        const Run json =
+            runCli({QStringLiteral("optimize"), QStringLiteral("--json"), example("valve-body-two-bores.tolturn")});
+        QCOMPARE(json.exitCode, 1);
+        const QJsonObject o = QJsonDocument::fromJson(json.out.toUtf8()).object();
+        QVERIFY(!o.value(QStringLiteral("feasible")).toBool(true));
+        const QJsonArray conflicts = o.value(QStringLiteral("conflicts")).toArray();
+        QCOMPARE(conflicts.size(), 1);
+        QCOMPARE(conflicts.at(0).toObject().value(QStringLiteral("name")).toString(), QStringLiteral("roughness"));
+        const QJsonArray remedies = o.value(QStringLiteral("what_it_would_take")).toArray();
+        QCOMPARE(remedies.size(), 1);
+        QVERIFY2(remedies.at(0).toString().contains(QStringLiteral("at most 0.143 mm/rev")),
+                 qPrintable(remedies.at(0).toString()));
+        const Run text = runCli({QStringLiteral("optimize"), example("valve-body-two-bores.tolturn")});
+        QVERIFY2(text.out.contains(QStringLiteral("  to meet it: Ra ≤ 1.6 µm needs a feed of at most 0.143 mm/rev")),
+                 qPrintable(text.out));
+    }
+
     void optimizeWithoutRangesIsAnError()
     {
         QJsonObject doc = exampleJson("stepped-shaft-chuck.tolturn");

@@ -277,6 +277,26 @@ private Q_SLOTS:
         QVERIFY2(literature.contains(QStringLiteral("[9] E. Öztürk, E. Budak")), qPrintable(literature));
     }
 
+    // A plan that cannot meet every constraint says in the report what it would take (the valve
+    // body's OP 10: Ra 1.6 µm with the bar's r 0.4 mm needs f <= sqrt(32 * 0.4 * 0.0016) = 0.143
+    // mm/rev, below the range's 0.17), and the plan's own notes are there: a limit the machine data
+    // do not give is named, not left out. The model's assumptions stay once, under Assumptions.
+    void infeasiblePlanSaysWhatItWouldTake()
+    {
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("valve.pdf"));
+        const Run r =
+            runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, example("valve-body-two-bores.tolturn")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString plan = pdfText(pdf).simplified().section(QStringLiteral("5 Plan"), 1);
+        QVERIFY2(plan.contains(QStringLiteral("No plan meets every constraint")), qPrintable(plan));
+        QVERIFY2(plan.contains(QStringLiteral("To meet it: Ra ≤ 1.6 µm needs a feed of at most 0.143 mm/rev")),
+                 qPrintable(plan));
+        QVERIFY2(plan.contains(QStringLiteral("No spindle power limit known")), qPrintable(plan));
+        const QString beforeAssumptions = plan.section(QStringLiteral("Assumptions"), 0, 0);
+        QVERIFY2(!beforeAssumptions.contains(QStringLiteral("Thermal drift not characterised")), qPrintable(plan));
+    }
+
     // "-o -": the PDF on standard output (a pipe to a printer or a viewer), the page count on
     // standard error.
     void reportOnStandardOutput()

@@ -111,6 +111,14 @@ private Q_SLOTS:
         QCOMPARE(taylorConstant_m_min(300.0, 1.0, 0.3), 300.0); // T = 1 min: C is the speed itself
     }
 
+    // The speed for a tool life: C = 491.998 m/min, n = 0.25, 15 min: 491.998 / 1.967990 = 250 m/min;
+    // 30 min: 30^0.25 = exp(0.25 ln 30) = exp(0.850302) = 2.340347, 491.998 / 2.340347 = 210.2244 m/min.
+    void speedForAToolLife()
+    {
+        QVERIFY(test::nearRelative(speedForToolLife_m_min(491.998, 15.0, 0.25), 250.0, 2e-6));
+        QVERIFY(test::nearRelative(speedForToolLife_m_min(491.998, 30.0, 0.25), 210.2244, 1e-6));
+    }
+
     // Li & Du eq. 16a: f = 0.2, d = 1, r_n = 0.8: sqrt(0.64 - 0.01) = 0.793725;
     // A_c = 0.2 - 0.2 (0.8 - 0.793725)/2 = 0.2 - 0.0006275 = 0.1993725 mm². Eq. 16b when r_n < f/2.
     void liDuChipArea()
@@ -170,6 +178,18 @@ private Q_SLOTS:
     {
         QVERIFY(test::nearRelative(theoreticalRa_um(0.2, 0.8), 1.5625, 1e-12));
         QVERIFY(test::nearRelative(theoreticalRz_um(0.2, 0.8), 6.25, 1e-12));
+    }
+
+    // The same solved for what a roughness needs. Ra 1.6 µm with r 0.4 mm: f = sqrt(32 * 0.4 * 0.0016)
+    // = sqrt(0.02048) = 0.1431084 mm/rev; at f 0.17: r = 0.0289 / (32 * 0.0016) = 0.0289 / 0.0512
+    // = 0.564453 mm. Rz 6.3 µm with r 0.4: f = sqrt(8 * 0.4 * 0.0063) = sqrt(0.02016) = 0.141986;
+    // at 0.17: r = 0.0289 / (8 * 0.0063) = 0.0289 / 0.0504 = 0.573413 mm.
+    void roughnessNeeds()
+    {
+        QVERIFY(test::nearRelative(feedForRa_mm_rev(1.6, 0.4), 0.1431084, 1e-6));
+        QVERIFY(test::nearRelative(noseRadiusForRa_mm(1.6, 0.17), 0.564453, 2e-6));
+        QVERIFY(test::nearRelative(feedForRz_mm_rev(6.3, 0.4), 0.141986, 2e-6));
+        QVERIFY(test::nearRelative(noseRadiusForRz_mm(6.3, 0.17), 0.573413, 2e-6));
     }
 
     // n = 1000 v/(pi D): 200 m/min on Ø50 -> 1273.24 rpm; P = Fc v = 1000 N * 200 m/min = 3.333 kW;

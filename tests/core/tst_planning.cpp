@@ -249,6 +249,43 @@ private Q_SLOTS:
         QCOMPARE(poisoned.front().limit, finite.front().limit);
     }
 
+    // When no plan holds the roughness, the planner is told what it would take. The valve body's
+    // OP 10 bores with a CCMT 09T304 (r 0.4 mm) at feeds from 0.17 mm/rev: Ra 1.6 µm needs
+    // f <= sqrt(32 * 0.4 * 0.0016) = 0.143 mm/rev, or at 0.17 mm/rev r >= 0.0289 / 0.0512 = 0.564 mm.
+    void infeasibleRoughnessSaysWhatItWouldTake()
+    {
+        const Project valve = operationView(test::exampleProject("valve-body-two-bores.tolturn"), 0);
+        QCOMPARE(valve.boringTool->insertCode, QStringLiteral("CCMT 09T304"));
+        const PlanResult r = optimisePlan(*problemFor(valve));
+        QVERIFY(!r.feasible);
+        QCOMPARE(r.remedies.size(), 1);
+        const QString &remedy = r.remedies.front();
+        QVERIFY2(remedy.contains(QStringLiteral("at most 0.143 mm/rev")) && remedy.contains(QStringLiteral("0.4 mm")) &&
+                     remedy.contains(QStringLiteral("CCMT 09T304")) && remedy.contains(QStringLiteral("0.17 mm/rev")) &&
+                     remedy.contains(QStringLiteral("at least 0.564 mm")),
+                 qPrintable(remedy));
+    }
+
+    // And what a tool life needs: 250 m/min for 15 min with n = 0.25 is C = 491.998 m/min; 60 min
+    // needs v <= 491.998 / 60^0.25 = 491.998 / 2.783158 = 176.8 m/min, below the insert's
+    // 201.2 m/min, where 60 min needs C >= 201.2 * 2.783158 = 560 m/min.
+    void infeasibleToolLifeSaysWhatItWouldTake()
+    {
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
+        p.planning.taylorC_m_min = 491.998;
+        p.planning.taylorN = 0.25;
+        p.planning.minToolLife_min = 60.0;
+        p.planning.toolLifeSource = QStringLiteral("test: 250 m/min for 15 min");
+        const PlanResult r = optimisePlan(*problemFor(p));
+        QVERIFY(!r.feasible);
+        QVERIFY(!r.remedies.isEmpty());
+        for (const QString &remedy : r.remedies)
+            QVERIFY2(remedy.contains(QStringLiteral("at most 177 m/min")) &&
+                         remedy.contains(QStringLiteral("starts at 201 m/min")) &&
+                         remedy.contains(QStringLiteral("at least 560 m/min")),
+                     qPrintable(remedy));
+    }
+
     // Degenerate inputs a fuzzer found (issue 14) end with a named result, never a hang.
     // Taylor constants C = 0.5 m/min, n = 0.01: the tool lasts (0.5/200)^100 min at 200 m/min,
     // an overflow of the tool cost that left NLopt's COBYLA looping for ever.

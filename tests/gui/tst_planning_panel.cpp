@@ -227,6 +227,25 @@ private Q_SLOTS:
                  qPrintable(panel->planText()));
     }
 
+    // A plan that cannot hold the roughness says what it would take, under the violated constraint:
+    // the valve body's OP 10, Ra 1.6 µm with the bar's r 0.4 mm needs f <= sqrt(32 * 0.4 * 0.0016)
+    // = 0.143 mm/rev.
+    void infeasiblePlanSaysWhatItWouldTake()
+    {
+        MainWindow w;
+        QVERIFY(w.fileController()->openFile(example("valve-body-two-bores.tolturn")));
+        PlanningPanel *panel = w.planningPanel();
+        QSignalSpy finished(panel, &PlanningPanel::finished);
+        panel->optimise();
+        QVERIFY(finished.count() == 1 || finished.wait(60000));
+        QVERIFY(panel->report() != nullptr && !panel->report()->plan.feasible);
+        const QString text = panel->planText();
+        const auto violated = text.indexOf(QStringLiteral("Violated: roughness (Ra)"));
+        const auto remedy =
+            text.indexOf(QStringLiteral("To meet it: Ra ≤ 1.6 µm needs a feed of at most 0.143 mm/rev"));
+        QVERIFY2(violated >= 0 && remedy > violated, qPrintable(text));
+    }
+
     void planningDataDialogShowsTheFile()
     {
         MainWindow w;

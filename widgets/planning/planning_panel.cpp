@@ -445,6 +445,8 @@ void PlanningPanel::showReport()
                      .arg(c.label(), QString::number(c.value, 'g', 4), QString::number(c.limit, 'g', 4), c.unit);
     for (const ConstraintValue &c : r.conflicts)
         lines << tr("Violated: %1 %2").arg(c.label(), c.violatedBy());
+    for (const QString &remedy : r.remedies)
+        lines << tr("To meet it: ") + remedy;
     for (const QString &n : r.notes)
         lines << tr("Note: ") + n;
     m_plan->setText(lines.join(QLatin1Char('\n')));

@@ -386,6 +386,14 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing, const s
                 binding << Report::tr("%1 violated %2").arg(c.label(), c.violatedBy());
             if (!binding.isEmpty())
                 l.paragraph(Report::tr("Binding: %1.").arg(binding.join(QStringLiteral(", "))));
+            for (const QString &remedy : pl.remedies)
+                l.paragraph(Report::tr("To meet it: %1").arg(remedy));
+            // The plan's own notes (limits not known, tool life not in the objective, a search
+            // again at the optimum's depth); the model's are under Assumptions.
+            const QStringList &assumptions = r.problem->inputs().notes;
+            for (const QString &note : pl.notes)
+                if (!assumptions.contains(note))
+                    l.paragraph(QStringLiteral("• ") + note, 8.5);
             windowMap(l, p, r);
             std::vector<QStringList> rows{{Report::tr("Rank"), Report::tr("Clamping"), Report::tr("Result")}};
             for (std::size_t i = 0; i < r.clamping.size(); ++i)
