@@ -408,10 +408,8 @@ private Q_SLOTS:
             o.rows = 10;
             const CuttingWindow w = cuttingWindow(*problem, plane, opt.candidate, o);
             QCOMPARE(int(w.cells.size()), 120);
-            // The feed–speed plane at the optimum's depth on that depth's section, as the optimum.
-            const auto judged = plane == WindowPlane::FeedSpeed
-                                    ? problem->forFinishingDepth(opt.candidate.finishing.depthOfCut_mm)
-                                    : problem;
+            // Every point on the section its own finishing depth leaves, as the optimum is judged
+            // (optimumHoldsAtItsOwnDepth checks that section against the deviation model).
             for (const WindowCell &cell : w.cells) {
                 PlanCandidate c = opt.candidate;
                 c.finishing.feed_mm_rev = cell.x;
@@ -419,6 +417,7 @@ private Q_SLOTS:
                     c.finishing.cuttingSpeed_m_min = cell.y;
                 else
                     c.finishing.depthOfCut_mm = cell.y;
+                const auto judged = problem->forFinishingDepth(c.finishing.depthOfCut_mm);
                 const CandidateEvaluation e = judged->evaluate(c);
                 QCOMPARE(cell.feasible, e.feasible(1e-9));
                 QCOMPARE(cell.objective, e.objective);
