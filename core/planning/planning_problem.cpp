@@ -191,6 +191,7 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     // (the smallest depth): the least stiff section, so the tolerance constraints err on the safe side.
     p.m_table = buildInfluenceTable(project.part, p.m_inputs, kStations, p.m_depth.min);
     p.m_targets = programTargets(withPass);
+    addProfileGeometry(withPass, p.m_table, p.m_targets);
     // The roughness limit holds for every surface: the bores' with the boring bar's insert.
     p.m_roughnessNoseRadius_mm = p.m_inputs.noseRadius_mm;
     p.m_roughnessInsert = project.tool.insertCode;
@@ -448,6 +449,8 @@ std::shared_ptr<const PlanningProblem> PlanningProblem::forFinishingDepth(double
 {
     std::shared_ptr<PlanningProblem> p(new PlanningProblem(*this));
     p->m_table = buildInfluenceTable(m_project.part, m_inputs, DeviationOptions{}.stationsPerFeature, depth_mm);
+    p->m_targets.profiles.clear(); // the stations may differ; formed again for them
+    addProfileGeometry(m_project, p->m_table, p->m_targets);
     return p;
 }
 

@@ -299,6 +299,37 @@ std::pair<double, double> centringRadialShift_um(const std::vector<std::pair<dou
     return leastLargestShift(terms);
 }
 
+// The exact profile's slope at z (a central difference inside the segment) and the offset of the
+// program's target from it: the program aims at the target contour, which moves a cone or a round
+// with its toleranced cylinder, so that shift is part of the deviation from the exact profile.
+ProfileStationGeometry profileStationGeometry(const Segment &s, const Contour &target, const QString &featureId,
+                                              double z_mm)
+{
+    const double h = 1e-4 * std::max(1.0, std::abs(s.to.z_mm - s.from.z_mm));
+    const double z0 = std::max(s.from.z_mm, z_mm - h);
+    const double z1 = std::min(s.to.z_mm, z_mm + h);
+    const double nominal = radiusOnSegment(s, z_mm);
+    const double aimed = targetRadius_mm(target, featureId, z_mm).value_or(nominal);
+    return {z_mm, (radiusOnSegment(s, z1) - radiusOnSegment(s, z0)) / (z1 - z0), aimed - nominal};
+}
+
+// The geometry addProfileGeometry() formed for a feature, if it was formed for these stations.
+const std::vector<ProfileStationGeometry> *knownGeometry(const ProgramTargets &targets, const QString &featureId,
+                                                         const std::vector<Station> &stations)
+{
+    for (const ProfileGeometry &g : targets.profiles) {
+        if (g.featureId != featureId)
+            continue;
+        if (g.stations.size() != stations.size())
+            return nullptr;
+        for (std::size_t i = 0; i < stations.size(); ++i)
+            if (g.stations[i].z_mm != stations[i].z_mm)
+                return nullptr;
+        return &g.stations;
+    }
+    return nullptr;
+}
+
 // Profile of a line or surface (ISO 1101:2017 clause 18, definitions of the line and surface profile tolerances; Valiño
 // et al. 2008 Fig. 4e). The deviation is taken normal to the surface: the radial one times cos(alpha), alpha the angle
 // of the surface to the axis at the station. Without datums, or to a datum axis only (a datum cylinder), the zone may
@@ -314,21 +345,17 @@ void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const Fe
         return;
     }
     const Segment &s = *feature.segment;
+    const std::vector<ProfileStationGeometry> *known = knownGeometry(targets, t.featureId, f->stations);
     const Contour &target = feature.side == ContourSide::Outer ? targets.outer : targets.inner;
     double largest = -1e300;
     double smallest = 1e300;
     std::vector<std::pair<double, double>> normals;      // (delta_n [µm], axial part of the surface normal)
     std::vector<std::pair<double, double>> normalAndCos; // (delta_n [µm], cos(alpha))
-    for (const Station &st : f->stations) {
-        const double h = 1e-4 * std::max(1.0, std::abs(s.to.z_mm - s.from.z_mm));
-        const double z0 = std::max(s.from.z_mm, st.z_mm - h);
-        const double z1 = std::min(s.to.z_mm, st.z_mm + h);
-        const double slope = (radiusOnSegment(s, z1) - radiusOnSegment(s, z0)) / (z1 - z0);
-        // The program aims at the target contour, which moves a cone or a round with its toleranced
-        // cylinder: that shift is part of the deviation from the exact profile.
-        const double nominal = radiusOnSegment(s, st.z_mm);
-        const double aimed = targetRadius_mm(target, t.featureId, st.z_mm).value_or(nominal);
-        const double deviation = st.radiusError_mm + aimed - nominal;
+    for (std::size_t i = 0; i < f->stations.size(); ++i) {
+        const Station &st = f->stations[i];
+        const ProfileStationGeometry g = known ? (*known)[i] : profileStationGeometry(s, target, t.featureId, st.z_mm);
+        const double slope = g.slope;
+        const double deviation = st.radiusError_mm + g.targetOffset_mm;
         const double normal = deviation * kUmPerMm / std::sqrt(1.0 + slope * slope); // delta cos(alpha)
         if (!std::isfinite(normal)) {
             setValue(e, normal, t.zone_um.value_or(0.0)); // refuseNonFinite refuses it
@@ -509,6 +536,26 @@ std::vector<ToleranceEvaluation> evaluateTolerances(const Project &project, cons
         refuseNonFinite(out.back());
     }
     return out;
+}
+
+void addProfileGeometry(const Project &project, const InfluenceTable &table, ProgramTargets &targets)
+{
+    for (const Tolerance &t : project.tolerances) {
+        if (t.type != ToleranceType::Profile ||
+            std::any_of(targets.profiles.begin(), targets.profiles.end(),
+                        [&](const ProfileGeometry &g) { return g.featureId == t.featureId; }))
+            continue;
+        const auto feature = findFeature(project.part, t.featureId);
+        const auto stations = std::find_if(table.features.begin(), table.features.end(),
+                                           [&](const FeatureInfluence &f) { return f.featureId == t.featureId; });
+        if (!feature || stations == table.features.end())
+            continue;
+        const Contour &target = feature->side == ContourSide::Outer ? targets.outer : targets.inner;
+        ProfileGeometry g{t.featureId, {}};
+        for (const double z : stations->z_mm)
+            g.stations.push_back(profileStationGeometry(*feature->segment, target, t.featureId, z));
+        targets.profiles.push_back(std::move(g));
+    }
 }
 
 bool profileZoneIsLocated(const Project &project, const Tolerance &tolerance)

@@ -60,6 +60,12 @@ enum class EvaluationDetail {
                                                                   EvaluationDetail detail = EvaluationDetail::WithText,
                                                                   const ProgramTargets *targets = nullptr);
 
+// Adds to `targets` the geometry of every profile tolerance's feature at the stations of `table`
+// (the slope of the exact profile and the target's offset from it), which evaluateTolerances
+// then takes instead of working it out per plan. A deviation whose stations are not those of
+// the table is evaluated as without it.
+void addProfileGeometry(const Project &project, const InfluenceTable &table, ProgramTargets &targets);
+
 // Whether a profile tolerance's zone is located along the axis (ISO 1101:2017 clause 18; ISO 5459:2011,
 // the invariance classes of datum features): a datum on a face (a plane), a cone, a chamfer or a round
 // (which each fix a point on the axis) holds the zone where the exact profile is. A datum on a

@@ -125,8 +125,10 @@ Contour targetContour(const Project &project, ContourSide side)
 
 ProgramTargets programTargets(const Project &project)
 {
-    return {diameterTargets(project), targetContour(project, ContourSide::Outer),
-            targetContour(project, ContourSide::Inner)};
+    return {diameterTargets(project),
+            targetContour(project, ContourSide::Outer),
+            targetContour(project, ContourSide::Inner),
+            {}};
 }
 
 std::optional<double> targetRadius_mm(const Contour &target, const QString &featureId, double z_mm)

@@ -33,11 +33,28 @@ struct DiameterTarget {
 // (a cone joining two toleranced diameters directly) follows the nearer cylinder.
 [[nodiscard]] Contour targetContour(const Project &project, ContourSide side);
 
+// A station of a feature with a profile tolerance: the exact profile's slope dr/dz there and how
+// far the program's target lies from it (aimed less nominal radius) [mm]. Both are fixed by the
+// part and the program, not by the cutting conditions.
+struct ProfileStationGeometry {
+    double z_mm = 0.0;
+    double slope = 0.0;
+    double targetOffset_mm = 0.0;
+};
+
+struct ProfileGeometry {
+    QString featureId;
+    std::vector<ProfileStationGeometry> stations;
+};
+
 // Everything the program aims at, formed once: for callers that evaluate one project many times.
+// `profiles`, where given (addProfileGeometry, evaluation.h), holds the profile tolerances'
+// station geometry for the stations a planner evaluates over and over.
 struct ProgramTargets {
     std::vector<DiameterTarget> diameters;
     Contour outer;
     Contour inner;
+    std::vector<ProfileGeometry> profiles;
 };
 
 [[nodiscard]] ProgramTargets programTargets(const Project &project);
