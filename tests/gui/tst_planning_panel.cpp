@@ -244,6 +244,12 @@ private Q_SLOTS:
         const auto remedy =
             text.indexOf(QStringLiteral("To meet it: Ra ≤ 1.6 µm needs a feed of at most 0.143 mm/rev"));
         QVERIFY2(violated >= 0 && remedy > violated, qPrintable(text));
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.findChild<QDockWidget *>(QStringLiteral("planningDock"))->raise();
+        QTest::qWait(50);
+        saveScreenshot(w, "planning-infeasible.png");
     }
 
     void planningDataDialogShowsTheFile()
