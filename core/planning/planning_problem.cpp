@@ -524,17 +524,25 @@ void PlanningProblem::addFinishingLimits(const PassConditions &pass, const Cutti
 // depth (boring_toolpath.h): its deepest cut is a_r, or the bore's stock above the finishing
 // allowance where that is less. Its own insert's forces at that cut, on the largest bore, are
 // checked against the same limits as the turning tool's (power, torque, force, spindle speed,
-// tool life).
+// tool life). Where the finishing allowance leaves the bar nothing to rough the same constraints
+// are there, met (value 0): every plan of a search has the same list, which NLopt's constraint
+// function needs (optimiser.cpp).
 void PlanningProblem::addBoreRoughingLimits(const PassConditions &roughing, double finishingDepth_mm,
                                             std::vector<ConstraintValue> &out) const
 {
-    const double leftInBores = m_boreRadialStock_mm - finishingDepth_mm;
-    if (!m_boringForceModel || leftInBores <= 1e-9)
+    if (!m_boringForceModel || m_boreRadialStock_mm <= 0.0)
         return;
+    const double leftInBores = m_boreRadialStock_mm - finishingDepth_mm;
+    const bool roughs = leftInBores > 1e-9;
     PassConditions bar = roughing;
     bar.depthOfCut_mm = std::min(roughing.depthOfCut_mm, leftInBores);
-    addPassLimits(QStringLiteral("boring roughing"), bar, m_boringForceModel(bar.feed_mm_rev, bar.depthOfCut_mm),
+    const std::size_t first = out.size();
+    addPassLimits(QStringLiteral("boring roughing"), bar,
+                  roughs ? m_boringForceModel(bar.feed_mm_rev, bar.depthOfCut_mm) : CuttingForces{},
                   m_largestBoreDiameter_mm, out);
+    if (!roughs)
+        for (std::size_t i = first; i < out.size(); ++i)
+            out[i].value = 0.0;
 }
 
 CandidateEvaluation PlanningProblem::evaluate(const PlanCandidate &c,
@@ -562,7 +570,8 @@ CandidateEvaluation PlanningProblem::evaluate(const PlanCandidate &c,
                                      roughing.depthOfCut_mm, QStringLiteral("mm")}); // a_min <= a_r
         }
     } else if (isEnabled(QStringLiteral("roughing_depth"))) {
-        // No roughing pass but stock left: the finishing pass would have to take it all.
+        // No roughing pass but stock left: the finishing pass would have to take it all (a search
+        // of no roughing pass fixes a_f, so these do not come and go within it).
         if (leftForRoughing > 1e-9)
             e.constraints.push_back({QStringLiteral("roughing_depth"), QStringLiteral("roughing"), leftForRoughing, 0.0,
                                      QStringLiteral("mm")});
