@@ -4500,20 +4500,24 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
 <context>
     <name>Remedies</name>
     <message>
-        <source>%1 ≤ %2 µm needs a feed of at most %3 mm/rev with the nose radius %4 mm (%5)</source>
-        <translation>%1 ≤ %2 µm verlangt einen Vorschub von höchstens %3 mm/U mit dem Eckenradius %4 mm (%5)</translation>
-    </message>
-    <message>
-        <source>, below the feed range, which starts at %1 mm/rev; at that feed it needs a nose radius of at least %2 mm.</source>
-        <translation>, unterhalb des Vorschubbereichs, der bei %1 mm/U beginnt; bei diesem Vorschub verlangt sie einen Eckenradius von mindestens %2 mm.</translation>
-    </message>
-    <message>
-        <source>A tool life of %1 min (%2) needs a cutting speed of at most %3 m/min (Taylor C = %4 m/min, n = %5)</source>
-        <translation>Eine Standzeit von %1 min (%2) verlangt eine Schnittgeschwindigkeit von höchstens %3 m/min (Taylor C = %4 m/min, n = %5)</translation>
-    </message>
-    <message>
         <source>, below the speed range, which starts at %1 m/min; at that speed it needs an insert grade with C of at least %2 m/min.</source>
         <translation>, unterhalb des Geschwindigkeitsbereichs, der bei %1 m/min beginnt; bei dieser Geschwindigkeit verlangt sie eine Schneidstoffsorte mit C von mindestens %2 m/min.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 mm)</source>
+        <translation>%1 (%2 mm)</translation>
+    </message>
+    <message>
+        <source>%1 ≤ %2 µm needs a feed of at most %3 mm/rev with the nose radius of %4</source>
+        <translation>%1 ≤ %2 µm verlangt einen Vorschub von höchstens %3 mm/U mit dem Eckenradius von %4</translation>
+    </message>
+    <message>
+        <source>, below the feed range, which starts at %1 mm/rev; at that feed it needs a nose radius of at least %2 mm on %3.</source>
+        <translation>, unterhalb des Vorschubbereichs, der bei %1 mm/U beginnt; bei diesem Vorschub verlangt sie einen Eckenradius von mindestens %2 mm an %3.</translation>
+    </message>
+    <message>
+        <source>A tool life of %1 min needs a cutting speed of at most %2 m/min (Taylor C = %3 m/min, n = %4)</source>
+        <translation>Eine Standzeit von %1 min verlangt eine Schnittgeschwindigkeit von höchstens %2 m/min (Taylor C = %3 m/min, n = %4)</translation>
     </message>
 </context>
 <context>

@@ -4500,20 +4500,24 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
 <context>
     <name>Remedies</name>
     <message>
-        <source>%1 ≤ %2 µm needs a feed of at most %3 mm/rev with the nose radius %4 mm (%5)</source>
-        <translation>%1 ≤ %2 µm requiere un avance de como máximo %3 mm/rev con el radio de punta %4 mm (%5)</translation>
-    </message>
-    <message>
-        <source>, below the feed range, which starts at %1 mm/rev; at that feed it needs a nose radius of at least %2 mm.</source>
-        <translation>, por debajo del rango de avance, que empieza en %1 mm/rev; con ese avance requiere un radio de punta de al menos %2 mm.</translation>
-    </message>
-    <message>
-        <source>A tool life of %1 min (%2) needs a cutting speed of at most %3 m/min (Taylor C = %4 m/min, n = %5)</source>
-        <translation>Una vida de herramienta de %1 min (%2) requiere una velocidad de corte de como máximo %3 m/min (Taylor C = %4 m/min, n = %5)</translation>
-    </message>
-    <message>
         <source>, below the speed range, which starts at %1 m/min; at that speed it needs an insert grade with C of at least %2 m/min.</source>
         <translation>, por debajo del rango de velocidad, que empieza en %1 m/min; a esa velocidad requiere una calidad de plaquita con C de al menos %2 m/min.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 mm)</source>
+        <translation>%1 (%2 mm)</translation>
+    </message>
+    <message>
+        <source>%1 ≤ %2 µm needs a feed of at most %3 mm/rev with the nose radius of %4</source>
+        <translation>%1 ≤ %2 µm requiere un avance de como máximo %3 mm/rev con el radio de punta de %4</translation>
+    </message>
+    <message>
+        <source>, below the feed range, which starts at %1 mm/rev; at that feed it needs a nose radius of at least %2 mm on %3.</source>
+        <translation>, por debajo del rango de avance, que empieza en %1 mm/rev; con ese avance requiere un radio de punta de al menos %2 mm en %3.</translation>
+    </message>
+    <message>
+        <source>A tool life of %1 min needs a cutting speed of at most %2 m/min (Taylor C = %3 m/min, n = %4)</source>
+        <translation>Una vida de herramienta de %1 min requiere una velocidad de corte de como máximo %2 m/min (Taylor C = %3 m/min, n = %4)</translation>
     </message>
 </context>
 <context>

@@ -411,7 +411,9 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
             if (v.violation() <= 1e-6)
                 continue;
             result.conflicts.push_back(v);
-            if (const QString remedy = whatItWouldTake(problem, v); !remedy.isEmpty())
+            // The same remedy once: a tool life short on the finishing and the roughing pass alike.
+            if (const QString remedy = whatItWouldTake(problem, v);
+                !remedy.isEmpty() && !result.remedies.contains(remedy))
                 result.remedies << remedy;
         }
     }

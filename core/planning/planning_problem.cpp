@@ -194,13 +194,12 @@ PlanningProblem::BuildResult PlanningProblem::build(const Project &project, cons
     addProfileGeometry(withPass, p.m_table, p.m_targets);
     // The roughness limit holds for every surface: the bores' with the boring bar's insert.
     p.m_roughnessNoseRadius_mm = p.m_inputs.noseRadius_mm;
-    p.m_roughnessInsert = project.tool.insertCode;
-    if (p.m_inputs.boring &&
-        std::any_of(p.m_table.features.begin(), p.m_table.features.end(),
-                    [](const FeatureInfluence &f) { return f.side == ContourSide::Inner; }) &&
-        p.m_inputs.boring->noseRadius_mm < p.m_roughnessNoseRadius_mm) {
-        p.m_roughnessNoseRadius_mm = p.m_inputs.boring->noseRadius_mm;
-        p.m_roughnessInsert = Planning::tr("%1, the boring bar's insert").arg(project.boringTool->insertCode);
+    p.m_roughnessInserts.push_back({project.tool.insertCode, p.m_inputs.noseRadius_mm});
+    if (p.m_inputs.boring && std::any_of(p.m_table.features.begin(), p.m_table.features.end(),
+                                         [](const FeatureInfluence &f) { return f.side == ContourSide::Inner; })) {
+        p.m_roughnessNoseRadius_mm = std::min(p.m_roughnessNoseRadius_mm, p.m_inputs.boring->noseRadius_mm);
+        p.m_roughnessInserts.push_back({Planning::tr("%1, the boring bar's insert").arg(project.boringTool->insertCode),
+                                        p.m_inputs.boring->noseRadius_mm});
     }
     p.m_maxPower_kW = s.maxPower_kW ? s.maxPower_kW : p.m_inputs.maxPower_kW;
     p.m_maxTorque_Nm = s.maxTorque_Nm;
@@ -416,7 +415,8 @@ std::pair<int, int> PlanningProblem::roughingPassRange(double finishingDepth_mm)
 }
 
 void PlanningProblem::addPassLimits(const QString &subject, const PassConditions &pass, const CuttingForces &f,
-                                    double largestDiameter_mm, std::vector<ConstraintValue> &out) const
+                                    double largestDiameter_mm, std::vector<ConstraintValue> &out,
+                                    ToolLife toolLife) const
 {
     if (isEnabled(QStringLiteral("power")) && m_maxPower_kW)
         out.push_back({QStringLiteral("power"), subject, cuttingPower_kW(f.tangential_N, pass.cuttingSpeed_m_min),
@@ -432,6 +432,8 @@ void PlanningProblem::addPassLimits(const QString &subject, const PassConditions
         out.push_back({QStringLiteral("spindle_speed"), subject,
                        spindleSpeed_rpm(pass.cuttingSpeed_m_min, largestDiameter_mm), *m_maxSpeed_rpm,
                        QStringLiteral("rpm")});
+    if (toolLife == ToolLife::SameAsTurning)
+        return;
     const auto life = toolLife_min(pass.cuttingSpeed_m_min);
     if (isEnabled(QStringLiteral("tool_life")) && life && m_project.planning.minToolLife_min)
         out.push_back({QStringLiteral("tool_life"), subject, *m_project.planning.minToolLife_min, *life,
@@ -513,7 +515,7 @@ void PlanningProblem::addFinishingLimits(const PassConditions &pass, const Cutti
         return;
     // The boring bar's own insert and forces in the bores, and the maker's longest overhang.
     addPassLimits(QStringLiteral("boring"), pass, m_boringForceModel(pass.feed_mm_rev, pass.depthOfCut_mm),
-                  m_largestBoreDiameter_mm, out);
+                  m_largestBoreDiameter_mm, out, ToolLife::SameAsTurning);
     const BoringInputs &b = *m_inputs.boring;
     if (isEnabled(QStringLiteral("bar_overhang")) && b.maxOverhangRatio)
         out.push_back({QStringLiteral("bar_overhang"), b.holderCode, b.bar.overhangRatio(), b.maxOverhangRatio->value,
@@ -523,8 +525,8 @@ void PlanningProblem::addFinishingLimits(const PassConditions &pass, const Cutti
 // The boring bar roughs the bores out of the pilot hole at the roughing passes' feed, speed and
 // depth (boring_toolpath.h): its deepest cut is a_r, or the bore's stock above the finishing
 // allowance where that is less. Its own insert's forces at that cut, on the largest bore, are
-// checked against the same limits as the turning tool's (power, torque, force, spindle speed,
-// tool life). Where the finishing allowance leaves the bar nothing to rough the same constraints
+// checked against the same limits as the turning tool's (power, torque, force, spindle speed; its
+// tool life is the roughing pass's). Where the finishing allowance leaves the bar nothing to rough the same constraints
 // are there, met (value 0): every plan of a search has the same list, which NLopt's constraint
 // function needs (optimiser.cpp).
 void PlanningProblem::addBoreRoughingLimits(const PassConditions &roughing, double finishingDepth_mm,
@@ -539,7 +541,7 @@ void PlanningProblem::addBoreRoughingLimits(const PassConditions &roughing, doub
     const std::size_t first = out.size();
     addPassLimits(QStringLiteral("boring roughing"), bar,
                   roughs ? m_boringForceModel(bar.feed_mm_rev, bar.depthOfCut_mm) : CuttingForces{},
-                  m_largestBoreDiameter_mm, out);
+                  m_largestBoreDiameter_mm, out, ToolLife::SameAsTurning);
     if (!roughs)
         for (std::size_t i = first; i < out.size(); ++i)
             out[i].value = 0.0;

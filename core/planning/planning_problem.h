@@ -149,11 +149,17 @@ public:
 
     [[nodiscard]] const ValueRange &depthRange() const { return m_depth; }
 
-    // The nose radius the roughness limits are checked with: the smaller of the tools that cut the
-    // features (the boring bar's insert in the bores), and that insert, for people.
-    [[nodiscard]] double roughnessNoseRadius_mm() const { return m_roughnessNoseRadius_mm; }
+    // The inserts that cut the surfaces the roughness limits hold for (the turning insert, and the
+    // boring bar's where there are bores), for people, with their nose radii; the limits are
+    // checked with the smallest radius.
+    struct RoughnessInsert {
+        QString insert;
+        double noseRadius_mm = 0.0;
+    };
 
-    [[nodiscard]] const QString &roughnessInsert() const { return m_roughnessInsert; }
+    [[nodiscard]] const std::vector<RoughnessInsert> &roughnessInserts() const { return m_roughnessInserts; }
+
+    [[nodiscard]] double roughnessNoseRadius_mm() const { return m_roughnessNoseRadius_mm; }
 
     // Radial stock between the bar and the deepest turned feature [mm].
     [[nodiscard]] double radialStock_mm() const { return m_radialStock_mm; }
@@ -177,8 +183,12 @@ private:
     void noteUnconstrainedTolerances();
     [[nodiscard]] double finishingTime_min(const PassConditions &pass) const;
     [[nodiscard]] double roughingVolume_mm3(double finishingDepth_mm) const;
+    // The boring bar's passes run at the turning passes' speeds and the Taylor constants are the
+    // planning data's, so their tool life is the turning passes' and is not checked twice.
+    enum class ToolLife { Checked, SameAsTurning };
     void addPassLimits(const QString &subject, const PassConditions &pass, const CuttingForces &f,
-                       double largestDiameter_mm, std::vector<ConstraintValue> &out) const;
+                       double largestDiameter_mm, std::vector<ConstraintValue> &out,
+                       ToolLife toolLife = ToolLife::Checked) const;
     void addFinishingLimits(const PassConditions &pass, const CuttingForces &f,
                             std::vector<ConstraintValue> &out) const;
     void addBoreRoughingLimits(const PassConditions &roughing, double finishingDepth_mm,
@@ -197,7 +207,7 @@ private:
     double m_largestCutDiameter_mm = 0.0;
     double m_largestBoreDiameter_mm = 0.0;
     double m_roughnessNoseRadius_mm = 0.0; // the smaller nose radius of the tools that cut the features
-    QString m_roughnessInsert;             // the insert that has it, for people
+    std::vector<RoughnessInsert> m_roughnessInserts;
     double m_stockDiameter_mm = 0.0;
     std::optional<double> m_maxPower_kW, m_maxTorque_Nm, m_maxSpeed_rpm;
     QStringList m_notes;
