@@ -312,25 +312,62 @@ std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm, int most
     return out;
 }
 
+namespace {
+
+// The envelope raised to the top of a disc of radius d about p.
+void raiseToDisc(Envelope &env, const ProfilePoint &p, double d)
+{
+    const double lo = std::max(0.0, std::ceil((p.z_mm - d - env.z0_mm) / env.step_mm));
+    const double hi = std::floor((p.z_mm + d - env.z0_mm) / env.step_mm);
+    for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < env.r_mm.size(); ++i) {
+        const double dz = env.z(i) - p.z_mm;
+        env.r_mm[i] = std::max(env.r_mm[i], p.r_mm + std::sqrt(std::max(d * d - dz * dz, 0.0)));
+    }
+}
+
+// The envelope raised to a line element moved by d along its upward normal. A disc swept along a
+// line is the two end discs and the band between the line moved by d to either side (the
+// Minkowski sum of a segment and a disc), so with raiseToDisc at both ends this is exact.
+void raiseToMovedLine(Envelope &env, const PathElement &e, double d)
+{
+    const ProfilePoint t = e.to - e.from;
+    const double length = norm(t);
+    if (length <= kTiny)
+        return;
+    ProfilePoint n{-t.r_mm / length, t.z_mm / length};
+    if (n.r_mm < 0.0)
+        n = ProfilePoint{-n.z_mm, -n.r_mm};
+    const ProfilePoint a = e.from + d * n;
+    const ProfilePoint b = e.to + d * n;
+    if (std::abs(b.z_mm - a.z_mm) <= kTiny)
+        return; // a face: its end discs bound it from above
+    const double lo = std::max(0.0, std::ceil((std::min(a.z_mm, b.z_mm) - env.z0_mm) / env.step_mm));
+    const double hi = std::floor((std::max(a.z_mm, b.z_mm) - env.z0_mm) / env.step_mm);
+    for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < env.r_mm.size(); ++i) {
+        const double along = (env.z(i) - a.z_mm) / (b.z_mm - a.z_mm);
+        env.r_mm[i] = std::max(env.r_mm[i], a.r_mm + along * (b.r_mm - a.r_mm));
+    }
+}
+
+} // namespace
+
 Envelope widenedEnvelope(const std::vector<Segment> &contour, double distance_mm, double zFrom_mm, double zTo_mm,
                          double step_mm)
 {
     Envelope env;
     env.z0_mm = zFrom_mm;
     const auto count = static_cast<std::size_t>(std::max(1.0, std::ceil((zTo_mm - zFrom_mm) / step_mm))) + 1;
-    step_mm = (zTo_mm - zFrom_mm) / static_cast<double>(count - 1); // the grid ends on zTo exactly
-    env.step_mm = step_mm;
+    env.step_mm = (zTo_mm - zFrom_mm) / static_cast<double>(count - 1); // the grid ends on zTo exactly
     env.r_mm.assign(count, -std::numeric_limits<double>::infinity());
     for (const PathElement &e : reversedElements(contour)) {
-        for (const ProfilePoint &p : sampled(e, 0.5 * step_mm)) {
-            const double lo = std::max(0.0, std::ceil((p.z_mm - distance_mm - zFrom_mm) / step_mm));
-            const double hi = std::floor((p.z_mm + distance_mm - zFrom_mm) / step_mm);
-            for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < count; ++i) {
-                const double dz = env.z(i) - p.z_mm;
-                const double r = p.r_mm + std::sqrt(std::max(distance_mm * distance_mm - dz * dz, 0.0));
-                env.r_mm[i] = std::max(env.r_mm[i], r);
-            }
+        if (e.arc) { // an arc by discs about points along it, half a grid step apart
+            for (const ProfilePoint &p : sampled(e, 0.5 * env.step_mm))
+                raiseToDisc(env, p, distance_mm);
+            continue;
         }
+        raiseToDisc(env, e.from, distance_mm);
+        raiseToDisc(env, e.to, distance_mm);
+        raiseToMovedLine(env, e, distance_mm);
     }
     return env;
 }

@@ -300,6 +300,60 @@ private Q_SLOTS:
         QCOMPARE(quarter.back().r_mm, 1e9);
     }
 
+    // The upper envelope of a disc of radius 1 swept along a contour: on the Ø40 cylinder (z 0..10)
+    // r = 20 + 1; on the cone from (10, 20) to (20, 15), slope -1/2, the line moved by 1 along its
+    // normal, r = 20 - (z - 10)/2 + sqrt(1 + 1/4) (at z = 15: 17.5 + 1.118034 = 18.618034); past the
+    // face at z 20 (r 15 down to 10) the disc about its top corner, r = 15 + sqrt(1 - (z - 20)^2)
+    // (at z 20.5: 15 + 0.866025). And everywhere within 1e-6 mm of the brute force: the top of discs
+    // about points 1 µm apart along the contour (an edge round included).
+    void envelopeIsTheSweptDisc()
+    {
+        const auto line = [](const char *id, SegmentKind kind, double z0, double r0, double z1, double r1) {
+            Segment s;
+            s.id = QString::fromLatin1(id);
+            s.kind = kind;
+            s.from = {z0, r0};
+            s.to = {z1, r1};
+            return s;
+        };
+        std::vector<Segment> contour{
+            line("O1", SegmentKind::Cylinder, 0, 20, 10, 20), line("O2", SegmentKind::Cone, 10, 20, 20, 15),
+            line("O3", SegmentKind::Face, 20, 15, 20, 10), line("O4", SegmentKind::Cylinder, 20, 10, 28, 10)};
+        Segment round = line("O5", SegmentKind::Radius, 28, 10, 30, 8);
+        round.arcRadius_mm = 2.0;
+        round.arcDirection = ArcDirection::Clockwise;
+        contour.push_back(round);
+        const Envelope env = widenedEnvelope(contour, 1.0, -2.0, 32.0, toolpath_detail::kEnvelopeStep_mm);
+        const auto at = [&](double z) { // NaN when z is not on the grid
+            const auto i = static_cast<std::size_t>(std::lround((z - env.z0_mm) / env.step_mm));
+            return std::abs(env.z(i) - z) < 1e-9 ? env.r_mm[i] : std::numeric_limits<double>::quiet_NaN();
+        };
+        QVERIFY(std::abs(at(5.0) - 21.0) < 1e-12);
+        QVERIFY(std::abs(at(15.0) - 18.618034) < 1e-6);
+        QVERIFY(std::abs(at(20.5) - 15.866025) < 1e-6);
+        std::vector<ProfilePoint> dense;
+        for (const PathElement &e : reversedElements(contour))
+            for (const ProfilePoint &p : sampled(e, 0.001))
+                dense.push_back(p);
+        double worst = 0.0;    // along the lines, exact
+        double worstArc = 0.0; // where the round is in reach (z > 27), by discs half a grid step apart
+        for (std::size_t i = 0; i < env.r_mm.size(); i += 7) {
+            double r = -std::numeric_limits<double>::infinity();
+            for (const ProfilePoint &p : dense) {
+                const double dz = env.z(i) - p.z_mm;
+                if (std::abs(dz) <= 1.0)
+                    r = std::max(r, p.r_mm + std::sqrt(1.0 - dz * dz));
+            }
+            if (std::isfinite(r) || std::isfinite(env.r_mm[i]))
+                (env.z(i) > 27.0 ? worstArc : worst) =
+                    std::max(env.z(i) > 27.0 ? worstArc : worst, std::abs(env.r_mm[i] - r));
+        }
+        QVERIFY2(worst < 1e-6, qPrintable(QString::number(worst)));
+        // Discs 0.01 mm apart on the R2 round are 0.01 (2 + 1)/2 = 0.015 mm apart on its offset: the top
+        // dips between them by at most 1 - sqrt(1 - 0.0075^2) = 2.8e-5 mm.
+        QVERIFY2(worstArc < 2.9e-5, qPrintable(QString::number(worstArc)));
+    }
+
     // Offset by r = 0.8 to the right of the travel. Up the end face (z 100, r 0 -> 20), then left along
     // the Ø40 cylinder: a convex corner, closed by an arc of 0.8 about (100, 20) from (100.8, 20) to
     // (100, 20.8). Then left along the cylinder to z 60 and up a shoulder to r 25 (its face looks to
