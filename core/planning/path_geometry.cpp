@@ -319,6 +319,8 @@ void raiseToDisc(Envelope &env, const ProfilePoint &p, double d)
 {
     const double lo = std::max(0.0, std::ceil((p.z_mm - d - env.z0_mm) / env.step_mm));
     const double hi = std::floor((p.z_mm + d - env.z0_mm) / env.step_mm);
+    if (!(lo < static_cast<double>(env.r_mm.size()))) // beyond the grid (or not a number)
+        return;
     for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < env.r_mm.size(); ++i) {
         const double dz = env.z(i) - p.z_mm;
         env.r_mm[i] = std::max(env.r_mm[i], p.r_mm + std::sqrt(std::max(d * d - dz * dz, 0.0)));
@@ -343,6 +345,8 @@ void raiseToMovedLine(Envelope &env, const PathElement &e, double d)
         return; // a face: its end discs bound it from above
     const double lo = std::max(0.0, std::ceil((std::min(a.z_mm, b.z_mm) - env.z0_mm) / env.step_mm));
     const double hi = std::floor((std::max(a.z_mm, b.z_mm) - env.z0_mm) / env.step_mm);
+    if (!(lo < static_cast<double>(env.r_mm.size()))) // beyond the grid (or not a number)
+        return;
     for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < env.r_mm.size(); ++i) {
         const double along = (env.z(i) - a.z_mm) / (b.z_mm - a.z_mm);
         env.r_mm[i] = std::max(env.r_mm[i], a.r_mm + along * (b.r_mm - a.r_mm));

@@ -28,7 +28,9 @@ QString given(double value)
 // "at least 0.565").
 QString rounded(double value, bool up)
 {
-    const int decimals = value > 0.0 ? std::max(0, 2 - static_cast<int>(std::floor(std::log10(value)))) : 0;
+    if (!std::isfinite(value) || value < 1e-6) // out of any machining range: as it is
+        return given(value);
+    const int decimals = std::clamp(2 - static_cast<int>(std::floor(std::log10(value))), 0, 8);
     const double scale = std::pow(10.0, decimals);
     const double r = (up ? std::ceil(value * scale - 1e-9) : std::floor(value * scale + 1e-9)) / scale;
     return QString::number(r, 'f', decimals);
@@ -44,7 +46,7 @@ QString atLeast(double value)
     return rounded(value, true);
 }
 
-// "CNMG 120404 (0.4 mm), CCMT 09T304, the boring bar's insert (0.4 mm)": the inserts with a nose
+// "CNMG 120404 (0.4 mm); CCMT 09T304, the boring bar's insert (0.4 mm)": the inserts with a nose
 // radius below `radius_mm`, or (`equal`) with the smallest.
 QString insertsBelow(const PlanningProblem &problem, double radius_mm, bool equal)
 {
