@@ -314,17 +314,25 @@ std::vector<ProfilePoint> sampled(const PathElement &e, double step_mm, int most
 
 namespace {
 
+// The envelope raised to r(z) at every grid z within [zLow, zHigh].
+template <class Height>
+void raise(Envelope &env, double zLow_mm, double zHigh_mm, const Height &r)
+{
+    const double lo = std::max(0.0, std::ceil((zLow_mm - env.z0_mm) / env.step_mm));
+    const double hi = std::floor((zHigh_mm - env.z0_mm) / env.step_mm);
+    if (!(lo < static_cast<double>(env.r_mm.size()))) // beyond the grid (or not a number)
+        return;
+    for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < env.r_mm.size(); ++i)
+        env.r_mm[i] = std::max(env.r_mm[i], r(env.z(i)));
+}
+
 // The envelope raised to the top of a disc of radius d about p.
 void raiseToDisc(Envelope &env, const ProfilePoint &p, double d)
 {
-    const double lo = std::max(0.0, std::ceil((p.z_mm - d - env.z0_mm) / env.step_mm));
-    const double hi = std::floor((p.z_mm + d - env.z0_mm) / env.step_mm);
-    if (!(lo < static_cast<double>(env.r_mm.size()))) // beyond the grid (or not a number)
-        return;
-    for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < env.r_mm.size(); ++i) {
-        const double dz = env.z(i) - p.z_mm;
-        env.r_mm[i] = std::max(env.r_mm[i], p.r_mm + std::sqrt(std::max(d * d - dz * dz, 0.0)));
-    }
+    raise(env, p.z_mm - d, p.z_mm + d, [&](double z) {
+        const double dz = z - p.z_mm;
+        return p.r_mm + std::sqrt(std::max(d * d - dz * dz, 0.0));
+    });
 }
 
 // The envelope raised to a line element moved by d along its upward normal. A disc swept along a
@@ -343,14 +351,8 @@ void raiseToMovedLine(Envelope &env, const PathElement &e, double d)
     const ProfilePoint b = e.to + d * n;
     if (std::abs(b.z_mm - a.z_mm) <= kTiny)
         return; // a face: its end discs bound it from above
-    const double lo = std::max(0.0, std::ceil((std::min(a.z_mm, b.z_mm) - env.z0_mm) / env.step_mm));
-    const double hi = std::floor((std::max(a.z_mm, b.z_mm) - env.z0_mm) / env.step_mm);
-    if (!(lo < static_cast<double>(env.r_mm.size()))) // beyond the grid (or not a number)
-        return;
-    for (auto i = static_cast<std::size_t>(lo); static_cast<double>(i) <= hi && i < env.r_mm.size(); ++i) {
-        const double along = (env.z(i) - a.z_mm) / (b.z_mm - a.z_mm);
-        env.r_mm[i] = std::max(env.r_mm[i], a.r_mm + along * (b.r_mm - a.r_mm));
-    }
+    raise(env, std::min(a.z_mm, b.z_mm), std::max(a.z_mm, b.z_mm),
+          [&](double z) { return a.r_mm + (z - a.z_mm) / (b.z_mm - a.z_mm) * (b.r_mm - a.r_mm); });
 }
 
 } // namespace

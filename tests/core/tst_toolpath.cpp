@@ -308,18 +308,11 @@ private Q_SLOTS:
     // about points 1 µm apart along the contour (an edge round included).
     void envelopeIsTheSweptDisc()
     {
-        const auto line = [](const char *id, SegmentKind kind, double z0, double r0, double z1, double r1) {
-            Segment s;
-            s.id = QString::fromLatin1(id);
-            s.kind = kind;
-            s.from = {z0, r0};
-            s.to = {z1, r1};
-            return s;
-        };
+        using test::seg;
         std::vector<Segment> contour{
-            line("O1", SegmentKind::Cylinder, 0, 20, 10, 20), line("O2", SegmentKind::Cone, 10, 20, 20, 15),
-            line("O3", SegmentKind::Face, 20, 15, 20, 10), line("O4", SegmentKind::Cylinder, 20, 10, 28, 10)};
-        Segment round = line("O5", SegmentKind::Radius, 28, 10, 30, 8);
+            seg("O1", SegmentKind::Cylinder, {0, 20}, {10, 20}), seg("O2", SegmentKind::Cone, {10, 20}, {20, 15}),
+            seg("O3", SegmentKind::Face, {20, 15}, {20, 10}), seg("O4", SegmentKind::Cylinder, {20, 10}, {28, 10})};
+        Segment round = seg("O5", SegmentKind::Radius, {28, 10}, {30, 8});
         round.arcRadius_mm = 2.0;
         round.arcDirection = ArcDirection::Clockwise;
         contour.push_back(round);
