@@ -417,10 +417,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>  Schlichten: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
     <message>
-        <source>  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev</source>
-        <translation>  Schruppen: %1 Schnitte mit ap %2 mm bei vc %3 m/min, f %4 mm/rev</translation>
-    </message>
-    <message>
         <source>  binding: </source>
         <translation>  begrenzend: </translation>
     </message>
@@ -443,10 +439,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>--objective is time or cost, not &quot;%1&quot;</source>
         <translation>--objective ist time oder cost, nicht „%1“</translation>
-    </message>
-    <message>
-        <source>wrote %1: %2 passes</source>
-        <translation>%1 geschrieben: %2 Schnitte</translation>
     </message>
     <message>
         <source>feed-speed (default) or feed-depth.</source>
@@ -751,6 +743,20 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>  to meet it: </source>
         <translation>  um sie einzuhalten: </translation>
+    </message>
+    <message numerus="yes">
+        <source>  roughing: %n pass(es) of ap %1 mm at vc %2 m/min, f %3 mm/rev</source>
+        <translation>
+            <numerusform>  Schruppen: %n Schnitt mit ap %1 mm bei vc %2 m/min, f %3 mm/rev</numerusform>
+            <numerusform>  Schruppen: %n Schnitte mit ap %1 mm bei vc %2 m/min, f %3 mm/rev</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>wrote %1: %n pass(es)</source>
+        <translation>
+            <numerusform>%1 geschrieben: %n Schnitt</numerusform>
+            <numerusform>%1 geschrieben: %n Schnitte</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4691,10 +4697,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Kein Plan erfüllt alle Randbedingungen; der Plan mit der geringsten Verletzung (%1): </translation>
     </message>
     <message>
-        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 roughing passes at vc %6 m/min, f %7 mm/rev.</source>
-        <translation>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 Schruppschnitte bei vc %6 m/min, f %7 mm/rev.</translation>
-    </message>
-    <message>
         <source>Binding: %1.</source>
         <translation>Begrenzend: %1.</translation>
     </message>
@@ -4934,6 +4936,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>To meet it: %1</source>
         <translation>Um sie einzuhalten: %1</translation>
     </message>
+    <message numerus="yes">
+        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc %5 m/min, f %6 mm/rev.</source>
+        <translation>
+            <numerusform>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %n Schruppschnitt bei vc %5 m/min, f %6 mm/rev.</numerusform>
+            <numerusform>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %n Schruppschnitte bei vc %5 m/min, f %6 mm/rev.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>
@@ -5104,10 +5113,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Schnittzeit gesamt</translation>
     </message>
     <message>
-        <source>Program O%1 for %2, %3 passes; spindle limit %4 rpm (%5). Checksum (SHA-256, first 16 digits) of the nominal program %6, of the compensated program %7: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
-        <translation>Programm O%1 für %2, %3 Schnitte; Drehzahlbegrenzung %4 1/min (%5). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %6, des kompensierten Programms %7: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</translation>
-    </message>
-    <message>
         <source>Program warning: %1</source>
         <translation>Programmwarnung: %1</translation>
     </message>
@@ -5130,6 +5135,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>collet: %1 mm held</source>
         <translation>Spannzange: %1 mm gespannt</translation>
+    </message>
+    <message numerus="yes">
+        <source>Program O%1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
+        <translation>
+            <numerusform>Programm O%1 für %2, %n Schnitt; Drehzahlbegrenzung %3 1/min (%4). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %5, des kompensierten Programms %6: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</numerusform>
+            <numerusform>Programm O%1 für %2, %n Schnitte; Drehzahlbegrenzung %3 1/min (%4). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %5, des kompensierten Programms %6: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -8614,10 +8626,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Schlichten: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
     <message>
-        <source>Roughing: %1 passes at vc %2 m/min, f %3 mm/rev</source>
-        <translation>Schruppen: %1 Schnitte bei vc %2 m/min, f %3 mm/rev</translation>
-    </message>
-    <message>
         <source>Binding: %1 (%2 of %3 %4)</source>
         <translation>Begrenzend: %1 (%2 von %3 %4)</translation>
     </message>
@@ -8808,6 +8816,13 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>To meet it: </source>
         <translation>Um sie einzuhalten: </translation>
+    </message>
+    <message numerus="yes">
+        <source>Roughing: %n pass(es) at vc %1 m/min, f %2 mm/rev</source>
+        <translation>
+            <numerusform>Schruppen: %n Schnitt bei vc %1 m/min, f %2 mm/rev</numerusform>
+            <numerusform>Schruppen: %n Schnitte bei vc %1 m/min, f %2 mm/rev</numerusform>
+        </translation>
     </message>
 </context>
 <context>

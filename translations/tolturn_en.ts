@@ -41,6 +41,20 @@
             <numerusform>, %n milled features</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>  roughing: %n pass(es) of ap %1 mm at vc %2 m/min, f %3 mm/rev</source>
+        <translation>
+            <numerusform>  roughing: %n pass of ap %1 mm at vc %2 m/min, f %3 mm/rev</numerusform>
+            <numerusform>  roughing: %n passes of ap %1 mm at vc %2 m/min, f %3 mm/rev</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>wrote %1: %n pass(es)</source>
+        <translation>
+            <numerusform>wrote %1: %n pass</numerusform>
+            <numerusform>wrote %1: %n passes</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>ControlExample</name>
@@ -103,6 +117,26 @@
         <translation>
             <numerusform>a %1 model does not take %n coefficient</numerusform>
             <numerusform>a %1 model does not take %n coefficients</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>Report</name>
+    <message numerus="yes">
+        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc %5 m/min, f %6 mm/rev.</source>
+        <translation>
+            <numerusform>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass at vc %5 m/min, f %6 mm/rev.</numerusform>
+            <numerusform>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing passes at vc %5 m/min, f %6 mm/rev.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>SetupSheet</name>
+    <message numerus="yes">
+        <source>Program O%1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
+        <translation>
+            <numerusform>Program O%1 for %2, %n pass; spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</numerusform>
+            <numerusform>Program O%1 for %2, %n passes; spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</numerusform>
         </translation>
     </message>
 </context>
@@ -175,6 +209,16 @@
         <translation>
             <numerusform>Measured %1 by %2 (%3), %n point compared.</numerusform>
             <numerusform>Measured %1 by %2 (%3), %n points compared.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tolturn::PlanningPanel</name>
+    <message numerus="yes">
+        <source>Roughing: %n pass(es) at vc %1 m/min, f %2 mm/rev</source>
+        <translation>
+            <numerusform>Roughing: %n pass at vc %1 m/min, f %2 mm/rev</numerusform>
+            <numerusform>Roughing: %n passes at vc %1 m/min, f %2 mm/rev</numerusform>
         </translation>
     </message>
 </context>

@@ -417,10 +417,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>  acabado: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
     <message>
-        <source>  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev</source>
-        <translation>  desbaste: %1 pasadas de ap %2 mm a vc %3 m/min, f %4 mm/rev</translation>
-    </message>
-    <message>
         <source>  binding: </source>
         <translation>  restricciones activas: </translation>
     </message>
@@ -443,10 +439,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>--objective is time or cost, not &quot;%1&quot;</source>
         <translation>--objective es time o cost, no &quot;%1&quot;</translation>
-    </message>
-    <message>
-        <source>wrote %1: %2 passes</source>
-        <translation>se ha escrito %1: %2 pasadas</translation>
     </message>
     <message>
         <source>feed-speed (default) or feed-depth.</source>
@@ -751,6 +743,20 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>  to meet it: </source>
         <translation>  para cumplirla: </translation>
+    </message>
+    <message numerus="yes">
+        <source>  roughing: %n pass(es) of ap %1 mm at vc %2 m/min, f %3 mm/rev</source>
+        <translation>
+            <numerusform>  desbaste: %n pasada de ap %1 mm a vc %2 m/min, f %3 mm/rev</numerusform>
+            <numerusform>  desbaste: %n pasadas de ap %1 mm a vc %2 m/min, f %3 mm/rev</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>wrote %1: %n pass(es)</source>
+        <translation>
+            <numerusform>se ha escrito %1: %n pasada</numerusform>
+            <numerusform>se ha escrito %1: %n pasadas</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4691,10 +4697,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Ningún plan cumple todas las restricciones; el que menos las incumple (%1): </translation>
     </message>
     <message>
-        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 roughing passes at vc %6 m/min, f %7 mm/rev.</source>
-        <translation>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %5 pasadas de desbaste a vc %6 m/min, f %7 mm/rev.</translation>
-    </message>
-    <message>
         <source>Binding: %1.</source>
         <translation>Restricciones activas: %1.</translation>
     </message>
@@ -4934,6 +4936,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>To meet it: %1</source>
         <translation>Para cumplirla: %1</translation>
     </message>
+    <message numerus="yes">
+        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc %5 m/min, f %6 mm/rev.</source>
+        <translation>
+            <numerusform>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %n pasada de desbaste a vc %5 m/min, f %6 mm/rev.</numerusform>
+            <numerusform>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %n pasadas de desbaste a vc %5 m/min, f %6 mm/rev.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>RevolvedFaces</name>
@@ -5104,10 +5113,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>corte total</translation>
     </message>
     <message>
-        <source>Program O%1 for %2, %3 passes; spindle limit %4 rpm (%5). Checksum (SHA-256, first 16 digits) of the nominal program %6, of the compensated program %7: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
-        <translation>Programa O%1 para %2, %3 pasadas; límite del husillo %4 rpm (%5). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %6, del programa compensado %7: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</translation>
-    </message>
-    <message>
         <source>Program warning: %1</source>
         <translation>Aviso del programa: %1</translation>
     </message>
@@ -5130,6 +5135,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>collet: %1 mm held</source>
         <translation>pinza: %1 mm sujetos</translation>
+    </message>
+    <message numerus="yes">
+        <source>Program O%1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
+        <translation>
+            <numerusform>Programa O%1 para %2, %n pasada; límite del husillo %3 rpm (%4). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %5, del programa compensado %6: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</numerusform>
+            <numerusform>Programa O%1 para %2, %n pasadas; límite del husillo %3 rpm (%4). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %5, del programa compensado %6: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -8614,10 +8626,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Acabado: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
     <message>
-        <source>Roughing: %1 passes at vc %2 m/min, f %3 mm/rev</source>
-        <translation>Desbaste: %1 pasadas a vc %2 m/min, f %3 mm/rev</translation>
-    </message>
-    <message>
         <source>Binding: %1 (%2 of %3 %4)</source>
         <translation>Restricción activa: %1 (%2 de %3 %4)</translation>
     </message>
@@ -8808,6 +8816,13 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>To meet it: </source>
         <translation>Para cumplirla: </translation>
+    </message>
+    <message numerus="yes">
+        <source>Roughing: %n pass(es) at vc %1 m/min, f %2 mm/rev</source>
+        <translation>
+            <numerusform>Desbaste: %n pasada a vc %1 m/min, f %2 mm/rev</numerusform>
+            <numerusform>Desbaste: %n pasadas a vc %1 m/min, f %2 mm/rev</numerusform>
+        </translation>
     </message>
 </context>
 <context>

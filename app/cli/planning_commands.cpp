@@ -77,8 +77,8 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
                     QString::number(r.candidate.finishing.depthOfCut_mm, 'f', 3))
         << '\n';
     if (r.candidate.roughingPasses > 0)
-        out << CommandLine::tr("  roughing: %1 passes of ap %2 mm at vc %3 m/min, f %4 mm/rev")
-                   .arg(r.candidate.roughingPasses)
+        out << CommandLine::tr("  roughing: %n pass(es) of ap %1 mm at vc %2 m/min, f %3 mm/rev", nullptr,
+                               r.candidate.roughingPasses)
                    .arg(QString::number(rough.depthOfCut_mm, 'f', 3), QString::number(rough.cuttingSpeed_m_min, 'f', 1),
                         QString::number(rough.feed_mm_rev, 'f', 3))
             << '\n';
@@ -244,7 +244,7 @@ int runOptimize(const QStringList &args, QTextStream &out, QTextStream &err)
             err << w.error << '\n';
             return kExitProblems;
         }
-        err << CommandLine::tr("wrote %1: %2 passes").arg(file).arg(passes.size()) << '\n';
+        err << CommandLine::tr("wrote %1: %n pass(es)", nullptr, static_cast<int>(passes.size())).arg(file) << '\n';
     }
     return kExitOk;
 }

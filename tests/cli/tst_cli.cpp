@@ -716,6 +716,8 @@ private Q_SLOTS:
         const Run text = runCli({QStringLiteral("optimize"), example("valve-body-two-bores.tolturn")});
         QVERIFY2(text.out.contains(QStringLiteral("  to meet it: Ra ≤ 1.6 µm needs a feed of at most 0.143 mm/rev")),
                  qPrintable(text.out));
+        // One roughing pass takes the valve body's 2 mm of stock above the finishing allowance.
+        QVERIFY2(text.out.contains(QStringLiteral("  roughing: 1 pass of ap 2.000 mm")), qPrintable(text.out));
     }
 
     void optimizeWithoutRangesIsAnError()

@@ -293,6 +293,7 @@ private Q_SLOTS:
         QVERIFY2(plan.contains(QStringLiteral("To meet it: Ra ≤ 1.6 µm needs a feed of at most 0.143 mm/rev")),
                  qPrintable(plan));
         QVERIFY2(plan.contains(QStringLiteral("No spindle power limit known")), qPrintable(plan));
+        QVERIFY2(plan.contains(QStringLiteral("; 1 roughing pass at vc")), qPrintable(plan)); // one, not "passes"
         const QString beforeAssumptions = plan.section(QStringLiteral("Assumptions"), 0, 0);
         QVERIFY2(!beforeAssumptions.contains(QStringLiteral("Thermal drift not characterised")), qPrintable(plan));
     }

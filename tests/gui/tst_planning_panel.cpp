@@ -7,6 +7,7 @@
 
 #include "app/gui/main_window.h"
 #include "core/data/data_library.h"
+#include "translations/i18n.h"
 #include "widgets/document/project_document.h"
 #include "widgets/planning/adaptive_tab.h"
 #include "widgets/planning/end_milling_example_dialog.h"
@@ -73,6 +74,8 @@ private Q_SLOTS:
     {
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("TolTurnTest"));
+        // The English plural forms, as the application installs them ("1 pass", not "1 pass(es)").
+        installTranslations(*QCoreApplication::instance(), QLocale(QLocale::English));
     }
 
     void optimisationFillsTheViews()
@@ -244,6 +247,7 @@ private Q_SLOTS:
         const auto remedy =
             text.indexOf(QStringLiteral("To meet it: Ra ≤ 1.6 µm needs a feed of at most 0.143 mm/rev"));
         QVERIFY2(violated >= 0 && remedy > violated, qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Roughing: 1 pass at vc")), qPrintable(text)); // one, not "passes"
         w.resize(1600, 1000);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

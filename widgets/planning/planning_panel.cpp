@@ -436,8 +436,7 @@ void PlanningPanel::showReport()
                  .arg(number(r.candidate.finishing.cuttingSpeed_m_min, 1), number(r.candidate.finishing.feed_mm_rev, 3),
                       number(r.candidate.finishing.depthOfCut_mm, 3));
     if (r.candidate.roughingPasses > 0)
-        lines << tr("Roughing: %1 passes at vc %2 m/min, f %3 mm/rev")
-                     .arg(r.candidate.roughingPasses)
+        lines << tr("Roughing: %n pass(es) at vc %1 m/min, f %2 mm/rev", nullptr, r.candidate.roughingPasses)
                      .arg(number(r.candidate.roughing.cuttingSpeed_m_min, 1),
                           number(r.candidate.roughing.feed_mm_rev, 3));
     for (const ConstraintValue &c : r.binding)
