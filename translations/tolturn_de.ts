@@ -5612,40 +5612,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| &gt; t</translation>
     </message>
     <message>
-        <source>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</source>
-        <translation>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</translation>
-    </message>
-    <message>
         <source>there is no feature &apos;%1&apos; in the profile</source>
         <translation>im Profil gibt es kein Formelement „%1“</translation>
     </message>
     <message>
-        <source>Fig. 4c, eq. 16: e_i &lt;= t</source>
-        <translation>Fig. 4c, eq. 16: e_i &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4f, eq. 23: e_j &lt;= t</source>
-        <translation>Fig. 4f, eq. 23: e_j &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4i, §V.J (eq. 16 and 24): e_j &lt;= t</source>
-        <translation>Fig. 4i, §V.J (eq. 16 und 24): e_j &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4g, eq. 24 (face to the datum axis): e_j &lt;= t</source>
-        <translation>Fig. 4g, eq. 24 (Planfläche zur Bezugsachse): e_j &lt;= t</translation>
-    </message>
-    <message>
         <source>Perpendicularity of an axis to a face depends on how the part is aligned in the lathe; the axis recovers elastically after cutting, so the cutting-force deflection does not decide it (Valiño et al. 2008 §V.G.2).</source>
         <translation>Die Rechtwinkligkeit einer Achse zu einer Planfläche hängt davon ab, wie das Teil in der Drehmaschine ausgerichtet ist; die Achse federt nach dem Schnitt elastisch zurück, daher entscheidet die Verformung unter der Schnittkraft nicht darüber (Valiño et al. 2008 §V.G.2).</translation>
-    </message>
-    <message>
-        <source>Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| &lt;= t</source>
-        <translation>Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| &lt;= t</source>
-        <translation>Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| &lt;= t</translation>
     </message>
     <message>
         <source>Coaxiality limits how far parts of the axis lie apart; the axis recovers elastically after cutting, so the error comes from set-up and alignment, not from the cutting-force deflection (Valiño et al. 2008 §V.H).</source>
@@ -5676,10 +5648,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>nicht auswertbar</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
-        <translation>ISO 1101 Flächenform, ohne Bezug (die Zone schwimmt längs der Achse): 2 min über dz von max |delta_n - dz n_z| &lt;= t</translation>
-    </message>
-    <message>
         <source>the predicted deviation of feature %1 is not finite, so nothing can be said of it</source>
         <translation>die vorhergesagte Abweichung von Element %1 ist nicht endlich, daher lässt sich nichts darüber sagen</translation>
     </message>
@@ -5708,12 +5676,56 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>eine konstante Werkzeugkorrektur von %1 µm auf den Durchmesser zentriert das Maß in der %2 µm breiten Zone, die alle Maßtoleranzen des Formelements zulassen</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile to a datum axis only (the zone may slide along it): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
-        <translation>ISO 1101 Flächenform, nur zu einer Bezugsachse (die Zone darf längs ihr gleiten): 2 min über dz von max |delta_n - dz n_z| &lt;= t</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, with a datum that locates it along the axis: every delta_n within ±t/2</source>
         <translation>ISO 1101 Flächenform, mit einem Bezug, der sie längs der Achse festlegt: jedes delta_n innerhalb ±t/2</translation>
+    </message>
+    <message>
+        <source>%1: %2 &lt;= t</source>
+        <translation>%1: %2 &lt;= t</translation>
+    </message>
+    <message>
+        <source>%1: %2 &gt; t</source>
+        <translation>%1: %2 &gt; t</translation>
+    </message>
+    <message>
+        <source>Fig. 4a, eq. 11–12</source>
+        <translation>Fig. 4a, eq. 11–12</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, no datum (the zone floats along the axis)</source>
+        <translation>ISO 1101 Flächenform, ohne Bezug (die Zone schwimmt längs der Achse)</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile to a datum axis only (the zone may slide along it)</source>
+        <translation>ISO 1101 Flächenform, nur zu einer Bezugsachse (die Zone darf längs ihr gleiten)</translation>
+    </message>
+    <message>
+        <source>Fig. 4c, eq. 16</source>
+        <translation>Fig. 4c, eq. 16</translation>
+    </message>
+    <message>
+        <source>Fig. 4f, eq. 23</source>
+        <translation>Fig. 4f, eq. 23</translation>
+    </message>
+    <message>
+        <source>Fig. 4i, §V.J (eq. 16 and 24)</source>
+        <translation>Fig. 4i, §V.J (eq. 16 und 24)</translation>
+    </message>
+    <message>
+        <source>Fig. 4g, eq. 24 (face to the datum axis)</source>
+        <translation>Fig. 4g, eq. 24 (Planfläche zur Bezugsachse)</translation>
+    </message>
+    <message>
+        <source>Fig. 4d, eq. 19</source>
+        <translation>Fig. 4d, eq. 19</translation>
+    </message>
+    <message>
+        <source>Fig. 4h, §V.J (eq. 19)</source>
+        <translation>Fig. 4h, §V.J (eq. 19)</translation>
+    </message>
+    <message>
+        <source>2 min over dz of max |delta_n - dz n_z|</source>
+        <translation>2 min über dz von max |delta_n - dz n_z|</translation>
     </message>
 </context>
 <context>

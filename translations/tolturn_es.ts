@@ -5612,40 +5612,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Fig. 4b, eq. 15: 2|delta_TMd - delta_Tmd| &gt; t</translation>
     </message>
     <message>
-        <source>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</source>
-        <translation>Fig. 4a, eq. 11–12: e_i + e_j &lt;= t</translation>
-    </message>
-    <message>
         <source>there is no feature &apos;%1&apos; in the profile</source>
         <translation>no existe el elemento &apos;%1&apos; en el perfil</translation>
     </message>
     <message>
-        <source>Fig. 4c, eq. 16: e_i &lt;= t</source>
-        <translation>Fig. 4c, eq. 16: e_i &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4f, eq. 23: e_j &lt;= t</source>
-        <translation>Fig. 4f, eq. 23: e_j &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4i, §V.J (eq. 16 and 24): e_j &lt;= t</source>
-        <translation>Fig. 4i, §V.J (eq. 16 y 24): e_j &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4g, eq. 24 (face to the datum axis): e_j &lt;= t</source>
-        <translation>Fig. 4g, eq. 24 (cara respecto al eje de referencia): e_j &lt;= t</translation>
-    </message>
-    <message>
         <source>Perpendicularity of an axis to a face depends on how the part is aligned in the lathe; the axis recovers elastically after cutting, so the cutting-force deflection does not decide it (Valiño et al. 2008 §V.G.2).</source>
         <translation>La perpendicularidad de un eje respecto a una cara depende de cómo se alinea la pieza en el torno; el eje se recupera elásticamente tras el corte, por lo que la flexión debida a la fuerza de corte no la determina (Valiño et al. 2008 §V.G.2).</translation>
-    </message>
-    <message>
-        <source>Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| &lt;= t</source>
-        <translation>Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| &lt;= t</translation>
-    </message>
-    <message>
-        <source>Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| &lt;= t</source>
-        <translation>Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| &lt;= t</translation>
     </message>
     <message>
         <source>Coaxiality limits how far parts of the axis lie apart; the axis recovers elastically after cutting, so the error comes from set-up and alignment, not from the cutting-force deflection (Valiño et al. 2008 §V.H).</source>
@@ -5676,10 +5648,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>no se puede evaluar</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
-        <translation>ISO 1101 forma de superficie, sin referencia (la zona flota a lo largo del eje): 2 min sobre dz de max |delta_n - dz n_z| &lt;= t</translation>
-    </message>
-    <message>
         <source>the predicted deviation of feature %1 is not finite, so nothing can be said of it</source>
         <translation>la desviación prevista del elemento %1 no es finita, así que no se puede decir nada de ella</translation>
     </message>
@@ -5708,12 +5676,56 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>una corrección constante de la herramienta de %1 µm en el diámetro centra la medida en la zona de %2 µm que permiten todas las tolerancias de tamaño del elemento</translation>
     </message>
     <message>
-        <source>ISO 1101 surface profile to a datum axis only (the zone may slide along it): 2 min over dz of max |delta_n - dz n_z| &lt;= t</source>
-        <translation>ISO 1101 forma de superficie, solo respecto a un eje de referencia (la zona puede deslizarse a lo largo de él): 2 min sobre dz de max |delta_n - dz n_z| &lt;= t</translation>
-    </message>
-    <message>
         <source>ISO 1101 surface profile, with a datum that locates it along the axis: every delta_n within ±t/2</source>
         <translation>ISO 1101 forma de superficie, con una referencia que la sitúa a lo largo del eje: cada delta_n dentro de ±t/2</translation>
+    </message>
+    <message>
+        <source>%1: %2 &lt;= t</source>
+        <translation>%1: %2 &lt;= t</translation>
+    </message>
+    <message>
+        <source>%1: %2 &gt; t</source>
+        <translation>%1: %2 &gt; t</translation>
+    </message>
+    <message>
+        <source>Fig. 4a, eq. 11–12</source>
+        <translation>Fig. 4a, eq. 11–12</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile, no datum (the zone floats along the axis)</source>
+        <translation>ISO 1101 forma de superficie, sin referencia (la zona flota a lo largo del eje)</translation>
+    </message>
+    <message>
+        <source>ISO 1101 surface profile to a datum axis only (the zone may slide along it)</source>
+        <translation>ISO 1101 forma de superficie, solo respecto a un eje de referencia (la zona puede deslizarse a lo largo de él)</translation>
+    </message>
+    <message>
+        <source>Fig. 4c, eq. 16</source>
+        <translation>Fig. 4c, eq. 16</translation>
+    </message>
+    <message>
+        <source>Fig. 4f, eq. 23</source>
+        <translation>Fig. 4f, eq. 23</translation>
+    </message>
+    <message>
+        <source>Fig. 4i, §V.J (eq. 16 and 24)</source>
+        <translation>Fig. 4i, §V.J (eq. 16 y 24)</translation>
+    </message>
+    <message>
+        <source>Fig. 4g, eq. 24 (face to the datum axis)</source>
+        <translation>Fig. 4g, eq. 24 (cara respecto al eje de referencia)</translation>
+    </message>
+    <message>
+        <source>Fig. 4d, eq. 19</source>
+        <translation>Fig. 4d, eq. 19</translation>
+    </message>
+    <message>
+        <source>Fig. 4h, §V.J (eq. 19)</source>
+        <translation>Fig. 4h, §V.J (eq. 19)</translation>
+    </message>
+    <message>
+        <source>2 min over dz of max |delta_n - dz n_z|</source>
+        <translation>2 min sobre dz de max |delta_n - dz n_z|</translation>
     </message>
 </context>
 <context>

@@ -32,6 +32,24 @@ void say(QString &target, Text &&text)
         target = text();
 }
 
+// A condition of the form "quantity <= t": where it comes from (a figure and equation of Valiño
+// et al. 2008) and its left-hand side, each translated where marked with QT_TRANSLATE_NOOP.
+struct Rule {
+    const char *reference;
+    const char *quantity;
+};
+
+// The rule as it came out: "Fig. 4c, eq. 16: e_i <= t" when it holds, "... > t" when not.
+void sayRule(ToleranceEvaluation &e, const Rule &rule, bool holds)
+{
+    say(e.condition, [&] {
+        const QString reference = QCoreApplication::translate("ToleranceVerdicts", rule.reference);
+        const QString quantity = QCoreApplication::translate("ToleranceVerdicts", rule.quantity);
+        return holds ? ToleranceVerdicts::tr("%1: %2 <= t").arg(reference, quantity)
+                     : ToleranceVerdicts::tr("%1: %2 > t").arg(reference, quantity);
+    });
+}
+
 const FeatureDeviation *stationsOf(const DeviationResult &r, const QString &id)
 {
     for (const FeatureDeviation &f : r.features) {
@@ -192,14 +210,14 @@ void evaluateLength(const Project &p, const Tolerance &t, const DeviationResult 
         return;
     const double value = (fi->axialRunout_mm + fj->axialRunout_mm) * kUmPerMm;
     setValue(e, value, *e.upper_um - *e.lower_um);
-    e.verdict = value <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-    say(e.condition, [&] { return QString(ToleranceVerdicts::tr("Fig. 4a, eq. 11–12: e_i + e_j <= t")); });
+    const bool holds = value <= *e.limit_um;
+    e.verdict = holds ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+    sayRule(e, {QT_TRANSLATE_NOOP("ToleranceVerdicts", "Fig. 4a, eq. 11–12"), "e_i + e_j"}, holds);
 }
 
 // A face's own conicity against the zone (flatness eq. 16; parallelism eq. 23; perpendicularity
 // to the axis eq. 24; total axial run-out §V.J): e <= t.
-void evaluateFaceConicity(const Tolerance &t, const DeviationResult &r, ToleranceEvaluation &e,
-                          const QString &condition)
+void evaluateFaceConicity(const Tolerance &t, const DeviationResult &r, ToleranceEvaluation &e, const Rule &rule)
 {
     const FaceConicity *f = faceOf(r, t.featureId);
     if (!f) {
@@ -207,13 +225,13 @@ void evaluateFaceConicity(const Tolerance &t, const DeviationResult &r, Toleranc
         return;
     }
     setValue(e, f->axialRunout_mm * kUmPerMm, t.zone_um.value_or(0.0));
-    e.verdict = *e.value_um <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-    say(e.condition, [&] { return QString(condition); });
+    const bool holds = *e.value_um <= *e.limit_um;
+    e.verdict = holds ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+    sayRule(e, rule, holds);
 }
 
 // Cylindricity (eq. 19) and total radial run-out (§V.J): |delta_TMd - delta_Tmd| <= t.
-void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, ToleranceEvaluation &e,
-                          const QString &condition)
+void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, ToleranceEvaluation &e, const Rule &rule)
 {
     const FeatureDeviation *f = stationsOf(r, t.featureId);
     if (!f) {
@@ -222,8 +240,9 @@ void evaluateRadialSpread(const Tolerance &t, const DeviationResult &r, Toleranc
     }
     const auto [lo, hi] = radiusErrorRange_um(*f);
     setValue(e, hi - lo, t.zone_um.value_or(0.0));
-    e.verdict = *e.value_um <= *e.limit_um ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-    say(e.condition, [&] { return QString(condition); });
+    const bool holds = *e.value_um <= *e.limit_um;
+    e.verdict = holds ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+    sayRule(e, rule, holds);
 }
 
 // The s that minimises the largest |d_i - s c_i| over the pairs (d_i, c_i), and that largest value.
@@ -370,16 +389,19 @@ void evaluateProfile(const ProgramTargets &targets, const Tolerance &t, const Fe
     if (!located) {
         const double floating = floatingZoneWidth_um(normals);
         setValue(e, floating, zone);
-        e.verdict = floating <= zone ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
-        say(e.condition, [&] {
-            return t.datums.isEmpty()
-                       ? QString(ToleranceVerdicts::tr(
-                             "ISO 1101 surface profile, no datum (the zone floats along the axis): 2 min over dz "
-                             "of max |delta_n - dz n_z| <= t"))
-                       : QString(ToleranceVerdicts::tr(
-                             "ISO 1101 surface profile to a datum axis only (the zone may slide along it): 2 min "
-                             "over dz of max |delta_n - dz n_z| <= t"));
-        });
+        const bool holds = floating <= zone;
+        e.verdict = holds ? Verdict::PassesAsProgrammed : Verdict::NeedsProfileCorrection;
+        const char *spread = QT_TRANSLATE_NOOP("ToleranceVerdicts", "2 min over dz of max |delta_n - dz n_z|");
+        sayRule(e,
+                t.datums.isEmpty()
+                    ? Rule{QT_TRANSLATE_NOOP("ToleranceVerdicts",
+                                             "ISO 1101 surface profile, no datum (the zone floats along the axis)"),
+                           spread}
+                    : Rule{QT_TRANSLATE_NOOP("ToleranceVerdicts",
+                                             "ISO 1101 surface profile to a datum axis only (the zone may slide along "
+                                             "it)"),
+                           spread},
+                holds);
         return;
     }
     // Located zone: the deciding value is twice the largest distance from the exact profile.
@@ -451,17 +473,18 @@ ToleranceEvaluation evaluateOne(const Project &p, const ProgramTargets &targets,
         evaluateLength(p, t, r, e);
         break;
     case ToleranceType::Flatness:
-        evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4c, eq. 16: e_i <= t"));
+        evaluateFaceConicity(t, r, e, {QT_TRANSLATE_NOOP("ToleranceVerdicts", "Fig. 4c, eq. 16"), "e_i"});
         break;
     case ToleranceType::Parallelism:
-        evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4f, eq. 23: e_j <= t"));
+        evaluateFaceConicity(t, r, e, {QT_TRANSLATE_NOOP("ToleranceVerdicts", "Fig. 4f, eq. 23"), "e_j"});
         break;
     case ToleranceType::TotalAxialRunout:
-        evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4i, §V.J (eq. 16 and 24): e_j <= t"));
+        evaluateFaceConicity(t, r, e, {QT_TRANSLATE_NOOP("ToleranceVerdicts", "Fig. 4i, §V.J (eq. 16 and 24)"), "e_j"});
         break;
     case ToleranceType::Perpendicularity:
         if (feature->segment->kind == SegmentKind::Face)
-            evaluateFaceConicity(t, r, e, ToleranceVerdicts::tr("Fig. 4g, eq. 24 (face to the datum axis): e_j <= t"));
+            evaluateFaceConicity(
+                t, r, e, {QT_TRANSLATE_NOOP("ToleranceVerdicts", "Fig. 4g, eq. 24 (face to the datum axis)"), "e_j"});
         else
             notPredicted(e, ToleranceVerdicts::tr(
                                 "Perpendicularity of an axis to a face depends on how the part is aligned in the "
@@ -469,10 +492,12 @@ ToleranceEvaluation evaluateOne(const Project &p, const ProgramTargets &targets,
                                 "does not decide it (Valiño et al. 2008 §V.G.2)."));
         break;
     case ToleranceType::Cylindricity:
-        evaluateRadialSpread(t, r, e, ToleranceVerdicts::tr("Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| <= t"));
+        evaluateRadialSpread(t, r, e,
+                             {QT_TRANSLATE_NOOP("ToleranceVerdicts", "Fig. 4d, eq. 19"), "|delta_TMd - delta_Tmd|"});
         break;
     case ToleranceType::TotalRadialRunout:
-        evaluateRadialSpread(t, r, e, ToleranceVerdicts::tr("Fig. 4h, §V.J (eq. 19): |delta_TMd - delta_Tmd| <= t"));
+        evaluateRadialSpread(
+            t, r, e, {QT_TRANSLATE_NOOP("ToleranceVerdicts", "Fig. 4h, §V.J (eq. 19)"), "|delta_TMd - delta_Tmd|"});
         break;
     case ToleranceType::Profile:
         evaluateProfile(targets, t, *feature, r, profileZoneIsLocated(p, t), e);

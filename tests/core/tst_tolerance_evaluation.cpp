@@ -148,12 +148,14 @@ private Q_SLOTS:
         cubic.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return 1e-5 * z * z * z; })};
         DeviationResult linear;
         linear.features = {curve("O2", SegmentKind::Cylinder, 0, 100, [](double z) { return -2.0 - 0.04 * z; })};
-        QCOMPARE(evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic).verdict,
-                 Verdict::NeedsProfileCorrection);
-        QVERIFY(
-            test::nearAbsolute(*evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic).value_um, 10.0, 1e-9));
-        QCOMPARE(evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), linear).verdict,
-                 Verdict::PassesAsProgrammed);
+        const ToleranceEvaluation failing = evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), cubic);
+        QCOMPARE(failing.verdict, Verdict::NeedsProfileCorrection);
+        QVERIFY(test::nearAbsolute(*failing.value_um, 10.0, 1e-9));
+        // The condition says which way it came out: 10 > 8 fails, 4 <= 8 holds.
+        QCOMPARE(failing.condition, QStringLiteral("Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| > t"));
+        const ToleranceEvaluation holding = evaluate(geometric(ToleranceType::Cylindricity, "O2", 8), linear);
+        QCOMPARE(holding.verdict, Verdict::PassesAsProgrammed);
+        QCOMPARE(holding.condition, QStringLiteral("Fig. 4d, eq. 19: |delta_TMd - delta_Tmd| <= t"));
         const ToleranceEvaluation runout =
             evaluate(geometric(ToleranceType::TotalRadialRunout, "O2", 12, {QStringLiteral("A")}), cubic);
         QCOMPARE(runout.verdict, Verdict::PassesAsProgrammed);
@@ -180,7 +182,11 @@ private Q_SLOTS:
         const ToleranceEvaluation floating = evaluate(geometric(ToleranceType::Profile, "O3", 5), r);
         QCOMPARE(floating.verdict, Verdict::PassesAsProgrammed);
         QVERIFY(std::abs(*floating.value_um - 4.472136) < 1e-5);
-        QCOMPARE(evaluate(geometric(ToleranceType::Profile, "O3", 4.4), r).verdict, Verdict::NeedsProfileCorrection);
+        const ToleranceEvaluation tooWide = evaluate(geometric(ToleranceType::Profile, "O3", 4.4), r);
+        QCOMPARE(tooWide.verdict, Verdict::NeedsProfileCorrection);
+        QVERIFY2(tooWide.condition.endsWith(QStringLiteral("|delta_n - dz n_z| > t")), qPrintable(tooWide.condition));
+        QVERIFY2(floating.condition.endsWith(QStringLiteral("|delta_n - dz n_z| <= t")),
+                 qPrintable(floating.condition));
 
         const ToleranceEvaluation toAnAxis =
             evaluate(geometric(ToleranceType::Profile, "O3", 5, {QStringLiteral("A")}), r);
@@ -342,6 +348,7 @@ private Q_SLOTS:
         e = evaluate(t, r);
         QCOMPARE(e.verdict, Verdict::NeedsProfileCorrection);
         QVERIFY(test::nearAbsolute(*e.utilisation_pct, 125.0, 1e-9));
+        QCOMPARE(e.condition, QStringLiteral("Fig. 4a, eq. 11–12: e_i + e_j > t"));
     }
 
     // Flatness (eq. 16), parallelism (eq. 23), perpendicularity of a face (eq. 24), total axial
