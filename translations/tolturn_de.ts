@@ -4455,10 +4455,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>erfüllt nur auf den steiferen Maschinen des Bereichs</translation>
     </message>
     <message>
-        <source>fails even on the stiffest machine of the range</source>
-        <translation>verfehlt sogar auf der steifsten Maschine des Bereichs</translation>
-    </message>
-    <message>
         <source>chuck not measured: radial stiffness %1–%2 N/µm at the chuck face (%3), results at both ends, verdicts and plans at the compliant end</source>
         <translation>Futter nicht gemessen: radiale Steifigkeit %1–%2 N/µm an der Futterstirn (%3), Ergebnisse an beiden Enden, Bewertungen und Pläne am nachgiebigen Ende</translation>
     </message>
@@ -4501,6 +4497,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>collet not measured and no published stiffness: taken as rigid (optimistic); see the stiffness each tolerance needs</source>
         <translation>Spannzange nicht gemessen und keine veröffentlichte Steifigkeit: als starr angenommen (optimistisch); siehe die Steifigkeit, die jede Toleranz braucht</translation>
+    </message>
+    <message>
+        <source>fails as programmed; an offset of %1 µm on the diameter holds it on any machine in the range</source>
+        <translation>verfehlt wie programmiert; eine Korrektur von %1 µm am Durchmesser hält sie auf jeder Maschine des Bereichs</translation>
+    </message>
+    <message>
+        <source>fails as programmed even on the stiffest machine of the range</source>
+        <translation>verfehlt wie programmiert sogar auf der steifsten Maschine des Bereichs</translation>
     </message>
 </context>
 <context>

@@ -4455,10 +4455,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>cumple solo en las máquinas más rígidas del rango</translation>
     </message>
     <message>
-        <source>fails even on the stiffest machine of the range</source>
-        <translation>no cumple ni en la máquina más rígida del rango</translation>
-    </message>
-    <message>
         <source>chuck not measured: radial stiffness %1–%2 N/µm at the chuck face (%3), results at both ends, verdicts and plans at the compliant end</source>
         <translation>plato no medido: rigidez radial %1–%2 N/µm en la cara del plato (%3), resultados en ambos extremos, veredictos y planes en el extremo flexible</translation>
     </message>
@@ -4501,6 +4497,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>collet not measured and no published stiffness: taken as rigid (optimistic); see the stiffness each tolerance needs</source>
         <translation>pinza no medida y sin rigidez publicada: tomada como rígida (optimista); vea la rigidez que necesita cada tolerancia</translation>
+    </message>
+    <message>
+        <source>fails as programmed; an offset of %1 µm on the diameter holds it on any machine in the range</source>
+        <translation>no cumple tal como está programado; una corrección de %1 µm en el diámetro la mantiene en cualquier máquina del rango</translation>
+    </message>
+    <message>
+        <source>fails as programmed even on the stiffest machine of the range</source>
+        <translation>no cumple tal como está programado ni en la máquina más rígida del rango</translation>
     </message>
 </context>
 <context>

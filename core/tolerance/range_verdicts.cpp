@@ -34,6 +34,25 @@ bool passes(const ToleranceEvaluation &e)
     return e.verdict == Verdict::PassesAsProgrammed;
 }
 
+// One constant offset of the programmed size that holds a size at both ends of the range, where
+// neither holds as programmed: the predicted sizes of both ends (each about the same programmed
+// size) must fit in the zone together, and the offset centres them. Between the ends the size moves
+// with 1/K, so it stays between them.
+std::optional<double> offsetForBothEnds(const ToleranceEvaluation &compliant, const ToleranceEvaluation &stiff)
+{
+    if (compliant.verdict != Verdict::PassesAfterOffset || stiff.verdict != Verdict::PassesAfterOffset ||
+        !compliant.predictedMax_um || !compliant.predictedMin_um || !stiff.predictedMax_um || !stiff.predictedMin_um ||
+        !compliant.offset_um || !compliant.limit_um)
+        return std::nullopt;
+    const double largest = std::max(*compliant.predictedMax_um, *stiff.predictedMax_um);
+    const double smallest = std::min(*compliant.predictedMin_um, *stiff.predictedMin_um);
+    if (largest - smallest > *compliant.limit_um)
+        return std::nullopt;
+    // offset_um centres the compliant end's sizes; move it by how far the union's middle lies from theirs.
+    const double compliantMiddle = 0.5 * (*compliant.predictedMax_um + *compliant.predictedMin_um);
+    return *compliant.offset_um + compliantMiddle - 0.5 * (largest + smallest);
+}
+
 bool decided(const ToleranceEvaluation &e)
 {
     return e.verdict != Verdict::NotPredicted && e.verdict != Verdict::CannotEvaluate;
@@ -197,8 +216,11 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
             e.range = RangeVerdict::PassesOnPartOfRange;
         else if (passes(*e.stiff))
             e.range = RangeVerdict::PassesIfStiffer;
-        else
-            e.range = RangeVerdict::FailsEvenOnStiffest;
+        else {
+            e.offsetOnAnyMachine_um = offsetForBothEnds(e.compliant, *e.stiff);
+            e.range = e.offsetOnAnyMachine_um ? RangeVerdict::PassesAfterOffsetOnAnyMachine
+                                              : RangeVerdict::FailsEvenOnStiffest;
+        }
         out.tolerances.push_back(e);
     }
     return out;
@@ -237,6 +259,8 @@ QString rangeVerdictKeyword(RangeVerdict verdict)
         return QStringLiteral("passes_if_stiffer");
     case RangeVerdict::PassesOnPartOfRange:
         return QStringLiteral("passes_on_part_of_range");
+    case RangeVerdict::PassesAfterOffsetOnAnyMachine:
+        return QStringLiteral("passes_after_offset_on_any_machine");
     case RangeVerdict::FailsEvenOnStiffest:
         return QStringLiteral("fails_even_on_stiffest");
     case RangeVerdict::NoRange:
@@ -278,8 +302,12 @@ QString rangeVerdictText(const ToleranceRangeEvaluation &e)
     }
     case RangeVerdict::PassesOnPartOfRange:
         return RangeVerdicts::tr("passes on the compliant machines of the range, not on the stiffest");
+    case RangeVerdict::PassesAfterOffsetOnAnyMachine:
+        return RangeVerdicts::tr("fails as programmed; an offset of %1 µm on the diameter holds it on any machine "
+                                 "in the range")
+            .arg(QString::number(e.offsetOnAnyMachine_um.value_or(0.0), 'f', 1));
     case RangeVerdict::FailsEvenOnStiffest:
-        return RangeVerdicts::tr("fails even on the stiffest machine of the range");
+        return RangeVerdicts::tr("fails as programmed even on the stiffest machine of the range");
     case RangeVerdict::NoRange:
     case RangeVerdict::NotDecided:
         return verdictName(e.compliant.verdict);

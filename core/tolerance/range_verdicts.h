@@ -14,13 +14,15 @@ namespace tolturn {
 // than a measurement (docs/tolerances.md, "Machines that were not measured"). "Passes" is the
 // verdict TolTurn's own program earns: passes as programmed.
 enum class RangeVerdict {
-    PassesOnAnyMachine,  // passes at the compliant end of the range, so on any machine in it
-    PassesIfStiffer,     // passes only on a machine stiffer than the required stiffness
-    PassesOnPartOfRange, // passes at the compliant end but not at the stiff end (a form error that a
-                         // stiffer support makes worse, e.g. a part between a chuck and a tailstock)
-    FailsEvenOnStiffest, // fails at the stiff end of the range too
-    NoRange,             // the machine was measured (or the clamping uses no ranged support)
-    NotDecided,          // the characteristic is not predicted or cannot be evaluated
+    PassesOnAnyMachine,            // passes at the compliant end of the range, so on any machine in it
+    PassesIfStiffer,               // passes only on a machine stiffer than the required stiffness
+    PassesOnPartOfRange,           // passes at the compliant end but not at the stiff end (a form error that a
+                                   // stiffer support makes worse, e.g. a part between a chuck and a tailstock)
+    PassesAfterOffsetOnAnyMachine, // fails as programmed at both ends, but one constant offset of the
+                                   // programmed size holds it at both (a size only)
+    FailsEvenOnStiffest,           // fails at the stiff end of the range too
+    NoRange,                       // the machine was measured (or the clamping uses no ranged support)
+    NotDecided,                    // the characteristic is not predicted or cannot be evaluated
 };
 
 // The smallest radial stiffness of a support with which a tolerance passes as programmed, the
@@ -46,6 +48,9 @@ struct ToleranceRangeEvaluation {
     std::optional<RequiredStiffness> chuck;     // chuck and chuck + tailstock, or the collet
     std::optional<RequiredStiffness> tailstock; // tailstock, or both centres between centres
     bool collet = false;                        // `chuck` is what a collet needs
+    // PassesAfterOffsetOnAnyMachine: the change of the programmed diameter that centres the sizes
+    // of both ends in the zone [µm].
+    std::optional<double> offsetOnAnyMachine_um;
 };
 
 struct RangeEvaluation {

@@ -216,6 +216,7 @@ QColor ToleranceVerdictModel::rangeVerdictColor(const ToleranceRangeEvaluation &
         return verdictColor(Verdict::PassesAsProgrammed);
     case RangeVerdict::PassesIfStiffer:
     case RangeVerdict::PassesOnPartOfRange:
+    case RangeVerdict::PassesAfterOffsetOnAnyMachine:
         return verdictColor(Verdict::PassesAfterOffset);
     case RangeVerdict::FailsEvenOnStiffest:
         return verdictColor(Verdict::NeedsProfileCorrection);
