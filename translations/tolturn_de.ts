@@ -643,10 +643,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Den Bericht auf das stützen, was aus den gemessenen Teilen über die Maschine gelernt wurde (learn --save).</translation>
     </message>
     <message>
-        <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N</source>
-        <translation>Bohrstange %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; Nachgiebigkeit an der Spitze %6 µm/N</translation>
-    </message>
-    <message>
         <source>The operation (set-up) to work on, by its name (default: the first).</source>
         <translation>Die Aufspannung (Operation), mit der gearbeitet wird, über ihren Namen (Standard: die erste).</translation>
     </message>
@@ -757,6 +753,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>%1 geschrieben: %n Schnitt</numerusform>
             <numerusform>%1 geschrieben: %n Schnitte</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N; Ra %7 µm, Rz %8 µm</source>
+        <translation>Bohrstange %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; Nachgiebigkeit an der Spitze %6 µm/N; Ra %7 µm, Rz %8 µm</translation>
     </message>
 </context>
 <context>
@@ -4593,10 +4593,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>3  Vorhergesagte Abweichung</translation>
     </message>
     <message>
-        <source>Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.</source>
-        <translation>Schlichtschnitt %1: Kräfte (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretische Rauheit Ra %6 µm, Rz %7 µm.</translation>
-    </message>
-    <message>
         <source>z from the part&apos;s left end [mm]</source>
         <translation>z ab linkem Teilende [mm]</translation>
     </message>
@@ -4946,6 +4942,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %n Schruppschnitt bei vc %5 m/min, f %6 mm/rev.</numerusform>
             <numerusform>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %n Schruppschnitte bei vc %5 m/min, f %6 mm/rev.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Finishing pass %1, turning insert (nose radius %2 mm): forces (%3) Fc %4 N, Ff %5 N, Fp %6 N; theoretical Ra %7 µm, Rz %8 µm.</source>
+        <translation>Schlichtschnitt %1, Drehplatte (Eckenradius %2 mm): Kräfte (%3) Fc %4 N, Ff %5 N, Fp %6 N; theoretische Rauheit Ra %7 µm, Rz %8 µm.</translation>
+    </message>
+    <message>
+        <source>Bores, boring bar %1 (nose radius %2 mm), same pass: forces Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.</source>
+        <translation>Bohrungen, Bohrstange %1 (Eckenradius %2 mm), derselbe Schnitt: Kräfte Fc %3 N, Ff %4 N, Fp %5 N; theoretische Rauheit Ra %6 µm, Rz %7 µm.</translation>
     </message>
 </context>
 <context>

@@ -643,10 +643,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Basar el informe en lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
     </message>
     <message>
-        <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N</source>
-        <translation>Barra de mandrinar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; flexibilidad en la punta %6 µm/N</translation>
-    </message>
-    <message>
         <source>The operation (set-up) to work on, by its name (default: the first).</source>
         <translation>La operación (montaje) con la que trabajar, por su nombre (por defecto: la primera).</translation>
     </message>
@@ -757,6 +753,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>se ha escrito %1: %n pasada</numerusform>
             <numerusform>se ha escrito %1: %n pasadas</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N; Ra %7 µm, Rz %8 µm</source>
+        <translation>Barra de mandrinar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; flexibilidad en la punta %6 µm/N; Ra %7 µm, Rz %8 µm</translation>
     </message>
 </context>
 <context>
@@ -4593,10 +4593,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>3  Desviación prevista</translation>
     </message>
     <message>
-        <source>Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.</source>
-        <translation>Pasada de acabado %1: fuerzas (%2) Fc %3 N, Ff %4 N, Fp %5 N; Ra teórica %6 µm, Rz %7 µm.</translation>
-    </message>
-    <message>
         <source>z from the part&apos;s left end [mm]</source>
         <translation>z desde el extremo izquierdo de la pieza [mm]</translation>
     </message>
@@ -4946,6 +4942,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %n pasada de desbaste a vc %5 m/min, f %6 mm/rev.</numerusform>
             <numerusform>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %n pasadas de desbaste a vc %5 m/min, f %6 mm/rev.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Finishing pass %1, turning insert (nose radius %2 mm): forces (%3) Fc %4 N, Ff %5 N, Fp %6 N; theoretical Ra %7 µm, Rz %8 µm.</source>
+        <translation>Pasada de acabado %1, plaquita de torneado (radio de punta %2 mm): fuerzas (%3) Fc %4 N, Ff %5 N, Fp %6 N; rugosidad teórica Ra %7 µm, Rz %8 µm.</translation>
+    </message>
+    <message>
+        <source>Bores, boring bar %1 (nose radius %2 mm), same pass: forces Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.</source>
+        <translation>Agujeros, barra de mandrinar %1 (radio de punta %2 mm), misma pasada: fuerzas Fc %3 N, Ff %4 N, Fp %5 N; rugosidad teórica Ra %6 µm, Rz %7 µm.</translation>
     </message>
 </context>
 <context>

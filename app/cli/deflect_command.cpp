@@ -5,6 +5,7 @@
 #include "app/cli/command_line.h"
 #include "app/cli/learn_command.h"
 #include "core/common/library_info.h"
+#include "core/cutting/cutting_quantities.h"
 #include "core/deviation/deviation_model.h"
 #include "core/io/force_measurements.h"
 #include "core/io/project_file.h"
@@ -121,17 +122,21 @@ void printDeviationText(QTextStream &out, const DeviationResult &r)
     out << CommandLine::tr("Pass %1 (%2): vc %3 m/min, f %4 mm/rev, ap %5 mm; Ra %6 µm, Rz %7 µm; max %8 kW, %9 N·m")
                .arg(in.passIndex + 1)
                .arg(keyword(in.pass.kind), formatNumber(in.pass.cuttingSpeed_m_min), formatNumber(in.pass.feed_mm_rev),
-                    formatNumber(in.pass.depthOfCut_mm), QString::number(r.theoreticalRa_um, 'f', 2),
-                    QString::number(r.theoreticalRz_um, 'f', 2), QString::number(r.maxPower_kW, 'f', 2),
-                    QString::number(r.maxTorque_Nm, 'f', 1))
+                    formatNumber(in.pass.depthOfCut_mm),
+                    QString::number(theoreticalRa_um(in.pass.feed_mm_rev, in.noseRadius_mm), 'f', 2),
+                    QString::number(theoreticalRz_um(in.pass.feed_mm_rev, in.noseRadius_mm), 'f', 2),
+                    QString::number(r.maxPower_kW, 'f', 2), QString::number(r.maxTorque_Nm, 'f', 1))
         << '\n';
     if (in.boring)
-        out << CommandLine::tr("Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N")
+        out << CommandLine::tr("Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N; Ra %7 µm, "
+                               "Rz %8 µm")
                    .arg(in.boring->holderCode, in.boring->barMaterial,
                         QString::number(in.boring->forces.tangential_N, 'f', 1),
                         QString::number(in.boring->forces.axial_N, 'f', 1),
                         QString::number(in.boring->forces.radial_N, 'f', 1),
-                        QString::number(in.boring->compliance.transverse_mm_per_N() * kUmPerMm, 'g', 3))
+                        QString::number(in.boring->compliance.transverse_mm_per_N() * kUmPerMm, 'g', 3),
+                        QString::number(theoreticalRa_um(in.pass.feed_mm_rev, in.boring->noseRadius_mm), 'f', 2),
+                        QString::number(theoreticalRz_um(in.pass.feed_mm_rev, in.boring->noseRadius_mm), 'f', 2))
             << '\n';
     for (const QString &note : in.notes)
         out << CommandLine::tr("note: ") << note << '\n';

@@ -294,6 +294,15 @@ private Q_SLOTS:
                  qPrintable(plan));
         QVERIFY2(plan.contains(QStringLiteral("No spindle power limit known")), qPrintable(plan));
         QVERIFY2(plan.contains(QStringLiteral("; 1 roughing pass at vc")), qPrintable(plan)); // one, not "passes"
+        // Each tool's roughness under its own name, at the finishing feed 0.17 mm/rev: Ra = f²/(32 r),
+        // Rz = f²/(8 r): CNMG 120408 (r 0.8) 1.13 and 4.52 µm, the bar's CCMT 09T304 (r 0.4) 2.26 and 9.03.
+        const QString text = pdfText(pdf).simplified();
+        QVERIFY2(text.contains(QStringLiteral("turning insert (nose radius 0.80 mm)")) &&
+                     text.contains(QStringLiteral("theoretical Ra 1.13 µm, Rz 4.52 µm")),
+                 qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("(nose radius 0.40 mm), same pass")) &&
+                     text.contains(QStringLiteral("theoretical Ra 2.26 µm, Rz 9.03 µm")),
+                 qPrintable(text));
         const QString beforeAssumptions = plan.section(QStringLiteral("Assumptions"), 0, 0);
         QVERIFY2(!beforeAssumptions.contains(QStringLiteral("Thermal drift not characterised")), qPrintable(plan));
     }

@@ -3,6 +3,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/library_info.h"
+#include "core/cutting/cutting_quantities.h"
 #include "core/learning/setup_prediction.h"
 #include "core/planning/feed_schedule.h"
 #include "core/planning/planning_report.h"
@@ -229,10 +230,25 @@ void deviationPlots(Layout &l, const Project &p, const DeviationResult &d, const
         return;
     }
     const TurningInputs &in = *d.inputs;
-    l.paragraph(Report::tr("Finishing pass %1: forces (%2) Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.")
+    // Each tool's own forces and roughness (Ra = f²/(32 r), cutting_quantities.h): a bore is cut by
+    // the boring bar's insert, whose nose radius may differ.
+    const double feed = in.pass.feed_mm_rev;
+    l.paragraph(Report::tr("Finishing pass %1, turning insert (nose radius %2 mm): forces (%3) Fc %4 N, Ff %5 N, Fp "
+                           "%6 N; theoretical Ra %7 µm, Rz %8 µm.")
                     .arg(in.passIndex + 1)
-                    .arg(forceModelName(in.forceModel), num(in.forces.tangential_N, 1), num(in.forces.axial_N, 1),
-                         num(in.forces.radial_N, 1), num(d.theoreticalRa_um, 2), num(d.theoreticalRz_um, 2)));
+                    .arg(num(in.noseRadius_mm, 2), forceModelName(in.forceModel), num(in.forces.tangential_N, 1),
+                         num(in.forces.axial_N, 1), num(in.forces.radial_N, 1),
+                         num(theoreticalRa_um(feed, in.noseRadius_mm), 2),
+                         num(theoreticalRz_um(feed, in.noseRadius_mm), 2)));
+    if (in.boring && !p.part.inner.empty()) {
+        const BoringInputs &b = *in.boring;
+        l.paragraph(Report::tr("Bores, boring bar %1 (nose radius %2 mm), same pass: forces Fc %3 N, Ff %4 N, Fp %5 N; "
+                               "theoretical Ra %6 µm, Rz %7 µm.")
+                        .arg(b.holderCode, num(b.noseRadius_mm, 2), num(b.forces.tangential_N, 1),
+                             num(b.forces.axial_N, 1), num(b.forces.radial_N, 1),
+                             num(theoreticalRa_um(feed, b.noseRadius_mm), 2),
+                             num(theoreticalRz_um(feed, b.noseRadius_mm), 2)));
+    }
     for (const ContourSide side : {ContourSide::Outer, ContourSide::Inner}) {
         if (side == ContourSide::Inner && p.part.inner.empty())
             continue;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/results/deflection_panel.h"
 
+#include "core/cutting/cutting_quantities.h"
 #include "core/project/keywords.h"
 #include "widgets/plot/line_plot.h"
 
@@ -329,12 +330,14 @@ QString DeflectionPanel::summaryText() const
     if (!m_result.inputs)
         return {};
     const TurningInputs &in = *m_result.inputs;
+    // The roughness this side's tool leaves: the boring bar's insert in the bores.
+    const double noseRadius = m_side == ContourSide::Inner && in.boring ? in.boring->noseRadius_mm : in.noseRadius_mm;
     return tr("Forces (%1): Fc %2 N, Ff %3 N, Fp %4 N · pass %5: vc %6 m/min, f %7 mm/rev, ap %8 mm · Ra %9 µm")
                .arg(forceModelName(in.forceModel), QString::number(in.forces.tangential_N, 'f', 0),
                     QString::number(in.forces.axial_N, 'f', 0), QString::number(in.forces.radial_N, 'f', 0),
                     QString::number(in.passIndex + 1), formatNumber(in.pass.cuttingSpeed_m_min),
                     formatNumber(in.pass.feed_mm_rev), formatNumber(in.pass.depthOfCut_mm),
-                    QString::number(m_result.theoreticalRa_um, 'f', 2)) +
+                    QString::number(theoreticalRa_um(in.pass.feed_mm_rev, noseRadius), 'f', 2)) +
            boringSummary(in);
 }
 
