@@ -409,10 +409,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Kein Plan erfüllt alle Randbedingungen; der Plan mit der geringsten Verletzung</translation>
     </message>
     <message>
-        <source>  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part</source>
-        <translation>  Zeit je Teil %1 min (Schlichten %2, Schruppen %3), Kosten %4, %5 Schneiden je Teil</translation>
-    </message>
-    <message>
         <source>  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
         <translation>  Schlichten: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
@@ -757,6 +753,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N; Ra %7 µm, Rz %8 µm</source>
         <translation>Bohrstange %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; Nachgiebigkeit an der Spitze %6 µm/N; Ra %7 µm, Rz %8 µm</translation>
+    </message>
+    <message>
+        <source>  time per part %1 min (finishing %2, roughing %3, handling %4, tool changes %5), cost %6 at %7 per min, %8</source>
+        <translation>  Zeit je Teil %1 min (Schlichten %2, Schruppen %3, Handhabung %4, Werkzeugwechsel %5), Kosten %6 bei %7 je min, %8</translation>
+    </message>
+    <message>
+        <source>%1 tool edges per part</source>
+        <translation>%1 Schneiden je Teil</translation>
+    </message>
+    <message>
+        <source>tool edges per part not known (no tool life)</source>
+        <translation>Schneiden je Teil nicht bekannt (keine Standzeit)</translation>
     </message>
 </context>
 <context>
@@ -8638,10 +8646,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Kein Plan erfüllt alle Randbedingungen; der Plan mit der geringsten Verletzung:</translation>
     </message>
     <message>
-        <source>Time per part %1 min (finishing %2 min, roughing %3 min); cost %4; tool edges %5</source>
-        <translation>Zeit je Teil %1 min (Schlichten %2 min, Schruppen %3 min); Kosten %4; Schneiden %5</translation>
-    </message>
-    <message>
         <source>Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
         <translation>Schlichten: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
@@ -8843,6 +8847,18 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
             <numerusform>Schruppen: %n Schnitt bei vc %1 m/min, f %2 mm/rev</numerusform>
             <numerusform>Schruppen: %n Schnitte bei vc %1 m/min, f %2 mm/rev</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5 min); cost %6; %7</source>
+        <translation>Zeit je Teil %1 min (Schlichten %2 min, Schruppen %3 min, Handhabung %4 min, Werkzeugwechsel %5 min); Kosten %6; %7</translation>
+    </message>
+    <message>
+        <source>tool edges %1 per part</source>
+        <translation>Schneiden %1 je Teil</translation>
+    </message>
+    <message>
+        <source>tool edges not known (no tool life)</source>
+        <translation>Schneiden nicht bekannt (keine Standzeit)</translation>
     </message>
 </context>
 <context>

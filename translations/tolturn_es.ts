@@ -409,10 +409,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Ningún plan cumple todas las restricciones; el que menos las incumple</translation>
     </message>
     <message>
-        <source>  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part</source>
-        <translation>  tiempo por pieza %1 min (acabado %2, desbaste %3), coste %4, %5 filos de herramienta por pieza</translation>
-    </message>
-    <message>
         <source>  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
         <translation>  acabado: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
@@ -757,6 +753,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Boring bar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; tip compliance %6 µm/N; Ra %7 µm, Rz %8 µm</source>
         <translation>Barra de mandrinar %1 (%2): Fc = %3 N, Ff = %4 N, Fp = %5 N; flexibilidad en la punta %6 µm/N; Ra %7 µm, Rz %8 µm</translation>
+    </message>
+    <message>
+        <source>  time per part %1 min (finishing %2, roughing %3, handling %4, tool changes %5), cost %6 at %7 per min, %8</source>
+        <translation>  tiempo por pieza %1 min (acabado %2, desbaste %3, manipulación %4, cambios de herramienta %5), coste %6 a %7 por min, %8</translation>
+    </message>
+    <message>
+        <source>%1 tool edges per part</source>
+        <translation>%1 filos de herramienta por pieza</translation>
+    </message>
+    <message>
+        <source>tool edges per part not known (no tool life)</source>
+        <translation>filos de herramienta por pieza desconocidos (sin vida de herramienta)</translation>
     </message>
 </context>
 <context>
@@ -8638,10 +8646,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Ningún plan cumple todas las restricciones; el que menos las incumple:</translation>
     </message>
     <message>
-        <source>Time per part %1 min (finishing %2 min, roughing %3 min); cost %4; tool edges %5</source>
-        <translation>Tiempo por pieza %1 min (acabado %2 min, desbaste %3 min); coste %4; filos de herramienta %5</translation>
-    </message>
-    <message>
         <source>Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm</source>
         <translation>Acabado: vc %1 m/min, f %2 mm/rev, ap %3 mm</translation>
     </message>
@@ -8843,6 +8847,18 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
             <numerusform>Desbaste: %n pasada a vc %1 m/min, f %2 mm/rev</numerusform>
             <numerusform>Desbaste: %n pasadas a vc %1 m/min, f %2 mm/rev</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5 min); cost %6; %7</source>
+        <translation>Tiempo por pieza %1 min (acabado %2 min, desbaste %3 min, manipulación %4 min, cambios de herramienta %5 min); coste %6; %7</translation>
+    </message>
+    <message>
+        <source>tool edges %1 per part</source>
+        <translation>filos de herramienta %1 por pieza</translation>
+    </message>
+    <message>
+        <source>tool edges not known (no tool life)</source>
+        <translation>filos de herramienta desconocidos (sin vida de herramienta)</translation>
     </message>
 </context>
 <context>

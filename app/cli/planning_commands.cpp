@@ -67,9 +67,16 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
     else
         out << CommandLine::tr("No plan meets every constraint; the one that violates them least");
     out << '\n';
-    out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3), cost %4, %5 tool edges per part")
+    // The parts of the time as planning_problem.cpp adds them: handling and tool changes too.
+    const PlanningSettings &s = problem.project().planning;
+    const bool toolLifeKnown = s.taylorC_m_min && s.taylorN; // edges per part need the tool life
+    out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3, handling %4, tool changes %5), cost %6 "
+                           "at %7 per min, %8")
                .arg(formatFixed(e.time_min, 3), formatFixed(e.finishingTime_min, 3), formatFixed(e.roughingTime_min, 3),
-                    formatFixed(e.cost, 2), formatFixed(e.toolEdgesPerPart, 3))
+                    formatFixed(s.handlingTime_min, 3), formatFixed(s.toolChangeTime_min * e.toolEdgesPerPart, 3),
+                    formatFixed(e.cost, 2), formatNumber(s.machineRate_per_min),
+                    toolLifeKnown ? CommandLine::tr("%1 tool edges per part").arg(formatFixed(e.toolEdgesPerPart, 3))
+                                  : CommandLine::tr("tool edges per part not known (no tool life)"))
         << '\n';
     out << CommandLine::tr("  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
                .arg(QString::number(r.candidate.finishing.cuttingSpeed_m_min, 'f', 1),

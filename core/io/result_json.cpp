@@ -210,6 +210,10 @@ PassConditions roughingPassOf(const PlanResult &r, const PlanningProblem &proble
 QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
 {
     const CandidateEvaluation &e = r.evaluation;
+    const PlanningSettings &s = problem.project().planning;
+    // Edges per part follow from the tool life: without Taylor constants they are not known (null),
+    // not zero.
+    const QJsonValue edges = s.taylorC_m_min && s.taylorN ? QJsonValue(e.toolEdgesPerPart) : QJsonValue();
     return {{QStringLiteral("feasible"), r.feasible},
             {QStringLiteral("objective"), keyword(problem.project().planning.objective)},
             {QStringLiteral("objective_value"), e.objective},
@@ -217,7 +221,9 @@ QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
             {QStringLiteral("cost"), e.cost},
             {QStringLiteral("finishing_time_min"), e.finishingTime_min},
             {QStringLiteral("roughing_time_min"), e.roughingTime_min},
-            {QStringLiteral("tool_edges_per_part"), e.toolEdgesPerPart},
+            {QStringLiteral("handling_time_min"), s.handlingTime_min},
+            {QStringLiteral("tool_change_time_min"), s.toolChangeTime_min * e.toolEdgesPerPart},
+            {QStringLiteral("tool_edges_per_part"), edges},
             {QStringLiteral("finishing"), passJson(r.candidate.finishing)},
             {QStringLiteral("roughing"), QJsonObject{{QStringLiteral("passes"), r.candidate.roughingPasses},
                                                      {QStringLiteral("pass"), passJson(roughingPassOf(r, problem))}}},

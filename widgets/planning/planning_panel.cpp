@@ -429,9 +429,14 @@ void PlanningPanel::showReport()
     lines << (r.feasible ? tr("Optimal plan") : tr("No plan meets every constraint; the least-violating one:"));
     const QString cost = m_currency.isEmpty() ? tr("%1 (no currency set in Preferences)").arg(number(e.cost, 2))
                                               : QStringLiteral("%1 %2").arg(number(e.cost, 2), m_currency);
-    lines << tr("Time per part %1 min (finishing %2 min, roughing %3 min); cost %4; tool edges %5")
-                 .arg(number(e.time_min, 3), number(e.finishingTime_min, 3), number(e.roughingTime_min, 3), cost,
-                      number(e.toolEdgesPerPart, 3));
+    const PlanningSettings &s = m_report->problem->project().planning;
+    const bool toolLifeKnown = s.taylorC_m_min && s.taylorN; // edges per part need the tool life
+    lines << tr("Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5 min); "
+                "cost %6; %7")
+                 .arg(number(e.time_min, 3), number(e.finishingTime_min, 3), number(e.roughingTime_min, 3),
+                      number(s.handlingTime_min, 3), number(s.toolChangeTime_min * e.toolEdgesPerPart, 3), cost,
+                      toolLifeKnown ? tr("tool edges %1 per part").arg(number(e.toolEdgesPerPart, 3))
+                                    : tr("tool edges not known (no tool life)"));
     lines << tr("Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
                  .arg(number(r.candidate.finishing.cuttingSpeed_m_min, 1), number(r.candidate.finishing.feed_mm_rev, 3),
                       number(r.candidate.finishing.depthOfCut_mm, 3));
