@@ -3680,6 +3680,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>no finishing pass: the last pass is taken as the one that cuts the contour to size (the verdicts and the program rest on it)</source>
         <translation>kein Schlichtschnitt: der letzte Schnitt wird als der genommen, der die Kontur auf Maß schneidet (die Urteile und das Programm beruhen darauf)</translation>
     </message>
+    <message>
+        <source>, while the verdicts of %1 take the whole bore</source>
+        <translation>, während die Bewertungen von %1 die ganze Bohrung nehmen</translation>
+    </message>
+    <message>
+        <source>%1 mm reaches z = %2 mm (the free end at %3 mm, %4 mm clear of it): %5 is not bored from z = %6 mm to there%7. Reaching it needs an overhang of %8 mm; or bore from both ends</source>
+        <translation>%1 mm reicht bis z = %2 mm (das freie Ende bei %3 mm, %4 mm Abstand davon): %5 wird von z = %6 mm bis dorthin nicht gebohrt%7. Um es zu erreichen, braucht es eine Auskraglänge von %8 mm; oder von beiden Enden bohren</translation>
+    </message>
 </context>
 <context>
     <name>PlotExport</name>

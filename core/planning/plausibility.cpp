@@ -89,6 +89,42 @@ void checkBoringGeometry(const Project &p, const Tool &t, Diagnostics &out)
                                     .arg(num(*t.edgeOffset_mm), num(widest))));
 }
 
+// A bar too short for its bores: its edge reaches z = length + clearance - overhang from the free
+// end (boring_toolpath.cpp), so the program leaves the bore beyond unbored, while the deviation and
+// the verdicts take the whole bore. Said with the tolerances it concerns and the overhang needed.
+void checkBoringReach(const Project &p, const Tool &t, Diagnostics &out)
+{
+    if (!t.overhang_mm)
+        return;
+    const double reach = p.part.length_mm() + kToolClearance_mm - *t.overhang_mm;
+    QStringList bores;
+    double deepest = reach;
+    for (const Segment &s : p.part.inner.segments) {
+        const double left = std::min(s.from.z_mm, s.to.z_mm);
+        if ((p.scope && !p.scope->cutFeatures.contains(s.id)) || left >= reach - 1e-6)
+            continue;
+        bores << s.id;
+        deepest = std::min(deepest, left);
+    }
+    if (bores.isEmpty())
+        return;
+    QStringList tolerances;
+    for (const Tolerance &x : p.tolerances) {
+        if (bores.contains(x.featureId))
+            tolerances << x.id;
+    }
+    const QString judged = tolerances.isEmpty() ? QString()
+                                                : Plausibility::tr(", while the verdicts of %1 take the whole bore")
+                                                      .arg(tolerances.join(QStringLiteral(", ")));
+    out.push_back(makeWarning(QStringLiteral("boring_tool.overhang_mm"),
+                              Plausibility::tr("%1 mm reaches z = %2 mm (the free end at %3 mm, %4 mm clear of it): "
+                                               "%5 is not bored from z = %6 mm to there%7. Reaching it needs an "
+                                               "overhang of %8 mm; or bore from both ends")
+                                  .arg(num(*t.overhang_mm), num(reach), num(p.part.length_mm()), num(kToolClearance_mm),
+                                       bores.join(QStringLiteral(", ")), num(deepest), judged,
+                                       num(p.part.length_mm() + kToolClearance_mm - deepest))));
+}
+
 // The boring bar (docs/model.md §3.1): a bar the data know, its overhang within the maker's
 // largest L/D; bores without a bar are computed without its bending, which the planner is told.
 void checkBoringTool(const Project &p, const DataLibrary &data, Diagnostics &out)
@@ -103,6 +139,7 @@ void checkBoringTool(const Project &p, const DataLibrary &data, Diagnostics &out
     }
     const Tool &t = *p.boringTool;
     checkBoringGeometry(p, t, out);
+    checkBoringReach(p, t, out);
     const InsertParseResult insert = parseInsertCode(t.insertCode);
     if (!insert.insert) {
         for (const Diagnostic &d : insert.diagnostics)
