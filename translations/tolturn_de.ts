@@ -221,6 +221,10 @@
         <source>; not held to: %1</source>
         <translation>; nicht berücksichtigt: %1</translation>
     </message>
+    <message>
+        <source>meets every constraint it can check, but not every tolerance is one: %1 %2 per part</source>
+        <translation>erfüllt alle prüfbaren Randbedingungen, aber nicht jede Toleranz ist eine: %1 %2 je Teil</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -5755,10 +5759,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
 <context>
     <name>Toolpath</name>
     <message>
-        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the chuck with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
-        <translation>%1 fällt in Vorschubrichtung mit %2° ab, steiler als die Nebenschneide der Platte (%3°): mit diesem Werkzeug lässt es sich zum Futter hin nicht drehen, ohne es zu beschädigen; drehen Sie es von der anderen Seite oder mit einem neutralen Werkzeug.</translation>
-    </message>
-    <message>
         <source>left centre</source>
         <translation>linke Spitze</translation>
     </message>
@@ -5897,6 +5897,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>The pilot hole Ø%1 mm is as wide as the bore&apos;s narrowest Ø%2 mm or wider: nothing is left to bore there, and it stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
         <translation>Die Vorbohrung Ø%1 mm ist so weit wie die engste Stelle der Bohrung, Ø%2 mm, oder weiter: dort bleibt nichts auszudrehen, und sie behält das Maß der Vorbohrung, nicht das der Zeichnung.</translation>
+    </message>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the headstock with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
+        <translation>%1 fällt in Vorschubrichtung mit %2° ab, steiler als die Nebenschneide der Platte (%3°): mit diesem Werkzeug lässt es sich zum Spindelstock hin nicht drehen, ohne es zu beschädigen; drehen Sie es von der anderen Seite oder mit einem neutralen Werkzeug.</translation>
     </message>
 </context>
 <context>

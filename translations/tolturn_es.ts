@@ -221,6 +221,10 @@
         <source>; not held to: %1</source>
         <translation>; no se tiene en cuenta: %1</translation>
     </message>
+    <message>
+        <source>meets every constraint it can check, but not every tolerance is one: %1 %2 per part</source>
+        <translation>cumple todas las restricciones que puede comprobar, pero no todas las tolerancias lo son: %1 %2 por pieza</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -5755,10 +5759,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
 <context>
     <name>Toolpath</name>
     <message>
-        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the chuck with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
-        <translation>%1 desciende %2° en la dirección de avance, más que el filo secundario de la plaquita (%3°): no se puede tornear hacia el plato con esta herramienta sin dañarlo; tornéelo desde el otro lado o con una herramienta neutra.</translation>
-    </message>
-    <message>
         <source>left centre</source>
         <translation>punto izquierdo</translation>
     </message>
@@ -5897,6 +5897,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>The pilot hole Ø%1 mm is as wide as the bore&apos;s narrowest Ø%2 mm or wider: nothing is left to bore there, and it stays the pilot hole&apos;s size, not the drawing&apos;s.</source>
         <translation>El agujero previo de Ø%1 mm es tan ancho como el tramo más estrecho del agujero, Ø%2 mm, o más: allí no queda nada que mandrinar, y se queda con la medida del agujero previo, no la del plano.</translation>
+    </message>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the headstock with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
+        <translation>%1 desciende %2° en la dirección de avance, más que el filo secundario de la plaquita (%3°): no se puede tornear hacia el cabezal con esta herramienta sin dañarlo; tornéelo desde el otro lado o con una herramienta neutra.</translation>
     </message>
 </context>
 <context>

@@ -59,7 +59,12 @@ QString describe(const ClampingOption &o, const Project &p)
         return o.reason;
     const CandidateEvaluation &e = o.plan.evaluation;
     if (o.plan.feasible) {
-        QString text = ClampingAdvice::tr("meets every constraint: %1 %2 per part")
+        // A tolerance the plan cannot be held to is no constraint of it: "every constraint" would
+        // read as every tolerance (rankClampingOptions puts such options after those that hold all).
+        QString text = (o.tolerancesNotHeld.empty()
+                            ? ClampingAdvice::tr("meets every constraint: %1 %2 per part")
+                            : ClampingAdvice::tr("meets every constraint it can check, but not every tolerance is "
+                                                 "one: %1 %2 per part"))
                            .arg(QString::number(e.objective, 'f', 3), p.planning.objective == PlanningObjective::Time
                                                                           ? ClampingAdvice::tr("min")
                                                                           : ClampingAdvice::tr("cost"));
@@ -111,8 +116,8 @@ std::vector<ClampingOption> adviseClamping(const Project &project, const DataLib
         OptimisationOptions part = options;
         part.progress = Progress(options.progress, third, third + 1.0 / static_cast<double>(methods.size()));
         o.plan = optimisePlan(*built.problem, part);
-        o.reason = describe(o, p);
         o.tolerancesNotHeld = built.problem->unconstrainedTolerances();
+        o.reason = describe(o, p);
         if (!o.tolerancesNotHeld.empty())
             o.reason += ClampingAdvice::tr("; not held to: %1").arg(leftOutText(o.tolerancesNotHeld));
         if (!holdsOneEndOnly(method)) // the toolpath does not face an end a centre holds

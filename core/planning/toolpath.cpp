@@ -430,7 +430,7 @@ void warnWhereTheTrailingEdgeCannotFollow(const std::vector<PathElement> &chain,
         fall_mm += std::max(0.0, e.from.r_mm - e.to.r_mm);
         if (fall_mm > withinCorner_mm && named.insert(e.featureId).second)
             warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing "
-                                      "edge (%3°): it cannot be turned towards the chuck with this tool without "
+                                      "edge (%3°): it cannot be turned towards the headstock with this tool without "
                                       "damaging it; turn it from the other side or with a neutral tool.")
                             .arg(e.featureId, QString::number(steepest_deg, 'f', 1),
                                  QString::number(trailing_deg, 'f', 1));

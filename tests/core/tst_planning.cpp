@@ -455,6 +455,12 @@ private Q_SLOTS:
         QCOMPARE(ranking[1].tolerancesNotHeld.front().toleranceId, QStringLiteral("T3"));
         QVERIFY2(ranking[1].reason.contains(QStringLiteral("not held to: T3 (feature O3 is not cut")),
                  qPrintable(ranking[1].reason));
+        // Not "meets every constraint" for a plan that T3 is no constraint of; between centres is.
+        QVERIFY2(ranking[1].reason.startsWith(QStringLiteral("meets every constraint it can check, but not every "
+                                                             "tolerance is one: ")),
+                 qPrintable(ranking[1].reason));
+        QVERIFY2(ranking[0].reason.startsWith(QStringLiteral("meets every constraint: ")),
+                 qPrintable(ranking[0].reason));
         QVERIFY(ranking[1].plan.evaluation.objective < ranking[0].plan.evaluation.objective);
         QCOMPARE(ranking[2].method, ClampingMethod::Chuck);
         QVERIFY(!ranking[2].plan.feasible);
