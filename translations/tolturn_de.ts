@@ -2101,6 +2101,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>  learned at: %1</source>
         <translation>  gelernt bei: %1</translation>
     </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
 </context>
 <context>
     <name>LearnedModelJson</name>
@@ -2184,6 +2188,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>%1: the geometric error&apos;s split between diameter and z is not determined, and what was learned holds along the measured points only; measure features of other diameters at other z</source>
         <translation>%1: die Aufteilung des geometrischen Fehlers auf Durchmesser und z ist nicht bestimmt, und das Gelernte gilt nur entlang der gemessenen Punkte; messen Sie Formelemente anderer Durchmesser an anderen z</translation>
+    </message>
+    <message>
+        <source>What was learned predicts parts it did not learn from worse than the physics alone (%1 against %2 µm RMS): it adds error here. Learn from more parts, or predict without it</source>
+        <translation>Das Gelernte sagt Teile, aus denen es nicht gelernt hat, schlechter voraus als die Physik allein (%1 gegenüber %2 µm RMS): es fügt hier Fehler hinzu. Aus mehr Teilen lernen oder ohne es vorhersagen</translation>
     </message>
 </context>
 <context>

@@ -2101,6 +2101,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>  learned at: %1</source>
         <translation>  aprendido con: %1</translation>
     </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>aviso: %1</translation>
+    </message>
 </context>
 <context>
     <name>LearnedModelJson</name>
@@ -2184,6 +2188,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>%1: the geometric error&apos;s split between diameter and z is not determined, and what was learned holds along the measured points only; measure features of other diameters at other z</source>
         <translation>%1: el reparto del error geométrico entre diámetro y z no está determinado, y lo aprendido vale solo a lo largo de los puntos medidos; mida elementos de otros diámetros en otras z</translation>
+    </message>
+    <message>
+        <source>What was learned predicts parts it did not learn from worse than the physics alone (%1 against %2 µm RMS): it adds error here. Learn from more parts, or predict without it</source>
+        <translation>Lo aprendido predice las piezas de las que no aprendió peor que la física sola (%1 frente a %2 µm RMS): aquí añade error. Aprenda de más piezas o prediga sin ello</translation>
     </message>
 </context>
 <context>

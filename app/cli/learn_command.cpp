@@ -111,6 +111,10 @@ int runLearn(const QStringList &args, QTextStream &out, QTextStream &err)
         err << prefix << LearnCommand::tr("%1 has %2").arg(machineId, run.error) << '\n';
         return kExitProblems;
     }
+    // Said whether it is kept or not, and before it is: a model that adds error is kept only knowingly.
+    if (const QString worse = learnedWorseThanPhysics(run.validation->physicsRms_mm, run.validation->learnedRms_mm);
+        !worse.isEmpty())
+        err << prefix << LearnCommand::tr("warning: %1").arg(worse) << '\n';
     if (parser.isSet(save)) {
         const auto id = history->addLearnedModel(learnedModelRecord(machineId, run), &error);
         if (!id) {

@@ -283,12 +283,25 @@ QString learnedPhysicsMismatch(const Project &project, const LoadedModel &model)
 
 QString learnedAssumptionText(const LoadedModel &model)
 {
+    const QString worse = learnedWorseThanPhysics(model.record.physicsRms_mm, model.record.learnedRms_mm);
     return MachineLearningText::tr("as learned from its measured parts (%1, learned %2 UTC): parts not learned "
                                    "from were predicted to %3 µm RMS, the physics alone to %4 µm; its stiffness "
                                    "range is not used")
-        .arg(model.provenance(), model.record.trainedAt.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
-             QString::number(1000.0 * model.record.learnedRms_mm, 'f', 1),
-             QString::number(1000.0 * model.record.physicsRms_mm, 'f', 1));
+               .arg(model.provenance(), model.record.trainedAt.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
+                    QString::number(1000.0 * model.record.learnedRms_mm, 'f', 1),
+                    QString::number(1000.0 * model.record.physicsRms_mm, 'f', 1)) +
+           (worse.isEmpty() ? QString() : QStringLiteral(". ") + worse);
+}
+
+QString learnedWorseThanPhysics(double physicsRms_mm, double learnedRms_mm)
+{
+    // Compared as printed, to 0.1 µm: a difference below that is no difference to a planner.
+    if (std::round(1e4 * learnedRms_mm) <= std::round(1e4 * physicsRms_mm))
+        return {};
+    return MachineLearningText::tr("What was learned predicts parts it did not learn from worse than the physics "
+                                   "alone (%1 against %2 µm RMS): it adds error here. Learn from more parts, or "
+                                   "predict without it")
+        .arg(QString::number(1000.0 * learnedRms_mm, 'f', 1), QString::number(1000.0 * physicsRms_mm, 'f', 1));
 }
 
 } // namespace tolturn

@@ -96,4 +96,9 @@ struct PartComparison {
 // One line on what the prediction rests on, for the banner above the verdicts and the report.
 [[nodiscard]] QString learnedAssumptionText(const LoadedModel &model);
 
+// Where what was learned predicted the parts it did not learn from (leave one part out) worse than
+// the physics alone: a warning that it adds error, to be said wherever the model is learned, kept
+// or used. Empty when it predicts them better or as well.
+[[nodiscard]] QString learnedWorseThanPhysics(double physicsRms_mm, double learnedRms_mm);
+
 } // namespace tolturn

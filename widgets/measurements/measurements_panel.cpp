@@ -432,6 +432,8 @@ QString MeasurementsPanel::modelText() const
                        .arg(r.points)
                        .arg(QString::number(r.physicsRms_mm * kUmPerMm, 'f', 1),
                             QString::number(r.learnedRms_mm * kUmPerMm, 'f', 1));
+    if (const QString worse = learnedWorseThanPhysics(r.physicsRms_mm, r.learnedRms_mm); !worse.isEmpty())
+        text += QLatin1Char(' ') + worse + QLatin1Char('.');
     // Where it holds: away from these conditions what was learned is extrapolated.
     if (m_model->model.learnedFrom)
         text += QLatin1Char(' ') + tr("Learned at %1.").arg(learnedDomainText(*m_model->model.learnedFrom));
