@@ -97,7 +97,8 @@ QString ConstraintValue::label() const
 {
     if (name == QLatin1String("tolerances"))
         return Planning::tr("tolerance %1").arg(subject);
-    return QStringLiteral("%1 (%2)").arg(name, subject);
+    // As the Planning dock's switches name it: "roughing depth", not the keyword "roughing_depth".
+    return QStringLiteral("%1 (%2)").arg(QString(name).replace(QLatin1Char('_'), QLatin1Char(' ')), subject);
 }
 
 QString ConstraintValue::violatedBy() const

@@ -437,6 +437,18 @@ private Q_SLOTS:
         }
     }
 
+    // Constraints are named for people as the Planning dock's switches name them, with what they
+    // hold: "roughing depth (roughing)", not the file keyword "roughing_depth".
+    void constraintLabels()
+    {
+        QCOMPARE((ConstraintValue{QStringLiteral("roughing_depth"), QStringLiteral("roughing"), 2, 2, {}}.label()),
+                 QStringLiteral("roughing depth (roughing)"));
+        QCOMPARE((ConstraintValue{QStringLiteral("spindle_speed"), QStringLiteral("finishing"), 1, 2, {}}.label()),
+                 QStringLiteral("spindle speed (finishing)"));
+        QCOMPARE((ConstraintValue{QStringLiteral("tolerances"), QStringLiteral("T4"), 1, 2, {}}.label()),
+                 QStringLiteral("tolerance T4"));
+    }
+
     void clampingRanking()
     {
         const std::vector<ClampingOption> ranking =
