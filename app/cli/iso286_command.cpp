@@ -37,6 +37,23 @@ namespace tolturn {
 
 namespace {
 
+// A negative nominal size ("-5") would be read as an option. Both commands take only flags, so the
+// flags go first and everything else after "--", where the parser takes it as it stands and the
+// size check names it ("the nominal size must be above 0 mm, but is -5 mm").
+QStringList negativeSizesAsPositional(const QStringList &args)
+{
+    const auto isNegativeNumber = [](const QString &a) {
+        return a.size() > 1 && a.at(0) == QLatin1Char('-') && (a.at(1).isDigit() || a.at(1) == QLatin1Char('.'));
+    };
+    if (args.contains(QStringLiteral("--")) || std::none_of(args.begin(), args.end(), isNegativeNumber))
+        return args;
+    QStringList flags{args.value(0)};
+    QStringList rest{QStringLiteral("--")};
+    for (qsizetype i = 1; i < args.size(); ++i)
+        (args.at(i).startsWith(QLatin1Char('-')) && !isNegativeNumber(args.at(i)) ? flags : rest) << args.at(i);
+    return flags + rest;
+}
+
 struct CommandLine {
     Q_DECLARE_TR_FUNCTIONS(CommandLine)
 };
@@ -76,7 +93,8 @@ int runIso286(const QStringList &args, QTextStream &out, QTextStream &err)
                                  QStringLiteral("NOMINAL"));
     parser.addPositionalArgument(QStringLiteral("class"), CommandLine::tr("Tolerance class, e.g. H7, g6, js12."),
                                  QStringLiteral("CLASS"));
-    if (const int stop = parseNamedCommand(parser, QStringLiteral("iso286"), args, out, err); stop >= 0)
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("iso286"), negativeSizesAsPositional(args), out, err);
+        stop >= 0)
         return stop;
     if (parser.positionalArguments().size() != 2) {
         err << programName() << " iso286: " << CommandLine::tr("give a nominal size and a tolerance class, e.g. 50 H7")
@@ -108,7 +126,8 @@ int runFit(const QStringList &args, QTextStream &out, QTextStream &err)
                                  QStringLiteral("NOMINAL"));
     parser.addPositionalArgument(QStringLiteral("fit"), CommandLine::tr("Hole and shaft class, e.g. H7/g6."),
                                  QStringLiteral("HOLE/SHAFT"));
-    if (const int stop = parseNamedCommand(parser, QStringLiteral("fit"), args, out, err); stop >= 0)
+    if (const int stop = parseNamedCommand(parser, QStringLiteral("fit"), negativeSizesAsPositional(args), out, err);
+        stop >= 0)
         return stop;
     const QStringList positional = parser.positionalArguments();
     const QStringList classes = positional.value(1).split(QLatin1Char('/'));

@@ -637,6 +637,17 @@ private Q_SLOTS:
         const Run notANumber = runCli({QStringLiteral("iso286"), QStringLiteral("fifty"), QStringLiteral("H7")});
         QCOMPARE(notANumber.exitCode, 2);
         QVERIFY(notANumber.err.contains(QStringLiteral("\"fifty\"")));
+        // A negative size is a size out of range, not an unknown option "-5", with --json before or after.
+        for (const QStringList &args :
+             {QStringList{QStringLiteral("iso286"), QStringLiteral("-5"), QStringLiteral("h6")},
+              QStringList{QStringLiteral("iso286"), QStringLiteral("--json"), QStringLiteral("-5"),
+                          QStringLiteral("h6")},
+              QStringList{QStringLiteral("fit"), QStringLiteral("-0.5"), QStringLiteral("H7/g6")}}) {
+            const Run negative = runCli(args);
+            QCOMPARE(negative.exitCode, 1);
+            QVERIFY2(negative.err.contains(QStringLiteral("the nominal size must be above 0 mm, but is -")),
+                     qPrintable(negative.err));
+        }
     }
 
     // The text table names the characteristics in the desktop program's words, not the file's keys.
