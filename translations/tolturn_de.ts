@@ -721,14 +721,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>die Ausgabe &apos;%1&apos; ist der Messwertspeicher &apos;%2&apos;: geben Sie eine andere Ausgabedatei an, damit der Speicher nicht überschrieben wird</translation>
     </message>
     <message>
-        <source>optimum at f = %1 mm/rev, %2 = %3</source>
-        <translation>Optimum bei f = %1 mm/rev, %2 = %3</translation>
-    </message>
-    <message>
-        <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2 = %3</source>
-        <translation>kein Plan erfüllt alle Randbedingungen; der Plan mit der geringsten Verletzung bei f = %1 mm/rev, %2 = %3</translation>
-    </message>
-    <message>
         <source>%1 × %2 window, %3 % feasible; %4</source>
         <translation>Fenster %1 × %2, %3 % zulässig; %4</translation>
     </message>
@@ -769,6 +761,22 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>tool edges per part not known (no tool life)</source>
         <translation>Schneiden je Teil nicht bekannt (keine Standzeit)</translation>
+    </message>
+    <message>
+        <source>vc = %1 m/min</source>
+        <translation>vc = %1 m/min</translation>
+    </message>
+    <message>
+        <source>ap = %1 mm</source>
+        <translation>ap = %1 mm</translation>
+    </message>
+    <message>
+        <source>optimum at f = %1 mm/rev, %2</source>
+        <translation>Optimum bei f = %1 mm/rev, %2</translation>
+    </message>
+    <message>
+        <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2</source>
+        <translation>kein Plan erfüllt alle Randbedingungen; der Plan mit der geringsten Verletzung bei f = %1 mm/rev, %2</translation>
     </message>
 </context>
 <context>

@@ -721,14 +721,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>la salida &apos;%1&apos; es el almacén de mediciones &apos;%2&apos;: indique otro archivo de salida para que el almacén no se sobrescriba</translation>
     </message>
     <message>
-        <source>optimum at f = %1 mm/rev, %2 = %3</source>
-        <translation>óptimo en f = %1 mm/rev, %2 = %3</translation>
-    </message>
-    <message>
-        <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2 = %3</source>
-        <translation>ningún plan cumple todas las restricciones; el que menos las incumple, en f = %1 mm/rev, %2 = %3</translation>
-    </message>
-    <message>
         <source>%1 × %2 window, %3 % feasible; %4</source>
         <translation>ventana de %1 × %2, %3 % factible; %4</translation>
     </message>
@@ -769,6 +761,22 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>tool edges per part not known (no tool life)</source>
         <translation>filos de herramienta por pieza desconocidos (sin vida de herramienta)</translation>
+    </message>
+    <message>
+        <source>vc = %1 m/min</source>
+        <translation>vc = %1 m/min</translation>
+    </message>
+    <message>
+        <source>ap = %1 mm</source>
+        <translation>ap = %1 mm</translation>
+    </message>
+    <message>
+        <source>optimum at f = %1 mm/rev, %2</source>
+        <translation>óptimo en f = %1 mm/rev, %2</translation>
+    </message>
+    <message>
+        <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2</source>
+        <translation>ningún plan cumple todas las restricciones; el que menos las incumple, en f = %1 mm/rev, %2</translation>
     </message>
 </context>
 <context>

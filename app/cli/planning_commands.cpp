@@ -304,15 +304,16 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
     int feasible = 0;
     for (const WindowCell &c : w.cells)
         feasible += c.feasible ? 1 : 0;
-    // The window lies around the optimum, or around the plan that violates the constraints least.
-    const QString centre =
-        (plan.feasible ? CommandLine::tr("optimum at f = %1 mm/rev, %2 = %3")
-                       : CommandLine::tr("no plan meets every constraint; the one that violates "
-                                         "them least at f = %1 mm/rev, %2 = %3"))
-            .arg(QString::number(w.base.finishing.feed_mm_rev, 'f', 3), yName,
-                 QString::number(which == WindowPlane::FeedSpeed ? w.base.finishing.cuttingSpeed_m_min
-                                                                 : w.base.finishing.depthOfCut_mm,
-                                 'f', 3));
+    // The window lies around the optimum, or around the plan that violates the constraints least;
+    // named with the symbols of the rest of the output (vc, ap), not the CSV's column names.
+    const QString other =
+        which == WindowPlane::FeedSpeed
+            ? CommandLine::tr("vc = %1 m/min").arg(QString::number(w.base.finishing.cuttingSpeed_m_min, 'f', 1))
+            : CommandLine::tr("ap = %1 mm").arg(QString::number(w.base.finishing.depthOfCut_mm, 'f', 3));
+    const QString centre = (plan.feasible ? CommandLine::tr("optimum at f = %1 mm/rev, %2")
+                                          : CommandLine::tr("no plan meets every constraint; the one that violates "
+                                                            "them least at f = %1 mm/rev, %2"))
+                               .arg(QString::number(w.base.finishing.feed_mm_rev, 'f', 3), other);
     out << CommandLine::tr("%1 × %2 window, %3 % feasible; %4")
                .arg(w.columns)
                .arg(w.rows)

@@ -839,6 +839,13 @@ private Q_SLOTS:
         QVERIFY(lines.at(8).endsWith(QStringLiteral(",0,roughness (Ra)")));
         QVERIFY(lines.at(1).startsWith(QStringLiteral("0.17,201.2,")));
         QVERIFY(lines.at(1).endsWith(QStringLiteral(",1,")));
+        // The summary names the optimum with the output's symbols: the largest feed that leaves Ra
+        // 1.6 µm with r 0.8 mm, f = sqrt(32 r Ra) = sqrt(32 x 0.8 x 0.0016) = 0.2024 mm/rev, at the
+        // top of the speed range (least time, no tool life): 353.6 m/min.
+        const Run summary = runCli({QStringLiteral("window"), QStringLiteral("--size"), QStringLiteral("8"),
+                                    example("stepped-shaft-chuck.tolturn")});
+        QVERIFY2(summary.out.contains(QStringLiteral("; optimum at f = 0.202 mm/rev, vc = 353.6 m/min\n")),
+                 qPrintable(summary.out));
         const Run bad = runCli({QStringLiteral("window"), QStringLiteral("--plane"), QStringLiteral("speed-depth"),
                                 example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(bad.exitCode, 2);
