@@ -107,6 +107,17 @@ std::optional<double> seatAngle(const std::optional<double> &projectValue, const
     return std::nullopt;
 }
 
+// A force model's warnings on the cut's feed or depth, named by the pass they are about
+// ("passes[4].depth_of_cut_mm"), as check names every field.
+void addPassWarnings(const Diagnostics &warnings, int passIndex, Diagnostics &out)
+{
+    for (Diagnostic d : warnings) {
+        if (d.field == QLatin1String("feed_mm_rev") || d.field == QLatin1String("depth_of_cut_mm"))
+            d.field = QStringLiteral("passes[%1].%2").arg(passIndex).arg(d.field);
+        out.push_back(d);
+    }
+}
+
 void resolveForces(const Project &p, const DataLibrary &data, const DeviationOptions &options,
                    const MaterialData &material, TurningInputs &in, Diagnostics &out)
 {
@@ -120,7 +131,7 @@ void resolveForces(const Project &p, const DataLibrary &data, const DeviationOpt
                                             in.pass.depthOfCut_mm, radians(in.enteringAngle_deg), in.noseRadius_mm);
         in.forces = r.forces;
         in.forceModel = QStringLiteral("kienzle");
-        out.insert(out.end(), r.warnings.begin(), r.warnings.end());
+        addPassWarnings(r.warnings, in.passIndex, out);
         return;
     }
     const auto tool = resolveLiDuToolGeometry(p, data, out);
@@ -131,7 +142,7 @@ void resolveForces(const Project &p, const DataLibrary &data, const DeviationOpt
     const ForceResult r = liDuForces(c, *tool, in.pass.feed_mm_rev, in.pass.depthOfCut_mm);
     in.forces = r.forces;
     in.forceModel = QStringLiteral("li_du");
-    out.insert(out.end(), r.warnings.begin(), r.warnings.end());
+    addPassWarnings(r.warnings, in.passIndex, out);
 }
 
 double toolpostCompliance(const Project &p, const DataLibrary &data, QStringList &notes)
@@ -586,6 +597,7 @@ std::optional<BoringInputs> resolveBoring(const Project &p, const DataLibrary &d
     const auto first = static_cast<qsizetype>(out.size());
     TurningInputs bin;
     bin.pass = in.pass;
+    bin.passIndex = in.passIndex;
     const InsertParseResult insert = parseInsertCode(view.tool.insertCode);
     std::optional<SourcedValue> angle;
     if (!insert.insert)

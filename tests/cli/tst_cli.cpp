@@ -650,6 +650,17 @@ private Q_SLOTS:
         }
     }
 
+    // A force model's warning names the pass it is about, as check does: the long shaft's fifth
+    // pass, the finishing pass (index 4), cuts 0.25 mm, below the 0.5 mm of Li & Du's eq. 20.
+    void forceModelWarningsNameThePass()
+    {
+        const Run r = runCli({QStringLiteral("evaluate"), example("long-shaft-centres.tolturn")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains(QStringLiteral("warning: passes[4].depth_of_cut_mm: depth of cut [mm] = 0.25 is "
+                                               "outside the range 0.5 < depth of cut [mm] < 5")),
+                 qPrintable(r.err));
+    }
+
     // The text table names the characteristics in the desktop program's words, not the file's keys.
     void evaluateTextUsesTheCharacteristicsNames()
     {
