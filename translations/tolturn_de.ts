@@ -5606,6 +5606,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>  tangential: not fitted (the warning above says why)</source>
         <translation>  tangential: nicht angepasst (die Warnung oben sagt, warum)</translation>
     </message>
+    <message>
+        <source>Lc, the distance of the spindle bearing behind the chuck face, is not given: give it with --pivot MM, or in the project&apos;s characterisation</source>
+        <translation>Lc, der Abstand des Spindellagers hinter der Futterfläche, ist nicht angegeben: mit --pivot MM oder in der Charakterisierung des Projekts angeben</translation>
+    </message>
 </context>
 <context>
     <name>TableCopy</name>

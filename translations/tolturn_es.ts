@@ -5606,6 +5606,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>  tangential: not fitted (the warning above says why)</source>
         <translation>  tangencial: no ajustado (el aviso de arriba dice por qué)</translation>
     </message>
+    <message>
+        <source>Lc, the distance of the spindle bearing behind the chuck face, is not given: give it with --pivot MM, or in the project&apos;s characterisation</source>
+        <translation>Lc, la distancia del rodamiento del husillo detrás de la cara del plato, no está indicada: indíquela con --pivot MM o en la caracterización del proyecto</translation>
+    </message>
 </context>
 <context>
     <name>TableCopy</name>

@@ -182,7 +182,13 @@ int runCalibrateStiffness(const QStringList &args, QTextStream &out, QTextStream
     Diagnostics problems = read.diagnostics;
     problems.insert(problems.end(), bar.diagnostics.begin(), bar.diagnostics.end());
     StiffnessCalibration cal;
-    if (read.project && bar.points) {
+    const bool pivotGiven = parser.isSet(pivot) || (read.project && read.project->characterisation.pivotDistance_mm);
+    if (read.project && bar.points && !pivotGiven) { // where to give it, not only that it is zero
+        problems.push_back(makeError(QStringLiteral("characterisation.pivot_distance_mm"),
+                                     StiffnessCommand::tr("Lc, the distance of the spindle bearing behind the chuck "
+                                                          "face, is not given: give it with --pivot MM, or in the "
+                                                          "project's characterisation")));
+    } else if (read.project && bar.points) {
         bool ok = true;
         const double lc = parser.isSet(pivot) ? parser.value(pivot).toDouble(&ok)
                                               : read.project->characterisation.pivotDistance_mm.value_or(0.0);

@@ -567,7 +567,10 @@ private Q_SLOTS:
         const Run noPivot =
             runCli({QStringLiteral("calibrate-stiffness"), example("stepped-shaft-chuck.tolturn"), measured});
         QCOMPARE(noPivot.exitCode, 1);
-        QVERIFY2(noPivot.err.contains(QStringLiteral("pivot_distance_mm: Lc")), qPrintable(noPivot.err));
+        QVERIFY2(noPivot.err.contains(QStringLiteral("characterisation.pivot_distance_mm: Lc, the distance of the "
+                                                     "spindle bearing behind the chuck face, is not given: give it "
+                                                     "with --pivot MM")),
+                 qPrintable(noPivot.err));
         const Run badLoad = runCli(
             {QStringLiteral("calibrate-stiffness"), QStringLiteral("--load"), QStringLiteral("1,2"), bar, measured});
         QCOMPARE(badLoad.exitCode, 2);
