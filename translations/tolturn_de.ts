@@ -1566,10 +1566,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
 <context>
     <name>GCodeCommand</name>
     <message>
-        <source>%1: %2, residual %3 -&gt; %4 µm %5</source>
-        <translation>%1: %2, Restabweichung %3 -&gt; %4 µm %5</translation>
-    </message>
-    <message>
         <source>The turning program: the planned roughing passes and the finishing pass of the outer contour, nominal or compensated only where a tolerance needs it, for the machine&apos;s control (Fanuc/Haas, Sinumerik or LinuxCNC).</source>
         <translation>Das Drehprogramm: die geplanten Schruppschnitte und der Schlichtschnitt der Außenkontur, nominal oder nur dort kompensiert, wo eine Toleranz es verlangt, für die Steuerung der Maschine (Fanuc/Haas, Sinumerik oder LinuxCNC).</translation>
     </message>
@@ -1644,6 +1640,14 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits. With --compensated, the features no feed holds keep the programmed feed and are compensated at it.</source>
         <translation>Jedes Formelement des Schlichtschnitts mit eigenem Vorschub drehen: dem größten im Vorschubbereich des Plans, der seine Toleranzen und die Grenzen des Schnitts einhält. Mit --compensated behalten die Formelemente, die kein Vorschub hält, den programmierten Vorschub und werden bei ihm kompensiert.</translation>
+    </message>
+    <message>
+        <source>compensation: %1 %2, residual %3 → %4 µm</source>
+        <translation>Kompensation: %1 %2, Restabweichung %3 → %4 µm</translation>
+    </message>
+    <message>
+        <source>compensation: no tolerance needs a correction; the moves are the nominal program&apos;s</source>
+        <translation>Kompensation: keine Toleranz braucht eine Korrektur; die Bewegungen sind die des nominalen Programms</translation>
     </message>
 </context>
 <context>

@@ -1566,10 +1566,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
 <context>
     <name>GCodeCommand</name>
     <message>
-        <source>%1: %2, residual %3 -&gt; %4 µm %5</source>
-        <translation>%1: %2, residuo %3 -&gt; %4 µm %5</translation>
-    </message>
-    <message>
         <source>The turning program: the planned roughing passes and the finishing pass of the outer contour, nominal or compensated only where a tolerance needs it, for the machine&apos;s control (Fanuc/Haas, Sinumerik or LinuxCNC).</source>
         <translation>El programa de torneado: las pasadas de desbaste planificadas y la pasada de acabado del contorno exterior, nominal o compensado solo donde una tolerancia lo requiere, para el control de la máquina (Fanuc/Haas, Sinumerik o LinuxCNC).</translation>
     </message>
@@ -1644,6 +1640,14 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Cut each feature of the finishing pass at its own feed: the largest in the plan&apos;s feed range that holds its tolerances and the pass&apos;s limits. With --compensated, the features no feed holds keep the programmed feed and are compensated at it.</source>
         <translation>Mecanizar cada elemento de la pasada de acabado con su propio avance: el mayor del rango de avances del plan que cumple sus tolerancias y los límites de la pasada. Con --compensated, los elementos que ningún avance cumple conservan el avance programado y se compensan con él.</translation>
+    </message>
+    <message>
+        <source>compensation: %1 %2, residual %3 → %4 µm</source>
+        <translation>compensación: %1 %2, residuo %3 → %4 µm</translation>
+    </message>
+    <message>
+        <source>compensation: no tolerance needs a correction; the moves are the nominal program&apos;s</source>
+        <translation>compensación: ninguna tolerancia necesita corrección; los movimientos son los del programa nominal</translation>
     </message>
 </context>
 <context>

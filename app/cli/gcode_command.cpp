@@ -21,15 +21,25 @@ struct GCodeCommand {
     Q_DECLARE_TR_FUNCTIONS(GCodeCommand)
 };
 
-void printCompensation(const CompensationPlan &plan, QTextStream &err)
+// Each feature the compensated program corrects (or says something of), under the file's name as
+// every other line; that nothing needed correcting is said too.
+void printCompensation(const CompensationPlan &plan, const QString &file, QTextStream &err)
 {
+    bool said = false;
     for (const FeatureCompensation &f : plan.features) {
-        if (f.action != CompensationAction::None || !f.note.isEmpty())
-            err << GCodeCommand::tr("%1: %2, residual %3 -> %4 µm %5")
-                       .arg(f.featureId, compensationKeyword(f.action), QString::number(f.residualBefore_um, 'f', 3),
-                            QString::number(f.residualAfter_um, 'f', 3), f.note)
-                << '\n';
+        if (f.action == CompensationAction::None && f.note.isEmpty())
+            continue;
+        const QString line =
+            GCodeCommand::tr("compensation: %1 %2, residual %3 → %4 µm")
+                .arg(f.featureId, compensationKeyword(f.action), QString::number(f.residualBefore_um, 'f', 3),
+                     QString::number(f.residualAfter_um, 'f', 3));
+        err << file << ": " << (f.note.isEmpty() ? line : line + QStringLiteral("; ") + f.note) << '\n';
+        said = true;
     }
+    if (!said)
+        err << file << ": "
+            << GCodeCommand::tr("compensation: no tolerance needs a correction; the moves are the nominal program's")
+            << '\n';
 }
 
 void printSchedule(const FeedSchedule &schedule, const std::vector<PassSummary> &constant,
@@ -202,7 +212,7 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     for (const QString &w : program.warnings())
         err << file << ": " << GCodeCommand::tr("warning: %1").arg(w) << '\n';
     if (parser.isSet(compensated))
-        printCompensation(finishing.compensation, err);
+        printCompensation(finishing.compensation, file, err);
     if (schedule) {
         GCodeOptions constant = options;
         constant.finishingFeeds_mm_rev.clear();

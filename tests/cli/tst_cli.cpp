@@ -1004,7 +1004,8 @@ private Q_SLOTS:
         QVERIFY2(alongThePin.endsWith(QStringLiteral(" F0.170")), qPrintable(alongThePin));
         QVERIFY2(r.err.contains(QStringLiteral("feed schedule: O4 kept at the programmed 0.170 mm/rev")),
                  qPrintable(r.err));
-        QVERIFY2(r.err.contains(QStringLiteral("O4: profile")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("thin-pin-compensation.tolturn: compensation: O4 profile, residual ")),
+                 qPrintable(r.err));
     }
 
     void gcodeFile()
@@ -1031,6 +1032,10 @@ private Q_SLOTS:
         QVERIFY(program.contains(QStringLiteral("(PASS 9, FINISHING")));
         QVERIFY(program.contains(QStringLiteral("M30")));
         QVERIFY(r.err.contains(QStringLiteral("the control of machine haas-st-20")));
+        // Every tolerance of the stepped shaft holds as programmed: nothing to correct, and it says so.
+        QVERIFY2(r.err.contains(QStringLiteral("stepped-shaft-chuck.tolturn: compensation: no tolerance needs a "
+                                               "correction")),
+                 qPrintable(r.err));
         const Run usage = runCli({QStringLiteral("gcode"), example("stepped-shaft-chuck.tolturn")});
         QCOMPARE(usage.exitCode, 2); // -o is required
         // "-o -" writes to standard output; another dialect on request; an unknown one is refused.
