@@ -103,8 +103,8 @@ const std::vector<Command> &commands()
          CommandLine::tr("Validate project files: report every problem with the field and value; exit 1 on errors."),
          runCheck},
         {QStringLiteral("deflect"),
-         QStringLiteral("deflect [--json] [--load Fr,Ft,Fa] [--workpiece-only] [--uncorrected-beam] [--stations N] "
-                        "[--pass N] PROJECT"),
+         QStringLiteral("deflect [--json] [--load Fr,Ft,Fa] [--workpiece-only] [--no-in-process] [--uncorrected-beam] "
+                        "[--stations N] [--pass N] [--learned [--store STORE]] [--operation NAME] PROJECT"),
          CommandLine::tr(
              "Predict the deviation at each tool position along every turned feature: radial and tangential, total "
              "and per contribution (spindle–chuck, toolpost, workpiece, thermal), with the forces used."),
@@ -121,28 +121,31 @@ const std::vector<Command> &commands()
          CommandLine::tr("ISO 286 limits of a tolerance class at a nominal size, e.g. 'iso286 50 H7'."), runIso286},
         {QStringLiteral("fit"), QStringLiteral("fit [--json] NOMINAL HOLE/SHAFT"),
          CommandLine::tr("ISO 286 fit of a hole and a shaft class, e.g. 'fit 50 H7/g6': type and clearances."), runFit},
-        {QStringLiteral("evaluate"), QStringLiteral("evaluate [--json] PROJECT"),
+        {QStringLiteral("evaluate"),
+         QStringLiteral("evaluate [--json] [--learned [--store STORE]] [--operation NAME] PROJECT"),
          CommandLine::tr(
              "Every tolerance of the project against the predicted deviation: value, limit, utilisation, the "
              "deciding condition of Valiño et al. Fig. 4, and the verdict."),
          runEvaluate},
         {QStringLiteral("optimize"),
-         QStringLiteral("optimize [--json] [--objective time|cost] [--machine-end compliant|stiff] [--time-limit S] "
-                        "[--write] PROJECT"),
+         QStringLiteral("optimize [--json] [--objective time|cost] [--machine-end compliant|stiff | --learned "
+                        "[--store STORE]] [--time-limit S] [--write] [--operation NAME] PROJECT"),
          CommandLine::tr(
              "Cutting conditions of the finishing and roughing passes at least time or cost per part under every "
              "constraint (tolerances, roughness, power, torque, force, spindle speed, tool life)."),
          runOptimize},
-        {QStringLiteral("window"), QStringLiteral("window [--plane feed-speed|feed-depth] [--csv] [--size N] PROJECT"),
+        {QStringLiteral("window"),
+         QStringLiteral("window [--plane feed-speed|feed-depth] [--csv] [--size N] [--operation NAME] PROJECT"),
          CommandLine::tr(
              "The cutting window of the finishing pass around the optimum: per grid point the objective, whether "
              "it is feasible and the constraint that bounds it."),
          runWindow},
-        {QStringLiteral("advise-clamping"), QStringLiteral("advise-clamping [--json] PROJECT"),
+        {QStringLiteral("advise-clamping"), QStringLiteral("advise-clamping [--json] [--operation NAME] PROJECT"),
          CommandLine::tr("The optimal plan for chuck, between centres and chuck + tailstock, ranked, with the reason."),
          runAdviseClamping},
         {QStringLiteral("gcode"), gcodeSynopsis(), gcodeSummary(), runGCode},
-        {QStringLiteral("report"), QStringLiteral("report [--planner NAME] -o FILE.pdf PROJECT"),
+        {QStringLiteral("report"),
+         QStringLiteral("report [--planner NAME] [--learned [--store STORE]] [--operation NAME] -o FILE.pdf|- PROJECT"),
          CommandLine::tr(
              "The PDF report: part, inputs, predicted deviation, tolerance verdicts, plan with the cutting window, "
              "clamping ranking, compensation, assumptions and sources."),
@@ -157,7 +160,9 @@ const std::vector<Command> &commands()
         {QStringLiteral("mill-deflect"), millDeflectSynopsis(), millDeflectSummary(), runMillDeflect},
         {QStringLiteral("mill-optimize"), millOptimizeSynopsis(), millOptimizeSummary(), runMillOptimize},
         {QStringLiteral("measurements"), measurementsSynopsis(), measurementsSummary(), runMeasurements},
-        {QStringLiteral("learn"), QStringLiteral("learn --machine ID [--criterion gcv|bic] [--json] [--store STORE]"),
+        {QStringLiteral("learn"),
+         QStringLiteral("learn --machine ID [--criterion gcv|bic] [--force-calibration CAL.csv] [--save] [--json] "
+                        "[--store STORE]"),
          CommandLine::tr(
              "Learn what a machine's measured parts show beyond the physics (Li & Du): geometric error, hybrid RBF "
              "network, and how well parts not learned from are predicted with and without it."),
@@ -218,6 +223,9 @@ int runCommandLine(const QStringList &arguments, QTextStream &out, QTextStream &
         return kExitUsage;
     }
     const QString &first = args.constFirst();
+    // "help COMMAND" is "COMMAND --help"; "help" alone, the list of commands.
+    if (first == QLatin1String("help") && args.size() > 1)
+        return runCommandLine({arguments.constFirst(), args.at(1), QStringLiteral("--help")}, out, err);
     if (first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
         out << usage();
         return kExitOk;

@@ -78,8 +78,8 @@ void printSchedule(const FeedSchedule &schedule, const std::vector<PassSummary> 
 QString gcodeSynopsis()
 {
     return QStringLiteral(
-        "gcode [--compensated] [--feed-schedule] [--dialect fanuc|sinumerik|linuxcnc] [--nose control|tip-path] "
-        "-o FILE|- PROJECT");
+        "gcode [--compensated] [--feed-schedule] [--learned [--store STORE]] [--dialect fanuc|sinumerik|linuxcnc] "
+        "[--nose control|tip-path] [--operation NAME] -o FILE|- PROJECT");
 }
 
 QString gcodeSummary()

@@ -45,6 +45,34 @@ private Q_SLOTS:
         QVERIFY(r.out.contains(QStringLiteral("--json")));
     }
 
+    // "help COMMAND" is the command's own help; and every option a command's help lists is in its
+    // usage line (the short -o stands for --output; the milling commands refer to another's
+    // options by name).
+    void everyOptionIsInItsUsageLine()
+    {
+        const Run evaluate = runCli({QStringLiteral("evaluate"), QStringLiteral("--help")});
+        QCOMPARE(runCli({QStringLiteral("help"), QStringLiteral("evaluate")}).out, evaluate.out);
+        const QRegularExpression commandLine(QStringLiteral("^  ([a-z0-9-]+) "), QRegularExpression::MultilineOption);
+        const QRegularExpression optionLine(QStringLiteral("^  (?:-[a-zA-Z], )?(--[a-z-]+)"),
+                                            QRegularExpression::MultilineOption);
+        int commands = 0;
+        for (const auto &c : commandLine.globalMatch(runCli({QStringLiteral("--help")}).out)) {
+            const Run help = runCli({c.captured(1), QStringLiteral("--help")});
+            QCOMPARE(help.exitCode, 0);
+            const QString usage = help.out.section(QStringLiteral("\n\n"), 0, 0);
+            QVERIFY2(usage.startsWith(QStringLiteral("Usage: tolturn-cli ") + c.captured(1)), qPrintable(usage));
+            ++commands;
+            if (usage.contains(QStringLiteral("options]")))
+                continue;
+            for (const auto &o : optionLine.globalMatch(help.out)) {
+                const QString option = o.captured(1);
+                if (option != QLatin1String("--help") && option != QLatin1String("--output"))
+                    QVERIFY2(usage.contains(option), qPrintable(c.captured(1) + QStringLiteral(": ") + option));
+            }
+        }
+        QVERIFY(commands >= 20);
+    }
+
     void version()
     {
         const Run r = runCli({QStringLiteral("--version")});
