@@ -4937,10 +4937,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>z vom gespannten (rechten) Ende [mm]</translation>
     </message>
     <message>
-        <source>Feed schedule of the finishing pass [8]: each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
-        <translation>Vorschubplan des Schlichtschnitts [8]: jedes Formelement mit dem größten Vorschub des Bereichs, der seine Toleranzen und die Grenzen des Schnitts hält; %1 s beim programmierten Vorschub %2 mm/U, %3 s nach Plan (%4 %). Nur auf Wunsch programmiert (gcode --feed-schedule, Reiter G-Code).</translation>
-    </message>
-    <message>
         <source>Feed [mm/rev]</source>
         <translation>Vorschub [mm/U]</translation>
     </message>
@@ -4990,6 +4986,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Bores, boring bar %1 (nose radius %2 mm), same pass: forces Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.</source>
         <translation>Bohrungen, Bohrstange %1 (Eckenradius %2 mm), derselbe Schnitt: Kräfte Fc %3 N, Ff %4 N, Fp %5 N; theoretische Rauheit Ra %6 µm, Rz %7 µm.</translation>
+    </message>
+    <message>
+        <source>Feed schedule of the finishing pass (after Čuš and Župerl [8]): each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
+        <translation>Vorschubplan des Schlichtschnitts (nach Čuš und Župerl [8]): jedes Formelement mit dem größten Vorschub des Bereichs, der seine Toleranzen und die Grenzen des Schnitts hält; %1 s beim programmierten Vorschub %2 mm/U, %3 s nach Plan (%4 %). Nur auf Wunsch programmiert (gcode --feed-schedule, Reiter G-Code).</translation>
     </message>
 </context>
 <context>

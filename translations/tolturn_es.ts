@@ -4937,10 +4937,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>z desde el extremo sujetado (derecho) [mm]</translation>
     </message>
     <message>
-        <source>Feed schedule of the finishing pass [8]: each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
-        <translation>Programa de avances de la pasada de acabado [8]: cada elemento con el mayor avance del rango que mantiene sus tolerancias y los límites de la pasada; %1 s con el avance programado de %2 mm/rev, %3 s según el programa (%4 %). Solo se programa si se pide (gcode --feed-schedule, pestaña Código G).</translation>
-    </message>
-    <message>
         <source>Feed [mm/rev]</source>
         <translation>Avance [mm/rev]</translation>
     </message>
@@ -4990,6 +4986,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Bores, boring bar %1 (nose radius %2 mm), same pass: forces Fc %3 N, Ff %4 N, Fp %5 N; theoretical Ra %6 µm, Rz %7 µm.</source>
         <translation>Agujeros, barra de mandrinar %1 (radio de punta %2 mm), misma pasada: fuerzas Fc %3 N, Ff %4 N, Fp %5 N; rugosidad teórica Ra %6 µm, Rz %7 µm.</translation>
+    </message>
+    <message>
+        <source>Feed schedule of the finishing pass (after Čuš and Župerl [8]): each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
+        <translation>Programa de avances de la pasada de acabado (según Čuš y Župerl [8]): cada elemento con el mayor avance del rango que mantiene sus tolerancias y los límites de la pasada; %1 s con el avance programado de %2 mm/rev, %3 s según el programa (%4 %). Solo se programa si se pide (gcode --feed-schedule, pestaña Código G).</translation>
     </message>
 </context>
 <context>

@@ -321,7 +321,7 @@ void verdicts(Layout &l, const Project &p, const std::vector<ToleranceEvaluation
                         e.utilisation_pct ? num(*e.utilisation_pct, 1) + QStringLiteral(" %") : QStringLiteral("—"),
                         verdictName(e.verdict)});
     }
-    l.table(rows, {28, 82, 44, 68, 56, 58, 38, kWidth - 374}, [&](int row, int column) {
+    l.table(rows, {28, 82, 44, 68, 56, 58, 52, kWidth - 388}, [&](int row, int column) {
         return column == 7 ? ToleranceVerdictModel::verdictColor(v[static_cast<std::size_t>(row - 1)].verdict)
                            : QColor();
     });
@@ -456,11 +456,13 @@ void feedSchedule(Layout &l, const std::optional<ScheduledFinishing> &scheduled)
     const FeedSchedule &s = scheduled->schedule;
     const double before = scheduled->before_s;
     const double after = scheduled->after_s;
-    l.paragraph(Report::tr("Feed schedule of the finishing pass [8]: each feature at the largest feed of the range "
-                           "that holds its tolerances and the pass's limits; %1 s at the programmed %2 mm/rev, %3 s "
-                           "scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).")
-                    .arg(num(before, 1), num(s.programmedFeed_mm_rev, 3), num(after, 1),
-                         QString::asprintf("%+.1f", before > 0.0 ? 100.0 * (after - before) / before : 0.0)));
+    l.paragraph(
+        Report::tr(
+            "Feed schedule of the finishing pass (after Čuš and Župerl [8]): each feature at the largest "
+            "feed of the range that holds its tolerances and the pass's limits; %1 s at the programmed %2 mm/rev, %3 s "
+            "scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).")
+            .arg(num(before, 1), num(s.programmedFeed_mm_rev, 3), num(after, 1),
+                 QString::asprintf("%+.1f", before > 0.0 ? 100.0 * (after - before) / before : 0.0)));
     std::vector<QStringList> rows{{Report::tr("Feature"), Report::tr("Feed [mm/rev]"), Report::tr("Limited by")}};
     for (const ScheduledFeed &f : s.features)
         rows.push_back(
