@@ -49,6 +49,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
+#include <QShowEvent>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTimer>
@@ -145,7 +146,23 @@ MainWindow::MainWindow(QWidget *parent)
     // Docks and window as the user left them.
     const QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    m_layoutRestored = restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+}
+
+// The first layout, at the window's real width: the verdict table, with its range and stiffness
+// columns, takes as much of it as the drawing (sizes given before the window is shown are scaled
+// down by the layout).
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    if (m_layoutRestored || m_firstLayoutDone)
+        return;
+    m_firstLayoutDone = true;
+    auto *setup = findChild<QDockWidget *>(QStringLiteral("setupDock"));
+    auto *tolerances = findChild<QDockWidget *>(QStringLiteral("tolerancesDock"));
+    if (setup == nullptr || tolerances == nullptr)
+        return;
+    resizeDocks({setup, tolerances}, {width() * 22 / 100, width() * 42 / 100}, Qt::Horizontal);
 }
 
 MainWindow::~MainWindow() = default;

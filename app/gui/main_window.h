@@ -94,6 +94,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     void createActions();
@@ -158,6 +159,8 @@ private:
     QDockWidget *m_importDock = nullptr;
     QDockWidget *m_problemsDock = nullptr;
     std::vector<std::pair<QAction *, ActionNeeds>> m_actionNeeds;
+    bool m_layoutRestored = false;  // the docks as the user left them (showEvent leaves them so)
+    bool m_firstLayoutDone = false; // showEvent has sized the docks to the window once
 };
 
 } // namespace tolturn

@@ -237,6 +237,18 @@ private Q_SLOTS:
         QSettings().clear();
     }
 
+    // The first layout (no saved one) gives the verdict table 42 % of the window's width, sized
+    // once the window has its real width, not the share the layout scales a request down to.
+    void verdictTableHasItsShareOfTheWidth()
+    {
+        MainWindow w;
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const auto *tolerances = w.findChild<QDockWidget *>(QStringLiteral("tolerancesDock"));
+        QVERIFY2(tolerances->width() >= 1600 * 42 / 100 - 10, qPrintable(QString::number(tolerances->width())));
+    }
+
     // A laptop screen (1366 x 768, less a panel) holds the whole window with every dock: its
     // minimum size fits, and the screenshots of docs/images show it at both sizes.
     void windowFitsALaptopScreen()
