@@ -2,6 +2,7 @@
 #include "core/planning/post_processor.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 #include <QTextStream>
 
 #include <algorithm>
@@ -113,18 +114,35 @@ public:
     }
 
     // Comment lines of at most kCommentWidth characters (LinuxCNC refuses blocks of over 256, and a
-    // control's screen is narrow), wrapped at spaces.
+    // control's screen is narrow), wrapped at spaces, never between a number and its unit.
     void commentLine(const QString &text)
     {
         QString rest = asciiText(text);
         while (rest.size() > kCommentWidth) {
             qsizetype cut = rest.lastIndexOf(QLatin1Char(' '), kCommentWidth);
+            while (cut > 0 && splitsAQuantity(rest, cut))
+                cut = rest.lastIndexOf(QLatin1Char(' '), cut - 1);
             if (cut <= 0)
                 cut = kCommentWidth;
             m_out << comment(rest.left(cut)) << '\n';
             rest = rest.mid(cut).trimmed();
         }
         m_out << comment(rest) << '\n';
+    }
+
+    // Whether a break at the space `at` would split a quantity: a number from its unit ("1.938" /
+    // "mm") or a symbol from its number ("ap" / "1.938").
+    [[nodiscard]] static bool splitsAQuantity(const QString &text, qsizetype at)
+    {
+        static const QRegularExpression numberBefore(QStringLiteral("[0-9]$"));
+        static const QRegularExpression unitAfter(QStringLiteral("^(mm|mm/rev|m/min|rpm|um|kW|N|s|min|%|deg)\\b"),
+                                                  QRegularExpression::CaseInsensitiveOption);
+        static const QRegularExpression symbolBefore(QStringLiteral("(^|[ (])[A-Za-z]{1,2}$"));
+        static const QRegularExpression numberAfter(QStringLiteral("^[-+]?[0-9]"));
+        const QString before = text.left(at);
+        const QString after = text.mid(at + 1);
+        return (numberBefore.match(before).hasMatch() && unitAfter.match(after).hasMatch()) ||
+               (symbolBefore.match(before).hasMatch() && numberAfter.match(after).hasMatch());
     }
 
     [[nodiscard]] QString comment(const QString &text) const

@@ -1059,6 +1059,10 @@ private Q_SLOTS:
         QVERIFY(program.contains(QStringLiteral("G40 G01")));
         QVERIFY(program.contains(QStringLiteral("(PASS 9, FINISHING")));
         QVERIFY(program.contains(QStringLiteral("M30")));
+        // Comments wrap at 72 characters but keep a quantity whole: the conditions line breaks
+        // before "AP 1.938 MM", not between "AP" and "1.938" or "1.938" and "MM".
+        QVERIFY2(program.contains(QStringLiteral("\n(AP 1.938 MM, PASS 9 FINISHING")), qPrintable(program));
+        QVERIFY(!program.contains(QStringLiteral("\n(MM")) && !program.contains(QStringLiteral(" AP)\n")));
         QVERIFY(r.err.contains(QStringLiteral("the control of machine haas-st-20")));
         // Every tolerance of the stepped shaft holds as programmed: nothing to correct, and it says so.
         QVERIFY2(r.err.contains(QStringLiteral("stepped-shaft-chuck.tolturn: compensation: no tolerance needs a "
