@@ -3705,12 +3705,28 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>kein Schlichtschnitt: der letzte Schnitt wird als der genommen, der die Kontur auf Maß schneidet (die Urteile und das Programm beruhen darauf)</translation>
     </message>
     <message>
-        <source>, while the verdicts of %1 take the whole bore</source>
-        <translation>, während die Bewertungen von %1 die ganze Bohrung nehmen</translation>
+        <source>left at the pilot hole</source>
+        <translation>bleibt auf dem Maß der Vorbohrung</translation>
     </message>
     <message>
-        <source>%1 mm reaches z = %2 mm (the free end at %3 mm, %4 mm clear of it): %5 is not bored from z = %6 mm to there%7. Reaching it needs an overhang of %8 mm; or bore from both ends</source>
-        <translation>%1 mm reicht bis z = %2 mm (das freie Ende bei %3 mm, %4 mm Abstand davon): %5 wird von z = %6 mm bis dorthin nicht gebohrt%7. Um es zu erreichen, braucht es eine Auskraglänge von %8 mm; oder von beiden Enden bohren</translation>
+        <source>inside the jaws (left of z = %1 mm), where no verdict judges it</source>
+        <translation>innerhalb der Backen (links von z = %1 mm), wo keine Bewertung sie beurteilt</translation>
+    </message>
+    <message>
+        <source>while the verdicts of %1 take it as bored</source>
+        <translation>während die Bewertungen von %1 sie als gebohrt nehmen</translation>
+    </message>
+    <message>
+        <source>%1 mm reaches z = %2 mm (the free end at %3 mm, %4 mm clear of it): %5 not bored from z = %6 mm to there, %7. Reaching it needs an overhang of %8 mm; or bore from both ends</source>
+        <translation>%1 mm reicht bis z = %2 mm (das freie Ende bei %3 mm, %4 mm Abstand davon): %5 von z = %6 mm bis dorthin nicht gebohrt, %7. Um es zu erreichen, braucht es eine Auskraglänge von %8 mm; oder von beiden Enden bohren</translation>
+    </message>
+    <message>
+        <source>bore %1</source>
+        <translation>Bohrung %1</translation>
+    </message>
+    <message>
+        <source>bores %1</source>
+        <translation>Bohrungen %1</translation>
     </message>
 </context>
 <context>

@@ -3705,12 +3705,28 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>ninguna pasada de acabado: la última pasada se toma como la que lleva el contorno a medida (los veredictos y el programa se basan en ella)</translation>
     </message>
     <message>
-        <source>, while the verdicts of %1 take the whole bore</source>
-        <translation>, mientras que los veredictos de %1 toman todo el agujero</translation>
+        <source>left at the pilot hole</source>
+        <translation>queda en el agujero previo</translation>
     </message>
     <message>
-        <source>%1 mm reaches z = %2 mm (the free end at %3 mm, %4 mm clear of it): %5 is not bored from z = %6 mm to there%7. Reaching it needs an overhang of %8 mm; or bore from both ends</source>
-        <translation>%1 mm llega hasta z = %2 mm (el extremo libre en %3 mm, a %4 mm de él): %5 no se mandrina desde z = %6 mm hasta allí%7. Para alcanzarlo hace falta un voladizo de %8 mm; o mandrinar desde ambos extremos</translation>
+        <source>inside the jaws (left of z = %1 mm), where no verdict judges it</source>
+        <translation>dentro de las garras (a la izquierda de z = %1 mm), donde ningún veredicto lo juzga</translation>
+    </message>
+    <message>
+        <source>while the verdicts of %1 take it as bored</source>
+        <translation>mientras que los veredictos de %1 lo toman como mandrinado</translation>
+    </message>
+    <message>
+        <source>%1 mm reaches z = %2 mm (the free end at %3 mm, %4 mm clear of it): %5 not bored from z = %6 mm to there, %7. Reaching it needs an overhang of %8 mm; or bore from both ends</source>
+        <translation>%1 mm llega hasta z = %2 mm (el extremo libre en %3 mm, a %4 mm de él): %5 sin mandrinar desde z = %6 mm hasta allí, %7. Para alcanzarlo hace falta un voladizo de %8 mm; o mandrinar desde ambos extremos</translation>
+    </message>
+    <message>
+        <source>bore %1</source>
+        <translation>agujero %1</translation>
+    </message>
+    <message>
+        <source>bores %1</source>
+        <translation>agujeros %1</translation>
     </message>
 </context>
 <context>

@@ -90,39 +90,56 @@ void checkBoringGeometry(const Project &p, const Tool &t, Diagnostics &out)
 }
 
 // A bar too short for its bores: its edge reaches z = length + clearance - overhang from the free
-// end (boring_toolpath.cpp), so the program leaves the bore beyond unbored, while the deviation and
-// the verdicts take the whole bore. Said with the tolerances it concerns and the overhang needed.
+// end (boring_toolpath.cpp), so the program leaves the bore beyond unbored. The bores are those the
+// resolver lets the bar reach (turning_inputs.cpp boringReach_mm): open at the free end, of this
+// set-up. One too short for their depth out of the jaws the resolver refuses, which says so. What
+// lies unbored out of the jaws the verdicts judge as if bored; inside them no verdict judges it.
 void checkBoringReach(const Project &p, const Tool &t, Diagnostics &out)
 {
+    const double length = p.part.length_mm();
+    const double jaws = p.clamping.method == ClampingMethod::BetweenCentres ? 0.0 : p.clamping.clampedLength_mm;
     if (!t.overhang_mm)
         return;
-    const double reach = p.part.length_mm() + kToolClearance_mm - *t.overhang_mm;
+    const double reach = length + kToolClearance_mm - *t.overhang_mm;
     QStringList bores;
     double deepest = reach;
-    for (const Segment &s : p.part.inner.segments) {
-        const double left = std::min(s.from.z_mm, s.to.z_mm);
-        if ((p.scope && !p.scope->cutFeatures.contains(s.id)) || left >= reach - 1e-6)
-            continue;
-        bores << s.id;
-        deepest = std::min(deepest, left);
+    double deepestOutOfTheJaws = length; // as the resolver takes it
+    for (const auto &[first, end] : p.part.inner.pieces()) {
+        if (p.part.inner.segments[end - 1].to.z_mm < length - kProfileEpsilon_mm)
+            continue; // open at the held end: another set-up's
+        for (std::size_t i = first; i < end; ++i) {
+            const Segment &s = p.part.inner.segments[i];
+            const bool ours = p.scope ? p.scope->cutFeatures.contains(s.id) : operationOf(p, s.id) == 0;
+            const double left = std::min(s.from.z_mm, s.to.z_mm);
+            if (!ours)
+                continue;
+            deepestOutOfTheJaws = std::min(deepestOutOfTheJaws, std::max(left, jaws));
+            if (left >= reach - 1e-6)
+                continue;
+            bores << s.id;
+            deepest = std::min(deepest, left);
+        }
     }
-    if (bores.isEmpty())
-        return;
-    QStringList tolerances;
+    if (bores.isEmpty() || *t.overhang_mm < length - deepestOutOfTheJaws - kProfileEpsilon_mm)
+        return; // nothing left unbored, or a bar the resolver refuses as too short (and says so)
+    QStringList judged;
     for (const Tolerance &x : p.tolerances) {
         if (bores.contains(x.featureId))
-            tolerances << x.id;
+            judged << x.id;
     }
-    const QString judged = tolerances.isEmpty() ? QString()
-                                                : Plausibility::tr(", while the verdicts of %1 take the whole bore")
-                                                      .arg(tolerances.join(QStringLiteral(", ")));
+    QString where = Plausibility::tr("left at the pilot hole");
+    if (reach <= jaws + 1e-6)
+        where = Plausibility::tr("inside the jaws (left of z = %1 mm), where no verdict judges it").arg(num(jaws));
+    else if (!judged.isEmpty())
+        where = Plausibility::tr("while the verdicts of %1 take it as bored").arg(judged.join(QStringLiteral(", ")));
     out.push_back(makeWarning(QStringLiteral("boring_tool.overhang_mm"),
                               Plausibility::tr("%1 mm reaches z = %2 mm (the free end at %3 mm, %4 mm clear of it): "
-                                               "%5 is not bored from z = %6 mm to there%7. Reaching it needs an "
+                                               "%5 not bored from z = %6 mm to there, %7. Reaching it needs an "
                                                "overhang of %8 mm; or bore from both ends")
-                                  .arg(num(*t.overhang_mm), num(reach), num(p.part.length_mm()), num(kToolClearance_mm),
-                                       bores.join(QStringLiteral(", ")), num(deepest), judged,
-                                       num(p.part.length_mm() + kToolClearance_mm - deepest))));
+                                  .arg(num(*t.overhang_mm), num(reach), num(length), num(kToolClearance_mm),
+                                       (bores.size() == 1 ? Plausibility::tr("bore %1") : Plausibility::tr("bores %1"))
+                                           .arg(bores.join(QStringLiteral(", "))),
+                                       num(deepest), where, num(length + kToolClearance_mm - deepest))));
 }
 
 // The boring bar (docs/model.md §3.1): a bar the data know, its overhang within the maker's
