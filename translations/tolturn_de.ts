@@ -778,6 +778,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2</source>
         <translation>kein Plan erfüllt alle Randbedingungen; der Plan mit der geringsten Verletzung bei f = %1 mm/rev, %2</translation>
     </message>
+    <message>
+        <source>not known</source>
+        <translation>nicht bekannt</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -8901,16 +8905,24 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         </translation>
     </message>
     <message>
-        <source>Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5 min); cost %6; %7</source>
-        <translation>Zeit je Teil %1 min (Schlichten %2 min, Schruppen %3 min, Handhabung %4 min, Werkzeugwechsel %5 min); Kosten %6; %7</translation>
-    </message>
-    <message>
         <source>tool edges %1 per part</source>
         <translation>Schneiden %1 je Teil</translation>
     </message>
     <message>
         <source>tool edges not known (no tool life)</source>
         <translation>Schneiden nicht bekannt (keine Standzeit)</translation>
+    </message>
+    <message>
+        <source>Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5); cost %6; %7</source>
+        <translation>Zeit je Teil %1 min (Schlichten %2 min, Schruppen %3 min, Handhabung %4 min, Werkzeugwechsel %5); Kosten %6; %7</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>not known</source>
+        <translation>nicht bekannt</translation>
     </message>
 </context>
 <context>

@@ -778,6 +778,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>no plan meets every constraint; the one that violates them least at f = %1 mm/rev, %2</source>
         <translation>ningún plan cumple todas las restricciones; el que menos las incumple, en f = %1 mm/rev, %2</translation>
     </message>
+    <message>
+        <source>not known</source>
+        <translation>desconocido</translation>
+    </message>
 </context>
 <context>
     <name>Compensation</name>
@@ -8901,16 +8905,24 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         </translation>
     </message>
     <message>
-        <source>Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5 min); cost %6; %7</source>
-        <translation>Tiempo por pieza %1 min (acabado %2 min, desbaste %3 min, manipulación %4 min, cambios de herramienta %5 min); coste %6; %7</translation>
-    </message>
-    <message>
         <source>tool edges %1 per part</source>
         <translation>filos de herramienta %1 por pieza</translation>
     </message>
     <message>
         <source>tool edges not known (no tool life)</source>
         <translation>filos de herramienta desconocidos (sin vida de herramienta)</translation>
+    </message>
+    <message>
+        <source>Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5); cost %6; %7</source>
+        <translation>Tiempo por pieza %1 min (acabado %2 min, desbaste %3 min, manipulación %4 min, cambios de herramienta %5); coste %6; %7</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>not known</source>
+        <translation>desconocido</translation>
     </message>
 </context>
 <context>

@@ -73,7 +73,9 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
     out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3, handling %4, tool changes %5), cost %6 "
                            "at %7 per min, %8")
                .arg(formatFixed(e.time_min, 3), formatFixed(e.finishingTime_min, 3), formatFixed(e.roughingTime_min, 3),
-                    formatFixed(s.handlingTime_min, 3), formatFixed(s.toolChangeTime_min * e.toolEdgesPerPart, 3),
+                    formatFixed(s.handlingTime_min, 3),
+                    toolLifeKnown ? formatFixed(s.toolChangeTime_min * e.toolEdgesPerPart, 3)
+                                  : CommandLine::tr("not known"),
                     formatFixed(e.cost, 2), formatNumber(s.machineRate_per_min),
                     toolLifeKnown ? CommandLine::tr("%1 tool edges per part").arg(formatFixed(e.toolEdgesPerPart, 3))
                                   : CommandLine::tr("tool edges per part not known (no tool life)"))

@@ -61,6 +61,10 @@ namespace tolturn {
 
 namespace {
 
+// The dock layout's version for saveState/restoreState: raised when the first layout changes, so
+// that a layout saved by an older version is not restored over it (1: the verdict table's 42 %).
+constexpr int kLayoutVersion = 1;
+
 // TolTurn's own SVG icons (resources/icons), sharp at any screen scale, the same on every desktop.
 QIcon actionIcon(const char *name)
 {
@@ -146,7 +150,7 @@ MainWindow::MainWindow(QWidget *parent)
     // Docks and window as the user left them.
     const QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    m_layoutRestored = restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    m_layoutRestored = restoreState(settings.value(QStringLiteral("window/state")).toByteArray(), kLayoutVersion);
 }
 
 // The first layout, at the window's real width: the verdict table, with its range and stiffness
@@ -788,7 +792,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
     }
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), saveState());
+    settings.setValue(QStringLiteral("window/state"), saveState(kLayoutVersion));
     event->accept();
 }
 

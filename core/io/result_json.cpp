@@ -213,7 +213,9 @@ QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
     const PlanningSettings &s = problem.project().planning;
     // Edges per part follow from the tool life: without Taylor constants they are not known (null),
     // not zero.
-    const QJsonValue edges = s.taylorC_m_min && s.taylorN ? QJsonValue(e.toolEdgesPerPart) : QJsonValue();
+    const bool toolLifeKnown = s.taylorC_m_min && s.taylorN;
+    const QJsonValue edges = toolLifeKnown ? QJsonValue(e.toolEdgesPerPart) : QJsonValue();
+    const QJsonValue changes = toolLifeKnown ? QJsonValue(s.toolChangeTime_min * e.toolEdgesPerPart) : QJsonValue();
     return {{QStringLiteral("feasible"), r.feasible},
             {QStringLiteral("objective"), keyword(problem.project().planning.objective)},
             {QStringLiteral("objective_value"), e.objective},
@@ -222,7 +224,7 @@ QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
             {QStringLiteral("finishing_time_min"), e.finishingTime_min},
             {QStringLiteral("roughing_time_min"), e.roughingTime_min},
             {QStringLiteral("handling_time_min"), s.handlingTime_min},
-            {QStringLiteral("tool_change_time_min"), s.toolChangeTime_min * e.toolEdgesPerPart},
+            {QStringLiteral("tool_change_time_min"), changes},
             {QStringLiteral("tool_edges_per_part"), edges},
             {QStringLiteral("finishing"), passJson(r.candidate.finishing)},
             {QStringLiteral("roughing"), QJsonObject{{QStringLiteral("passes"), r.candidate.roughingPasses},

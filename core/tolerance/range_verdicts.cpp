@@ -36,8 +36,9 @@ bool passes(const ToleranceEvaluation &e)
 
 // One constant offset of the programmed size that holds a size at both ends of the range, where
 // neither holds as programmed: the predicted sizes of both ends (each about the same programmed
-// size) must fit in the zone together, and the offset centres them. Between the ends the size moves
-// with 1/K, so it stays between them.
+// size) must fit in the zone together, and the offset centres them. A part in the chuck alone moves
+// by F/K (withChuckTranslation), so between the ends its sizes stay between theirs; with a tailstock
+// the ends are taken to bound the sizes between them, which is not proven.
 std::optional<double> offsetForBothEnds(const ToleranceEvaluation &compliant, const ToleranceEvaluation &stiff)
 {
     if (compliant.verdict != Verdict::PassesAfterOffset || stiff.verdict != Verdict::PassesAfterOffset ||

@@ -431,10 +431,13 @@ void PlanningPanel::showReport()
                                               : QStringLiteral("%1 %2").arg(number(e.cost, 2), m_currency);
     const PlanningSettings &s = m_report->problem->project().planning;
     const bool toolLifeKnown = s.taylorC_m_min && s.taylorN; // edges per part need the tool life
-    lines << tr("Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5 min); "
+    lines << tr("Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5); "
                 "cost %6; %7")
                  .arg(number(e.time_min, 3), number(e.finishingTime_min, 3), number(e.roughingTime_min, 3),
-                      number(s.handlingTime_min, 3), number(s.toolChangeTime_min * e.toolEdgesPerPart, 3), cost,
+                      number(s.handlingTime_min, 3),
+                      toolLifeKnown ? tr("%1 min").arg(number(s.toolChangeTime_min * e.toolEdgesPerPart, 3))
+                                    : tr("not known"),
+                      cost,
                       toolLifeKnown ? tr("tool edges %1 per part").arg(number(e.toolEdgesPerPart, 3))
                                     : tr("tool edges not known (no tool life)"));
     lines << tr("Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
