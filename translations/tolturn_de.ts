@@ -4566,6 +4566,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>fails as programmed even on the stiffest machine of the range</source>
         <translation>verfehlt wie programmiert sogar auf der steifsten Maschine des Bereichs</translation>
     </message>
+    <message>
+        <source>%1; an offset of %2 µm on the diameter holds it on any machine in the range</source>
+        <translation>%1; eine Korrektur von %2 µm am Durchmesser hält sie auf jeder Maschine des Bereichs</translation>
+    </message>
 </context>
 <context>
     <name>Remedies</name>

@@ -4566,6 +4566,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>fails as programmed even on the stiffest machine of the range</source>
         <translation>no cumple tal como está programado ni en la máquina más rígida del rango</translation>
     </message>
+    <message>
+        <source>%1; an offset of %2 µm on the diameter holds it on any machine in the range</source>
+        <translation>%1; una corrección de %2 µm en el diámetro la mantiene en cualquier máquina del rango</translation>
+    </message>
 </context>
 <context>
     <name>Remedies</name>

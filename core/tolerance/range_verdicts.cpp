@@ -35,23 +35,28 @@ bool passes(const ToleranceEvaluation &e)
 }
 
 // One constant offset of the programmed size that holds a size at both ends of the range, where
-// neither holds as programmed: the predicted sizes of both ends (each about the same programmed
-// size) must fit in the zone together, and the offset centres them. A part in the chuck alone moves
-// by F/K (withChuckTranslation), so between the ends its sizes stay between theirs; with a tailstock
-// the ends are taken to bound the sizes between them, which is not proven.
+// one end or both do not hold as programmed: the predicted sizes of both ends (each about the same
+// programmed size) must fit in the zone together, and the offset centres them. A part in the chuck
+// alone moves by F/K (withChuckTranslation), so between the ends its sizes stay between theirs;
+// with a tailstock the ends are taken to bound the sizes between them, which is not proven.
 std::optional<double> offsetForBothEnds(const ToleranceEvaluation &compliant, const ToleranceEvaluation &stiff)
 {
-    if (compliant.verdict != Verdict::PassesAfterOffset || stiff.verdict != Verdict::PassesAfterOffset ||
-        !compliant.predictedMax_um || !compliant.predictedMin_um || !stiff.predictedMax_um || !stiff.predictedMin_um ||
-        !compliant.offset_um || !compliant.limit_um)
+    const auto sized = [](const ToleranceEvaluation &e) {
+        return (e.verdict == Verdict::PassesAsProgrammed || e.verdict == Verdict::PassesAfterOffset) &&
+               e.predictedMax_um && e.predictedMin_um && e.limit_um;
+    };
+    if (!sized(compliant) || !sized(stiff))
         return std::nullopt;
+    // The end that needs an offset tells the programmed size: its offset centres its sizes on it.
+    const ToleranceEvaluation &offset = compliant.offset_um ? compliant : stiff;
+    if (!offset.offset_um)
+        return std::nullopt; // both hold as programmed
     const double largest = std::max(*compliant.predictedMax_um, *stiff.predictedMax_um);
     const double smallest = std::min(*compliant.predictedMin_um, *stiff.predictedMin_um);
     if (largest - smallest > *compliant.limit_um)
         return std::nullopt;
-    // offset_um centres the compliant end's sizes; move it by how far the union's middle lies from theirs.
-    const double compliantMiddle = 0.5 * (*compliant.predictedMax_um + *compliant.predictedMin_um);
-    return *compliant.offset_um + compliantMiddle - 0.5 * (largest + smallest);
+    const double programmed = *offset.offset_um + 0.5 * (*offset.predictedMax_um + *offset.predictedMin_um);
+    return programmed - 0.5 * (largest + smallest);
 }
 
 bool decided(const ToleranceEvaluation &e)
@@ -213,14 +218,15 @@ RangeEvaluation evaluateOverStiffnessRange(const Project &project, const DataLib
             e.range = RangeVerdict::NoRange;
         else if (passes(e.compliant) && passes(*e.stiff))
             e.range = RangeVerdict::PassesOnAnyMachine;
-        else if (passes(e.compliant))
-            e.range = RangeVerdict::PassesOnPartOfRange;
-        else if (passes(*e.stiff))
-            e.range = RangeVerdict::PassesIfStiffer;
         else {
             e.offsetOnAnyMachine_um = offsetForBothEnds(e.compliant, *e.stiff);
-            e.range = e.offsetOnAnyMachine_um ? RangeVerdict::PassesAfterOffsetOnAnyMachine
-                                              : RangeVerdict::FailsEvenOnStiffest;
+            if (passes(e.compliant))
+                e.range = RangeVerdict::PassesOnPartOfRange;
+            else if (passes(*e.stiff))
+                e.range = RangeVerdict::PassesIfStiffer;
+            else
+                e.range = e.offsetOnAnyMachine_um ? RangeVerdict::PassesAfterOffsetOnAnyMachine
+                                                  : RangeVerdict::FailsEvenOnStiffest;
         }
         out.tolerances.push_back(e);
     }
@@ -288,6 +294,15 @@ QString requiredStiffnessText(const RequiredStiffness &r)
     return {};
 }
 
+// A verdict that holds only on part of the range, and what one offset would do on all of it.
+QString withOffsetOnAnyMachine(const QString &verdict, const ToleranceRangeEvaluation &e)
+{
+    if (!e.offsetOnAnyMachine_um)
+        return verdict;
+    return RangeVerdicts::tr("%1; an offset of %2 µm on the diameter holds it on any machine in the range")
+        .arg(verdict, QString::number(*e.offsetOnAnyMachine_um, 'f', 1));
+}
+
 QString rangeVerdictText(const ToleranceRangeEvaluation &e)
 {
     switch (e.range) {
@@ -297,12 +312,14 @@ QString rangeVerdictText(const ToleranceRangeEvaluation &e)
         const std::optional<RequiredStiffness> &r =
             e.chuck && e.chuck->kind == RequiredStiffness::Kind::Found ? e.chuck : e.tailstock;
         if (r && r->kind == RequiredStiffness::Kind::Found)
-            return RangeVerdicts::tr("passes only if the machine is stiffer than %1 N/µm")
-                .arg(perMicrometre(r->value_N_per_mm));
-        return RangeVerdicts::tr("passes only on the stiffer machines of the range");
+            return withOffsetOnAnyMachine(RangeVerdicts::tr("passes only if the machine is stiffer than %1 N/µm")
+                                              .arg(perMicrometre(r->value_N_per_mm)),
+                                          e);
+        return withOffsetOnAnyMachine(RangeVerdicts::tr("passes only on the stiffer machines of the range"), e);
     }
     case RangeVerdict::PassesOnPartOfRange:
-        return RangeVerdicts::tr("passes on the compliant machines of the range, not on the stiffest");
+        return withOffsetOnAnyMachine(
+            RangeVerdicts::tr("passes on the compliant machines of the range, not on the stiffest"), e);
     case RangeVerdict::PassesAfterOffsetOnAnyMachine:
         return RangeVerdicts::tr("fails as programmed; an offset of %1 µm on the diameter holds it on any machine "
                                  "in the range")

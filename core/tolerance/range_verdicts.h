@@ -48,8 +48,9 @@ struct ToleranceRangeEvaluation {
     std::optional<RequiredStiffness> chuck;     // chuck and chuck + tailstock, or the collet
     std::optional<RequiredStiffness> tailstock; // tailstock, or both centres between centres
     bool collet = false;                        // `chuck` is what a collet needs
-    // PassesAfterOffsetOnAnyMachine: the change of the programmed diameter that centres the sizes
-    // of both ends in the zone [µm].
+    // Where a size does not hold as programmed on the whole range but the sizes of both ends fit its
+    // zone together: the change of the programmed diameter that centres them [µm]. Always with
+    // PassesAfterOffsetOnAnyMachine; with PassesIfStiffer and PassesOnPartOfRange where it exists.
     std::optional<double> offsetOnAnyMachine_um;
 };
 

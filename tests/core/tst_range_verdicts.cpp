@@ -79,6 +79,14 @@ double barAt100_mm_per_N() // w(100)
     return d * d * d / (3 * kE * I) + d / (kKappaSolid * kG * A);
 }
 
+// The one offset for both ends of the range (passesOnAnyAndFailsOnStiffest works it out): the sizes
+// run from 2F (1/K_stiff + l/(AE)) to 2F (1/K_compliant + l/(AE) + w(100)), centred about zero by
+// -F (1/K_stiff + 1/K_compliant + 2 l/(AE) + w(100)) [µm].
+double offsetForBothEnds_um(double force_N)
+{
+    return -1000.0 * force_N * (1.0 / kStiff + 1.0 / kCompliant + 2.0 * kToolpost_mm_per_N + barAt100_mm_per_N());
+}
+
 double requiredK(double force_N, double zone_mm)
 {
     return force_N / (zone_mm / 4 - force_N * (kToolpost_mm_per_N + barAt100_mm_per_N()));
@@ -107,6 +115,23 @@ private Q_SLOTS:
         QVERIFY(!e.tailstock); // no tailstock in a chuck
         QCOMPARE(e.compliant.verdict, Verdict::PassesAfterOffset);
         QCOMPARE(e.stiff->verdict, Verdict::PassesAsProgrammed);
+        // The sizes of both ends span 21.0 µm, within 40: one offset holds it on any machine too.
+        QVERIFY(e.offsetOnAnyMachine_um);
+        QVERIFY2(std::abs(*e.offsetOnAnyMachine_um / offsetForBothEnds_um(200.0) - 1.0) < 0.01,
+                 qPrintable(QString::number(*e.offsetOnAnyMachine_um)));
+        QVERIFY2(rangeVerdictText(e).endsWith(
+                     QStringLiteral("; an offset of %1 µm on the diameter holds it on any machine in the range")
+                         .arg(*e.offsetOnAnyMachine_um, 0, 'f', 1)),
+                 qPrintable(rangeVerdictText(e)));
+        // The offset is a change of the programmed size, whatever the zone's place: the same with
+        // limits 0/-40 µm (programmed at -20) as with ±20.
+        Project h = chuckedBar(40.0);
+        h.tolerances.front().upperDeviation_um = 0.0;
+        h.tolerances.front().lowerDeviation_um = -40.0;
+        const RangeEvaluation shifted = evaluateOverStiffnessRange(h, DataLibrary::builtIn(), radialLoad(200));
+        QVERIFY(shifted.tolerances.front().offsetOnAnyMachine_um);
+        QVERIFY2(std::abs(*shifted.tolerances.front().offsetOnAnyMachine_um / offsetForBothEnds_um(200.0) - 1.0) < 0.01,
+                 qPrintable(QString::number(*shifted.tolerances.front().offsetOnAnyMachine_um)));
     }
 
     // The other verdicts: with t = 60 µm the bar needs only 200 / (0.015 - 0.008440) = 30.5 N/µm,
@@ -132,7 +157,7 @@ private Q_SLOTS:
         const double w100 = barAt100_mm_per_N();
         const double spread_um = 2000.0 * f * (1.0 / kCompliant - 1.0 / kStiff + w100);
         QVERIFY2(std::abs(spread_um - 21.0) < 0.1, qPrintable(QString::number(spread_um)));
-        const double expected_um = -1000.0 * f * (1.0 / kStiff + 1.0 / kCompliant + 2.0 * kToolpost_mm_per_N + w100);
+        const double expected_um = offsetForBothEnds_um(f);
         QVERIFY2(std::abs(*offset.offsetOnAnyMachine_um - expected_um) < 0.01 * std::abs(expected_um),
                  qPrintable(QStringLiteral("%1 vs %2").arg(*offset.offsetOnAnyMachine_um).arg(expected_um)));
         QCOMPARE(rangeVerdictText(offset),
