@@ -69,7 +69,7 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
     out << '\n';
     // The parts of the time as planning_problem.cpp adds them: handling and tool changes too.
     const PlanningSettings &s = problem.project().planning;
-    const bool toolLifeKnown = s.taylorC_m_min && s.taylorN; // edges per part need the tool life
+    const bool toolLifeKnown = problem.knowsToolLife();
     out << CommandLine::tr("  time per part %1 min (finishing %2, roughing %3, handling %4, tool changes %5), cost %6 "
                            "at %7 per min, %8")
                .arg(formatFixed(e.time_min, 3), formatFixed(e.finishingTime_min, 3), formatFixed(e.roughingTime_min, 3),

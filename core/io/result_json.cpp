@@ -213,7 +213,7 @@ QJsonObject planJson(const PlanResult &r, const PlanningProblem &problem)
     const PlanningSettings &s = problem.project().planning;
     // Edges per part follow from the tool life: without Taylor constants they are not known (null),
     // not zero.
-    const bool toolLifeKnown = s.taylorC_m_min && s.taylorN;
+    const bool toolLifeKnown = problem.knowsToolLife();
     const QJsonValue edges = toolLifeKnown ? QJsonValue(e.toolEdgesPerPart) : QJsonValue();
     const QJsonValue changes = toolLifeKnown ? QJsonValue(s.toolChangeTime_min * e.toolEdgesPerPart) : QJsonValue();
     return {{QStringLiteral("feasible"), r.feasible},

@@ -161,6 +161,13 @@ public:
 
     [[nodiscard]] double roughnessNoseRadius_mm() const { return m_roughnessNoseRadius_mm; }
 
+    // Whether the planning data give Taylor constants: without them tool life, edges per part and
+    // tool changes are not known (shown so, never as zero).
+    [[nodiscard]] bool knowsToolLife() const
+    {
+        return m_project.planning.taylorC_m_min.has_value() && m_project.planning.taylorN.has_value();
+    }
+
     // Radial stock between the bar and the deepest turned feature [mm].
     [[nodiscard]] double radialStock_mm() const { return m_radialStock_mm; }
 

@@ -430,7 +430,7 @@ void PlanningPanel::showReport()
     const QString cost = m_currency.isEmpty() ? tr("%1 (no currency set in Preferences)").arg(number(e.cost, 2))
                                               : QStringLiteral("%1 %2").arg(number(e.cost, 2), m_currency);
     const PlanningSettings &s = m_report->problem->project().planning;
-    const bool toolLifeKnown = s.taylorC_m_min && s.taylorN; // edges per part need the tool life
+    const bool toolLifeKnown = m_report->problem->knowsToolLife();
     lines << tr("Time per part %1 min (finishing %2 min, roughing %3 min, handling %4 min, tool changes %5); "
                 "cost %6; %7")
                  .arg(number(e.time_min, 3), number(e.finishingTime_min, 3), number(e.roughingTime_min, 3),
