@@ -3562,6 +3562,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>On the section its own finishing depth (%1 mm) leaves, the plan the search found violated %2 %3; the speeds and feeds were searched again at depth %4 mm.</source>
         <translation>Auf dem Querschnitt, den seine eigene Schlichttiefe (%1 mm) lässt, verletzte der gefundene Plan %2 %3; Schnittgeschwindigkeit und Vorschub wurden bei der Tiefe %4 mm erneut gesucht.</translation>
     </message>
+    <message>
+        <source>Stated on the steps a program gives them (%1 m/min, %2 mm/rev, %3 mm), the plan breaks a constraint: it is kept at full precision, and the program rounds it.</source>
+        <translation>Auf die Schritte gebracht, in denen ein Programm sie angibt (%1 m/min, %2 mm/U, %3 mm), verletzt der Plan eine Bedingung: Er bleibt in voller Genauigkeit, und das Programm rundet ihn.</translation>
+    </message>
 </context>
 <context>
     <name>Planning</name>

@@ -3562,6 +3562,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>On the section its own finishing depth (%1 mm) leaves, the plan the search found violated %2 %3; the speeds and feeds were searched again at depth %4 mm.</source>
         <translation>En la sección que deja su propia profundidad de acabado (%1 mm), el plan encontrado incumplía %2 %3; la velocidad de corte y el avance se buscaron de nuevo a la profundidad de %4 mm.</translation>
     </message>
+    <message>
+        <source>Stated on the steps a program gives them (%1 m/min, %2 mm/rev, %3 mm), the plan breaks a constraint: it is kept at full precision, and the program rounds it.</source>
+        <translation>Llevado a los pasos en que un programa los indica (%1 m/min, %2 mm/rev, %3 mm), el plan incumple una restricción: se mantiene con precisión completa y el programa lo redondea.</translation>
+    </message>
 </context>
 <context>
     <name>Planning</name>

@@ -81,14 +81,14 @@ void printPlan(QTextStream &out, const PlanResult &r, const PlanningProblem &pro
                                   : CommandLine::tr("tool edges per part not known (no tool life)"))
         << '\n';
     out << CommandLine::tr("  finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
-               .arg(QString::number(r.candidate.finishing.cuttingSpeed_m_min, 'f', 1),
+               .arg(QString::number(r.candidate.finishing.cuttingSpeed_m_min, 'f', 0),
                     QString::number(r.candidate.finishing.feed_mm_rev, 'f', 3),
                     QString::number(r.candidate.finishing.depthOfCut_mm, 'f', 3))
         << '\n';
     if (r.candidate.roughingPasses > 0)
         out << CommandLine::tr("  roughing: %n pass(es) of ap %1 mm at vc %2 m/min, f %3 mm/rev", nullptr,
                                r.candidate.roughingPasses)
-                   .arg(QString::number(rough.depthOfCut_mm, 'f', 3), QString::number(rough.cuttingSpeed_m_min, 'f', 1),
+                   .arg(QString::number(rough.depthOfCut_mm, 'f', 3), QString::number(rough.cuttingSpeed_m_min, 'f', 0),
                         QString::number(rough.feed_mm_rev, 'f', 3))
             << '\n';
     for (const ConstraintValue &c : r.binding)
@@ -310,7 +310,7 @@ int runWindow(const QStringList &args, QTextStream &out, QTextStream &err)
     // named with the symbols of the rest of the output (vc, ap), not the CSV's column names.
     const QString other =
         which == WindowPlane::FeedSpeed
-            ? CommandLine::tr("vc = %1 m/min").arg(QString::number(w.base.finishing.cuttingSpeed_m_min, 'f', 1))
+            ? CommandLine::tr("vc = %1 m/min").arg(QString::number(w.base.finishing.cuttingSpeed_m_min, 'f', 0))
             : CommandLine::tr("ap = %1 mm").arg(QString::number(w.base.finishing.depthOfCut_mm, 'f', 3));
     const QString centre = (plan.feasible ? CommandLine::tr("optimum at f = %1 mm/rev, %2")
                                           : CommandLine::tr("no plan meets every constraint; the one that violates "

@@ -3,6 +3,7 @@
 
 #include "core/adaptive/force_control.h"
 #include "core/adaptive/pass_depth.h"
+#include "core/planning/program_resolution.h"
 
 #include <QCoreApplication>
 
@@ -18,7 +19,6 @@ struct FeedScheduleText {
     Q_DECLARE_TR_FUNCTIONS(FeedScheduleText)
 };
 
-constexpr double kFeedStep_mm_rev = 0.001; // a program states the feed to three decimals
 constexpr double kSlack = 1e-9;
 
 // The limits of the finishing pass that change with the feed.
@@ -66,9 +66,10 @@ public:
     {
         const ValueRange &range = problem.feedRange();
         std::set<double> feeds{finishing.feed_mm_rev};
-        const auto steps = static_cast<int>(std::floor((range.max - range.min) / kFeedStep_mm_rev + 1e-9));
+        const auto steps = static_cast<int>(std::floor((range.max - range.min) / kProgramFeedStep_mm_rev + 1e-9));
         for (int i = 0; i <= steps; ++i)
-            feeds.insert(std::round((range.min + i * kFeedStep_mm_rev) / kFeedStep_mm_rev) * kFeedStep_mm_rev);
+            feeds.insert(std::round((range.min + i * kProgramFeedStep_mm_rev) / kProgramFeedStep_mm_rev) *
+                         kProgramFeedStep_mm_rev);
         m_feeds.assign(feeds.begin(), feeds.end());
         m_programmed = static_cast<std::size_t>(std::find(m_feeds.begin(), m_feeds.end(), finishing.feed_mm_rev) -
                                                 m_feeds.begin());
@@ -257,7 +258,8 @@ FeedSchedule scheduleFinishingFeeds(const PlanningProblem &problem, const Cuttin
                                     "feature's the largest that holds its tolerances and the finishing pass's limits; "
                                     "the bores keep the programmed feed.")
                    .arg(QString::number(problem.feedRange().min, 'f', 3),
-                        QString::number(problem.feedRange().max, 'f', 3), QString::number(kFeedStep_mm_rev, 'f', 3));
+                        QString::number(problem.feedRange().max, 'f', 3),
+                        QString::number(kProgramFeedStep_mm_rev, 'f', 3));
     return s;
 }
 
@@ -368,7 +370,7 @@ int scheduleRoughingFeeds(const Project &project, const ForceFunction &forces, d
             if (a >= pass.conditions.depthOfCut_mm - 1e-9)
                 continue; // the full depth: the programmed feed
             const double f = a > 1e-6 ? feedForForce(forces, a, force, f0, maxFeed_mm_rev) : maxFeed_mm_rev;
-            const double rounded = std::floor(f / kFeedStep_mm_rev + 1e-9) * kFeedStep_mm_rev;
+            const double rounded = std::floor(f / kProgramFeedStep_mm_rev + 1e-9) * kProgramFeedStep_mm_rev;
             if (rounded > f0 + 1e-9) {
                 m.feed_mm_rev = rounded;
                 ++scheduled;

@@ -2,15 +2,18 @@
 #include "core/planning/optimiser.h"
 
 #include "core/common/diagnostic.h"
+#include "core/planning/program_resolution.h"
 #include "core/planning/remedies.h"
 
 #include <QCoreApplication>
 #include <nlopt.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 
 namespace tolturn {
@@ -328,6 +331,71 @@ void checkAtItsOwnDepth(const PlanningProblem &problem, const std::vector<int> &
     result.evaluation = best.evaluation;
 }
 
+// The values a variable of the plan may take on its program step (program_resolution.h): the
+// step below and the step above that lie in its box, or the value itself where no step does (a
+// depth the stock fixes, a range narrower than a step).
+std::vector<double> onStep(double x, double step, double lo, double hi)
+{
+    std::vector<double> values;
+    for (const double v : {std::floor(x / step + 1e-9) * step, std::ceil(x / step - 1e-9) * step}) {
+        if (v >= lo - 1e-9 && v <= hi + 1e-9 && (values.empty() || std::abs(v - values.front()) > 1e-12))
+            values.push_back(v);
+    }
+    if (values.empty())
+        values.push_back(x);
+    return values;
+}
+
+// The plan found, stated as the program states it: each of the five variables on its step, below
+// or above, the best of the combinations as `evaluate` judges them (on the section the finishing
+// depth leaves). A search optimum on a binding constraint lies between steps; its nearest
+// settable neighbour may break the constraint by a hair, so every neighbour is judged. A feasible
+// plan stays at full precision, said in a note, when none of its neighbours holds.
+void stateOnProgramSteps(const PlanningProblem &problem, PlanResult &result)
+{
+    const PlanCandidate &c = result.candidate;
+    const PlanBox box = planBox(problem, c.roughingPasses);
+    const std::array<double, 5> x{c.finishing.cuttingSpeed_m_min, c.finishing.feed_mm_rev, c.finishing.depthOfCut_mm,
+                                  c.roughing.cuttingSpeed_m_min, c.roughing.feed_mm_rev};
+    const std::array<double, 5> step{kProgramSpeedStep_m_min, kProgramFeedStep_mm_rev, kProgramDepthStep_mm,
+                                     kProgramSpeedStep_m_min, kProgramFeedStep_mm_rev};
+    std::array<std::vector<double>, 5> values;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        values[i] = onStep(x[i], step[i], box.lower[i], box.upper[i]);
+    std::map<double, std::shared_ptr<const PlanningProblem>> atDepth;
+    std::optional<SearchOutcome> best;
+    for (unsigned pick = 0; pick < 32U; ++pick) {
+        std::vector<double> y(x.size());
+        bool exists = true;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            const std::size_t choice = (pick >> i) & 1U;
+            exists = exists && choice < values[i].size();
+            y[i] = values[i][std::min(choice, values[i].size() - 1)];
+        }
+        if (!exists)
+            continue;
+        auto &judge = atDepth[y[2]];
+        if (!judge)
+            judge = problem.forFinishingDepth(y[2]);
+        SearchOutcome o;
+        o.candidate = candidateAt(y, c.roughingPasses);
+        o.evaluation = judge->evaluate(o.candidate);
+        if (!best || rank(o.evaluation) < rank(best->evaluation))
+            best = o;
+    }
+    if (result.feasible && !best->evaluation.feasible(1e-6)) {
+        result.notes << Optimiser::tr("Stated on the steps a program gives them (%1 m/min, %2 mm/rev, %3 mm), the "
+                                      "plan breaks a constraint: it is kept at full precision, and the program "
+                                      "rounds it.")
+                            .arg(formatFixed(kProgramSpeedStep_m_min, 0), formatFixed(kProgramFeedStep_mm_rev, 3),
+                                 formatFixed(kProgramDepthStep_mm, 3));
+        return;
+    }
+    result.candidate = best->candidate;
+    result.evaluation = best->evaluation;
+    result.feasible = best->evaluation.feasible(1e-6);
+}
+
 } // namespace
 
 PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOptions &options)
@@ -406,6 +474,8 @@ PlanResult optimisePlan(const PlanningProblem &problem, const OptimisationOption
     }
     if (result.feasible && goOn())
         checkAtItsOwnDepth(problem, counts, options, result, deadline);
+    if (!counts.empty() && !result.cancelled)
+        stateOnProgramSteps(problem, result);
     if (!result.feasible) {
         for (const ConstraintValue &v : result.evaluation.constraints) {
             if (v.violation() <= 1e-6)

@@ -441,11 +441,11 @@ void PlanningPanel::showReport()
                       toolLifeKnown ? tr("tool edges %1 per part").arg(number(e.toolEdgesPerPart, 3))
                                     : tr("tool edges not known (no tool life)"));
     lines << tr("Finishing: vc %1 m/min, f %2 mm/rev, ap %3 mm")
-                 .arg(number(r.candidate.finishing.cuttingSpeed_m_min, 1), number(r.candidate.finishing.feed_mm_rev, 3),
+                 .arg(number(r.candidate.finishing.cuttingSpeed_m_min, 0), number(r.candidate.finishing.feed_mm_rev, 3),
                       number(r.candidate.finishing.depthOfCut_mm, 3));
     if (r.candidate.roughingPasses > 0)
         lines << tr("Roughing: %n pass(es) at vc %1 m/min, f %2 mm/rev", nullptr, r.candidate.roughingPasses)
-                     .arg(number(r.candidate.roughing.cuttingSpeed_m_min, 1),
+                     .arg(number(r.candidate.roughing.cuttingSpeed_m_min, 0),
                           number(r.candidate.roughing.feed_mm_rev, 3));
     for (const ConstraintValue &c : r.binding)
         lines << tr("Binding: %1 (%2 of %3 %4)")

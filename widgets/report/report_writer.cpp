@@ -391,9 +391,9 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing, const s
                 Report::tr("%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc "
                            "%5 m/min, f %6 mm/rev.",
                            nullptr, pl.candidate.roughingPasses)
-                    .arg(num(pl.evaluation.time_min, 3), num(pl.candidate.finishing.cuttingSpeed_m_min, 1),
+                    .arg(num(pl.evaluation.time_min, 3), num(pl.candidate.finishing.cuttingSpeed_m_min, 0),
                          num(pl.candidate.finishing.feed_mm_rev, 3), num(pl.candidate.finishing.depthOfCut_mm, 3),
-                         num(pl.candidate.roughing.cuttingSpeed_m_min, 1), num(pl.candidate.roughing.feed_mm_rev, 3)));
+                         num(pl.candidate.roughing.cuttingSpeed_m_min, 0), num(pl.candidate.roughing.feed_mm_rev, 3)));
             QStringList binding;
             for (const ConstraintValue &c : pl.binding)
                 binding << c.label();
