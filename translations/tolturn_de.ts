@@ -5954,6 +5954,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the headstock with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
         <translation>%1 fällt in Vorschubrichtung mit %2° ab, steiler als die Nebenschneide der Platte (%3°): mit diesem Werkzeug lässt es sich zum Spindelstock hin nicht drehen, ohne es zu beschädigen; drehen Sie es von der anderen Seite oder mit einem neutralen Werkzeug.</translation>
     </message>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°) less the 2° of free cutting angle it needs: the finishing pass rides over it at %4° from z = %5 to %6 mm and leaves up to %7 mm of %8 uncut. Turn it from the other side or with a neutral tool.</source>
+        <translation>%1 fällt in Vorschubrichtung unter %2° ab, steiler als die Nebenschneide der Wendeschneidplatte (%3°) abzüglich der 2° Freiwinkel, die sie braucht: Der Schlichtschnitt fährt unter %4° von z = %5 bis %6 mm darüber hinweg und lässt bis zu %7 mm von %8 stehen. Von der anderen Seite oder mit einem neutralen Werkzeug drehen.</translation>
+    </message>
 </context>
 <context>
     <name>Undercuts</name>

@@ -5954,6 +5954,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the headstock with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
         <translation>%1 desciende %2° en la dirección de avance, más que el filo secundario de la plaquita (%3°): no se puede tornear hacia el cabezal con esta herramienta sin dañarlo; tornéelo desde el otro lado o con una herramienta neutra.</translation>
     </message>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°) less the 2° of free cutting angle it needs: the finishing pass rides over it at %4° from z = %5 to %6 mm and leaves up to %7 mm of %8 uncut. Turn it from the other side or with a neutral tool.</source>
+        <translation>%1 cae a %2° en la dirección del avance, más que el filo secundario de la plaquita (%3°) menos los 2° de ángulo libre que necesita: la pasada de acabado pasa por encima a %4° desde z = %5 hasta %6 mm y deja sin cortar hasta %7 mm de %8. Tornearlo desde el otro lado o con una herramienta neutra.</translation>
+    </message>
 </context>
 <context>
     <name>Undercuts</name>

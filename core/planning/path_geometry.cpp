@@ -161,6 +161,81 @@ bool keepsItsSense(const PathElement &original, const PathElement &offset)
     return std::abs(offsetSweep) <= std::abs(originalSweep) + 1e-6 && std::abs(offsetSweep) > 1e-9;
 }
 
+// The angle below the feed direction (-z) at which a travel direction falls: 0 along -z, 90°
+// straight down, above 90° down and back; not positive where it does not fall.
+double fallAngle_deg(ProfilePoint direction)
+{
+    if (direction.r_mm >= -kTiny)
+        return 0.0;
+    return std::atan2(-direction.r_mm, -direction.z_mm) * 180.0 / std::numbers::pi;
+}
+
+// Whether a point on the circle carrying an arc lies on the arc (between its ends, its way).
+bool onArc(const PathElement &e, ProfilePoint p)
+{
+    const auto angle = [&e](ProfilePoint q) { return std::atan2(q.r_mm - e.centre.r_mm, q.z_mm - e.centre.z_mm); };
+    const double turn = 2.0 * std::numbers::pi;
+    auto sweep = [&](double to) {
+        double w = to - angle(e.from);
+        if (e.counterClockwise)
+            while (w < 0.0)
+                w += turn;
+        else
+            while (w > 0.0)
+                w -= turn;
+        return std::abs(w);
+    };
+    return sweep(angle(p)) <= sweep(angle(e.to)) + 1e-9;
+}
+
+bool onElement(const PathElement &e, ProfilePoint p)
+{
+    if (e.arc)
+        return std::abs(norm(p - e.centre) - e.radius_mm) < 1e-6 && onArc(e, p);
+    const ProfilePoint d = e.to - e.from;
+    const double t = dot(p - e.from, d) / dot(d, d);
+    return t >= -1e-9 && t <= 1.0 + 1e-9 && std::abs(cross(p - e.from, unit(d))) < 1e-6;
+}
+
+// Where an element starts to fall steeper than `trailing_deg`: its start, or for an arc that
+// steepens along its way, the point where its tangent passes that angle.
+std::optional<ProfilePoint> steepFrom(const PathElement &e, double trailing_deg)
+{
+    if (fallAngle_deg(startTangent(e)) > trailing_deg + 1e-6)
+        return e.from;
+    if (!e.arc || fallAngle_deg(endTangent(e)) <= trailing_deg + 1e-6)
+        return std::nullopt;
+    // The tangent (-cos t, -sin t): at 90° + t about the centre counter-clockwise, t - 90° clockwise.
+    const double t = trailing_deg * std::numbers::pi / 180.0;
+    const double psi = e.counterClockwise ? 0.5 * std::numbers::pi + t : t - 0.5 * std::numbers::pi;
+    const ProfilePoint p = e.centre + e.radius_mm * ProfilePoint{std::cos(psi), std::sin(psi)};
+    return onElement(e, p) ? p : e.from;
+}
+
+// The first point after `from` where the ray from it along `d` meets the chain from element
+// `first` on: its element and the point.
+std::optional<std::pair<std::size_t, ProfilePoint>> firstHit(const std::vector<PathElement> &chain, std::size_t first,
+                                                             ProfilePoint from, ProfilePoint d)
+{
+    PathElement ray;
+    ray.from = from;
+    ray.to = from + d;
+    for (std::size_t j = first; j < chain.size(); ++j) {
+        std::optional<ProfilePoint> best;
+        double bestS = std::numeric_limits<double>::infinity();
+        for (const ProfilePoint &q : intersections(ray, chain[j])) {
+            const double s = dot(q - from, d);
+            if (s > 1e-6 && s < bestS && onElement(chain[j], q)) {
+                bestS = s;
+                best = q;
+            }
+        }
+        if (best)
+            return std::make_pair(j, *best);
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 std::vector<PathElement> reversedElements(const std::vector<Segment> &segments)
@@ -260,6 +335,69 @@ std::vector<PathElement> offsetToTheRight(const std::vector<PathElement> &chain,
         out.push_back(next);
     }
     return out;
+}
+
+std::vector<PathElement> riddenOverSteepFalls(const std::vector<PathElement> &chain, double trailing_deg,
+                                              std::vector<RiddenOver> *riddenOver)
+{
+    const double t = trailing_deg * std::numbers::pi / 180.0;
+    const ProfilePoint down{-std::cos(t), -std::sin(t)}; // the steepest way down the tool may take
+    std::vector<PathElement> rest = chain;
+    std::vector<PathElement> out;
+    std::size_t i = 0;
+    std::size_t rides = 0; // bounded: each ride moves on along the chain
+    while (i < rest.size()) {
+        const PathElement &e = rest[i];
+        const std::optional<ProfilePoint> p = steepFrom(e, trailing_deg);
+        if (!p) {
+            out.push_back(e);
+            ++i;
+            continue;
+        }
+        if (norm(*p - e.from) > 1e-6) { // an arc steepening on its way: followed up to there
+            PathElement head = e;
+            head.to = *p;
+            out.push_back(head);
+        }
+        const auto hit = ++rides <= 4 * chain.size() ? firstHit(rest, i, *p, down) : std::nullopt;
+        RiddenOver ridden;
+        ridden.from = *p;
+        ridden.to = hit ? hit->second : *p + (std::max(0.0, p->z_mm - rest.back().to.z_mm) / std::cos(t)) * down;
+        const std::size_t last = hit ? hit->first : rest.size() - 1;
+        for (std::size_t j = i; j <= last; ++j) {
+            ridden.steepest_deg = std::max(
+                {ridden.steepest_deg, fallAngle_deg(startTangent(rest[j])), fallAngle_deg(endTangent(rest[j]))});
+            const bool under = j < last || !hit || norm(hit->second - rest[j].from) > 1e-6; // not met at its start
+            if (under && !ridden.featureIds.contains(rest[j].featureId))
+                ridden.featureIds << rest[j].featureId;
+            for (const ProfilePoint q : {rest[j].from, rest[j].to}) {
+                if (q.z_mm < ridden.to.z_mm - 1e-6 || q.z_mm > p->z_mm + 1e-6)
+                    continue;
+                const double line = p->r_mm - (p->z_mm - q.z_mm) * std::tan(t);
+                ridden.deepest_mm = std::max(ridden.deepest_mm, line - q.r_mm);
+            }
+        }
+        PathElement line;
+        line.from = *p;
+        line.to = ridden.to;
+        line.featureId = e.featureId;
+        if (norm(line.to - line.from) > 1e-6)
+            out.push_back(line);
+        if (riddenOver)
+            riddenOver->push_back(ridden);
+        if (!hit)
+            break;
+        rest[last].from = hit->second; // the chain goes on from where the line meets it
+        i = norm(rest[last].to - rest[last].from) < 1e-6 ? last + 1 : last;
+    }
+    return out;
+}
+
+void rideOverSteepFalls(Envelope &env, double trailing_deg)
+{
+    const double drop = std::tan(trailing_deg * std::numbers::pi / 180.0) * env.step_mm;
+    for (std::size_t i = env.r_mm.size(); i-- > 1;)
+        env.r_mm[i - 1] = std::max(env.r_mm[i - 1], env.r_mm[i] - drop);
 }
 
 std::vector<PathElement> translated(std::vector<PathElement> chain, double dz_mm, double dr_mm)

@@ -9,6 +9,7 @@
 #include "core/part/profile.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <vector>
 
@@ -40,6 +41,27 @@ struct PathElement {
 [[nodiscard]] std::vector<PathElement> offsetToTheRight(const std::vector<PathElement> &chain, double distance_mm,
                                                         QStringList *dropped = nullptr);
 
+// A stretch of a contour that the insert's trailing edge keeps the tool off: where the contour
+// falls in the feed direction (towards the headstock, -z) steeper than the trailing edge, the tool
+// rides down a line at the trailing edge's angle from `from` until it meets the contour again at
+// `to`, and leaves up to `deepest_mm` (radial) of what lies below that line.
+struct RiddenOver {
+    ProfilePoint from;
+    ProfilePoint to;
+    double deepest_mm = 0.0;
+    QStringList featureIds;    // the features below the line, in the order the tool meets them
+    double steepest_deg = 0.0; // of the fall, from the feed direction
+};
+
+// The chain (in the feed direction, towards -z) as a tool whose trailing edge rises `trailing_deg`
+// from the z axis can follow it without cutting into what it has finished: a fall steeper than
+// that is replaced by the line at `trailing_deg` from where it starts to where it meets the chain
+// again (or the chain's last z). The nose centre, offset from that chain, then never descends
+// steeper than the trailing edge, and so the edge never dips below the surface behind the nose.
+// The stretches ridden over are appended to `riddenOver`.
+[[nodiscard]] std::vector<PathElement> riddenOverSteepFalls(const std::vector<PathElement> &chain, double trailing_deg,
+                                                            std::vector<RiddenOver> *riddenOver = nullptr);
+
 // Moves every point (and arc centre) of a chain by (dz, dr).
 [[nodiscard]] std::vector<PathElement> translated(std::vector<PathElement> chain, double dz_mm, double dr_mm);
 
@@ -61,6 +83,10 @@ struct Envelope {
 
 [[nodiscard]] Envelope widenedEnvelope(const std::vector<Segment> &contour, double distance_mm, double zFrom_mm,
                                        double zTo_mm, double step_mm);
+
+// The envelope as a tool coming from +z with that trailing edge can cut down to it: no point
+// lower than the line at `trailing_deg` down from any point on its right.
+void rideOverSteepFalls(Envelope &env, double trailing_deg);
 
 // Ramer–Douglas–Peucker: the fewest of the points that stay within `tolerance_mm` of the polyline.
 [[nodiscard]] std::vector<ProfilePoint> simplified(const std::vector<ProfilePoint> &points, double tolerance_mm);

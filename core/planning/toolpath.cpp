@@ -710,9 +710,40 @@ void warnAtUndercuts(const Project &project, QStringList &warnings)
 struct FinishingGeometry {
     std::vector<PathElement> contour; // what is programmed (control) or offset (tip path)
     bool faced = false;
+    std::vector<RiddenOver> riddenOver; // where the trailing edge keeps the tool off the contour
 };
 
-FinishingGeometry finishingGeometry(const Project &project, const ToolpathOptions &options, double noseRadius_mm)
+// The steepest a tool may descend towards the headstock without its trailing edge touching the
+// surface behind it: the trailing edge's angle less the free cutting angle of at least 2° that
+// Sandvik Coromant asks to keep between workpiece and insert in profiling ("Internal turning",
+// profile turning; 7° recommended for finish and tool life).
+constexpr double kFreeCuttingAngle_deg = 2.0;
+
+double rideAngle_deg(double trailing_deg)
+{
+    return std::max(0.0, trailing_deg - kFreeCuttingAngle_deg);
+}
+
+// What the trailing edge leaves of a contour a tool follows towards the headstock, each stretch a
+// warning (a fall of less than a micrometre, as in a compensated path, is left unsaid).
+void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, QStringList &warnings)
+{
+    for (const RiddenOver &r : ridden) {
+        if (r.deepest_mm < 1e-3)
+            continue;
+        warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing edge "
+                                  "(%3°) less the 2° of free cutting angle it needs: the finishing pass rides over "
+                                  "it at %4° from z = %5 to %6 mm and leaves up to %7 mm of %8 uncut. Turn it from "
+                                  "the other side or with a neutral tool.")
+                        .arg(r.featureIds.constFirst(), QString::number(r.steepest_deg, 'f', 1),
+                             QString::number(trailing_deg, 'f', 1),
+                             QString::number(rideAngle_deg(trailing_deg), 'f', 1), mm(r.from.z_mm), mm(r.to.z_mm),
+                             mm(r.deepest_mm), r.featureIds.join(QStringLiteral(", ")));
+    }
+}
+
+FinishingGeometry finishingGeometry(const Project &project, const ToolpathOptions &options, double noseRadius_mm,
+                                    std::optional<double> trailing_deg)
 {
     FinishingGeometry g;
     std::vector<PathElement> chain = compensatedChain(targetContour(project, ContourSide::Outer), options.compensation);
@@ -736,28 +767,31 @@ FinishingGeometry finishingGeometry(const Project &project, const ToolpathOption
     const auto boundary = operationBoundary_mm(project);
     g.contour = boundary && *boundary > jaws ? clippedAtBoundary(chain, *boundary, project.scope->cutFeatures)
                                              : clippedAtLeft(chain, jaws, noseRadius_mm, false);
+    if (trailing_deg)
+        g.contour = riddenOverSteepFalls(g.contour, rideAngle_deg(*trailing_deg), &g.riddenOver);
     return g;
 }
 
 PassPath finishingPass(const Project &project, const CuttingPass &conditions, const ToolpathOptions &options,
-                       double noseRadius_mm, double safeRadius, Toolpath &path)
+                       double noseRadius_mm, std::optional<double> trailing_deg, double safeRadius, Toolpath &path)
 {
-    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm);
+    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm, trailing_deg);
     path.endFaceFaced = g.faced;
     return contourPass(g.contour, g.faced, conditions, options, noseRadius_mm, safeRadius, project.part.length_mm(),
                        path.warnings);
 }
 
 std::vector<PassPath> roughingPasses(const Project &project, const std::vector<CuttingPass> &roughing,
-                                     double allowance_mm, double noseRadius_mm, double safeRadius,
-                                     const ToolpathOptions &options, QStringList &warnings)
+                                     double allowance_mm, double noseRadius_mm, std::optional<double> trailing_deg,
+                                     double safeRadius, const ToolpathOptions &options, QStringList &warnings)
 {
     const double length = project.part.length_mm();
     const double zLeft = toolStop_mm(project, options, noseRadius_mm); // nose centre
     const double zRight = length + options.clearance_mm + noseRadius_mm;
     const Contour target = targetContour(project, ContourSide::Outer);
-    const Envelope env =
-        widenedEnvelope(target.segments, allowance_mm + noseRadius_mm, zLeft, zRight, kEnvelopeStep_mm);
+    Envelope env = widenedEnvelope(target.segments, allowance_mm + noseRadius_mm, zLeft, zRight, kEnvelopeStep_mm);
+    if (trailing_deg)
+        rideOverSteepFalls(env, rideAngle_deg(*trailing_deg));
     const double stockRadius = 0.5 * project.part.stockDiameter_mm;
     std::vector<PassPath> passes;
     const double lastLevel = roughLevels(passes, roughing, env, stockRadius + noseRadius_mm, safeRadius, noseRadius_mm,
@@ -781,16 +815,16 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
     path.noseRadius_mm = noseRadius_mm;
     path.safeDiameter_mm = project.part.stockDiameter_mm + 2.0 * options.clearance_mm;
     const double safeRadius = 0.5 * path.safeDiameter_mm;
-    path.roughing =
-        roughingPasses(project, roughing, finishing.depthOfCut_mm, noseRadius_mm, safeRadius, options, path.warnings);
-    path.finishing = finishingPass(project, finishing, options, noseRadius_mm, safeRadius, path);
+    path.roughing = roughingPasses(project, roughing, finishing.depthOfCut_mm, noseRadius_mm, trailingEdgeAngle_deg,
+                                   safeRadius, options, path.warnings);
+    path.finishing = finishingPass(project, finishing, options, noseRadius_mm, trailingEdgeAngle_deg, safeRadius, path);
     int number = 1;
     for (PassPath &p : path.roughing)
         p.number = number++;
     path.finishing.number = number;
-    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm);
+    const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm, trailingEdgeAngle_deg);
     if (trailingEdgeAngle_deg)
-        warnWhereTheTrailingEdgeCannotFollow(g.contour, *trailingEdgeAngle_deg, noseRadius_mm, path.warnings);
+        warnWhereTheToolRidesOver(g.riddenOver, *trailingEdgeAngle_deg, path.warnings);
     else
         path.warnings << Toolpaths::tr("The trailing edge angle of the tool is not known (holder entering angle and "
                                        "insert shape): falling contours are not checked.");
