@@ -1437,6 +1437,21 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     </message>
 </context>
 <context>
+    <name>FinishedExtent</name>
+    <message>
+        <source>%1 at z = %2 mm from r %3 to %4 mm</source>
+        <translation>%1 bei z = %2 mm von r %3 bis %4 mm</translation>
+    </message>
+    <message>
+        <source>z %1–%2 mm of %3</source>
+        <translation>z %1–%2 mm von %3</translation>
+    </message>
+    <message>
+        <source>not finished by this set-up&apos;s program, which leaves %1 as it was (see the program&apos;s warnings); on what it turns: %2</source>
+        <translation>nicht fertig bearbeitet vom Programm dieser Aufspannung, das %1 unbearbeitet lässt (siehe die Warnungen des Programms); auf dem, was es dreht: %2</translation>
+    </message>
+</context>
+<context>
     <name>GCode</name>
     <message>
         <source>No compensation: toleranced diameters at the middle of their zone</source>
@@ -4574,6 +4589,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>%1; an offset of %2 µm on the diameter holds it on any machine in the range</source>
         <translation>%1; eine Korrektur von %2 µm am Durchmesser hält sie auf jeder Maschine des Bereichs</translation>
     </message>
+    <message>
+        <source>not finished by the program: %1</source>
+        <translation>vom Programm nicht fertig bearbeitet: %1</translation>
+    </message>
 </context>
 <context>
     <name>Remedies</name>
@@ -5951,12 +5970,12 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Die Vorbohrung Ø%1 mm ist so weit wie die engste Stelle der Bohrung, Ø%2 mm, oder weiter: dort bleibt nichts auszudrehen, und sie behält das Maß der Vorbohrung, nicht das der Zeichnung.</translation>
     </message>
     <message>
-        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the headstock with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
-        <translation>%1 fällt in Vorschubrichtung mit %2° ab, steiler als die Nebenschneide der Platte (%3°): mit diesem Werkzeug lässt es sich zum Spindelstock hin nicht drehen, ohne es zu beschädigen; drehen Sie es von der anderen Seite oder mit einem neutralen Werkzeug.</translation>
-    </message>
-    <message>
         <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°) less the 2° of free cutting angle it needs: the finishing pass rides over it at %4° from z = %5 to %6 mm and leaves up to %7 mm of %8 uncut. Turn it from the other side or with a neutral tool.</source>
         <translation>%1 fällt in Vorschubrichtung unter %2° ab, steiler als die Nebenschneide der Wendeschneidplatte (%3°) abzüglich der 2° Freiwinkel, die sie braucht: Der Schlichtschnitt fährt unter %4° von z = %5 bis %6 mm darüber hinweg und lässt bis zu %7 mm von %8 stehen. Von der anderen Seite oder mit einem neutralen Werkzeug drehen.</translation>
+    </message>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°) less the 2° of free cutting angle it needs: the finishing pass stops at z = %4 mm and leaves up to %5 mm of %6 uncut. Turn it from the other side or with a neutral tool.</source>
+        <translation>%1 fällt in Vorschubrichtung unter %2° ab, steiler als die Nebenschneide der Wendeschneidplatte (%3°) abzüglich der 2° Freiwinkel, die sie braucht: Der Schlichtschnitt endet bei z = %4 mm und lässt bis zu %5 mm von %6 stehen. Von der anderen Seite oder mit einem neutralen Werkzeug drehen.</translation>
     </message>
 </context>
 <context>

@@ -1437,6 +1437,21 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     </message>
 </context>
 <context>
+    <name>FinishedExtent</name>
+    <message>
+        <source>%1 at z = %2 mm from r %3 to %4 mm</source>
+        <translation>%1 en z = %2 mm de r %3 a %4 mm</translation>
+    </message>
+    <message>
+        <source>z %1–%2 mm of %3</source>
+        <translation>z %1–%2 mm de %3</translation>
+    </message>
+    <message>
+        <source>not finished by this set-up&apos;s program, which leaves %1 as it was (see the program&apos;s warnings); on what it turns: %2</source>
+        <translation>no terminado por el programa de esta sujeción, que deja %1 sin mecanizar (vea los avisos del programa); en lo que tornea: %2</translation>
+    </message>
+</context>
+<context>
     <name>GCode</name>
     <message>
         <source>No compensation: toleranced diameters at the middle of their zone</source>
@@ -4574,6 +4589,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>%1; an offset of %2 µm on the diameter holds it on any machine in the range</source>
         <translation>%1; una corrección de %2 µm en el diámetro la mantiene en cualquier máquina del rango</translation>
     </message>
+    <message>
+        <source>not finished by the program: %1</source>
+        <translation>no terminado por el programa: %1</translation>
+    </message>
 </context>
 <context>
     <name>Remedies</name>
@@ -5951,12 +5970,12 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>El agujero previo de Ø%1 mm es tan ancho como el tramo más estrecho del agujero, Ø%2 mm, o más: allí no queda nada que mandrinar, y se queda con la medida del agujero previo, no la del plano.</translation>
     </message>
     <message>
-        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°): it cannot be turned towards the headstock with this tool without damaging it; turn it from the other side or with a neutral tool.</source>
-        <translation>%1 desciende %2° en la dirección de avance, más que el filo secundario de la plaquita (%3°): no se puede tornear hacia el cabezal con esta herramienta sin dañarlo; tornéelo desde el otro lado o con una herramienta neutra.</translation>
-    </message>
-    <message>
         <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°) less the 2° of free cutting angle it needs: the finishing pass rides over it at %4° from z = %5 to %6 mm and leaves up to %7 mm of %8 uncut. Turn it from the other side or with a neutral tool.</source>
         <translation>%1 cae a %2° en la dirección del avance, más que el filo secundario de la plaquita (%3°) menos los 2° de ángulo libre que necesita: la pasada de acabado pasa por encima a %4° desde z = %5 hasta %6 mm y deja sin cortar hasta %7 mm de %8. Tornearlo desde el otro lado o con una herramienta neutra.</translation>
+    </message>
+    <message>
+        <source>%1 falls at %2° in the feed direction, steeper than the insert&apos;s trailing edge (%3°) less the 2° of free cutting angle it needs: the finishing pass stops at z = %4 mm and leaves up to %5 mm of %6 uncut. Turn it from the other side or with a neutral tool.</source>
+        <translation>%1 cae a %2° en la dirección del avance, más que el filo secundario de la plaquita (%3°) menos los 2° de ángulo libre que necesita: la pasada de acabado termina en z = %4 mm y deja sin cortar hasta %5 mm de %6. Tornearlo desde el otro lado o con una herramienta neutra.</translation>
     </message>
 </context>
 <context>

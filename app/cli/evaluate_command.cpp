@@ -13,6 +13,7 @@
 #include "core/io/result_json.h"
 #include "core/planning/clamping_advisor.h"
 #include "core/planning/cutting_window.h"
+#include "core/planning/finished_extent.h"
 #include "core/planning/optimiser.h"
 #include "core/planning/plausibility.h"
 #include "core/project/keywords.h"
@@ -152,7 +153,8 @@ void printRange(const RangeEvaluation &range, QTextStream &out)
                         rangeVerdictText(r))
             << '\n';
         const QString indent = QStringLiteral("           ");
-        if (r.range != RangeVerdict::NoRange && r.range != RangeVerdict::NotDecided)
+        if (r.range != RangeVerdict::NoRange && r.range != RangeVerdict::NotDecided &&
+            r.range != RangeVerdict::NotFinished)
             out << indent << CommandLine::tr("at the compliant end: %1").arg(verdictName(e.verdict)) << '\n';
         if (r.chuck)
             out << indent
@@ -215,6 +217,7 @@ int runEvaluate(const QStringList &args, QTextStream &out, QTextStream &err)
         const Project view = operationView(*project, k);
         RangeEvaluation range = evaluateOverStiffnessRange(view, DataLibrary::builtIn());
         addReclampingNotes(view, range, DataLibrary::builtIn());
+        addWhatTheProgramLeaves(view, range);
         const DeviationResult &deviation = range.compliant;
         for (const Diagnostic &d : deviation.diagnostics)
             err << file << ": " << (count > 1 ? operationName(*project, k) + QStringLiteral(": ") : QString())

@@ -165,6 +165,8 @@ QJsonObject rangeEvaluationJson(const ToleranceRangeEvaluation &e)
     o.insert(QStringLiteral("range_verdict_text"), rangeVerdictText(e));
     if (e.offsetOnAnyMachine_um)
         o.insert(QStringLiteral("offset_on_any_machine_um"), *e.offsetOnAnyMachine_um);
+    if (!e.unfinished.isEmpty())
+        o.insert(QStringLiteral("unfinished"), QJsonArray::fromStringList(e.unfinished));
     if (e.stiff)
         o.insert(QStringLiteral("at_stiff_end"), evaluationJson(*e.stiff));
     o.insert(QStringLiteral("required_chuck_stiffness"), requiredJson(e.chuck));

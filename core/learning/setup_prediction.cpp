@@ -2,6 +2,7 @@
 #include "core/learning/setup_prediction.h"
 
 #include "core/learning/measured_residuals.h"
+#include "core/planning/finished_extent.h"
 #include "core/project/keywords.h"
 
 #include <QCoreApplication>
@@ -45,6 +46,7 @@ SetupPrediction predictSetup(const Project &project, const DataLibrary &data, co
     if (!mismatch.isEmpty())
         p.assumption = SetupPredictionText::tr("%1. Without it: %2").arg(mismatch, p.assumption);
     addReclampingNotes(project, p.range, data);
+    addWhatTheProgramLeaves(project, p.range);
     if (project.scope) // one set-up of several: which, and which end of the drawing it holds
         p.assumption.prepend(SetupPredictionText::tr("%1 (set-up %2 of %3, the %4 end held): ")
                                  .arg(project.scope->name)

@@ -138,8 +138,10 @@ void roughTheBore(Toolpath &path, const BoreFrame &f, const std::vector<CuttingP
                   const BoringBarGeometry &bar, const ToolpathOptions &options, double length_mm)
 {
     const double re = bar.noseRadius_mm;
-    const Envelope env = widenedEnvelope(mirrored(f.target), allowance_mm + re, f.zStop,
-                                         length_mm + options.clearance_mm + re, kEnvelopeStep_mm);
+    Envelope env = widenedEnvelope(mirrored(f.target), allowance_mm + re, f.zStop,
+                                   length_mm + options.clearance_mm + re, kEnvelopeStep_mm);
+    if (bar.trailingEdgeAngle_deg)
+        rideOverSteepFalls(env, rideAngle_deg(*bar.trailingEdgeAngle_deg));
     const double stockLevel = -f.rHole + re;
     const double deepest = deepestOnPart(env, length_mm);
     bool tooMany = false;
@@ -170,7 +172,10 @@ void roughTheBore(Toolpath &path, const BoreFrame &f, const std::vector<CuttingP
 void finishTheBore(Toolpath &path, const BoreFrame &f, const CuttingPass &finishing, const BoringBarGeometry &bar,
                    const ToolpathOptions &options, double length_mm)
 {
-    const std::vector<PathElement> mirror = mirrored(f.chain);
+    std::vector<PathElement> mirror = mirrored(f.chain);
+    std::vector<RiddenOver> ridden;
+    if (bar.trailingEdgeAngle_deg)
+        mirror = riddenOverSteepFalls(mirror, rideAngle_deg(*bar.trailingEdgeAngle_deg), &ridden);
     path.finishing = mirroredBack(
         contourPass(mirror, false, finishing, options, bar.noseRadius_mm, -f.rSafe, length_mm, path.warnings));
     path.finishing.smallestDiameter_mm = 2.0 * smallestAxialRadius(f.chain);
@@ -179,7 +184,7 @@ void finishTheBore(Toolpath &path, const BoreFrame &f, const CuttingPass &finish
     if (path.finishing.moves.size() >= 2)
         path.finishing.moves[path.finishing.moves.size() - 2].to.z_mm += options.clearance_mm;
     if (bar.trailingEdgeAngle_deg)
-        warnWhereTheTrailingEdgeCannotFollow(mirror, *bar.trailingEdgeAngle_deg, bar.noseRadius_mm, path.warnings);
+        warnWhereTheToolRidesOver(ridden, *bar.trailingEdgeAngle_deg, path.warnings);
     else
         path.warnings << Toolpaths::tr("The trailing edge angle of the boring bar is not known (bar entering angle "
                                        "and insert shape): falling contours of the bore are not checked.");

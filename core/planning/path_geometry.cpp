@@ -337,6 +337,23 @@ std::vector<PathElement> offsetToTheRight(const std::vector<PathElement> &chain,
     return out;
 }
 
+double distanceTo(const PathElement &e, ProfilePoint p)
+{
+    const double toEnds = std::min(norm(p - e.from), norm(p - e.to));
+    if (e.arc) {
+        const double fromCentre = norm(p - e.centre);
+        if (fromCentre > kTiny && onArc(e, e.centre + (e.radius_mm / fromCentre) * (p - e.centre)))
+            return std::abs(fromCentre - e.radius_mm);
+        return toEnds;
+    }
+    const ProfilePoint d = e.to - e.from;
+    const double length2 = dot(d, d);
+    if (length2 < kTiny * kTiny)
+        return toEnds;
+    const double t = std::clamp(dot(p - e.from, d) / length2, 0.0, 1.0);
+    return norm(p - (e.from + t * d));
+}
+
 std::vector<PathElement> riddenOverSteepFalls(const std::vector<PathElement> &chain, double trailing_deg,
                                               std::vector<RiddenOver> *riddenOver)
 {

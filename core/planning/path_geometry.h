@@ -62,6 +62,9 @@ struct RiddenOver {
 [[nodiscard]] std::vector<PathElement> riddenOverSteepFalls(const std::vector<PathElement> &chain, double trailing_deg,
                                                             std::vector<RiddenOver> *riddenOver = nullptr);
 
+// The shortest distance from a point to an element (a line segment, or an arc between its ends).
+[[nodiscard]] double distanceTo(const PathElement &e, ProfilePoint p);
+
 // Moves every point (and arc centre) of a chain by (dz, dr).
 [[nodiscard]] std::vector<PathElement> translated(std::vector<PathElement> chain, double dz_mm, double dr_mm);
 

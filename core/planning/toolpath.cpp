@@ -29,11 +29,6 @@ QString mm(double value)
     return QString::number(value, 'f', 3);
 }
 
-double radiansToDegrees(double a)
-{
-    return a * 180.0 / std::numbers::pi;
-}
-
 PathElement line(ProfilePoint from, ProfilePoint to, const QString &featureId)
 {
     PathElement e;
@@ -411,29 +406,42 @@ double smallestAxialRadius(const std::vector<PathElement> &chain)
 // A steeper fall no higher than r_e (1 - sin kappa') stays within the corner radius, which cuts it
 // (the arc of the corner rises that far before the trailing edge begins): the micrometre steps of
 // a compensated path, say. Consecutive steep elements count as one fall.
-void warnWhereTheTrailingEdgeCannotFollow(const std::vector<PathElement> &chain, double trailing_deg,
-                                          double noseRadius_mm, QStringList &warnings)
+// The steepest a tool may descend towards the headstock without its trailing edge touching the
+// surface behind it: the trailing edge's angle less the free cutting angle of at least 2° that
+// Sandvik Coromant asks to keep between workpiece and insert in profiling ("Internal turning",
+// profile turning; 7° recommended for finish and tool life).
+constexpr double kFreeCuttingAngle_deg = 2.0;
+
+double rideAngle_deg(double trailing_deg)
 {
-    const double withinCorner_mm = noseRadius_mm * (1.0 - std::sin(trailing_deg * std::numbers::pi / 180.0));
-    std::set<QString> named;
-    double fall_mm = 0.0; // of the steep elements in a row so far
-    for (const PathElement &e : chain) {
-        double steepest_deg = 0.0;
-        for (const ProfilePoint d : {startTangent(e), endTangent(e)}) {
-            if (d.r_mm < -1e-9)
-                steepest_deg = std::max(steepest_deg, radiansToDegrees(std::atan2(-d.r_mm, -d.z_mm)));
-        }
-        if (steepest_deg <= trailing_deg + 1e-6) {
-            fall_mm = 0.0;
+    return std::max(0.0, trailing_deg - kFreeCuttingAngle_deg);
+}
+
+// What the trailing edge leaves of a contour a tool follows towards the headstock, each stretch a
+// warning (a fall of less than a micrometre, as in a compensated path, is left unsaid).
+void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, QStringList &warnings)
+{
+    for (const RiddenOver &r : ridden) {
+        if (r.deepest_mm < 1e-3)
+            continue;
+        if (std::abs(r.from.z_mm - r.to.z_mm) < 1e-3) { // at the contour's end: nothing to ride down to
+            warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing edge "
+                                      "(%3°) less the 2° of free cutting angle it needs: the finishing pass stops at "
+                                      "z = %4 mm and leaves up to %5 mm of %6 uncut. Turn it from the other side or "
+                                      "with a neutral tool.")
+                            .arg(r.featureIds.constFirst(), QString::number(r.steepest_deg, 'f', 1),
+                                 QString::number(trailing_deg, 'f', 1), mm(r.from.z_mm), mm(r.deepest_mm),
+                                 r.featureIds.join(QStringLiteral(", ")));
             continue;
         }
-        fall_mm += std::max(0.0, e.from.r_mm - e.to.r_mm);
-        if (fall_mm > withinCorner_mm && named.insert(e.featureId).second)
-            warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing "
-                                      "edge (%3°): it cannot be turned towards the headstock with this tool without "
-                                      "damaging it; turn it from the other side or with a neutral tool.")
-                            .arg(e.featureId, QString::number(steepest_deg, 'f', 1),
-                                 QString::number(trailing_deg, 'f', 1));
+        warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing edge "
+                                  "(%3°) less the 2° of free cutting angle it needs: the finishing pass rides over "
+                                  "it at %4° from z = %5 to %6 mm and leaves up to %7 mm of %8 uncut. Turn it from "
+                                  "the other side or with a neutral tool.")
+                        .arg(r.featureIds.constFirst(), QString::number(r.steepest_deg, 'f', 1),
+                             QString::number(trailing_deg, 'f', 1),
+                             QString::number(rideAngle_deg(trailing_deg), 'f', 1), mm(r.from.z_mm), mm(r.to.z_mm),
+                             mm(r.deepest_mm), r.featureIds.join(QStringLiteral(", ")));
     }
 }
 
@@ -712,35 +720,6 @@ struct FinishingGeometry {
     bool faced = false;
     std::vector<RiddenOver> riddenOver; // where the trailing edge keeps the tool off the contour
 };
-
-// The steepest a tool may descend towards the headstock without its trailing edge touching the
-// surface behind it: the trailing edge's angle less the free cutting angle of at least 2° that
-// Sandvik Coromant asks to keep between workpiece and insert in profiling ("Internal turning",
-// profile turning; 7° recommended for finish and tool life).
-constexpr double kFreeCuttingAngle_deg = 2.0;
-
-double rideAngle_deg(double trailing_deg)
-{
-    return std::max(0.0, trailing_deg - kFreeCuttingAngle_deg);
-}
-
-// What the trailing edge leaves of a contour a tool follows towards the headstock, each stretch a
-// warning (a fall of less than a micrometre, as in a compensated path, is left unsaid).
-void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, QStringList &warnings)
-{
-    for (const RiddenOver &r : ridden) {
-        if (r.deepest_mm < 1e-3)
-            continue;
-        warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing edge "
-                                  "(%3°) less the 2° of free cutting angle it needs: the finishing pass rides over "
-                                  "it at %4° from z = %5 to %6 mm and leaves up to %7 mm of %8 uncut. Turn it from "
-                                  "the other side or with a neutral tool.")
-                        .arg(r.featureIds.constFirst(), QString::number(r.steepest_deg, 'f', 1),
-                             QString::number(trailing_deg, 'f', 1),
-                             QString::number(rideAngle_deg(trailing_deg), 'f', 1), mm(r.from.z_mm), mm(r.to.z_mm),
-                             mm(r.deepest_mm), r.featureIds.join(QStringLiteral(", ")));
-    }
-}
 
 FinishingGeometry finishingGeometry(const Project &project, const ToolpathOptions &options, double noseRadius_mm,
                                     std::optional<double> trailing_deg)

@@ -63,9 +63,13 @@ double roughLevels(std::vector<PassPath> &passes, const std::vector<CuttingPass>
 // (z <= partLength): more than a tenth of the allowance is what the finishing pass would cut.
 [[nodiscard]] double stockLeftAboveAllowance(const Envelope &env, double lastLevel, double partLength_mm);
 
-// Elements of the chain that fall in the feed direction steeper than the insert's trailing edge
-// can follow (beyond what its corner radius cuts).
-void warnWhereTheTrailingEdgeCannotFollow(const std::vector<PathElement> &chain, double trailing_deg,
-                                          double noseRadius_mm, QStringList &warnings);
+// The steepest a tool may descend towards the headstock (or, mirrored, a boring bar away from
+// the axis) without its trailing edge touching the surface behind it: the trailing edge's angle
+// less the free cutting angle profiling needs.
+[[nodiscard]] double rideAngle_deg(double trailing_deg);
+
+// What the trailing edge leaves of a contour a tool follows towards the headstock, each stretch
+// ridden over a warning (a fall of less than a micrometre, as in a compensated path, is left unsaid).
+void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, QStringList &warnings);
 
 } // namespace tolturn::toolpath_detail

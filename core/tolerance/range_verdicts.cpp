@@ -270,6 +270,8 @@ QString rangeVerdictKeyword(RangeVerdict verdict)
         return QStringLiteral("passes_after_offset_on_any_machine");
     case RangeVerdict::FailsEvenOnStiffest:
         return QStringLiteral("fails_even_on_stiffest");
+    case RangeVerdict::NotFinished:
+        return QStringLiteral("not_finished");
     case RangeVerdict::NoRange:
         return QStringLiteral("no_range");
     case RangeVerdict::NotDecided:
@@ -326,6 +328,8 @@ QString rangeVerdictText(const ToleranceRangeEvaluation &e)
             .arg(QString::number(e.offsetOnAnyMachine_um.value_or(0.0), 'f', 1));
     case RangeVerdict::FailsEvenOnStiffest:
         return RangeVerdicts::tr("fails as programmed even on the stiffest machine of the range");
+    case RangeVerdict::NotFinished:
+        return RangeVerdicts::tr("not finished by the program: %1").arg(e.unfinished.join(QStringLiteral(", ")));
     case RangeVerdict::NoRange:
     case RangeVerdict::NotDecided:
         return verdictName(e.compliant.verdict);

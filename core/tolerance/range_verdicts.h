@@ -21,6 +21,8 @@ enum class RangeVerdict {
     PassesAfterOffsetOnAnyMachine, // fails as programmed at both ends, but one constant offset of the
                                    // programmed size holds it at both (a size only)
     FailsEvenOnStiffest,           // fails at the stiff end of the range too
+    NotFinished,                   // the set-up's program leaves part of its feature unfinished (`unfinished`):
+                                   // not judged as programmed (finished_extent.h)
     NoRange,                       // the machine was measured (or the clamping uses no ranged support)
     NotDecided,                    // the characteristic is not predicted or cannot be evaluated
 };
@@ -52,6 +54,8 @@ struct ToleranceRangeEvaluation {
     // zone together: the change of the programmed diameter that centres them [µm]. Always with
     // PassesAfterOffsetOnAnyMachine; with PassesIfStiffer and PassesOnPartOfRange where it exists.
     std::optional<double> offsetOnAnyMachine_um;
+    // NotFinished: what of its feature the program leaves, e.g. "z 35.000–37.750 mm of O4".
+    QStringList unfinished;
 };
 
 struct RangeEvaluation {

@@ -146,11 +146,13 @@ private Q_SLOTS:
             return page.contains(QStringLiteral("Appendix A"));
         });
         QVERIFY(appendix != pageTexts.end());
+        const auto assumptions = [](const QString &page) {
+            return page.contains(QStringLiteral("6  Assumptions")) || page.contains(QStringLiteral("6 Assumptions"));
+        };
         QVERIFY(appendix->trimmed().startsWith(QStringLiteral("Appendix A")) ||
-                appendix->trimmed().startsWith(QStringLiteral("•")));
+                appendix->trimmed().startsWith(QStringLiteral("•")) || assumptions(appendix->trimmed().left(20)));
         QVERIFY(appendix->contains(QStringLiteral("[3] O. Kienzle")));
-        QVERIFY((appendix - 1)->contains(QStringLiteral("6  Assumptions")) ||
-                (appendix - 1)->contains(QStringLiteral("6 Assumptions")));
+        QVERIFY(assumptions(*appendix) || assumptions(*(appendix - 1)));
         // The material's and the chuck's sources, for a machine that was not measured ("stiffness" is
         // set with a ligature in the PDF's text).
         const QString dataSources = text.mid(text.indexOf(QStringLiteral("Appendix B")));
@@ -199,11 +201,17 @@ private Q_SLOTS:
         const QString firstPage = text.section(QLatin1Char('\f'), 0, 0);
         QVERIFY(firstPage.contains(QStringLiteral("Machine: chuck not measured")));
         QVERIFY(firstPage.contains(QStringLiteral("66–216 N/µm")));
-        const QString firstT1 = tableRow(firstPage, QStringLiteral("T1")).join(QLatin1Char('|'));
-        QVERIFY2(firstT1.contains(QStringLiteral("passes as programmed")) &&
-                     firstT1.contains(QStringLiteral("chuck ≥")),
-                 qPrintable(firstT1));
+        // T4, Ø40 g6 on O6, passes with the chuck stiffness it needs; T1, Ø50 h6 on the seat O4 at the
+        // jaws, is not finished where the tool keeps 2 mm + r_e 0.8 mm from the jaw face at z 35: the
+        // program leaves z 35.000–37.750 mm of O4 (sampled every 0.05 mm), and says so in the row.
+        const QString firstT4 = tableRow(firstPage, QStringLiteral("T4")).join(QLatin1Char('|'));
+        QVERIFY2(firstT4.contains(QStringLiteral("passes as programmed")) &&
+                     firstT4.contains(QStringLiteral("chuck ≥")),
+                 qPrintable(firstT4));
         QVERIFY(firstPage.contains(QStringLiteral("passes on any machine in the"))); // the cell wraps
+        const QString firstT1 = tableRow(firstPage, QStringLiteral("T1")).join(QLatin1Char('|'));
+        QVERIFY2(firstT1.contains(QStringLiteral("cannot be evaluated")), qPrintable(firstT1));
+        QVERIFY(firstPage.contains(QStringLiteral("35.000–37.750 mm of O4")));
         // The tolerance section: T1 is h6 on the Ø50 bearing seat: ISO 286-2 Table 1 gives IT6 = 16 µm
         // for 30 < D ≤ 50.
         const QString tolerances = text.section(QStringLiteral("4 Tolerances"), 1);
@@ -214,7 +222,8 @@ private Q_SLOTS:
         // Below the table, the condition in words: h6 on Ø50 is 49.984–50.000 mm (es = 0, ei = -16 µm).
         QVERIFY(tolerances.contains(QStringLiteral("T1: size within 49.984–50.000 mm")));
         QVERIFY(!tolerances.contains(QStringLiteral("D'_Md")));
-        QVERIFY(t1.at(7).startsWith(QStringLiteral("passes")));
+        QVERIFY2(t1.at(7).startsWith(QStringLiteral("cannot be evaluated")), qPrintable(t1.join(QLatin1Char('|'))));
+        QVERIFY(tableRow(tolerances, QStringLiteral("T4")).at(7).startsWith(QStringLiteral("passes")));
         // T5 perpendicularity 15 µm to datum A: the limit is the tolerance value itself.
         const QStringList t5 = tableRow(tolerances, QStringLiteral("T5"));
         QVERIFY2(t5.size() >= 6, qPrintable(t5.join(QLatin1Char('|'))));
@@ -319,11 +328,15 @@ private Q_SLOTS:
         const QByteArray pdf = cli.readAllStandardOutput();
         QVERIFY(pdf.startsWith("%PDF-"));
         QVERIFY(pdf.trimmed().endsWith("%%EOF"));
-        QVERIFY(QString::fromUtf8(cli.readAllStandardError()).contains(QStringLiteral("-: 5 pages")));
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("piped.pdf"));
         QVERIFY(tolturn::test::writeFile(path, pdf));
         QVERIFY(pdfText(path).contains(QStringLiteral("Stepped shaft")));
+        // The count said is the count of the PDF's pages (pdfinfo's).
+        const Run info = runProgram(QStringLiteral("pdfinfo"), {path});
+        const int pages = QRegularExpression(QStringLiteral("Pages:\\s+(\\d+)")).match(info.out).captured(1).toInt();
+        QVERIFY(pages > 0);
+        QVERIFY(QString::fromUtf8(cli.readAllStandardError()).contains(QStringLiteral("-: %1 pages").arg(pages)));
     }
 
     // Long names fit the report: set smaller or shortened, never cut through or run over. Every word

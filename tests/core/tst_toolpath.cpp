@@ -13,6 +13,7 @@
 #include "core/part/undercuts.h"
 #include "core/planning/boring_toolpath.h"
 #include "core/planning/compensation.h"
+#include "core/planning/finished_extent.h"
 #include "core/planning/gcode.h"
 #include "core/planning/path_geometry.h"
 #include "core/planning/planning_report.h"
@@ -86,7 +87,7 @@ PathElement arcElement(ProfilePoint from, ProfilePoint to, ProfilePoint centre, 
 }
 
 // Distance from a point to a line segment or to an arc (centre, radius, from, to, sense).
-double distanceTo(const PathElement &e, ProfilePoint p)
+double distanceToPath(const PathElement &e, ProfilePoint p)
 {
     if (!e.arc) {
         const double dz = e.to.z_mm - e.from.z_mm;
@@ -116,11 +117,11 @@ double distanceTo(const PathElement &e, ProfilePoint p)
     return std::min(distance(p, e.from), distance(p, e.to));
 }
 
-double distanceTo(const std::vector<PathElement> &chain, ProfilePoint p)
+double distanceToPath(const std::vector<PathElement> &chain, ProfilePoint p)
 {
     double best = std::numeric_limits<double>::infinity();
     for (const PathElement &e : chain)
-        best = std::min(best, distanceTo(e, p));
+        best = std::min(best, distanceToPath(e, p));
     return best;
 }
 
@@ -251,7 +252,7 @@ double closestApproach(const std::vector<PathElement> &centre, const std::vector
     double closest = 1e9;
     for (const PathElement &e : centre)
         for (const ProfilePoint &c : sampled(e, 0.01))
-            closest = std::min(closest, distanceTo(contour, c));
+            closest = std::min(closest, distanceToPath(contour, c));
     return closest;
 }
 
@@ -368,6 +369,53 @@ private Q_SLOTS:
         QVERIFY(std::abs(o[3].from.z_mm - 60.8) < 1e-12 && std::abs(o[3].to.r_mm - 25.0) < 1e-12);
     }
 
+    // A step down towards the headstock, ridden over at 3° (tan 3° = 0.0524078): from z 10 along r 5
+    // to z 6, down to r 4 and on to z -30. The line from (6, 5) meets r 4 at 6 - 1/tan 3° =
+    // -13.0811 and leaves the whole step, 1 mm, below it. Rounded instead by a convex quarter arc
+    // of radius 1 about (6, 4), from (6, 5) to (5, 4): the arc is followed to where its tangent
+    // falls at 3°, 93° round its centre, (6 + cos 93°, 4 + sin 93°) = (5.947664, 4.998630), and the
+    // line from there meets r 4 at 5.947664 - 0.998630/tan 3° = 5.947664 - 19.054987 = -13.107323.
+    void stepDownIsRiddenOverAtTheGivenAngle()
+    {
+        const double slope = std::tan(3.0 * std::numbers::pi / 180.0);
+        std::vector<RiddenOver> ridden;
+        const std::vector<PathElement> step{lineElement(10, 5, 6, 5), lineElement(6, 5, 6, 4),
+                                            lineElement(6, 4, -30, 4)};
+        const std::vector<PathElement> a = riddenOverSteepFalls(step, 3.0, &ridden);
+        QCOMPARE(a.size(), std::size_t{3});
+        QVERIFY(std::abs(a[1].from.z_mm - 6.0) < 1e-12 && std::abs(a[1].from.r_mm - 5.0) < 1e-12);
+        QVERIFY2(std::abs(a[1].to.z_mm - (6.0 - 1.0 / slope)) < 1e-9 && std::abs(a[1].to.z_mm + 13.0811) < 1e-4,
+                 qPrintable(QString::number(a[1].to.z_mm, 'f', 6)));
+        QVERIFY(std::abs(a[2].from.z_mm - a[1].to.z_mm) < 1e-12 && std::abs(a[2].to.z_mm + 30.0) < 1e-12);
+        QCOMPARE(ridden.size(), std::size_t{1});
+        QVERIFY(std::abs(ridden[0].deepest_mm - 1.0) < 1e-9);
+        QCOMPARE(ridden[0].steepest_deg, 90.0);
+
+        PathElement round;
+        round.from = {6.0, 5.0};
+        round.to = {5.0, 4.0};
+        round.arc = true;
+        round.centre = {6.0, 4.0};
+        round.radius_mm = 1.0;
+        round.counterClockwise = true;
+        const std::vector<PathElement> rounded{lineElement(10, 5, 6, 5), round, lineElement(5, 4, -30, 4)};
+        const std::vector<PathElement> b = riddenOverSteepFalls(rounded, 3.0);
+        QCOMPARE(b.size(), std::size_t{4});
+        QVERIFY(b[1].arc && std::abs(b[1].to.z_mm - 5.947664) < 1e-6 && std::abs(b[1].to.r_mm - 4.998630) < 1e-6);
+        QVERIFY2(!b[2].arc && std::abs(b[2].to.z_mm + 13.107323) < 1e-6 && std::abs(b[2].to.r_mm - 4.0) < 1e-9,
+                 qPrintable(QString::number(b[2].to.z_mm, 'f', 6)));
+        // Without a point of the contour on the line's way the line runs to the contour's last z:
+        // from (6, 5) to z 0 it falls 6 tan 3° = 0.314447 mm.
+        const std::vector<PathElement> shortStep{lineElement(10, 5, 6, 5), lineElement(6, 5, 6, 4),
+                                                 lineElement(6, 4, 0, 4)};
+        const std::vector<PathElement> c = riddenOverSteepFalls(shortStep, 3.0);
+        QCOMPARE(c.size(), std::size_t{2});
+        QVERIFY(std::abs(c[1].to.z_mm) < 1e-12 && std::abs(c[1].to.r_mm - (5.0 - 6.0 * slope)) < 1e-12);
+        // A rise and a fall shallower than the angle are followed as they are.
+        const std::vector<PathElement> gentle{lineElement(10, 4, 6, 5), lineElement(6, 5, 0, 4.8)};
+        QCOMPARE(riddenOverSteepFalls(gentle, 3.0).size(), std::size_t{2});
+    }
+
     // The tip path of a 45° chamfer: the nose centre runs r_e off the chamfer, the imaginary tip r_e
     // below and left of the centre. By hand: offset (+r_e/sqrt 2, +r_e/sqrt 2), tip shift (-r_e, -r_e),
     // together -r_e (1 - 1/sqrt 2) in z and in r, so the line z + r = c moves by
@@ -418,7 +466,7 @@ private Q_SLOTS:
                     const PathElement e =
                         lineElement(previous->to.z_mm + 0.8, previous->to.r_mm + 0.8, m.to.z_mm + 0.8, m.to.r_mm + 0.8);
                     for (const ProfilePoint &c : sampled(e, 0.01))
-                        closest = std::min(closest, distanceTo(contour, c));
+                        closest = std::min(closest, distanceToPath(contour, c));
                 }
                 previous = &m;
             }
@@ -491,6 +539,45 @@ private Q_SLOTS:
         QVERIFY2(fall->contains(QStringLiteral("rides over it at 3.0° from z = 120.000 to 112.487 mm and leaves up to "
                                                "0.394 mm of O4, O3 uncut")),
                  qPrintable(*fall));
+    }
+
+    // What the program leaves unfinished, by hand. The long shaft between centres: the tool keeps
+    // 2 mm + r_e 0.8 mm from the left centre (z 0), so the journal O3 (from z 1) is turned from
+    // z 2.8 (sampled every 0.05 mm: 1.000–2.750 left); at the shoulder O4 (z 120) it rides down at
+    // 3° from the body's target (Ø42 h7 at mid-zone, r 20.99375) to the journal's (Ø40 k6, +2/+18
+    // µm, at mid-zone r 20.005): the line meets it at 120 - 0.98875/tan 3° = 101.134, and a sample
+    // more than 2 µm below it lies at z > 101.134 + 0.002/tan 3° = 101.172: 101.200–120.000 left.
+    // The chamfer O2 and the face O4 are left too, and both end faces, O1 and O9, which sit on the
+    // centres (faced and centred before); the body O5 and everything right of it up to O9 is turned.
+    void unfinishedStretchesOfTheLongShaft()
+    {
+        const Project p = example(QStringLiteral("long-shaft-centres.tolturn"));
+        const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+        QVERIFY(d.inputs);
+        const std::vector<UnfinishedStretch> left = unfinishedStretches(p, *d.inputs);
+        QStringList texts;
+        for (const UnfinishedStretch &s : left)
+            texts << unfinishedText(s);
+        QVERIFY2(texts.contains(QStringLiteral("z 1.000–2.750 mm of O3")), qPrintable(texts.join(QLatin1Char('|'))));
+        QVERIFY2(texts.contains(QStringLiteral("z 101.200–120.000 mm of O3")),
+                 qPrintable(texts.join(QLatin1Char('|'))));
+        QSet<QString> features;
+        for (const UnfinishedStretch &s : left)
+            features.insert(s.featureId);
+        QCOMPARE(features, (QSet<QString>{QStringLiteral("O1"), QStringLiteral("O2"), QStringLiteral("O3"),
+                                          QStringLiteral("O4"), QStringLiteral("O9")}));
+
+        // The stepped shaft in its chuck (jaws to z 35): the seat O4 from the jaw face, turned from
+        // z 35 + 2 + 0.8 = 37.8, and the shoulder O3 at the jaw face, not faced at all: from the seat's
+        // target (Ø50 h6 at mid-zone, r 24.996) to the grip's r 28. The grip O2 is in the jaws.
+        const Project shaft = example(QStringLiteral("stepped-shaft-chuck.tolturn"));
+        const DeviationResult ds = computeDeviation(shaft, DataLibrary::builtIn(), {});
+        QVERIFY(ds.inputs);
+        QStringList shaftTexts;
+        for (const UnfinishedStretch &s : unfinishedStretches(shaft, *ds.inputs))
+            shaftTexts << unfinishedText(s);
+        QCOMPARE(shaftTexts, (QStringList{QStringLiteral("O3 at z = 35.000 mm from r 24.996 to 28.000 mm"),
+                                          QStringLiteral("z 35.000–37.750 mm of O4")}));
     }
 
     // A DIN 509 E0.6×0.3 undercut in the stepped shaft's corner O8|O9: its R0.6 is tighter than the
@@ -728,6 +815,7 @@ private Q_SLOTS:
         QTest::addColumn<int>("operation");
         QTest::addColumn<int>("nose");
         QTest::addColumn<double>("pilot"); // 0: as in the file, -1: none
+        QTest::addColumn<bool>("recess");  // the H7 bushing's bore with a recess r 17, z 40-70
         for (const QString &f : QDir(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples"))
                                     .entryList({QStringLiteral("*.tolturn")}, QDir::Files)) {
             for (int k = 0; k < operationCount(example(f)); ++k) {
@@ -735,17 +823,23 @@ private Q_SLOTS:
                 if (!view.boringTool || boreAtFreeEnd(view.part.inner, view.part.length_mm()).empty())
                     continue;
                 QTest::addRow("%s op %d G41", qPrintable(f), k + 1)
-                    << f << k << static_cast<int>(NoseHandling::ControlCompensation) << 0.0;
+                    << f << k << static_cast<int>(NoseHandling::ControlCompensation) << 0.0 << false;
                 QTest::addRow("%s op %d tip path", qPrintable(f), k + 1)
-                    << f << k << static_cast<int>(NoseHandling::TipPath) << 0.0;
+                    << f << k << static_cast<int>(NoseHandling::TipPath) << 0.0 << false;
             }
         }
         // Without a pilot hole: the finishing pass only.
         const QString valve = QStringLiteral("valve-body-two-bores.tolturn");
         QTest::addRow("valve body op 1 without a pilot hole")
-            << valve << 0 << static_cast<int>(NoseHandling::ControlCompensation) << -1.0;
+            << valve << 0 << static_cast<int>(NoseHandling::ControlCompensation) << -1.0 << false;
         QTest::addRow("valve body op 2 without a pilot hole")
-            << valve << 1 << static_cast<int>(NoseHandling::TipPath) << -1.0;
+            << valve << 1 << static_cast<int>(NoseHandling::TipPath) << -1.0 << false;
+        // A recess the bar meets going in (I4 falls away from the axis): ridden over, not gouged.
+        const QString bushing = QStringLiteral("bushing-bore-h7.tolturn");
+        QTest::addRow("bushing with a recess G41")
+            << bushing << 0 << static_cast<int>(NoseHandling::ControlCompensation) << 0.0 << true;
+        QTest::addRow("bushing with a recess tip path")
+            << bushing << 0 << static_cast<int>(NoseHandling::TipPath) << 0.0 << true;
     }
 
     // The boring bar's program through LinuxCNC's interpreter. The nose centre of the bar (canonical
@@ -762,7 +856,23 @@ private Q_SLOTS:
         QFETCH(int, operation);
         QFETCH(int, nose);
         QFETCH(double, pilot);
-        Project p = operationView(example(file), operation);
+        QFETCH(bool, recess);
+        Project whole = example(file);
+        if (recess) { // I1 (r 16, z 0-110) in five: r 16 to z 40, up to r 17, on to z 70, down to r 16
+            const auto segment = [](const char *id, SegmentKind kind, double z0, double r0, double z1, double r1) {
+                Segment seg;
+                seg.id = QString::fromLatin1(id);
+                seg.kind = kind;
+                seg.from = {z0, r0};
+                seg.to = {z1, r1};
+                return seg;
+            };
+            whole.part.inner.segments = {
+                segment("I1", SegmentKind::Cylinder, 0, 16, 40, 16), segment("I2", SegmentKind::Face, 40, 16, 40, 17),
+                segment("I3", SegmentKind::Cylinder, 40, 17, 70, 17), segment("I4", SegmentKind::Face, 70, 17, 70, 16),
+                segment("I5", SegmentKind::Cylinder, 70, 16, 110, 16)};
+        }
+        Project p = operationView(whole, operation);
         if (pilot < 0.0)
             p.boringTool->pilotHoleDiameter_mm.reset();
         const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
@@ -793,10 +903,18 @@ private Q_SLOTS:
         const std::vector<PathElement> bore = reversedElements(boreSegments);
         const double closest = closestApproach(centre, bore);
         QVERIFY2(closest >= re - 0.001, qPrintable(QStringLiteral("gouge: %1").arg(closest, 0, 'f', 5)));
+        // The bar's trailing edge, mirrored about the axis where the bore is an outer contour
+        // (E16R-SCLCR09 and S25T-PCLNR12, 95°, with a C insert, 80°: 5°).
+        std::vector<ProfilePoint> mirroredBore;
+        for (const PathElement &e : toolpath_detail::mirrored(bore))
+            for (const ProfilePoint &q : sampled(e, 0.05))
+                mirroredBore.push_back(q);
+        trailingEdgeStaysOff(toolpath_detail::mirrored(centre), mirroredBore, re);
+        trailingEdgeStaysOff(toolpath_detail::mirrored(roughingCentre), mirroredBore, re);
         double roughClosest = 1e9;
         for (const PathElement &e : roughingCentre)
             for (const ProfilePoint &c : sampled(e, 0.01))
-                roughClosest = std::min(roughClosest, distanceTo(bore, c));
+                roughClosest = std::min(roughClosest, distanceToPath(bore, c));
         const double allowance = d.inputs->pass.depthOfCut_mm;
         QVERIFY2(roughingCentre.empty() || roughClosest >= allowance + re - 0.002,
                  qPrintable(QStringLiteral("into the allowance: %1").arg(roughClosest, 0, 'f', 5)));
@@ -826,6 +944,11 @@ private Q_SLOTS:
                 innerCorners.push_back({bore[i].from.z_mm, bore[i].from.r_mm});
         }
         double farthest = 0.0;
+        // Where the bore widens going in faster than the bar's trailing edge less 2° (3°), the bar
+        // rides over it: a point below (mirrored) the line at 3° from the bore on its right is not
+        // reached.
+        const double rideSlope = std::tan(3.0 * std::numbers::pi / 180.0);
+        double top = -std::numeric_limits<double>::infinity();
         bool otherSetUp = false; // from the first feature another set-up cuts on, nothing is this one's
         for (const PathElement &e : bore) {
             otherSetUp = otherSetUp || (p.scope && !p.scope->cutFeatures.contains(e.featureId));
@@ -839,9 +962,12 @@ private Q_SLOTS:
             for (const ProfilePoint &q : sampled(e, 0.05)) {
                 const bool nearCorner = std::any_of(innerCorners.begin(), innerCorners.end(),
                                                     [&](ProfilePoint c) { return distance(c, q) < re + 1e-6; });
-                if (q.z_mm < reach + re - 1e-9 || (face && q.r_mm < std::max(drilled, barReach) - 1e-9) || nearCorner)
+                const bool riddenOver = -q.r_mm + rideSlope * q.z_mm < top - 1e-4;
+                top = std::max(top, -q.r_mm + rideSlope * q.z_mm);
+                if (q.z_mm < reach + re - 1e-9 || (face && q.r_mm < std::max(drilled, barReach) - 1e-9) || nearCorner ||
+                    riddenOver)
                     continue;
-                farthest = std::max(farthest, distanceTo(centre, q));
+                farthest = std::max(farthest, distanceToPath(centre, q));
             }
         }
         QVERIFY2(farthest <= re + 0.001, qPrintable(QStringLiteral("not reached: %1").arg(farthest, 0, 'f', 5)));
@@ -1310,7 +1436,7 @@ private Q_SLOTS:
                 if (othersFeature || q.z_mm < zFrom - 1e-9 || (!faced && std::abs(q.z_mm - length) < 1e-9) ||
                     (e.from.z_mm < zFrom && e.to.z_mm < zFrom) || nearInnerCorner)
                     continue;
-                farthest = std::max(farthest, distanceTo(centre, q));
+                farthest = std::max(farthest, distanceToPath(centre, q));
             }
         }
         QVERIFY2(farthest <= re + 0.001, qPrintable(QStringLiteral("not reached: %1").arg(farthest, 0, 'f', 5)));

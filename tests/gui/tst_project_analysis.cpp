@@ -3,6 +3,7 @@
 // several, one with problems and none, against the core's own evaluations of the same set-up.
 #include "tests/core/test_support.h"
 
+#include "core/planning/finished_extent.h"
 #include "core/project/keywords.h"
 #include "core/project/operations.h"
 #include "widgets/document/project_analysis.h"
@@ -42,12 +43,15 @@ private Q_SLOTS:
         analysis.recompute();
         QCOMPARE(predicted.count(), 1);
         const auto prediction = predicted.constFirst().at(1).value<SetupPrediction>();
-        const RangeEvaluation range = evaluateOverStiffnessRange(document.project(), DataLibrary::builtIn());
+        // The verdicts over the range, with what the program leaves unfinished (the seat O4 at the jaws).
+        RangeEvaluation range = evaluateOverStiffnessRange(document.project(), DataLibrary::builtIn());
+        addWhatTheProgramLeaves(document.project(), range);
         QCOMPARE(prediction.range.tolerances.size(), range.tolerances.size());
         QVERIFY(!prediction.range.tolerances.empty());
         for (std::size_t i = 0; i < range.tolerances.size(); ++i) {
             QCOMPARE(prediction.range.tolerances[i].compliant.value_um, range.tolerances[i].compliant.value_um);
             QCOMPARE(prediction.range.tolerances[i].compliant.verdict, range.tolerances[i].compliant.verdict);
+            QCOMPARE(prediction.range.tolerances[i].range, range.tolerances[i].range);
         }
         QCOMPARE(prediction.deviation.features.size(), range.compliant.features.size());
         QVERIFY(!prediction.deviation.features.empty());

@@ -91,24 +91,35 @@ private Q_SLOTS:
         // The example's machine has no thermal characterisation: zero drift is said here too.
         QVERIFY(panel->banner()->text().contains(QStringLiteral("thermal drift not measured: taken as zero")));
         const ToleranceVerdictModel *m = panel->model();
-        QCOMPARE(m->index(0, ToleranceVerdictModel::RangeColumn).data().toString(),
+        // T4, Ø40 g6 on the journal O6.
+        QCOMPARE(m->index(3, ToleranceVerdictModel::RangeColumn).data().toString(),
                  QStringLiteral("passes on any machine in the range"));
         QVERIFY(
-            m->index(0, ToleranceVerdictModel::RequiredColumn).data().toString().startsWith(QStringLiteral("chuck ")));
-        QCOMPARE(m->index(0, ToleranceVerdictModel::RangeColumn).data(ToleranceVerdictModel::RangeVerdictRole).toInt(),
+            m->index(3, ToleranceVerdictModel::RequiredColumn).data().toString().startsWith(QStringLiteral("chuck ")));
+        QCOMPARE(m->index(3, ToleranceVerdictModel::RangeColumn).data(ToleranceVerdictModel::RangeVerdictRole).toInt(),
                  static_cast<int>(RangeVerdict::PassesOnAnyMachine));
+        // T1, Ø50 h6 on the seat O4 that starts at the jaw face (z 35): the tool keeps 2 mm + r_e 0.8 mm
+        // from the jaws, and the program leaves z 35.000–37.750 mm of it (sampled every 0.05 mm).
+        QCOMPARE(m->index(0, ToleranceVerdictModel::RangeColumn).data().toString(),
+                 QStringLiteral("not finished by the program: z 35.000–37.750 mm of O4"));
+        QCOMPARE(m->index(0, ToleranceVerdictModel::RangeColumn).data(ToleranceVerdictModel::RangeVerdictRole).toInt(),
+                 static_cast<int>(RangeVerdict::NotFinished));
         QVERIFY(!panel->banner()->styleSheet().contains(QStringLiteral("#fde3c8")));
 
         QVERIFY(w.fileController()->openFile(example("hollow-sleeve-tailstock.tolturn")));
         QVERIFY(panel->banner()->text().contains(QStringLiteral("tailstock")));
         QVERIFY(panel->banner()->styleSheet().contains(QStringLiteral("#fde3c8")));
-        QVERIFY(
-            m->index(0, ToleranceVerdictModel::RequiredColumn).data().toString().contains(QStringLiteral("tailstock")));
+        QVERIFY( // T6, the size of O6, turned whole
+            m->index(5, ToleranceVerdictModel::RequiredColumn).data().toString().contains(QStringLiteral("tailstock")));
 
-        // The slender pin at a planner's catalogue conditions: its cylindricity fails on every machine.
+        // The slender pin at a planner's catalogue conditions: its cylindricity fails on every machine
+        // on what the program turns (its seat O4 also starts at the jaw face).
         QVERIFY(w.fileController()->openFile(example("slender-pin-chuck.tolturn")));
-        QCOMPARE(m->index(1, ToleranceVerdictModel::RangeColumn).data().toString(),
-                 QStringLiteral("fails as programmed even on the stiffest machine of the range"));
+        QVERIFY(m->index(1, ToleranceVerdictModel::VerdictColumn)
+                    .data(Qt::ToolTipRole)
+                    .toString()
+                    .contains(QStringLiteral(
+                        "on what it turns: fails as programmed even on the stiffest machine of the range")));
         QTest::qWait(50);
         tolturn::test::saveScreenshot(w, "verdicts-range.png");
     }
@@ -180,7 +191,7 @@ private Q_SLOTS:
         t.id = doc->nextToleranceId();
         QCOMPARE(t.id, QStringLiteral("T9"));
         t.type = ToleranceType::Cylindricity;
-        t.featureId = QStringLiteral("O4");
+        t.featureId = QStringLiteral("O6"); // the Ø40 journal, turned whole
         t.zone_um = 0.0001;
         QVERIFY(doc->addTolerance(t).empty());
         QVERIFY(doc->isModified());

@@ -219,6 +219,7 @@ QColor ToleranceVerdictModel::rangeVerdictColor(const ToleranceRangeEvaluation &
     case RangeVerdict::PassesAfterOffsetOnAnyMachine:
         return verdictColor(Verdict::PassesAfterOffset);
     case RangeVerdict::FailsEvenOnStiffest:
+    case RangeVerdict::NotFinished:
         return verdictColor(Verdict::NeedsProfileCorrection);
     case RangeVerdict::NoRange:
     case RangeVerdict::NotDecided:
