@@ -1629,10 +1629,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Warnung: %1</translation>
     </message>
     <message>
-        <source>program O%1, checksum %2 (SHA-256, first 16 digits)</source>
-        <translation>Programm O%1, Prüfsumme %2 (SHA-256, erste 16 Stellen)</translation>
-    </message>
-    <message>
         <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Mit dem kompensieren, was von der Maschine aus ihren gemessenen Teilen gelernt wurde (learn --save).</translation>
     </message>
@@ -1667,6 +1663,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>compensation: no tolerance needs a correction; the moves are the nominal program&apos;s</source>
         <translation>Kompensation: keine Toleranz braucht eine Korrektur; die Bewegungen sind die des nominalen Programms</translation>
+    </message>
+    <message>
+        <source>program %1, checksum %2 (SHA-256, first 16 digits)</source>
+        <translation>Programm %1, Prüfsumme %2 (SHA-256, erste 16 Stellen)</translation>
     </message>
 </context>
 <context>
@@ -5232,10 +5232,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Spannzange: %1 mm gespannt</translation>
     </message>
     <message numerus="yes">
-        <source>Program O%1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
+        <source>Program %1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
         <translation>
-            <numerusform>Programm O%1 für %2, %n Schnitt; Drehzahlbegrenzung %3 1/min (%4). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %5, des kompensierten Programms %6: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</numerusform>
-            <numerusform>Programm O%1 für %2, %n Schnitte; Drehzahlbegrenzung %3 1/min (%4). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %5, des kompensierten Programms %6: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</numerusform>
+            <numerusform>Programm %1 für %2, %n Schnitt; Drehzahlbegrenzung %3 1/min (%4). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %5, des kompensierten Programms %6: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</numerusform>
+            <numerusform>Programm %1 für %2, %n Schnitte; Drehzahlbegrenzung %3 1/min (%4). Prüfsumme (SHA-256, erste 16 Stellen) des nominalen Programms %5, des kompensierten Programms %6: vor dem Abarbeiten mit `tolturn-cli gcode` oder dem G-Code-Reiter vergleichen.</numerusform>
         </translation>
     </message>
 </context>
@@ -8825,10 +8825,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Noch nicht optimiert. Drücken Sie F5 (oder Optimieren), um die Schnittwerte zu finden, die jede Toleranz bei minimaler Zeit oder minimalen Kosten einhalten; Schnittwertfenster, Rangfolge der Aufspannungen und Kompensation folgen. Planungsdaten… enthält die Kostensätze, die Standzeit und die Bereiche der Wendeschneidplatte, mit denen die Optimierung rechnet.</translation>
     </message>
     <message>
-        <source>The project&apos;s passes: %1. Dialect: %2. Program O%3, checksum %4.</source>
-        <translation>Die Schnitte des Projekts: %1. Dialekt: %2. Programm O%3, Prüfsumme %4.</translation>
-    </message>
-    <message>
         <source>programmed</source>
         <translation>programmiert</translation>
     </message>
@@ -8954,6 +8950,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>not known</source>
         <translation>nicht bekannt</translation>
+    </message>
+    <message>
+        <source>The project&apos;s passes: %1. Dialect: %2. Program %3, checksum %4.</source>
+        <translation>Die Schnitte des Projekts: %1. Dialekt: %2. Programm %3, Prüfsumme %4.</translation>
     </message>
 </context>
 <context>

@@ -1629,10 +1629,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>aviso: %1</translation>
     </message>
     <message>
-        <source>program O%1, checksum %2 (SHA-256, first 16 digits)</source>
-        <translation>programa O%1, suma de control %2 (SHA-256, primeros 16 dígitos)</translation>
-    </message>
-    <message>
         <source>Compensate with what was learned of the machine from its measured parts (learn --save).</source>
         <translation>Compensar con lo aprendido de la máquina a partir de sus piezas medidas (learn --save).</translation>
     </message>
@@ -1667,6 +1663,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>compensation: no tolerance needs a correction; the moves are the nominal program&apos;s</source>
         <translation>compensación: ninguna tolerancia necesita corrección; los movimientos son los del programa nominal</translation>
+    </message>
+    <message>
+        <source>program %1, checksum %2 (SHA-256, first 16 digits)</source>
+        <translation>programa %1, suma de control %2 (SHA-256, primeros 16 dígitos)</translation>
     </message>
 </context>
 <context>
@@ -5232,10 +5232,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>pinza: %1 mm sujetos</translation>
     </message>
     <message numerus="yes">
-        <source>Program O%1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
+        <source>Program %1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, first 16 digits) of the nominal program %5, of the compensated program %6: compare them with `tolturn-cli gcode` or the G-code tab before running.</source>
         <translation>
-            <numerusform>Programa O%1 para %2, %n pasada; límite del husillo %3 rpm (%4). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %5, del programa compensado %6: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</numerusform>
-            <numerusform>Programa O%1 para %2, %n pasadas; límite del husillo %3 rpm (%4). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %5, del programa compensado %6: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</numerusform>
+            <numerusform>Programa %1 para %2, %n pasada; límite del husillo %3 rpm (%4). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %5, del programa compensado %6: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</numerusform>
+            <numerusform>Programa %1 para %2, %n pasadas; límite del husillo %3 rpm (%4). Suma de control (SHA-256, primeros 16 dígitos) del programa nominal %5, del programa compensado %6: compárelas con `tolturn-cli gcode` o la pestaña G-code antes de ejecutar.</numerusform>
         </translation>
     </message>
 </context>
@@ -8825,10 +8825,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>Aún sin optimizar. Pulse F5 (u Optimizar) para hallar las condiciones de corte que cumplen todas las tolerancias con el mínimo tiempo o coste; siguen la ventana de corte, la clasificación de sujeciones y la compensación. Datos de planificación… contiene las tarifas, la vida de la herramienta y los rangos de la plaquita con los que trabaja el optimizador.</translation>
     </message>
     <message>
-        <source>The project&apos;s passes: %1. Dialect: %2. Program O%3, checksum %4.</source>
-        <translation>Las pasadas del proyecto: %1. Dialecto: %2. Programa O%3, suma de control %4.</translation>
-    </message>
-    <message>
         <source>programmed</source>
         <translation>programado</translation>
     </message>
@@ -8954,6 +8950,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>not known</source>
         <translation>desconocido</translation>
+    </message>
+    <message>
+        <source>The project&apos;s passes: %1. Dialect: %2. Program %3, checksum %4.</source>
+        <translation>Las pasadas del proyecto: %1. Dialecto: %2. Programa %3, suma de control %4.</translation>
     </message>
 </context>
 <context>

@@ -205,9 +205,8 @@ int runGCode(const QStringList &args, QTextStream &out, QTextStream &err)
     }
     err << file << ": " << GCodeCommand::tr("dialect %1").arg(program.dialectReason) << '\n';
     err << file << ": "
-        << GCodeCommand::tr("program O%1, checksum %2 (SHA-256, first 16 digits)")
-               .arg(program.programNumber)
-               .arg(program.checksum)
+        << GCodeCommand::tr("program %1, checksum %2 (SHA-256, first 16 digits)")
+               .arg(programNumberWord(program.programNumber), program.checksum)
         << '\n';
     for (const QString &w : program.warnings())
         err << file << ": " << GCodeCommand::tr("warning: %1").arg(w) << '\n';

@@ -220,7 +220,7 @@ QStringList programHeader(const Project &project, const TurningProgram &program,
     header << Programs::tr("TolTurn %1: %2").arg(tolturnVersion(), project.part.name)
            << Programs::tr("Material %1, insert %2, holder %3, clamping %4")
                   .arg(project.materialId, project.tool.insertCode, project.tool.holderCode,
-                       keyword(project.clamping.method))
+                       displayName(project.clamping.method))
            << Programs::tr("Dialect: %1").arg(program.dialectReason) << compensationSummary(options.compensation)
            << Programs::tr("Conditions: %1").arg(program.conditions);
     if (!options.finishingFeeds_mm_rev.isEmpty()) {

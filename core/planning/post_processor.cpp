@@ -98,7 +98,7 @@ Dialect dialect(ControlDialect id)
             QStringLiteral("M30")};
 }
 
-constexpr qsizetype kCommentWidth = 72;
+constexpr qsizetype kCommentWidth = 70; // the text; with its parentheses a line of 72 characters
 
 class Writer {
 public:
@@ -113,8 +113,8 @@ public:
         m_n += 10;
     }
 
-    // Comment lines of at most kCommentWidth characters (LinuxCNC refuses blocks of over 256, and a
-    // control's screen is narrow), wrapped at spaces, never between a number and its unit.
+    // Comment lines of at most 72 characters with their parentheses (LinuxCNC refuses blocks of over
+    // 256, and a control's screen is narrow), wrapped at spaces, never between a number and its unit.
     void commentLine(const QString &text)
     {
         QString rest = asciiText(text);
@@ -410,7 +410,7 @@ QString postProcess(const Toolpath &path, const Toolpath *boring, double partLen
     if (d.id != ControlDialect::Sinumerik)
         out << "%\n";
     if (d.id == ControlDialect::FanucHaas)
-        out << 'O' << QStringLiteral("%1").arg(options.programNumber, 5, 10, QLatin1Char('0')) << '\n';
+        out << programNumberWord(options.programNumber) << '\n';
     for (const QString &h : options.header)
         w.commentLine(h);
     w.commentLine(noseLine(path, options.dialect));
@@ -427,10 +427,11 @@ QString postProcess(const Toolpath &path, const Toolpath *boring, double partLen
     w.line(toolCall(d, options.tool));
     const long limit = std::lround(options.spindle.speed_rpm);
     // No pass that cuts, no speed to limit: a limit of 0 rpm would be a word the control takes literally.
+    // Why the spindle is limited where it is, on the comment lines above the limit (too long to
+    // follow the block on one line).
+    w.commentLine(options.spindle.reason);
     if (const QString word = limit > 0 ? spindleLimitWord(d, limit) : QString(); !word.isEmpty())
-        w.line(word, options.spindle.reason);
-    else
-        w.commentLine(options.spindle.reason);
+        w.line(word);
     bool first = true;
     auto cut = [&](const PassPath &pass, bool finishing, ContourSide side) {
         if (pass.moves.empty())
@@ -460,6 +461,11 @@ QString postProcess(const Toolpath &path, const Toolpath *boring, double partLen
         out << "%\n";
     out.flush();
     return text;
+}
+
+QString programNumberWord(int programNumber)
+{
+    return QStringLiteral("O%1").arg(programNumber, 5, 10, QLatin1Char('0'));
 }
 
 } // namespace tolturn

@@ -70,4 +70,8 @@ struct PostOptions {
 [[nodiscard]] QString postProcess(const Toolpath &path, const Toolpath *boring, double partLength_mm,
                                   const PostOptions &options);
 
+// The program number as the program's O-word states it: "O01000" (five digits, as Haas numbers
+// its programs, O00000 to O99999).
+[[nodiscard]] QString programNumberWord(int programNumber);
+
 } // namespace tolturn

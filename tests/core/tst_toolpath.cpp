@@ -541,6 +541,34 @@ private Q_SLOTS:
                  qPrintable(*fall));
     }
 
+    // No line of any example's program, in any dialect, is longer than 72 characters: a comment is
+    // wrapped with its parentheses (LinuxCNC refuses blocks over 256, a control's screen is narrow),
+    // the spindle limit's reason stands on its own lines above the limit, and the clamping is named
+    // as people read it ("CHUCK + TAILSTOCK", not the file's keyword). The O-word and the number the
+    // program is known by are the same.
+    void everyProgramLineFitsAControlScreen()
+    {
+        for (const QString &f : QDir(QStringLiteral(TOLTURN_SOURCE_DIR "/resources/examples"))
+                                    .entryList({QStringLiteral("*.tolturn")}, QDir::Files)) {
+            const Project p = operationView(example(f), 0);
+            const DeviationResult d = computeDeviation(p, DataLibrary::builtIn(), {});
+            QVERIFY(d.inputs);
+            for (const ControlDialect dialect :
+                 {ControlDialect::FanucHaas, ControlDialect::Sinumerik, ControlDialect::LinuxCnc}) {
+                GCodeOptions o;
+                o.dialect = dialect;
+                const TurningProgram program = turningProgram(p, DataLibrary::builtIn(), *d.inputs, o);
+                for (const QString &line : program.text.split(QLatin1Char('\n')))
+                    QVERIFY2(line.size() <= 72, qPrintable(f + QStringLiteral(": ") + line));
+                QVERIFY(!program.text.contains(QStringLiteral("CHUCK_TAILSTOCK")));
+                if (dialect == ControlDialect::FanucHaas)
+                    QVERIFY(program.text.contains(QStringLiteral("\nO01000\n")));
+            }
+        }
+        QCOMPARE(programNumberWord(1000), QStringLiteral("O01000"));
+        QCOMPARE(programNumberWord(42), QStringLiteral("O00042"));
+    }
+
     // What the program leaves unfinished, by hand. The long shaft between centres: the tool keeps
     // 2 mm + r_e 0.8 mm from the left centre (z 0), so the journal O3 (from z 1) is turned from
     // z 2.8 (sampled every 0.05 mm: 1.000–2.750 left); at the shoulder O4 (z 120) it rides down at

@@ -668,10 +668,9 @@ void PlanningPanel::showFinishing()
     }
     m_compensation->resizeColumnsToContents();
     const TurningProgram &program = m_compensated->isChecked() ? m_finishing.compensated : m_finishing.nominal;
-    QString about = tr("The project's passes: %1. Dialect: %2. Program O%3, checksum %4.")
-                        .arg(program.conditions, program.dialectReason)
-                        .arg(program.programNumber)
-                        .arg(program.checksum);
+    QString about =
+        tr("The project's passes: %1. Dialect: %2. Program %3, checksum %4.")
+            .arg(program.conditions, program.dialectReason, programNumberWord(program.programNumber), program.checksum);
     about = about.toHtmlEscaped();
     QStringList warnings = program.warnings();
     if (m_compensated->isChecked() && m_finishing.deviation.inputs)

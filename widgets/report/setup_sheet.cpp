@@ -3,6 +3,7 @@
 
 #include "core/common/finding_groups.h"
 #include "core/data/data_library.h"
+#include "core/planning/post_processor.h"
 #include "core/project/keywords.h"
 #include "core/tooling/iso1832.h"
 
@@ -145,12 +146,11 @@ void setupSheet(Layout &l, const Project &p, const FinishingOutput &finishing)
     rows.push_back({QString(), SetupSheet::tr("total cutting"), QString(), QString(), QString(), QString(), QString(),
                     num(total, 2)});
     l.table(rows, {34, 70, 72, 60, 60, 54, 70, kWidth - 420});
-    l.paragraph(SetupSheet::tr("Program O%1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, "
+    l.paragraph(SetupSheet::tr("Program %1 for %2, %n pass(es); spindle limit %3 rpm (%4). Checksum (SHA-256, "
                                "first 16 digits) of the nominal program %5, of the compensated program %6: compare "
                                "them with `tolturn-cli gcode` or the G-code tab before running.",
                                nullptr, static_cast<int>(program.passes.size()))
-                    .arg(program.programNumber)
-                    .arg(program.dialectReason)
+                    .arg(programNumberWord(program.programNumber), program.dialectReason)
                     .arg(num(program.spindle.speed_rpm, 0), program.spindle.reason, program.checksum,
                          finishing.compensated.checksum),
                 8.5);
