@@ -3581,6 +3581,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>Stated on the steps a program gives them (%1 m/min, %2 mm/rev, %3 mm), the plan breaks a constraint: it is kept at full precision, and the program rounds it.</source>
         <translation>Auf die Schritte gebracht, in denen ein Programm sie angibt (%1 m/min, %2 mm/U, %3 mm), verletzt der Plan eine Bedingung: Er bleibt in voller Genauigkeit, und das Programm rundet ihn.</translation>
     </message>
+    <message>
+        <source>The range %1–%2 %5 holds no value on the step a program states (%3 %5): the plan keeps %4 %5, which the program rounds.</source>
+        <translation>Der Bereich %1–%2 %5 enthält keinen Wert auf dem Schritt, in dem ein Programm ihn angibt (%3 %5): Der Plan behält %4 %5, und das Programm rundet es.</translation>
+    </message>
 </context>
 <context>
     <name>Planning</name>

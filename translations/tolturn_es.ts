@@ -3581,6 +3581,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>Stated on the steps a program gives them (%1 m/min, %2 mm/rev, %3 mm), the plan breaks a constraint: it is kept at full precision, and the program rounds it.</source>
         <translation>Llevado a los pasos en que un programa los indica (%1 m/min, %2 mm/rev, %3 mm), el plan incumple una restricción: se mantiene con precisión completa y el programa lo redondea.</translation>
     </message>
+    <message>
+        <source>The range %1–%2 %5 holds no value on the step a program states (%3 %5): the plan keeps %4 %5, which the program rounds.</source>
+        <translation>El rango %1–%2 %5 no contiene ningún valor en el paso en que un programa lo indica (%3 %5): el plan mantiene %4 %5, que el programa redondea.</translation>
+    </message>
 </context>
 <context>
     <name>Planning</name>

@@ -55,7 +55,8 @@ int evaluateLearned(const QString &file, const Project &project, const QString &
     if (!model)
         return kExitProblems;
     const QString provenance = model->provenance();
-    const RangeEvaluation learned = evaluateWithLearned(project, DataLibrary::builtIn(), *model);
+    RangeEvaluation learned = evaluateWithLearned(project, DataLibrary::builtIn(), *model);
+    addWhatTheProgramLeaves(project, learned);
     const DeviationResult &deviation = learned.compliant;
     for (const Diagnostic &d : deviation.diagnostics)
         err << file << ": " << d.toString() << '\n';

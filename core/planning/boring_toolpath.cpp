@@ -184,7 +184,7 @@ void finishTheBore(Toolpath &path, const BoreFrame &f, const CuttingPass &finish
     if (path.finishing.moves.size() >= 2)
         path.finishing.moves[path.finishing.moves.size() - 2].to.z_mm += options.clearance_mm;
     if (bar.trailingEdgeAngle_deg)
-        warnWhereTheToolRidesOver(ridden, *bar.trailingEdgeAngle_deg, path.warnings);
+        warnWhereTheToolRidesOver(ridden, *bar.trailingEdgeAngle_deg, bar.noseRadius_mm, path.warnings);
     else
         path.warnings << Toolpaths::tr("The trailing edge angle of the boring bar is not known (bar entering angle "
                                        "and insert shape): falling contours of the bore are not checked.");

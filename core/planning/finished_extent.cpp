@@ -53,12 +53,13 @@ bool onThePath(const std::vector<PathElement> &path, ProfilePoint p)
                        [p](const PathElement &e) { return distanceTo(e, p) <= kOnThePath_mm; });
 }
 
-// Whether the program is asked to finish a point of a feature of this set-up: right of the jaws,
-// and not inside the pilot hole on a bore's bottom face.
+// Whether the program is asked to finish a point of a feature of this set-up: outside, right of
+// the jaws (the bore inside them is the boring bar's to reach), and not inside the pilot hole on a
+// bore's bottom face.
 bool askedOf(const Project &project, const Segment &s, ContourSide side, ProfilePoint p)
 {
     const bool held = project.clamping.method != ClampingMethod::BetweenCentres;
-    if (held && p.z_mm < project.clamping.clampedLength_mm - 1e-9)
+    if (side == ContourSide::Outer && held && p.z_mm < project.clamping.clampedLength_mm - 1e-9)
         return false;
     const bool face = s.kind == SegmentKind::Face;
     const double pilot = side == ContourSide::Inner && project.boringTool && project.boringTool->pilotHoleDiameter_mm
@@ -158,6 +159,10 @@ void addWhatTheProgramLeaves(const Project &project, RangeEvaluation &range)
         e.compliant.reason = e.compliant.reason.isEmpty() ? text : text + QStringLiteral("; ") + e.compliant.reason;
         e.range = RangeVerdict::NotFinished;
         e.unfinished = left;
+        // No figure to act on: the offsets and the stiffness needed hold for a part the program
+        // does not make (the reason keeps what they were).
+        e.compliant.offset_um.reset();
+        e.stiff.reset();
         e.chuck.reset();
         e.tailstock.reset();
         e.offsetOnAnyMachine_um.reset();

@@ -17,7 +17,7 @@ struct UnfinishedStretch {
     ProfilePoint to;
 };
 
-// The stretches of the features a set-up cuts, right of the jaws, that its finishing passes
+// The stretches of the features a set-up cuts (outside: right of the jaws) that its finishing passes
 // (finishingPasses(): the outer contour's, the bore's where a boring bar bores it) do not pass
 // along: the tool's stop short of the jaws or a centre, a fall its trailing edge rides over, an end
 // face held by a centre, a bore without a boring bar or beyond the bar's reach. With the control's

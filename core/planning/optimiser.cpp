@@ -383,6 +383,18 @@ void stateOnProgramSteps(const PlanningProblem &problem, PlanResult &result)
         if (!best || rank(o.evaluation) < rank(best->evaluation))
             best = o;
     }
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const bool onItsStep = std::abs(x[i] / step[i] - std::round(x[i] / step[i])) < 1e-6;
+        if (values[i].size() == 1 && !onItsStep && box.upper[i] - box.lower[i] > 1e-9) {
+            const std::array<QString, 5> unit{QStringLiteral("m/min"), QStringLiteral("mm/rev"), QStringLiteral("mm"),
+                                              QStringLiteral("m/min"), QStringLiteral("mm/rev")};
+            result.notes << Optimiser::tr("The range %1–%2 %5 holds no value on the step a program states (%3 %5): "
+                                          "the plan keeps %4 %5, which the program rounds.")
+                                .arg(formatNumber(box.lower[i]), formatNumber(box.upper[i]), formatNumber(step[i]),
+                                     formatNumber(x[i]), unit[i]);
+            break;
+        }
+    }
     if (result.feasible && !best->evaluation.feasible(1e-6)) {
         result.notes << Optimiser::tr("Stated on the steps a program gives them (%1 m/min, %2 mm/rev, %3 mm), the "
                                       "plan breaks a constraint: it is kept at full precision, and the program "

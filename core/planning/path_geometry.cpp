@@ -387,7 +387,7 @@ std::vector<PathElement> riddenOverSteepFalls(const std::vector<PathElement> &ch
             const bool under = j < last || !hit || norm(hit->second - rest[j].from) > 1e-6; // not met at its start
             if (under && !ridden.featureIds.contains(rest[j].featureId))
                 ridden.featureIds << rest[j].featureId;
-            for (const ProfilePoint q : {rest[j].from, rest[j].to}) {
+            for (const ProfilePoint q : sampled(rest[j], 0.05, 2000)) { // an arc's lowest point too
                 if (q.z_mm < ridden.to.z_mm - 1e-6 || q.z_mm > p->z_mm + 1e-6)
                     continue;
                 const double line = p->r_mm - (p->z_mm - q.z_mm) * std::tan(t);

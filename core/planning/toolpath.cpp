@@ -402,10 +402,10 @@ double smallestAxialRadius(const std::vector<PathElement> &chain)
 
 // A tool whose trailing (minor) edge makes kappa' = 180° - kappa_r - epsilon_r with the axis
 // (ISO 3002-1, tool cutting edge angle and minor cutting edge angle; the corner angle of the insert
-// between them) can follow a contour that falls, in its feed direction, no steeper than kappa'.
-// A steeper fall no higher than r_e (1 - sin kappa') stays within the corner radius, which cuts it
-// (the arc of the corner rises that far before the trailing edge begins): the micrometre steps of
-// a compensated path, say. Consecutive steep elements count as one fall.
+// between them) can follow a contour that falls, in its feed direction, no steeper than kappa':
+// with the nose centre phi round a falling corner the edge dips r_e (1 - cos(phi - kappa'))/cos
+// kappa' below the surface behind it. A sharp step lower than r_e (1 - cos kappa') turns the nose
+// less than kappa' and is cut by its corner (3 µm for r_e 0.8 mm and 5°): not worth a warning.
 // The steepest a tool may descend towards the headstock without its trailing edge touching the
 // surface behind it: the trailing edge's angle less the free cutting angle of at least 2° that
 // Sandvik Coromant asks to keep between workpiece and insert in profiling ("Internal turning",
@@ -419,10 +419,12 @@ double rideAngle_deg(double trailing_deg)
 
 // What the trailing edge leaves of a contour a tool follows towards the headstock, each stretch a
 // warning (a fall of less than a micrometre, as in a compensated path, is left unsaid).
-void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, QStringList &warnings)
+void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, double noseRadius_mm,
+                               QStringList &warnings)
 {
+    const double cutByTheCorner_mm = noseRadius_mm * (1.0 - std::cos(trailing_deg * std::numbers::pi / 180.0));
     for (const RiddenOver &r : ridden) {
-        if (r.deepest_mm < 1e-3)
+        if (r.deepest_mm <= std::max(cutByTheCorner_mm, 1e-3))
             continue;
         if (std::abs(r.from.z_mm - r.to.z_mm) < 1e-3) { // at the contour's end: nothing to ride down to
             warnings << Toolpaths::tr("%1 falls at %2° in the feed direction, steeper than the insert's trailing edge "
@@ -803,7 +805,7 @@ Toolpath turningToolpath(const Project &project, const CuttingPass &finishing, c
     path.finishing.number = number;
     const FinishingGeometry g = finishingGeometry(project, options, noseRadius_mm, trailingEdgeAngle_deg);
     if (trailingEdgeAngle_deg)
-        warnWhereTheToolRidesOver(g.riddenOver, *trailingEdgeAngle_deg, path.warnings);
+        warnWhereTheToolRidesOver(g.riddenOver, *trailingEdgeAngle_deg, noseRadius_mm, path.warnings);
     else
         path.warnings << Toolpaths::tr("The trailing edge angle of the tool is not known (holder entering angle and "
                                        "insert shape): falling contours are not checked.");

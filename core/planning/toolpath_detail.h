@@ -69,7 +69,9 @@ double roughLevels(std::vector<PassPath> &passes, const std::vector<CuttingPass>
 [[nodiscard]] double rideAngle_deg(double trailing_deg);
 
 // What the trailing edge leaves of a contour a tool follows towards the headstock, each stretch
-// ridden over a warning (a fall of less than a micrometre, as in a compensated path, is left unsaid).
-void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, QStringList &warnings);
+// ridden over a warning; a fall the nose's corner cuts (r_e (1 - cos kappa'), the micrometre steps of
+// a compensated path, say) is left unsaid.
+void warnWhereTheToolRidesOver(const std::vector<RiddenOver> &ridden, double trailing_deg, double noseRadius_mm,
+                               QStringList &warnings);
 
 } // namespace tolturn::toolpath_detail

@@ -236,6 +236,16 @@ private Q_SLOTS:
             ++sizes;
         }
         QVERIFY(sizes >= 2);
+        // What the program does not finish is not judged with what was learned either.
+        int unfinished = 0;
+        for (qsizetype i = 0; i < with.size(); ++i) {
+            if (without[i][QStringLiteral("range_verdict")].toString() != QLatin1String("not_finished"))
+                continue;
+            QCOMPARE(with[i][QStringLiteral("verdict")].toString(), QStringLiteral("cannot_evaluate"));
+            QVERIFY(with[i][QStringLiteral("reason")].toString().startsWith(QStringLiteral("not finished")));
+            ++unfinished;
+        }
+        QVERIFY(unfinished >= 1);
         // Every part was cut at the plan's finishing feed, 0.1 mm/rev: a plan at 0.2 lies outside
         // what was measured, and the verdicts say so.
         QVERIFY(QJsonDocument::fromJson(judged.out.toUtf8())[QStringLiteral("diagnostics")].toArray().isEmpty());

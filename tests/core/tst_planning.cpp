@@ -914,6 +914,21 @@ private Q_SLOTS:
         QVERIFY(plan.evaluation.feasible(1e-6));
     }
 
+    // A speed range narrower than the program's step (201.2–201.8 m/min holds no whole m/min): the
+    // plan keeps its speed, at the top of the range for least time, and says the program rounds it.
+    void rangeWithoutAStepIsSaid()
+    {
+        Project p = test::exampleProject("stepped-shaft-chuck.tolturn");
+        p.planning.cuttingSpeed_m_min = ValueRange{201.2, 201.8};
+        const PlanResult plan = optimisePlan(*problemFor(p));
+        QVERIFY(plan.feasible);
+        QVERIFY(std::abs(plan.candidate.finishing.cuttingSpeed_m_min - 201.8) < 1e-6);
+        QVERIFY2(plan.notes.join(QLatin1Char('\n'))
+                     .contains(QStringLiteral("The range 201.2–201.8 m/min holds no value on the step a program "
+                                              "states (1 m/min)")),
+                 qPrintable(plan.notes.join(QLatin1Char('\n'))));
+    }
+
     // The finishing time of the slender pin without its tolerances (every size at nominal), by hand
     // from the program's finishing moves: under G96 n = K/r with K = 1000 v/(2 pi), capped at the
     // program's limit ceil(1000 v/(pi 28)) (the smallest turned diameter, the chamfer's Ø28); the
