@@ -134,6 +134,27 @@ std::optional<ProfilePoint> nearestIntersection(const PathElement &a, const Path
     return best;
 }
 
+// The angle of a point about an arc's centre.
+double angleAbout(const PathElement &arc, ProfilePoint p)
+{
+    return std::atan2(p.r_mm - arc.centre.r_mm, p.z_mm - arc.centre.z_mm);
+}
+
+// The angle swept from `from` to `to` [rad] turning the arc's way: positive counter-clockwise,
+// negative clockwise.
+double sweptAngle(const PathElement &arc, double from, double to)
+{
+    double w = to - from;
+    const double turn = 2.0 * std::numbers::pi;
+    if (arc.counterClockwise)
+        while (w < 0.0)
+            w += turn;
+    else
+        while (w > 0.0)
+            w -= turn;
+    return w;
+}
+
 // Whether an offset element, trimmed to new ends, still runs the way its original did.
 bool keepsItsSense(const PathElement &original, const PathElement &offset)
 {
@@ -141,23 +162,9 @@ bool keepsItsSense(const PathElement &original, const PathElement &offset)
         return dot(offset.to - offset.from, original.to - original.from) > kTiny;
     if (offset.radius_mm <= kTiny)
         return false;
-    const double a0 = std::atan2(original.from.r_mm - original.centre.r_mm, original.from.z_mm - original.centre.z_mm);
-    const double a1 = std::atan2(original.to.r_mm - original.centre.r_mm, original.to.z_mm - original.centre.z_mm);
-    const double b0 = std::atan2(offset.from.r_mm - offset.centre.r_mm, offset.from.z_mm - offset.centre.z_mm);
-    const double b1 = std::atan2(offset.to.r_mm - offset.centre.r_mm, offset.to.z_mm - offset.centre.z_mm);
-    auto sweep = [&](double s, double e) {
-        double w = e - s;
-        const double turn = 2.0 * std::numbers::pi;
-        if (original.counterClockwise)
-            while (w < 0.0)
-                w += turn;
-        else
-            while (w > 0.0)
-                w -= turn;
-        return w;
-    };
-    const double originalSweep = sweep(a0, a1);
-    const double offsetSweep = sweep(b0, b1);
+    const double originalSweep =
+        sweptAngle(original, angleAbout(original, original.from), angleAbout(original, original.to));
+    const double offsetSweep = sweptAngle(original, angleAbout(offset, offset.from), angleAbout(offset, offset.to));
     return std::abs(offsetSweep) <= std::abs(originalSweep) + 1e-6 && std::abs(offsetSweep) > 1e-9;
 }
 
@@ -173,19 +180,9 @@ double fallAngle_deg(ProfilePoint direction)
 // Whether a point on the circle carrying an arc lies on the arc (between its ends, its way).
 bool onArc(const PathElement &e, ProfilePoint p)
 {
-    const auto angle = [&e](ProfilePoint q) { return std::atan2(q.r_mm - e.centre.r_mm, q.z_mm - e.centre.z_mm); };
-    const double turn = 2.0 * std::numbers::pi;
-    auto sweep = [&](double to) {
-        double w = to - angle(e.from);
-        if (e.counterClockwise)
-            while (w < 0.0)
-                w += turn;
-        else
-            while (w > 0.0)
-                w -= turn;
-        return std::abs(w);
-    };
-    return sweep(angle(p)) <= sweep(angle(e.to)) + 1e-9;
+    const double start = angleAbout(e, e.from);
+    return std::abs(sweptAngle(e, start, angleAbout(e, p))) <=
+           std::abs(sweptAngle(e, start, angleAbout(e, e.to))) + 1e-9;
 }
 
 bool onElement(const PathElement &e, ProfilePoint p)
