@@ -5023,13 +5023,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <source>To meet it: %1</source>
         <translation>Um sie einzuhalten: %1</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc %5 m/min, f %6 mm/rev.</source>
-        <translation>
-            <numerusform>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %n Schruppschnitt bei vc %5 m/min, f %6 mm/rev.</numerusform>
-            <numerusform>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/rev, ap %4 mm; %n Schruppschnitte bei vc %5 m/min, f %6 mm/rev.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Finishing pass %1, turning insert (nose radius %2 mm): forces (%3) Fc %4 N, Ff %5 N, Fp %6 N; theoretical Ra %7 µm, Rz %8 µm.</source>
         <translation>Schlichtschnitt %1, Drehplatte (Eckenradius %2 mm): Kräfte (%3) Fc %4 N, Ff %5 N, Fp %6 N; theoretische Rauheit Ra %7 µm, Rz %8 µm.</translation>
@@ -5041,6 +5034,21 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>Feed schedule of the finishing pass (after Čuš and Župerl [8]): each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
         <translation>Vorschubplan des Schlichtschnitts (nach Čuš und Župerl [8]): jedes Formelement mit dem größten Vorschub des Bereichs, der seine Toleranzen und die Grenzen des Schnitts hält; %1 s beim programmierten Vorschub %2 mm/U, %3 s nach Plan (%4 %). Nur auf Wunsch programmiert (gcode --feed-schedule, Reiter G-Code).</translation>
+    </message>
+    <message>
+        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; </source>
+        <translation>%1 min je Teil; Schlichten vc %2 m/min, f %3 mm/U, ap %4 mm; </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n roughing pass(es) at vc %1 m/min, f %2 mm/rev.</source>
+        <translation>
+            <numerusform>%n Schruppschnitt bei vc %1 m/min, f %2 mm/U.</numerusform>
+            <numerusform>%n Schruppschnitte bei vc %1 m/min, f %2 mm/U.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no roughing: the finishing pass takes the whole stock.</source>
+        <translation>kein Schruppen: Der Schlichtschnitt nimmt das ganze Aufmaß.</translation>
     </message>
 </context>
 <context>

@@ -123,10 +123,10 @@
 <context>
     <name>Report</name>
     <message numerus="yes">
-        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc %5 m/min, f %6 mm/rev.</source>
+        <source>%n roughing pass(es) at vc %1 m/min, f %2 mm/rev.</source>
         <translation>
-            <numerusform>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass at vc %5 m/min, f %6 mm/rev.</numerusform>
-            <numerusform>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing passes at vc %5 m/min, f %6 mm/rev.</numerusform>
+            <numerusform>%n roughing pass at vc %1 m/min, f %2 mm/rev.</numerusform>
+            <numerusform>%n roughing passes at vc %1 m/min, f %2 mm/rev.</numerusform>
         </translation>
     </message>
 </context>

@@ -5023,13 +5023,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <source>To meet it: %1</source>
         <translation>Para cumplirla: %1</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc %5 m/min, f %6 mm/rev.</source>
-        <translation>
-            <numerusform>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %n pasada de desbaste a vc %5 m/min, f %6 mm/rev.</numerusform>
-            <numerusform>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; %n pasadas de desbaste a vc %5 m/min, f %6 mm/rev.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Finishing pass %1, turning insert (nose radius %2 mm): forces (%3) Fc %4 N, Ff %5 N, Fp %6 N; theoretical Ra %7 µm, Rz %8 µm.</source>
         <translation>Pasada de acabado %1, plaquita de torneado (radio de punta %2 mm): fuerzas (%3) Fc %4 N, Ff %5 N, Fp %6 N; rugosidad teórica Ra %7 µm, Rz %8 µm.</translation>
@@ -5041,6 +5034,21 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>Feed schedule of the finishing pass (after Čuš and Župerl [8]): each feature at the largest feed of the range that holds its tolerances and the pass&apos;s limits; %1 s at the programmed %2 mm/rev, %3 s scheduled (%4 %). Programmed only on request (gcode --feed-schedule, the G-code tab).</source>
         <translation>Programa de avances de la pasada de acabado (según Čuš y Župerl [8]): cada elemento con el mayor avance del rango que mantiene sus tolerancias y los límites de la pasada; %1 s con el avance programado de %2 mm/rev, %3 s según el programa (%4 %). Solo se programa si se pide (gcode --feed-schedule, pestaña Código G).</translation>
+    </message>
+    <message>
+        <source>%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; </source>
+        <translation>%1 min por pieza; acabado vc %2 m/min, f %3 mm/rev, ap %4 mm; </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n roughing pass(es) at vc %1 m/min, f %2 mm/rev.</source>
+        <translation>
+            <numerusform>%n pasada de desbaste a vc %1 m/min, f %2 mm/rev.</numerusform>
+            <numerusform>%n pasadas de desbaste a vc %1 m/min, f %2 mm/rev.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no roughing: the finishing pass takes the whole stock.</source>
+        <translation>sin desbaste: la pasada de acabado quita todo el sobrematerial.</translation>
     </message>
 </context>
 <context>

@@ -385,7 +385,8 @@ void stateOnProgramSteps(const PlanningProblem &problem, PlanResult &result)
     }
     for (std::size_t i = 0; i < x.size(); ++i) {
         const bool onItsStep = std::abs(x[i] / step[i] - std::round(x[i] / step[i])) < 1e-6;
-        if (values[i].size() == 1 && !onItsStep && box.upper[i] - box.lower[i] > 1e-9) {
+        const bool keptAsItIs = values[i].size() == 1 && std::abs(values[i].front() - x[i]) < 1e-12;
+        if (keptAsItIs && !onItsStep && box.upper[i] - box.lower[i] > 1e-9) {
             const std::array<QString, 5> unit{QStringLiteral("m/min"), QStringLiteral("mm/rev"), QStringLiteral("mm"),
                                               QStringLiteral("m/min"), QStringLiteral("mm/rev")};
             result.notes << Optimiser::tr("The range %1–%2 %5 holds no value on the step a program states (%3 %5): "

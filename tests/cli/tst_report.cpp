@@ -286,6 +286,24 @@ private Q_SLOTS:
         QVERIFY2(literature.contains(QStringLiteral("[9] E. Öztürk, E. Budak")), qPrintable(literature));
     }
 
+    // A plan without roughing (the H7 bushing: 1 mm of radial stock, (64 - 62)/2, within the
+    // insert's 0.5-2 mm depth of cut: the finishing pass takes it) says so, not "0 roughing passes".
+    void planWithoutRoughingSaysSo()
+    {
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("bushing.pdf"));
+        const Run r = runCli({QStringLiteral("report"), QStringLiteral("-o"), pdf, example("bushing-bore-h7.tolturn")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString plan = pdfText(pdf).simplified().section(QStringLiteral("5 Plan"), 1);
+        // ("fi" may come back from the PDF as a ligature.)
+        QVERIFY2(plan.contains(QStringLiteral("no roughing: the")) &&
+                     plan.contains(QStringLiteral("takes the whole stock")),
+                 qPrintable(plan));
+        QVERIFY(!plan.contains(QStringLiteral("0 roughing passes")));
+        // The speed, 353.6 m/min at the top of the range, is on the whole m/min below it: nothing to say.
+        QVERIFY2(!plan.contains(QStringLiteral("holds no value on the step")), qPrintable(plan));
+    }
+
     // A plan that cannot meet every constraint says in the report what it would take (the valve
     // body's OP 10: Ra 1.6 µm with the bar's r 0.4 mm needs f <= sqrt(32 * 0.4 * 0.0016) = 0.143
     // mm/rev, below the range's 0.17), and the plan's own notes are there: a limit the machine data

@@ -384,16 +384,19 @@ void plan(Layout &l, const Project &p, const FinishingOutput &finishing, const s
         const PlanningReport &r = *planned;
         if (r.problem) {
             const PlanResult &pl = r.plan;
-            l.paragraph(
-                (pl.feasible ? Report::tr("Optimal plan (%1): ")
-                             : Report::tr("No plan meets every constraint; the least-violating one (%1): "))
-                    .arg(keyword(p.planning.objective)) +
-                Report::tr("%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; %n roughing pass(es) at vc "
-                           "%5 m/min, f %6 mm/rev.",
-                           nullptr, pl.candidate.roughingPasses)
-                    .arg(num(pl.evaluation.time_min, 3), num(pl.candidate.finishing.cuttingSpeed_m_min, 0),
-                         num(pl.candidate.finishing.feed_mm_rev, 3), num(pl.candidate.finishing.depthOfCut_mm, 3),
-                         num(pl.candidate.roughing.cuttingSpeed_m_min, 0), num(pl.candidate.roughing.feed_mm_rev, 3)));
+            l.paragraph((pl.feasible ? Report::tr("Optimal plan (%1): ")
+                                     : Report::tr("No plan meets every constraint; the least-violating one (%1): "))
+                            .arg(keyword(p.planning.objective)) +
+                        Report::tr("%1 min per part; finishing vc %2 m/min, f %3 mm/rev, ap %4 mm; ")
+                            .arg(num(pl.evaluation.time_min, 3), num(pl.candidate.finishing.cuttingSpeed_m_min, 0),
+                                 num(pl.candidate.finishing.feed_mm_rev, 3),
+                                 num(pl.candidate.finishing.depthOfCut_mm, 3)) +
+                        (pl.candidate.roughingPasses > 0
+                             ? Report::tr("%n roughing pass(es) at vc %1 m/min, f %2 mm/rev.", nullptr,
+                                          pl.candidate.roughingPasses)
+                                   .arg(num(pl.candidate.roughing.cuttingSpeed_m_min, 0),
+                                        num(pl.candidate.roughing.feed_mm_rev, 3))
+                             : Report::tr("no roughing: the finishing pass takes the whole stock.")));
             QStringList binding;
             for (const ConstraintValue &c : pl.binding)
                 binding << c.label();
