@@ -4916,10 +4916,6 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
         <translation>Maß zwischen %1 und %2 mm</translation>
     </message>
     <message>
-        <source>; predicted %1–%2 mm</source>
-        <translation>; vorhergesagt %1–%2 mm</translation>
-    </message>
-    <message>
         <source>%1 of %2 µm predicted against a zone of %3 µm</source>
         <translation>%1 von %2 µm vorhergesagt, bei einer Toleranzzone von %3 µm</translation>
     </message>
@@ -5049,6 +5045,10 @@ Exit-Codes: 0 Erfolg, 1 die Eingabe enthält Fehler, 2 fehlerhafte Kommandozeile
     <message>
         <source>no roughing: the finishing pass takes the whole stock.</source>
         <translation>kein Schruppen: Der Schlichtschnitt nimmt das ganze Aufmaß.</translation>
+    </message>
+    <message>
+        <source>; predicted %1 mm</source>
+        <translation>; vorhergesagt %1 mm</translation>
     </message>
 </context>
 <context>

@@ -4916,10 +4916,6 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
         <translation>medida entre %1 y %2 mm</translation>
     </message>
     <message>
-        <source>; predicted %1–%2 mm</source>
-        <translation>; prevista %1–%2 mm</translation>
-    </message>
-    <message>
         <source>%1 of %2 µm predicted against a zone of %3 µm</source>
         <translation>%1 de %2 µm prevista frente a una zona de %3 µm</translation>
     </message>
@@ -5049,6 +5045,10 @@ Códigos de salida: 0 éxito, 1 la entrada tiene errores, 2 línea de comandos i
     <message>
         <source>no roughing: the finishing pass takes the whole stock.</source>
         <translation>sin desbaste: la pasada de acabado quita todo el sobrematerial.</translation>
+    </message>
+    <message>
+        <source>; predicted %1 mm</source>
+        <translation>; previsto %1 mm</translation>
     </message>
 </context>
 <context>

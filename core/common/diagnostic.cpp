@@ -63,6 +63,11 @@ QString formatFixed(double value, int decimals)
     return std::abs(value) < 1e9 ? QString::number(value, 'f', decimals) : QString::number(value, 'g', 4);
 }
 
+QString spanText(const QString &low, const QString &high)
+{
+    return low == high ? low : low + QStringLiteral("–") + high;
+}
+
 QString formatNumberExactly(double value)
 {
     // Ten digits where they hold the number (1000000000, 0.0004), else every digit it needs.

@@ -43,5 +43,8 @@ using Diagnostics = std::vector<Diagnostic>;
 // An amount to `decimals` places, or to four significant digits once it is too large for a row of
 // digits to be read (degenerate tool-life data make the time per part 10^260 min).
 [[nodiscard]] QString formatFixed(double value, int decimals);
+// A range as shown, "2334–2335", or one value where both ends read the same ("49.994", not
+// "49.994–49.994").
+[[nodiscard]] QString spanText(const QString &low, const QString &high);
 
 } // namespace tolturn

@@ -221,6 +221,10 @@ private Q_SLOTS:
         QCOMPARE(t1.at(5), QStringLiteral("16.0")); // micrometres to 0.1 µm
         // Below the table, the condition in words: h6 on Ø50 is 49.984–50.000 mm (es = 0, ei = -16 µm).
         QVERIFY(tolerances.contains(QStringLiteral("T1: size within 49.984–50.000 mm")));
+        // Programmed at the zone's middle, 49.992 mm, plus twice the seat's radial deviation of
+        // 1.1-1.2 µm (section 3's curve): both ends of the predicted size read 49.994, said once.
+        QVERIFY2(tolerances.contains(QStringLiteral("T1: size within 49.984–50.000 mm; predicted 49.994 mm")),
+                 qPrintable(tolerances.left(3000)));
         QVERIFY(!tolerances.contains(QStringLiteral("D'_Md")));
         QVERIFY2(t1.at(7).startsWith(QStringLiteral("cannot be evaluated")), qPrintable(t1.join(QLatin1Char('|'))));
         QVERIFY(tableRow(tolerances, QStringLiteral("T4")).at(7).startsWith(QStringLiteral("passes")));

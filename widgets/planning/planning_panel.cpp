@@ -485,15 +485,14 @@ void PlanningPanel::showPlanPasses()
     m_planPasses->setRowCount(static_cast<int>(program.passes.size()));
     for (int i = 0; i < m_planPasses->rowCount(); ++i) {
         const PassSummary &p = program.passes[static_cast<std::size_t>(i)];
-        const QStringList cells{
-            QString::number(p.number),
-            passKindText(p),
-            QStringLiteral("%1–%2").arg(number(p.lowestSpeed_rpm, 0), number(p.highestSpeed_rpm, 0)),
-            number(p.conditions.cuttingSpeed_m_min, 0),
-            number(p.conditions.feed_mm_rev, 3),
-            number(p.conditions.depthOfCut_mm, 3),
-            p.power_kW ? number(*p.power_kW, 2) : tr("—"),
-            number(p.time_min, 2)};
+        const QStringList cells{QString::number(p.number),
+                                passKindText(p),
+                                spanText(number(p.lowestSpeed_rpm, 0), number(p.highestSpeed_rpm, 0)),
+                                number(p.conditions.cuttingSpeed_m_min, 0),
+                                number(p.conditions.feed_mm_rev, 3),
+                                number(p.conditions.depthOfCut_mm, 3),
+                                p.power_kW ? number(*p.power_kW, 2) : tr("—"),
+                                number(p.time_min, 2)};
         for (int c = 0; c < static_cast<int>(cells.size()); ++c)
             m_planPasses->setItem(i, c, readOnlyCell(cells.at(c)));
     }

@@ -2,6 +2,7 @@
 #include "widgets/report/report_writer.h"
 
 #include "core/common/atomic_file.h"
+#include "core/common/diagnostic.h"
 #include "core/common/library_info.h"
 #include "core/cutting/cutting_quantities.h"
 #include "core/learning/setup_prediction.h"
@@ -290,9 +291,9 @@ QString conditionInWords(const ToleranceEvaluation &e)
         QString text = Report::tr("size within %1–%2 mm")
                            .arg(mm(*e.nominal_mm + 1e-3 * *e.lower_um), mm(*e.nominal_mm + 1e-3 * *e.upper_um));
         if (e.predictedMin_um && e.predictedMax_um)
-            text +=
-                Report::tr("; predicted %1–%2 mm")
-                    .arg(mm(*e.nominal_mm + 1e-3 * *e.predictedMin_um), mm(*e.nominal_mm + 1e-3 * *e.predictedMax_um));
+            text += Report::tr("; predicted %1 mm")
+                        .arg(spanText(mm(*e.nominal_mm + 1e-3 * *e.predictedMin_um),
+                                      mm(*e.nominal_mm + 1e-3 * *e.predictedMax_um)));
         return text + from;
     }
     if (e.value_um && e.limit_um)

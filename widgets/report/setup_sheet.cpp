@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/report/setup_sheet.h"
 
+#include "core/common/diagnostic.h"
 #include "core/common/finding_groups.h"
 #include "core/data/data_library.h"
 #include "core/planning/post_processor.h"
@@ -137,7 +138,7 @@ void setupSheet(Layout &l, const Project &p, const FinishingOutput &finishing)
     double total = 0.0;
     for (const PassSummary &s : program.passes) {
         rows.push_back({QString::number(s.number), passKindText(s),
-                        QStringLiteral("%1–%2").arg(num(s.lowestSpeed_rpm, 0), num(s.highestSpeed_rpm, 0)),
+                        spanText(num(s.lowestSpeed_rpm, 0), num(s.highestSpeed_rpm, 0)),
                         num(s.conditions.cuttingSpeed_m_min, 0), num(s.conditions.feed_mm_rev, 3),
                         num(s.conditions.depthOfCut_mm, 3), s.power_kW ? num(*s.power_kW, 2) : SetupSheet::tr("—"),
                         num(s.time_min, 2)});
