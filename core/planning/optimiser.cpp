@@ -346,6 +346,26 @@ std::vector<double> onStep(double x, double step, double lo, double hi)
     return values;
 }
 
+// The first variable whose range holds no value on its step (a speed range of 201.2–201.8 m/min),
+// kept as the search found it: said, since the program rounds it (perhaps out of the range).
+void sayWhereNoStepFits(const std::array<double, 5> &x, const std::array<double, 5> &step,
+                        const std::array<std::vector<double>, 5> &values, const PlanBox &box, QStringList &notes)
+{
+    const std::array<QString, 5> unit{QStringLiteral("m/min"), QStringLiteral("mm/rev"), QStringLiteral("mm"),
+                                      QStringLiteral("m/min"), QStringLiteral("mm/rev")};
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const bool onItsStep = std::abs(x[i] / step[i] - std::round(x[i] / step[i])) < 1e-6;
+        const bool keptAsItIs = values[i].size() == 1 && std::abs(values[i].front() - x[i]) < 1e-12;
+        if (keptAsItIs && !onItsStep && box.upper[i] - box.lower[i] > 1e-9) {
+            notes << Optimiser::tr("The range %1–%2 %5 holds no value on the step a program states (%3 %5): the plan "
+                                   "keeps %4 %5, which the program rounds.")
+                         .arg(formatNumber(box.lower[i]), formatNumber(box.upper[i]), formatNumber(step[i]),
+                              formatNumber(x[i]), unit[i]);
+            return;
+        }
+    }
+}
+
 // The plan found, stated as the program states it: each of the five variables on its step, below
 // or above, the best of the combinations as `evaluate` judges them (on the section the finishing
 // depth leaves). A search optimum on a binding constraint lies between steps; its nearest
@@ -383,19 +403,7 @@ void stateOnProgramSteps(const PlanningProblem &problem, PlanResult &result)
         if (!best || rank(o.evaluation) < rank(best->evaluation))
             best = o;
     }
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        const bool onItsStep = std::abs(x[i] / step[i] - std::round(x[i] / step[i])) < 1e-6;
-        const bool keptAsItIs = values[i].size() == 1 && std::abs(values[i].front() - x[i]) < 1e-12;
-        if (keptAsItIs && !onItsStep && box.upper[i] - box.lower[i] > 1e-9) {
-            const std::array<QString, 5> unit{QStringLiteral("m/min"), QStringLiteral("mm/rev"), QStringLiteral("mm"),
-                                              QStringLiteral("m/min"), QStringLiteral("mm/rev")};
-            result.notes << Optimiser::tr("The range %1–%2 %5 holds no value on the step a program states (%3 %5): "
-                                          "the plan keeps %4 %5, which the program rounds.")
-                                .arg(formatNumber(box.lower[i]), formatNumber(box.upper[i]), formatNumber(step[i]),
-                                     formatNumber(x[i]), unit[i]);
-            break;
-        }
-    }
+    sayWhereNoStepFits(x, step, values, box, result.notes);
     if (result.feasible && !best->evaluation.feasible(1e-6)) {
         result.notes << Optimiser::tr("Stated on the steps a program gives them (%1 m/min, %2 mm/rev, %3 mm), the "
                                       "plan breaks a constraint: it is kept at full precision, and the program "

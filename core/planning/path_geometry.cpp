@@ -351,6 +351,31 @@ double distanceTo(const PathElement &e, ProfilePoint p)
     return norm(p - (e.from + t * d));
 }
 
+namespace {
+
+// What a ride from `ridden.from` to `ridden.to` passes over, elements `first` to `last` of the
+// chain: the steepest fall, the features below the line (the last only where the line meets it
+// past its start) and the most it leaves, an arc's lowest point too.
+void describeRide(RiddenOver &ridden, const std::vector<PathElement> &rest, std::size_t first, std::size_t last,
+                  bool lastMetPastItsStart, double slope)
+{
+    for (std::size_t j = first; j <= last; ++j) {
+        ridden.steepest_deg =
+            std::max({ridden.steepest_deg, fallAngle_deg(startTangent(rest[j])), fallAngle_deg(endTangent(rest[j]))});
+        const bool under = j < last || lastMetPastItsStart;
+        if (under && !ridden.featureIds.contains(rest[j].featureId))
+            ridden.featureIds << rest[j].featureId;
+        for (const ProfilePoint q : sampled(rest[j], 0.05, 2000)) {
+            if (q.z_mm < ridden.to.z_mm - 1e-6 || q.z_mm > ridden.from.z_mm + 1e-6)
+                continue;
+            const double line = ridden.from.r_mm - (ridden.from.z_mm - q.z_mm) * slope;
+            ridden.deepest_mm = std::max(ridden.deepest_mm, line - q.r_mm);
+        }
+    }
+}
+
+} // namespace
+
 std::vector<PathElement> riddenOverSteepFalls(const std::vector<PathElement> &chain, double trailing_deg,
                                               std::vector<RiddenOver> *riddenOver)
 {
@@ -378,19 +403,7 @@ std::vector<PathElement> riddenOverSteepFalls(const std::vector<PathElement> &ch
         ridden.from = *p;
         ridden.to = hit ? hit->second : *p + (std::max(0.0, p->z_mm - rest.back().to.z_mm) / std::cos(t)) * down;
         const std::size_t last = hit ? hit->first : rest.size() - 1;
-        for (std::size_t j = i; j <= last; ++j) {
-            ridden.steepest_deg = std::max(
-                {ridden.steepest_deg, fallAngle_deg(startTangent(rest[j])), fallAngle_deg(endTangent(rest[j]))});
-            const bool under = j < last || !hit || norm(hit->second - rest[j].from) > 1e-6; // not met at its start
-            if (under && !ridden.featureIds.contains(rest[j].featureId))
-                ridden.featureIds << rest[j].featureId;
-            for (const ProfilePoint q : sampled(rest[j], 0.05, 2000)) { // an arc's lowest point too
-                if (q.z_mm < ridden.to.z_mm - 1e-6 || q.z_mm > p->z_mm + 1e-6)
-                    continue;
-                const double line = p->r_mm - (p->z_mm - q.z_mm) * std::tan(t);
-                ridden.deepest_mm = std::max(ridden.deepest_mm, line - q.r_mm);
-            }
-        }
+        describeRide(ridden, rest, i, last, !hit || norm(hit->second - rest[last].from) > 1e-6, std::tan(t));
         PathElement line;
         line.from = *p;
         line.to = ridden.to;
