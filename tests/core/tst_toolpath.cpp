@@ -887,18 +887,11 @@ private Q_SLOTS:
         QFETCH(bool, recess);
         Project whole = example(file);
         if (recess) { // I1 (r 16, z 0-110) in five: r 16 to z 40, up to r 17, on to z 70, down to r 16
-            const auto segment = [](const char *id, SegmentKind kind, double z0, double r0, double z1, double r1) {
-                Segment seg;
-                seg.id = QString::fromLatin1(id);
-                seg.kind = kind;
-                seg.from = {z0, r0};
-                seg.to = {z1, r1};
-                return seg;
-            };
+            using test::seg;
             whole.part.inner.segments = {
-                segment("I1", SegmentKind::Cylinder, 0, 16, 40, 16), segment("I2", SegmentKind::Face, 40, 16, 40, 17),
-                segment("I3", SegmentKind::Cylinder, 40, 17, 70, 17), segment("I4", SegmentKind::Face, 70, 17, 70, 16),
-                segment("I5", SegmentKind::Cylinder, 70, 16, 110, 16)};
+                seg("I1", SegmentKind::Cylinder, {0, 16}, {40, 16}), seg("I2", SegmentKind::Face, {40, 16}, {40, 17}),
+                seg("I3", SegmentKind::Cylinder, {40, 17}, {70, 17}), seg("I4", SegmentKind::Face, {70, 17}, {70, 16}),
+                seg("I5", SegmentKind::Cylinder, {70, 16}, {110, 16})};
         }
         Project p = operationView(whole, operation);
         if (pilot < 0.0)
